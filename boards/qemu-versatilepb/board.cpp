@@ -1,0 +1,80 @@
+// QEMU versatilepb board: reset sequence, driver singletons, captures and the memory report.
+#include "clock_sp804.h"
+#include "console_pl011.h"
+#include "display_pl110.h"
+#include "facet_board_config.h"
+#include "hal/board.h"
+#include "hal/print.h"
+#include "input_uart.h"
+#include "runtime.h"
+#include "stack.h"
+
+namespace facet::versatilepb {
+void mmu_enable();
+
+namespace {
+Pl011Console console;
+Sp804Clock clock;
+Pl110Display display;
+UartInput input(console);
+hal::Board the_board{board_config::kName, console, clock, display, input};
+} // namespace
+} // namespace facet::versatilepb
+
+extern "C" [[noreturn]] void board_reset() {
+    using namespace facet;
+    runtime::init_memory();
+    versatilepb::mmu_enable();
+    versatilepb::console.init();
+    versatilepb::clock.init();
+    versatilepb::display.init();
+    runtime::run_main();
+}
+
+// Linker-script symbols describing RAM use.
+extern "C" uint8_t __text_start[], __text_end[], __data_start[], __data_end[], __bss_start[],
+    __bss_end[], __framebuffers_start[], __framebuffers_end[], __zbuffer_start[], __zbuffer_end[],
+    __arena_start[], __arena_end[], __mmu_table_start[], __mmu_table_end[], __stack_start[],
+    __stack_end[];
+
+namespace facet::hal {
+
+Board& board() { return versatilepb::the_board; }
+
+Status capture(const char* name) {
+    // The host runner takes the screendump over QMP when it reads this line, then sends ACK.
+    // Without a runner (no ACK within 2 s) the firmware carries on.
+    versatilepb::Pl011Console& con = versatilepb::console;
+    print(con, "@shot {}\n", name);
+    const uint64_t deadline = versatilepb::clock.ticks() + 2'000'000;
+    while (versatilepb::clock.ticks() < deadline) {
+        const int c = con.read_hardware();
+        if (c == 0x06) return Status::Ok;
+        if (c >= 0) con.keep(static_cast<uint8_t>(c));
+    }
+    print(con, "capture {}: no acknowledgement from the host\n", name);
+    return Status::Io;
+}
+
+uint32_t memory_map(MemoryRegion* out, uint32_t max) {
+    auto span = [](const char* n, uint8_t* a, uint8_t* b) {
+        return MemoryRegion{n, reinterpret_cast<uintptr_t>(a), uint32_t(b - a)};
+    };
+    const MemoryRegion all[] = {
+        span("text+rodata", __text_start, __text_end),
+        span("data", __data_start, __data_end),
+        span("bss", __bss_start, __bss_end),
+        span("framebuffers", __framebuffers_start, __framebuffers_end),
+        span("zbuffer", __zbuffer_start, __zbuffer_end),
+        span("arena", __arena_start, __arena_end),
+        span("mmu_table", __mmu_table_start, __mmu_table_end),
+        span("stack", __stack_start, __stack_end),
+    };
+    uint32_t n = 0;
+    for (const MemoryRegion& r : all) {
+        if (n < max) out[n++] = r;
+    }
+    return n;
+}
+
+} // namespace facet::hal

@@ -1,0 +1,21 @@
+#include "report.h"
+
+#include "hal/print.h"
+
+namespace facet::fw {
+
+void report_board(hal::Board& board) {
+    const hal::DisplayInfo d = board.display.info();
+    print(board.console, "@board {} {}x{} buffers {}\n", board.name, d.width, d.height, d.buffers);
+    hal::MemoryRegion regions[16];
+    const uint32_t n = hal::memory_map(regions, 16);
+    uint32_t total = 0;
+    for (uint32_t i = 0; i < n; ++i) {
+        print(board.console, "@ram {} {} {}\n", regions[i].name, hex(regions[i].start),
+              regions[i].bytes);
+        total += regions[i].bytes;
+    }
+    print(board.console, "@ram total 0 {}\n", total);
+}
+
+} // namespace facet::fw

@@ -1,0 +1,43 @@
+#pragma once
+// What a board gives the portable code. Each board implements board() and the free functions.
+#include "hal/clock.h"
+#include "hal/console.h"
+#include "hal/display.h"
+#include "hal/input.h"
+
+namespace facet::hal {
+
+struct Board {
+    const char* name;
+    Console& console;
+    Clock& clock;
+    Display& display;
+    Input& input;
+};
+
+// The board's singletons, ready to use (startup has initialised them).
+Board& board();
+
+// Ends the program with an exit code that reaches the host shell (semihosting on QEMU).
+[[noreturn]] void exit(int code);
+
+// Makes the currently shown frame available to the host under `name` (a screenshot):
+// on versatilepb the host takes it over QMP, on mps2 the board writes it via semihosting.
+Status capture(const char* name);
+
+// One named span of RAM, reported by report_memory().
+struct MemoryRegion {
+    const char* name;
+    uintptr_t start;
+    uint32_t bytes;
+};
+// Fills up to `max` entries describing how the board's RAM is used; returns the count.
+uint32_t memory_map(MemoryRegion* out, uint32_t max);
+// Bytes of stack never touched since boot (the painted stack's high-water mark), and its size.
+uint32_t stack_unused();
+uint32_t stack_size();
+
+} // namespace facet::hal
+
+// The firmware's entry point, called by the board's startup once drivers are up.
+int facet_main(facet::hal::Board& board);

@@ -1,0 +1,63 @@
+#pragma once
+// Span rasterizer: triangles in, horizontal runs of RGB565 pixels out through hal::Display.
+//
+// Screen space, y down. Vertex positions are 28.4 fixed point (1/16 pixel); pixel (x, y) is
+// sampled at its centre (16x+8, 16y+8). Coverage follows the top-left rule, so triangles
+// sharing an edge never draw a pixel twice and never leave a gap. Depth is a 16-bit z-buffer
+// (0 nearest); colour is Gouraud-interpolated per vertex. Integer arithmetic only.
+#include "hal/display.h"
+#include "hal/status.h"
+
+#include <cstdint>
+#include <span>
+
+namespace facet::render {
+
+struct ScreenVertex {
+    int32_t x, y;     // 28.4 sub-pixel position
+    uint16_t z;       // depth, 0 = nearest
+    uint8_t r, g, b;  // colour
+};
+
+// Positions must satisfy |x|, |y| <= kGuardBand (28.4 units) so every product stays in 64 bits;
+// triangles beyond it are refused with OutOfRange (clipping happens before the rasterizer).
+constexpr int32_t kGuardBand = 8192 * 16;
+
+enum class Cull : uint8_t { None, Back };
+
+struct RasterStats {
+    uint32_t triangles = 0;   // triangles that reached scan conversion
+    uint32_t culled = 0;      // back-facing or zero-area
+    uint32_t spans = 0;       // spans pushed to the display
+    uint32_t pixels = 0;      // pixels that passed the depth test
+};
+
+class Rasterizer {
+public:
+    // `depth` must hold width*height entries and `line` at least width, for the display's
+    // geometry; the caller owns both (they live in the board's NOLOAD sections).
+    Rasterizer(hal::Display& display, std::span<uint16_t> depth, std::span<hal::Rgb565> line);
+
+    // Ok, or OutOfRange if the buffers are too small for the display.
+    Status check() const;
+    uint16_t width() const { return width_; }
+    uint16_t height() const { return height_; }
+
+    void clear_depth();
+    // Draws one triangle. Front faces are counter-clockwise as seen on the screen.
+    Status draw(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c,
+                Cull cull = Cull::Back);
+
+    RasterStats stats;
+
+private:
+    Status scan(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2,
+                int64_t area2);
+
+    hal::Display& display_;
+    std::span<uint16_t> depth_;
+    std::span<hal::Rgb565> line_;
+    uint16_t width_, height_;
+};
+
+} // namespace facet::render

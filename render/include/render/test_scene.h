@@ -1,0 +1,22 @@
+#pragma once
+// The fixed 3D test scene of the foundation: a cube pierced by a sphere over a gradient,
+// Gouraud-lit and depth-buffered. Drawn identically by the firmware and by the host reference
+// renderer (tools/scene-ref), so a screenshot can be compared pixel for pixel.
+#include "render/fixed.h"
+#include "render/raster.h"
+
+namespace facet::render {
+
+struct SceneView {
+    uint16_t yaw;   // turns/65536 about the vertical axis
+    uint16_t pitch; // turns/65536 about the horizontal axis
+};
+
+// The views the tests capture: "scene-a" and "scene-b".
+constexpr SceneView kSceneViews[2] = {{degrees(35), degrees(25)}, {degrees(150), degrees(-20)}};
+
+// Draws the whole frame into the display's draw buffer (background, then geometry).
+// Does not flip. Scales to the display's geometry.
+Status draw_test_scene(Rasterizer& raster, hal::Display& display, const SceneView& view);
+
+} // namespace facet::render

@@ -1,0 +1,173 @@
+// Rasterizer properties: exact coverage (top-left rule: shared edges drawn once, no gaps),
+// depth order independent of draw order, culling, guard band, Gouraud end points.
+#include "render/raster.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+#include <vector>
+
+using namespace facet;
+using render::Rasterizer;
+using render::ScreenVertex;
+
+namespace {
+
+// Counts how often each pixel is written, and keeps the last colour.
+class CountingDisplay final : public hal::Display {
+public:
+    CountingDisplay(uint16_t w, uint16_t h) : w_(w), h_(h), count(size_t(w) * h), colour(size_t(w) * h) {}
+    hal::DisplayInfo info() const override { return {w_, h_, hal::PixelFormat::Rgb565, 1}; }
+    Status push_span(uint16_t x, uint16_t y, const hal::Rgb565* px, uint16_t n) override {
+        if (n == 0 || y >= h_ || x + n > w_) {
+            ++bad;
+            return Status::OutOfRange;
+        }
+        for (uint16_t i = 0; i < n; ++i) {
+            ++count[size_t(y) * w_ + x + i];
+            colour[size_t(y) * w_ + x + i] = px[i];
+        }
+        return Status::Ok;
+    }
+    Status fill_span(uint16_t x, uint16_t y, uint16_t n, hal::Rgb565 c) override {
+        std::vector<hal::Rgb565> px(n, c);
+        return push_span(x, y, px.data(), n);
+    }
+    Status flip() override { return Status::Ok; }
+
+    uint16_t w_, h_;
+    std::vector<int> count;
+    std::vector<hal::Rgb565> colour;
+    int bad = 0;
+};
+
+struct Fixture {
+    CountingDisplay display;
+    std::vector<uint16_t> depth;
+    std::vector<hal::Rgb565> line;
+    Rasterizer raster;
+    Fixture(uint16_t w, uint16_t h)
+        : display(w, h), depth(size_t(w) * h), line(w), raster(display, depth, line) {
+        raster.clear_depth();
+    }
+};
+
+ScreenVertex v(int32_t x, int32_t y, uint16_t z = 100, uint8_t r = 255, uint8_t g = 255, uint8_t b = 255) {
+    return {x, y, z, r, g, b};
+}
+
+} // namespace
+
+TEST(Raster, RefusesBuffersSmallerThanTheDisplay) {
+    CountingDisplay d(64, 32);
+    std::vector<uint16_t> depth(64 * 31);
+    std::vector<hal::Rgb565> line(64);
+    Rasterizer r(d, depth, line);
+    EXPECT_EQ(r.check(), Status::OutOfRange);
+}
+
+TEST(Raster, TwoTrianglesTileTheScreenExactlyOnce) {
+    Fixture f(64, 48);
+    const int32_t W = 64 * 16, H = 48 * 16;
+    // Counter-clockwise on screen (y down): (0,0) -> (0,H) -> (W,H).
+    ASSERT_EQ(f.raster.draw(v(0, 0), v(0, H), v(W, H)), Status::Ok);
+    ASSERT_EQ(f.raster.draw(v(0, 0), v(W, H, 50), v(W, 0, 50)), Status::Ok);
+    for (size_t i = 0; i < f.display.count.size(); ++i) ASSERT_EQ(f.display.count[i], 1) << i;
+    EXPECT_EQ(f.display.bad, 0);
+}
+
+TEST(Raster, RandomMeshCoversEveryInteriorPixelExactlyOnce) {
+    // A jittered lattice, each cell split in two: shared edges at every angle, and vertices
+    // placed anywhere on the 1/16-pixel grid, including exactly on pixel centres.
+    Fixture f(200, 150);
+    std::mt19937 rng(7);
+    constexpr int N = 12;
+    int32_t px[N + 1][N + 1], py[N + 1][N + 1];
+    for (int i = 0; i <= N; ++i) {
+        for (int j = 0; j <= N; ++j) {
+            const int jitter = (i > 0 && i < N && j > 0 && j < N) ? 60 : 0;
+            std::uniform_int_distribution<int> d(-jitter, jitter);
+            px[i][j] = 16 * 10 + i * 16 * 15 + d(rng);
+            py[i][j] = 16 * 5 + j * 16 * 11 + d(rng);
+            if ((i + j) % 5 == 0) { // snap some to pixel centres
+                px[i][j] = (px[i][j] / 16) * 16 + 8;
+                py[i][j] = (py[i][j] / 16) * 16 + 8;
+            }
+        }
+    }
+    for (int i = 0; i < N; ++i) {
+        for (int j = 0; j < N; ++j) {
+            const ScreenVertex a = v(px[i][j], py[i][j]), b = v(px[i + 1][j], py[i + 1][j]);
+            const ScreenVertex c = v(px[i + 1][j + 1], py[i + 1][j + 1]), d = v(px[i][j + 1], py[i][j + 1]);
+            // Screen-CCW: a (top-left) -> d (below) -> c -> b.
+            ASSERT_EQ(f.raster.draw(a, d, c), Status::Ok);
+            ASSERT_EQ(f.raster.draw(a, c, b), Status::Ok);
+        }
+    }
+    // Pixels whose centre lies strictly inside the outer boundary (axis-aligned here).
+    const int x0 = 10, x1 = 10 + N * 15, y0 = 5, y1 = 5 + N * 11;
+    for (int y = 0; y < 150; ++y) {
+        for (int x = 0; x < 200; ++x) {
+            const int c = f.display.count[size_t(y) * 200 + x];
+            ASSERT_LE(c, 1) << "overdraw at " << x << "," << y;
+            const bool inside = x >= x0 && x < x1 && y >= y0 && y < y1;
+            ASSERT_EQ(c, inside ? 1 : 0) << "pixel " << x << "," << y;
+        }
+    }
+    EXPECT_EQ(f.raster.stats.culled, 0u);
+}
+
+TEST(Raster, NearerTriangleWinsWhateverTheOrder) {
+    for (int order = 0; order < 2; ++order) {
+        Fixture f(32, 32);
+        const ScreenVertex nearA = v(0, 0, 10, 255, 0, 0), nearB = v(0, 512, 10, 255, 0, 0), nearC = v(512, 512, 10, 255, 0, 0);
+        const ScreenVertex farA = v(0, 0, 900, 0, 0, 255), farB = v(0, 512, 900, 0, 0, 255), farC = v(512, 512, 900, 0, 0, 255);
+        if (order == 0) {
+            ASSERT_EQ(f.raster.draw(nearA, nearB, nearC), Status::Ok);
+            ASSERT_EQ(f.raster.draw(farA, farB, farC), Status::Ok);
+        } else {
+            ASSERT_EQ(f.raster.draw(farA, farB, farC), Status::Ok);
+            ASSERT_EQ(f.raster.draw(nearA, nearB, nearC), Status::Ok);
+        }
+        EXPECT_EQ(f.display.colour[20 * 32 + 5], 0xF800) << "order " << order;
+    }
+}
+
+TEST(Raster, BackFacesAreCulledAndDegenerateOnesSkipped) {
+    Fixture f(16, 16);
+    ASSERT_EQ(f.raster.draw(v(0, 0), v(200, 200), v(0, 200)), Status::Ok); // clockwise on screen
+    ASSERT_EQ(f.raster.draw(v(0, 0), v(100, 100), v(200, 200)), Status::Ok); // collinear
+    EXPECT_EQ(f.raster.stats.culled, 2u);
+    for (int c : f.display.count) EXPECT_EQ(c, 0);
+    ASSERT_EQ(f.raster.draw(v(0, 0), v(200, 200), v(0, 200), render::Cull::None), Status::Ok);
+    EXPECT_GT(f.raster.stats.pixels, 0u);
+}
+
+TEST(Raster, RefusesVerticesOutsideTheGuardBand) {
+    Fixture f(16, 16);
+    EXPECT_EQ(f.raster.draw(v(0, 0), v(0, 100), v(render::kGuardBand + 1, 100)), Status::OutOfRange);
+    EXPECT_EQ(f.raster.stats.triangles, 0u);
+}
+
+TEST(Raster, GouraudReproducesVertexColoursAtVertexPixels) {
+    Fixture f(64, 64);
+    // Vertex a sits on a pixel centre where a left edge (a-b) meets a top edge (c-a), so the
+    // top-left rule gives that pixel to this triangle and its colour is a's exactly.
+    const ScreenVertex a = {8, 8, 100, 255, 0, 0}, b = {8, 62 * 16 + 8, 100, 0, 255, 0},
+                       c = {62 * 16 + 8, 8, 100, 0, 0, 255};
+    ASSERT_EQ(f.raster.draw(a, b, c), Status::Ok);
+    EXPECT_EQ(f.display.count[0], 1);
+    EXPECT_EQ(f.display.colour[0], 0xF800);
+    // Pixels on b-c (a right edge) belong to the neighbour: b's and c's pixels are not drawn.
+    EXPECT_EQ(f.display.count[size_t(62) * 64], 0);
+    EXPECT_EQ(f.display.count[62], 0);
+    // Midway down the left edge: half red, half green; midway along the top: half red, half blue.
+    const hal::Rgb565 left = f.display.colour[size_t(31) * 64];
+    EXPECT_NEAR((left >> 11) & 31, 16, 1);
+    EXPECT_NEAR((left >> 5) & 63, 32, 1);
+    EXPECT_EQ(left & 31, 0);
+    const hal::Rgb565 top = f.display.colour[31];
+    EXPECT_NEAR((top >> 11) & 31, 16, 1);
+    EXPECT_EQ((top >> 5) & 63, 0);
+    EXPECT_NEAR(top & 31, 16, 1);
+}

@@ -1,0 +1,273 @@
+#!/usr/bin/env python3
+"""facet QEMU runner: boots a firmware ELF on a QEMU board, headless, and reports.
+
+  run.py --board qemu-versatilepb --elf build/qemu-versatilepb/firmware/facet-scene.elf \
+         --out out/scene [--load model.fpk@0x01000000] [--icount] [--budget draw=20000000]
+
+What it does:
+  * starts qemu-system-arm for the board (versatilepb: -m 32M; mps2-an500: -m 16M), headless
+    (-display none, audio to a null backend), semihosting on so the firmware's exit code is
+    QEMU's exit code;
+  * logs the UART to OUT/uart.log and echoes it (unless --quiet);
+  * '@shot NAME' from the firmware: takes a PNG screendump over QMP into OUT/NAME.png and
+    acknowledges over the UART; '@dump NAME FILE': converts a framebuffer the board wrote via
+    semihosting (F565) into OUT/NAME.png;
+  * --type TEXT: types TEXT into the UART (C-style escapes allowed, e.g. 'r\\n');
+  * --icount: loads the facet-icount TCG plugin and names its numbered regions from the
+    firmware's '@begin NAME' lines; --limit N stops any region over N instructions;
+    --budget NAME=N fails the run if region NAME used more than N instructions;
+  * enforces --timeout seconds of wall clock (exit 124);
+  * writes OUT/report.json (exit code, regions, RAM by section, stack, screenshots);
+  * --window opens a QEMU window instead of running headless, when a display exists.
+Exit status: the firmware's exit code, or non-zero for a timeout, a budget or a runner error.
+"""
+import argparse
+import json
+import os
+import queue
+import socket
+import subprocess
+import sys
+import threading
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, os.path.dirname(HERE))
+import img  # noqa: E402
+
+BOARDS = {
+    'qemu-versatilepb': ['-M', 'versatilepb', '-m', '32M',
+                         '-audiodev', 'none,id=snd0', '-global', 'pl041.audiodev=snd0'],
+    'qemu-mps2-an500': ['-M', 'mps2-an500', '-m', '16M'],
+}
+MHZ = 600
+
+
+def find_plugin():
+    for build in ('host', 'host-asan'):
+        p = os.path.join(ROOT, 'build', build, 'tools', 'qemu', 'icount', 'facet-icount.so')
+        if os.path.exists(p):
+            return p
+    return None
+
+
+def symbol_address(elf, name):
+    out = subprocess.run(['arm-none-eabi-nm', elf], capture_output=True, text=True, check=True).stdout
+    for line in out.splitlines():
+        parts = line.split()
+        if len(parts) == 3 and parts[2] == name:
+            return int(parts[0], 16)
+    raise SystemExit(f'run.py: symbol {name} not found in {elf}')
+
+
+class Qmp:
+    def __init__(self, path, timeout=10.0):
+        deadline = time.time() + timeout
+        while True:
+            try:
+                self.sock = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
+                self.sock.connect(path)
+                break
+            except OSError:
+                if time.time() > deadline:
+                    raise
+                time.sleep(0.05)
+        self.file = self.sock.makefile('rwb')
+        self._read()  # greeting
+        self.command('qmp_capabilities')
+
+    def _read(self):
+        while True:
+            line = self.file.readline()
+            if not line:
+                raise RuntimeError('QMP connection closed')
+            msg = json.loads(line)
+            if 'event' not in msg:
+                return msg
+
+    def command(self, name, **args):
+        self.file.write(json.dumps({'execute': name, 'arguments': args}).encode() + b'\n')
+        self.file.flush()
+        reply = self._read()
+        if 'error' in reply:
+            raise RuntimeError(f'QMP {name}: {reply["error"]}')
+        return reply.get('return')
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument('--board', required=True, choices=sorted(BOARDS))
+    ap.add_argument('--elf', required=True)
+    ap.add_argument('--out', required=True, help='directory for uart.log, screenshots, report.json')
+    ap.add_argument('--load', action='append', default=[], metavar='FILE@ADDR')
+    ap.add_argument('--type', default='', help='text typed into the UART at boot')
+    ap.add_argument('--timeout', type=float, default=120)
+    ap.add_argument('--icount', action='store_true', help='count instructions between markers')
+    ap.add_argument('--limit', type=int, default=0, help='fail any region above N instructions')
+    ap.add_argument('--budget', action='append', default=[], metavar='REGION=N')
+    ap.add_argument('--window', action='store_true', help='open a QEMU window if a display exists')
+    ap.add_argument('--quiet', action='store_true')
+    args = ap.parse_args()
+
+    elf = os.path.abspath(args.elf)
+    out = os.path.abspath(args.out)
+    os.makedirs(out, exist_ok=True)
+    qmp_path = os.path.join(out, 'qmp.sock')
+    if os.path.exists(qmp_path):
+        os.unlink(qmp_path)
+    plugin_log = os.path.join(out, 'icount.log')
+    if os.path.exists(plugin_log):
+        os.unlink(plugin_log)
+
+    cmd = ['qemu-system-arm'] + BOARDS[args.board] + [
+        '-kernel', elf, '-serial', 'stdio', '-monitor', 'none',
+        '-semihosting-config', 'enable=on,target=native',
+        '-qmp', f'unix:{qmp_path},server=on,wait=off', '-no-reboot']
+    window = args.window and (os.environ.get('DISPLAY') or os.environ.get('WAYLAND_DISPLAY'))
+    if args.window and not window:
+        print('run.py: no display found; running headless', file=sys.stderr)
+    cmd += [] if window else ['-display', 'none']
+    for spec in args.load:
+        path, _, addr = spec.rpartition('@')
+        if not path or not addr:
+            raise SystemExit(f'run.py: --load wants FILE@ADDR, got {spec}')
+        cmd += ['-device', f'loader,file={os.path.abspath(path)},addr={addr},force-raw=on']
+    if args.icount:
+        plugin = find_plugin()
+        if not plugin:
+            raise SystemExit('run.py: facet-icount.so not built (build the host preset first)')
+        begin, end = symbol_address(elf, 'facet_mark_begin'), symbol_address(elf, 'facet_mark_end')
+        parg = f'{plugin},begin={begin:#x},end={end:#x}'
+        if args.limit:
+            parg += f',limit={args.limit}'
+        cmd += ['-plugin', parg, '-d', 'plugin', '-D', plugin_log]
+
+    budgets = {}
+    for b in args.budget:
+        name, _, n = b.partition('=')
+        budgets[name] = int(n)
+
+    proc = subprocess.Popen(cmd, cwd=out, stdin=subprocess.PIPE, stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE)
+    lines = queue.Queue()
+
+    def pump(stream, tag):
+        for raw in iter(stream.readline, b''):
+            lines.put((tag, raw.decode('utf-8', 'replace').rstrip('\r\n')))
+        lines.put((tag, None))
+
+    threading.Thread(target=pump, args=(proc.stdout, 'uart'), daemon=True).start()
+    threading.Thread(target=pump, args=(proc.stderr, 'qemu'), daemon=True).start()
+    if args.type:
+        proc.stdin.write(args.type.encode().decode('unicode_escape').encode('latin-1'))
+        proc.stdin.flush()
+
+    qmp = None
+    report = {'board': args.board, 'elf': os.path.relpath(elf, ROOT), 'regions': [], 'ram': {},
+              'shots': [], 'exit_code': None, 'failures': []}
+    begins = []
+    log = open(os.path.join(out, 'uart.log'), 'w')
+    deadline = time.time() + args.timeout
+    open_streams, timed_out = 2, False
+    while open_streams:
+        remaining = deadline - time.time()
+        if remaining <= 0:
+            timed_out = True
+            break
+        try:
+            tag, line = lines.get(timeout=min(remaining, 0.5))
+        except queue.Empty:
+            continue
+        if line is None:
+            open_streams -= 1
+            continue
+        if tag == 'qemu':
+            print(f'[qemu] {line}', file=sys.stderr)
+            log.write(f'[qemu] {line}\n')
+            continue
+        log.write(line + '\n')
+        log.flush()
+        if not args.quiet:
+            print(line, flush=True)
+        words = line.split()
+        if not words:
+            continue
+        if words[0] == '@shot' and len(words) == 2:
+            name = words[1]
+            try:
+                if qmp is None:
+                    qmp = Qmp(qmp_path)
+                png = os.path.join(out, f'{name}.png')
+                qmp.command('screendump', filename=png, format='png')
+                report['shots'].append(os.path.relpath(png, ROOT))
+            except (OSError, RuntimeError) as e:
+                report['failures'].append(f'screendump {name}: {e}')
+            proc.stdin.write(b'\x06')
+            proc.stdin.flush()
+        elif words[0] == '@dump' and len(words) == 3:
+            png = os.path.join(out, f'{words[1]}.png')
+            try:
+                img.f565_to_png(os.path.join(out, words[2]), png)
+                report['shots'].append(os.path.relpath(png, ROOT))
+            except (OSError, ValueError) as e:
+                report['failures'].append(f'dump {words[1]}: {e}')
+        elif words[0] == '@begin' and len(words) == 2:
+            begins.append(words[1])
+        elif words[0] == '@ram' and len(words) == 4:
+            report['ram'][words[1]] = int(words[3])
+        elif words[0] == '@stack' and len(words) >= 5:
+            report['stack_used'] = int(words[2])
+            report['stack_size'] = int(words[4])
+        elif words[0] == '@expect' and len(words) == 3:
+            report.setdefault('expect', {})[words[1]] = int(words[2])
+
+    if timed_out:
+        proc.kill()
+        report['failures'].append(f'timeout after {args.timeout:g} s')
+    try:
+        code = proc.wait(timeout=10)
+    except subprocess.TimeoutExpired:
+        proc.kill()
+        code = proc.wait()
+    report['exit_code'] = code
+
+    if args.icount:
+        counts = {}
+        if os.path.exists(plugin_log):
+            for l in open(plugin_log):
+                p = l.split()
+                if l.startswith('facet-icount: region') and len(p) >= 7:
+                    counts[int(p[2])] = int(p[6])
+                elif l.startswith('facet-icount:'):
+                    report['failures'].append(l.strip())
+        for i, name in enumerate(begins):
+            n = counts.get(i)
+            report['regions'].append({'name': name, 'instructions': n,
+                                      'ms_at_600mhz': None if n is None else round(n / (MHZ * 1000), 3)})
+            if n is not None and name in budgets and n > budgets[name]:
+                report['failures'].append(f'region {name}: {n} instructions, budget {budgets[name]}')
+        for r in report['regions']:
+            n = r['instructions']
+            shown = 'not counted' if n is None else f'{n:,} instructions = {n / (MHZ * 1000):.3f} ms at {MHZ} MHz'
+            print(f'icount {r["name"]}: {shown}')
+    for k, v in report.get('expect', {}).items():
+        got = next((r['instructions'] for r in report['regions'] if r['name'] == k), None)
+        if got != v:
+            report['failures'].append(f'region {k}: expected exactly {v} instructions, got {got}')
+    if report['ram']:
+        print(f'RAM: {report["ram"].get("total", 0):,} bytes in use of 33,554,432'
+              if args.board == 'qemu-versatilepb' else f'RAM: {report["ram"].get("total", 0):,} bytes in use')
+    with open(os.path.join(out, 'report.json'), 'w') as f:
+        json.dump(report, f, indent=2)
+    for msg in report['failures']:
+        print(f'run.py: FAIL: {msg}', file=sys.stderr)
+    if timed_out:
+        return 124
+    if report['failures'] and code == 0:
+        return 1
+    return code
+
+
+if __name__ == '__main__':
+    sys.exit(main())
