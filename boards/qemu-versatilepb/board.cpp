@@ -16,7 +16,7 @@ namespace {
 Pl011Console console;
 Sp804Clock clock;
 Pl110Display display;
-UartInput input(console);
+boards::UartInput input(console);
 hal::Board the_board{board_config::kName, console, clock, display, input};
 } // namespace
 } // namespace facet::versatilepb

@@ -9,37 +9,77 @@ int64_t floor_div(int64_t a, int64_t b) { // b > 0
     const int64_t q = a / b;
     return (a % b != 0 && a < 0) ? q - 1 : q;
 }
-int64_t ceil_div(int64_t a, int64_t b) { return -floor_div(-a, b); } // b > 0
 
 bool in_guard(const ScreenVertex& v) {
     return v.x >= -kGuardBand && v.x <= kGuardBand && v.y >= -kGuardBand && v.y <= kGuardBand;
 }
 
-// One edge p->q of a triangle with positive doubled area, ready for per-row bounds.
-struct Edge {
-    int64_t dx, dy, px, py, bias;
+// One edge p->q of a triangle with positive doubled area, walked row by row.
+//
+// A pixel centre (sx, sy) is inside the edge when dx*(sy - py) - dy*(sx - px) - bias >= 0.
+// Top-left rule: pixels exactly on a left edge (going up) or a top edge (horizontal, going
+// right) belong to this triangle (bias 0); on other edges they belong to the neighbour (bias 1).
+// For dy != 0 the condition bounds sx on one side by t(sy)/s for an integer t that changes by a
+// constant from row to row, so the bound is kept exactly as a quotient and remainder
+// (t = q*s + r, 0 <= r < s) and advanced without dividing.
+struct EdgeWalk {
+    enum class Side : uint8_t { Left, Right, Flat } side;
+    int64_t q = 0, r = 0, s = 1, dq = 0, dr = 0; // Left/Right: bound = t/s; Flat: q = k
 
-    Edge(const ScreenVertex& p, const ScreenVertex& q)
-        : dx(q.x - p.x), dy(q.y - p.y), px(p.x), py(p.y)
-        // Top-left rule: pixels exactly on a left edge (going up) or a top edge (horizontal,
-        // going right) belong to this triangle; on other edges they belong to the neighbour.
-        , bias((dy < 0 || (dy == 0 && dx > 0)) ? 0 : 1) {}
-
-    // Narrows [lo, hi] (pixel columns) to those whose centre is inside this edge on the row
-    // whose centre is at sub-pixel `sy`.
-    void clip_row(int64_t sy, int64_t& lo, int64_t& hi) const {
-        // Inside: dx*(sy - py) - dy*(sx - px) - bias >= 0, i.e. -dy*sx + k >= 0.
-        const int64_t k = dx * (sy - py) + dy * px - bias;
+    void start(const ScreenVertex& p, const ScreenVertex& e, int64_t sy) {
+        const int64_t dx = e.x - p.x, dy = e.y - p.y;
+        const int64_t bias = (dy < 0 || (dy == 0 && dx > 0)) ? 0 : 1;
+        const int64_t k = dx * (sy - p.y) + dy * p.x - bias; // inside: -dy*sx + k >= 0
+        int64_t t, step;
         if (dy == 0) {
-            if (k < 0) hi = lo - 1;
-        } else if (dy < 0) {
-            const int64_t sx_min = ceil_div(-k, -dy);
-            const int64_t x = ceil_div(sx_min - 8, 16);
+            side = Side::Flat;
+            q = k;
+            dq = 16 * dx;
+            return;
+        }
+        if (dy < 0) { // sx >= ceil(-k / -dy)
+            side = Side::Left;
+            s = -dy;
+            t = -k;
+            step = -16 * dx;
+        } else { // sx <= floor(k / dy)
+            side = Side::Right;
+            s = dy;
+            t = k;
+            step = 16 * dx;
+        }
+        q = floor_div(t, s);
+        r = t - q * s;
+        dq = floor_div(step, s);
+        dr = step - dq * s;
+    }
+
+    // Narrows [lo, hi] (pixel columns) for the current row.
+    void clip(int64_t& lo, int64_t& hi) const {
+        switch (side) {
+        case Side::Flat:
+            if (q < 0) hi = lo - 1;
+            break;
+        case Side::Left: { // first column whose centre 16x+8 >= ceil(t/s)
+            const int64_t x = (q + (r != 0) + 7) >> 4;
             if (x > lo) lo = x;
-        } else {
-            const int64_t sx_max = floor_div(k, dy);
-            const int64_t x = floor_div(sx_max - 8, 16);
+            break;
+        }
+        case Side::Right: { // last column whose centre 16x+8 <= floor(t/s)
+            const int64_t x = (q - 8) >> 4;
             if (x < hi) hi = x;
+            break;
+        }
+        }
+    }
+
+    void next_row() {
+        q += dq;
+        if (side == Side::Flat) return;
+        r += dr;
+        if (r >= s) {
+            r -= s;
+            ++q;
         }
     }
 };
@@ -61,8 +101,25 @@ struct Plane {
     int64_t at(int64_t dx, int64_t dy) const { return a0 + gx * dx + gy * dy; }
 };
 
-inline int32_t clamp_channel(int64_t v, int32_t max) {
-    const int64_t c = v >> kFrac;
+// One attribute's walk along a span, in 32 bits.
+struct SpanValue {
+    int32_t v, step;
+    bool in_range; // start and end both within [0, max]: no clamping needed along the span
+
+    SpanValue(int64_t start, int64_t gx, int64_t n, int32_t max) {
+        constexpr int64_t kLimit = int64_t(1) << 29; // v + step never overflows 32 bits
+        int64_t st = gx * 16;
+        st = st > kLimit ? kLimit : (st < -kLimit ? -kLimit : st);
+        const int64_t end = start + st * (n - 1);
+        const int64_t top = (int64_t(max) << kFrac) | ((1 << kFrac) - 1);
+        in_range = start >= 0 && start <= top && end >= 0 && end <= top;
+        v = static_cast<int32_t>(start < -kLimit ? -kLimit : (start > kLimit ? kLimit : start));
+        step = static_cast<int32_t>(st);
+    }
+};
+
+inline int32_t clamp_channel(int32_t v, int32_t max) {
+    const int32_t c = v >> kFrac;
     return c < 0 ? 0 : (c > max ? max : static_cast<int32_t>(c));
 }
 
@@ -81,8 +138,14 @@ Status Rasterizer::check() const {
 }
 
 void Rasterizer::clear_depth() {
-    const size_t n = size_t(width_) * height_;
-    for (size_t i = 0; i < n; ++i) depth_[i] = 0xFFFF;
+    // Two entries per 32-bit store; the buffer is 2-byte aligned at least, so peel one.
+    using Word = uint32_t __attribute__((may_alias, aligned(2)));
+    size_t n = size_t(width_) * height_, i = 0;
+    if (reinterpret_cast<uintptr_t>(depth_.data()) & 2) depth_[i++] = 0xFFFF;
+    Word* w = reinterpret_cast<Word*>(depth_.data() + i);
+    const size_t words = (n - i) / 2;
+    for (size_t k = 0; k < words; ++k) w[k] = 0xFFFFFFFFu;
+    for (i += words * 2; i < n; ++i) depth_[i] = 0xFFFF;
 }
 
 Status Rasterizer::draw(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c,
@@ -102,12 +165,6 @@ Status Rasterizer::draw(const ScreenVertex& a, const ScreenVertex& b, const Scre
 Status Rasterizer::scan(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2,
                         int64_t area2) {
     ++stats.triangles;
-    const Edge edges[3] = {Edge(v1, v2), Edge(v2, v0), Edge(v0, v1)};
-    const Plane z(v0.z, v1.z, v2.z, v0, v1, v2, area2);
-    const Plane r(v0.r, v1.r, v2.r, v0, v1, v2, area2);
-    const Plane g(v0.g, v1.g, v2.g, v0, v1, v2, area2);
-    const Plane bl(v0.b, v1.b, v2.b, v0, v1, v2, area2);
-
     int32_t ymin = v0.y, ymax = v0.y, xmin = v0.x, xmax = v0.x;
     for (const ScreenVertex* v : {&v1, &v2}) {
         ymin = v->y < ymin ? v->y : ymin;
@@ -115,56 +172,77 @@ Status Rasterizer::scan(const ScreenVertex& v0, const ScreenVertex& v1, const Sc
         xmin = v->x < xmin ? v->x : xmin;
         xmax = v->x > xmax ? v->x : xmax;
     }
-    int64_t row0 = ceil_div(ymin - 8, 16), row1 = floor_div(ymax - 8, 16);
-    if (row0 < 0) row0 = 0;
-    if (row1 > height_ - 1) row1 = height_ - 1;
-    const int64_t col0 = ceil_div(xmin - 8, 16) < 0 ? 0 : ceil_div(xmin - 8, 16);
-    const int64_t col1 = floor_div(xmax - 8, 16) > width_ - 1 ? width_ - 1 : floor_div(xmax - 8, 16);
+    // Rows and columns whose centres (16i+8) can be inside, clipped to the screen.
+    int64_t row0 = (int64_t(ymin) + 7) >> 4, row1 = (int64_t(ymax) - 8) >> 4;
+    int64_t col0 = (int64_t(xmin) + 7) >> 4, col1 = (int64_t(xmax) - 8) >> 4;
+    row0 = row0 < 0 ? 0 : row0;
+    row1 = row1 > height_ - 1 ? height_ - 1 : row1;
+    col0 = col0 < 0 ? 0 : col0;
+    col1 = col1 > width_ - 1 ? width_ - 1 : col1;
+    if (row0 > row1 || col0 > col1) return Status::Ok;
+
+    const int64_t sy0 = row0 * 16 + 8;
+    EdgeWalk edges[3];
+    edges[0].start(v1, v2, sy0);
+    edges[1].start(v2, v0, sy0);
+    edges[2].start(v0, v1, sy0);
+    const Plane pz(v0.z, v1.z, v2.z, v0, v1, v2, area2);
+    const Plane pr(v0.r, v1.r, v2.r, v0, v1, v2, area2);
+    const Plane pg(v0.g, v1.g, v2.g, v0, v1, v2, area2);
+    const Plane pb(v0.b, v1.b, v2.b, v0, v1, v2, area2);
 
     for (int64_t y = row0; y <= row1; ++y) {
-        const int64_t sy = y * 16 + 8;
         int64_t lo = col0, hi = col1;
-        for (const Edge& e : edges) e.clip_row(sy, lo, hi);
+        edges[0].clip(lo, hi);
+        edges[1].clip(lo, hi);
+        edges[2].clip(lo, hi);
+        edges[0].next_row();
+        edges[1].next_row();
+        edges[2].next_row();
         if (lo > hi) continue;
 
-        const int64_t sx = lo * 16 + 8;
-        int64_t zf = z.at(sx - v0.x, sy - v0.y), rf = r.at(sx - v0.x, sy - v0.y);
-        int64_t gf = g.at(sx - v0.x, sy - v0.y), bf = bl.at(sx - v0.x, sy - v0.y);
-        const int64_t zs = z.gx * 16, rs = r.gx * 16, gs = g.gx * 16, bs = bl.gx * 16;
+        const int64_t dx = lo * 16 + 8 - v0.x, dy = y * 16 + 8 - v0.y, n = hi - lo + 1;
+        SpanValue z(pz.at(dx, dy), pz.gx, n, 0xFFFF), r(pr.at(dx, dy), pr.gx, n, 255);
+        SpanValue g(pg.at(dx, dy), pg.gx, n, 255), b(pb.at(dx, dy), pb.gx, n, 255);
+        const bool fast = z.in_range && r.in_range && g.in_range && b.in_range;
 
         uint16_t* drow = &depth_[size_t(y) * width_];
-        int64_t run = -1; // first column of the pending run of visible pixels
-        for (int64_t x = lo; x <= hi; ++x) {
-            const uint16_t zv = static_cast<uint16_t>(clamp_channel(zf, 0xFFFF));
+        hal::Rgb565* line = line_.data();
+        const int32_t x0 = static_cast<int32_t>(lo), x1 = static_cast<int32_t>(hi);
+        int32_t run = -1; // first column of the pending run of visible pixels
+        for (int32_t x = x0; x <= x1; ++x) {
+            const uint16_t zv = fast ? static_cast<uint16_t>(z.v >> kFrac)
+                                     : static_cast<uint16_t>(clamp_channel(z.v, 0xFFFF));
             if (zv < drow[x]) {
                 drow[x] = zv;
-                line_[x] = static_cast<hal::Rgb565>((clamp_channel(rf, 255) >> 3) << 11 |
-                                                    (clamp_channel(gf, 255) >> 2) << 5 |
-                                                    (clamp_channel(bf, 255) >> 3));
+                line[x] = fast ? static_cast<hal::Rgb565>(((r.v >> (kFrac + 3)) << 11) |
+                                                          ((g.v >> (kFrac + 2)) << 5) |
+                                                          (b.v >> (kFrac + 3)))
+                               : static_cast<hal::Rgb565>((clamp_channel(r.v, 255) >> 3) << 11 |
+                                                          (clamp_channel(g.v, 255) >> 2) << 5 |
+                                                          (clamp_channel(b.v, 255) >> 3));
                 if (run < 0) run = x;
             } else if (run >= 0) {
-                const uint16_t n = static_cast<uint16_t>(x - run);
-                if (Status s = display_.push_span(uint16_t(run), uint16_t(y), &line_[run], n);
-                    !ok(s))
-                    return s;
-                ++stats.spans;
-                stats.pixels += n;
+                if (Status s = flush(run, x, y); !ok(s)) return s;
                 run = -1;
             }
-            zf += zs;
-            rf += rs;
-            gf += gs;
-            bf += bs;
+            z.v += z.step;
+            r.v += r.step;
+            g.v += g.step;
+            b.v += b.step;
         }
         if (run >= 0) {
-            const uint16_t n = static_cast<uint16_t>(hi + 1 - run);
-            if (Status s = display_.push_span(uint16_t(run), uint16_t(y), &line_[run], n); !ok(s))
-                return s;
-            ++stats.spans;
-            stats.pixels += n;
+            if (Status s = flush(run, x1 + 1, y); !ok(s)) return s;
         }
     }
     return Status::Ok;
+}
+
+Status Rasterizer::flush(int32_t from, int32_t to, int64_t y) {
+    const uint16_t n = static_cast<uint16_t>(to - from);
+    ++stats.spans;
+    stats.pixels += n;
+    return display_.push_span(uint16_t(from), uint16_t(y), &line_[from], n);
 }
 
 } // namespace facet::render

@@ -53,6 +53,7 @@ public:
 private:
     Status scan(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2,
                 int64_t area2);
+    Status flush(int32_t from, int32_t to, int64_t y);
 
     hal::Display& display_;
     std::span<uint16_t> depth_;

@@ -3,7 +3,7 @@
 #include "hal/console.h"
 #include "hal/input.h"
 
-namespace facet::versatilepb {
+namespace facet::boards {
 
 class UartInput final : public hal::Input {
 public:
@@ -14,4 +14,4 @@ private:
     hal::Console& console_;
 };
 
-} // namespace facet::versatilepb
+} // namespace facet::boards

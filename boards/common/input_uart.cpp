@@ -1,6 +1,6 @@
 #include "input_uart.h"
 
-namespace facet::versatilepb {
+namespace facet::boards {
 
 bool UartInput::poll(hal::InputEvent& event) {
     const int c = console_.read_byte();
@@ -11,4 +11,4 @@ bool UartInput::poll(hal::InputEvent& event) {
     return true;
 }
 
-} // namespace facet::versatilepb
+} // namespace facet::boards

@@ -1,0 +1,18 @@
+#pragma once
+// CMSDK dual timer 1 as a free-running 32-bit down-counter at 25 MHz, polled.
+#include "hal/clock.h"
+
+namespace facet::mps2 {
+
+class DualTimerClock final : public hal::Clock {
+public:
+    void init();
+    uint64_t ticks() override;
+    uint32_t ticks_per_second() const override;
+
+private:
+    uint32_t last_ = 0;
+    uint64_t total_ = 0;
+};
+
+} // namespace facet::mps2

@@ -1,0 +1,12 @@
+#pragma once
+// Capacities the portable firmware sizes its static buffers from. Only boards/ knows them.
+// The mps2-an500 has no LCD: the display is a RAM framebuffer with the geometry of the
+// MIMXRT1060-EVKB's panel (480x272 RGB565), whose Cortex-M7 this board stands in for.
+#include <cstdint>
+
+namespace facet::board_config {
+constexpr const char* kName = "qemu-mps2-an500";
+constexpr uint16_t kDisplayWidth = 480;
+constexpr uint16_t kDisplayHeight = 272;
+constexpr uint32_t kRamBytes = 24u << 20; // SSRAM1 4 MiB + SSRAM2/3 4 MiB + PSRAM 16 MiB
+} // namespace facet::board_config
