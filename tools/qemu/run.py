@@ -258,6 +258,8 @@ def main():
     if report['ram']:
         print(f'RAM: {report["ram"].get("total", 0):,} bytes in use of 33,554,432'
               if args.board == 'qemu-versatilepb' else f'RAM: {report["ram"].get("total", 0):,} bytes in use')
+    if os.path.exists(qmp_path):
+        os.unlink(qmp_path)
     with open(os.path.join(out, 'report.json'), 'w') as f:
         json.dump(report, f, indent=2)
     for msg in report['failures']:
