@@ -1,7 +1,5 @@
 #include "hal/fake.h"
 
-#include "hal/measure.h"
-
 #include <cstdio>
 #include <cstdlib>
 
@@ -75,14 +73,3 @@ bool write_f565(const std::string& path, const std::vector<Rgb565>& pixels, uint
 }
 
 } // namespace facet::hal::fake
-
-// On the host the instruction markers do nothing; the assert hook reports and aborts.
-extern "C" void facet_mark_begin(void) {}
-extern "C" void facet_mark_end(void) {}
-
-namespace facet {
-[[noreturn]] void assert_failed(const char* scope, const char* what, const char* file, int line) {
-    std::fprintf(stderr, "facet assert [%s] %s at %s:%d\n", scope, what, file, line);
-    std::abort();
-}
-} // namespace facet

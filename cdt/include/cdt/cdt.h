@@ -1,0 +1,117 @@
+#pragma once
+// Sequential constrained Delaunay triangulation in a fixed-capacity CET arena
+// (Yang, Choi & Lee 2009, §3; constraint insertion after Anglada 1997).
+//
+//   Cdt<uint16_t> cdt(arena.view());
+//   cdt.reset();                              // 4 box corners, 2 triangles
+//   Index a, b;
+//   cdt.insert_point({0, 0}, a, kNone);       // hint: walk from this vertex
+//   cdt.insert_point({100, 0}, b, a);
+//   cdt.insert_constraint(a, b);              // a->b runs along its loop
+//   cdt.mark_inner();                         // flood fill from the flags (§3.4)
+//
+// Every call returns a Status; on any status other than Ok the triangulation is unchanged
+// and valid (Full, OutOfRange, Crossing never leave it half-modified).
+#include "cdt/arena.h"
+#include "hal/status.h"
+
+namespace facet::cdt {
+
+// Where a point lies in the current triangulation.
+template <typename Index>
+struct Location {
+    enum class Kind : uint8_t { Inside, OnEdge, OnVertex } kind;
+    Index tri;    // Inside/OnEdge: the triangle; OnVertex: an incident triangle
+    uint8_t edge; // OnEdge: the edge index in tri
+    Index vertex; // OnVertex: the vertex
+};
+
+struct CdtStats {
+    uint64_t walk_steps = 0;   // triangles crossed by Locate walks
+    uint64_t flips = 0;        // Lawson flips
+    uint64_t cavities = 0;     // constraints that needed re-triangulation
+    uint64_t cavity_triangles = 0;
+    uint32_t work_peak = 0;    // most `work` entries in use at once
+};
+
+template <typename Index>
+class Cdt {
+public:
+    explicit Cdt(ArenaView<Index> arena) : a_(arena) {}
+
+    // Starts a new face: the box corners (vertices 0..3) and two triangles. OutOfRange if the
+    // arena is too small to hold even that or its work buffer is short of work_for().
+    Status reset();
+
+    // Inserts p, walking from vertex `hint` (kNone: from the last inserted vertex). `out` is the
+    // new vertex, or the existing one if p is a duplicate. OutOfRange outside +-kMaxCoord; Full
+    // if no vertex slot is left.
+    Status insert_point(Point p, Index& out, Index hint);
+
+    // Makes the segment a-b a constraint running from a to b along its loop. Vertices lying
+    // exactly on the segment split it; an existing edge is flagged (merging with a flag already
+    // there). Crossing if it would cross an existing constraint; Full if the cavity does not
+    // fit the work buffer. a == b is a zero-length segment: Ok, nothing to do.
+    Status insert_constraint(Index a, Index b);
+
+    // Finds p by the straight walk from vertex `from` (an inserted, non-box vertex).
+    Status locate(Point p, Index from, Location<Index>& out);
+
+    // Marks the triangles inside the loops (flood fill from the Along flags, §3.4).
+    Status mark_inner();
+
+    // Read access.
+    Index vertex_count() const { return nv_; }
+    Index triangle_count() const { return nt_; }
+    const Vertex<Index>& vertex(Index i) const { return a_.vertices[i]; }
+    const Triangle<Index>& triangle(Index i) const { return a_.triangles[i]; }
+    Index vertex_capacity() const { return Index(a_.vertices.size()); }
+    Index last_vertex() const { return last_; }
+    const CdtStats& stats() const { return stats_; }
+    ArenaView<Index> arena() const { return a_; }
+
+private:
+    // topology (mesh.ipp)
+    void rotate(Index t, int k);                 // make v[k] the new v[0], permuting n and flags
+    void link(Index t, int i, Index u, int j);   // t's edge i and u's edge j are the same edge
+    void flip(Index t, int i);                   // flip the edge opposite t.v[i]
+    Index new_triangle(Index v0, Index v1, Index v2);
+    void set_vertex_tri(Index t);
+
+    // walks (locate.ipp)
+    Status walk(Index from, Point p, Location<Index>& out, Index* collinear);
+    void wedge(Index s, Point p, Index& t, int& k, int64_t& oa) const;
+    Index start_vertex(Point p, Index hint) const;
+
+    // insertion (insert.ipp)
+    Status split_triangle(Index t, Index v);
+    Status split_edge(Index t, int i, Index v);
+    Status legalize(Index v, uint32_t stack_base);
+
+    // constraints (constraint.ipp)
+    template <typename Visitor>
+    Status trace(Index a, Index b, Index& reached, Visitor& visit);
+    void apply_piece(Index a, Index b, uint32_t max_crossed, Index& reached);
+    Index build_polygon(const Index* poly, const Index* edges, uint32_t count, Index* stack,
+                        const Index* slots, uint32_t& cursor);
+    void set_boundary(Index t, int e, const Index* record);
+
+    bool work_fits(uint32_t need) {
+        if (need > a_.work.size()) return false;
+        if (need > stats_.work_peak) stats_.work_peak = need;
+        return true;
+    }
+    const Point& P(Index v) const { return a_.vertices[v].p; }
+    int64_t orient(Index a, Index b, Point c) const;
+    int64_t orient(Index a, Index b, Index c) const { return orient(a, b, P(c)); }
+
+    ArenaView<Index> a_;
+    Index nv_ = 0, nt_ = 0;
+    Index last_ = kNone<Index>;
+    CdtStats stats_;
+};
+
+extern template class Cdt<uint16_t>;
+extern template class Cdt<uint32_t>;
+
+} // namespace facet::cdt

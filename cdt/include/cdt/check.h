@@ -1,0 +1,43 @@
+#pragma once
+// An independent checker of a finished triangulation, kept apart from the algorithm
+// (cf. CDT's VerifyTopology.h, delaunator's validate()). It re-derives every property from the
+// raw CET arrays with its own code:
+//   - neighbours symmetric; vertices' incident triangles really incident
+//   - every triangle counter-clockwise and non-degenerate
+//   - Euler: 2V - 6 triangles, exactly 4 hull edges (the box)
+//   - every input constraint present as a chain of collinear edges with Along on its left and
+//     Against (or Both) on its right, and no flagged edge that no input constraint explains
+//   - every unconstrained edge locally Delaunay
+//   - (after mark_inner) the inner set equal to a point-in-polygon classification of each
+//     triangle's centroid by winding number against the input constraints
+// Allocation-free: the caller passes scratch (check_scratch_words()).
+#include "cdt/cdt.h"
+
+#include <span>
+
+namespace facet::cdt {
+
+struct Segment {
+    Point a, b; // a directed constraint: a -> b along its loop
+};
+
+struct CheckResult {
+    bool ok = true;
+    char message[192] = {};
+};
+
+constexpr size_t check_scratch_words(size_t vertices, size_t triangles, size_t segments) {
+    // sorted vertices, Along edges (pairs) and their marks, the slab index of the segments
+    return vertices + 5 * triangles + 2 * 1025 + 64 * segments + 8192;
+}
+
+template <typename Index>
+CheckResult check(const Cdt<Index>& cdt, std::span<const Segment> constraints, bool check_inner,
+                  std::span<uint32_t> scratch);
+
+extern template CheckResult check(const Cdt<uint16_t>&, std::span<const Segment>, bool,
+                                  std::span<uint32_t>);
+extern template CheckResult check(const Cdt<uint32_t>&, std::span<const Segment>, bool,
+                                  std::span<uint32_t>);
+
+} // namespace facet::cdt

@@ -1,0 +1,40 @@
+#pragma once
+// Exact geometric predicates on the integer grid. No floating point, no __int128.
+//
+// Range: every coordinate |x|, |y| <= kPredicateRange (2^25), so differences fit 27 bits.
+//   orient2d: products of differences <= 2^52, the determinant <= 2^53: exact in int64.
+//   incircle: lifted terms <= 2^53 times 2x2 minors <= 2^53, three of them: < 2^108.
+//             A 64-bit fast path when every difference is <= 28,000 (12 * 28000^4 < 2^63),
+//             otherwise an exact two-limb (128-bit) evaluation built from 32x32 products.
+// The CDT keeps its input within kMaxCoord = 2^24 and puts its box corners at 2^25.
+#include <cstdint>
+
+namespace facet::cdt {
+
+constexpr int32_t kPredicateRange = 1 << 25;
+
+// > 0 if a, b, c turn counter-clockwise (c left of a->b), < 0 clockwise, 0 collinear.
+int64_t orient2d(int32_t ax, int32_t ay, int32_t bx, int32_t by, int32_t cx, int32_t cy);
+
+// > 0 if d is strictly inside the circle through a, b, c (a, b, c counter-clockwise),
+// < 0 outside, 0 on it. Returns the sign only (-1, 0, 1).
+int incircle(int32_t ax, int32_t ay, int32_t bx, int32_t by, int32_t cx, int32_t cy, int32_t dx,
+             int32_t dy);
+
+// A signed 128-bit integer in two limbs: just what incircle needs. Exposed for tests.
+struct Int128 {
+    uint64_t lo;
+    int64_t hi;
+
+    static Int128 mul(int64_t a, int64_t b); // exact product
+    Int128 operator+(const Int128& o) const;
+    Int128 operator-(const Int128& o) const;
+    int sign() const { return hi < 0 ? -1 : ((hi | static_cast<int64_t>(lo)) ? 1 : 0); }
+    bool operator==(const Int128& o) const { return lo == o.lo && hi == o.hi; }
+};
+
+// The same incircle determinant, always through the exact 128-bit path (for tests/benches).
+int incircle_exact(int32_t ax, int32_t ay, int32_t bx, int32_t by, int32_t cx, int32_t cy,
+                   int32_t dx, int32_t dy);
+
+} // namespace facet::cdt

@@ -1,0 +1,235 @@
+// Constraint insertion (§3.2 after Anglada 1997): if a-b is not an edge, remove the triangles
+// the segment crosses and re-triangulate the two pseudo-polygons on either side of it, each
+// by recursively choosing the vertex whose circle through the base holds no other vertex.
+//
+// Two phases keep the triangulation valid on failure: a read-only trace of the whole segment
+// (split at vertices lying on it) checks for crossed constraints and sizes the largest cavity;
+// only then is anything changed.
+#include "cdt/cdt.h"
+#include "cdt/predicates.h"
+
+namespace facet::cdt {
+namespace {
+
+Flag merge(Flag old, Flag add) {
+    if (old == Flag::None || old == add) return add == Flag::None ? old : add;
+    return old == Flag::Both ? Flag::Both : (add == reverse(old) ? Flag::Both : old);
+}
+
+
+} // namespace
+
+// Follows the segment a->b from a, through the triangles it crosses, to b or to the first
+// vertex lying exactly on it (`reached`). The visitor sees:
+//   edge(t, e)         a->reached is already edge e of t, t on its left
+//   first(t, k)        t = (a, x, y), a = v[k]: the segment leaves t through edge k
+//   step(u, j, side)   entered u across its edge j; u.v[j] is left (+1) or right (-1) of the
+//                      segment, or the end of this piece (0)
+// Returns Crossing, before calling anything else, if a crossed edge is a constraint.
+template <typename Index>
+template <typename Visitor>
+Status Cdt<Index>::trace(Index a, Index b, Index& reached, Visitor& visit) {
+    const Point pa = P(a), pb = P(b);
+    Index t;
+    int k;
+    int64_t oa;
+    wedge(a, pb, t, k, oa);
+    const Triangle<Index>& T = a_.triangles[t];
+    if (oa == 0) { // the segment runs along edge a-x
+        const Index x = T.v[next3(k)];
+        FACET_ASSERT("cdt.trace", dot2d(pa, P(x), pb) <= dot2d(pa, pb, pb)); // x is not past b
+        reached = x;
+        visit.edge(t, prev3(k));
+        return Status::Ok;
+    }
+    if (T.constrained(k)) return Status::Crossing;
+    // Check the whole path before the visitor sees any of it.
+    Index prev = t, u = T.n[k];
+    for (int pass = 0; pass < 2; ++pass) {
+        if (pass == 1) {
+            visit.first(t, k);
+            prev = t;
+            u = T.n[k];
+        }
+        for (;;) {
+            FACET_ASSERT("cdt.trace", u != kNone<Index>);
+            const Triangle<Index>& U = a_.triangles[u];
+            const int j = U.edge_to(prev);
+            const Index w = U.v[j];
+            const int64_t ow = orient2d(pa.x, pa.y, pb.x, pb.y, P(w).x, P(w).y);
+            if (ow == 0) {
+                if (pass == 1) visit.step(u, j, 0);
+                reached = w;
+                break;
+            }
+            const int exit = ow > 0 ? next3(j) : prev3(j);
+            if (pass == 0 && U.constrained(exit)) return Status::Crossing;
+            if (pass == 1) visit.step(u, j, ow > 0 ? 1 : -1);
+            prev = u;
+            u = U.n[exit];
+        }
+    }
+    return Status::Ok;
+}
+
+namespace {
+
+// Counts the triangles a piece crosses (phase 1).
+template <typename Index>
+struct CountCrossed {
+    uint32_t crossed = 0;
+    void edge(Index, int) {}
+    void first(Index, int) { ++crossed; }
+    void step(Index, int, int) { ++crossed; }
+};
+
+} // namespace
+
+// Flags an existing edge, or collects and re-triangulates the cavity of one piece (phase 2).
+template <typename Index>
+void Cdt<Index>::apply_piece(Index a, Index b, uint32_t K, Index& reached) {
+    // Work layout for at most K crossed triangles (13K + 18 entries, checked in phase 1):
+    //   slots[K] | left poly[K+2] | left edges[3(K+1)] | right poly[K+2] | right edges[3(K+1)]
+    //   | polygon stack[4(K+2)]
+    Index* const w = a_.work.data();
+    struct Collect {
+        Cdt& c;
+        Index *slots, *lpoly, *ledge, *rpoly, *redge;
+        uint32_t ns = 0, nl = 0, nr = 0;
+        bool existing = false;
+
+        void record(Index* out, Index t, int e) {
+            const Triangle<Index>& T = c.a_.triangles[t];
+            const Index o = T.n[e];
+            out[0] = o;
+            out[1] = o == kNone<Index> ? 0 : Index(c.a_.triangles[o].edge_to(t));
+            out[2] = Index(T.flag(e));
+        }
+        void edge(Index t, int e) {
+            existing = true;
+            Triangle<Index>& T = c.a_.triangles[t];
+            T.set_flag(e, merge(T.flag(e), Flag::Along));
+            const Index u = T.n[e];
+            FACET_ASSERT("cdt.constraint", u != kNone<Index>);
+            Triangle<Index>& U = c.a_.triangles[u];
+            const int j = U.edge_to(t);
+            U.set_flag(j, merge(U.flag(j), Flag::Against));
+        }
+        void first(Index t, int k) {
+            const Triangle<Index>& T = c.a_.triangles[t];
+            slots[ns++] = t;
+            lpoly[++nl] = T.v[prev3(k)];
+            record(ledge, t, next3(k)); // (a, y)
+            rpoly[++nr] = T.v[next3(k)];
+            record(redge, t, prev3(k)); // (a, x)
+        }
+        void step(Index u, int j, int side) {
+            const Triangle<Index>& U = c.a_.triangles[u];
+            slots[ns++] = u;
+            if (side >= 0) { // left boundary edge (v[j+1], w) is edge j+2
+                record(ledge + 3 * nl, u, prev3(j));
+                if (side > 0) lpoly[++nl] = U.v[j];
+            }
+            if (side <= 0) { // right boundary edge (v[j+2], w) is edge j+1
+                record(redge + 3 * nr, u, next3(j));
+                if (side < 0) rpoly[++nr] = U.v[j];
+            }
+        }
+    } col{*this, w, w + K, w + 2 * K + 2, w + 5 * K + 5, w + 6 * K + 7};
+    Index* const stack = w + 9 * K + 10;
+
+    (void)trace(a, b, reached, col);
+    if (col.existing) return;
+
+    const Index end = reached;
+    col.lpoly[0] = a;
+    col.lpoly[++col.nl] = end;
+    col.rpoly[0] = a;
+    col.rpoly[++col.nr] = end;
+    // The right polygon is built from end to a so its chain lies left of its base.
+    const uint32_t rn = col.nr + 1;
+    for (uint32_t i = 0, j = rn - 1; i < j; ++i, --j) {
+        const Index t = col.rpoly[i];
+        col.rpoly[i] = col.rpoly[j];
+        col.rpoly[j] = t;
+    }
+    for (uint32_t i = 0, j = rn - 2; i < j; ++i, --j) {
+        for (int f = 0; f < 3; ++f) {
+            const Index t = col.redge[3 * i + f];
+            col.redge[3 * i + f] = col.redge[3 * j + f];
+            col.redge[3 * j + f] = t;
+        }
+    }
+    uint32_t cursor = 0;
+    const Index tl = build_polygon(col.lpoly, col.ledge, col.nl + 1, stack, col.slots, cursor);
+    const Index tr = build_polygon(col.rpoly, col.redge, rn, stack, col.slots, cursor);
+    FACET_ASSERT("cdt.constraint", cursor == col.ns);
+    link(tl, 2, tr, 2);
+    a_.triangles[tl].set_flag(2, Flag::Along);
+    a_.triangles[tr].set_flag(2, Flag::Against);
+    ++stats_.cavities;
+    stats_.cavity_triangles += col.ns;
+}
+
+template <typename Index>
+void Cdt<Index>::set_boundary(Index t, int e, const Index* rec) {
+    Triangle<Index>& T = a_.triangles[t];
+    T.n[e] = rec[0];
+    T.set_flag(e, static_cast<Flag>(rec[2]));
+    if (rec[0] != kNone<Index>) a_.triangles[rec[0]].n[rec[1]] = t;
+}
+
+// Triangulates poly[0..count-1]: base poly[0] -> poly[count-1], the chain between them on the
+// base's left. Reuses slots[cursor...]; returns the triangle on the base (its edge 2).
+template <typename Index>
+Index Cdt<Index>::build_polygon(const Index* poly, const Index* edges, uint32_t count,
+                                Index* stack, const Index* slots, uint32_t& cursor) {
+    uint32_t top = 0;
+    Index root = kNone<Index>;
+    auto push = [&](uint32_t lo, uint32_t hi, Index parent, int pedge) {
+        stack[top++] = Index(lo);
+        stack[top++] = Index(hi);
+        stack[top++] = parent;
+        stack[top++] = Index(pedge);
+    };
+    push(0, count - 1, kNone<Index>, 0);
+    while (top) {
+        top -= 4;
+        const uint32_t lo = stack[top], hi = stack[top + 1];
+        const Index parent = stack[top + 2];
+        const int pedge = stack[top + 3];
+        const Point pu = P(poly[lo]), pv = P(poly[hi]);
+        uint32_t c = lo + 1;
+        for (uint32_t m = lo + 2; m < hi; ++m) {
+            const Point pc = P(poly[c]), pm = P(poly[m]);
+            if (incircle(pu.x, pu.y, pv.x, pv.y, pc.x, pc.y, pm.x, pm.y) > 0) c = m;
+        }
+        const Index t = slots[cursor++];
+        a_.triangles[t] = {{poly[lo], poly[hi], poly[c]}, {kNone<Index>, kNone<Index>, kNone<Index>}, 0};
+        set_vertex_tri(t);
+        if (parent == kNone<Index>) root = t;
+        else link(t, 2, parent, pedge);
+        if (c - lo == 1) set_boundary(t, 1, edges + 3 * lo); // (c, u)
+        else push(lo, c, t, 1);
+        if (hi - c == 1) set_boundary(t, 0, edges + 3 * c); // (v, c)
+        else push(c, hi, t, 0);
+    }
+    return root;
+}
+
+template <typename Index>
+Status Cdt<Index>::insert_constraint(Index a, Index b) {
+    if (a == b) return Status::Ok;
+    if (a < kBoxVertices || b < kBoxVertices || a >= nv_ || b >= nv_) return Status::OutOfRange;
+    uint32_t max_crossed = 0;
+    for (Index cur = a, reached; cur != b; cur = reached) {
+        CountCrossed<Index> count;
+        if (Status s = trace(cur, b, reached, count); !ok(s)) return s;
+        if (count.crossed > max_crossed) max_crossed = count.crossed;
+    }
+    if (!work_fits(13 * max_crossed + 18)) return Status::Full;
+    for (Index cur = a, reached; cur != b; cur = reached) apply_piece(cur, b, max_crossed, reached);
+    return Status::Ok;
+}
+
+} // namespace facet::cdt

@@ -1,0 +1,138 @@
+#include "cdt/face.h"
+
+#include "kdtree.h"
+
+#include <algorithm>
+
+namespace facet::cdt {
+
+uint32_t hilbert_index(uint32_t x, uint32_t y) {
+    uint32_t d = 0;
+    for (uint32_t s = 1u << 15; s > 0; s >>= 1) {
+        const uint32_t rx = (x & s) ? 1 : 0, ry = (y & s) ? 1 : 0;
+        d += s * s * ((3 * rx) ^ ry);
+        if (ry == 0) { // rotate the quadrant
+            if (rx == 1) {
+                x = s - 1 - x;
+                y = s - 1 - y;
+            }
+            const uint32_t t = x;
+            x = y;
+            y = t;
+        }
+        x &= s - 1;
+        y &= s - 1;
+    }
+    return d;
+}
+
+template <typename Index>
+Status triangulate_face(Cdt<Index>& cdt, const FaceInput& in, LocateMode mode, FaceReport& report) {
+    report = {};
+    auto fail = [&](Status s, uint32_t loop, uint32_t point) {
+        report = {s, loop, point, 0};
+        return s;
+    };
+    if (Status s = cdt.reset(); !ok(s)) return fail(s, 0, 0);
+    const ArenaView<Index> a = cdt.arena();
+    uint32_t n_loop = 0;
+    for (uint32_t size : in.loop_sizes) n_loop += size;
+    if (n_loop != in.loop_points.size()) return fail(Status::Corrupt, 0, 0);
+    const uint32_t n = n_loop + uint32_t(in.interior.size());
+    if (uint64_t(n) + kBoxVertices > a.vertices.size() || n > a.order.size() ||
+        n > a.minseq.size() || n > a.ins.size() || n > a.keys.size()) {
+        return fail(Status::Full, 0, 0);
+    }
+    auto point = [&](uint32_t i) { return i < n_loop ? in.loop_points[i] : in.interior[i - n_loop]; };
+    for (uint32_t i = 0; i < n; ++i) {
+        const Point p = point(i);
+        if (p.x < -kMaxCoord || p.x > kMaxCoord || p.y < -kMaxCoord || p.y > kMaxCoord) {
+            return fail(Status::OutOfRange, 0, i);
+        }
+    }
+
+    // Insertion order: loops as given, then the interior points along a Hilbert curve.
+    Index* ins = a.ins.data();
+    uint32_t* keys = a.keys.data();
+    for (uint32_t i = 0; i < n; ++i) ins[i] = Index(i);
+    if (mode == LocateMode::RandomOrder) {
+        uint32_t state = 0x9E3779B9u;
+        for (uint32_t i = n; i > 1; --i) { // Fisher-Yates with a fixed LCG: repeatable
+            state = state * 1664525u + 1013904223u;
+            std::swap(ins[i - 1], ins[(state >> 8) % i]);
+        }
+    } else if (n > n_loop) {
+        int32_t x0 = INT32_MAX, y0 = INT32_MAX, x1 = INT32_MIN, y1 = INT32_MIN;
+        for (const Point& p : in.interior) {
+            x0 = std::min(x0, p.x), y0 = std::min(y0, p.y);
+            x1 = std::max(x1, p.x), y1 = std::max(y1, p.y);
+        }
+        const int64_t w = int64_t(x1) - x0 + 1, h = int64_t(y1) - y0 + 1;
+        for (uint32_t i = n_loop; i < n; ++i) {
+            const Point p = point(i);
+            keys[i] = hilbert_index(uint32_t((int64_t(p.x) - x0) * 65535 / w),
+                                    uint32_t((int64_t(p.y) - y0) * 65535 / h));
+        }
+        std::sort(ins + n_loop, ins + n, [&](Index l, Index r) { return keys[l] < keys[r]; });
+    }
+    for (uint32_t k = 0; k < n; ++k) keys[ins[k]] = k; // keys: rank of each point
+
+    KdTree<Index, decltype(point)> tree(a.order.data(), a.minseq.data(), n, point);
+    if (mode != LocateMode::RandomOrder) tree.build([&](Index i) { return keys[i]; });
+    for (uint32_t i = 0; i < n; ++i) keys[i] = kNone<Index>; // keys: vertex of each point
+
+    auto nearest = [&](Point p, uint32_t rank) -> Index {
+        const int64_t i = tree.nearest(p, rank, [&](Index j) { return keys[j] != kNone<Index>; });
+        return i < 0 ? kNone<Index> : Index(keys[i]);
+    };
+
+    // The loop being traced and its first point (loops arrive in order except in RandomOrder).
+    uint32_t loop = 0, loop_first = 0;
+    for (uint32_t k = 0; k < n; ++k) {
+        const uint32_t i = ins[k];
+        const Point p = point(i);
+        Index hint = kNone<Index>;
+        const bool is_loop_point = i < n_loop;
+        if (is_loop_point && mode != LocateMode::RandomOrder) {
+            while (i >= loop_first + in.loop_sizes[loop]) loop_first += in.loop_sizes[loop++];
+        }
+        if (mode == LocateMode::KdTreeNearest) {
+            hint = nearest(p, k);
+        } else if (mode == LocateMode::Sequential) {
+            const bool starts_run = (is_loop_point && i == loop_first) || i == n_loop;
+            hint = starts_run ? nearest(p, k) : cdt.last_vertex();
+        } else {
+            hint = cdt.last_vertex();
+        }
+        Index v;
+        if (Status s = cdt.insert_point(p, v, hint); !ok(s)) return fail(s, loop, i);
+        keys[i] = v;
+        if (mode == LocateMode::RandomOrder || !is_loop_point) continue;
+        // Sequential / kd-tree: trace the loop as its points arrive.
+        if (i != loop_first) {
+            if (Status s = cdt.insert_constraint(Index(keys[i - 1]), v); !ok(s)) return fail(s, loop, i);
+        }
+        if (i == loop_first + in.loop_sizes[loop] - 1) {
+            if (Status s = cdt.insert_constraint(v, Index(keys[loop_first])); !ok(s)) return fail(s, loop, i);
+        }
+    }
+    if (mode == LocateMode::RandomOrder) {
+        uint32_t first = 0;
+        for (uint32_t l = 0; l < in.loop_sizes.size(); ++l) {
+            const uint32_t size = in.loop_sizes[l];
+            for (uint32_t j = 0; j < size; ++j) {
+                const uint32_t i = first + j, next = first + (j + 1) % size;
+                if (Status s = cdt.insert_constraint(Index(keys[i]), Index(keys[next])); !ok(s)) return fail(s, l, i);
+            }
+            first += size;
+        }
+    }
+    if (Status s = cdt.mark_inner(); !ok(s)) return fail(s, uint32_t(in.loop_sizes.size()), 0);
+    for (Index t = 0; t < cdt.triangle_count(); ++t) report.inner += cdt.triangle(t).inner();
+    return Status::Ok;
+}
+
+template Status triangulate_face(Cdt<uint16_t>&, const FaceInput&, LocateMode, FaceReport&);
+template Status triangulate_face(Cdt<uint32_t>&, const FaceInput&, LocateMode, FaceReport&);
+
+} // namespace facet::cdt

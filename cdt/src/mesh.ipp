@@ -1,0 +1,112 @@
+// Topology helpers of Cdt: every change of the triangle array goes through these, and each
+// moves a triangle's vertices, neighbours and flags together so they cannot drift apart.
+#include "cdt/cdt.h"
+#include "cdt/predicates.h"
+
+namespace facet::cdt {
+
+template <typename Index>
+int64_t Cdt<Index>::orient(Index a, Index b, Point c) const {
+    const Point& pa = P(a);
+    const Point& pb = P(b);
+    return orient2d(pa.x, pa.y, pb.x, pb.y, c.x, c.y);
+}
+
+template <typename Index>
+void Cdt<Index>::rotate(Index t, int k) {
+    if (k == 0) return;
+    Triangle<Index>& T = a_.triangles[t];
+    const Triangle<Index> o = T;
+    for (int i = 0; i < 3; ++i) {
+        const int s = (i + k) % 3;
+        T.v[i] = o.v[s];
+        T.n[i] = o.n[s];
+        T.set_flag(i, o.flag(s));
+    }
+}
+
+template <typename Index>
+void Cdt<Index>::link(Index t, int i, Index u, int j) {
+    a_.triangles[t].n[i] = u;
+    if (u != kNone<Index>) a_.triangles[u].n[j] = t;
+}
+
+template <typename Index>
+Index Cdt<Index>::new_triangle(Index v0, Index v1, Index v2) {
+    FACET_ASSERT("cdt", nt_ < a_.triangles.size()); // 2V-6 bound: callers checked vertices
+    const Index t = nt_++;
+    a_.triangles[t] = {{v0, v1, v2}, {kNone<Index>, kNone<Index>, kNone<Index>}, 0};
+    return t;
+}
+
+template <typename Index>
+void Cdt<Index>::set_vertex_tri(Index t) {
+    const Triangle<Index>& T = a_.triangles[t];
+    for (int i = 0; i < 3; ++i) a_.vertices[T.v[i]].tri = t;
+}
+
+// Flips the edge opposite v[i] of t, shared with neighbour u:
+//
+//        b                     b
+//       / \                   /|\ .
+//      / t \                 / | \ .
+//     p-----q     ==>       p t|u q      t' = (p, a, q), u' = (q, b, p)
+//      \ u /                 \ | /
+//       \ /                   \|/
+//        a                     a
+// (t = (p, a, b), u = (q, b, a) after rotation.) The outer four edges keep their neighbours
+// and flags; the new edge p-q is unconstrained.
+template <typename Index>
+void Cdt<Index>::flip(Index t, int i) {
+    rotate(t, i);
+    Triangle<Index>& T = a_.triangles[t];
+    const Index u = T.n[0];
+    rotate(u, a_.triangles[u].edge_to(t));
+    Triangle<Index>& U = a_.triangles[u];
+    const Index p = T.v[0], a = T.v[1], b = T.v[2], q = U.v[0];
+    const Index n_bp = T.n[1], n_pa = T.n[2], n_aq = U.n[1], n_qb = U.n[2];
+    const Flag f_bp = T.flag(1), f_pa = T.flag(2), f_aq = U.flag(1), f_qb = U.flag(2);
+
+    T = {{p, a, q}, {n_aq, u, n_pa}, 0};
+    T.set_flag(0, f_aq);
+    T.set_flag(2, f_pa);
+    U = {{q, b, p}, {n_bp, t, n_qb}, 0};
+    U.set_flag(0, f_bp);
+    U.set_flag(2, f_qb);
+    if (n_aq != kNone<Index>) {
+        Triangle<Index>& N = a_.triangles[n_aq];
+        N.n[N.edge_to(u)] = t;
+    }
+    if (n_bp != kNone<Index>) {
+        Triangle<Index>& N = a_.triangles[n_bp];
+        N.n[N.edge_to(t)] = u;
+    }
+    a_.vertices[p].tri = t;
+    a_.vertices[a].tri = t;
+    a_.vertices[q].tri = u;
+    a_.vertices[b].tri = u;
+    ++stats_.flips;
+}
+
+template <typename Index>
+Status Cdt<Index>::reset() {
+    if (a_.vertices.size() < 8 || a_.triangles.size() < triangles_for(a_.vertices.size()) ||
+        a_.work.size() < work_for(a_.vertices.size()) || a_.vertices.size() >= kNone<Index>) {
+        return Status::OutOfRange;
+    }
+    constexpr int32_t B = kBoxCoord;
+    const Point corners[4] = {{-B, -B}, {B, -B}, {B, B}, {-B, B}};
+    for (Index i = 0; i < 4; ++i) a_.vertices[i] = {corners[i], kNone<Index>};
+    nv_ = 4;
+    nt_ = 0;
+    const Index t0 = new_triangle(0, 1, 2), t1 = new_triangle(0, 2, 3);
+    link(t0, 1, t1, 2); // edge (2, 0)
+    set_vertex_tri(t0);
+    set_vertex_tri(t1);
+    a_.vertices[0].tri = t0;
+    last_ = kNone<Index>;
+    stats_ = {};
+    return Status::Ok;
+}
+
+} // namespace facet::cdt
