@@ -2,6 +2,11 @@
 // the segment crosses and re-triangulate the two pseudo-polygons on either side of it, each
 // by recursively choosing the vertex whose circle through the base holds no other vertex.
 //
+// A cavity need not be simple: the segment can cross every triangle around a vertex without
+// passing through it (two near-180-degree slivers make this possible even in a CDT). That
+// vertex then appears in a chain between two copies of one neighbour (x, v, x), and the edge
+// v-x lies inside the cavity, a slit. Its two records are linked to each other, not outside.
+//
 // Two phases keep the triangulation valid on failure: a read-only trace of the whole segment
 // (split at vertices lying on it) checks for crossed constraints and sizes the largest cavity;
 // only then is anything changed.
@@ -141,6 +146,18 @@ void Cdt<Index>::apply_piece(Index a, Index b, uint32_t K, Index& reached) {
     (void)trace(a, b, reached, col);
     if (col.existing) return;
 
+    // Records whose "outside" is a crossed triangle are slit edges inside the cavity.
+    for (uint32_t i = 0; i < col.ns; ++i) a_.triangles[col.slots[i]].flags |= Triangle<Index>::kMarkBit;
+    for (Index* edges : {col.ledge, col.redge}) {
+        const uint32_t n = edges == col.ledge ? col.nl + 1 : col.nr + 1;
+        for (uint32_t i = 0; i < n; ++i) {
+            Index* rec = edges + 3 * i;
+            if (rec[0] != kNone<Index> && (a_.triangles[rec[0]].flags & Triangle<Index>::kMarkBit)) {
+                rec[2] |= kSlit;
+            }
+        }
+    }
+
     const Index end = reached;
     col.lpoly[0] = a;
     col.lpoly[++col.nl] = end;
@@ -171,18 +188,40 @@ void Cdt<Index>::apply_piece(Index a, Index b, uint32_t K, Index& reached) {
     stats_.cavity_triangles += col.ns;
 }
 
+// Gives new triangle t's edge e (poly edge i: poly[i] -> poly[i+1]) its recorded neighbour
+// and flag. A slit edge waits for its twin (the same edge, reversed, elsewhere in the chain)
+// and is linked to it once both sides exist.
 template <typename Index>
-void Cdt<Index>::set_boundary(Index t, int e, const Index* rec) {
+void Cdt<Index>::set_boundary(Index t, int e, const Index* poly, Index* edges, uint32_t count,
+                              uint32_t i) {
+    Index* rec = edges + 3 * i;
     Triangle<Index>& T = a_.triangles[t];
-    T.n[e] = rec[0];
-    T.set_flag(e, static_cast<Flag>(rec[2]));
-    if (rec[0] != kNone<Index>) a_.triangles[rec[0]].n[rec[1]] = t;
+    T.set_flag(e, static_cast<Flag>(rec[2] & 3));
+    if (!(rec[2] & kSlit)) {
+        T.n[e] = rec[0];
+        if (rec[0] != kNone<Index>) a_.triangles[rec[0]].n[rec[1]] = t;
+        return;
+    }
+    for (uint32_t k = 0; k + 1 < count; ++k) {
+        Index* twin = edges + 3 * k;
+        if (k == i || poly[k] != poly[i + 1] || poly[k + 1] != poly[i] || !(twin[2] & kSlit)) continue;
+        if (twin[2] & kSlitBuilt) {
+            link(t, e, twin[0], twin[1]);
+        } else {
+            rec[0] = t;
+            rec[1] = Index(e);
+            rec[2] |= kSlitBuilt;
+            T.n[e] = kNone<Index>; // until the twin is built
+        }
+        return;
+    }
+    FACET_ASSERT("cdt.constraint", false); // a slit edge always has its twin in the chain
 }
 
 // Triangulates poly[0..count-1]: base poly[0] -> poly[count-1], the chain between them on the
 // base's left. Reuses slots[cursor...]; returns the triangle on the base (its edge 2).
 template <typename Index>
-Index Cdt<Index>::build_polygon(const Index* poly, const Index* edges, uint32_t count,
+Index Cdt<Index>::build_polygon(const Index* poly, Index* edges, uint32_t count,
                                 Index* stack, const Index* slots, uint32_t& cursor) {
     uint32_t top = 0;
     Index root = kNone<Index>;
@@ -209,9 +248,9 @@ Index Cdt<Index>::build_polygon(const Index* poly, const Index* edges, uint32_t 
         set_vertex_tri(t);
         if (parent == kNone<Index>) root = t;
         else link(t, 2, parent, pedge);
-        if (c - lo == 1) set_boundary(t, 1, edges + 3 * lo); // (c, u)
+        if (c - lo == 1) set_boundary(t, 1, poly, edges, count, lo); // (c, u)
         else push(lo, c, t, 1);
-        if (hi - c == 1) set_boundary(t, 0, edges + 3 * c); // (v, c)
+        if (hi - c == 1) set_boundary(t, 0, poly, edges, count, c); // (v, c)
         else push(c, hi, t, 0);
     }
     return root;

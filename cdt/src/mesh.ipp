@@ -91,7 +91,8 @@ void Cdt<Index>::flip(Index t, int i) {
 template <typename Index>
 Status Cdt<Index>::reset() {
     if (a_.vertices.size() < 8 || a_.triangles.size() < triangles_for(a_.vertices.size()) ||
-        a_.work.size() < work_for(a_.vertices.size()) || a_.vertices.size() >= kNone<Index>) {
+        a_.work.size() < work_for(a_.vertices.size()) ||
+        triangles_for(a_.vertices.size()) >= size_t(kNone<Index>) - 1) {
         return Status::OutOfRange;
     }
     constexpr int32_t B = kBoxCoord;

@@ -2,6 +2,7 @@
 // Every result goes through the independent checker.
 #include "harness.h"
 
+#include <cmath>
 #include <cstring>
 #include <random>
 
@@ -205,4 +206,71 @@ TEST(Cdt, DeviceIndexWidthHoldsItsCapacity) {
     static_assert(triangles_for(32768) < 65535);
     EXPECT_EQ(sizeof(Triangle<uint16_t>), 14u);
     EXPECT_EQ(sizeof(Triangle<uint32_t>), 28u);
+}
+
+namespace {
+// Random star polygon with holes and scattered points: the shape of the stress tests.
+Face random_face(uint32_t seed, int max_outer = 200, int points = 300) {
+    std::mt19937 rng(seed);
+    Face f;
+    const int n = 20 + int(rng() % uint32_t(max_outer));
+    std::vector<double> ang(n);
+    for (double& a : ang) a = std::uniform_real_distribution<double>(0, 2 * M_PI)(rng);
+    std::sort(ang.begin(), ang.end());
+    std::vector<Point> outer;
+    for (double a : ang) {
+        const double r = std::uniform_real_distribution<double>(60000, 100000)(rng);
+        outer.push_back({int32_t(r * std::cos(a)), int32_t(r * std::sin(a))});
+    }
+    f.add_loop(outer);
+    const int holes = int(rng() % 12);
+    for (int h = 0; h < holes; ++h) {
+        const int cx = -40000 + (h % 4) * 25000, cy = -30000 + (h / 4) * 25000;
+        f.add_loop(circle(cx, cy, 4000 + int(rng() % 6000), 3 + int(rng() % 30), false));
+    }
+    std::uniform_int_distribution<int32_t> d(-110000, 110000);
+    for (int i = 0; i < points; ++i) f.interior.push_back({d(rng), d(rng)});
+    return f;
+}
+
+// Points first, then every loop segment as a constraint, checking after each one.
+void constraints_after_points(const Face& f) {
+    HostArena<uint32_t> arena(f.points() + 20);
+    Cdt<uint32_t> cdt(arena.view());
+    ASSERT_EQ(cdt.reset(), Status::Ok);
+    std::vector<uint32_t> ids;
+    for (Point p : f.loop_points) {
+        uint32_t v;
+        ASSERT_EQ(cdt.insert_point(p, v, kNone<uint32_t>), Status::Ok);
+        ids.push_back(v);
+    }
+    for (Point p : f.interior) {
+        uint32_t v;
+        ASSERT_EQ(cdt.insert_point(p, v, kNone<uint32_t>), Status::Ok);
+    }
+    std::vector<Segment> done;
+    size_t first = 0;
+    for (uint32_t size : f.loop_sizes) {
+        for (uint32_t j = 0; j < size; ++j) {
+            const uint32_t a = ids[first + j], b = ids[first + (j + 1) % size];
+            ASSERT_EQ(cdt.insert_constraint(a, b), Status::Ok);
+            done.push_back({cdt.vertex(a).p, cdt.vertex(b).p});
+            ASSERT_TRUE(check_cdt(cdt, done, false)) << "after segment " << done.size();
+        }
+        first += size;
+    }
+    ASSERT_EQ(cdt.mark_inner(), Status::Ok);
+    ASSERT_TRUE(check_cdt(cdt, done, true));
+}
+} // namespace
+
+// Regression: segment 45->46 of this face crosses all four triangles around a vertex without
+// passing through it, so the cavity's right chain is x, v, x with a slit edge v-x inside.
+TEST(Cdt, CavityWithASlitEdgeAroundAVertex) { constraints_after_points(random_face(10)); }
+
+TEST(Cdt, StressConstraintsAfterPoints) {
+    for (uint32_t seed = 0; seed < 60; ++seed) {
+        constraints_after_points(random_face(seed));
+        if (HasFatalFailure()) FAIL() << "seed " << seed;
+    }
 }

@@ -61,7 +61,7 @@ template <typename Index>
 
 // Triangulates `face` with a fresh arena sized for it and checks the result.
 template <typename Index = uint32_t>
-struct Run {
+struct FaceRun {
     std::unique_ptr<HostArena<Index>> arena;
     std::unique_ptr<Cdt<Index>> cdt;
     FaceReport report;
@@ -69,8 +69,8 @@ struct Run {
 };
 
 template <typename Index = uint32_t>
-Run<Index> triangulate(const Face& face, LocateMode mode = LocateMode::Sequential, size_t extra = 16) {
-    Run<Index> r;
+FaceRun<Index> triangulate(const Face& face, LocateMode mode = LocateMode::Sequential, size_t extra = 16) {
+    FaceRun<Index> r;
     r.arena = std::make_unique<HostArena<Index>>(face.points() + kBoxVertices + extra);
     r.cdt = std::make_unique<Cdt<Index>>(r.arena->view());
     r.status = triangulate_face(*r.cdt, face.input(), mode, r.report);

@@ -92,9 +92,10 @@ private:
     template <typename Visitor>
     Status trace(Index a, Index b, Index& reached, Visitor& visit);
     void apply_piece(Index a, Index b, uint32_t max_crossed, Index& reached);
-    Index build_polygon(const Index* poly, const Index* edges, uint32_t count, Index* stack,
+    Index build_polygon(const Index* poly, Index* edges, uint32_t count, Index* stack,
                         const Index* slots, uint32_t& cursor);
-    void set_boundary(Index t, int e, const Index* record);
+    void set_boundary(Index t, int e, const Index* poly, Index* edges, uint32_t count, uint32_t i);
+    static constexpr Index kSlit = 4, kSlitBuilt = 8; // bits of a cavity edge record's flag word
 
     bool work_fits(uint32_t need) {
         if (need > a_.work.size()) return false;
