@@ -33,22 +33,26 @@ Status triangulate_face(Cdt<Index>& cdt, const FaceInput& in, LocateMode mode, F
         report = {s, loop, point, 0};
         return s;
     };
-    if (Status s = cdt.reset(); !ok(s)) return fail(s, 0, 0);
-    const ArenaView<Index> a = cdt.arena();
     uint32_t n_loop = 0;
     for (uint32_t size : in.loop_sizes) n_loop += size;
     if (n_loop != in.loop_points.size()) return fail(Status::Corrupt, 0, 0);
     const uint32_t n = n_loop + uint32_t(in.interior.size());
-    if (uint64_t(n) + kBoxVertices > a.vertices.size() || n > a.order.size() ||
-        n > a.minseq.size() || n > a.ins.size() || n > a.keys.size()) {
-        return fail(Status::Full, 0, 0);
-    }
     auto point = [&](uint32_t i) { return i < n_loop ? in.loop_points[i] : in.interior[i - n_loop]; };
+    Point lo{0, 0}, hi{0, 0};
     for (uint32_t i = 0; i < n; ++i) {
         const Point p = point(i);
         if (p.x < -kMaxCoord || p.x > kMaxCoord || p.y < -kMaxCoord || p.y > kMaxCoord) {
             return fail(Status::OutOfRange, 0, i);
         }
+        if (i == 0) lo = hi = p;
+        lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
+        hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+    }
+    if (Status s = cdt.reset(lo, hi); !ok(s)) return fail(s, 0, 0);
+    const ArenaView<Index> a = cdt.arena();
+    if (uint64_t(n) + kBoxVertices > a.vertices.size() || n > a.order.size() ||
+        n > a.minseq.size() || n > a.ins.size() || n > a.keys.size()) {
+        return fail(Status::Full, 0, 0);
     }
 
     // Insertion order: loops as given, then the interior points along a Hilbert curve.
@@ -77,13 +81,40 @@ Status triangulate_face(Cdt<Index>& cdt, const FaceInput& in, LocateMode mode, F
     }
     for (uint32_t k = 0; k < n; ++k) keys[ins[k]] = k; // keys: rank of each point
 
-    KdTree<Index, decltype(point)> tree(a.order.data(), a.minseq.data(), n, point);
-    if (mode != LocateMode::RandomOrder) tree.build([&](Index i) { return keys[i]; });
+    // The kd-tree. KdTreeNearest asks it for every point, so it spans all points, ranked by
+    // insertion order. Sequential asks it only while tracing loops (and once for the first
+    // interior point), when exactly the loop points of lower index are in: there it spans the
+    // loop points, ranked by index, and is built on first use.
+    const uint32_t tree_size = mode == LocateMode::KdTreeNearest ? n : n_loop;
+    KdTree<Index, decltype(point)> tree(a.order.data(), a.minseq.data(), tree_size, point);
+    bool built = false;
+    if (mode == LocateMode::KdTreeNearest) {
+        tree.build([&](Index i) { return keys[i]; });
+        built = true;
+    }
     for (uint32_t i = 0; i < n; ++i) keys[i] = kNone<Index>; // keys: vertex of each point
 
     auto nearest = [&](Point p, uint32_t rank) -> Index {
+        if (!built) {
+            tree.build([](Index i) { return uint32_t(i); });
+            built = true;
+        }
         const int64_t i = tree.nearest(p, rank, [&](Index j) { return keys[j] != kNone<Index>; });
         return i < 0 ? kNone<Index> : Index(keys[i]);
+    };
+    auto dist2 = [](Point p, Point q) {
+        const int64_t dx = int64_t(p.x) - q.x, dy = int64_t(p.y) - q.y;
+        return dx * dx + dy * dy;
+    };
+    // Where a run (a loop, or the interior points) starts: walk from the last vertex when it is
+    // near, compared with the run's own first step (`next`); ask the kd-tree otherwise.
+    auto run_start = [&](Point p, Point next, uint32_t rank) -> Index {
+        const Index last = cdt.last_vertex();
+        if (last != kNone<Index>) {
+            const int64_t step = std::max<int64_t>(dist2(p, next), 1);
+            if (dist2(cdt.vertex(last).p, p) <= 16 * step) return last;
+        }
+        return nearest(p, rank);
     };
 
     // The loop being traced and its first point (loops arrive in order except in RandomOrder).
@@ -99,8 +130,14 @@ Status triangulate_face(Cdt<Index>& cdt, const FaceInput& in, LocateMode mode, F
         if (mode == LocateMode::KdTreeNearest) {
             hint = nearest(p, k);
         } else if (mode == LocateMode::Sequential) {
-            const bool starts_run = (is_loop_point && i == loop_first) || i == n_loop;
-            hint = starts_run ? nearest(p, k) : cdt.last_vertex();
+            if (is_loop_point && i == loop_first) {
+                const uint32_t size = in.loop_sizes[loop];
+                hint = run_start(p, point(size > 1 ? i + 1 : i), k);
+            } else if (i == n_loop) {
+                hint = run_start(p, k + 1 < n ? point(ins[k + 1]) : p, k);
+            } else {
+                hint = cdt.last_vertex();
+            }
         } else {
             hint = cdt.last_vertex();
         }

@@ -96,7 +96,8 @@ Status Cdt<Index>::legalize(Index v, uint32_t top) {
 template <typename Index>
 Status Cdt<Index>::insert_point(Point p, Index& out, Index hint) {
     if (nt_ == 0) return Status::OutOfRange; // reset() not called
-    if (p.x < -kMaxCoord || p.x > kMaxCoord || p.y < -kMaxCoord || p.y > kMaxCoord) {
+    if (p.x < -kMaxCoord || p.x > kMaxCoord || p.y < -kMaxCoord || p.y > kMaxCoord ||
+        p.x <= box_lo_.x || p.x >= box_hi_.x || p.y <= box_lo_.y || p.y >= box_hi_.y) {
         return Status::OutOfRange;
     }
     Location<Index> loc;

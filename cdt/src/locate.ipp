@@ -138,7 +138,8 @@ Status Cdt<Index>::walk(Index s, Point p, Location<Index>& out, Index*) {
 
 template <typename Index>
 Status Cdt<Index>::locate(Point p, Index from, Location<Index>& out) {
-    if (p.x < -kMaxCoord || p.x > kMaxCoord || p.y < -kMaxCoord || p.y > kMaxCoord) {
+    if (p.x < -kMaxCoord || p.x > kMaxCoord || p.y < -kMaxCoord || p.y > kMaxCoord ||
+        p.x <= box_lo_.x || p.x >= box_hi_.x || p.y <= box_lo_.y || p.y >= box_hi_.y) {
         return Status::OutOfRange;
     }
     if (from != kNone<Index> && (from < kBoxVertices || from >= nv_)) return Status::OutOfRange;

@@ -3,6 +3,8 @@
 #include "cdt/cdt.h"
 #include "cdt/predicates.h"
 
+#include <algorithm>
+
 namespace facet::cdt {
 
 template <typename Index>
@@ -54,25 +56,21 @@ void Cdt<Index>::set_vertex_tri(Index t) {
 //      \ u /                 \ | /
 //       \ /                   \|/
 //        a                     a
-// (t = (p, a, b), u = (q, b, a) after rotation.) The outer four edges keep their neighbours
-// and flags; the new edge p-q is unconstrained.
+// (t = (p, a, b) with p = t.v[i], u = (q, b, a) read from its shared edge.) The outer four
+// edges keep their neighbours and flags; the new edge p-q is unconstrained.
 template <typename Index>
 void Cdt<Index>::flip(Index t, int i) {
-    rotate(t, i);
     Triangle<Index>& T = a_.triangles[t];
-    const Index u = T.n[0];
-    rotate(u, a_.triangles[u].edge_to(t));
+    const Index u = T.n[i];
     Triangle<Index>& U = a_.triangles[u];
-    const Index p = T.v[0], a = T.v[1], b = T.v[2], q = U.v[0];
-    const Index n_bp = T.n[1], n_pa = T.n[2], n_aq = U.n[1], n_qb = U.n[2];
-    const Flag f_bp = T.flag(1), f_pa = T.flag(2), f_aq = U.flag(1), f_qb = U.flag(2);
+    const int j = U.edge_to(t);
+    const int i1 = next3(i), i2 = prev3(i), j1 = next3(j), j2 = prev3(j);
+    const Index p = T.v[i], a = T.v[i1], b = T.v[i2], q = U.v[j];
+    const Index n_bp = T.n[i1], n_pa = T.n[i2], n_aq = U.n[j1], n_qb = U.n[j2];
+    const Flag f_bp = T.flag(i1), f_pa = T.flag(i2), f_aq = U.flag(j1), f_qb = U.flag(j2);
 
-    T = {{p, a, q}, {n_aq, u, n_pa}, 0};
-    T.set_flag(0, f_aq);
-    T.set_flag(2, f_pa);
-    U = {{q, b, p}, {n_bp, t, n_qb}, 0};
-    U.set_flag(0, f_bp);
-    U.set_flag(2, f_qb);
+    T = {{p, a, q}, {n_aq, u, n_pa}, uint8_t(uint8_t(f_aq) | uint8_t(f_pa) << 4)};
+    U = {{q, b, p}, {n_bp, t, n_qb}, uint8_t(uint8_t(f_bp) | uint8_t(f_qb) << 4)};
     if (n_aq != kNone<Index>) {
         Triangle<Index>& N = a_.triangles[n_aq];
         N.n[N.edge_to(u)] = t;
@@ -90,13 +88,27 @@ void Cdt<Index>::flip(Index t, int i) {
 
 template <typename Index>
 Status Cdt<Index>::reset() {
+    return reset({-kMaxCoord, -kMaxCoord}, {kMaxCoord, kMaxCoord});
+}
+
+template <typename Index>
+Status Cdt<Index>::reset(Point lo, Point hi) {
+    if (lo.x > hi.x || lo.y > hi.y || lo.x < -kMaxCoord || lo.y < -kMaxCoord ||
+        hi.x > kMaxCoord || hi.y > kMaxCoord) {
+        return Status::OutOfRange;
+    }
     if (a_.vertices.size() < 8 || a_.triangles.size() < triangles_for(a_.vertices.size()) ||
         a_.work.size() < work_for(a_.vertices.size()) ||
         triangles_for(a_.vertices.size()) >= size_t(kNone<Index>) - 1) {
         return Status::OutOfRange;
     }
-    constexpr int32_t B = kBoxCoord;
-    const Point corners[4] = {{-B, -B}, {B, -B}, {B, B}, {-B, B}};
+    // Corners one extent (at least 16 units) beyond the bounds: inside +-kBoxCoord, since
+    // the bounds are inside +-kMaxCoord and the extent is at most 2 * kMaxCoord... halved.
+    const int32_t extent = std::max(hi.x - lo.x, hi.y - lo.y);
+    const int32_t m = extent / 2 + 16;
+    box_lo_ = {lo.x - m, lo.y - m};
+    box_hi_ = {hi.x + m, hi.y + m};
+    const Point corners[4] = {box_lo_, {box_hi_.x, box_lo_.y}, box_hi_, {box_lo_.x, box_hi_.y}};
     for (Index i = 0; i < 4; ++i) a_.vertices[i] = {corners[i], kNone<Index>};
     nv_ = 4;
     nt_ = 0;

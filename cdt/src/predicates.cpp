@@ -15,9 +15,23 @@ void mul_u64(uint64_t a, uint64_t b, uint64_t& lo, uint64_t& hi) {
 uint64_t magnitude(int64_t v) { return v < 0 ? ~static_cast<uint64_t>(v) + 1 : uint64_t(v); }
 uint32_t abs32(int32_t v) { return v < 0 ? uint32_t(0) - uint32_t(v) : uint32_t(v); }
 
+// Bit length: 0 for 0, else floor(log2 v) + 1.
+int bits(uint64_t v) { return v ? 64 - __builtin_clzll(v) : 0; }
+
 } // namespace
 
 Int128 Int128::mul(int64_t a, int64_t b) {
+#if defined(__SIZEOF_INT128__)
+    // 64-bit hosts multiply 64 x 64 -> 128 in one instruction. The 32-bit targets have no
+    // __int128 and use mul_portable, which the host tests check against GMP as well.
+    const __int128 p = static_cast<__int128>(a) * b;
+    return {static_cast<uint64_t>(p), static_cast<int64_t>(p >> 64)};
+#else
+    return mul_portable(a, b);
+#endif
+}
+
+Int128 Int128::mul_portable(int64_t a, int64_t b) {
     uint64_t lo, hi;
     mul_u64(magnitude(a), magnitude(b), lo, hi);
     Int128 r{lo, static_cast<int64_t>(hi)};
@@ -44,9 +58,15 @@ int64_t orient2d(int32_t ax, int32_t ay, int32_t bx, int32_t by, int32_t cx, int
 
 int incircle_exact(int32_t ax, int32_t ay, int32_t bx, int32_t by, int32_t cx, int32_t cy,
                    int32_t dx, int32_t dy) {
-    const int64_t adx = int64_t(ax) - dx, ady = int64_t(ay) - dy;
-    const int64_t bdx = int64_t(bx) - dx, bdy = int64_t(by) - dy;
-    const int64_t cdx = int64_t(cx) - dx, cdy = int64_t(cy) - dy;
+    const int32_t sx = ax - dx, sy = ay - dy, tx = bx - dx, ty = by - dy, ux = cx - dx, uy = cy - dy;
+    if ((abs32(sx) | abs32(sy) | abs32(tx) | abs32(ty) | abs32(ux) | abs32(uy)) < 16384) {
+        // All differences below 2^14: lifts < 2^29, minors < 2^29, the sum < 3 * 2^58.
+        const int64_t det = int64_t(sx * sx + sy * sy) * (int64_t(tx) * uy - int64_t(ux) * ty) +
+                            int64_t(tx * tx + ty * ty) * (int64_t(ux) * sy - int64_t(sx) * uy) +
+                            int64_t(ux * ux + uy * uy) * (int64_t(sx) * ty - int64_t(tx) * sy);
+        return det > 0 ? 1 : (det < 0 ? -1 : 0);
+    }
+    const int64_t adx = sx, ady = sy, bdx = tx, bdy = ty, cdx = ux, cdy = uy;
     const int64_t alift = adx * adx + ady * ady, blift = bdx * bdx + bdy * bdy;
     const int64_t clift = cdx * cdx + cdy * cdy;
     const int64_t bc = bdx * cdy - cdx * bdy, ca = cdx * ady - adx * cdy;
@@ -57,21 +77,31 @@ int incircle_exact(int32_t ax, int32_t ay, int32_t bx, int32_t by, int32_t cx, i
 
 int incircle(int32_t ax, int32_t ay, int32_t bx, int32_t by, int32_t cx, int32_t cy, int32_t dx,
              int32_t dy) {
-    const int32_t adx = ax - dx, ady = ay - dy, bdx = bx - dx, bdy = by - dy;
-    const int32_t cdx = cx - dx, cdy = cy - dy;
-    constexpr uint32_t kFast = 28000; // 12 * 28000^4 < 2^63
-    if ((abs32(adx) | abs32(ady) | abs32(bdx) | abs32(bdy) | abs32(cdx) | abs32(cdy)) < 16384 ||
-        (abs32(adx) <= kFast && abs32(ady) <= kFast && abs32(bdx) <= kFast &&
-         abs32(bdy) <= kFast && abs32(cdx) <= kFast && abs32(cdy) <= kFast)) {
-        const int64_t alift = int64_t(adx) * adx + int64_t(ady) * ady;
-        const int64_t blift = int64_t(bdx) * bdx + int64_t(bdy) * bdy;
-        const int64_t clift = int64_t(cdx) * cdx + int64_t(cdy) * cdy;
-        const int64_t det = alift * (int64_t(bdx) * cdy - int64_t(cdx) * bdy) +
-                            blift * (int64_t(cdx) * ady - int64_t(adx) * cdy) +
-                            clift * (int64_t(adx) * bdy - int64_t(bdx) * ady);
+    // The lifted terms and the 2x2 minors are exact in int64 over the whole range (< 2^54).
+    // Each product lift * minor fits int64 when their bit lengths add up to at most 61, and
+    // then the sum of three fits too (< 3 * 2^61 < 2^63): the usual case for nearby points at
+    // any absolute scale. Otherwise the exact two-limb path.
+    const int32_t sx = ax - dx, sy = ay - dy, tx = bx - dx, ty = by - dy, ux = cx - dx, uy = cy - dy;
+    if ((abs32(sx) | abs32(sy) | abs32(tx) | abs32(ty) | abs32(ux) | abs32(uy)) < 16384) {
+        // All differences below 2^14: lifts < 2^29, minors < 2^29, the sum < 3 * 2^58.
+        const int64_t det = int64_t(sx * sx + sy * sy) * (int64_t(tx) * uy - int64_t(ux) * ty) +
+                            int64_t(tx * tx + ty * ty) * (int64_t(ux) * sy - int64_t(sx) * uy) +
+                            int64_t(ux * ux + uy * uy) * (int64_t(sx) * ty - int64_t(tx) * sy);
         return det > 0 ? 1 : (det < 0 ? -1 : 0);
     }
-    return incircle_exact(ax, ay, bx, by, cx, cy, dx, dy);
+    const int64_t adx = sx, ady = sy, bdx = tx, bdy = ty, cdx = ux, cdy = uy;
+    const int64_t alift = adx * adx + ady * ady, blift = bdx * bdx + bdy * bdy;
+    const int64_t clift = cdx * cdx + cdy * cdy;
+    const int64_t bc = bdx * cdy - cdx * bdy, ca = cdx * ady - adx * cdy;
+    const int64_t ab = adx * bdy - bdx * ady;
+    if (bits(uint64_t(alift)) + bits(magnitude(bc)) <= 61 &&
+        bits(uint64_t(blift)) + bits(magnitude(ca)) <= 61 &&
+        bits(uint64_t(clift)) + bits(magnitude(ab)) <= 61) {
+        const int64_t det = alift * bc + blift * ca + clift * ab;
+        return det > 0 ? 1 : (det < 0 ? -1 : 0);
+    }
+    const Int128 det = Int128::mul(alift, bc) + Int128::mul(blift, ca) + Int128::mul(clift, ab);
+    return det.sign();
 }
 
 } // namespace facet::cdt

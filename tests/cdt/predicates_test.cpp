@@ -48,11 +48,23 @@ TEST(Predicates, Int128MatchesGmpOnExtremes) {
     const int64_t vals[] = {0, 1, -1, INT64_MAX, INT64_MIN + 1, (int64_t(1) << 53), -(int64_t(1) << 53) + 7, 0x123456789ABCDEFLL};
     for (int64_t a : vals) {
         for (int64_t b : vals) {
-            const Int128 p = Int128::mul(a, b);
-            mpz_class ref = mpz_class(std::to_string(a)) * mpz_class(std::to_string(b));
-            mpz_class got = mpz_class(std::to_string(p.hi)) * mpz_class("18446744073709551616") + mpz_class(std::to_string(p.lo));
-            ASSERT_EQ(got, ref) << a << " * " << b;
+            const mpz_class ref = mpz_class(std::to_string(a)) * mpz_class(std::to_string(b));
+            for (const Int128 p : {Int128::mul(a, b), Int128::mul_portable(a, b)}) {
+                const mpz_class got = mpz_class(std::to_string(p.hi)) * mpz_class("18446744073709551616") + mpz_class(std::to_string(p.lo));
+                ASSERT_EQ(got, ref) << a << " * " << b;
+            }
         }
+    }
+}
+
+TEST(Predicates, PortableProductMatchesGmpOnRandomOperands) {
+    std::mt19937_64 rng(4);
+    for (int i = 0; i < 200000; ++i) {
+        const int64_t a = int64_t(rng()) >> (rng() % 40), b = int64_t(rng()) >> (rng() % 40);
+        const Int128 p = Int128::mul_portable(a, b);
+        const mpz_class ref = mpz_class(std::to_string(a)) * mpz_class(std::to_string(b));
+        const mpz_class got = mpz_class(std::to_string(p.hi)) * mpz_class("18446744073709551616") + mpz_class(std::to_string(p.lo));
+        ASSERT_EQ(got, ref) << a << " * " << b;
     }
 }
 

@@ -39,9 +39,13 @@ class Cdt {
 public:
     explicit Cdt(ArenaView<Index> arena) : a_(arena) {}
 
-    // Starts a new face: the box corners (vertices 0..3) and two triangles. OutOfRange if the
-    // arena is too small to hold even that or its work buffer is short of work_for().
+    // Starts a new face: the box corners (vertices 0..3) and two triangles. By default the box
+    // is +-kBoxCoord, around the whole input range; given the bounds of the points to come,
+    // it sits just around them (fewer flips against far-away corners, smaller predicates).
+    // OutOfRange if the arena is too small or its work buffer is short of work_for(), or the
+    // bounds leave +-kMaxCoord.
     Status reset();
+    Status reset(Point lo, Point hi);
 
     // Inserts p, walking from vertex `hint` (kNone: from the last inserted vertex). `out` is the
     // new vertex, or the existing one if p is a duplicate. OutOfRange outside +-kMaxCoord; Full
@@ -109,6 +113,7 @@ private:
     ArenaView<Index> a_;
     Index nv_ = 0, nt_ = 0;
     Index last_ = kNone<Index>;
+    Point box_lo_{-kBoxCoord, -kBoxCoord}, box_hi_{kBoxCoord, kBoxCoord};
     CdtStats stats_;
 };
 

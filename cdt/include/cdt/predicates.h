@@ -4,8 +4,9 @@
 // Range: every coordinate |x|, |y| <= kPredicateRange (2^25), so differences fit 27 bits.
 //   orient2d: products of differences <= 2^52, the determinant <= 2^53: exact in int64.
 //   incircle: lifted terms <= 2^53 times 2x2 minors <= 2^53, three of them: < 2^108.
-//             A 64-bit fast path when every difference is <= 28,000 (12 * 28000^4 < 2^63),
-//             otherwise an exact two-limb (128-bit) evaluation built from 32x32 products.
+//             64-bit paths when the terms provably fit (all differences < 2^14, or every
+//             lift * minor product under 2^61), otherwise an exact two-limb (128-bit)
+//             evaluation: from 32x32 products on 32-bit cores, the native multiply on 64-bit hosts.
 // The CDT keeps its input within kMaxCoord = 2^24 and puts its box corners at 2^25.
 #include <cstdint>
 
@@ -26,7 +27,8 @@ struct Int128 {
     uint64_t lo;
     int64_t hi;
 
-    static Int128 mul(int64_t a, int64_t b); // exact product
+    static Int128 mul(int64_t a, int64_t b);          // exact product
+    static Int128 mul_portable(int64_t a, int64_t b); // the same from 32 x 32 -> 64 products
     Int128 operator+(const Int128& o) const;
     Int128 operator-(const Int128& o) const;
     int sign() const { return hi < 0 ? -1 : ((hi | static_cast<int64_t>(lo)) ? 1 : 0); }
