@@ -28,13 +28,44 @@ int winding_step(Point a, Point b, int64_t cx, int64_t cy) {
     return 0;
 }
 
+constexpr uint32_t kSlabs = 1024;
+
+struct Slabs {
+    int64_t ymin = INT64_MAX, ymax = INT64_MIN;
+    explicit Slabs(std::span<const Segment> cons) {
+        for (const Segment& sg : cons) {
+            ymin = std::min<int64_t>(ymin, std::min(sg.a.y, sg.b.y));
+            ymax = std::max<int64_t>(ymax, std::max(sg.a.y, sg.b.y));
+        }
+    }
+    uint32_t of(int64_t y3) const { // y scaled by 3
+        const int64_t span = ymax >= ymin ? (ymax - ymin + 1) : 1;
+        const int64_t s = ((y3 - 3 * ymin) * kSlabs) / (3 * span);
+        return uint32_t(s < 0 ? 0 : (s >= kSlabs ? kSlabs - 1 : s));
+    }
+    // Entries of the slab index: each non-horizontal segment once per slab it spans.
+    size_t entries(std::span<const Segment> cons) const {
+        size_t n = 0;
+        for (const Segment& sg : cons) {
+            if (sg.a.y == sg.b.y) continue;
+            n += of(3 * int64_t(std::max(sg.a.y, sg.b.y))) - of(3 * int64_t(std::min(sg.a.y, sg.b.y))) + 1;
+        }
+        return n;
+    }
+};
+
 } // namespace
+
+size_t check_scratch_words(size_t vertices, size_t triangles, std::span<const Segment> segments) {
+    // vertices by position; Along edges: at most 3T/2 + 4, two words each, plus one mark each
+    return vertices + 3 * (3 * triangles / 2 + 4) + (kSlabs + 1) + Slabs(segments).entries(segments) + 16;
+}
 
 template <typename Index>
 CheckResult check(const Cdt<Index>& cdt, std::span<const Segment> cons, bool check_inner,
                   std::span<uint32_t> scratch) {
     const uint32_t nv = cdt.vertex_count(), nt = cdt.triangle_count();
-    if (scratch.size() < check_scratch_words(nv, nt, cons.size())) {
+    if (scratch.size() < check_scratch_words(nv, nt, cons)) {
         return fail("checker: scratch of {} words is too small", scratch.size());
     }
     if (nv < 4) return fail("fewer than the 4 box vertices");
@@ -159,20 +190,12 @@ CheckResult check(const Cdt<Index>& cdt, std::span<const Segment> cons, bool che
     if (!check_inner) return {};
     // Inner set by winding number of each centroid, with the segments bucketed into
     // horizontal slabs so each query sees only segments that span its height.
-    uint32_t* slab_start = used + ne;    // kSlabs + 1 entries
-    constexpr uint32_t kSlabs = 1024;
+    uint32_t* slab_start = used + ne; // kSlabs + 1 entries
     uint32_t* slab_items = slab_start + kSlabs + 1;
     const size_t room = scratch.size() - size_t(slab_items - scratch.data());
-    int64_t ymin = INT64_MAX, ymax = INT64_MIN;
-    for (const Segment& sg : cons) {
-        ymin = std::min<int64_t>(ymin, std::min(sg.a.y, sg.b.y));
-        ymax = std::max<int64_t>(ymax, std::max(sg.a.y, sg.b.y));
-    }
-    const int64_t span = ymax >= ymin ? (ymax - ymin + 1) : 1;
-    auto slab_of = [&](int64_t y3) { // y scaled by 3
-        const int64_t s = ((y3 - 3 * ymin) * kSlabs) / (3 * span);
-        return uint32_t(s < 0 ? 0 : (s >= kSlabs ? kSlabs - 1 : s));
-    };
+    const Slabs slabs(cons);
+    const int64_t ymin = slabs.ymin, ymax = slabs.ymax;
+    auto slab_of = [&](int64_t y3) { return slabs.of(y3); };
     for (uint32_t i = 0; i <= kSlabs; ++i) slab_start[i] = 0;
     for (int pass = 0; pass < 2; ++pass) {
         for (uint32_t s = 0; s < cons.size(); ++s) {

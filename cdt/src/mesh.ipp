@@ -69,8 +69,13 @@ void Cdt<Index>::flip(Index t, int i) {
     const Index n_bp = T.n[i1], n_pa = T.n[i2], n_aq = U.n[j1], n_qb = U.n[j2];
     const Flag f_bp = T.flag(i1), f_pa = T.flag(i2), f_aq = U.flag(j1), f_qb = U.flag(j2);
 
-    T = {{p, a, q}, {n_aq, u, n_pa}, uint8_t(uint8_t(f_aq) | uint8_t(f_pa) << 4)};
-    U = {{q, b, p}, {n_bp, t, n_qb}, uint8_t(uint8_t(f_bp) | uint8_t(f_qb) << 4)};
+    // Field by field: aggregate assignment of the 14-byte record costs a memcpy on ARMv5.
+    T.v[0] = p, T.v[1] = a, T.v[2] = q;
+    T.n[0] = n_aq, T.n[1] = u, T.n[2] = n_pa;
+    T.flags = uint8_t(uint8_t(f_aq) | uint8_t(f_pa) << 4);
+    U.v[0] = q, U.v[1] = b, U.v[2] = p;
+    U.n[0] = n_bp, U.n[1] = t, U.n[2] = n_qb;
+    U.flags = uint8_t(uint8_t(f_bp) | uint8_t(f_qb) << 4);
     if (n_aq != kNone<Index>) {
         Triangle<Index>& N = a_.triangles[n_aq];
         N.n[N.edge_to(u)] = t;

@@ -15,8 +15,11 @@ void mul_u64(uint64_t a, uint64_t b, uint64_t& lo, uint64_t& hi) {
 uint64_t magnitude(int64_t v) { return v < 0 ? ~static_cast<uint64_t>(v) + 1 : uint64_t(v); }
 uint32_t abs32(int32_t v) { return v < 0 ? uint32_t(0) - uint32_t(v) : uint32_t(v); }
 
-// Bit length: 0 for 0, else floor(log2 v) + 1.
-int bits(uint64_t v) { return v ? 64 - __builtin_clzll(v) : 0; }
+// Bit length: 0 for 0, else floor(log2 v) + 1 (two 32-bit CLZs: cheap on ARMv5TE and later).
+int bits(uint64_t v) {
+    const uint32_t hi = uint32_t(v >> 32), lo = uint32_t(v);
+    return hi ? 64 - __builtin_clz(hi) : (lo ? 32 - __builtin_clz(lo) : 0);
+}
 
 } // namespace
 
@@ -77,16 +80,16 @@ int incircle_exact(int32_t ax, int32_t ay, int32_t bx, int32_t by, int32_t cx, i
 
 int incircle(int32_t ax, int32_t ay, int32_t bx, int32_t by, int32_t cx, int32_t cy, int32_t dx,
              int32_t dy) {
-    // The lifted terms and the 2x2 minors are exact in int64 over the whole range (< 2^54).
-    // Each product lift * minor fits int64 when their bit lengths add up to at most 61, and
-    // then the sum of three fits too (< 3 * 2^61 < 2^63): the usual case for nearby points at
-    // any absolute scale. Otherwise the exact two-limb path.
+    // Four exact tiers, cheapest first. The lifted terms (squared distances to d) and the 2x2
+    // minors are exact in int64 over the whole range (< 2^54); what varies is how their
+    // products are summed.
     const int32_t sx = ax - dx, sy = ay - dy, tx = bx - dx, ty = by - dy, ux = cx - dx, uy = cy - dy;
     if ((abs32(sx) | abs32(sy) | abs32(tx) | abs32(ty) | abs32(ux) | abs32(uy)) < 16384) {
-        // All differences below 2^14: lifts < 2^29, minors < 2^29, the sum < 3 * 2^58.
-        const int64_t det = int64_t(sx * sx + sy * sy) * (int64_t(tx) * uy - int64_t(ux) * ty) +
-                            int64_t(tx * tx + ty * ty) * (int64_t(ux) * sy - int64_t(sx) * uy) +
-                            int64_t(ux * ux + uy * uy) * (int64_t(sx) * ty - int64_t(tx) * sy);
+        // 1. Differences below 2^14: lifts and minors below 2^29 fit 32 bits, the products are
+        //    32 x 32 -> 64 and the sum stays below 3 * 2^58.
+        const int32_t alift = sx * sx + sy * sy, blift = tx * tx + ty * ty, clift = ux * ux + uy * uy;
+        const int32_t bc = tx * uy - ux * ty, ca = ux * sy - sx * uy, ab = sx * ty - tx * sy;
+        const int64_t det = int64_t(alift) * bc + int64_t(blift) * ca + int64_t(clift) * ab;
         return det > 0 ? 1 : (det < 0 ? -1 : 0);
     }
     const int64_t adx = sx, ady = sy, bdx = tx, bdy = ty, cdx = ux, cdy = uy;
@@ -94,12 +97,25 @@ int incircle(int32_t ax, int32_t ay, int32_t bx, int32_t by, int32_t cx, int32_t
     const int64_t clift = cdx * cdx + cdy * cdy;
     const int64_t bc = bdx * cdy - cdx * bdy, ca = cdx * ady - adx * cdy;
     const int64_t ab = adx * bdy - bdx * ady;
-    if (bits(uint64_t(alift)) + bits(magnitude(bc)) <= 61 &&
-        bits(uint64_t(blift)) + bits(magnitude(ca)) <= 61 &&
-        bits(uint64_t(clift)) + bits(magnitude(ab)) <= 61) {
+    const int la = bits(uint64_t(alift)), lb = bits(uint64_t(blift)), lc = bits(uint64_t(clift));
+    const int ma = bits(magnitude(bc)), mb = bits(magnitude(ca)), mc = bits(magnitude(ab));
+    if (la + ma <= 61 && lb + mb <= 61 && lc + mc <= 61) {
+        // 2. Each product below 2^61, so their sum below 2^63.
         const int64_t det = alift * bc + blift * ca + clift * ab;
         return det > 0 ? 1 : (det < 0 ? -1 : 0);
     }
+    if (la <= 40 && lb <= 40 && lc <= 40 && ma <= 40 && mb <= 40 && mc <= 40) {
+        // 3. Split each lift as h * 2^20 + l (h, l < 2^20): every partial product is below 2^60,
+        //    det = A * 2^20 + B with |A|, |B| < 3 * 2^60, and with B = q * 2^20 + r (0 <= r < 2^20)
+        //    the sign of det is the sign of A + q, or of r when A + q is 0.
+        constexpr int64_t kLow = (int64_t(1) << 20) - 1;
+        const int64_t A = (alift >> 20) * bc + (blift >> 20) * ca + (clift >> 20) * ab;
+        const int64_t B = (alift & kLow) * bc + (blift & kLow) * ca + (clift & kLow) * ab;
+        const int64_t hi = A + (B >> 20); // arithmetic shift: floor division
+        if (hi != 0) return hi > 0 ? 1 : -1;
+        return (B & kLow) != 0 ? 1 : 0;
+    }
+    // 4. The full range: exact 128-bit sums.
     const Int128 det = Int128::mul(alift, bc) + Int128::mul(blift, ca) + Int128::mul(clift, ab);
     return det.sign();
 }

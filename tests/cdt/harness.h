@@ -53,7 +53,7 @@ std::vector<Point> circle(int32_t cx, int32_t cy, int32_t r, int n, bool ccw);
 
 template <typename Index>
 ::testing::AssertionResult check_cdt(const Cdt<Index>& cdt, const std::vector<Segment>& segs, bool inner) {
-    std::vector<uint32_t> scratch(check_scratch_words(cdt.vertex_count(), cdt.triangle_count(), segs.size()));
+    std::vector<uint32_t> scratch(check_scratch_words(cdt.vertex_count(), cdt.triangle_count(), std::span<const Segment>(segs)));
     const CheckResult r = check(cdt, std::span<const Segment>(segs), inner, std::span<uint32_t>(scratch));
     if (r.ok) return ::testing::AssertionSuccess();
     return ::testing::AssertionFailure() << r.message;

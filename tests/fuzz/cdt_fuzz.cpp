@@ -103,7 +103,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         if (!ok(cdt.insert_point(p, v, cdt.last_vertex()))) std::abort();
     }
     const bool inner = shape % 2 == 1 && all_loops && ok(cdt.mark_inner());
-    std::vector<uint32_t> scratch(check_scratch_words(cdt.vertex_count(), cdt.triangle_count(), inserted.size()));
+    std::vector<uint32_t> scratch(check_scratch_words(cdt.vertex_count(), cdt.triangle_count(), std::span<const Segment>(inserted)));
     require(check(cdt, std::span<const Segment>(inserted), inner, std::span<uint32_t>(scratch)));
     return 0;
 }

@@ -106,6 +106,8 @@ def main():
     ap.add_argument('--icount', action='store_true', help='count instructions between markers')
     ap.add_argument('--limit', type=int, default=0, help='fail any region above N instructions')
     ap.add_argument('--budget', action='append', default=[], metavar='REGION=N')
+    ap.add_argument('--profile', action='store_true',
+                    help='with --icount: write OUT/profile.txt, instructions per function in regions')
     ap.add_argument('--window', action='store_true', help='open a QEMU window if a display exists')
     ap.add_argument('--quiet', action='store_true')
     args = ap.parse_args()
@@ -141,6 +143,8 @@ def main():
         parg = f'{plugin},begin={begin:#x},end={end:#x}'
         if args.limit:
             parg += f',limit={args.limit}'
+        if args.profile:
+            parg += f',profile={os.path.join(out, "profile.raw")}'
         cmd += ['-plugin', parg, '-d', 'plugin', '-D', plugin_log]
 
     budgets = {}
@@ -255,6 +259,12 @@ def main():
         got = next((r['instructions'] for r in report['regions'] if r['name'] == k), None)
         if got != v:
             report['failures'].append(f'region {k}: expected exactly {v} instructions, got {got}')
+    if args.icount and args.profile and os.path.exists(os.path.join(out, 'profile.raw')):
+        prof = subprocess.run([sys.executable, os.path.join(HERE, 'profile.py'), elf,
+                               os.path.join(out, 'profile.raw')], capture_output=True, text=True).stdout
+        with open(os.path.join(out, 'profile.txt'), 'w') as f:
+            f.write(prof)
+        print(f'profile: {os.path.relpath(os.path.join(out, "profile.txt"))}')
     if report['ram']:
         print(f'RAM: {report["ram"].get("total", 0):,} bytes in use of 33,554,432'
               if args.board == 'qemu-versatilepb' else f'RAM: {report["ram"].get("total", 0):,} bytes in use')

@@ -26,10 +26,9 @@ struct CheckResult {
     char message[192] = {};
 };
 
-constexpr size_t check_scratch_words(size_t vertices, size_t triangles, size_t segments) {
-    // sorted vertices, Along edges (pairs) and their marks, the slab index of the segments
-    return vertices + 5 * triangles + 2 * 1025 + 64 * segments + 8192;
-}
+// Scratch (32-bit words) check() needs: sorted vertices, the Along edges and their marks, and
+// a slab index of the segments (its size depends on how tall they are, so it is counted).
+size_t check_scratch_words(size_t vertices, size_t triangles, std::span<const Segment> segments);
 
 template <typename Index>
 CheckResult check(const Cdt<Index>& cdt, std::span<const Segment> constraints, bool check_inner,

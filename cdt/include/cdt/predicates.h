@@ -4,9 +4,10 @@
 // Range: every coordinate |x|, |y| <= kPredicateRange (2^25), so differences fit 27 bits.
 //   orient2d: products of differences <= 2^52, the determinant <= 2^53: exact in int64.
 //   incircle: lifted terms <= 2^53 times 2x2 minors <= 2^53, three of them: < 2^108.
-//             64-bit paths when the terms provably fit (all differences < 2^14, or every
-//             lift * minor product under 2^61), otherwise an exact two-limb (128-bit)
-//             evaluation: from 32x32 products on 32-bit cores, the native multiply on 64-bit hosts.
+//             Four exact tiers: differences < 2^14 (32-bit terms); every lift * minor under
+//             2^61 (int64); lifts and minors under 2^40 (split products, int64); otherwise two
+//             limbs (128-bit) from 32x32 products on 32-bit cores, the native multiply on
+//             64-bit hosts.
 // The CDT keeps its input within kMaxCoord = 2^24 and puts its box corners at 2^25.
 #include <cstdint>
 

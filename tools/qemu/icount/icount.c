@@ -1,7 +1,7 @@
 /*
  * facet-icount: exact guest instruction counts between two marker functions.
  *
- *   -plugin facet-icount.so,begin=0xADDR,end=0xADDR[,limit=N][,total=on]
+ *   -plugin facet-icount.so,begin=0xADDR,end=0xADDR[,limit=N][,total=on][,profile=FILE]
  *
  * begin/end are the addresses of facet_mark_begin and facet_mark_end (each a single return
  * instruction, see boards/common). Every translation block adds its instruction count to a
@@ -15,7 +15,9 @@
  *
  * Interrupts must be off (or absent) in measured code for counts to repeat exactly; the facet
  * boards poll their timers and UARTs, so they are. With limit=N a region of more than N
- * instructions stops QEMU with exit code 3 and a message.
+ * instructions stops QEMU with exit code 3 and a message. With profile=FILE, every translation
+ * block executed inside a region is tallied and FILE gets "address instructions" lines at exit
+ * (tools/qemu/profile.py maps them to functions).
  */
 #include "qemu_plugin_api.h"
 
@@ -36,6 +38,35 @@ static uint64_t open_start[MAX_DEPTH];
 static uint32_t open_id[MAX_DEPTH];
 static int depth;
 static uint32_t next_id;
+static const char* profile_path;
+
+/* Profile: one record per translated block start, found by open addressing on the address. */
+#define PROFILE_SLOTS (1u << 20)
+struct tb_record {
+    uint64_t vaddr;
+    uint64_t insns;
+    uint64_t executed;
+};
+static struct tb_record* profile_table;
+
+static struct tb_record* profile_slot(uint64_t vaddr, uint64_t insns) {
+    uint64_t h = (vaddr >> 1) * 0x9E3779B97F4A7C15ull;
+    for (uint32_t probe = 0; probe < PROFILE_SLOTS; ++probe) {
+        struct tb_record* r = &profile_table[(h + probe) & (PROFILE_SLOTS - 1)];
+        if (r->insns == 0 || (r->vaddr == vaddr && r->insns == insns)) {
+            r->vaddr = vaddr;
+            r->insns = insns;
+            return r;
+        }
+    }
+    return NULL;
+}
+
+static void on_tb_exec(unsigned int vcpu, void* udata) {
+    (void)vcpu;
+    struct tb_record* r = udata;
+    if (depth > 0) r->executed += r->insns;
+}
 
 static void say(const char* text) { qemu_plugin_outs(text); }
 
@@ -81,6 +112,10 @@ static void on_tb_trans(qemu_plugin_id_t id, struct qemu_plugin_tb* tb) {
     (void)id;
     const size_t n = qemu_plugin_tb_n_insns(tb);
     qemu_plugin_register_vcpu_tb_exec_inline(tb, QEMU_PLUGIN_INLINE_ADD_U64, &total, n);
+    if (profile_table && n > 0) {
+        struct tb_record* r = profile_slot(qemu_plugin_insn_vaddr(qemu_plugin_tb_get_insn(tb, 0)), n);
+        if (r) qemu_plugin_register_vcpu_tb_exec_cb(tb, on_tb_exec, QEMU_PLUGIN_CB_NO_REGS, r);
+    }
     for (size_t i = 0; i < n; ++i) {
         struct qemu_plugin_insn* insn = qemu_plugin_tb_get_insn(tb, i);
         const uint64_t pc = qemu_plugin_insn_vaddr(insn);
@@ -100,6 +135,17 @@ static void on_exit_cb(qemu_plugin_id_t id, void* udata) {
         say(line);
     }
     if (depth) say("facet-icount: a region was still open at exit\n");
+    if (profile_table) {
+        FILE* f = fopen(profile_path, "w");
+        if (!f) {
+            say("facet-icount: cannot write the profile\n");
+            return;
+        }
+        for (uint32_t i = 0; i < PROFILE_SLOTS; ++i) {
+            if (profile_table[i].executed) fprintf(f, "0x%" PRIx64 " %" PRIu64 "\n", profile_table[i].vaddr, profile_table[i].executed);
+        }
+        fclose(f);
+    }
 }
 
 static int parse_u64(const char* text, uint64_t* out) {
@@ -122,6 +168,7 @@ FACET_PLUGIN_EXPORT int qemu_plugin_install(qemu_plugin_id_t id, const qemu_info
                 return -1;
             }
         } else if (!strcmp(a, "total=on")) report_total = 1;
+        else if (!strncmp(a, "profile=", 8)) profile_path = a + 8;
         else {
             fprintf(stderr, "facet-icount: unknown argument '%s'\n", a);
             return -1;
@@ -134,6 +181,10 @@ FACET_PLUGIN_EXPORT int qemu_plugin_install(qemu_plugin_id_t id, const qemu_info
     /* Thumb function symbols carry bit 0; instruction addresses do not. */
     begin_addr &= ~(uint64_t)1;
     end_addr &= ~(uint64_t)1;
+    if (profile_path) {
+        profile_table = calloc(PROFILE_SLOTS, sizeof *profile_table);
+        if (!profile_table) return -1;
+    }
     qemu_plugin_register_vcpu_tb_trans_cb(id, on_tb_trans);
     qemu_plugin_register_atexit_cb(id, on_exit_cb, NULL);
     return 0;

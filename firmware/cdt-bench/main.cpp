@@ -1,0 +1,77 @@
+// facet-cdt-bench: the CDT on the device. Triangulates the paper's face and the 10k plate
+// (bench/inputs, the same faces as the host benchmark) in the 16-bit device arena, each inside
+// an instruction-count region ("cdt_paper", "cdt_plate10k"), then runs the independent checker
+// on the result (outside the region) and reports. Exits non-zero if anything fails.
+#include "cdt/check.h"
+#include "cdt/face.h"
+#include "cdt_inputs.h"
+#include "hal/board.h"
+#include "hal/measure.h"
+#include "hal/print.h"
+#include "report.h"
+
+namespace {
+
+using namespace facet;
+
+constexpr size_t kMaxPoints = 10240;          // enough for plate10k (10,000 segments)
+constexpr size_t kVertices = kMaxPoints + 16; // + box corners
+constexpr size_t kScratchWords = 160 * 1024;  // the checker's, measured need for plate10k ~70k
+
+__attribute__((section(".arena"))) cdt::Arena<uint16_t, kVertices> arena;
+__attribute__((section(".arena"))) cdt::Point loop_points[kMaxPoints];
+__attribute__((section(".arena"))) cdt::Point interior[kMaxPoints];
+__attribute__((section(".arena"))) uint32_t loop_sizes[1024];
+__attribute__((section(".arena"))) uint32_t scratch[kScratchWords];
+__attribute__((section(".arena"))) cdt::Segment segments[kMaxPoints];
+
+bool run(hal::Board& board, const char* name, const char* region) {
+    hal::Console& con = board.console;
+    bench::Input in;
+    const bench::InputBuffers buf{loop_points, kMaxPoints, loop_sizes, 1024, interior, kMaxPoints};
+    if (!bench::make_input(name, buf, in)) {
+        print(con, "cdt-bench: input {} does not fit the buffers\n", name);
+        return false;
+    }
+    cdt::Cdt<uint16_t> cdt(arena.view());
+    cdt::FaceReport rep;
+    hal::measure_begin(con, region);
+    const Status s = cdt::triangulate_face(cdt, in.face, cdt::LocateMode::Sequential, rep);
+    hal::measure_end(con, region);
+    if (!ok(s)) {
+        print(con, "cdt-bench: {} failed: {} at loop {} point {}\n", name, status_name(s), rep.loop, rep.point);
+        return false;
+    }
+    // The checker needs the constraint list.
+    size_t ns = 0, first = 0;
+    for (uint32_t size : in.face.loop_sizes) {
+        for (uint32_t j = 0; j < size; ++j) {
+            segments[ns++] = {in.face.loop_points[first + j], in.face.loop_points[first + (j + 1) % size]};
+        }
+        first += size;
+    }
+    const std::span<const cdt::Segment> segs(segments, ns);
+    const size_t need = cdt::check_scratch_words(cdt.vertex_count(), cdt.triangle_count(), segs);
+    if (need > kScratchWords) {
+        print(con, "cdt-bench: checker needs {} words, has {}\n", need, kScratchWords);
+        return false;
+    }
+    const cdt::CheckResult r = cdt::check(cdt, segs, true, std::span<uint32_t>(scratch, kScratchWords));
+    const cdt::CdtStats& st = cdt.stats();
+    print(con, "@cdt {} points {} segments {} vertices {} triangles {} inner {} flips {} walk {} checker {}\n",
+          name, in.points(), in.segments, cdt.vertex_count() - cdt::kBoxVertices, cdt.triangle_count(),
+          rep.inner, st.flips, st.walk_steps, r.ok ? "ok" : r.message);
+    print(con, "@vertices {} {}\n", region, in.points());
+    return r.ok;
+}
+
+} // namespace
+
+int facet_main(hal::Board& board) {
+    fw::report_board(board);
+    print(board.console, "cdt-bench: arena {} bytes for {} vertices ({} bytes per triangle)\n",
+          sizeof arena, kVertices, sizeof(cdt::Triangle<uint16_t>));
+    const bool a = run(board, "paper", "cdt_paper");
+    const bool b = run(board, "plate10k", "cdt_plate10k");
+    return a && b ? 0 : 1;
+}

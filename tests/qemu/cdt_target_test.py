@@ -1,0 +1,41 @@
+#!/usr/bin/env python3
+"""cdt/ on the target: runs facet-cdt-bench in QEMU under the instruction counter. The firmware
+triangulates the paper's face and the 10k plate in the 16-bit device arena and runs the
+independent checker on the device; this test requires the checker to pass for both, the exact
+instruction counts to be present, and prints them per inserted vertex."""
+import argparse
+import json
+import os
+import re
+import subprocess
+import sys
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument('--board', required=True)
+    ap.add_argument('--elf', required=True)
+    ap.add_argument('--work', required=True)
+    args = ap.parse_args()
+    r = subprocess.run([sys.executable, os.path.join(ROOT, 'tools', 'qemu', 'run.py'), '--board', args.board,
+                        '--elf', args.elf, '--out', args.work, '--icount', '--timeout', '600', '--quiet'])
+    rep = json.load(open(os.path.join(args.work, 'report.json')))
+    uart = open(os.path.join(args.work, 'uart.log')).read()
+    failed = r.returncode != 0
+    for name, region in (('paper', 'cdt_paper'), ('plate10k', 'cdt_plate10k')):
+        m = re.search(rf'^@cdt {name} points (\d+) .* checker (.*)$', uart, re.M)
+        n = next((x['instructions'] for x in rep['regions'] if x['name'] == region), None)
+        if not m or m.group(2) != 'ok' or n is None:
+            print(f'FAIL {name}: {m.group(2) if m else "no result"}; instructions {n}')
+            failed = True
+            continue
+        pts = int(m.group(1))
+        print(f'{args.board} {name}: {pts} points, checker ok, {n:,} instructions '
+              f'({n / pts:,.0f} per inserted vertex, {n / 600e3:.2f} ms at 600 MHz)')
+    return 1 if failed else 0
+
+
+if __name__ == '__main__':
+    sys.exit(main())
