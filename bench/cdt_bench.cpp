@@ -2,8 +2,10 @@
 // Constrained_Delaunay_triangulation_2 (Epick, with its domain-marking step) on the same inputs,
 // in the same run. Google Benchmark does the timing; a reporter collects the figures and prints
 // ns per inserted vertex and the ratio to CGAL per input; --csv FILE writes one row per input
-// and implementation. Also the paper's Fig. 17: sequential vs kd-tree-nearest vs random-order
-// Locate.
+// and implementation. facet16/facet32 insert in facet's default order (all points along a
+// Hilbert curve, then the loops); facet32-paper-order interleaves each loop point with its
+// segment as the paper does; facet32-kdtree and facet32-random are the paper's Fig. 17
+// alternatives (kd-tree-nearest Locate, random order).
 //
 //   facet-bench-cdt [--csv FILE] [--inputs a,b,...] [--quick] [benchmark flags]
 #include "cdt/check.h"
@@ -204,12 +206,16 @@ int main(int argc, char** argv) {
             if (big) b->Iterations(1);
             else b->MinTime(0.2);
         };
-        if (device) reg("facet16", [in](benchmark::State& s, const std::string& k) { run_facet<uint16_t>(s, in, cdt::LocateMode::Sequential, k); });
-        reg("facet32", [in](benchmark::State& s, const std::string& k) { run_facet<uint32_t>(s, in, cdt::LocateMode::Sequential, k); });
+        if (device) reg("facet16", [in](benchmark::State& s, const std::string& k) { run_facet<uint16_t>(s, in, cdt::LocateMode::HilbertFirst, k); });
+        reg("facet32", [in](benchmark::State& s, const std::string& k) { run_facet<uint32_t>(s, in, cdt::LocateMode::HilbertFirst, k); });
 #ifdef FACET_HAVE_CGAL
         reg("cgal", [in](benchmark::State& s, const std::string& k) { run_cgal(s, in, k); });
 #endif
-        // Fig. 17: how a point finds where to start its walk.
+        // Insertion orders: the paper's (each point, then its segment) on every input, and for
+        // the paper's Fig. 17, kd-tree-nearest and random-order Locate on a few.
+        if (!big || n.find("grid") == std::string::npos) {
+            reg("facet32-paper-order", [in](benchmark::State& s, const std::string& k) { run_facet<uint32_t>(s, in, cdt::LocateMode::Sequential, k); });
+        }
         if (n == "paper" || n == "plate10k" || n == "plate10k+grid" || n == "plate100k+grid") {
             reg("facet32-kdtree", [in](benchmark::State& s, const std::string& k) { run_facet<uint32_t>(s, in, cdt::LocateMode::KdTreeNearest, k); });
             reg("facet32-random", [in](benchmark::State& s, const std::string& k) { run_facet<uint32_t>(s, in, cdt::LocateMode::RandomOrder, k); });

@@ -1,5 +1,5 @@
 // facet-cdt-once: triangulates one named benchmark input once and prints what happened.
-// Deterministic, for profiling under callgrind:  facet-cdt-once plate10k [sequential|kdtree|random]
+// Deterministic, for profiling under callgrind:  facet-cdt-once plate10k [sequential|kdtree|random|hilbert]
 #include "cdt/face.h"
 #include "cdt_inputs.h"
 
@@ -11,12 +11,13 @@ using namespace facet;
 
 int main(int argc, char** argv) {
     if (argc < 2) {
-        std::fprintf(stderr, "usage: %s INPUT [sequential|kdtree|random]\n", argv[0]);
+        std::fprintf(stderr, "usage: %s INPUT [sequential|kdtree|random|hilbert]\n", argv[0]);
         return 2;
     }
     cdt::LocateMode mode = cdt::LocateMode::Sequential;
     if (argc > 2 && !std::strcmp(argv[2], "kdtree")) mode = cdt::LocateMode::KdTreeNearest;
     if (argc > 2 && !std::strcmp(argv[2], "random")) mode = cdt::LocateMode::RandomOrder;
+    if (argc > 2 && !std::strcmp(argv[2], "hilbert")) mode = cdt::LocateMode::HilbertFirst;
     bench::InputSize size;
     if (!bench::input_size(argv[1], size)) {
         std::fprintf(stderr, "unknown input %s\n", argv[1]);

@@ -65,19 +65,24 @@ Status triangulate_face(Cdt<Index>& cdt, const FaceInput& in, LocateMode mode, F
             state = state * 1664525u + 1013904223u;
             std::swap(ins[i - 1], ins[(state >> 8) % i]);
         }
-    } else if (n > n_loop) {
+    } else if (mode == LocateMode::HilbertFirst || n > n_loop) {
+        const uint32_t from = mode == LocateMode::HilbertFirst ? 0 : n_loop;
         int32_t x0 = INT32_MAX, y0 = INT32_MAX, x1 = INT32_MIN, y1 = INT32_MIN;
-        for (const Point& p : in.interior) {
+        for (uint32_t i = from; i < n; ++i) {
+            const Point p = point(i);
             x0 = std::min(x0, p.x), y0 = std::min(y0, p.y);
             x1 = std::max(x1, p.x), y1 = std::max(y1, p.y);
         }
-        const int64_t w = int64_t(x1) - x0 + 1, h = int64_t(y1) - y0 + 1;
-        for (uint32_t i = n_loop; i < n; ++i) {
+        // Scale to the 16-bit Hilbert grid by a shift (no division: 64-bit divides are a
+        // library call on 32-bit cores). The same shift on both axes keeps the curve square.
+        const uint32_t extent = uint32_t(std::max(int64_t(x1) - x0, int64_t(y1) - y0));
+        uint32_t shift = 0;
+        while ((extent >> shift) > 0xFFFF) ++shift;
+        for (uint32_t i = from; i < n; ++i) {
             const Point p = point(i);
-            keys[i] = hilbert_index(uint32_t((int64_t(p.x) - x0) * 65535 / w),
-                                    uint32_t((int64_t(p.y) - y0) * 65535 / h));
+            keys[i] = hilbert_index(uint32_t(p.x - x0) >> shift, uint32_t(p.y - y0) >> shift);
         }
-        std::sort(ins + n_loop, ins + n, [&](Index l, Index r) { return keys[l] < keys[r]; });
+        std::sort(ins + from, ins + n, [&](Index l, Index r) { return keys[l] < keys[r]; });
     }
     for (uint32_t k = 0; k < n; ++k) keys[ins[k]] = k; // keys: rank of each point
 
@@ -85,7 +90,7 @@ Status triangulate_face(Cdt<Index>& cdt, const FaceInput& in, LocateMode mode, F
     // insertion order. Sequential asks it only while tracing loops (and once for the first
     // interior point), when exactly the loop points of lower index are in: there it spans the
     // loop points, ranked by index, and is built on first use.
-    const uint32_t tree_size = mode == LocateMode::KdTreeNearest ? n : n_loop;
+    const uint32_t tree_size = mode == LocateMode::KdTreeNearest ? n : (mode == LocateMode::Sequential ? n_loop : 0);
     KdTree<Index, decltype(point)> tree(a.order.data(), a.minseq.data(), tree_size, point);
     bool built = false;
     if (mode == LocateMode::KdTreeNearest) {
@@ -124,7 +129,8 @@ Status triangulate_face(Cdt<Index>& cdt, const FaceInput& in, LocateMode mode, F
         const Point p = point(i);
         Index hint = kNone<Index>;
         const bool is_loop_point = i < n_loop;
-        if (is_loop_point && mode != LocateMode::RandomOrder) {
+        const bool points_first = mode == LocateMode::RandomOrder || mode == LocateMode::HilbertFirst;
+        if (is_loop_point && !points_first) {
             while (i >= loop_first + in.loop_sizes[loop]) loop_first += in.loop_sizes[loop++];
         }
         if (mode == LocateMode::KdTreeNearest) {
@@ -144,7 +150,7 @@ Status triangulate_face(Cdt<Index>& cdt, const FaceInput& in, LocateMode mode, F
         Index v;
         if (Status s = cdt.insert_point(p, v, hint); !ok(s)) return fail(s, loop, i);
         keys[i] = v;
-        if (mode == LocateMode::RandomOrder || !is_loop_point) continue;
+        if (points_first || !is_loop_point) continue;
         // Sequential / kd-tree: trace the loop as its points arrive.
         if (i != loop_first) {
             if (Status s = cdt.insert_constraint(Index(keys[i - 1]), v); !ok(s)) return fail(s, loop, i);
@@ -153,7 +159,7 @@ Status triangulate_face(Cdt<Index>& cdt, const FaceInput& in, LocateMode mode, F
             if (Status s = cdt.insert_constraint(v, Index(keys[loop_first])); !ok(s)) return fail(s, loop, i);
         }
     }
-    if (mode == LocateMode::RandomOrder) {
+    if (mode == LocateMode::RandomOrder || mode == LocateMode::HilbertFirst) {
         uint32_t first = 0;
         for (uint32_t l = 0; l < in.loop_sizes.size(); ++l) {
             const uint32_t size = in.loop_sizes[l];

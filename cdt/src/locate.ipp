@@ -22,14 +22,18 @@ template <typename Index>
 void Cdt<Index>::wedge(Index s, Point p, Index& t, int& k, int64_t& oa) const {
     t = a_.vertices[s].tri;
     k = a_.triangles[t].index_of(s);
+    FACET_ASSERT("cdt.wedge", k >= 0);
+    oa = orient(s, a_.triangles[t].v[next3(k)], p);
     for (uint32_t turns = 0;; ++turns) {
-        FACET_ASSERT("cdt.wedge", k >= 0 && turns <= nt_);
+        FACET_ASSERT("cdt.wedge", turns <= nt_);
         const Triangle<Index>& T = a_.triangles[t];
-        oa = orient(s, T.v[next3(k)], p);
-        if (oa >= 0 && orient(s, T.v[prev3(k)], p) < 0) return;
-        t = T.n[next3(k)]; // across edge (s, b)
+        const int64_t ob = orient(s, T.v[prev3(k)], p);
+        if (oa >= 0 && ob < 0) return;
+        t = T.n[next3(k)]; // across edge (s, b): there b is the new a, so ob is the new oa
         FACET_ASSERT("cdt.wedge", t != kNone<Index>);
         k = a_.triangles[t].index_of(s);
+        FACET_ASSERT("cdt.wedge", k >= 0);
+        oa = ob;
     }
 }
 

@@ -1,6 +1,7 @@
 // facet-cdt-bench: the CDT on the device. Triangulates the paper's face and the 10k plate
 // (bench/inputs, the same faces as the host benchmark) in the 16-bit device arena, each inside
-// an instruction-count region ("cdt_paper", "cdt_plate10k"), then runs the independent checker
+// an instruction-count region ("cdt_paper", "cdt_plate10k"; "..._paper_order" for the paper's
+// insertion order), then runs the independent checker
 // on the result (outside the region) and reports. Exits non-zero if anything fails.
 #include "cdt/check.h"
 #include "cdt/face.h"
@@ -25,7 +26,7 @@ __attribute__((section(".arena"))) uint32_t loop_sizes[1024];
 __attribute__((section(".arena"))) uint32_t scratch[kScratchWords];
 __attribute__((section(".arena"))) cdt::Segment segments[kMaxPoints];
 
-bool run(hal::Board& board, const char* name, const char* region) {
+bool run(hal::Board& board, const char* name, const char* region, cdt::LocateMode mode) {
     hal::Console& con = board.console;
     bench::Input in;
     const bench::InputBuffers buf{loop_points, kMaxPoints, loop_sizes, 1024, interior, kMaxPoints};
@@ -36,7 +37,7 @@ bool run(hal::Board& board, const char* name, const char* region) {
     cdt::Cdt<uint16_t> cdt(arena.view());
     cdt::FaceReport rep;
     hal::measure_begin(con, region);
-    const Status s = cdt::triangulate_face(cdt, in.face, cdt::LocateMode::Sequential, rep);
+    const Status s = cdt::triangulate_face(cdt, in.face, mode, rep);
     hal::measure_end(con, region);
     if (!ok(s)) {
         print(con, "cdt-bench: {} failed: {} at loop {} point {}\n", name, status_name(s), rep.loop, rep.point);
@@ -59,7 +60,7 @@ bool run(hal::Board& board, const char* name, const char* region) {
     const cdt::CheckResult r = cdt::check(cdt, segs, true, std::span<uint32_t>(scratch, kScratchWords));
     const cdt::CdtStats& st = cdt.stats();
     print(con, "@cdt {} points {} segments {} vertices {} triangles {} inner {} flips {} walk {} checker {}\n",
-          name, in.points(), in.segments, cdt.vertex_count() - cdt::kBoxVertices, cdt.triangle_count(),
+          region, in.points(), in.segments, cdt.vertex_count() - cdt::kBoxVertices, cdt.triangle_count(),
           rep.inner, st.flips, st.walk_steps, r.ok ? "ok" : r.message);
     print(con, "@vertices {} {}\n", region, in.points());
     return r.ok;
@@ -71,7 +72,10 @@ int facet_main(hal::Board& board) {
     fw::report_board(board);
     print(board.console, "cdt-bench: arena {} bytes for {} vertices ({} bytes per triangle)\n",
           sizeof arena, kVertices, sizeof(cdt::Triangle<uint16_t>));
-    const bool a = run(board, "paper", "cdt_paper");
-    const bool b = run(board, "plate10k", "cdt_plate10k");
-    return a && b ? 0 : 1;
+    // facet's default order, then the paper's own order (each point, then its segment).
+    const bool a = run(board, "paper", "cdt_paper", cdt::kDefaultLocateMode);
+    const bool b = run(board, "plate10k", "cdt_plate10k", cdt::kDefaultLocateMode);
+    const bool c = run(board, "paper", "cdt_paper_paper_order", cdt::LocateMode::Sequential);
+    const bool d = run(board, "plate10k", "cdt_plate10k_paper_order", cdt::LocateMode::Sequential);
+    return a && b && c && d ? 0 : 1;
 }

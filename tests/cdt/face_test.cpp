@@ -11,9 +11,16 @@ using namespace facet::cdt::test;
 
 namespace {
 
-constexpr LocateMode kModes[] = {LocateMode::Sequential, LocateMode::KdTreeNearest, LocateMode::RandomOrder};
+constexpr LocateMode kModes[] = {LocateMode::Sequential, LocateMode::KdTreeNearest, LocateMode::RandomOrder,
+                                  LocateMode::HilbertFirst};
 const char* name(LocateMode m) {
-    return m == LocateMode::Sequential ? "sequential" : (m == LocateMode::KdTreeNearest ? "kd-tree" : "random");
+    switch (m) {
+    case LocateMode::Sequential: return "sequential";
+    case LocateMode::KdTreeNearest: return "kd-tree";
+    case LocateMode::RandomOrder: return "random";
+    case LocateMode::HilbertFirst: return "hilbert-first";
+    }
+    return "?";
 }
 
 // Triangulates in every mode, checks each, and returns the inner triangle count (equal in all).

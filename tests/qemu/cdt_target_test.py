@@ -24,8 +24,10 @@ def main():
     rep = json.load(open(os.path.join(args.work, 'report.json')))
     uart = open(os.path.join(args.work, 'uart.log')).read()
     failed = r.returncode != 0
-    for name, region in (('paper', 'cdt_paper'), ('plate10k', 'cdt_plate10k')):
-        m = re.search(rf'^@cdt {name} points (\d+) .* checker (.*)$', uart, re.M)
+    for name, region in (('paper', 'cdt_paper'), ('plate10k', 'cdt_plate10k'),
+                         ('paper, paper order', 'cdt_paper_paper_order'),
+                         ('plate10k, paper order', 'cdt_plate10k_paper_order')):
+        m = re.search(rf'^@cdt {region} points (\d+) .* checker (.*)$', uart, re.M)
         n = next((x['instructions'] for x in rep['regions'] if x['name'] == region), None)
         if not m or m.group(2) != 'ok' or n is None:
             print(f'FAIL {name}: {m.group(2) if m else "no result"}; instructions {n}')

@@ -14,12 +14,18 @@ struct FaceInput {
     std::span<const Point> interior;      // isolated points, in any order (outside ones are fine)
 };
 
-// How each point finds where to start its walk (the paper's Fig. 17 comparison).
+// The insertion order and where each walk starts (the paper's Fig. 17 comparison, plus the
+// default). Every mode walks straight from a start vertex; they differ in order and start.
 enum class LocateMode : uint8_t {
-    Sequential,    // from the previous vertex; the kd-tree only for a loop's first point
-    KdTreeNearest, // from the nearest inserted vertex, for every point
-    RandomOrder,   // all points in a shuffled order, each from the previous; constraints last
+    Sequential,    // the paper: each loop point, then its segment; walks start at the previous
+                   // vertex, the kd-tree gives a far loop's first point; interior points last
+    KdTreeNearest, // the paper's order, every walk from the nearest inserted vertex (kd-tree)
+    RandomOrder,   // all points shuffled, each walk from the previous; then the loops
+    HilbertFirst,  // the default: all points along a Hilbert curve, each walk from the previous
+                   // vertex; then the loops, whose segments are then mostly edges already.
+                   // Avoids the paper order's flip cascades on long straight loops (docs/cdt.md)
 };
+constexpr LocateMode kDefaultLocateMode = LocateMode::HilbertFirst;
 
 struct FaceReport {
     Status status = Status::Ok;
