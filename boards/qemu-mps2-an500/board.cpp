@@ -5,6 +5,7 @@
 #include "facet_board_config.h"
 #include "hal/board.h"
 #include "hal/print.h"
+#include "memory_report.h"
 #include "input_uart.h"
 #include "memory_map.h"
 #include "runtime.h"
@@ -60,23 +61,16 @@ Status capture(const char* name) {
 }
 
 uint32_t memory_map(MemoryRegion* out, uint32_t max) {
-    auto span = [](const char* n, uint8_t* a, uint8_t* b) {
-        return MemoryRegion{n, reinterpret_cast<uintptr_t>(a), uint32_t(b - a)};
+    static const boards::LinkerSpan spans[] = {
+        {"text+rodata", __text_start, __text_end},
+        {"data", __data_start, __data_end},
+        {"bss", __bss_start, __bss_end},
+        {"framebuffers", __framebuffers_start, __framebuffers_end},
+        {"zbuffer", __zbuffer_start, __zbuffer_end},
+        {"arena", __arena_start, __arena_end},
+        {"stack", __stack_start, __stack_end},
     };
-    const MemoryRegion all[] = {
-        span("text+rodata", __text_start, __text_end),
-        span("data", __data_start, __data_end),
-        span("bss", __bss_start, __bss_end),
-        span("framebuffers", __framebuffers_start, __framebuffers_end),
-        span("zbuffer", __zbuffer_start, __zbuffer_end),
-        span("arena", __arena_start, __arena_end),
-        span("stack", __stack_start, __stack_end),
-    };
-    uint32_t n = 0;
-    for (const MemoryRegion& r : all) {
-        if (n < max) out[n++] = r;
-    }
-    return n;
+    return boards::fill_memory_map(spans, sizeof spans / sizeof spans[0], out, max);
 }
 
 } // namespace facet::hal

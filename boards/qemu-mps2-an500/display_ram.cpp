@@ -8,34 +8,20 @@ constexpr uint16_t kW = board_config::kDisplayWidth, kH = board_config::kDisplay
 alignas(64) __attribute__((section(".framebuffers"))) hal::Rgb565 buffers[2][kW * kH];
 } // namespace
 
-void RamDisplay::init() {
-    for (hal::Rgb565& p : buffers[0]) p = 0;
-    shown_ = buffers[0];
-    draw_ = buffers[1];
-}
+void RamDisplay::init() { fb_.init(buffers[0], buffers[1], kW, kH); }
 
 hal::DisplayInfo RamDisplay::info() const { return {kW, kH, hal::PixelFormat::Rgb565, 2}; }
 
 Status RamDisplay::push_span(uint16_t x, uint16_t y, const hal::Rgb565* pixels, uint16_t count) {
-    if (!pixels || count == 0 || y >= kH || x >= kW || uint32_t(x) + count > kW) {
-        return Status::OutOfRange;
-    }
-    hal::Rgb565* dst = draw_ + uint32_t(y) * kW + x;
-    for (uint16_t i = 0; i < count; ++i) dst[i] = pixels[i];
-    return Status::Ok;
+    return fb_.push_span(x, y, pixels, count);
 }
 
 Status RamDisplay::fill_span(uint16_t x, uint16_t y, uint16_t count, hal::Rgb565 colour) {
-    if (count == 0 || y >= kH || x >= kW || uint32_t(x) + count > kW) return Status::OutOfRange;
-    hal::Rgb565* dst = draw_ + uint32_t(y) * kW + x;
-    for (uint16_t i = 0; i < count; ++i) dst[i] = colour;
-    return Status::Ok;
+    return fb_.fill_span(x, y, count, colour);
 }
 
 Status RamDisplay::flip() {
-    hal::Rgb565* t = shown_;
-    shown_ = draw_;
-    draw_ = t;
+    fb_.swap();
     return Status::Ok;
 }
 

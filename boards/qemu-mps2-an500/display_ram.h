@@ -1,6 +1,7 @@
 #pragma once
 // A double-buffered RAM framebuffer (the board has no LCD). Captures are written to the host
 // through semihosting as F565 files (tools/img.py).
+#include "framebuffer.h"
 #include "hal/display.h"
 
 namespace facet::mps2 {
@@ -12,11 +13,10 @@ public:
     Status push_span(uint16_t x, uint16_t y, const hal::Rgb565* pixels, uint16_t count) override;
     Status fill_span(uint16_t x, uint16_t y, uint16_t count, hal::Rgb565 colour) override;
     Status flip() override;
-    const hal::Rgb565* shown() const { return shown_; }
+    const hal::Rgb565* shown() const { return fb_.shown(); }
 
 private:
-    hal::Rgb565* draw_ = nullptr;
-    hal::Rgb565* shown_ = nullptr;
+    boards::Framebuffers fb_;
 };
 
 } // namespace facet::mps2

@@ -32,10 +32,8 @@ void Pl110Display::init() {
     reg(kTim0) = 0x3F1F3F00 | ((kW / 16 - 1) << 2);
     reg(kTim1) = 0x090B0400 | (kH - 1);
     reg(kTim2) = 0x067F0020;
-    for (hal::Rgb565& p : buffers[0]) p = 0;
-    shown_ = buffers[0];
-    draw_ = buffers[1];
-    reg(kUpBase) = reinterpret_cast<uintptr_t>(shown_);
+    fb_.init(buffers[0], buffers[1], kW, kH);
+    reg(kUpBase) = reinterpret_cast<uintptr_t>(fb_.shown());
     reg(kControl) = 0x829;
 }
 
@@ -43,26 +41,16 @@ hal::DisplayInfo Pl110Display::info() const { return {kW, kH, hal::PixelFormat::
 
 Status Pl110Display::push_span(uint16_t x, uint16_t y, const hal::Rgb565* pixels,
                                uint16_t count) {
-    if (!pixels || count == 0 || y >= kH || x >= kW || uint32_t(x) + count > kW) {
-        return Status::OutOfRange;
-    }
-    hal::Rgb565* dst = draw_ + uint32_t(y) * kW + x;
-    for (uint16_t i = 0; i < count; ++i) dst[i] = pixels[i];
-    return Status::Ok;
+    return fb_.push_span(x, y, pixels, count);
 }
 
 Status Pl110Display::fill_span(uint16_t x, uint16_t y, uint16_t count, hal::Rgb565 colour) {
-    if (count == 0 || y >= kH || x >= kW || uint32_t(x) + count > kW) return Status::OutOfRange;
-    hal::Rgb565* dst = draw_ + uint32_t(y) * kW + x;
-    for (uint16_t i = 0; i < count; ++i) dst[i] = colour;
-    return Status::Ok;
+    return fb_.fill_span(x, y, count, colour);
 }
 
 Status Pl110Display::flip() {
-    hal::Rgb565* t = shown_;
-    shown_ = draw_;
-    draw_ = t;
-    reg(kUpBase) = reinterpret_cast<uintptr_t>(shown_);
+    fb_.swap();
+    reg(kUpBase) = reinterpret_cast<uintptr_t>(fb_.shown());
     return Status::Ok;
 }
 

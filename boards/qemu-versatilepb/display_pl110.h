@@ -1,5 +1,6 @@
 #pragma once
 // PL110 colour LCD at 640x480 RGB565, double-buffered by swapping the upper-panel base.
+#include "framebuffer.h"
 #include "hal/display.h"
 
 namespace facet::versatilepb {
@@ -13,8 +14,7 @@ public:
     Status flip() override;
 
 private:
-    hal::Rgb565* draw_ = nullptr;  // the buffer not on screen
-    hal::Rgb565* shown_ = nullptr;
+    boards::Framebuffers fb_;
 };
 
 } // namespace facet::versatilepb

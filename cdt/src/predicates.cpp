@@ -59,23 +59,29 @@ int64_t orient2d(int32_t ax, int32_t ay, int32_t bx, int32_t by, int32_t cx, int
     return int64_t(bx - ax) * (cy - ay) - int64_t(by - ay) * (cx - ax);
 }
 
+namespace {
+
+// The lifted terms (squared distances to d) and 2x2 minors of the incircle determinant:
+// exact in int64 over the whole range (< 2^54). det = alift*bc + blift*ca + clift*ab.
+struct IncircleTerms {
+    int64_t alift, blift, clift, bc, ca, ab;
+
+    IncircleTerms(int64_t adx, int64_t ady, int64_t bdx, int64_t bdy, int64_t cdx, int64_t cdy)
+        : alift(adx * adx + ady * ady), blift(bdx * bdx + bdy * bdy), clift(cdx * cdx + cdy * cdy)
+        , bc(bdx * cdy - cdx * bdy), ca(cdx * ady - adx * cdy), ab(adx * bdy - bdx * ady) {}
+
+    int exact_sign() const {
+        return (Int128::mul(alift, bc) + Int128::mul(blift, ca) + Int128::mul(clift, ab)).sign();
+    }
+};
+
+} // namespace
+
 int incircle_exact(int32_t ax, int32_t ay, int32_t bx, int32_t by, int32_t cx, int32_t cy,
                    int32_t dx, int32_t dy) {
-    const int32_t sx = ax - dx, sy = ay - dy, tx = bx - dx, ty = by - dy, ux = cx - dx, uy = cy - dy;
-    if ((abs32(sx) | abs32(sy) | abs32(tx) | abs32(ty) | abs32(ux) | abs32(uy)) < 16384) {
-        // All differences below 2^14: lifts < 2^29, minors < 2^29, the sum < 3 * 2^58.
-        const int64_t det = int64_t(sx * sx + sy * sy) * (int64_t(tx) * uy - int64_t(ux) * ty) +
-                            int64_t(tx * tx + ty * ty) * (int64_t(ux) * sy - int64_t(sx) * uy) +
-                            int64_t(ux * ux + uy * uy) * (int64_t(sx) * ty - int64_t(tx) * sy);
-        return det > 0 ? 1 : (det < 0 ? -1 : 0);
-    }
-    const int64_t adx = sx, ady = sy, bdx = tx, bdy = ty, cdx = ux, cdy = uy;
-    const int64_t alift = adx * adx + ady * ady, blift = bdx * bdx + bdy * bdy;
-    const int64_t clift = cdx * cdx + cdy * cdy;
-    const int64_t bc = bdx * cdy - cdx * bdy, ca = cdx * ady - adx * cdy;
-    const int64_t ab = adx * bdy - bdx * ady;
-    const Int128 det = Int128::mul(alift, bc) + Int128::mul(blift, ca) + Int128::mul(clift, ab);
-    return det.sign();
+    return IncircleTerms(int64_t(ax) - dx, int64_t(ay) - dy, int64_t(bx) - dx, int64_t(by) - dy,
+                         int64_t(cx) - dx, int64_t(cy) - dy)
+        .exact_sign();
 }
 
 int incircle(int32_t ax, int32_t ay, int32_t bx, int32_t by, int32_t cx, int32_t cy, int32_t dx,
@@ -92,11 +98,8 @@ int incircle(int32_t ax, int32_t ay, int32_t bx, int32_t by, int32_t cx, int32_t
         const int64_t det = int64_t(alift) * bc + int64_t(blift) * ca + int64_t(clift) * ab;
         return det > 0 ? 1 : (det < 0 ? -1 : 0);
     }
-    const int64_t adx = sx, ady = sy, bdx = tx, bdy = ty, cdx = ux, cdy = uy;
-    const int64_t alift = adx * adx + ady * ady, blift = bdx * bdx + bdy * bdy;
-    const int64_t clift = cdx * cdx + cdy * cdy;
-    const int64_t bc = bdx * cdy - cdx * bdy, ca = cdx * ady - adx * cdy;
-    const int64_t ab = adx * bdy - bdx * ady;
+    const IncircleTerms t(sx, sy, tx, ty, ux, uy);
+    const int64_t alift = t.alift, blift = t.blift, clift = t.clift, bc = t.bc, ca = t.ca, ab = t.ab;
     const int la = bits(uint64_t(alift)), lb = bits(uint64_t(blift)), lc = bits(uint64_t(clift));
     const int ma = bits(magnitude(bc)), mb = bits(magnitude(ca)), mc = bits(magnitude(ab));
     if (la + ma <= 61 && lb + mb <= 61 && lc + mc <= 61) {
@@ -115,9 +118,7 @@ int incircle(int32_t ax, int32_t ay, int32_t bx, int32_t by, int32_t cx, int32_t
         if (hi != 0) return hi > 0 ? 1 : -1;
         return (B & kLow) != 0 ? 1 : 0;
     }
-    // 4. The full range: exact 128-bit sums.
-    const Int128 det = Int128::mul(alift, bc) + Int128::mul(blift, ca) + Int128::mul(clift, ab);
-    return det.sign();
+    return t.exact_sign(); // 4. The full range: exact 128-bit sums.
 }
 
 } // namespace facet::cdt

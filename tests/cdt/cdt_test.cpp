@@ -209,30 +209,6 @@ TEST(Cdt, DeviceIndexWidthHoldsItsCapacity) {
 }
 
 namespace {
-// Random star polygon with holes and scattered points: the shape of the stress tests.
-Face random_face(uint32_t seed, int max_outer = 200, int points = 300) {
-    std::mt19937 rng(seed);
-    Face f;
-    const int n = 20 + int(rng() % uint32_t(max_outer));
-    std::vector<double> ang(n);
-    for (double& a : ang) a = std::uniform_real_distribution<double>(0, 2 * M_PI)(rng);
-    std::sort(ang.begin(), ang.end());
-    std::vector<Point> outer;
-    for (double a : ang) {
-        const double r = std::uniform_real_distribution<double>(60000, 100000)(rng);
-        outer.push_back({int32_t(r * std::cos(a)), int32_t(r * std::sin(a))});
-    }
-    f.add_loop(outer);
-    const int holes = int(rng() % 12);
-    for (int h = 0; h < holes; ++h) {
-        const int cx = -40000 + (h % 4) * 25000, cy = -30000 + (h / 4) * 25000;
-        f.add_loop(circle(cx, cy, 4000 + int(rng() % 6000), 3 + int(rng() % 30), false));
-    }
-    std::uniform_int_distribution<int32_t> d(-110000, 110000);
-    for (int i = 0; i < points; ++i) f.interior.push_back({d(rng), d(rng)});
-    return f;
-}
-
 // Points first, then every loop segment as a constraint, checking after each one.
 void constraints_after_points(const Face& f) {
     HostArena<uint32_t> arena(f.points() + 20);

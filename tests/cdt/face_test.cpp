@@ -69,28 +69,8 @@ TEST(Face, PaperFace) {
 }
 
 TEST(Face, RandomPolygonsWithHoles) {
-    for (int seed = 0; seed < 30; ++seed) {
-        std::mt19937 rng(seed);
-        Face f;
-        const int n = 20 + int(rng() % 200);
-        std::vector<double> ang(n);
-        for (double& a : ang) a = std::uniform_real_distribution<double>(0, 2 * M_PI)(rng);
-        std::sort(ang.begin(), ang.end());
-        std::vector<Point> outer;
-        for (double a : ang) {
-            const double r = std::uniform_real_distribution<double>(60000, 100000)(rng);
-            outer.push_back({int32_t(r * std::cos(a)), int32_t(r * std::sin(a))});
-        }
-        f.add_loop(outer); // star-shaped around the origin: simple and counter-clockwise
-        // Holes in distinct cells of a grid inside radius 55,000.
-        const int holes = int(rng() % 12);
-        for (int h = 0; h < holes; ++h) {
-            const int cx = -40000 + (h % 4) * 25000, cy = -30000 + (h / 4) * 25000;
-            f.add_loop(circle(cx, cy, 4000 + int(rng() % 6000), 3 + int(rng() % 30), false));
-        }
-        std::uniform_int_distribution<int32_t> d(-110000, 110000); // some fall outside
-        for (int i = 0; i < 300; ++i) f.interior.push_back({d(rng), d(rng)});
-        triangulate_all_modes(f);
+    for (uint32_t seed = 0; seed < 30; ++seed) {
+        triangulate_all_modes(random_face(seed));
         if (HasFailure()) FAIL() << "seed " << seed;
     }
 }

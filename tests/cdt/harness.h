@@ -48,6 +48,10 @@ struct Face {
 
 // Axis-aligned rectangle loop with `per_side` points per side, counter-clockwise (or not).
 std::vector<Point> rectangle(int32_t x0, int32_t y0, int32_t x1, int32_t y1, int per_side, bool ccw = true);
+// A random star polygon (20..20+max_outer vertices, radius 60k..100k) with up to 11 circular
+// holes in separate cells and `points` scattered points, some outside: the random face of the
+// face and stress tests.
+Face random_face(uint32_t seed, int max_outer = 200, int points = 300);
 // Regular polygon approximating a circle, integer-rounded, ccw or cw.
 std::vector<Point> circle(int32_t cx, int32_t cy, int32_t r, int n, bool ccw);
 
