@@ -6,25 +6,42 @@
 
 namespace facet::cdt {
 
+// Hilbert index by a state machine: at each level the curve's orientation (4 states) and the
+// quadrant of (x, y) give the next two digits and the next orientation. Tables from the
+// standard construction (state 0: the curve enters at (0,0) and leaves at (1,0)).
 uint32_t hilbert_index(uint32_t x, uint32_t y) {
-    uint32_t d = 0;
-    for (uint32_t s = 1u << 15; s > 0; s >>= 1) {
-        const uint32_t rx = (x & s) ? 1 : 0, ry = (y & s) ? 1 : 0;
-        d += s * s * ((3 * rx) ^ ry);
-        if (ry == 0) { // rotate the quadrant
-            if (rx == 1) {
-                x = s - 1 - x;
-                y = s - 1 - y;
-            }
-            const uint32_t t = x;
-            x = y;
-            y = t;
-        }
-        x &= s - 1;
-        y &= s - 1;
+    static constexpr uint8_t kDigit[4][4] = {{0, 1, 3, 2}, {0, 3, 1, 2}, {2, 3, 1, 0}, {2, 1, 3, 0}};
+    static constexpr uint8_t kNext[4][4] = {{1, 0, 3, 0}, {0, 2, 1, 1}, {2, 1, 2, 3}, {3, 3, 0, 2}};
+    uint32_t d = 0, state = 0;
+    for (int level = 15; level >= 0; --level) {
+        const uint32_t q = (((x >> level) & 1) << 1) | ((y >> level) & 1);
+        d = (d << 2) | kDigit[state][q];
+        state = kNext[state][q];
     }
     return d;
 }
+
+namespace {
+
+// Stable LSD radix sort of ins[from, n) by keys[], four 8-bit passes through tmp.
+template <typename Index>
+void radix_sort(Index* ins, Index* tmp, uint32_t from, uint32_t n, const uint32_t* keys) {
+    Index* src = ins + from;
+    Index* dst = tmp;
+    const uint32_t count = n - from;
+    for (int shift = 0; shift < 32; shift += 8) {
+        uint32_t bucket[257] = {};
+        for (uint32_t i = 0; i < count; ++i) ++bucket[((keys[src[i]] >> shift) & 255) + 1];
+        for (int b = 0; b < 256; ++b) bucket[b + 1] += bucket[b];
+        for (uint32_t i = 0; i < count; ++i) dst[bucket[(keys[src[i]] >> shift) & 255]++] = src[i];
+        Index* t = src;
+        src = dst;
+        dst = t;
+    }
+    // Four passes: the result is back in ins.
+}
+
+} // namespace
 
 template <typename Index>
 Status triangulate_face(Cdt<Index>& cdt, const FaceInput& in, LocateMode mode, FaceReport& report) {
@@ -82,7 +99,7 @@ Status triangulate_face(Cdt<Index>& cdt, const FaceInput& in, LocateMode mode, F
             const Point p = point(i);
             keys[i] = hilbert_index(uint32_t(p.x - x0) >> shift, uint32_t(p.y - y0) >> shift);
         }
-        std::sort(ins + from, ins + n, [&](Index l, Index r) { return keys[l] < keys[r]; });
+        radix_sort(ins, a.order.data(), from, n, keys);
     }
     for (uint32_t k = 0; k < n; ++k) keys[ins[k]] = k; // keys: rank of each point
 

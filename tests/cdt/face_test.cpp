@@ -204,6 +204,18 @@ TEST(Face, TooManyPointsForTheArenaIsFullNotACrash) {
     EXPECT_EQ(triangulate_face(cdt, f.input(), LocateMode::Sequential, rep), Status::Full);
 }
 
+TEST(Face, HilbertIndexStepsBetweenNeighbouringCells) {
+    // On a 256 x 256 grid (the top 8 levels), cell k+1 of the curve is always next to cell k.
+    std::vector<std::pair<int, int>> cell(1u << 16);
+    for (uint32_t y = 0; y < 256; ++y)
+        for (uint32_t x = 0; x < 256; ++x) cell[hilbert_index(x << 8, y << 8) >> 16] = {int(x), int(y)};
+    for (size_t k = 1; k < cell.size(); ++k) {
+        const int step = std::abs(cell[k].first - cell[k - 1].first) + std::abs(cell[k].second - cell[k - 1].second);
+        ASSERT_EQ(step, 1) << "between curve cells " << k - 1 << " and " << k;
+    }
+    EXPECT_EQ(cell[0], std::make_pair(0, 0));
+}
+
 TEST(Face, HilbertIndexIsABijectionOnASmallGrid) {
     std::vector<bool> seen(1u << 16);
     for (uint32_t y = 0; y < 256; ++y)

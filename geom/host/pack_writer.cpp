@@ -1,0 +1,105 @@
+#include "pack_writer.h"
+
+#include <algorithm>
+#include <cstring>
+#include <limits>
+
+namespace facet::geom {
+
+using namespace facet::pack;
+
+uint32_t PackWriter::add_floats(const std::vector<float>& values) {
+    const uint32_t first = uint32_t(floats_.size());
+    floats_.insert(floats_.end(), values.begin(), values.end());
+    return first;
+}
+
+uint32_t PackWriter::add_surface(SurfaceType type, const std::vector<float>& params, uint32_t ref) {
+    surfaces_.push_back({uint8_t(type), 0, 0, add_floats(params), uint32_t(params.size()), ref});
+    return uint32_t(surfaces_.size() - 1);
+}
+
+uint32_t PackWriter::add_curve(CurveType type, uint8_t dim, const std::vector<float>& params) {
+    auto& list = dim == 3 ? curves3_ : curves2_;
+    list.push_back({uint8_t(type), dim, 0, add_floats(params), uint32_t(params.size())});
+    return uint32_t(list.size() - 1);
+}
+
+uint32_t PackWriter::add_vertex(float x, float y, float z) {
+    vertices_.push_back({{x, y, z}});
+    return uint32_t(vertices_.size() - 1);
+}
+uint32_t PackWriter::add_edge(const Edge& e) { edges_.push_back(e); return uint32_t(edges_.size() - 1); }
+uint32_t PackWriter::add_coedge(const Coedge& c) { coedges_.push_back(c); return uint32_t(coedges_.size() - 1); }
+uint32_t PackWriter::add_loop(const Loop& l) { loops_.push_back(l); return uint32_t(loops_.size() - 1); }
+uint32_t PackWriter::add_face(const pack::Face& f) { faces_.push_back(f); return uint32_t(faces_.size() - 1); }
+uint32_t PackWriter::add_shell(const Shell& s) { shells_.push_back(s); return uint32_t(shells_.size() - 1); }
+uint32_t PackWriter::add_instance(const Instance& i) { instances_.push_back(i); return uint32_t(instances_.size() - 1); }
+uint32_t PackWriter::add_colour(Colour c) { colours_.push_back(c); return uint32_t(colours_.size() - 1); }
+
+namespace {
+template <typename T>
+void append_section(std::vector<uint8_t>& out, std::vector<SectionEntry>& table, SectionId id,
+                    const std::vector<T>& records) {
+    const uint32_t offset = uint32_t(out.size());
+    const size_t bytes = records.size() * sizeof(T);
+    out.resize(out.size() + bytes);
+    if (bytes) std::memcpy(out.data() + offset, records.data(), bytes);
+    table.push_back({uint32_t(id), offset, uint32_t(records.size()), uint32_t(sizeof(T))});
+}
+} // namespace
+
+std::vector<uint8_t> PackWriter::finish() const {
+    constexpr uint32_t kSections = 12;
+    std::vector<uint8_t> out(sizeof(Header) + kSections * sizeof(SectionEntry));
+    std::vector<SectionEntry> table;
+    append_section(out, table, SectionId::Floats, floats_);
+    append_section(out, table, SectionId::Surfaces, surfaces_);
+    append_section(out, table, SectionId::Curves3, curves3_);
+    append_section(out, table, SectionId::Curves2, curves2_);
+    append_section(out, table, SectionId::Vertices, vertices_);
+    append_section(out, table, SectionId::Edges, edges_);
+    append_section(out, table, SectionId::Coedges, coedges_);
+    append_section(out, table, SectionId::Loops, loops_);
+    append_section(out, table, SectionId::Faces, faces_);
+    append_section(out, table, SectionId::Shells, shells_);
+    append_section(out, table, SectionId::Instances, instances_);
+    append_section(out, table, SectionId::Colours, colours_);
+    std::memcpy(out.data() + sizeof(Header), table.data(), table.size() * sizeof(SectionEntry));
+
+    Header h{};
+    std::memcpy(h.magic, kMagic, 4);
+    h.version = kVersion;
+    h.header_bytes = sizeof(Header);
+    h.total_bytes = uint32_t(out.size());
+    h.section_count = kSections;
+    h.source_unit_mm = unit_mm_;
+    for (int k = 0; k < 3; ++k) {
+        h.bbox_min[k] = std::numeric_limits<float>::max();
+        h.bbox_max[k] = std::numeric_limits<float>::lowest();
+    }
+    for (const Vertex& v : vertices_) {
+        for (int k = 0; k < 3; ++k) {
+            h.bbox_min[k] = std::min(h.bbox_min[k], v.p[k]);
+            h.bbox_max[k] = std::max(h.bbox_max[k], v.p[k]);
+        }
+    }
+    if (vertices_.empty()) {
+        for (int k = 0; k < 3; ++k) h.bbox_min[k] = h.bbox_max[k] = 0;
+    }
+    h.crc32 = crc32(out.data() + sizeof(Header), uint32_t(out.size() - sizeof(Header)));
+    std::memcpy(out.data(), &h, sizeof h);
+    return out;
+}
+
+std::string PackWriter::summary() const {
+    auto kb = [](size_t bytes) { return std::to_string((bytes + 512) / 1024) + " KB"; };
+    return "floats " + kb(floats_.size() * 4) + ", surfaces " + std::to_string(surfaces_.size()) +
+           ", curves " + std::to_string(curves3_.size()) + " 3D / " + std::to_string(curves2_.size()) +
+           " 2D, vertices " + std::to_string(vertices_.size()) + ", edges " + std::to_string(edges_.size()) +
+           ", coedges " + std::to_string(coedges_.size()) + ", loops " + std::to_string(loops_.size()) +
+           ", faces " + std::to_string(faces_.size()) + ", shells " + std::to_string(shells_.size()) +
+           ", instances " + std::to_string(instances_.size()) + ", colours " + std::to_string(colours_.size());
+}
+
+} // namespace facet::geom

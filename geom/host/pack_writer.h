@@ -1,0 +1,52 @@
+#pragma once
+// Builds a pack in memory on the host (tools/facet-pack, tests). Not for the device: it
+// allocates. The matching reader is geom/pack.h.
+#include "geom/pack_format.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace facet::geom {
+
+class PackWriter {
+public:
+    uint32_t add_floats(const std::vector<float>& values); // returns the first index
+    uint32_t add_surface(pack::SurfaceType type, const std::vector<float>& params,
+                         uint32_t ref = pack::kNoIndex);
+    uint32_t add_curve(pack::CurveType type, uint8_t dim, const std::vector<float>& params);
+    uint32_t add_vertex(float x, float y, float z);
+    uint32_t add_edge(const pack::Edge& e);
+    uint32_t add_coedge(const pack::Coedge& c);
+    uint32_t add_loop(const pack::Loop& l);
+    uint32_t add_face(const pack::Face& f);
+    uint32_t add_shell(const pack::Shell& s);
+    uint32_t add_instance(const pack::Instance& i);
+    uint32_t add_colour(pack::Colour c);
+
+    uint32_t coedge_count() const { return uint32_t(coedges_.size()); }
+    uint32_t loop_count() const { return uint32_t(loops_.size()); }
+    uint32_t face_count() const { return uint32_t(faces_.size()); }
+
+    void set_source_unit_mm(float unit) { unit_mm_ = unit; }
+    // The finished pack: header with bounding box and CRC, section table, sections.
+    std::vector<uint8_t> finish() const;
+    // Bytes per section, for the packer's summary.
+    std::string summary() const;
+
+private:
+    std::vector<float> floats_;
+    std::vector<pack::Surface> surfaces_;
+    std::vector<pack::Curve> curves3_, curves2_;
+    std::vector<pack::Vertex> vertices_;
+    std::vector<pack::Edge> edges_;
+    std::vector<pack::Coedge> coedges_;
+    std::vector<pack::Loop> loops_;
+    std::vector<pack::Face> faces_;
+    std::vector<pack::Shell> shells_;
+    std::vector<pack::Instance> instances_;
+    std::vector<pack::Colour> colours_;
+    float unit_mm_ = 1.0f;
+};
+
+} // namespace facet::geom

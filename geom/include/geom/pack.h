@@ -1,0 +1,75 @@
+#pragma once
+// Reading a pack in place (zero-copy) after validating all of it.
+//
+//   geom::Pack pack;
+//   geom::PackProblem problem;
+//   if (pack.open(data, size, problem) != Status::Ok) print(con, "pack: {}\n", problem.what);
+//
+// open() checks the header, the CRC, every section's bounds and record size, every index
+// against its target's count, every surface's and curve's parameter layout, and that every
+// float is finite. Nothing is read before it is checked, so a corrupt pack can only produce a
+// status and a message naming the bad record, never a crash.
+#include "geom/pack_format.h"
+#include "hal/status.h"
+
+#include <cstdint>
+#include <span>
+
+namespace facet::geom {
+
+struct PackProblem {
+    const char* what = "";    // a fixed description of the failed check
+    uint32_t section = 0;     // SectionId of the bad record (0: the header)
+    uint32_t index = 0;       // the bad record within its section
+    char message[128] = {};   // "section Faces record 12: surface index out of range"
+};
+
+class Pack {
+public:
+    Status open(const void* data, uint32_t size, PackProblem& problem);
+
+    const pack::Header& header() const { return *header_; }
+    std::span<const float> floats() const { return floats_; }
+    std::span<const pack::Surface> surfaces() const { return surfaces_; }
+    std::span<const pack::Curve> curves3() const { return curves3_; }
+    std::span<const pack::Curve> curves2() const { return curves2_; }
+    std::span<const pack::Vertex> vertices() const { return vertices_; }
+    std::span<const pack::Edge> edges() const { return edges_; }
+    std::span<const pack::Coedge> coedges() const { return coedges_; }
+    std::span<const pack::Loop> loops() const { return loops_; }
+    std::span<const pack::Face> faces() const { return faces_; }
+    std::span<const pack::Shell> shells() const { return shells_; }
+    std::span<const pack::Instance> instances() const { return instances_; }
+    std::span<const pack::Colour> colours() const { return colours_; }
+
+    // The parameters of a surface or curve (validated by open()).
+    std::span<const float> params(uint32_t first, uint32_t count) const {
+        return floats_.subspan(first, count);
+    }
+
+private:
+    Status fail(PackProblem& p, const char* what, uint32_t section, uint32_t index);
+    Status check_records(PackProblem& p);
+
+    const pack::Header* header_ = nullptr;
+    std::span<const float> floats_;
+    std::span<const pack::Surface> surfaces_;
+    std::span<const pack::Curve> curves3_, curves2_;
+    std::span<const pack::Vertex> vertices_;
+    std::span<const pack::Edge> edges_;
+    std::span<const pack::Coedge> coedges_;
+    std::span<const pack::Loop> loops_;
+    std::span<const pack::Face> faces_;
+    std::span<const pack::Shell> shells_;
+    std::span<const pack::Instance> instances_;
+    std::span<const pack::Colour> colours_;
+};
+
+// Expected parameter count of a surface or curve from its head (B-splines) or type; 0 if the
+// head itself is invalid. `avail` floats start at `p`.
+uint32_t surface_param_count(uint8_t type, const float* p, uint32_t avail);
+uint32_t curve_param_count(uint8_t type, uint8_t dim, const float* p, uint32_t avail);
+
+const char* section_name(uint32_t id);
+
+} // namespace facet::geom

@@ -1,0 +1,159 @@
+#pragma once
+// The facet pack: exact B-rep geometry, packed on the host (tools/facet-pack) and read in place
+// on the device (geom/pack_reader). One header for both sides; docs/pack-format.md explains it.
+//
+// Layout: a 64-byte header, a table of sections, then each section's records, every part
+// 4-byte aligned. Little-endian. Geometry is float32 (a 2 m part keeps ~0.1 um steps, far below
+// the 0.1% visual tolerance); indices are uint32 with kNoIndex for "none".
+#include <cstdint>
+
+namespace facet::pack {
+
+constexpr char kMagic[4] = {'F', 'P', 'K', '1'};
+constexpr uint16_t kVersion = 1;
+constexpr uint32_t kNoIndex = 0xFFFFFFFFu;
+constexpr uint32_t kMaxSections = 16;
+constexpr uint32_t kMaxBytes = 64u << 20; // a pack larger than this is refused as corrupt
+
+struct Header {
+    char magic[4];
+    uint16_t version;
+    uint16_t header_bytes;  // sizeof(Header): lets later versions grow it
+    uint32_t total_bytes;   // the whole pack
+    uint32_t crc32;         // CRC-32 (IEEE) of bytes [header_bytes, total_bytes)
+    uint32_t section_count; // entries in the section table that follows the header
+    uint32_t flags;         // reserved, 0
+    float bbox_min[3];      // of every vertex and pole, in millimetres
+    float bbox_max[3];
+    float source_unit_mm;   // the STEP file's length unit (coordinates are converted to mm)
+    uint32_t reserved[3];
+};
+static_assert(sizeof(Header) == 64, "pack header is 64 bytes");
+
+enum class SectionId : uint32_t {
+    Floats = 1,    // float32 pool: every surface and curve keeps its parameters here
+    Surfaces = 2,  // Surface records
+    Curves3 = 3,   // 3D curves (edges)
+    Curves2 = 4,   // 2D curves (pcurves, in a face's (u,v))
+    Vertices = 5,  // float32 x, y, z
+    Edges = 6,
+    Coedges = 7,   // an edge as used by one loop of one face
+    Loops = 8,
+    Faces = 9,
+    Shells = 10,   // a solid's (or a surface model's) faces
+    Instances = 11,
+    Colours = 12,  // RGBA8
+};
+
+struct SectionEntry {
+    uint32_t id;           // SectionId
+    uint32_t offset;       // from the start of the pack, 4-byte aligned
+    uint32_t count;        // records
+    uint32_t record_bytes; // must equal the record size this reader knows
+};
+static_assert(sizeof(SectionEntry) == 16);
+
+enum class SurfaceType : uint8_t {
+    Plane = 1,      // params: origin[3] xdir[3] ydir[3]                       (9)
+    Cylinder = 2,   // origin[3] xdir[3] ydir[3] radius                         (10)
+    Cone = 3,       // origin[3] xdir[3] ydir[3] ref_radius semi_angle          (11)
+    Sphere = 4,     // origin[3] xdir[3] ydir[3] radius                         (10)
+    Torus = 5,      // origin[3] xdir[3] ydir[3] major minor                    (11)
+    BSpline = 6,    // see BSplineSurfaceHead
+    Revolution = 7, // axis origin[3] dir[3]; ref = the revolved 3D curve       (6)
+    Extrusion = 8,  // dir[3]; ref = the extruded 3D curve                      (3)
+};
+
+enum class CurveType : uint8_t {
+    Line = 1,    // 3D: origin[3] dir[3] (6);            2D: origin[2] dir[2] (4)
+    Circle = 2,  // 3D: origin[3] xdir[3] ydir[3] r (10); 2D: origin[2] xdir[2] ydir[2] r (7)
+    Ellipse = 3, // 3D: ... major minor (11);             2D: ... major minor (8)
+    BSpline = 4, // see BSplineCurveHead
+};
+
+// Leading parameters of a B-spline, then knots (expanded by multiplicity), then poles
+// (dim values each, times the weight-free coordinates; weights follow the poles if rational).
+struct BSplineCurveHead {
+    float degree, pole_count, knot_count, rational, periodic; // stored as floats in the pool
+};
+struct BSplineSurfaceHead {
+    float u_degree, v_degree, u_poles, v_poles, u_knots, v_knots, rational, u_periodic, v_periodic;
+};
+
+struct Surface {
+    uint8_t type;  // SurfaceType
+    uint8_t flags; // reserved
+    uint16_t pad;
+    uint32_t params; // first float in the pool
+    uint32_t count;  // floats
+    uint32_t ref;    // Revolution/Extrusion: a Curves3 index; else kNoIndex
+};
+static_assert(sizeof(Surface) == 16);
+
+struct Curve {
+    uint8_t type; // CurveType
+    uint8_t dim;  // 3 (Curves3) or 2 (Curves2)
+    uint16_t pad;
+    uint32_t params;
+    uint32_t count;
+};
+static_assert(sizeof(Curve) == 12);
+
+struct Vertex {
+    float p[3];
+};
+
+struct Edge {
+    uint32_t curve;     // Curves3 index; kNoIndex for a degenerate edge (a pole or apex)
+    float t0, t1;       // parameter range on the curve
+    uint32_t v0, v1;    // Vertices at t0 and t1
+    float tolerance;    // mm
+};
+static_assert(sizeof(Edge) == 24);
+
+struct Coedge {
+    uint32_t edge;
+    uint32_t pcurve;  // Curves2 index on the face's surface, same parameter as the edge
+    uint8_t reversed; // 1: the loop runs the edge from t1 to t0
+    uint8_t seam;     // 1: the edge is a seam of a periodic surface (its twin is the other side)
+    uint16_t pad;
+};
+static_assert(sizeof(Coedge) == 12);
+
+struct Loop {
+    uint32_t first_coedge;
+    uint32_t coedge_count;
+};
+
+struct Face {
+    uint32_t surface;
+    uint32_t first_loop; // the outer loop first
+    uint32_t loop_count;
+    uint32_t colour;     // Colours index or kNoIndex
+    uint8_t reversed;    // 1: the face's normal is opposite the surface's
+    uint8_t pad[3];
+    float uv_min[2], uv_max[2]; // parameter bounds of the face
+};
+static_assert(sizeof(Face) == 36);
+
+struct Shell {
+    uint32_t first_face;
+    uint32_t face_count;
+    uint32_t colour; // default colour of its faces, or kNoIndex
+    uint32_t closed; // 1: a closed solid (every edge shared by two faces)
+};
+
+struct Instance {
+    uint32_t shell;
+    float m[12]; // row-major 3x4 placement (rotation | translation), mm
+};
+static_assert(sizeof(Instance) == 52);
+
+struct Colour {
+    uint8_t r, g, b, a;
+};
+
+// CRC-32 (IEEE 802.3, reflected, as zlib) for the header's checksum.
+uint32_t crc32(const void* data, uint32_t size, uint32_t crc = 0);
+
+} // namespace facet::pack

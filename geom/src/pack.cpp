@@ -1,0 +1,248 @@
+#include "geom/pack.h"
+
+#include "hal/print.h"
+
+#include <cstring>
+
+namespace facet::pack {
+
+uint32_t crc32(const void* data, uint32_t size, uint32_t crc) {
+    const uint8_t* p = static_cast<const uint8_t*>(data);
+    crc = ~crc;
+    for (uint32_t i = 0; i < size; ++i) {
+        crc ^= p[i];
+        for (int k = 0; k < 8; ++k) crc = (crc >> 1) ^ (0xEDB88320u & (0u - (crc & 1u)));
+    }
+    return ~crc;
+}
+
+} // namespace facet::pack
+
+namespace facet::geom {
+namespace {
+
+using namespace facet::pack;
+
+bool finite(float f) {
+    uint32_t bits;
+    std::memcpy(&bits, &f, 4);
+    return (bits & 0x7F800000u) != 0x7F800000u; // exponent all ones: inf or NaN
+}
+
+// A float that must hold a small non-negative integer (B-spline heads).
+bool whole(float f, uint32_t max, uint32_t& out) {
+    if (!finite(f) || f < 0 || f > float(max)) return false;
+    out = uint32_t(f);
+    return float(out) == f;
+}
+
+constexpr uint32_t kMaxDegree = 25, kMaxPoles = 1u << 20;
+
+uint32_t bspline_curve_count(const float* p, uint32_t avail, uint32_t dim) {
+    uint32_t deg, poles, knots, rational, periodic;
+    if (avail < 5 || !whole(p[0], kMaxDegree, deg) || !whole(p[1], kMaxPoles, poles) ||
+        !whole(p[2], kMaxPoles + kMaxDegree + 1, knots) || !whole(p[3], 1, rational) ||
+        !whole(p[4], 1, periodic)) {
+        return 0;
+    }
+    if (deg < 1 || poles < 2 || poles < (periodic ? 2 : deg + 1)) return 0;
+    if (knots != poles + deg + 1) return 0; // knots expanded by multiplicity (unperiodized)
+    return 5 + knots + poles * (dim + rational);
+}
+
+} // namespace
+
+uint32_t curve_param_count(uint8_t type, uint8_t dim, const float* p, uint32_t avail) {
+    switch (CurveType(type)) {
+    case CurveType::Line: return dim == 3 ? 6 : 4;
+    case CurveType::Circle: return dim == 3 ? 10 : 7;
+    case CurveType::Ellipse: return dim == 3 ? 11 : 8;
+    case CurveType::BSpline: return bspline_curve_count(p, avail, dim);
+    }
+    return 0;
+}
+
+uint32_t surface_param_count(uint8_t type, const float* p, uint32_t avail) {
+    switch (SurfaceType(type)) {
+    case SurfaceType::Plane: return 9;
+    case SurfaceType::Cylinder: return 10;
+    case SurfaceType::Cone: return 11;
+    case SurfaceType::Sphere: return 10;
+    case SurfaceType::Torus: return 11;
+    case SurfaceType::Revolution: return 6;
+    case SurfaceType::Extrusion: return 3;
+    case SurfaceType::BSpline: {
+        uint32_t ud, vd, up, vp, uk, vk, rational, uper, vper;
+        if (avail < 9 || !whole(p[0], kMaxDegree, ud) || !whole(p[1], kMaxDegree, vd) ||
+            !whole(p[2], kMaxPoles, up) || !whole(p[3], kMaxPoles, vp) ||
+            !whole(p[4], kMaxPoles + kMaxDegree + 1, uk) || !whole(p[5], kMaxPoles + kMaxDegree + 1, vk) ||
+            !whole(p[6], 1, rational) || !whole(p[7], 1, uper) || !whole(p[8], 1, vper)) {
+            return 0;
+        }
+        if (ud < 1 || vd < 1 || up < ud + 1 || vp < vd + 1 || uint64_t(up) * vp > kMaxPoles) return 0;
+        if (uk != up + ud + 1 || vk != vp + vd + 1) return 0;
+        return 9 + uk + vk + up * vp * (3 + rational);
+    }
+    }
+    return 0;
+}
+
+const char* section_name(uint32_t id) {
+    static const char* const names[] = {"header", "Floats", "Surfaces", "Curves3", "Curves2", "Vertices", "Edges",
+                                        "Coedges", "Loops", "Faces", "Shells", "Instances", "Colours"};
+    return id < sizeof names / sizeof names[0] ? names[id] : "unknown";
+}
+
+Status Pack::fail(PackProblem& p, const char* what, uint32_t section, uint32_t index) {
+    p.what = what;
+    p.section = section;
+    p.index = index;
+    if (section == 0) format(p.message, sizeof p.message, "header: {}", what);
+    else format(p.message, sizeof p.message, "section {} record {}: {}", section_name(section), index, what);
+    *this = Pack{};
+    return Status::Corrupt;
+}
+
+Status Pack::open(const void* data, uint32_t size, PackProblem& p) {
+    *this = Pack{};
+    const uint8_t* base = static_cast<const uint8_t*>(data);
+    if (!data || (reinterpret_cast<uintptr_t>(data) & 3)) return fail(p, "pack is not 4-byte aligned", 0, 0);
+    if (size < sizeof(Header)) return fail(p, "shorter than the header (truncated)", 0, 0);
+    const Header* h = reinterpret_cast<const Header*>(base);
+    if (std::memcmp(h->magic, kMagic, 4) != 0) return fail(p, "not a facet pack (bad magic)", 0, 0);
+    if (h->version != kVersion) return fail(p, "unsupported version", 0, 0);
+    if (h->header_bytes != sizeof(Header)) return fail(p, "unexpected header size", 0, 0);
+    if (h->total_bytes != size) return fail(p, "size does not match the header (truncated or padded)", 0, 0);
+    if (size > kMaxBytes) return fail(p, "larger than the 64 MiB limit", 0, 0);
+    if (h->section_count > kMaxSections) return fail(p, "too many sections", 0, 0);
+    const uint64_t table_end = sizeof(Header) + uint64_t(h->section_count) * sizeof(SectionEntry);
+    if (table_end > size) return fail(p, "section table runs past the end", 0, 0);
+    if (pack::crc32(base + sizeof(Header), size - sizeof(Header)) != h->crc32) return fail(p, "CRC mismatch", 0, 0);
+    for (int i = 0; i < 3; ++i) {
+        if (!finite(h->bbox_min[i]) || !finite(h->bbox_max[i]) || h->bbox_min[i] > h->bbox_max[i]) {
+            return fail(p, "bounding box is not finite or inverted", 0, 0);
+        }
+    }
+    if (!finite(h->source_unit_mm) || !(h->source_unit_mm > 0)) return fail(p, "bad source unit", 0, 0);
+
+    const SectionEntry* table = reinterpret_cast<const SectionEntry*>(base + sizeof(Header));
+    uint32_t seen = 0;
+    for (uint32_t i = 0; i < h->section_count; ++i) {
+        const SectionEntry& s = table[i];
+        const uint32_t id = s.id;
+        if (id < 1 || id > uint32_t(SectionId::Colours)) continue; // unknown sections are skipped
+        if (seen & (1u << id)) return fail(p, "section appears twice", id, 0);
+        seen |= 1u << id;
+        static const uint32_t sizes[] = {0, 4, sizeof(Surface), sizeof(Curve), sizeof(Curve), sizeof(Vertex), sizeof(Edge),
+                                         sizeof(Coedge), sizeof(Loop), sizeof(pack::Face), sizeof(Shell), sizeof(Instance), sizeof(Colour)};
+        if (s.record_bytes != sizes[id]) return fail(p, "record size does not match this reader", id, 0);
+        if (s.offset & 3) return fail(p, "section offset is not 4-byte aligned", id, 0);
+        if (s.offset < table_end || uint64_t(s.offset) + uint64_t(s.count) * s.record_bytes > size) {
+            return fail(p, "section lies outside the pack (bad offset or count)", id, 0);
+        }
+        const uint8_t* at = base + s.offset;
+        switch (SectionId(id)) {
+        case SectionId::Floats: floats_ = {reinterpret_cast<const float*>(at), s.count}; break;
+        case SectionId::Surfaces: surfaces_ = {reinterpret_cast<const Surface*>(at), s.count}; break;
+        case SectionId::Curves3: curves3_ = {reinterpret_cast<const Curve*>(at), s.count}; break;
+        case SectionId::Curves2: curves2_ = {reinterpret_cast<const Curve*>(at), s.count}; break;
+        case SectionId::Vertices: vertices_ = {reinterpret_cast<const Vertex*>(at), s.count}; break;
+        case SectionId::Edges: edges_ = {reinterpret_cast<const Edge*>(at), s.count}; break;
+        case SectionId::Coedges: coedges_ = {reinterpret_cast<const Coedge*>(at), s.count}; break;
+        case SectionId::Loops: loops_ = {reinterpret_cast<const Loop*>(at), s.count}; break;
+        case SectionId::Faces: faces_ = {reinterpret_cast<const pack::Face*>(at), s.count}; break;
+        case SectionId::Shells: shells_ = {reinterpret_cast<const Shell*>(at), s.count}; break;
+        case SectionId::Instances: instances_ = {reinterpret_cast<const Instance*>(at), s.count}; break;
+        case SectionId::Colours: colours_ = {reinterpret_cast<const Colour*>(at), s.count}; break;
+        }
+    }
+    header_ = h;
+    return check_records(p);
+}
+
+Status Pack::check_records(PackProblem& p) {
+    constexpr uint32_t F = uint32_t(SectionId::Floats);
+    for (uint32_t i = 0; i < floats_.size(); ++i) {
+        if (!finite(floats_[i])) return fail(p, "a parameter is NaN or infinite", F, i);
+    }
+    auto params_ok = [&](uint32_t first, uint32_t count) {
+        return uint64_t(first) + count <= floats_.size();
+    };
+    constexpr uint32_t S = uint32_t(SectionId::Surfaces);
+    for (uint32_t i = 0; i < surfaces_.size(); ++i) {
+        const Surface& s = surfaces_[i];
+        if (!params_ok(s.params, s.count)) return fail(p, "parameters lie outside the float pool", S, i);
+        const uint32_t need = surface_param_count(s.type, floats_.data() + s.params, s.count);
+        if (need == 0) return fail(p, "unknown surface type or bad B-spline head", S, i);
+        if (need != s.count) return fail(p, "parameter count does not match the surface type", S, i);
+        const bool swept = s.type == uint8_t(SurfaceType::Revolution) || s.type == uint8_t(SurfaceType::Extrusion);
+        if (swept ? s.ref >= curves3_.size() : s.ref != kNoIndex) return fail(p, "bad swept-curve reference", S, i);
+    }
+    for (int dim = 3; dim >= 2; --dim) {
+        const std::span<const Curve> cs = dim == 3 ? curves3_ : curves2_;
+        const uint32_t id = uint32_t(dim == 3 ? SectionId::Curves3 : SectionId::Curves2);
+        for (uint32_t i = 0; i < cs.size(); ++i) {
+            const Curve& c = cs[i];
+            if (c.dim != dim) return fail(p, "curve dimension does not match its section", id, i);
+            if (!params_ok(c.params, c.count)) return fail(p, "parameters lie outside the float pool", id, i);
+            const uint32_t need = curve_param_count(c.type, c.dim, floats_.data() + c.params, c.count);
+            if (need == 0) return fail(p, "unknown curve type or bad B-spline head", id, i);
+            if (need != c.count) return fail(p, "parameter count does not match the curve type", id, i);
+        }
+    }
+    constexpr uint32_t V = uint32_t(SectionId::Vertices);
+    for (uint32_t i = 0; i < vertices_.size(); ++i) {
+        for (float f : vertices_[i].p) {
+            if (!finite(f)) return fail(p, "vertex is NaN or infinite", V, i);
+        }
+    }
+    constexpr uint32_t E = uint32_t(SectionId::Edges);
+    for (uint32_t i = 0; i < edges_.size(); ++i) {
+        const Edge& e = edges_[i];
+        if (e.curve != kNoIndex && e.curve >= curves3_.size()) return fail(p, "curve index out of range", E, i);
+        if (e.v0 >= vertices_.size() || e.v1 >= vertices_.size()) return fail(p, "vertex index out of range", E, i);
+        if (!finite(e.t0) || !finite(e.t1) || !finite(e.tolerance) || e.tolerance < 0) return fail(p, "bad parameter range or tolerance", E, i);
+    }
+    constexpr uint32_t C = uint32_t(SectionId::Coedges);
+    for (uint32_t i = 0; i < coedges_.size(); ++i) {
+        const Coedge& c = coedges_[i];
+        if (c.edge >= edges_.size()) return fail(p, "edge index out of range", C, i);
+        if (c.pcurve >= curves2_.size()) return fail(p, "pcurve index out of range", C, i);
+        if (c.reversed > 1 || c.seam > 1) return fail(p, "bad flags", C, i);
+    }
+    constexpr uint32_t L = uint32_t(SectionId::Loops);
+    for (uint32_t i = 0; i < loops_.size(); ++i) {
+        const Loop& l = loops_[i];
+        if (l.coedge_count == 0 || uint64_t(l.first_coedge) + l.coedge_count > coedges_.size()) {
+            return fail(p, "coedge range out of range or empty", L, i);
+        }
+    }
+    constexpr uint32_t FA = uint32_t(SectionId::Faces);
+    for (uint32_t i = 0; i < faces_.size(); ++i) {
+        const pack::Face& f = faces_[i];
+        if (f.surface >= surfaces_.size()) return fail(p, "surface index out of range", FA, i);
+        if (f.loop_count == 0 || uint64_t(f.first_loop) + f.loop_count > loops_.size()) return fail(p, "loop range out of range or empty", FA, i);
+        if (f.colour != kNoIndex && f.colour >= colours_.size()) return fail(p, "colour index out of range", FA, i);
+        if (f.reversed > 1) return fail(p, "bad orientation flag", FA, i);
+        for (int k = 0; k < 2; ++k) {
+            if (!finite(f.uv_min[k]) || !finite(f.uv_max[k]) || f.uv_min[k] > f.uv_max[k]) return fail(p, "bad (u,v) bounds", FA, i);
+        }
+    }
+    constexpr uint32_t SH = uint32_t(SectionId::Shells);
+    for (uint32_t i = 0; i < shells_.size(); ++i) {
+        const Shell& s = shells_[i];
+        if (uint64_t(s.first_face) + s.face_count > faces_.size()) return fail(p, "face range out of range", SH, i);
+        if (s.colour != kNoIndex && s.colour >= colours_.size()) return fail(p, "colour index out of range", SH, i);
+        if (s.closed > 1) return fail(p, "bad closed flag", SH, i);
+    }
+    constexpr uint32_t IN = uint32_t(SectionId::Instances);
+    for (uint32_t i = 0; i < instances_.size(); ++i) {
+        if (instances_[i].shell >= shells_.size()) return fail(p, "shell index out of range", IN, i);
+        for (float f : instances_[i].m) {
+            if (!finite(f)) return fail(p, "placement is NaN or infinite", IN, i);
+        }
+    }
+    return Status::Ok;
+}
+
+} // namespace facet::geom
