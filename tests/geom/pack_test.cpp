@@ -1,0 +1,249 @@
+// The pack reader refuses every kind of corruption with a status naming the bad record, and
+// reads a valid pack in place.
+#include "geom/pack.h"
+#include "pack_writer.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <string>
+
+using namespace facet;
+using namespace facet::geom;
+using namespace facet::pack;
+
+namespace {
+
+// A 10 mm cube: 6 planes, 12 line edges, 8 vertices, 24 coedges with line pcurves.
+std::vector<uint8_t> cube_pack() {
+    PackWriter w;
+    const float s = 10;
+    uint32_t v[8];
+    for (int i = 0; i < 8; ++i) v[i] = w.add_vertex(s * (i & 1), s * ((i >> 1) & 1), s * ((i >> 2) & 1));
+    const int edges[12][2] = {{0, 1}, {2, 3}, {4, 5}, {6, 7}, {0, 2}, {1, 3}, {4, 6}, {5, 7}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
+    uint32_t e[12];
+    for (int i = 0; i < 12; ++i) {
+        const uint32_t a = v[edges[i][0]], b = v[edges[i][1]];
+        const float* pa = nullptr;
+        (void)pa;
+        const int ia = edges[i][0], ib = edges[i][1];
+        const float o[3] = {s * (ia & 1), s * ((ia >> 1) & 1), s * ((ia >> 2) & 1)};
+        const float d[3] = {s * ((ib & 1) - (ia & 1)), s * (((ib >> 1) & 1) - ((ia >> 1) & 1)), s * (((ib >> 2) & 1) - ((ia >> 2) & 1))};
+        const uint32_t c = w.add_curve(CurveType::Line, 3, {o[0], o[1], o[2], d[0] / s, d[1] / s, d[2] / s});
+        e[i] = w.add_edge({c, 0, s, a, b, 1e-4f});
+    }
+    // One face per side; pcurves are simple lines (the test only needs valid structure).
+    const uint32_t colour = w.add_colour({200, 180, 40, 255});
+    const uint32_t first_face = w.face_count();
+    for (int f = 0; f < 6; ++f) {
+        const uint32_t surf = w.add_surface(SurfaceType::Plane, {0, 0, 0, 1, 0, 0, 0, 1, 0});
+        const uint32_t first = w.coedge_count();
+        for (int k = 0; k < 4; ++k) {
+            const uint32_t pc = w.add_curve(CurveType::Line, 2, {0, 0, 1, 0});
+            w.add_coedge({e[(f * 2 + k) % 12], pc, uint8_t(k & 1), 0, 0});
+        }
+        const uint32_t loop = w.add_loop({first, 4});
+        w.add_face({surf, loop, 1, colour, 0, {0, 0, 0}, {0, 0}, {s, s}});
+    }
+    const uint32_t shell = w.add_shell({first_face, 6, kNoIndex, 1});
+    w.add_instance({shell, {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0}});
+    return w.finish();
+}
+
+// Aligned copy (the reader wants 4-byte alignment, as the device's load address gives).
+struct Buf {
+    std::vector<uint32_t> words;
+    uint32_t size;
+    explicit Buf(const std::vector<uint8_t>& b) : words((b.size() + 3) / 4), size(uint32_t(b.size())) {
+        std::memcpy(words.data(), b.data(), b.size());
+    }
+    uint8_t* bytes() { return reinterpret_cast<uint8_t*>(words.data()); }
+    Header& header() { return *reinterpret_cast<Header*>(bytes()); }
+    SectionEntry& section(SectionId id) {
+        SectionEntry* t = reinterpret_cast<SectionEntry*>(bytes() + sizeof(Header));
+        for (uint32_t i = 0; i < header().section_count; ++i)
+            if (t[i].id == uint32_t(id)) return t[i];
+        throw std::runtime_error("no section");
+    }
+    template <typename T>
+    T& record(SectionId id, uint32_t i) { return reinterpret_cast<T*>(bytes() + section(id).offset)[i]; }
+    void reseal() { header().crc32 = crc32(bytes() + sizeof(Header), size - sizeof(Header)); }
+    Status open(Pack& p, PackProblem& problem) { return p.open(bytes(), size, problem); }
+};
+
+} // namespace
+
+TEST(Pack, ValidCubeReadsInPlace) {
+    Buf b(cube_pack());
+    Pack p;
+    PackProblem problem;
+    ASSERT_EQ(b.open(p, problem), Status::Ok) << problem.message;
+    EXPECT_EQ(p.faces().size(), 6u);
+    EXPECT_EQ(p.edges().size(), 12u);
+    EXPECT_EQ(p.coedges().size(), 24u);
+    EXPECT_EQ(p.header().bbox_max[2], 10.0f);
+    EXPECT_EQ(reinterpret_cast<const uint8_t*>(p.faces().data()), b.bytes() + b.section(SectionId::Faces).offset) << "zero-copy";
+}
+
+TEST(Pack, CrcOfAKnownString) { EXPECT_EQ(crc32("123456789", 9), 0xCBF43926u); }
+
+TEST(Pack, TruncatedAtEverySizeIsRefused) {
+    const std::vector<uint8_t> good = cube_pack();
+    for (size_t n : {size_t(0), size_t(10), sizeof(Header) - 1, sizeof(Header), good.size() / 2, good.size() - 4}) {
+        Buf b(std::vector<uint8_t>(good.begin(), good.begin() + long(n)));
+        Pack p;
+        PackProblem problem;
+        EXPECT_EQ(b.open(p, problem), Status::Corrupt) << "size " << n;
+        EXPECT_EQ(problem.section, 0u);
+    }
+}
+
+TEST(Pack, BadMagicVersionAndCrc) {
+    {
+        Buf b(cube_pack());
+        b.bytes()[0] = 'X';
+        Pack p;
+        PackProblem pr;
+        EXPECT_EQ(b.open(p, pr), Status::Corrupt);
+        EXPECT_STREQ(pr.what, "not a facet pack (bad magic)");
+    }
+    {
+        Buf b(cube_pack());
+        b.header().version = 9;
+        Pack p;
+        PackProblem pr;
+        EXPECT_EQ(b.open(p, pr), Status::Corrupt);
+        EXPECT_STREQ(pr.what, "unsupported version");
+    }
+    {
+        Buf b(cube_pack());
+        b.bytes()[b.size - 1] ^= 0x40; // flip one bit of the last record
+        Pack p;
+        PackProblem pr;
+        EXPECT_EQ(b.open(p, pr), Status::Corrupt);
+        EXPECT_STREQ(pr.what, "CRC mismatch");
+    }
+}
+
+TEST(Pack, BadOffsetsAndRecordSizes) {
+    {
+        Buf b(cube_pack());
+        b.section(SectionId::Faces).offset = b.size - 8; // runs past the end
+        b.reseal();
+        Pack p;
+        PackProblem pr;
+        EXPECT_EQ(b.open(p, pr), Status::Corrupt);
+        EXPECT_EQ(pr.section, uint32_t(SectionId::Faces));
+        EXPECT_STREQ(pr.what, "section lies outside the pack (bad offset or count)");
+    }
+    {
+        Buf b(cube_pack());
+        b.section(SectionId::Edges).offset += 2; // misaligned
+        b.reseal();
+        Pack p;
+        PackProblem pr;
+        EXPECT_EQ(b.open(p, pr), Status::Corrupt);
+        EXPECT_STREQ(pr.what, "section offset is not 4-byte aligned");
+    }
+    {
+        Buf b(cube_pack());
+        b.section(SectionId::Loops).count = 0xFFFFFFF0u; // overflowing count
+        b.reseal();
+        Pack p;
+        PackProblem pr;
+        EXPECT_EQ(b.open(p, pr), Status::Corrupt);
+    }
+    {
+        Buf b(cube_pack());
+        b.section(SectionId::Coedges).record_bytes = 16;
+        b.reseal();
+        Pack p;
+        PackProblem pr;
+        EXPECT_EQ(b.open(p, pr), Status::Corrupt);
+        EXPECT_STREQ(pr.what, "record size does not match this reader");
+    }
+}
+
+TEST(Pack, BadIndicesNameTheRecord) {
+    struct Case {
+        const char* name;
+        void (*corrupt)(Buf&);
+        SectionId section;
+        uint32_t index;
+    };
+    const Case cases[] = {
+        {"face surface", [](Buf& b) { b.record<pack::Face>(SectionId::Faces, 3).surface = 99; }, SectionId::Faces, 3},
+        {"face loops", [](Buf& b) { b.record<pack::Face>(SectionId::Faces, 5).first_loop = 6; }, SectionId::Faces, 5},
+        {"face colour", [](Buf& b) { b.record<pack::Face>(SectionId::Faces, 0).colour = 7; }, SectionId::Faces, 0},
+        {"edge vertex", [](Buf& b) { b.record<Edge>(SectionId::Edges, 11).v1 = 8; }, SectionId::Edges, 11},
+        {"edge curve", [](Buf& b) { b.record<Edge>(SectionId::Edges, 2).curve = 12; }, SectionId::Edges, 2},
+        {"coedge edge", [](Buf& b) { b.record<Coedge>(SectionId::Coedges, 23).edge = 12; }, SectionId::Coedges, 23},
+        {"coedge pcurve", [](Buf& b) { b.record<Coedge>(SectionId::Coedges, 4).pcurve = 1000; }, SectionId::Coedges, 4},
+        {"loop range", [](Buf& b) { b.record<Loop>(SectionId::Loops, 1).coedge_count = 40; }, SectionId::Loops, 1},
+        {"empty loop", [](Buf& b) { b.record<Loop>(SectionId::Loops, 2).coedge_count = 0; }, SectionId::Loops, 2},
+        {"shell faces", [](Buf& b) { b.record<Shell>(SectionId::Shells, 0).face_count = 7; }, SectionId::Shells, 0},
+        {"instance shell", [](Buf& b) { b.record<Instance>(SectionId::Instances, 0).shell = 1; }, SectionId::Instances, 0},
+        {"surface params", [](Buf& b) { b.record<pack::Surface>(SectionId::Surfaces, 2).count = 8; }, SectionId::Surfaces, 2},
+        {"surface type", [](Buf& b) { b.record<pack::Surface>(SectionId::Surfaces, 1).type = 42; }, SectionId::Surfaces, 1},
+        {"curve dim", [](Buf& b) { b.record<Curve>(SectionId::Curves3, 0).dim = 2; }, SectionId::Curves3, 0},
+    };
+    for (const Case& c : cases) {
+        Buf b(cube_pack());
+        c.corrupt(b);
+        b.reseal();
+        Pack p;
+        PackProblem pr;
+        EXPECT_EQ(b.open(p, pr), Status::Corrupt) << c.name;
+        EXPECT_EQ(pr.section, uint32_t(c.section)) << c.name << ": " << pr.message;
+        EXPECT_EQ(pr.index, c.index) << c.name << ": " << pr.message;
+        EXPECT_EQ(p.faces().size(), 0u) << "a refused pack exposes nothing";
+    }
+}
+
+TEST(Pack, NanAndInfinityAnywhereAreRefused) {
+    {
+        Buf b(cube_pack());
+        b.record<float>(SectionId::Floats, 5) = std::nanf("");
+        b.reseal();
+        Pack p;
+        PackProblem pr;
+        EXPECT_EQ(b.open(p, pr), Status::Corrupt);
+        EXPECT_EQ(pr.section, uint32_t(SectionId::Floats));
+        EXPECT_EQ(pr.index, 5u);
+        EXPECT_EQ(std::string(pr.message), "section Floats record 5: a parameter is NaN or infinite");
+    }
+    {
+        Buf b(cube_pack());
+        b.record<Vertex>(SectionId::Vertices, 7).p[1] = INFINITY;
+        b.reseal();
+        Pack p;
+        PackProblem pr;
+        EXPECT_EQ(b.open(p, pr), Status::Corrupt);
+        EXPECT_EQ(pr.section, uint32_t(SectionId::Vertices));
+    }
+    {
+        Buf b(cube_pack());
+        b.header().bbox_min[0] = std::nanf("");
+        Pack p;
+        PackProblem pr;
+        EXPECT_EQ(b.open(p, pr), Status::Corrupt);
+    }
+}
+
+TEST(Pack, BSplineHeadsAreChecked) {
+    PackWriter w;
+    // Degree 3, 4 poles, 8 knots, non-rational: 5 + 8 + 4*3 = 25 floats.
+    std::vector<float> good = {3, 4, 8, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1};
+    for (int i = 0; i < 12; ++i) good.push_back(float(i));
+    w.add_curve(CurveType::BSpline, 3, good);
+    std::vector<float> bad = good;
+    bad[2] = 9; // knot count inconsistent with poles + degree + 1
+    w.add_curve(CurveType::BSpline, 3, bad);
+    Buf b(w.finish());
+    Pack p;
+    PackProblem pr;
+    EXPECT_EQ(b.open(p, pr), Status::Corrupt);
+    EXPECT_EQ(pr.section, uint32_t(SectionId::Curves3));
+    EXPECT_EQ(pr.index, 1u);
+}
