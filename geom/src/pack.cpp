@@ -64,11 +64,11 @@ uint32_t curve_param_count(uint8_t type, uint8_t dim, const float* p, uint32_t a
 
 uint32_t surface_param_count(uint8_t type, const float* p, uint32_t avail) {
     switch (SurfaceType(type)) {
-    case SurfaceType::Plane: return 9;
-    case SurfaceType::Cylinder: return 10;
-    case SurfaceType::Cone: return 11;
-    case SurfaceType::Sphere: return 10;
-    case SurfaceType::Torus: return 11;
+    case SurfaceType::Plane: return 12;
+    case SurfaceType::Cylinder: return 13;
+    case SurfaceType::Cone: return 14;
+    case SurfaceType::Sphere: return 13;
+    case SurfaceType::Torus: return 14;
     case SurfaceType::Revolution: return 6;
     case SurfaceType::Extrusion: return 3;
     case SurfaceType::BSpline: {
@@ -207,8 +207,8 @@ Status Pack::check_records(PackProblem& p) {
     for (uint32_t i = 0; i < coedges_.size(); ++i) {
         const Coedge& c = coedges_[i];
         if (c.edge >= edges_.size()) return fail(p, "edge index out of range", C, i);
-        if (c.pcurve >= curves2_.size()) return fail(p, "pcurve index out of range", C, i);
-        if (c.reversed > 1 || c.seam > 1) return fail(p, "bad flags", C, i);
+        if (c.pcurve != kNoIndex && c.pcurve >= curves2_.size()) return fail(p, "pcurve index out of range", C, i);
+        if (c.reversed > 1 || c.seam > uint8_t(Seam::VHigh)) return fail(p, "bad flags", C, i);
     }
     constexpr uint32_t L = uint32_t(SectionId::Loops);
     for (uint32_t i = 0; i < loops_.size(); ++i) {
@@ -224,6 +224,14 @@ Status Pack::check_records(PackProblem& p) {
         if (f.loop_count == 0 || uint64_t(f.first_loop) + f.loop_count > loops_.size()) return fail(p, "loop range out of range or empty", FA, i);
         if (f.colour != kNoIndex && f.colour >= colours_.size()) return fail(p, "colour index out of range", FA, i);
         if (f.reversed > 1) return fail(p, "bad orientation flag", FA, i);
+        // Only elementary surfaces may leave out pcurves (they are inverted analytically).
+        const bool elementary = surfaces_[f.surface].type <= uint8_t(SurfaceType::Torus);
+        for (uint32_t l = f.first_loop; l < f.first_loop + f.loop_count; ++l) {
+            const Loop& loop = loops_[l];
+            for (uint32_t c = loop.first_coedge; c < loop.first_coedge + loop.coedge_count; ++c) {
+                if (coedges_[c].pcurve == kNoIndex && !elementary) return fail(p, "a coedge on a free-form surface has no pcurve", FA, i);
+            }
+        }
         for (int k = 0; k < 2; ++k) {
             if (!finite(f.uv_min[k]) || !finite(f.uv_max[k]) || f.uv_min[k] > f.uv_max[k]) return fail(p, "bad (u,v) bounds", FA, i);
         }

@@ -37,7 +37,7 @@ std::vector<uint8_t> cube_pack() {
     const uint32_t colour = w.add_colour({200, 180, 40, 255});
     const uint32_t first_face = w.face_count();
     for (int f = 0; f < 6; ++f) {
-        const uint32_t surf = w.add_surface(SurfaceType::Plane, {0, 0, 0, 1, 0, 0, 0, 1, 0});
+        const uint32_t surf = w.add_surface(SurfaceType::Plane, {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1});
         const uint32_t first = w.coedge_count();
         for (int k = 0; k < 4; ++k) {
             const uint32_t pc = w.add_curve(CurveType::Line, 2, {0, 0, 1, 0});

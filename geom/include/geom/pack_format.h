@@ -53,15 +53,23 @@ struct SectionEntry {
 };
 static_assert(sizeof(SectionEntry) == 16);
 
+// Elementary surfaces store their placement as origin, x, y and z axes: OCCT placements may be
+// left-handed (z = -(x cross y)), and z gives the surface's own normal direction.
+//   Plane     P(u,v) = O + u X + v Y                                   normal Z
+//   Cylinder  P(u,v) = O + R (cos u X + sin u Y) + v Z
+//   Cone      P(u,v) = O + (R + v sin a)(cos u X + sin u Y) + v cos a Z
+//   Sphere    P(u,v) = O + R cos v (cos u X + sin u Y) + R sin v Z
+//   Torus     P(u,v) = O + (R + r cos v)(cos u X + sin u Y) + r sin v Z
 enum class SurfaceType : uint8_t {
-    Plane = 1,      // params: origin[3] xdir[3] ydir[3]                       (9)
-    Cylinder = 2,   // origin[3] xdir[3] ydir[3] radius                         (10)
-    Cone = 3,       // origin[3] xdir[3] ydir[3] ref_radius semi_angle          (11)
-    Sphere = 4,     // origin[3] xdir[3] ydir[3] radius                         (10)
-    Torus = 5,      // origin[3] xdir[3] ydir[3] major minor                    (11)
+    Plane = 1,      // params: origin[3] x[3] y[3] z[3]                         (12)
+    Cylinder = 2,   // origin[3] x[3] y[3] z[3] radius                          (13)
+    Cone = 3,       // origin[3] x[3] y[3] z[3] ref_radius semi_angle           (14)
+    Sphere = 4,     // origin[3] x[3] y[3] z[3] radius                          (13)
+    Torus = 5,      // origin[3] x[3] y[3] z[3] major minor                     (14)
     BSpline = 6,    // see BSplineSurfaceHead
-    Revolution = 7, // axis origin[3] dir[3]; ref = the revolved 3D curve       (6)
-    Extrusion = 8,  // dir[3]; ref = the extruded 3D curve                      (3)
+    Revolution = 7, // axis origin[3] dir[3]; ref = the revolved 3D curve: P(u,v) = C(v) turned
+                    // by u about the axis                                      (6)
+    Extrusion = 8,  // dir[3]; ref = the extruded 3D curve: P(u,v) = C(u) + v D  (3)
 };
 
 enum class CurveType : uint8_t {
@@ -111,11 +119,17 @@ struct Edge {
 };
 static_assert(sizeof(Edge) == 24);
 
+// Which side of a periodic surface's parameter range a seam coedge lies on.
+enum class Seam : uint8_t { None = 0, ULow = 1, UHigh = 2, VLow = 3, VHigh = 4 };
+
 struct Coedge {
     uint32_t edge;
-    uint32_t pcurve;  // Curves2 index on the face's surface, same parameter as the edge
+    uint32_t pcurve;  // Curves2 index on the face's surface, same parameter as the edge; kNoIndex
+                      // on elementary surfaces (plane, cylinder, cone, sphere, torus), where
+                      // (u,v) comes from inverting the surface at the edge's 3D samples
     uint8_t reversed; // 1: the loop runs the edge from t1 to t0
-    uint8_t seam;     // 1: the edge is a seam of a periodic surface (its twin is the other side)
+    uint8_t seam;     // Seam: for a seam edge of a periodic surface, the side of the face's
+                      // (u,v) bounds this coedge runs on (its twin runs on the other)
     uint16_t pad;
 };
 static_assert(sizeof(Coedge) == 12);

@@ -1,0 +1,437 @@
+#include "occt_to_pack.h"
+
+#include <BRepTools.hxx>
+#include <BRepTools_WireExplorer.hxx>
+#include <BRep_Tool.hxx>
+#include <Geom2dAdaptor_Curve.hxx>
+#include <Geom2dConvert.hxx>
+#include <Geom2dConvert_ApproxCurve.hxx>
+#include <Geom2d_BSplineCurve.hxx>
+#include <GeomAdaptor_Curve.hxx>
+#include <GeomAdaptor_Surface.hxx>
+#include <GeomConvert.hxx>
+#include <GeomConvert_ApproxCurve.hxx>
+#include <GeomConvert_ApproxSurface.hxx>
+#include <Geom_BSplineCurve.hxx>
+#include <Geom_BSplineSurface.hxx>
+#include <Geom_SurfaceOfLinearExtrusion.hxx>
+#include <Geom2d_TrimmedCurve.hxx>
+#include <Geom_RectangularTrimmedSurface.hxx>
+#include <Geom_TrimmedCurve.hxx>
+#include <Geom_SurfaceOfRevolution.hxx>
+#include <Quantity_Color.hxx>
+#include <TColStd_Array1OfReal.hxx>
+#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <Standard_Failure.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Edge.hxx>
+#include <TopoDS_Face.hxx>
+#include <TopoDS_Vertex.hxx>
+#include <TopoDS_Wire.hxx>
+
+#include <cmath>
+#include <vector>
+
+namespace facet::packer {
+namespace {
+
+using namespace facet::pack;
+using Floats = std::vector<float>;
+
+void put(Floats& f, const gp_XYZ& v) { f.insert(f.end(), {float(v.X()), float(v.Y()), float(v.Z())}); }
+void put(Floats& f, const gp_XY& v) { f.insert(f.end(), {float(v.X()), float(v.Y())}); }
+
+void put_axes(Floats& f, const gp_Ax3& a) {
+    put(f, a.Location().XYZ());
+    put(f, a.XDirection().XYZ());
+    put(f, a.YDirection().XYZ());
+    put(f, a.Direction().XYZ());
+}
+
+constexpr double kApproxTolerance = 1e-4; // mm, for curves and surfaces with no packed form
+
+Floats bspline_curve3(Handle(Geom_BSplineCurve) c) {
+    if (c->IsPeriodic()) {
+        c = Handle(Geom_BSplineCurve)::DownCast(c->Copy());
+        c->SetNotPeriodic();
+    }
+    Floats f;
+    const int n = c->NbPoles();
+    TColStd_Array1OfReal knots(1, c->NbPoles() + c->Degree() + 1);
+    c->KnotSequence(knots);
+    f.insert(f.end(), {float(c->Degree()), float(n), float(knots.Length()), c->IsRational() ? 1.0f : 0.0f, 0.0f});
+    for (int i = knots.Lower(); i <= knots.Upper(); ++i) f.push_back(float(knots(i)));
+    for (int i = 1; i <= n; ++i) put(f, c->Pole(i).XYZ());
+    if (c->IsRational())
+        for (int i = 1; i <= n; ++i) f.push_back(float(c->Weight(i)));
+    return f;
+}
+
+Floats bspline_curve2(Handle(Geom2d_BSplineCurve) c) {
+    if (c->IsPeriodic()) {
+        c = Handle(Geom2d_BSplineCurve)::DownCast(c->Copy());
+        c->SetNotPeriodic();
+    }
+    Floats f;
+    const int n = c->NbPoles();
+    TColStd_Array1OfReal knots(1, c->NbPoles() + c->Degree() + 1);
+    c->KnotSequence(knots);
+    f.insert(f.end(), {float(c->Degree()), float(n), float(knots.Length()), c->IsRational() ? 1.0f : 0.0f, 0.0f});
+    for (int i = knots.Lower(); i <= knots.Upper(); ++i) f.push_back(float(knots(i)));
+    for (int i = 1; i <= n; ++i) put(f, c->Pole(i).XY());
+    if (c->IsRational())
+        for (int i = 1; i <= n; ++i) f.push_back(float(c->Weight(i)));
+    return f;
+}
+
+} // namespace
+
+// A 3D curve as a Curves3 record; other kinds become B-splines within kApproxTolerance.
+static uint32_t add_curve3(geom::PackWriter& w, const Handle(Geom_Curve)& curve, double t0, double t1, Stats& st) {
+    GeomAdaptor_Curve a(curve);
+    Floats f;
+    switch (a.GetType()) {
+    case GeomAbs_Line: {
+        const gp_Lin l = a.Line();
+        put(f, l.Location().XYZ());
+        put(f, l.Direction().XYZ());
+        return w.add_curve(CurveType::Line, 3, f);
+    }
+    case GeomAbs_Circle: {
+        const gp_Circ c = a.Circle();
+        put(f, c.Location().XYZ());
+        put(f, c.XAxis().Direction().XYZ());
+        put(f, c.YAxis().Direction().XYZ());
+        f.push_back(float(c.Radius()));
+        return w.add_curve(CurveType::Circle, 3, f);
+    }
+    case GeomAbs_Ellipse: {
+        const gp_Elips e = a.Ellipse();
+        put(f, e.Location().XYZ());
+        put(f, e.XAxis().Direction().XYZ());
+        put(f, e.YAxis().Direction().XYZ());
+        f.insert(f.end(), {float(e.MajorRadius()), float(e.MinorRadius())});
+        return w.add_curve(CurveType::Ellipse, 3, f);
+    }
+    case GeomAbs_BSplineCurve: return w.add_curve(CurveType::BSpline, 3, bspline_curve3(a.BSpline()));
+    default: break;
+    }
+    // Other kinds (Bezier, offset, parabola, hyperbola...): approximate the part the edge uses,
+    // which keeps the edge's own parameter (an exact rational conversion would not, and the
+    // pcurves are parameterised like the edge).
+    Handle(Geom_BSplineCurve) b;
+    if (a.GetType() == GeomAbs_BezierCurve) {
+        b = GeomConvert::CurveToBSplineCurve(curve);
+    } else if (t0 < t1) {
+        Handle(Geom_Curve) part = new Geom_TrimmedCurve(curve, t0, t1);
+        GeomConvert_ApproxCurve approx(part, kApproxTolerance, GeomAbs_C1, 64, 8);
+        if (approx.HasResult()) b = approx.Curve();
+    }
+    if (b.IsNull()) return kNoIndex;
+    ++st.converted["3D curve -> B-spline"];
+    return w.add_curve(CurveType::BSpline, 3, bspline_curve3(b));
+}
+
+static uint32_t add_curve2(geom::PackWriter& w, const Handle(Geom2d_Curve)& curve, double t0, double t1, Stats& st) {
+    Geom2dAdaptor_Curve a(curve);
+    Floats f;
+    switch (a.GetType()) {
+    case GeomAbs_Line: {
+        const gp_Lin2d l = a.Line();
+        put(f, l.Location().XY());
+        put(f, l.Direction().XY());
+        return w.add_curve(CurveType::Line, 2, f);
+    }
+    case GeomAbs_Circle: {
+        const gp_Circ2d c = a.Circle();
+        put(f, c.Location().XY());
+        put(f, c.XAxis().Direction().XY());
+        put(f, c.YAxis().Direction().XY());
+        f.push_back(float(c.Radius()));
+        return w.add_curve(CurveType::Circle, 2, f);
+    }
+    case GeomAbs_Ellipse: {
+        const gp_Elips2d e = a.Ellipse();
+        put(f, e.Location().XY());
+        put(f, e.XAxis().Direction().XY());
+        put(f, e.YAxis().Direction().XY());
+        f.insert(f.end(), {float(e.MajorRadius()), float(e.MinorRadius())});
+        return w.add_curve(CurveType::Ellipse, 2, f);
+    }
+    case GeomAbs_BSplineCurve: return w.add_curve(CurveType::BSpline, 2, bspline_curve2(a.BSpline()));
+    default: break;
+    }
+    Handle(Geom2d_BSplineCurve) b;
+    if (a.GetType() == GeomAbs_BezierCurve) {
+        b = Geom2dConvert::CurveToBSplineCurve(curve);
+    } else if (t0 < t1) {
+        Handle(Geom2d_Curve) part = new Geom2d_TrimmedCurve(curve, t0, t1);
+        Geom2dConvert_ApproxCurve approx(part, 1e-7, GeomAbs_C1, 64, 8);
+        if (approx.HasResult()) b = approx.Curve();
+    }
+    if (b.IsNull()) return kNoIndex;
+    ++st.converted["pcurve -> B-spline"];
+    return w.add_curve(CurveType::BSpline, 2, bspline_curve2(b));
+}
+
+// The surface under any rectangular trim.
+static Handle(Geom_Surface) untrimmed(Handle(Geom_Surface) s) {
+    while (auto t = Handle(Geom_RectangularTrimmedSurface)::DownCast(s)) s = t->BasisSurface();
+    return s;
+}
+
+static uint32_t add_surface(geom::PackWriter& w, const Handle(Geom_Surface)& surface, Stats& st) {
+    GeomAdaptor_Surface a(surface);
+    Floats f;
+    switch (a.GetType()) {
+    case GeomAbs_Plane:
+        ++st.surface_types["plane"];
+        put_axes(f, a.Plane().Position());
+        return w.add_surface(SurfaceType::Plane, f);
+    case GeomAbs_Cylinder:
+        ++st.surface_types["cylinder"];
+        put_axes(f, a.Cylinder().Position());
+        f.push_back(float(a.Cylinder().Radius()));
+        return w.add_surface(SurfaceType::Cylinder, f);
+    case GeomAbs_Cone:
+        ++st.surface_types["cone"];
+        put_axes(f, a.Cone().Position());
+        f.insert(f.end(), {float(a.Cone().RefRadius()), float(a.Cone().SemiAngle())});
+        return w.add_surface(SurfaceType::Cone, f);
+    case GeomAbs_Sphere:
+        ++st.surface_types["sphere"];
+        put_axes(f, a.Sphere().Position());
+        f.push_back(float(a.Sphere().Radius()));
+        return w.add_surface(SurfaceType::Sphere, f);
+    case GeomAbs_Torus:
+        ++st.surface_types["torus"];
+        put_axes(f, a.Torus().Position());
+        f.insert(f.end(), {float(a.Torus().MajorRadius()), float(a.Torus().MinorRadius())});
+        return w.add_surface(SurfaceType::Torus, f);
+    case GeomAbs_SurfaceOfRevolution: {
+        const gp_Ax1 axis = a.AxeOfRevolution();
+        Handle(Geom_SurfaceOfRevolution) rev = Handle(Geom_SurfaceOfRevolution)::DownCast(untrimmed(surface));
+        if (rev.IsNull()) break;
+        const uint32_t c = add_curve3(w, rev->BasisCurve(), rev->BasisCurve()->FirstParameter(), rev->BasisCurve()->LastParameter(), st);
+        if (c == kNoIndex) break;
+        ++st.surface_types["revolution"];
+        put(f, axis.Location().XYZ());
+        put(f, axis.Direction().XYZ());
+        return w.add_surface(SurfaceType::Revolution, f, c);
+    }
+    case GeomAbs_SurfaceOfExtrusion: {
+        Handle(Geom_SurfaceOfLinearExtrusion) ext = Handle(Geom_SurfaceOfLinearExtrusion)::DownCast(untrimmed(surface));
+        if (ext.IsNull()) break;
+        const uint32_t c = add_curve3(w, ext->BasisCurve(), ext->BasisCurve()->FirstParameter(), ext->BasisCurve()->LastParameter(), st);
+        if (c == kNoIndex) break;
+        ++st.surface_types["extrusion"];
+        put(f, a.Direction().XYZ());
+        return w.add_surface(SurfaceType::Extrusion, f, c);
+    }
+    default: break;
+    }
+    Handle(Geom_BSplineSurface) b;
+    if (a.GetType() == GeomAbs_BSplineSurface) {
+        b = a.BSpline();
+        ++st.surface_types["B-spline"];
+    } else {
+        try {
+            b = GeomConvert::SurfaceToBSplineSurface(surface);
+        } catch (...) {
+        }
+        if (b.IsNull()) {
+            try {
+                GeomConvert_ApproxSurface approx(surface, kApproxTolerance, GeomAbs_C1, GeomAbs_C1, 12, 12, 64, 0);
+                if (approx.HasResult()) b = approx.Surface();
+            } catch (...) {
+            }
+        }
+        if (b.IsNull()) return kNoIndex;
+        ++st.surface_types["B-spline"];
+        ++st.converted["surface -> B-spline"];
+    }
+    b = Handle(Geom_BSplineSurface)::DownCast(b->Copy());
+    if (b->IsUPeriodic()) b->SetUNotPeriodic();
+    if (b->IsVPeriodic()) b->SetVNotPeriodic();
+    const int nu = b->NbUPoles(), nv = b->NbVPoles();
+    TColStd_Array1OfReal uk(1, nu + b->UDegree() + 1), vk(1, nv + b->VDegree() + 1);
+    b->UKnotSequence(uk);
+    b->VKnotSequence(vk);
+    const bool rational = b->IsURational() || b->IsVRational();
+    f.insert(f.end(), {float(b->UDegree()), float(b->VDegree()), float(nu), float(nv), float(uk.Length()),
+                       float(vk.Length()), rational ? 1.0f : 0.0f, 0.0f, 0.0f});
+    for (int i = uk.Lower(); i <= uk.Upper(); ++i) f.push_back(float(uk(i)));
+    for (int i = vk.Lower(); i <= vk.Upper(); ++i) f.push_back(float(vk(i)));
+    for (int i = 1; i <= nu; ++i)
+        for (int j = 1; j <= nv; ++j) put(f, b->Pole(i, j).XYZ());
+    if (rational)
+        for (int i = 1; i <= nu; ++i)
+            for (int j = 1; j <= nv; ++j) f.push_back(float(b->Weight(i, j)));
+    return w.add_surface(SurfaceType::BSpline, f);
+}
+
+uint32_t Packer::colour_of(const TopoDS_Shape& s) {
+    Quantity_Color c;
+    if (colours_.IsNull()) return kNoIndex;
+    if (!colours_->GetColor(s, XCAFDoc_ColorSurf, c) && !colours_->GetColor(s, XCAFDoc_ColorGen, c)) return kNoIndex;
+    Standard_Real r, g, b;
+    c.Values(r, g, b, Quantity_TOC_sRGB);
+    const pack::Colour rgba{uint8_t(std::lround(r * 255)), uint8_t(std::lround(g * 255)), uint8_t(std::lround(b * 255)), 255};
+    const uint32_t key = uint32_t(rgba.r) | uint32_t(rgba.g) << 8 | uint32_t(rgba.b) << 16;
+    auto it = colour_index_.find(key);
+    if (it != colour_index_.end()) return it->second;
+    const uint32_t i = w_.add_colour(rgba);
+    colour_index_[key] = i;
+    return i;
+}
+
+uint32_t Packer::add_prototype(const TopoDS_Shape& shape, bool closed) {
+    TopTools_IndexedMapOfShape vertex_map, edge_map;
+    TopExp::MapShapes(shape, TopAbs_VERTEX, vertex_map);
+    TopExp::MapShapes(shape, TopAbs_EDGE, edge_map);
+    std::vector<uint32_t> vertex_ids(vertex_map.Extent() + 1, kNoIndex), edge_ids(edge_map.Extent() + 1, kNoIndex);
+    for (int i = 1; i <= vertex_map.Extent(); ++i) {
+        const gp_Pnt p = BRep_Tool::Pnt(TopoDS::Vertex(vertex_map(i)));
+        vertex_ids[i] = w_.add_vertex(float(p.X()), float(p.Y()), float(p.Z()));
+    }
+    for (int i = 1; i <= edge_map.Extent(); ++i) try {
+        const TopoDS_Edge e = TopoDS::Edge(edge_map(i).Oriented(TopAbs_FORWARD));
+        TopoDS_Vertex a, b;
+        TopExp::Vertices(e, a, b);
+        double t0 = 0, t1 = 0;
+        uint32_t curve = kNoIndex;
+        Handle(Geom_Curve) c;
+        if (!BRep_Tool::Degenerated(e)) {
+            TopLoc_Location loc;
+            c = BRep_Tool::Curve(e, loc, t0, t1);
+            if (!c.IsNull()) {
+                if (!loc.IsIdentity()) c = Handle(Geom_Curve)::DownCast(c->Transformed(loc.Transformation()));
+                curve = add_curve3(w_, c, t0, t1, stats_);
+            }
+        } else {
+            BRep_Tool::Range(e, t0, t1);
+        }
+        // An edge without a vertex at an end (open, infinite edges) gets one from its curve.
+        auto end_vertex = [&](const TopoDS_Vertex& v, double t) {
+            if (!v.IsNull()) return vertex_ids[vertex_map.FindIndex(v)];
+            const gp_Pnt p = c.IsNull() ? gp_Pnt() : c->Value(t);
+            return w_.add_vertex(float(p.X()), float(p.Y()), float(p.Z()));
+        };
+        const uint32_t va = end_vertex(a, t0), vb = end_vertex(b, t1);
+        edge_ids[i] = w_.add_edge({curve, float(t0), float(t1), va, vb, float(BRep_Tool::Tolerance(e))});
+        ++stats_.edges;
+    } catch (const Standard_Failure& f) {
+        // The edge stays unpacked; faces that use it are skipped below with this reason.
+        if (stats_.first_problem.empty()) stats_.first_problem = std::string("an edge failed: ") + f.GetMessageString();
+    }
+    const uint32_t first_face = w_.face_count();
+    uint32_t faces = 0;
+    for (TopExp_Explorer fx(shape, TopAbs_FACE); fx.More(); fx.Next()) try {
+        const TopoDS_Face original = TopoDS::Face(fx.Current());
+        const TopoDS_Face face = TopoDS::Face(original.Oriented(TopAbs_FORWARD));
+        TopLoc_Location loc;
+        Handle(Geom_Surface) s = BRep_Tool::Surface(face, loc);
+        if (s.IsNull()) {
+            ++stats_.faces_skipped;
+            continue;
+        }
+        if (!loc.IsIdentity()) s = Handle(Geom_Surface)::DownCast(s->Transformed(loc.Transformation()));
+        const uint32_t surface = add_surface(w_, s, stats_);
+        const GeomAbs_SurfaceType kind = GeomAdaptor_Surface(s).GetType();
+        const bool elementary = kind == GeomAbs_Plane || kind == GeomAbs_Cylinder || kind == GeomAbs_Cone ||
+                                kind == GeomAbs_Sphere || kind == GeomAbs_Torus;
+        if (surface == kNoIndex) {
+            ++stats_.faces_skipped;
+            if (stats_.first_problem.empty()) stats_.first_problem = "a surface could not be converted to a B-spline";
+            continue;
+        }
+        // Loops: the outer wire first, each traversed in order on the FORWARD face, so outer
+        // loops run counter-clockwise in (u,v) and holes clockwise.
+        const uint32_t first_loop = w_.loop_count();
+        const TopoDS_Wire outer = BRepTools::OuterWire(face);
+        std::vector<TopoDS_Wire> wires;
+        if (!outer.IsNull()) wires.push_back(outer);
+        for (TopExp_Explorer wx(face, TopAbs_WIRE); wx.More(); wx.Next()) {
+            if (!wx.Current().IsSame(outer)) wires.push_back(TopoDS::Wire(wx.Current()));
+        }
+        double u0, u1, v0, v1;
+        BRepTools::UVBounds(face, u0, u1, v0, v1);
+        bool ok = true;
+        uint32_t loops = 0;
+        for (const TopoDS_Wire& wire : wires) {
+            const uint32_t first = w_.coedge_count();
+            uint32_t n = 0;
+            for (BRepTools_WireExplorer ex(wire, face); ex.More(); ex.Next()) {
+                const TopoDS_Edge e = ex.Current();
+                double f0, f1;
+                Handle(Geom2d_Curve) pc = BRep_Tool::CurveOnSurface(e, face, f0, f1);
+                const int idx = edge_map.FindIndex(e);
+                if (pc.IsNull() || idx == 0 || edge_ids[idx] == kNoIndex) {
+                    ok = false;
+                    break;
+                }
+                // Elementary surfaces keep no pcurve (the device inverts the surface); free-form
+                // ones do.
+                const uint32_t p = elementary ? kNoIndex : add_curve2(w_, pc, f0, f1, stats_);
+                if (!elementary && p == kNoIndex) {
+                    ok = false;
+                    break;
+                }
+                uint8_t seam = uint8_t(pack::Seam::None);
+                if (BRep_Tool::IsClosed(e, face)) {
+                    // The side of the face's bounds this coedge runs on, from its pcurve: the
+                    // parameter that stays constant along it, and which bound it sits at.
+                    const gp_Pnt2d a = pc->Value(f0), b = pc->Value(f1), m = pc->Value(0.5 * (f0 + f1));
+                    const bool u_const = std::abs(a.X() - b.X()) <= std::abs(a.Y() - b.Y());
+                    if (u_const) seam = uint8_t(std::abs(m.X() - u0) < std::abs(m.X() - u1) ? pack::Seam::ULow : pack::Seam::UHigh);
+                    else seam = uint8_t(std::abs(m.Y() - v0) < std::abs(m.Y() - v1) ? pack::Seam::VLow : pack::Seam::VHigh);
+                }
+                w_.add_coedge({edge_ids[idx], p, uint8_t(ex.Orientation() == TopAbs_REVERSED), seam, 0});
+                ++n;
+            }
+            if (!ok) break;
+            if (n) {
+                w_.add_loop({first, n});
+                ++loops;
+            }
+        }
+        if (!ok || loops == 0) {
+            // Coedges/loops already written stay unreferenced: harmless.
+            ++stats_.faces_skipped;
+            if (stats_.first_problem.empty()) stats_.first_problem = "a face has an edge without a pcurve";
+            continue;
+        }
+        w_.add_face({surface, first_loop, loops, colour_of(original), uint8_t(original.Orientation() == TopAbs_REVERSED),
+                     {0, 0, 0}, {float(u0), float(v0)}, {float(u1), float(v1)}});
+        ++faces;
+        ++stats_.faces;
+    } catch (const Standard_Failure& f) {
+        ++stats_.faces_skipped;
+        if (stats_.first_problem.empty()) stats_.first_problem = std::string("a face failed: ") + f.GetMessageString();
+    }
+    return w_.add_shell({first_face, faces, colour_of(shape), closed ? 1u : 0u});
+}
+
+void Packer::add_occurrence(const TopoDS_Shape& shape, bool closed) {
+    const void* key = shape.TShape().get();
+    uint32_t shell;
+    auto it = prototypes_.find(key);
+    if (it != prototypes_.end()) {
+        shell = it->second;
+    } else {
+        shell = add_prototype(shape.Located(TopLoc_Location()), closed);
+        prototypes_[key] = shell;
+        if (closed) ++stats_.solids;
+        else ++stats_.shells;
+    }
+    const gp_Trsf t = shape.Location().Transformation();
+    pack::Instance inst{shell, {}};
+    for (int r = 1; r <= 3; ++r)
+        for (int c = 1; c <= 4; ++c) inst.m[(r - 1) * 4 + (c - 1)] = float(t.Value(r, c));
+    w_.add_instance(inst);
+    ++stats_.instances;
+}
+
+} // namespace facet::packer

@@ -1,0 +1,40 @@
+#pragma once
+// Open CASCADE shapes to pack records: surfaces, curves, pcurves, topology, colours.
+#include "pack_writer.h"
+
+#include <TopoDS_Shape.hxx>
+#include <XCAFDoc_ColorTool.hxx>
+
+#include <map>
+#include <string>
+
+namespace facet::packer {
+
+struct Stats {
+    uint32_t solids = 0, shells = 0, faces = 0, edges = 0, instances = 0;
+    std::map<std::string, uint32_t> surface_types, converted; // converted: "offset -> B-spline"
+    uint32_t faces_skipped = 0;
+    std::string first_problem;
+};
+
+class Packer {
+public:
+    Packer(geom::PackWriter& w, Handle(XCAFDoc_ColorTool) colours, Stats& stats)
+        : w_(w), colours_(colours), stats_(stats) {}
+
+    // Adds one shell (a solid's, or a surface model's) placed by its location, sharing the
+    // geometry of earlier occurrences of the same shell.
+    void add_occurrence(const TopoDS_Shape& shell_or_solid, bool closed);
+
+private:
+    uint32_t add_prototype(const TopoDS_Shape& shape, bool closed);
+    uint32_t colour_of(const TopoDS_Shape& s);
+
+    geom::PackWriter& w_;
+    Handle(XCAFDoc_ColorTool) colours_;
+    Stats& stats_;
+    std::map<const void*, uint32_t> prototypes_; // TShape -> Shells index
+    std::map<uint32_t, uint32_t> colour_index_;  // packed RGBA -> Colours index
+};
+
+} // namespace facet::packer
