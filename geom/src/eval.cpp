@@ -1,0 +1,259 @@
+#include "geom/eval.h"
+
+namespace facet::geom {
+namespace {
+
+using namespace facet::pack;
+constexpr float kTwoPi = 6.28318530717958647692f;
+
+Vec3 v3(const float* p) { return {p[0], p[1], p[2]}; }
+
+// Non-zero B-spline basis functions and their first derivatives at t (The NURBS Book A2.2/A2.3).
+// knots: expanded; n: poles; p: degree. Returns the span index s: functions N[s-p .. s].
+int basis(const float* knots, int n, int p, float t, float* N, float* dN) {
+    // Clamp t to the valid range and find the span.
+    const float lo = knots[p], hi = knots[n];
+    if (t < lo) t = lo;
+    if (t > hi) t = hi;
+    int s = p;
+    if (t >= hi) {
+        s = n - 1;
+        while (s > p && knots[s] >= knots[s + 1]) --s;
+    } else {
+        int a = p, b = n;
+        while (b - a > 1) {
+            const int m = (a + b) / 2;
+            if (t < knots[m]) b = m;
+            else a = m;
+        }
+        s = a;
+    }
+    float left[kMaxDegree + 2], right[kMaxDegree + 2];
+    float ndu[kMaxDegree + 1][kMaxDegree + 1];
+    ndu[0][0] = 1;
+    for (int j = 1; j <= p; ++j) {
+        left[j] = t - knots[s + 1 - j];
+        right[j] = knots[s + j] - t;
+        float saved = 0;
+        for (int r = 0; r < j; ++r) {
+            ndu[j][r] = right[r + 1] + left[j - r];
+            const float tmp = ndu[j][r] != 0 ? ndu[r][j - 1] / ndu[j][r] : 0;
+            ndu[r][j] = saved + right[r + 1] * tmp;
+            saved = left[j - r] * tmp;
+        }
+        ndu[j][j] = saved;
+    }
+    for (int j = 0; j <= p; ++j) N[j] = ndu[j][p];
+    // First derivatives: p * (N_{j,p-1}/(u_{j+p}-u_j) - N_{j+1,p-1}/(u_{j+p+1}-u_{j+1})).
+    for (int r = 0; r <= p; ++r) {
+        float d = 0;
+        if (r >= 1 && ndu[p][r - 1] != 0) d += ndu[r - 1][p - 1] / ndu[p][r - 1];
+        if (r <= p - 1 && ndu[p][r] != 0) d -= ndu[r][p - 1] / ndu[p][r];
+        dN[r] = p > 0 ? d * p : 0;
+    }
+    return s;
+}
+
+// A B-spline curve of dimension dim at t: position and derivative (rational by the quotient rule).
+void bspline_curve(const float* prm, int dim, float t, float* pos, float* der) {
+    const int p = int(prm[0]), n = int(prm[1]), k = int(prm[2]);
+    const bool rational = prm[3] != 0;
+    const float* knots = prm + 5;
+    const float* poles = knots + k;
+    const float* weights = poles + n * dim;
+    float N[kMaxDegree + 1], dN[kMaxDegree + 1];
+    const int s = basis(knots, n, p, t, N, dN);
+    float A[3] = {0, 0, 0}, dA[3] = {0, 0, 0}, W = 0, dW = 0;
+    for (int j = 0; j <= p; ++j) {
+        const int i = s - p + j;
+        const float w = rational ? weights[i] : 1.0f;
+        for (int c = 0; c < dim; ++c) {
+            A[c] += N[j] * w * poles[i * dim + c];
+            dA[c] += dN[j] * w * poles[i * dim + c];
+        }
+        W += N[j] * w;
+        dW += dN[j] * w;
+    }
+    if (W == 0) W = 1;
+    for (int c = 0; c < dim; ++c) {
+        pos[c] = A[c] / W;
+        der[c] = (dA[c] - pos[c] * dW) / W;
+    }
+}
+
+} // namespace
+
+bool is_elementary(const Surface& s) { return s.type >= uint8_t(SurfaceType::Plane) && s.type <= uint8_t(SurfaceType::Torus); }
+bool u_periodic(const Surface& s) {
+    return s.type == uint8_t(SurfaceType::Cylinder) || s.type == uint8_t(SurfaceType::Cone) ||
+           s.type == uint8_t(SurfaceType::Sphere) || s.type == uint8_t(SurfaceType::Torus) ||
+           s.type == uint8_t(SurfaceType::Revolution);
+}
+bool v_periodic(const Surface& s) { return s.type == uint8_t(SurfaceType::Torus); }
+
+Curve3Point eval_curve3(const Pack& pack, const Curve& c, float t) {
+    const float* q = pack.floats().data() + c.params;
+    switch (CurveType(c.type)) {
+    case CurveType::Line: return {v3(q) + v3(q + 3) * t, v3(q + 3)};
+    case CurveType::Circle: {
+        const float r = q[9], ct = std::cos(t), st = std::sin(t);
+        return {v3(q) + (v3(q + 3) * ct + v3(q + 6) * st) * r, (v3(q + 3) * -st + v3(q + 6) * ct) * r};
+    }
+    case CurveType::Ellipse: {
+        const float a = q[9], b = q[10], ct = std::cos(t), st = std::sin(t);
+        return {v3(q) + v3(q + 3) * (a * ct) + v3(q + 6) * (b * st), v3(q + 3) * (-a * st) + v3(q + 6) * (b * ct)};
+    }
+    case CurveType::BSpline: {
+        float p[3], d[3];
+        bspline_curve(q, 3, t, p, d);
+        return {v3(p), v3(d)};
+    }
+    }
+    return {};
+}
+
+Curve2Point eval_curve2(const Pack& pack, const Curve& c, float t) {
+    const float* q = pack.floats().data() + c.params;
+    switch (CurveType(c.type)) {
+    case CurveType::Line: return {{q[0] + q[2] * t, q[1] + q[3] * t}, {q[2], q[3]}};
+    case CurveType::Circle: {
+        const float r = q[6], ct = std::cos(t), st = std::sin(t);
+        return {{q[0] + r * (q[2] * ct + q[4] * st), q[1] + r * (q[3] * ct + q[5] * st)},
+                {r * (-q[2] * st + q[4] * ct), r * (-q[3] * st + q[5] * ct)}};
+    }
+    case CurveType::Ellipse: {
+        const float a = q[6], b = q[7], ct = std::cos(t), st = std::sin(t);
+        return {{q[0] + a * ct * q[2] + b * st * q[4], q[1] + a * ct * q[3] + b * st * q[5]},
+                {-a * st * q[2] + b * ct * q[4], -a * st * q[3] + b * ct * q[5]}};
+    }
+    case CurveType::BSpline: {
+        float p[2], d[2];
+        bspline_curve(q, 2, t, p, d);
+        return {{p[0], p[1]}, {d[0], d[1]}};
+    }
+    }
+    return {};
+}
+
+SurfacePoint eval_surface(const Pack& pack, const Surface& s, float u, float v) {
+    const float* q = pack.floats().data() + s.params;
+    const Vec3 O = v3(q), X = v3(q + 3), Y = v3(q + 6), Z = v3(q + 9);
+    switch (SurfaceType(s.type)) {
+    case SurfaceType::Plane: return {O + X * u + Y * v, X, Y};
+    case SurfaceType::Cylinder: {
+        const float r = q[12], cu = std::cos(u), su = std::sin(u);
+        const Vec3 radial = X * cu + Y * su;
+        return {O + radial * r + Z * v, (X * -su + Y * cu) * r, Z};
+    }
+    case SurfaceType::Cone: {
+        const float r0 = q[12], a = q[13], cu = std::cos(u), su = std::sin(u);
+        const float r = r0 + v * std::sin(a);
+        const Vec3 radial = X * cu + Y * su;
+        return {O + radial * r + Z * (v * std::cos(a)), (X * -su + Y * cu) * r, radial * std::sin(a) + Z * std::cos(a)};
+    }
+    case SurfaceType::Sphere: {
+        const float r = q[12], cu = std::cos(u), su = std::sin(u), cv = std::cos(v), sv = std::sin(v);
+        const Vec3 radial = X * cu + Y * su;
+        return {O + radial * (r * cv) + Z * (r * sv), (X * -su + Y * cu) * (r * cv), radial * (-r * sv) + Z * (r * cv)};
+    }
+    case SurfaceType::Torus: {
+        const float R = q[12], r = q[13], cu = std::cos(u), su = std::sin(u), cv = std::cos(v), sv = std::sin(v);
+        const Vec3 radial = X * cu + Y * su;
+        return {O + radial * (R + r * cv) + Z * (r * sv), (X * -su + Y * cu) * (R + r * cv), radial * (-r * sv) + Z * (r * cv)};
+    }
+    case SurfaceType::BSpline: {
+        const int pu = int(q[0]), pv = int(q[1]), nu = int(q[2]), nv = int(q[3]), ku = int(q[4]), kv = int(q[5]);
+        const bool rational = q[6] != 0;
+        const float* uk = q + 9;
+        const float* vk = uk + ku;
+        const float* poles = vk + kv;
+        const float* weights = poles + 3 * nu * nv;
+        float Nu[kMaxDegree + 1], dNu[kMaxDegree + 1], Nv[kMaxDegree + 1], dNv[kMaxDegree + 1];
+        const int su = basis(uk, nu, pu, u, Nu, dNu), sv = basis(vk, nv, pv, v, Nv, dNv);
+        Vec3 A{0, 0, 0}, Au{0, 0, 0}, Av{0, 0, 0};
+        float W = 0, Wu = 0, Wv = 0;
+        for (int a = 0; a <= pu; ++a) {
+            const int i = su - pu + a;
+            for (int b = 0; b <= pv; ++b) {
+                const int j = sv - pv + b;
+                const float w = rational ? weights[i * nv + j] : 1.0f;
+                const Vec3 P = v3(poles + 3 * (i * nv + j)) * w;
+                A = A + P * (Nu[a] * Nv[b]);
+                Au = Au + P * (dNu[a] * Nv[b]);
+                Av = Av + P * (Nu[a] * dNv[b]);
+                W += Nu[a] * Nv[b] * w;
+                Wu += dNu[a] * Nv[b] * w;
+                Wv += Nu[a] * dNv[b] * w;
+            }
+        }
+        if (W == 0) W = 1;
+        const Vec3 p = A * (1 / W);
+        return {p, (Au - p * Wu) * (1 / W), (Av - p * Wv) * (1 / W)};
+    }
+    case SurfaceType::Revolution: {
+        // C(v) turned by u about the axis (origin O, unit direction D).
+        const Vec3 D = normalized(v3(q + 3));
+        const Curve3Point c = eval_curve3(pack, pack.curves3()[s.ref], v);
+        auto rotate = [&](Vec3 w, float cu, float su) { // Rodrigues
+            return w * cu + cross(D, w) * su + D * (dot(D, w) * (1 - cu));
+        };
+        const float cu = std::cos(u), su = std::sin(u);
+        const Vec3 rel = c.p - O;
+        const Vec3 p = O + rotate(rel, cu, su);
+        const Vec3 pu = cross(D, rotate(rel, cu, su));
+        return {p, pu, rotate(c.d, cu, su)};
+    }
+    case SurfaceType::Extrusion: {
+        const Curve3Point c = eval_curve3(pack, pack.curves3()[s.ref], u);
+        const Vec3 D = v3(q);
+        return {c.p + D * v, c.d, D};
+    }
+    }
+    return {};
+}
+
+bool invert_elementary(const Pack& pack, const Surface& s, Vec3 P, const float uv_min[2], const float uv_max[2], Vec2& uv) {
+    const float* q = pack.floats().data() + s.params;
+    const Vec3 d = P - v3(q);
+    const float x = dot(d, v3(q + 3)), y = dot(d, v3(q + 6)), z = dot(d, v3(q + 9));
+    auto wrap = [](float a, float lo) { // into [lo, lo + 2 pi)
+        float r = std::fmod(a - lo, kTwoPi);
+        if (r < 0) r += kTwoPi;
+        return lo + r;
+    };
+    switch (SurfaceType(s.type)) {
+    case SurfaceType::Plane: uv = {x, y}; return true;
+    case SurfaceType::Cylinder: uv = {wrap(std::atan2(y, x), uv_min[0]), z}; return true;
+    case SurfaceType::Cone: {
+        // v from the height alone; past the apex the radius R + v sin a is negative and the
+        // point lies opposite its direction from the axis.
+        const float a = q[13], v = z / std::cos(a);
+        const float turn = q[12] + v * std::sin(a) < 0 ? kTwoPi / 2 : 0;
+        uv = {wrap(std::atan2(y, x) + turn, uv_min[0]), v};
+        return true;
+    }
+    case SurfaceType::Sphere:
+        uv = {wrap(std::atan2(y, x), uv_min[0]), std::atan2(z, std::sqrt(x * x + y * y))};
+        return true;
+    case SurfaceType::Torus: {
+        // Two candidates: the tube centre on the point's side (R + r cos v = rho), or, on a
+        // self-intersecting torus (r > R), on the other side (R + r cos v = -rho). Take the
+        // one nearer the face's middle.
+        const float R = q[12], rho = std::sqrt(x * x + y * y), u1 = std::atan2(y, x);
+        const float um = 0.5f * (uv_min[0] + uv_max[0]), vm = 0.5f * (uv_min[1] + uv_max[1]);
+        auto near = [&](float a, float mid) { // a moved by 2 pi steps into [mid - pi, mid + pi)
+            float r = std::fmod(a - (mid - kTwoPi / 2), kTwoPi);
+            if (r < 0) r += kTwoPi;
+            return mid - kTwoPi / 2 + r;
+        };
+        const Vec2 A{near(u1, um), near(std::atan2(z, rho - R), vm)};
+        const Vec2 B{near(u1 + kTwoPi / 2, um), near(std::atan2(z, -rho - R), vm)};
+        const float da = std::fabs(A.x - um) + std::fabs(A.y - vm), db = std::fabs(B.x - um) + std::fabs(B.y - vm);
+        uv = da <= db ? A : B;
+        return true;
+    }
+    default: return false;
+    }
+}
+
+} // namespace facet::geom

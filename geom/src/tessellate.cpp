@@ -1,0 +1,316 @@
+#include "geom/tessellate.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace facet::geom {
+namespace {
+
+using namespace facet::pack;
+
+float angle_between(Vec3 a, Vec3 b) {
+    const float la = length(a), lb = length(b);
+    if (la == 0 || lb == 0) return 0;
+    float c = dot(a, b) / (la * lb);
+    c = c > 1 ? 1 : (c < -1 ? -1 : c);
+    return std::acos(c);
+}
+
+constexpr float kTwoPi = 6.28318530717958647692f;
+
+bool CE_any_periodic(const Surface& s) { return u_periodic(s) || v_periodic(s); }
+
+// Makes the periodic coordinates of a loop continuous (see tessellate_face).
+void unwrap_loop(FaceScratch& sc, uint32_t start, uint32_t n, const Pack&, const Surface& S, const pack::Face& F) {
+    for (int axis = 0; axis < 2; ++axis) {
+        if (!(axis == 0 ? u_periodic(S) : v_periodic(S))) continue;
+        const uint8_t bit = uint8_t(1 << axis);
+        auto get = [&](uint32_t i) -> float& { return axis == 0 ? sc.uv[start + i].x : sc.uv[start + i].y; };
+        uint32_t anchor = n;
+        for (uint32_t i = 0; i < n && anchor == n; ++i)
+            if (sc.pinned[start + i] & bit) anchor = i;
+        if (anchor == n) { // no seam: put the first sample within pi of the face's middle
+            anchor = 0;
+            const float mid = axis == 0 ? 0.5f * (F.uv_min[0] + F.uv_max[0]) : 0.5f * (F.uv_min[1] + F.uv_max[1]);
+            float& a = get(0);
+            while (a < mid - kTwoPi / 2) a += kTwoPi;
+            while (a >= mid + kTwoPi / 2) a -= kTwoPi;
+        }
+        float prev = get(anchor);
+        for (uint32_t k = 1; k < n; ++k) {
+            const uint32_t i = (anchor + k) % n;
+            float& a = get(i);
+            if (!(sc.pinned[start + i] & bit)) {
+                while (a - prev > kTwoPi / 2) a -= kTwoPi;
+                while (a - prev < -kTwoPi / 2) a += kTwoPi;
+            }
+            prev = a;
+        }
+    }
+}
+
+} // namespace
+
+float default_tolerance(const Pack& pack) {
+    const pack::Header& h = pack.header();
+    const Vec3 d{h.bbox_max[0] - h.bbox_min[0], h.bbox_max[1] - h.bbox_min[1], h.bbox_max[2] - h.bbox_min[2]};
+    const float diag = length(d);
+    return diag > 0 ? diag * 0.001f : 0.01f;
+}
+
+Status sample_edges(const Pack& pack, const TessOptions& opt, EdgeSamples& out) {
+    out.used = 0;
+    const auto edges = pack.edges();
+    if (out.first.size() < edges.size() || out.count.size() < edges.size()) return Status::Full;
+    for (uint32_t e = 0; e < edges.size(); ++e) {
+        const Edge& E = edges[e];
+        out.first[e] = out.used;
+        auto emit = [&](float t, Vec3 p) {
+            if (out.used >= out.t.size() || out.used >= out.p.size()) return false;
+            out.t[out.used] = t;
+            out.p[out.used] = p;
+            ++out.used;
+            return true;
+        };
+        const Vec3 a = {pack.vertices()[E.v0].p[0], pack.vertices()[E.v0].p[1], pack.vertices()[E.v0].p[2]};
+        const Vec3 b = {pack.vertices()[E.v1].p[0], pack.vertices()[E.v1].p[1], pack.vertices()[E.v1].p[2]};
+        if (E.curve == kNoIndex) { // degenerate: a single point
+            if (!emit(E.t0, a) || !emit(E.t1, a)) return Status::Full;
+            out.count[e] = 2;
+            continue;
+        }
+        const Curve& C = pack.curves3()[E.curve];
+        // The vertices are the exact ends (both faces and neighbouring edges share them).
+        if (C.type == uint8_t(CurveType::Line)) {
+            if (!emit(E.t0, a) || !emit(E.t1, b)) return Status::Full;
+            out.count[e] = 2;
+            continue;
+        }
+        // Adaptive: start from 4 pieces, split a piece while its midpoint leaves the chord by
+        // more than the tolerance or its ends turn by more than max_angle.
+        constexpr int kStack = 64;
+        float stack[kStack];
+        int top = 0;
+        const float t0 = E.t0, t1 = E.t1;
+        const uint32_t start = out.used;
+        if (!emit(t0, a)) return Status::Full;
+        for (int k = 4; k >= 1; --k) stack[top++] = t0 + (t1 - t0) * k / 4; // right ends, reversed
+        float tl = t0;
+        Curve3Point pl = eval_curve3(pack, C, t0);
+        while (top) {
+            const float tr = stack[top - 1];
+            const Curve3Point pr = eval_curve3(pack, C, tr);
+            const Curve3Point pm = eval_curve3(pack, C, 0.5f * (tl + tr));
+            const Vec3 chord = pr.p - pl.p;
+            const float len2 = dot(chord, chord);
+            const Vec3 off = pm.p - pl.p;
+            const float along = len2 > 0 ? dot(off, chord) / len2 : 0;
+            const float dev = length(off - chord * along);
+            const bool split = (dev > opt.tolerance || angle_between(pl.d, pr.d) > opt.max_angle) &&
+                               top < kStack && (tr - tl) > 1e-6f * (std::fabs(t1 - t0) + 1e-6f) && out.used - start < 4000;
+            if (split) {
+                stack[top++] = 0.5f * (tl + tr);
+                continue;
+            }
+            --top;
+            if (!emit(tr, top == 0 ? b : pr.p)) return Status::Full;
+            tl = tr;
+            pl = pr;
+        }
+        if (out.used - start > 0xFFFF) return Status::Full;
+        out.count[e] = uint16_t(out.used - start);
+    }
+    return Status::Ok;
+}
+
+FaceResult tessellate_face(const Pack& pack, uint32_t fi, const EdgeSamples& edges, const TessOptions& opt,
+                           FaceScratch& sc, Mesh& mesh) {
+    FaceResult res;
+    auto fail = [&](Status s, const char* why) {
+        res.status = s;
+        res.reason = why;
+        return res;
+    };
+    const pack::Face& F = pack.faces()[fi];
+    const Surface& S = pack.surfaces()[F.surface];
+    const bool elementary = is_elementary(S);
+
+    // 1. Loops into (u,v): every sample of every coedge, then duplicates dropped.
+    uint32_t np = 0, nl = 0;
+    const uint32_t cap = uint32_t(std::min({sc.uv.size(), sc.xyz.size(), sc.loop_points.size()}));
+    for (uint32_t l = F.first_loop; l < F.first_loop + F.loop_count; ++l) {
+        const Loop& L = pack.loops()[l];
+        const uint32_t loop_start = np;
+        for (uint32_t c = L.first_coedge; c < L.first_coedge + L.coedge_count; ++c) {
+            const Coedge& CE = pack.coedges()[c];
+            const Edge& E = pack.edges()[CE.edge];
+            if (E.curve == kNoIndex && CE.pcurve == kNoIndex) continue; // a pole: bridged below
+            const uint32_t first = edges.first[CE.edge], n = edges.count[CE.edge];
+            for (uint32_t k = 0; k < n; ++k) {
+                const uint32_t s = first + (CE.reversed ? n - 1 - k : k);
+                if (np >= cap) return fail(Status::Full, "more edge samples than the face scratch holds");
+                Vec2 uv;
+                if (CE.pcurve != kNoIndex) {
+                    uv = eval_curve2(pack, pack.curves2()[CE.pcurve], edges.t[s]).p;
+                } else if (!invert_elementary(pack, S, edges.p[s], F.uv_min, F.uv_max, uv)) {
+                    return fail(Status::Corrupt, "no pcurve on a free-form surface");
+                }
+                switch (Seam(CE.seam)) {
+                case Seam::ULow: uv.x = F.uv_min[0]; break;
+                case Seam::UHigh: uv.x = F.uv_max[0]; break;
+                case Seam::VLow: uv.y = F.uv_min[1]; break;
+                case Seam::VHigh: uv.y = F.uv_max[1]; break;
+                case Seam::None: break;
+                }
+                sc.uv[np] = uv;
+                // Which parameters are pinned (by a seam) or exact (from a pcurve) for unwrapping.
+                sc.pinned[np] = uint8_t((CE.pcurve != kNoIndex ? 3 : 0) |
+                                        (CE.seam == uint8_t(Seam::ULow) || CE.seam == uint8_t(Seam::UHigh) ? 1 : 0) |
+                                        (CE.seam == uint8_t(Seam::VLow) || CE.seam == uint8_t(Seam::VHigh) ? 2 : 0));
+                sc.xyz[np] = edges.p[s];
+                ++np;
+            }
+        }
+        const uint32_t n = np - loop_start;
+        // Singular samples (a sphere's or cone's apex: u undefined there) take u from a
+        // neighbour along the loop, so the pole becomes a segment along v = pole.
+        if (elementary && S.type != uint8_t(SurfaceType::Plane) && n > 2) {
+            const float* q = pack.floats().data() + S.params;
+            const Vec3 O{q[0], q[1], q[2]}, Z{q[9], q[10], q[11]};
+            auto singular = [&](uint32_t i) {
+                const Vec3 d = sc.xyz[loop_start + i] - O;
+                const Vec3 radial = d - Z * dot(d, Z);
+                return length(radial) < 1e-5f * (length(d) + 1e-6f);
+            };
+            for (uint32_t i = 0; i < n; ++i) {
+                if (!singular(i)) continue;
+                const uint32_t prev = (i + n - 1) % n, next = (i + 1) % n;
+                const Vec3 a = sc.xyz[loop_start + prev], b = sc.xyz[loop_start + i];
+                const bool prev_same = a.x == b.x && a.y == b.y && a.z == b.z;
+                // The copy of the pole that follows a real sample takes that sample's u; the copy
+                // that precedes the next real sample takes the next one's.
+                const uint32_t from = prev_same ? next : prev;
+                if (!singular(from)) sc.uv[loop_start + i].x = sc.uv[loop_start + from].x;
+            }
+        }
+        // Periodic parameters: inverted samples are only known modulo 2 pi. Unwrap them along
+        // the loop so it is continuous, starting from a seam sample (its side is known), or
+        // else from the first sample taken within pi of the face's middle.
+        if (n > 1 && (elementary || u_periodic(S)) && CE_any_periodic(S)) {
+            unwrap_loop(sc, loop_start, n, pack, S, F);
+        }
+        if (np > loop_start) {
+            if (nl >= sc.loop_sizes.size()) return fail(Status::Full, "more loops than the face scratch holds");
+            sc.loop_sizes[nl++] = np - loop_start;
+        }
+    }
+    if (nl == 0) return fail(Status::Degenerate, "no loop with any sample");
+
+    // 2. Metric scale from the surface's derivatives at the middle of the face.
+    const float um = 0.5f * (F.uv_min[0] + F.uv_max[0]), vm = 0.5f * (F.uv_min[1] + F.uv_max[1]);
+    const SurfacePoint mid = eval_surface(pack, S, um, vm);
+    float su = length(mid.du), sv = length(mid.dv);
+    if (!(su > 1e-9f)) su = 1;
+    if (!(sv > 1e-9f)) sv = 1;
+    // Interior curvature points: quadtree cells over the face's bounds, split while the surface
+    // leaves the cell's flat interpolation by more than the tolerance (not for planes).
+    uint32_t ni = 0;
+    if (S.type != uint8_t(SurfaceType::Plane)) {
+        struct Cell {
+            float u0, v0, u1, v1;
+            int depth;
+        };
+        Cell stack[96];
+        int top = 0;
+        stack[top++] = {F.uv_min[0], F.uv_min[1], F.uv_max[0], F.uv_max[1], 0};
+        while (top) {
+            const Cell c = stack[--top];
+            const float uc = 0.5f * (c.u0 + c.u1), vc = 0.5f * (c.v0 + c.v1);
+            const SurfacePoint p00 = eval_surface(pack, S, c.u0, c.v0), p11 = eval_surface(pack, S, c.u1, c.v1);
+            const SurfacePoint p10 = eval_surface(pack, S, c.u1, c.v0), p01 = eval_surface(pack, S, c.u0, c.v1);
+            const SurfacePoint pc = eval_surface(pack, S, uc, vc);
+            const Vec3 flat = (p00.p + p11.p + p10.p + p01.p) * 0.25f;
+            const float dev = length(pc.p - flat);
+            const float turn = std::max(angle_between(cross(p00.du, p00.dv), cross(p11.du, p11.dv)),
+                                        angle_between(cross(p10.du, p10.dv), cross(p01.du, p01.dv)));
+            if ((dev > opt.tolerance || turn > opt.max_angle) && c.depth < 10 && top + 4 <= 96) {
+                stack[top++] = {c.u0, c.v0, uc, vc, c.depth + 1};
+                stack[top++] = {uc, c.v0, c.u1, vc, c.depth + 1};
+                stack[top++] = {c.u0, vc, uc, c.v1, c.depth + 1};
+                stack[top++] = {uc, vc, c.u1, c.v1, c.depth + 1};
+            } else if (c.depth > 0) {
+                if (np + ni >= sc.uv.size() || ni >= sc.interior.size()) return fail(Status::Full, "more curvature points than the face scratch holds");
+                sc.uv[np + ni++] = {uc, vc};
+            }
+        }
+    }
+
+    // 3. Quantize the scaled (u,v) to the CDT grid: the face's extent maps to 2^15 units.
+    float x0 = 1e30f, y0 = 1e30f, x1 = -1e30f, y1 = -1e30f;
+    for (uint32_t i = 0; i < np + ni; ++i) {
+        x0 = std::min(x0, sc.uv[i].x * su), x1 = std::max(x1, sc.uv[i].x * su);
+        y0 = std::min(y0, sc.uv[i].y * sv), y1 = std::max(y1, sc.uv[i].y * sv);
+    }
+    const float extent = std::max(x1 - x0, y1 - y0);
+    if (!(extent > 0) || !std::isfinite(extent)) return fail(Status::Degenerate, "the face has no extent in (u,v)");
+    const float q = 32768.0f / extent;
+    for (uint32_t i = 0; i < np + ni; ++i) {
+        const cdt::Point g{int32_t(std::lround((sc.uv[i].x * su - x0) * q)) - 16384,
+                           int32_t(std::lround((sc.uv[i].y * sv - y0) * q)) - 16384};
+        if (i < np) sc.loop_points[i] = g;
+        else sc.interior[i - np] = g;
+    }
+
+    // 4. Triangulate.
+    cdt::Cdt<uint16_t> cdt(sc.arena);
+    cdt::FaceReport rep;
+    const cdt::FaceInput in{{sc.loop_points.data(), np}, {sc.loop_sizes.data(), nl}, {sc.interior.data(), ni}};
+    res.points = np + ni;
+    const Status st = cdt::triangulate_face(cdt, in, cdt::kDefaultLocateMode, rep);
+    if (!ok(st)) {
+        return fail(st, st == Status::Full ? "more points than the CDT arena holds"
+                        : st == Status::Crossing ? "its loops cross in (u,v)"
+                        : st == Status::Degenerate ? "a loop is open or runs the wrong way in (u,v)"
+                                                    : "triangulation failed");
+    }
+
+    // 5. Vertices: loop points keep their edge sample's 3D point (shared with the other face),
+    //    interior points are evaluated on the surface. Normals from the surface.
+    const uint32_t nv = cdt.vertex_count();
+    if (sc.mesh_of.size() < nv) return fail(Status::Full, "more vertices than the face scratch holds");
+    for (uint32_t v = 0; v < nv; ++v) sc.mesh_of[v] = UINT32_MAX;
+    const uint32_t* vertex_of_point = sc.arena.keys.data(); // triangulate_face leaves it there
+    const float flip = F.reversed ? -1.0f : 1.0f;
+    const uint32_t base = mesh.vertex_count;
+    for (uint32_t i = 0; i < np + ni; ++i) {
+        const uint32_t v = vertex_of_point[i];
+        if (v >= nv || sc.mesh_of[v] != UINT32_MAX) continue;
+        if (mesh.vertex_count >= mesh.vertices.size()) return fail(Status::Full, "the mesh is full");
+        const SurfacePoint sp = eval_surface(pack, S, sc.uv[i].x, sc.uv[i].y);
+        Vec3 n = cross(sp.du, sp.dv);
+        if (length(n) < 1e-12f) { // a pole: look a little toward the middle of the face
+            const SurfacePoint s2 = eval_surface(pack, S, sc.uv[i].x + 1e-3f * (um - sc.uv[i].x), sc.uv[i].y + 1e-3f * (vm - sc.uv[i].y));
+            n = cross(s2.du, s2.dv);
+        }
+        mesh.vertices[mesh.vertex_count] = {i < np ? sc.xyz[i] : sp.p, normalized(n) * flip};
+        if (mesh.vertex_count < mesh.uv.size()) mesh.uv[mesh.vertex_count] = sc.uv[i];
+        sc.mesh_of[v] = mesh.vertex_count++;
+    }
+    for (uint16_t t = 0; t < cdt.triangle_count(); ++t) {
+        const cdt::Triangle<uint16_t>& T = cdt.triangle(t);
+        if (!T.inner()) continue;
+        if ((mesh.triangle_count + 1) * 3 > mesh.indices.size()) {
+            mesh.vertex_count = base;
+            return fail(Status::Full, "the mesh is full");
+        }
+        uint32_t* out = &mesh.indices[mesh.triangle_count * 3];
+        out[0] = sc.mesh_of[T.v[0]];
+        out[1] = F.reversed ? sc.mesh_of[T.v[2]] : sc.mesh_of[T.v[1]];
+        out[2] = F.reversed ? sc.mesh_of[T.v[1]] : sc.mesh_of[T.v[2]];
+        ++mesh.triangle_count;
+        ++res.triangles;
+    }
+    return res;
+}
+
+} // namespace facet::geom
