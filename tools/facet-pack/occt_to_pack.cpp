@@ -388,7 +388,9 @@ uint32_t Packer::add_prototype(const TopoDS_Shape& shape, bool closed) {
                     if (u_const) seam = uint8_t(std::abs(m.X() - u0) < std::abs(m.X() - u1) ? pack::Seam::ULow : pack::Seam::UHigh);
                     else seam = uint8_t(std::abs(m.Y() - v0) < std::abs(m.Y() - v1) ? pack::Seam::VLow : pack::Seam::VHigh);
                 }
-                w_.add_coedge({edge_ids[idx], p, uint8_t(ex.Orientation() == TopAbs_REVERSED), seam, 0});
+                // The coedge's direction is the current edge's own orientation. (The explorer's
+                // Orientation() is not: on anc101 face 13 it says FORWARD for a REVERSED edge.)
+                w_.add_coedge({edge_ids[idx], p, uint8_t(e.Orientation() == TopAbs_REVERSED), seam, 0});
                 ++n;
             }
             if (!ok) break;
