@@ -212,32 +212,57 @@ FaceResult tessellate_face(const Pack& pack, uint32_t fi, const EdgeSamples& edg
     float su = length(mid.du), sv = length(mid.dv);
     if (!(su > 1e-9f)) su = 1;
     if (!(sv > 1e-9f)) sv = 1;
-    // Interior curvature points: quadtree cells over the face's bounds, split while the surface
-    // leaves the cell's flat interpolation by more than the tolerance (not for planes).
+    // Interior curvature points (not on planes): an anisotropic quadtree over the face's
+    // bounds. A cell splits along u (v) while the surface's midpoint along u (v) leaves the
+    // chord by more than half the tolerance or its normals turn by more than max_angle, and
+    // also across its length when it is curved across and over 4x longer than wide (a ruled
+    // cylinder needs no points along its rulings, but a triangle must not span its curved
+    // width end to end). Each leaf below the root adds its centre. Points outside the loops are kept (the flood fill drops
+    // their triangles; testing them would cost more).
     uint32_t ni = 0;
     if (S.type != uint8_t(SurfaceType::Plane)) {
         struct Cell {
             float u0, v0, u1, v1;
             int depth;
         };
-        Cell stack[96];
+        constexpr int kStack = 128;
+        Cell stack[kStack];
         int top = 0;
         stack[top++] = {F.uv_min[0], F.uv_min[1], F.uv_max[0], F.uv_max[1], 0};
+        auto sag = [&](float ua, float va, float ub, float vb, float& turn) {
+            const SurfacePoint A = eval_surface(pack, S, ua, va), B = eval_surface(pack, S, ub, vb);
+            const SurfacePoint M = eval_surface(pack, S, 0.5f * (ua + ub), 0.5f * (va + vb));
+            turn = std::max(turn, angle_between(cross(A.du, A.dv), cross(B.du, B.dv)));
+            return length(M.p - (A.p + B.p) * 0.5f);
+        };
         while (top) {
             const Cell c = stack[--top];
             const float uc = 0.5f * (c.u0 + c.u1), vc = 0.5f * (c.v0 + c.v1);
-            const SurfacePoint p00 = eval_surface(pack, S, c.u0, c.v0), p11 = eval_surface(pack, S, c.u1, c.v1);
-            const SurfacePoint p10 = eval_surface(pack, S, c.u1, c.v0), p01 = eval_surface(pack, S, c.u0, c.v1);
-            const SurfacePoint pc = eval_surface(pack, S, uc, vc);
-            const Vec3 flat = (p00.p + p11.p + p10.p + p01.p) * 0.25f;
-            const float dev = length(pc.p - flat);
-            const float turn = std::max(angle_between(cross(p00.du, p00.dv), cross(p11.du, p11.dv)),
-                                        angle_between(cross(p10.du, p10.dv), cross(p01.du, p01.dv)));
-            if ((dev > opt.tolerance || turn > opt.max_angle) && c.depth < 10 && top + 4 <= 96) {
-                stack[top++] = {c.u0, c.v0, uc, vc, c.depth + 1};
-                stack[top++] = {uc, c.v0, c.u1, vc, c.depth + 1};
-                stack[top++] = {c.u0, vc, uc, c.v1, c.depth + 1};
-                stack[top++] = {uc, vc, c.u1, c.v1, c.depth + 1};
+            float turn_u = 0, turn_v = 0;
+            const float du = std::max({sag(c.u0, c.v0, c.u1, c.v0, turn_u), sag(c.u0, vc, c.u1, vc, turn_u), sag(c.u0, c.v1, c.u1, c.v1, turn_u)});
+            const float dv = std::max({sag(c.u0, c.v0, c.u0, c.v1, turn_v), sag(uc, c.v0, uc, c.v1, turn_v), sag(c.u1, c.v0, c.u1, c.v1, turn_v)});
+            // Half the tolerance: a triangle spans about a cell's diagonal, not one side.
+            const float tol = 0.5f * opt.tolerance;
+            bool split_u = (du > tol || turn_u > opt.max_angle) && c.depth < 12;
+            bool split_v = (dv > tol || turn_v > opt.max_angle) && c.depth < 12;
+            // A cell curved across but much longer than wide (in metric units) would let a
+            // triangle span its whole curved width from end to end: cut it shorter too.
+            const float w = (c.u1 - c.u0) * su, h = (c.v1 - c.v0) * sv;
+            if (split_u && !split_v && h > 4 * w && c.depth < 12) split_v = true;
+            if (split_v && !split_u && w > 4 * h && c.depth < 12) split_u = true;
+            if ((split_u || split_v) && top + 4 <= kStack) {
+                if (split_u && split_v) {
+                    stack[top++] = {c.u0, c.v0, uc, vc, c.depth + 1};
+                    stack[top++] = {uc, c.v0, c.u1, vc, c.depth + 1};
+                    stack[top++] = {c.u0, vc, uc, c.v1, c.depth + 1};
+                    stack[top++] = {uc, vc, c.u1, c.v1, c.depth + 1};
+                } else if (split_u) {
+                    stack[top++] = {c.u0, c.v0, uc, c.v1, c.depth + 1};
+                    stack[top++] = {uc, c.v0, c.u1, c.v1, c.depth + 1};
+                } else {
+                    stack[top++] = {c.u0, c.v0, c.u1, vc, c.depth + 1};
+                    stack[top++] = {c.u0, vc, c.u1, c.v1, c.depth + 1};
+                }
             } else if (c.depth > 0) {
                 if (np + ni >= sc.uv.size() || ni >= sc.interior.size()) return fail(Status::Full, "more curvature points than the face scratch holds");
                 sc.uv[np + ni++] = {uc, vc};
@@ -274,15 +299,59 @@ FaceResult tessellate_face(const Pack& pack, uint32_t fi, const EdgeSamples& edg
                                                     : "triangulation failed");
     }
 
-    // 5. Vertices: loop points keep their edge sample's 3D point (shared with the other face),
-    //    interior points are evaluated on the surface. Normals from the surface.
+    // 5. Refine by measured deviation: every inner triangle whose centroid lies farther from
+    //    the surface than the tolerance gets the surface point at its centroid's (u,v);
+    //    repeated until none does (or 12 rounds). Points that would land on a loop's edge are
+    //    skipped (they would split it in this face only).
+    auto point_of = [&](uint32_t v) { return sc.mesh_of[v]; }; // CDT vertex -> input point
+    auto position = [&](uint32_t i) { return i < np ? sc.xyz[i] : eval_surface(pack, S, sc.uv[i].x, sc.uv[i].y).p; };
+    uint32_t total = np + ni;
+    for (int round = 0; round < 12; ++round) {
+        const uint32_t nv_now = cdt.vertex_count();
+        if (sc.mesh_of.size() < nv_now) return fail(Status::Full, "more vertices than the face scratch holds");
+        for (uint32_t v = 0; v < nv_now; ++v) sc.mesh_of[v] = UINT32_MAX;
+        for (uint32_t i = 0; i < total; ++i) {
+            const uint32_t v = sc.arena.keys[i];
+            if (v < nv_now && sc.mesh_of[v] == UINT32_MAX) sc.mesh_of[v] = i;
+        }
+        uint32_t added = 0;
+        const uint16_t nt = cdt.triangle_count();
+        for (uint16_t t = 0; t < nt; ++t) {
+            const cdt::Triangle<uint16_t>& T = cdt.triangle(t);
+            if (!T.inner()) continue;
+            const uint32_t i0 = point_of(T.v[0]), i1 = point_of(T.v[1]), i2 = point_of(T.v[2]);
+            if (i0 == UINT32_MAX || i1 == UINT32_MAX || i2 == UINT32_MAX) continue;
+            const Vec2 uv = (sc.uv[i0] + sc.uv[i1] + sc.uv[i2]) * (1.0f / 3);
+            const Vec3 c = (position(i0) + position(i1) + position(i2)) * (1.0f / 3);
+            if (length(c - eval_surface(pack, S, uv.x, uv.y).p) <= opt.tolerance) continue;
+            if (total >= sc.uv.size() || total >= sc.arena.keys.size()) return fail(Status::Full, "refinement needs more points than the face scratch holds");
+            const cdt::Point g{int32_t(std::lround((uv.x * su - x0) * q)) - 16384, int32_t(std::lround((uv.y * sv - y0) * q)) - 16384};
+            // Never on a loop's edge (after quantizing): that would split it in this face only.
+            cdt::Location<uint16_t> at;
+            if (!ok(cdt.locate(g, T.v[0] >= cdt::kBoxVertices ? T.v[0] : T.v[1], at))) continue;
+            if (at.kind == cdt::Location<uint16_t>::Kind::OnVertex) continue;
+            if (at.kind == cdt::Location<uint16_t>::Kind::OnEdge && cdt.triangle(at.tri).constrained(at.edge)) continue;
+            uint16_t v;
+            const Status ins = cdt.insert_point(g, v, T.v[0] >= cdt::kBoxVertices ? T.v[0] : T.v[1]);
+            if (ins == Status::Full) return fail(Status::Full, "more points than the CDT arena holds");
+            if (!ok(ins)) continue;
+            sc.uv[total] = uv;
+            sc.arena.keys[total] = v;
+            ++total;
+            ++added;
+        }
+        if (!added) break;
+        if (!ok(cdt.mark_inner())) return fail(Status::Degenerate, "refinement broke the loops");
+    }
+    res.points = total;
+
     const uint32_t nv = cdt.vertex_count();
     if (sc.mesh_of.size() < nv) return fail(Status::Full, "more vertices than the face scratch holds");
     for (uint32_t v = 0; v < nv; ++v) sc.mesh_of[v] = UINT32_MAX;
-    const uint32_t* vertex_of_point = sc.arena.keys.data(); // triangulate_face leaves it there
+    const uint32_t* vertex_of_point = sc.arena.keys.data(); // point -> CDT vertex
     const float flip = F.reversed ? -1.0f : 1.0f;
     const uint32_t base = mesh.vertex_count;
-    for (uint32_t i = 0; i < np + ni; ++i) {
+    for (uint32_t i = 0; i < total; ++i) {
         const uint32_t v = vertex_of_point[i];
         if (v >= nv || sc.mesh_of[v] != UINT32_MAX) continue;
         if (mesh.vertex_count >= mesh.vertices.size()) return fail(Status::Full, "the mesh is full");

@@ -141,6 +141,7 @@ int main(int argc, char** argv) {
     double max_dev = 0;
     std::map<std::string, uint32_t> reasons;
     std::vector<int> shell_done(pack.shells().size(), 0);
+    std::map<uint32_t, double> face_dev;
     for (const pack::Instance& inst : pack.instances()) {
         const pack::Shell& sh = pack.shells()[inst.shell];
         Mesh mesh{mv, mi, muv};
@@ -170,7 +171,11 @@ int main(int argc, char** argv) {
             const Vec2 uv = (mesh.uv[id[0]] + mesh.uv[id[1]] + mesh.uv[id[2]]) * (1.0f / 3);
             const bool wraps = u_periodic(S) && (std::fabs(mesh.uv[id[0]].x - mesh.uv[id[1]].x) > 3 ||
                                                  std::fabs(mesh.uv[id[1]].x - mesh.uv[id[2]].x) > 3);
-            if (!wraps) max_dev = std::max(max_dev, double(length(c - eval_surface(pack, S, uv.x, uv.y).p)));
+            if (!wraps) {
+                const double d = length(c - eval_surface(pack, S, uv.x, uv.y).p);
+                max_dev = std::max(max_dev, d);
+                face_dev[tri_face[t]] = std::max(face_dev[tri_face[t]], d);
+            }
         }
         const uint32_t base = uint32_t(o.p.size());
         for (uint32_t v = 0; v < mesh.vertex_count; ++v) {
@@ -215,6 +220,14 @@ int main(int argc, char** argv) {
                 "non-manifold edges %u, thin (<5 deg) %.1f%%, %.1f ms\n",
                 in, faces, failed, ntri, max_dev, opt.tolerance, free_edges, nonmanifold, 100 * thin_share, ms);
     for (auto& [r, n] : reasons) std::printf("  %u faces: %s\n", n, r.c_str());
+    if (!quiet) {
+        for (auto& [fi, d] : face_dev) {
+            if (d > opt.tolerance) {
+                std::printf("  face %u (surface type %u): deviation %.4f mm over the tolerance\n", fi,
+                            pack.surfaces()[pack.faces()[fi].surface].type, d);
+            }
+        }
+    }
     if (!json.empty()) {
         std::ofstream j(json);
         j << "{\"faces\": " << faces << ", \"faces_failed\": " << failed << ", \"triangles\": " << ntri
