@@ -51,6 +51,17 @@ void unwrap_loop(FaceScratch& sc, uint32_t start, uint32_t n, const Pack&, const
 
 } // namespace
 
+float surface_deviation(const Pack& pack, uint32_t face, Vec3 c, Vec2 uv_guess, Vec2& uv) {
+    const pack::Face& F = pack.faces()[face];
+    const Surface& S = pack.surfaces()[F.surface];
+    uv = uv_guess;
+    if (is_elementary(S)) {
+        Vec2 inv;
+        if (invert_elementary(pack, S, c, F.uv_min, F.uv_max, inv)) uv = inv;
+    }
+    return length(c - eval_surface(pack, S, uv.x, uv.y).p);
+}
+
 float default_tolerance(const Pack& pack) {
     const pack::Header& h = pack.header();
     const Vec3 d{h.bbox_max[0] - h.bbox_min[0], h.bbox_max[1] - h.bbox_min[1], h.bbox_max[2] - h.bbox_min[2]};
@@ -229,10 +240,20 @@ FaceResult tessellate_face(const Pack& pack, uint32_t fi, const EdgeSamples& edg
         Cell stack[kStack];
         int top = 0;
         stack[top++] = {F.uv_min[0], F.uv_min[1], F.uv_max[0], F.uv_max[1], 0};
+        // The normal's turn, ignoring (near-)singular points: at a pole or apex the normal is
+        // undefined, and a hair past an apex it even points the other way.
+        auto normal_turn = [](const SurfacePoint& A, const SurfacePoint& B) {
+            const Vec3 na = cross(A.du, A.dv), nb = cross(B.du, B.dv);
+            auto degenerate = [](const SurfacePoint& P, Vec3 n) {
+                return length(n) <= 1e-4f * length(P.du) * length(P.dv) + 1e-12f ||
+                       length(P.du) < 1e-4f * length(P.dv) || length(P.dv) < 1e-4f * length(P.du);
+            };
+            return degenerate(A, na) || degenerate(B, nb) ? 0.0f : angle_between(na, nb);
+        };
         auto sag = [&](float ua, float va, float ub, float vb, float& turn) {
             const SurfacePoint A = eval_surface(pack, S, ua, va), B = eval_surface(pack, S, ub, vb);
             const SurfacePoint M = eval_surface(pack, S, 0.5f * (ua + ub), 0.5f * (va + vb));
-            turn = std::max(turn, angle_between(cross(A.du, A.dv), cross(B.du, B.dv)));
+            turn = std::max(turn, normal_turn(A, B));
             return length(M.p - (A.p + B.p) * 0.5f);
         };
         while (top) {
@@ -321,9 +342,20 @@ FaceResult tessellate_face(const Pack& pack, uint32_t fi, const EdgeSamples& edg
             if (!T.inner()) continue;
             const uint32_t i0 = point_of(T.v[0]), i1 = point_of(T.v[1]), i2 = point_of(T.v[2]);
             if (i0 == UINT32_MAX || i1 == UINT32_MAX || i2 == UINT32_MAX) continue;
-            const Vec2 uv = (sc.uv[i0] + sc.uv[i1] + sc.uv[i2]) * (1.0f / 3);
-            const Vec3 c = (position(i0) + position(i1) + position(i2)) * (1.0f / 3);
-            if (length(c - eval_surface(pack, S, uv.x, uv.y).p) <= opt.tolerance) continue;
+            const Vec3 p0 = position(i0), p1 = position(i1), p2 = position(i2);
+            // A triangle no longer than the tolerance cannot leave the surface by more (its
+            // corners are on it). This also stops refinement where (u,v) is singular (poles,
+            // apexes), where the uv centroid is no measure of a tiny 3D triangle.
+            if (std::max({length(p1 - p0), length(p2 - p1), length(p0 - p2)}) <= opt.tolerance) continue;
+            Vec2 uv;
+            const Vec3 c = (p0 + p1 + p2) * (1.0f / 3);
+            if (surface_deviation(pack, fi, c, (sc.uv[i0] + sc.uv[i1] + sc.uv[i2]) * (1.0f / 3), uv) <= opt.tolerance) continue;
+            // The new point goes where the surface is nearest the centroid, in this face's branch
+            // of (u,v): keep it inside the triangle's (u,v) span.
+            if (!(uv.x >= std::min({sc.uv[i0].x, sc.uv[i1].x, sc.uv[i2].x}) && uv.x <= std::max({sc.uv[i0].x, sc.uv[i1].x, sc.uv[i2].x}) &&
+                  uv.y >= std::min({sc.uv[i0].y, sc.uv[i1].y, sc.uv[i2].y}) && uv.y <= std::max({sc.uv[i0].y, sc.uv[i1].y, sc.uv[i2].y}))) {
+                uv = (sc.uv[i0] + sc.uv[i1] + sc.uv[i2]) * (1.0f / 3);
+            }
             if (total >= sc.uv.size() || total >= sc.arena.keys.size()) return fail(Status::Full, "refinement needs more points than the face scratch holds");
             const cdt::Point g{int32_t(std::lround((uv.x * su - x0) * q)) - 16384, int32_t(std::lround((uv.y * sv - y0) * q)) - 16384};
             // Never on a loop's edge (after quantizing): that would split it in this face only.

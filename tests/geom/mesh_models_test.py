@@ -2,10 +2,10 @@
 """Packs and tessellates every shared model with facet-pack + facet-mesh (the device's geom/
 and cdt/ code) at the default tolerance (0.1% of the bounding-box diagonal).
 
-Asserted for every model that packs: facet-mesh completes with a report, and every face either
-yields triangles or is reported with a reason. Asserted for the models listed below (what holds
-today; the list grows as geom/ does): watertight (no free or non-manifold edges), and measured
-deviation within the tolerance. Prints one line per model and writes WORK/mesh-models.json.
+Asserted for every model that packs: facet-mesh completes with a report, every face either
+yields triangles or is reported with a reason, and the measured deviation is within the
+tolerance (but for the known exceptions listed below). Watertight (no free or non-manifold
+edges, no failed face) is asserted for the models listed in WATERTIGHT: what holds today. Prints one line per model and writes WORK/mesh-models.json.
 """
 import argparse
 import json
@@ -13,8 +13,12 @@ import os
 import subprocess
 import sys
 
-WATERTIGHT = ['screw.step', 'io1_cm_214.stp', 'mic6_bed.step', 'tie_rod.step']
-WITHIN_TOLERANCE = ['anc101.stp', 'io1_cm_214.stp', 'mic6_bed.step', 'tie_rod.step', 'nist_ctc_02.stp']
+# Closed solids that tessellate with no free and no non-manifold edge today.
+WATERTIGHT = ['base_plate.stp', 'dm1_id_214.stp', 'house_walls.stp', 'io1_cm_214.stp', 'm6_screw.step',
+              'mic6_bed.step', 'ndr_pivot_pin.stp', 'screw.step', 'sg1_c5_214.stp', 'tie_rod.step']
+# Every model's measured deviation is within the tolerance, except these known cases (open
+# problems, see docs/geom.md).
+DEVIATION_EXCEPTIONS = ['nist_ctc_02_ap242.stp']
 
 
 def main():
@@ -47,7 +51,7 @@ def main():
             bad.append(f'{f}: faces triangulated but no triangles')
         if f in WATERTIGHT and (r['free_edges'] or r['nonmanifold_edges'] or r['faces_failed']):
             bad.append(f"{f}: expected watertight, got {r['free_edges']} free / {r['nonmanifold_edges']} non-manifold edges")
-        if f in WITHIN_TOLERANCE and r['max_deviation'] > r['tolerance']:
+        if f not in DEVIATION_EXCEPTIONS and r['max_deviation'] > r['tolerance']:
             bad.append(f"{f}: deviation {r['max_deviation']:.4f} over the tolerance {r['tolerance']:.4f}")
     json.dump(rows, open(os.path.join(args.work, 'mesh-models.json'), 'w'), indent=2)
     faces = sum(r['faces'] for r in rows)

@@ -86,13 +86,14 @@ int main(int argc, char** argv) {
     const char* in = nullptr;
     std::string out, format, json;
     float tolerance = 0;
-    bool quiet = false;
+    bool quiet = false, per_face = false;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         if ((a == "--stl" || a == "--obj" || a == "--ply") && i + 1 < argc) format = a.substr(2), out = argv[++i];
         else if (a == "--json" && i + 1 < argc) json = argv[++i];
         else if (a == "--tolerance" && i + 1 < argc) tolerance = std::strtof(argv[++i], nullptr);
         else if (a == "--quiet") quiet = true;
+        else if (a == "--faces") per_face = true;
         else if (a[0] != '-') in = argv[i];
         else return die("usage: facet-mesh MODEL.fpk [--stl|--obj|--ply FILE] [--json REPORT] [--tolerance MM]");
     }
@@ -160,6 +161,10 @@ int main(int argc, char** argv) {
                 continue;
             }
             for (uint32_t t = before; t < mesh.triangle_count; ++t) tri_face.push_back(fi);
+            if (per_face && first_time) {
+                std::printf("face %u: surface type %u, %u points, %u triangles\n", fi,
+                            pack.surfaces()[pack.faces()[fi].surface].type, r.points, r.triangles);
+            }
         }
         shell_done[inst.shell] = 1;
         // Deviation: each triangle's centroid against the surface at its interpolated (u,v).
@@ -168,11 +173,12 @@ int main(int argc, char** argv) {
             const pack::Face& F = pack.faces()[tri_face[t]];
             const pack::Surface& S = pack.surfaces()[F.surface];
             const Vec3 c = (mesh.vertices[id[0]].p + mesh.vertices[id[1]].p + mesh.vertices[id[2]].p) * (1.0f / 3);
-            const Vec2 uv = (mesh.uv[id[0]] + mesh.uv[id[1]] + mesh.uv[id[2]]) * (1.0f / 3);
-            const bool wraps = u_periodic(S) && (std::fabs(mesh.uv[id[0]].x - mesh.uv[id[1]].x) > 3 ||
-                                                 std::fabs(mesh.uv[id[1]].x - mesh.uv[id[2]].x) > 3);
+            const Vec2 guess = (mesh.uv[id[0]] + mesh.uv[id[1]] + mesh.uv[id[2]]) * (1.0f / 3);
+            const bool wraps = !is_elementary(S) && u_periodic(S) && (std::fabs(mesh.uv[id[0]].x - mesh.uv[id[1]].x) > 3 ||
+                                                                      std::fabs(mesh.uv[id[1]].x - mesh.uv[id[2]].x) > 3);
             if (!wraps) {
-                const double d = length(c - eval_surface(pack, S, uv.x, uv.y).p);
+                Vec2 uv;
+                const double d = surface_deviation(pack, tri_face[t], c, guess, uv);
                 max_dev = std::max(max_dev, d);
                 face_dev[tri_face[t]] = std::max(face_dev[tri_face[t]], d);
             }

@@ -68,6 +68,11 @@ Status sample_edges(const Pack& pack, const TessOptions& opt, EdgeSamples& out);
 FaceResult tessellate_face(const Pack& pack, uint32_t face, const EdgeSamples& edges, const TessOptions& opt,
                            FaceScratch& scratch, Mesh& mesh);
 
+// How far point c (a triangle's centroid) is from face `face`'s surface, and the surface
+// point's (u,v): on elementary surfaces by inverting c (well defined even at poles and apexes),
+// else at `uv_guess` (the triangle's uv centroid).
+float surface_deviation(const Pack& pack, uint32_t face, Vec3 c, Vec2 uv_guess, Vec2& uv_out);
+
 // 0.1% of the pack's bounding-box diagonal (the default tolerance).
 float default_tolerance(const Pack& pack);
 
