@@ -56,7 +56,7 @@ struct Buf {
     std::vector<uint32_t> words;
     uint32_t size;
     explicit Buf(const std::vector<uint8_t>& b) : words((b.size() + 3) / 4), size(uint32_t(b.size())) {
-        std::memcpy(words.data(), b.data(), b.size());
+        if (!b.empty()) std::memcpy(words.data(), b.data(), b.size()); // memcpy(null, ...) is UB even for 0 bytes
     }
     uint8_t* bytes() { return reinterpret_cast<uint8_t*>(words.data()); }
     Header& header() { return *reinterpret_cast<Header*>(bytes()); }
