@@ -2,6 +2,7 @@
 """Plots a benchmark CSV as a PNG beside it (gnuplot, pngcairo).
 
   plot_bench.py cdt out/bench/cdt.csv     ns per vertex by input, facet vs CGAL (log scale)
+  plot_bench.py mesh out/bench/mesh.csv   triangles and time per model, facet vs BRepMesh
 """
 import csv
 import os
@@ -44,11 +45,55 @@ plot {cols}
     print(f'plot: {png}')
 
 
+def plot_mesh(path):
+    rows = [r for r in csv.DictReader(open(path))]
+    models = []
+    tri, ms = {}, {}
+    for r in rows:
+        if r['model'] not in models:
+            models.append(r['model'])
+    smallest = {}
+    for r in rows:  # the finer deflection of each model (0.1% of the diagonal)
+        d = float(r['deflection'])
+        if r['model'] not in smallest or d < smallest[r['model']]:
+            smallest[r['model']] = d
+    for r in rows:
+        if float(r['deflection']) == smallest[r['model']]:
+            tri[(r['model'], r['impl'])] = int(r['triangles'])
+            ms[(r['model'], r['impl'])] = float(r['ms'])
+    with tempfile.NamedTemporaryFile('w', suffix='.dat', delete=False) as dat:
+        dat.write('model facet_triangles brepmesh_triangles facet_ms brepmesh_ms\n')
+        for m in models:
+            dat.write(f'"{m}" {tri.get((m, "facet"), "NaN")} {tri.get((m, "brepmesh"), "NaN")} '
+                      f'{ms.get((m, "facet"), "NaN")} {ms.get((m, "brepmesh"), "NaN")}\n')
+    png = os.path.splitext(path)[0] + '.png'
+    script = f"""
+set terminal pngcairo size 1400,900 font 'sans,9'
+set output '{png}'
+set multiplot layout 2,1 title 'Tessellation at 0.1% of the bounding-box diagonal: facet vs BRepMesh'
+set style data histograms
+set style histogram clustered gap 1
+set style fill solid 0.8 border -1
+set logscale y
+set xtics rotate by -35
+set grid ytics
+set key top left
+set ylabel 'triangles'
+plot '{dat.name}' using 2:xtic(1) title 'facet', '' using 3 title 'BRepMesh'
+set ylabel 'ms (host)'
+plot '{dat.name}' using 4:xtic(1) title 'facet', '' using 5 title 'BRepMesh'
+unset multiplot
+"""
+    subprocess.run(['gnuplot'], input=script, text=True, check=True)
+    os.unlink(dat.name)
+    print(f'plot: {png}')
+
+
 def main():
-    if len(sys.argv) != 3 or sys.argv[1] != 'cdt':
+    if len(sys.argv) != 3 or sys.argv[1] not in ('cdt', 'mesh'):
         print(__doc__)
         return 2
-    plot_cdt(sys.argv[2])
+    (plot_cdt if sys.argv[1] == 'cdt' else plot_mesh)(sys.argv[2])
     return 0
 
 

@@ -10,6 +10,7 @@
 #include "geom/pack.h"
 #include "occt_to_pack.h"
 #include "pack_writer.h"
+#include "step_reader.h"
 
 #include <IFSelect_ReturnStatus.hxx>
 #include <Message.hxx>
@@ -67,19 +68,6 @@ int check(const char* path) {
     return 0;
 }
 
-float unit_mm(STEPCAFControl_Reader& reader) {
-    TColStd_SequenceOfAsciiString lengths, angles, solids;
-    reader.ChangeReader().FileUnits(lengths, angles, solids);
-    if (lengths.IsEmpty()) return 1.0f;
-    const std::string u = lengths.First().ToCString();
-    if (u.find("MILLI") != std::string::npos) return 1.0f;
-    if (u.find("CENTI") != std::string::npos) return 10.0f;
-    if (u.find("INCH") != std::string::npos) return 25.4f;
-    if (u.find("FOOT") != std::string::npos) return 304.8f;
-    if (u.find("METRE") != std::string::npos || u.find("METER") != std::string::npos) return 1000.0f;
-    return 1.0f;
-}
-
 } // namespace
 
 int main(int argc, char** argv) {
@@ -98,67 +86,21 @@ int main(int argc, char** argv) {
     // OCCT's own trace messages are noise for a command-line user; keep warnings and worse.
     for (auto& p : Message::DefaultMessenger()->Printers()) p->SetTraceLevel(Message_Fail);
 
-    auto progress = [&](const char* what) {
-        if (!quiet) std::fprintf(stderr, "facet-pack: %s\n", what);
-    };
-    progress("reading STEP");
-    Handle(XCAFApp_Application) app = XCAFApp_Application::GetApplication();
-    Handle(TDocStd_Document) doc;
-    app->NewDocument("MDTV-XCAF", doc);
-    STEPCAFControl_Reader reader;
-    reader.SetColorMode(true);
-    reader.SetNameMode(true);
-    reader.SetLayerMode(false);
-    if (reader.ReadFile(in) != IFSelect_RetDone) return die(std::string(in) + ": not a readable STEP file");
-    Handle(XCAFDoc_ShapeTool) shapes = XCAFDoc_DocumentTool::ShapeTool(doc->Main());
-    Handle(XCAFDoc_ColorTool) colours = XCAFDoc_DocumentTool::ColorTool(doc->Main());
-    std::vector<TopoDS_Shape> top;
-    if (reader.Transfer(doc)) {
-        TDF_LabelSequence roots;
-        shapes->GetFreeShapes(roots);
-        for (int r = 1; r <= roots.Length(); ++r) top.push_back(shapes->GetShape(roots.Value(r)));
-    }
-    if (top.empty()) {
-        // Files without PRODUCT structure (early AP203 writers) give the assembly-aware reader
-        // nothing; the plain reader can still transfer their shape representations.
-        progress("no product structure: reading shape representations directly");
-        STEPControl_Reader plain;
-        if (plain.ReadFile(in) == IFSelect_RetDone && plain.TransferRoots() > 0) {
-            const TopoDS_Shape shape = plain.OneShape();
-            if (!shape.IsNull()) top.push_back(shape);
-        }
-        colours.Nullify();
-    }
-    if (top.empty()) return die(std::string(in) + ": the STEP file holds no shape Open CASCADE can transfer");
-
+    packer::StepModel model;
+    std::string error;
+    if (!packer::read_step(in, model, error, quiet)) return die(error);
     geom::PackWriter writer;
-    writer.set_source_unit_mm(unit_mm(reader));
+    writer.set_source_unit_mm(model.unit_mm);
     packer::Stats stats;
-    packer::Packer packer(writer, colours, stats);
-    progress("healing and packing");
+    packer::Packer packer(writer, model.colours, stats);
     uint32_t count = 0;
-    for (const TopoDS_Shape& root : top) {
-        std::vector<std::pair<TopoDS_Shape, bool>> parts;
-        for (TopExp_Explorer x(root, TopAbs_SOLID); x.More(); x.Next()) parts.push_back({x.Current(), true});
-        for (TopExp_Explorer x(root, TopAbs_SHELL, TopAbs_SOLID); x.More(); x.Next()) parts.push_back({x.Current(), false});
-        for (TopExp_Explorer x(root, TopAbs_FACE, TopAbs_SHELL); x.More(); x.Next()) parts.push_back({x.Current(), false});
-        for (auto& [shape, closed] : parts) {
-            TopoDS_Shape healed = shape;
-            try {
-                ShapeFix_Shape fix(shape);
-                fix.Perform();
-                healed = fix.Shape();
-                healed.Location(shape.Location()); // keep the occurrence's placement
-            } catch (...) {
-                healed = shape;
-            }
-            try {
-                packer.add_occurrence(healed, closed);
-            } catch (const Standard_Failure& f) {
-                return die(std::string(in) + ": Open CASCADE failed on a part: " + f.GetMessageString());
-            }
-            if (!quiet && ++count % 50 == 0) std::fprintf(stderr, "facet-pack: %u parts\n", count);
+    for (const packer::Part& part : model.parts) {
+        try {
+            packer.add_occurrence(part.shape, part.closed);
+        } catch (const Standard_Failure& f) {
+            return die(std::string(in) + ": Open CASCADE failed on a part: " + f.GetMessageString());
         }
+        if (!quiet && ++count % 50 == 0) std::fprintf(stderr, "facet-pack: %u parts\n", count);
     }
     if (stats.faces == 0) {
         return die(std::string(in) + ": no face could be packed" +

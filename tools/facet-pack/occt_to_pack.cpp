@@ -409,6 +409,7 @@ uint32_t Packer::add_prototype(const TopoDS_Shape& shape, bool closed) {
                      {0, 0, 0}, {float(u0), float(v0)}, {float(u1), float(v1)}});
         ++faces;
         ++stats_.faces;
+        packed_faces.push_back(face);
     } catch (const Standard_Failure& f) {
         ++stats_.faces_skipped;
         if (stats_.first_problem.empty()) stats_.first_problem = std::string("a face failed: ") + f.GetMessageString();
@@ -425,6 +426,7 @@ void Packer::add_occurrence(const TopoDS_Shape& shape, bool closed) {
     } else {
         shell = add_prototype(shape.Located(TopLoc_Location()), closed);
         prototypes_[key] = shell;
+        prototypes.push_back(shape.Located(TopLoc_Location()));
         if (closed) ++stats_.solids;
         else ++stats_.shells;
     }

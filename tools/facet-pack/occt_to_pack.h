@@ -6,6 +6,7 @@
 #include <XCAFDoc_ColorTool.hxx>
 
 #include <map>
+#include <vector>
 #include <string>
 
 namespace facet::packer {
@@ -25,6 +26,12 @@ public:
     // Adds one shell (a solid's, or a surface model's) placed by its location, sharing the
     // geometry of earlier occurrences of the same shell.
     void add_occurrence(const TopoDS_Shape& shell_or_solid, bool closed);
+
+    // Every packed face, in pack order (prototype coordinates): for measuring a mesh against
+    // the exact surfaces.
+    std::vector<TopoDS_Shape> packed_faces;
+    // The prototype shape of each shell, in pack order.
+    std::vector<TopoDS_Shape> prototypes;
 
 private:
     uint32_t add_prototype(const TopoDS_Shape& shape, bool closed);
