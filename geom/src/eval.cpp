@@ -212,6 +212,42 @@ SurfacePoint eval_surface(const Pack& pack, const Surface& s, float u, float v) 
     return {};
 }
 
+namespace {
+
+// One preimage of a torus point: the tube centre on the point's side of the axis (which = 0:
+// R + r cos v = rho) or on the other side (which = 1: R + r cos v = -rho, possible only on a
+// self-intersecting torus, r > R). Angles are placed within pi of the face's middle.
+Vec2 torus_candidate(const float* q, float x, float y, float z, const float uv_min[2], const float uv_max[2], int which) {
+    const float R = q[12], rho = std::sqrt(x * x + y * y), u1 = std::atan2(y, x);
+    const float um = 0.5f * (uv_min[0] + uv_max[0]), vm = 0.5f * (uv_min[1] + uv_max[1]);
+    auto near = [](float a, float mid) {
+        float r = std::fmod(a - (mid - kTwoPi / 2), kTwoPi);
+        if (r < 0) r += kTwoPi;
+        return mid - kTwoPi / 2 + r;
+    };
+    return which == 0 ? Vec2{near(u1, um), near(std::atan2(z, rho - R), vm)}
+                      : Vec2{near(u1 + kTwoPi / 2, um), near(std::atan2(z, -rho - R), vm)};
+}
+
+// How far (u,v) lies outside the bounds (0 inside).
+float outside(Vec2 p, const float lo[2], const float hi[2]) {
+    const float du = p.x < lo[0] ? lo[0] - p.x : (p.x > hi[0] ? p.x - hi[0] : 0);
+    const float dv = p.y < lo[1] ? lo[1] - p.y : (p.y > hi[1] ? p.y - hi[1] : 0);
+    return du + dv;
+}
+
+} // namespace
+
+int invert_candidates(const Pack& pack, const Surface& s, Vec3 P, const float uv_min[2], const float uv_max[2], Vec2 out[2]) {
+    if (s.type != uint8_t(SurfaceType::Torus)) return invert_elementary(pack, s, P, uv_min, uv_max, out[0]) ? 1 : 0;
+    const float* q = pack.floats().data() + s.params;
+    const Vec3 d = P - v3(q);
+    const float x = dot(d, v3(q + 3)), y = dot(d, v3(q + 6)), z = dot(d, v3(q + 9));
+    out[0] = torus_candidate(q, x, y, z, uv_min, uv_max, 0);
+    out[1] = torus_candidate(q, x, y, z, uv_min, uv_max, 1);
+    return q[13] > q[12] ? 2 : 1; // only a self-intersecting torus has a second preimage
+}
+
 bool invert_elementary(const Pack& pack, const Surface& s, Vec3 P, const float uv_min[2], const float uv_max[2], Vec2& uv) {
     const float* q = pack.floats().data() + s.params;
     const Vec3 d = P - v3(q);
@@ -236,20 +272,9 @@ bool invert_elementary(const Pack& pack, const Surface& s, Vec3 P, const float u
         uv = {wrap(std::atan2(y, x), uv_min[0]), std::atan2(z, std::sqrt(x * x + y * y))};
         return true;
     case SurfaceType::Torus: {
-        // Two candidates: the tube centre on the point's side (R + r cos v = rho), or, on a
-        // self-intersecting torus (r > R), on the other side (R + r cos v = -rho). Take the
-        // one nearer the face's middle.
-        const float R = q[12], rho = std::sqrt(x * x + y * y), u1 = std::atan2(y, x);
-        const float um = 0.5f * (uv_min[0] + uv_max[0]), vm = 0.5f * (uv_min[1] + uv_max[1]);
-        auto near = [&](float a, float mid) { // a moved by 2 pi steps into [mid - pi, mid + pi)
-            float r = std::fmod(a - (mid - kTwoPi / 2), kTwoPi);
-            if (r < 0) r += kTwoPi;
-            return mid - kTwoPi / 2 + r;
-        };
-        const Vec2 A{near(u1, um), near(std::atan2(z, rho - R), vm)};
-        const Vec2 B{near(u1 + kTwoPi / 2, um), near(std::atan2(z, -rho - R), vm)};
-        const float da = std::fabs(A.x - um) + std::fabs(A.y - vm), db = std::fabs(B.x - um) + std::fabs(B.y - vm);
-        uv = da <= db ? A : B;
+        const Vec2 c[2] = {torus_candidate(q, x, y, z, uv_min, uv_max, 0), torus_candidate(q, x, y, z, uv_min, uv_max, 1)};
+        // The candidate inside the face's bounds (or nearer its middle).
+        uv = outside(c[0], uv_min, uv_max) <= outside(c[1], uv_min, uv_max) ? c[0] : c[1];
         return true;
     }
     default: return false;

@@ -163,8 +163,25 @@ FaceResult tessellate_face(const Pack& pack, uint32_t fi, const EdgeSamples& edg
                 Vec2 uv;
                 if (CE.pcurve != kNoIndex) {
                     uv = eval_curve2(pack, pack.curves2()[CE.pcurve], edges.t[s]).p;
-                } else if (!invert_elementary(pack, S, edges.p[s], F.uv_min, F.uv_max, uv)) {
-                    return fail(Status::Corrupt, "no pcurve on a free-form surface");
+                } else {
+                    Vec2 cand[2];
+                    const int n = invert_candidates(pack, S, edges.p[s], F.uv_min, F.uv_max, cand);
+                    if (n == 0) return fail(Status::Corrupt, "no pcurve on a free-form surface");
+                    uv = cand[0];
+                    if (n == 2 && np > loop_start) {
+                        // Two preimages: follow the loop (the one nearer the previous sample,
+                        // periodic coordinates compared modulo 2 pi).
+                        auto dist = [&](Vec2 a) {
+                            auto per = [](float d) {
+                                d = std::fabs(std::fmod(d, 6.28318530717958647692f));
+                                return std::min(d, 6.28318530717958647692f - d);
+                            };
+                            return per(a.x - sc.uv[np - 1].x) + per(a.y - sc.uv[np - 1].y);
+                        };
+                        if (dist(cand[1]) < dist(cand[0])) uv = cand[1];
+                    } else if (n == 2) {
+                        invert_elementary(pack, S, edges.p[s], F.uv_min, F.uv_max, uv); // inside the bounds
+                    }
                 }
                 switch (Seam(CE.seam)) {
                 case Seam::ULow: uv.x = F.uv_min[0]; break;

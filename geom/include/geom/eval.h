@@ -31,6 +31,11 @@ Curve2Point eval_curve2(const Pack& pack, const pack::Curve& c, float t);
 bool invert_elementary(const Pack& pack, const pack::Surface& s, Vec3 p, const float uv_min[2],
                        const float uv_max[2], Vec2& uv);
 
+// All preimages (1, or 2 on a self-intersecting torus) of a point on an elementary surface;
+// returns the count (0 for other types).
+int invert_candidates(const Pack& pack, const pack::Surface& s, Vec3 p, const float uv_min[2],
+                      const float uv_max[2], Vec2 out[2]);
+
 bool is_elementary(const pack::Surface& s);
 // Whether u (v) of this surface type is an angle (periodic with 2 pi).
 bool u_periodic(const pack::Surface& s);
