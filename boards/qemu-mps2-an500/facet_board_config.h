@@ -9,4 +9,7 @@ constexpr const char* kName = "qemu-mps2-an500";
 constexpr uint16_t kDisplayWidth = 480;
 constexpr uint16_t kDisplayHeight = 272;
 constexpr uint32_t kRamBytes = 24u << 20; // SSRAM1 4 MiB + SSRAM2/3 4 MiB + PSRAM 16 MiB
+// Where QEMU's loader puts the pack (tools/qemu/run.py --load FILE@ADDR), and its room.
+constexpr uintptr_t kPackAddress = 0x60C00000;
+constexpr uint32_t kPackBytes = 4u << 20;
 } // namespace facet::board_config

@@ -36,7 +36,7 @@ extern "C" [[noreturn]] void board_reset() {
 extern "C" uint8_t __text_start[], __text_end[], __data_start[], __data_end[], __bss_start[],
     __bss_end[], __framebuffers_start[], __framebuffers_end[], __zbuffer_start[], __zbuffer_end[],
     __arena_start[], __arena_end[], __mmu_table_start[], __mmu_table_end[], __stack_start[],
-    __stack_end[];
+    __stack_end[], __pack_start[], __pack_end[];
 
 namespace facet::hal {
 
@@ -67,6 +67,7 @@ uint32_t memory_map(MemoryRegion* out, uint32_t max) {
         {"arena", __arena_start, __arena_end},
         {"mmu_table", __mmu_table_start, __mmu_table_end},
         {"stack", __stack_start, __stack_end},
+        {"pack", __pack_start, __pack_end},
     };
     return boards::fill_memory_map(spans, sizeof spans / sizeof spans[0], out, max);
 }
