@@ -223,6 +223,10 @@ def main():
         elif words[0] == '@stack' and len(words) >= 5:
             report['stack_used'] = int(words[2])
             report['stack_size'] = int(words[4])
+        elif words[0] == '@tessellation' and len(words) >= 9:
+            kv = dict(zip(words[1::2], words[2::2]))
+            report['model'] = {'faces': int(kv['faces']), 'faces_failed': int(kv['failed']),
+                               'triangles': int(kv['triangles']), 'mesh_bytes': int(kv['mesh_bytes'])}
         elif words[0] == '@expect' and len(words) == 3:
             report.setdefault('expect', {})[words[1]] = int(words[2])
 
