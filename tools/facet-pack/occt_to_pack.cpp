@@ -52,26 +52,16 @@ void put_axes(Floats& f, const gp_Ax3& a) {
 
 constexpr double kApproxTolerance = 1e-4; // mm, for curves and surfaces with no packed form
 
-Floats bspline_curve3(Handle(Geom_BSplineCurve) c) {
-    if (c->IsPeriodic()) {
-        c = Handle(Geom_BSplineCurve)::DownCast(c->Copy());
-        c->SetNotPeriodic();
-    }
-    Floats f;
-    const int n = c->NbPoles();
-    TColStd_Array1OfReal knots(1, c->NbPoles() + c->Degree() + 1);
-    c->KnotSequence(knots);
-    f.insert(f.end(), {float(c->Degree()), float(n), float(knots.Length()), c->IsRational() ? 1.0f : 0.0f, 0.0f});
-    for (int i = knots.Lower(); i <= knots.Upper(); ++i) f.push_back(float(knots(i)));
-    for (int i = 1; i <= n; ++i) put(f, c->Pole(i).XYZ());
-    if (c->IsRational())
-        for (int i = 1; i <= n; ++i) f.push_back(float(c->Weight(i)));
-    return f;
-}
+void put(Floats& f, const gp_Pnt& p) { put(f, p.XYZ()); }
+void put(Floats& f, const gp_Pnt2d& p) { put(f, p.XY()); }
 
-Floats bspline_curve2(Handle(Geom2d_BSplineCurve) c) {
+// A 3D or 2D B-spline curve's parameters: head, knots expanded by multiplicity, poles, weights.
+// (Geom_BSplineCurve and Geom2d_BSplineCurve share these methods.) Periodic curves are
+// unperiodized first.
+template <typename Curve>
+Floats bspline_curve(opencascade::handle<Curve> c) {
     if (c->IsPeriodic()) {
-        c = Handle(Geom2d_BSplineCurve)::DownCast(c->Copy());
+        c = opencascade::handle<Curve>::DownCast(c->Copy());
         c->SetNotPeriodic();
     }
     Floats f;
@@ -80,7 +70,7 @@ Floats bspline_curve2(Handle(Geom2d_BSplineCurve) c) {
     c->KnotSequence(knots);
     f.insert(f.end(), {float(c->Degree()), float(n), float(knots.Length()), c->IsRational() ? 1.0f : 0.0f, 0.0f});
     for (int i = knots.Lower(); i <= knots.Upper(); ++i) f.push_back(float(knots(i)));
-    for (int i = 1; i <= n; ++i) put(f, c->Pole(i).XY());
+    for (int i = 1; i <= n; ++i) put(f, c->Pole(i));
     if (c->IsRational())
         for (int i = 1; i <= n; ++i) f.push_back(float(c->Weight(i)));
     return f;
@@ -115,7 +105,7 @@ static uint32_t add_curve3(geom::PackWriter& w, const Handle(Geom_Curve)& curve,
         f.insert(f.end(), {float(e.MajorRadius()), float(e.MinorRadius())});
         return w.add_curve(CurveType::Ellipse, 3, f);
     }
-    case GeomAbs_BSplineCurve: return w.add_curve(CurveType::BSpline, 3, bspline_curve3(a.BSpline()));
+    case GeomAbs_BSplineCurve: return w.add_curve(CurveType::BSpline, 3, bspline_curve(a.BSpline()));
     default: break;
     }
     // Other kinds (Bezier, offset, parabola, hyperbola...): approximate the part the edge uses,
@@ -131,7 +121,7 @@ static uint32_t add_curve3(geom::PackWriter& w, const Handle(Geom_Curve)& curve,
     }
     if (b.IsNull()) return kNoIndex;
     ++st.converted["3D curve -> B-spline"];
-    return w.add_curve(CurveType::BSpline, 3, bspline_curve3(b));
+    return w.add_curve(CurveType::BSpline, 3, bspline_curve(b));
 }
 
 static uint32_t add_curve2(geom::PackWriter& w, const Handle(Geom2d_Curve)& curve, double t0, double t1, Stats& st) {
@@ -160,7 +150,7 @@ static uint32_t add_curve2(geom::PackWriter& w, const Handle(Geom2d_Curve)& curv
         f.insert(f.end(), {float(e.MajorRadius()), float(e.MinorRadius())});
         return w.add_curve(CurveType::Ellipse, 2, f);
     }
-    case GeomAbs_BSplineCurve: return w.add_curve(CurveType::BSpline, 2, bspline_curve2(a.BSpline()));
+    case GeomAbs_BSplineCurve: return w.add_curve(CurveType::BSpline, 2, bspline_curve(a.BSpline()));
     default: break;
     }
     Handle(Geom2d_BSplineCurve) b;
@@ -173,7 +163,7 @@ static uint32_t add_curve2(geom::PackWriter& w, const Handle(Geom2d_Curve)& curv
     }
     if (b.IsNull()) return kNoIndex;
     ++st.converted["pcurve -> B-spline"];
-    return w.add_curve(CurveType::BSpline, 2, bspline_curve2(b));
+    return w.add_curve(CurveType::BSpline, 2, bspline_curve(b));
 }
 
 // The surface under any rectangular trim.
