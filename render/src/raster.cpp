@@ -1,13 +1,22 @@
 #include "render/raster.h"
 
+#include <cstdint>
+
 namespace facet::render {
 namespace {
 
 constexpr int kFrac = 12; // fractional bits of interpolated attributes
 
+// Truncating division, in 32 bits when both operands fit (a 64-bit divide is a long library
+// call on 32-bit cores; most triangles are small enough for the 32-bit one). Same result.
+inline int64_t div_fast(int64_t a, int64_t b) {
+    if (a == int32_t(a) && b == int32_t(b) && !(a == INT32_MIN && b == -1)) return int32_t(a) / int32_t(b);
+    return a / b;
+}
+
 int64_t floor_div(int64_t a, int64_t b) { // b > 0
-    const int64_t q = a / b;
-    return (a % b != 0 && a < 0) ? q - 1 : q;
+    const int64_t q = div_fast(a, b);
+    return (q * b != a && a < 0) ? q - 1 : q;
 }
 
 bool in_guard(const ScreenVertex& v) {
@@ -95,8 +104,8 @@ struct Plane {
         const int64_t numx = d1 * (v2.y - v0.y) - d2 * (v1.y - v0.y);
         const int64_t numy = d2 * (v1.x - v0.x) - d1 * (v2.x - v0.x);
         a0 = int64_t(A0) << kFrac;
-        gx = (numx * (int64_t(1) << kFrac)) / area2;
-        gy = (numy * (int64_t(1) << kFrac)) / area2;
+        gx = div_fast(numx * (int64_t(1) << kFrac), area2);
+        gy = div_fast(numy * (int64_t(1) << kFrac), area2);
     }
     int64_t at(int64_t dx, int64_t dy) const { return a0 + gx * dx + gy * dy; }
 };
