@@ -101,7 +101,7 @@ Status Cdt<Index>::insert_point(Point p, Index& out, Index hint) {
         return Status::OutOfRange;
     }
     Location<Index> loc;
-    if (Status s = walk(start_vertex(p, hint), p, loc, nullptr); !ok(s)) return s;
+    if (Status s = walk(start_vertex(p, hint), p, loc); !ok(s)) return s;
     using Kind = typename Location<Index>::Kind;
     if (loc.kind == Kind::OnVertex) {
         out = loc.vertex;

@@ -38,7 +38,7 @@ void Cdt<Index>::wedge(Index s, Point p, Index& t, int& k, int64_t& oa) const {
 }
 
 template <typename Index>
-Status Cdt<Index>::walk(Index s, Point p, Location<Index>& out, Index*) {
+Status Cdt<Index>::walk(Index s, Point p, Location<Index>& out) {
     using Kind = typename Location<Index>::Kind;
     if (s == kNone<Index>) {
         // No input vertex yet: test the few triangles there are.
@@ -147,7 +147,7 @@ Status Cdt<Index>::locate(Point p, Index from, Location<Index>& out) {
         return Status::OutOfRange;
     }
     if (from != kNone<Index> && (from < kBoxVertices || from >= nv_)) return Status::OutOfRange;
-    return walk(from, p, out, nullptr);
+    return walk(from, p, out);
 }
 
 } // namespace facet::cdt

@@ -18,10 +18,10 @@ float angle_between(Vec3 a, Vec3 b) {
 
 constexpr float kTwoPi = 6.28318530717958647692f;
 
-bool CE_any_periodic(const Surface& s) { return u_periodic(s) || v_periodic(s); }
+bool any_periodic(const Surface& s) { return u_periodic(s) || v_periodic(s); }
 
 // Makes the periodic coordinates of a loop continuous (see tessellate_face).
-void unwrap_loop(FaceScratch& sc, uint32_t start, uint32_t n, const Pack&, const Surface& S, const pack::Face& F) {
+void unwrap_loop(FaceScratch& sc, uint32_t start, uint32_t n, const Surface& S, const pack::Face& F) {
     for (int axis = 0; axis < 2; ++axis) {
         if (!(axis == 0 ? u_periodic(S) : v_periodic(S))) continue;
         const uint8_t bit = uint8_t(1 << axis);
@@ -224,8 +224,8 @@ FaceResult tessellate_face(const Pack& pack, uint32_t fi, const EdgeSamples& edg
         // Periodic parameters: inverted samples are only known modulo 2 pi. Unwrap them along
         // the loop so it is continuous, starting from a seam sample (its side is known), or
         // else from the first sample taken within pi of the face's middle.
-        if (n > 1 && (elementary || u_periodic(S)) && CE_any_periodic(S)) {
-            unwrap_loop(sc, loop_start, n, pack, S, F);
+        if (n > 1 && any_periodic(S)) {
+            unwrap_loop(sc, loop_start, n, S, F);
         }
         if (np > loop_start) {
             if (nl >= sc.loop_sizes.size()) return fail(Status::Full, "more loops than the face scratch holds");

@@ -83,7 +83,7 @@ private:
     void set_vertex_tri(Index t);
 
     // walks (locate.ipp)
-    Status walk(Index from, Point p, Location<Index>& out, Index* collinear);
+    Status walk(Index from, Point p, Location<Index>& out);
     void wedge(Index s, Point p, Index& t, int& k, int64_t& oa) const;
     Index start_vertex(Point p, Index hint) const;
 
