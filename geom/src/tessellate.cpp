@@ -324,6 +324,51 @@ FaceResult tessellate_face(const Pack& pack, uint32_t fi, const EdgeSamples& edg
         else sc.interior[i - np] = g;
     }
 
+    // 3b. Clean the quantized loops: drop repeated points and collinear U-turns (a spike where
+    //     two pcurves end a hair apart at a corner would be a constraint run both ways, which
+    //     seeds the flood fill on both sides). The per-point arrays move with their points.
+    {
+        uint32_t read = 0, write = 0, kept_loops = 0;
+        for (uint32_t l = 0; l < nl; ++l) {
+            const uint32_t start = write;
+            for (uint32_t k = 0; k < sc.loop_sizes[l]; ++k, ++read) {
+                sc.loop_points[write] = sc.loop_points[read];
+                sc.uv[write] = sc.uv[read];
+                sc.xyz[write] = sc.xyz[read];
+                sc.pinned[write] = sc.pinned[read];
+                ++write;
+                // Pop while the last point repeats its predecessor or turns straight back.
+                while (write - start >= 2) {
+                    const cdt::Point A = write - start >= 3 ? sc.loop_points[write - 3] : cdt::Point{INT32_MIN, 0};
+                    const cdt::Point B = sc.loop_points[write - 2], C = sc.loop_points[write - 1];
+                    if (B == C) {
+                        --write;
+                        continue;
+                    }
+                    if (A.x == INT32_MIN) break;
+                    const int64_t cr = int64_t(B.x - A.x) * (C.y - B.y) - int64_t(B.y - A.y) * (C.x - B.x);
+                    const int64_t dt = int64_t(B.x - A.x) * (C.x - B.x) + int64_t(B.y - A.y) * (C.y - B.y);
+                    if (cr != 0 || dt >= 0) break;
+                    // A -> B -> C folds back on itself: B goes.
+                    sc.loop_points[write - 2] = C;
+                    sc.uv[write - 2] = sc.uv[write - 1];
+                    sc.xyz[write - 2] = sc.xyz[write - 1];
+                    sc.pinned[write - 2] = sc.pinned[write - 1];
+                    --write;
+                }
+            }
+            // The loop closes on its first point: drop a last point equal to it.
+            while (write - start >= 2 && sc.loop_points[write - 1] == sc.loop_points[start]) --write;
+            if (write - start >= 3) sc.loop_sizes[kept_loops++] = write - start;
+            else write = start; // a loop with no area left
+        }
+        if (kept_loops == 0) return fail(Status::Degenerate, "no loop with any area in (u,v)");
+        // The curvature points follow the loop points in uv[].
+        for (uint32_t k = 0; k < ni; ++k) sc.uv[write + k] = sc.uv[np + k];
+        np = write;
+        nl = kept_loops;
+    }
+
     // 4. Triangulate.
     cdt::Cdt<uint16_t> cdt(sc.arena);
     cdt::FaceReport rep;
