@@ -50,6 +50,7 @@ ARENA uint32_t mesh_indices[3 * kMeshTriangles];
 ARENA uint32_t vertex_colour[kMeshVertices];
 ARENA render::ScreenVertex screen[kMeshVertices];
 ARENA uint32_t shell_first_triangle[1024], shell_triangles[1024];
+ARENA uint32_t shell_first_vertex[1024], shell_vertices[1024];
 
 struct Camera {
     float m[9];   // world -> view rotation (rows)
@@ -147,6 +148,7 @@ int facet_main(hal::Board& board) {
     for (uint32_t s = 0; s < pack.shells().size() && ok(st); ++s) {
         const pack::Shell& sh = pack.shells()[s];
         shell_first_triangle[s] = mesh.triangle_count;
+        shell_first_vertex[s] = mesh.vertex_count;
         for (uint32_t f = sh.first_face; f < sh.first_face + sh.face_count; ++f) {
             const uint32_t v0 = mesh.vertex_count;
             const geom::FaceResult r = geom::tessellate_face(pack, f, samples, opt, scratch, mesh);
@@ -164,6 +166,7 @@ int facet_main(hal::Board& board) {
             for (uint32_t v = v0; v < mesh.vertex_count; ++v) vertex_colour[v] = rgb;
         }
         shell_triangles[s] = mesh.triangle_count - shell_first_triangle[s];
+        shell_vertices[s] = mesh.vertex_count - shell_first_vertex[s];
     }
     hal::measure_end(con, "tessellate");
     if (!ok(st)) {
@@ -187,13 +190,7 @@ int facet_main(hal::Board& board) {
     for (const pack::Instance& inst : pack.instances()) {
         const uint32_t first = shell_first_triangle[inst.shell], count = shell_triangles[inst.shell];
         if (!count) continue;
-        // The shell's vertices are contiguous from its first triangle's smallest index.
-        uint32_t lo = 0xFFFFFFFFu, hi = 0;
-        for (uint32_t k = 3 * first; k < 3 * (first + count); ++k) {
-            lo = mesh_indices[k] < lo ? mesh_indices[k] : lo;
-            hi = mesh_indices[k] > hi ? mesh_indices[k] : hi;
-        }
-        project(cam, inst, lo, hi - lo + 1);
+        project(cam, inst, shell_first_vertex[inst.shell], shell_vertices[inst.shell]);
         for (uint32_t t = first; t < first + count; ++t) {
             const uint32_t* id = &mesh_indices[3 * t];
             if (ok(raster.draw(screen[id[0]], screen[id[1]], screen[id[2]], render::Cull::None))) ++drawn;
