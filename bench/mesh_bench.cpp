@@ -140,7 +140,8 @@ bool run_facet(const std::vector<uint8_t>& bytes, const std::vector<TopoDS_Shape
     std::vector<geom::Vec2> uv(kV);
     std::vector<geom::Vec3> xyz(kV);
     std::vector<uint8_t> pin(kV);
-    geom::FaceScratch sc{{av, at, aw, ao, am, ai, ak}, lp, ls, ip, uv, pin, xyz, mo};
+    std::vector<uint64_t> passed(cdt::triangles_for(kV));
+    geom::FaceScratch sc{{av, at, aw, ao, am, ai, ak}, lp, ls, ip, uv, pin, xyz, mo, passed};
     std::vector<geom::MeshVertex> mv(1 << 21);
     std::vector<uint32_t> mi(3u << 21);
     std::vector<Tri> tris;

@@ -1,4 +1,5 @@
 #include "geom/eval.h"
+#include "geom/fmath.h"
 
 namespace facet::geom {
 namespace {
@@ -96,11 +97,15 @@ Curve3Point eval_curve3(const Pack& pack, const Curve& c, float t) {
     switch (CurveType(c.type)) {
     case CurveType::Line: return {v3(q) + v3(q + 3) * t, v3(q + 3)};
     case CurveType::Circle: {
-        const float r = q[9], ct = std::cos(t), st = std::sin(t);
+        const float r = q[9];
+        float st, ct;
+        sincos_f(t, st, ct);
         return {v3(q) + (v3(q + 3) * ct + v3(q + 6) * st) * r, (v3(q + 3) * -st + v3(q + 6) * ct) * r};
     }
     case CurveType::Ellipse: {
-        const float a = q[9], b = q[10], ct = std::cos(t), st = std::sin(t);
+        const float a = q[9], b = q[10];
+        float st, ct;
+        sincos_f(t, st, ct);
         return {v3(q) + v3(q + 3) * (a * ct) + v3(q + 6) * (b * st), v3(q + 3) * (-a * st) + v3(q + 6) * (b * ct)};
     }
     case CurveType::BSpline: {
@@ -117,12 +122,16 @@ Curve2Point eval_curve2(const Pack& pack, const Curve& c, float t) {
     switch (CurveType(c.type)) {
     case CurveType::Line: return {{q[0] + q[2] * t, q[1] + q[3] * t}, {q[2], q[3]}};
     case CurveType::Circle: {
-        const float r = q[6], ct = std::cos(t), st = std::sin(t);
+        const float r = q[6];
+        float st, ct;
+        sincos_f(t, st, ct);
         return {{q[0] + r * (q[2] * ct + q[4] * st), q[1] + r * (q[3] * ct + q[5] * st)},
                 {r * (-q[2] * st + q[4] * ct), r * (-q[3] * st + q[5] * ct)}};
     }
     case CurveType::Ellipse: {
-        const float a = q[6], b = q[7], ct = std::cos(t), st = std::sin(t);
+        const float a = q[6], b = q[7];
+        float st, ct;
+        sincos_f(t, st, ct);
         return {{q[0] + a * ct * q[2] + b * st * q[4], q[1] + a * ct * q[3] + b * st * q[5]},
                 {-a * st * q[2] + b * ct * q[4], -a * st * q[3] + b * ct * q[5]}};
     }
@@ -141,23 +150,34 @@ SurfacePoint eval_surface(const Pack& pack, const Surface& s, float u, float v) 
     switch (SurfaceType(s.type)) {
     case SurfaceType::Plane: return {O + X * u + Y * v, X, Y};
     case SurfaceType::Cylinder: {
-        const float r = q[12], cu = std::cos(u), su = std::sin(u);
+        const float r = q[12];
+        float su, cu;
+        sincos_f(u, su, cu);
         const Vec3 radial = X * cu + Y * su;
         return {O + radial * r + Z * v, (X * -su + Y * cu) * r, Z};
     }
     case SurfaceType::Cone: {
-        const float r0 = q[12], a = q[13], cu = std::cos(u), su = std::sin(u);
-        const float r = r0 + v * std::sin(a);
+        const float r0 = q[12], a = q[13];
+        float su, cu, sa, ca;
+        sincos_f(u, su, cu);
+        sincos_f(a, sa, ca);
+        const float r = r0 + v * sa;
         const Vec3 radial = X * cu + Y * su;
-        return {O + radial * r + Z * (v * std::cos(a)), (X * -su + Y * cu) * r, radial * std::sin(a) + Z * std::cos(a)};
+        return {O + radial * r + Z * (v * ca), (X * -su + Y * cu) * r, radial * sa + Z * ca};
     }
     case SurfaceType::Sphere: {
-        const float r = q[12], cu = std::cos(u), su = std::sin(u), cv = std::cos(v), sv = std::sin(v);
+        const float r = q[12];
+        float su, cu, sv, cv;
+        sincos_f(u, su, cu);
+        sincos_f(v, sv, cv);
         const Vec3 radial = X * cu + Y * su;
         return {O + radial * (r * cv) + Z * (r * sv), (X * -su + Y * cu) * (r * cv), radial * (-r * sv) + Z * (r * cv)};
     }
     case SurfaceType::Torus: {
-        const float R = q[12], r = q[13], cu = std::cos(u), su = std::sin(u), cv = std::cos(v), sv = std::sin(v);
+        const float R = q[12], r = q[13];
+        float su, cu, sv, cv;
+        sincos_f(u, su, cu);
+        sincos_f(v, sv, cv);
         const Vec3 radial = X * cu + Y * su;
         return {O + radial * (R + r * cv) + Z * (r * sv), (X * -su + Y * cu) * (R + r * cv), radial * (-r * sv) + Z * (r * cv)};
     }
@@ -197,7 +217,8 @@ SurfacePoint eval_surface(const Pack& pack, const Surface& s, float u, float v) 
         auto rotate = [&](Vec3 w, float cu, float su) { // Rodrigues
             return w * cu + cross(D, w) * su + D * (dot(D, w) * (1 - cu));
         };
-        const float cu = std::cos(u), su = std::sin(u);
+        float su, cu;
+        sincos_f(u, su, cu);
         const Vec3 rel = c.p - O;
         const Vec3 p = O + rotate(rel, cu, su);
         const Vec3 pu = cross(D, rotate(rel, cu, su));
@@ -218,15 +239,15 @@ namespace {
 // R + r cos v = rho) or on the other side (which = 1: R + r cos v = -rho, possible only on a
 // self-intersecting torus, r > R). Angles are placed within pi of the face's middle.
 Vec2 torus_candidate(const float* q, float x, float y, float z, const float uv_min[2], const float uv_max[2], int which) {
-    const float R = q[12], rho = std::sqrt(x * x + y * y), u1 = std::atan2(y, x);
+    const float R = q[12], rho = std::sqrt(x * x + y * y), u1 = atan2_f(y, x);
     const float um = 0.5f * (uv_min[0] + uv_max[0]), vm = 0.5f * (uv_min[1] + uv_max[1]);
     auto near = [](float a, float mid) {
         float r = std::fmod(a - (mid - kTwoPi / 2), kTwoPi);
         if (r < 0) r += kTwoPi;
         return mid - kTwoPi / 2 + r;
     };
-    return which == 0 ? Vec2{near(u1, um), near(std::atan2(z, rho - R), vm)}
-                      : Vec2{near(u1 + kTwoPi / 2, um), near(std::atan2(z, -rho - R), vm)};
+    return which == 0 ? Vec2{near(u1, um), near(atan2_f(z, rho - R), vm)}
+                      : Vec2{near(u1 + kTwoPi / 2, um), near(atan2_f(z, -rho - R), vm)};
 }
 
 // How far (u,v) lies outside the bounds (0 inside).
@@ -259,17 +280,19 @@ bool invert_elementary(const Pack& pack, const Surface& s, Vec3 P, const float u
     };
     switch (SurfaceType(s.type)) {
     case SurfaceType::Plane: uv = {x, y}; return true;
-    case SurfaceType::Cylinder: uv = {wrap(std::atan2(y, x), uv_min[0]), z}; return true;
+    case SurfaceType::Cylinder: uv = {wrap(atan2_f(y, x), uv_min[0]), z}; return true;
     case SurfaceType::Cone: {
         // v from the height alone; past the apex the radius R + v sin a is negative and the
         // point lies opposite its direction from the axis.
-        const float a = q[13], v = z / std::cos(a);
-        const float turn = q[12] + v * std::sin(a) < 0 ? kTwoPi / 2 : 0;
-        uv = {wrap(std::atan2(y, x) + turn, uv_min[0]), v};
+        float sa, ca;
+        sincos_f(q[13], sa, ca);
+        const float v = z / ca;
+        const float turn = q[12] + v * sa < 0 ? kTwoPi / 2 : 0;
+        uv = {wrap(atan2_f(y, x) + turn, uv_min[0]), v};
         return true;
     }
     case SurfaceType::Sphere:
-        uv = {wrap(std::atan2(y, x), uv_min[0]), std::atan2(z, std::sqrt(x * x + y * y))};
+        uv = {wrap(atan2_f(y, x), uv_min[0]), atan2_f(z, std::sqrt(x * x + y * y))};
         return true;
     case SurfaceType::Torus: {
         const Vec2 c[2] = {torus_candidate(q, x, y, z, uv_min, uv_max, 0), torus_candidate(q, x, y, z, uv_min, uv_max, 1)};

@@ -1,5 +1,7 @@
 #include "geom/tessellate.h"
 
+#include "geom/fmath.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -8,13 +10,18 @@ namespace {
 
 using namespace facet::pack;
 
-float angle_between(Vec3 a, Vec3 b) {
-    const float la = length(a), lb = length(b);
-    if (la == 0 || lb == 0) return 0;
-    float c = dot(a, b) / (la * lb);
-    c = c > 1 ? 1 : (c < -1 ? -1 : c);
-    return std::acos(c);
+// Whether directions a and b turn by more than the angle whose cosine is cos_max (in [0, 1]),
+// without square roots or acos (both are long library calls on a soft-float core). A zero
+// vector turns by nothing.
+bool turns_more(Vec3 a, Vec3 b, float cos_max) {
+    const float l2 = dot(a, a) * dot(b, b);
+    if (l2 == 0) return false;
+    const float d = dot(a, b);
+    if (cos_max < 0) return d < 0 && d * d > cos_max * cos_max * l2;
+    return d < 0 || d * d < cos_max * cos_max * l2;
 }
+
+float length2(Vec3 a) { return dot(a, a); }
 
 constexpr float kTwoPi = 6.28318530717958647692f;
 
@@ -51,7 +58,9 @@ void unwrap_loop(FaceScratch& sc, uint32_t start, uint32_t n, const Surface& S, 
 
 } // namespace
 
-float surface_deviation(const Pack& pack, uint32_t face, Vec3 c, Vec2 uv_guess, Vec2& uv) {
+namespace {
+// The surface point that measures c's deviation (see surface_deviation).
+Vec3 nearest_on_surface(const Pack& pack, uint32_t face, Vec3 c, Vec2 uv_guess, Vec2& uv) {
     const pack::Face& F = pack.faces()[face];
     const Surface& S = pack.surfaces()[F.surface];
     uv = uv_guess;
@@ -59,7 +68,12 @@ float surface_deviation(const Pack& pack, uint32_t face, Vec3 c, Vec2 uv_guess, 
         Vec2 inv;
         if (invert_elementary(pack, S, c, F.uv_min, F.uv_max, inv)) uv = inv;
     }
-    return length(c - eval_surface(pack, S, uv.x, uv.y).p);
+    return eval_surface(pack, S, uv.x, uv.y).p;
+}
+} // namespace
+
+float surface_deviation(const Pack& pack, uint32_t face, Vec3 c, Vec2 uv_guess, Vec2& uv) {
+    return length(c - nearest_on_surface(pack, face, c, uv_guess, uv));
 }
 
 float default_tolerance(const Pack& pack) {
@@ -71,6 +85,7 @@ float default_tolerance(const Pack& pack) {
 
 Status sample_edges(const Pack& pack, const TessOptions& opt, EdgeSamples& out) {
     out.used = 0;
+    const float tol2 = opt.tolerance * opt.tolerance, cos_max = cos_f(opt.max_angle);
     const auto edges = pack.edges();
     if (out.first.size() < edges.size() || out.count.size() < edges.size()) return Status::Full;
     for (uint32_t e = 0; e < edges.size(); ++e) {
@@ -116,8 +131,7 @@ Status sample_edges(const Pack& pack, const TessOptions& opt, EdgeSamples& out) 
             const float len2 = dot(chord, chord);
             const Vec3 off = pm.p - pl.p;
             const float along = len2 > 0 ? dot(off, chord) / len2 : 0;
-            const float dev = length(off - chord * along);
-            const bool split = (dev > opt.tolerance || angle_between(pl.d, pr.d) > opt.max_angle) &&
+            const bool split = (length2(off - chord * along) > tol2 || turns_more(pl.d, pr.d, cos_max)) &&
                                top < kStack && (tr - tl) > 1e-6f * (std::fabs(t1 - t0) + 1e-6f) && out.used - start < 4000;
             if (split) {
                 stack[top++] = 0.5f * (tl + tr);
@@ -208,7 +222,7 @@ FaceResult tessellate_face(const Pack& pack, uint32_t fi, const EdgeSamples& edg
             auto singular = [&](uint32_t i) {
                 const Vec3 d = sc.xyz[loop_start + i] - O;
                 const Vec3 radial = d - Z * dot(d, Z);
-                return length(radial) < 1e-5f * (length(d) + 1e-6f);
+                return length2(radial) < 1e-10f * (length2(d) + 1e-12f);
             };
             for (uint32_t i = 0; i < n; ++i) {
                 if (!singular(i)) continue;
@@ -257,32 +271,43 @@ FaceResult tessellate_face(const Pack& pack, uint32_t fi, const EdgeSamples& edg
         Cell stack[kStack];
         int top = 0;
         stack[top++] = {F.uv_min[0], F.uv_min[1], F.uv_max[0], F.uv_max[1], 0};
-        // The normal's turn, ignoring (near-)singular points: at a pole or apex the normal is
-        // undefined, and a hair past an apex it even points the other way.
-        auto normal_turn = [](const SurfacePoint& A, const SurfacePoint& B) {
-            const Vec3 na = cross(A.du, A.dv), nb = cross(B.du, B.dv);
-            auto degenerate = [](const SurfacePoint& P, Vec3 n) {
-                return length(n) <= 1e-4f * length(P.du) * length(P.dv) + 1e-12f ||
-                       length(P.du) < 1e-4f * length(P.dv) || length(P.dv) < 1e-4f * length(P.du);
-            };
-            return degenerate(A, na) || degenerate(B, nb) ? 0.0f : angle_between(na, nb);
+        // The surface on a 3x3 grid of the cell (corners, edge midpoints, centre): each of the
+        // three lines along u (v) gives its midpoint's sag from the chord and the turn of the
+        // normals at its ends. Normals at (near-)singular points are ignored: at a pole or apex
+        // the normal is undefined, and a hair past an apex it even points the other way.
+        const float tol2 = 0.25f * opt.tolerance * opt.tolerance; // (tolerance / 2)^2
+        const float cos_max = cos_f(opt.max_angle);
+        auto usable = [](const SurfacePoint& P, Vec3 n) {
+            const float a = length2(P.du), b = length2(P.dv);
+            return length2(n) > 1e-8f * a * b + 1e-24f && a >= 1e-8f * b && b >= 1e-8f * a;
         };
-        auto sag = [&](float ua, float va, float ub, float vb, float& turn) {
-            const SurfacePoint A = eval_surface(pack, S, ua, va), B = eval_surface(pack, S, ub, vb);
-            const SurfacePoint M = eval_surface(pack, S, 0.5f * (ua + ub), 0.5f * (va + vb));
-            turn = std::max(turn, normal_turn(A, B));
-            return length(M.p - (A.p + B.p) * 0.5f);
+        auto line = [&](const SurfacePoint& A, const SurfacePoint& M, const SurfacePoint& B, Vec3 na, Vec3 nb,
+                        bool ua, bool ub, bool& over, bool& turned) {
+            over = over || length2(M.p - (A.p + B.p) * 0.5f) > tol2;
+            turned = turned || (ua && ub && turns_more(na, nb, cos_max));
         };
         while (top) {
             const Cell c = stack[--top];
             const float uc = 0.5f * (c.u0 + c.u1), vc = 0.5f * (c.v0 + c.v1);
-            float turn_u = 0, turn_v = 0;
-            const float du = std::max({sag(c.u0, c.v0, c.u1, c.v0, turn_u), sag(c.u0, vc, c.u1, vc, turn_u), sag(c.u0, c.v1, c.u1, c.v1, turn_u)});
-            const float dv = std::max({sag(c.u0, c.v0, c.u0, c.v1, turn_v), sag(uc, c.v0, uc, c.v1, turn_v), sag(c.u1, c.v0, c.u1, c.v1, turn_v)});
+            const float us[3] = {c.u0, uc, c.u1}, vs[3] = {c.v0, vc, c.v1};
+            SurfacePoint P[3][3]; // [u][v]
+            Vec3 N[3][3];
+            bool U[3][3];
+            for (int i = 0; i < 3; ++i) {
+                for (int j = 0; j < 3; ++j) {
+                    P[i][j] = eval_surface(pack, S, us[i], vs[j]);
+                    N[i][j] = cross(P[i][j].du, P[i][j].dv);
+                    U[i][j] = usable(P[i][j], N[i][j]);
+                }
+            }
+            bool over_u = false, turn_u = false, over_v = false, turn_v = false;
+            for (int k = 0; k < 3; ++k) {
+                line(P[0][k], P[1][k], P[2][k], N[0][k], N[2][k], U[0][k], U[2][k], over_u, turn_u);
+                line(P[k][0], P[k][1], P[k][2], N[k][0], N[k][2], U[k][0], U[k][2], over_v, turn_v);
+            }
             // Half the tolerance: a triangle spans about a cell's diagonal, not one side.
-            const float tol = 0.5f * opt.tolerance;
-            bool split_u = (du > tol || turn_u > opt.max_angle) && c.depth < 12;
-            bool split_v = (dv > tol || turn_v > opt.max_angle) && c.depth < 12;
+            bool split_u = (over_u || turn_u) && c.depth < 12;
+            bool split_v = (over_v || turn_v) && c.depth < 12;
             // A cell curved across but much longer than wide (in metric units) would let a
             // triangle span its whole curved width from end to end: cut it shorter too.
             const float w = (c.u1 - c.u0) * su, h = (c.v1 - c.v0) * sv;
@@ -389,7 +414,12 @@ FaceResult tessellate_face(const Pack& pack, uint32_t fi, const EdgeSamples& edg
     auto point_of = [&](uint32_t v) { return sc.mesh_of[v]; }; // CDT vertex -> input point
     auto position = [&](uint32_t i) { return i < np ? sc.xyz[i] : eval_surface(pack, S, sc.uv[i].x, sc.uv[i].y).p; };
     uint32_t total = np + ni;
-    for (int round = 0; round < 12; ++round) {
+    const float tol2 = opt.tolerance * opt.tolerance;
+    // A triangle that passed keeps passing while its slot holds the same three vertices.
+    uint32_t cleared = 0; // passed[] entries valid for this face
+    // A plane's triangles lie on it: nothing to refine.
+    const int rounds = S.type == uint8_t(SurfaceType::Plane) ? 0 : 12;
+    for (int round = 0; round < rounds; ++round) {
         const uint32_t nv_now = cdt.vertex_count();
         if (sc.mesh_of.size() < nv_now) return fail(Status::Full, "more vertices than the face scratch holds");
         for (uint32_t v = 0; v < nv_now; ++v) sc.mesh_of[v] = UINT32_MAX;
@@ -399,6 +429,7 @@ FaceResult tessellate_face(const Pack& pack, uint32_t fi, const EdgeSamples& edg
         }
         uint32_t added = 0;
         const uint16_t nt = cdt.triangle_count();
+        for (; cleared < nt && cleared < sc.passed.size(); ++cleared) sc.passed[cleared] = 0;
         for (uint16_t t = 0; t < nt; ++t) {
             const cdt::Triangle<uint16_t>& T = cdt.triangle(t);
             if (!T.inner()) continue;
@@ -408,10 +439,15 @@ FaceResult tessellate_face(const Pack& pack, uint32_t fi, const EdgeSamples& edg
             // A triangle no longer than the tolerance cannot leave the surface by more (its
             // corners are on it). This also stops refinement where (u,v) is singular (poles,
             // apexes), where the uv centroid is no measure of a tiny 3D triangle.
-            if (std::max({length(p1 - p0), length(p2 - p1), length(p0 - p2)}) <= opt.tolerance) continue;
+            const uint64_t signature = uint64_t(T.v[0]) | uint64_t(T.v[1]) << 16 | uint64_t(T.v[2]) << 32 | uint64_t(1) << 48;
+            if (t < sc.passed.size() && sc.passed[t] == signature) continue; // checked in an earlier round
+            if (std::max({length2(p1 - p0), length2(p2 - p1), length2(p0 - p2)}) <= tol2) continue;
             Vec2 uv;
             const Vec3 c = (p0 + p1 + p2) * (1.0f / 3);
-            if (surface_deviation(pack, fi, c, (sc.uv[i0] + sc.uv[i1] + sc.uv[i2]) * (1.0f / 3), uv) <= opt.tolerance) continue;
+            if (length2(c - nearest_on_surface(pack, fi, c, (sc.uv[i0] + sc.uv[i1] + sc.uv[i2]) * (1.0f / 3), uv)) <= tol2) {
+                if (t < sc.passed.size()) sc.passed[t] = signature;
+                continue;
+            }
             // The new point goes where the surface is nearest the centroid, in this face's branch
             // of (u,v): keep it inside the triangle's (u,v) span.
             if (!(uv.x >= std::min({sc.uv[i0].x, sc.uv[i1].x, sc.uv[i2].x}) && uv.x <= std::max({sc.uv[i0].x, sc.uv[i1].x, sc.uv[i2].x}) &&
@@ -451,7 +487,7 @@ FaceResult tessellate_face(const Pack& pack, uint32_t fi, const EdgeSamples& edg
         if (mesh.vertex_count >= mesh.vertices.size()) return fail(Status::Full, "the mesh is full");
         const SurfacePoint sp = eval_surface(pack, S, sc.uv[i].x, sc.uv[i].y);
         Vec3 n = cross(sp.du, sp.dv);
-        if (length(n) < 1e-12f) { // a pole: look a little toward the middle of the face
+        if (length2(n) < 1e-24f) { // a pole: look a little toward the middle of the face
             const SurfacePoint s2 = eval_surface(pack, S, sc.uv[i].x + 1e-3f * (um - sc.uv[i].x), sc.uv[i].y + 1e-3f * (vm - sc.uv[i].y));
             n = cross(s2.du, s2.dv);
         }

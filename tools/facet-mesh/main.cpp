@@ -131,7 +131,8 @@ int main(int argc, char** argv) {
     std::vector<Vec2> uvs(kV);
     std::vector<Vec3> xyz(kV);
     std::vector<uint8_t> pinned(kV);
-    FaceScratch sc{{av, at, aw, ao, am, ai, ak}, lp, ls, ip, uvs, pinned, xyz, mesh_of};
+    std::vector<uint64_t> passed(cdt::triangles_for(kV));
+    FaceScratch sc{{av, at, aw, ao, am, ai, ak}, lp, ls, ip, uvs, pinned, xyz, mesh_of, passed};
 
     // Mesh per shell, then placed per instance.
     std::vector<MeshVertex> mv(1 << 22);

@@ -18,7 +18,7 @@ namespace facet::geom {
 
 struct TessOptions {
     float tolerance = 0.1f;  // mm, chordal deviation allowed (default: 0.1% of the diagonal)
-    float max_angle = 0.5f;  // rad, turning between neighbouring samples / cell corners
+    float max_angle = 0.5f;  // rad, turning between neighbouring samples / cell corners (< pi)
 };
 
 struct MeshVertex {
@@ -52,6 +52,9 @@ struct FaceScratch {
     std::span<uint8_t> pinned;   // per loop point: bit 0 u, bit 1 v known exactly (seam, pcurve)
     std::span<Vec3> xyz;         // per loop point: the edge sample's 3D point
     std::span<uint32_t> mesh_of; // per CDT vertex: its mesh vertex
+    // Optional, per CDT triangle slot: which triangles already met the tolerance, so that a
+    // refinement round measures only the triangles that changed (empty: measure all, slower).
+    std::span<uint64_t> passed = {};
 };
 
 struct FaceResult {
