@@ -7,6 +7,7 @@
 #include "hal/print.h"
 #include "memory_report.h"
 #include "input_uart.h"
+#include "mouse_pl050.h"
 #include "runtime.h"
 #include "stack.h"
 
@@ -17,7 +18,17 @@ namespace {
 Pl011Console console;
 Sp804Clock clock;
 Pl110Display display;
-boards::UartInput input(console);
+boards::UartInput uart_input(console);
+Pl050Mouse mouse;
+bool mouse_ok = false;
+
+// Keys from the UART and the PS/2 mouse, in one stream.
+class BoardInput final : public hal::Input {
+public:
+    bool poll(hal::InputEvent& event) override {
+        return (mouse_ok && mouse.poll(event)) || uart_input.poll(event);
+    }
+} input;
 hal::Board the_board{board_config::kName, console, clock, display, input};
 } // namespace
 } // namespace facet::versatilepb
@@ -29,6 +40,7 @@ extern "C" [[noreturn]] void board_reset() {
     versatilepb::console.init();
     versatilepb::clock.init();
     versatilepb::display.init();
+    versatilepb::mouse_ok = versatilepb::mouse.init();
     runtime::run_main();
 }
 

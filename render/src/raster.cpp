@@ -247,6 +247,30 @@ Status Rasterizer::scan(const ScreenVertex& v0, const ScreenVertex& v1, const Sc
     return Status::Ok;
 }
 
+Status Rasterizer::line(const ScreenVertex& a, const ScreenVertex& b, hal::Rgb565 colour, uint16_t bias) {
+    if (!in_guard(a) || !in_guard(b)) return Status::OutOfRange;
+    const int32_t x0 = a.x >> 4, y0 = a.y >> 4, x1 = b.x >> 4, y1 = b.y >> 4;
+    const int32_t dx = x1 - x0, dy = y1 - y0;
+    const int32_t n = (dx < 0 ? -dx : dx) > (dy < 0 ? -dy : dy) ? (dx < 0 ? -dx : dx) : (dy < 0 ? -dy : dy);
+    // 16.16 positions and depth, stepped once per pixel along the longer axis.
+    int32_t x = (x0 << 16) + 0x8000, y = (y0 << 16) + 0x8000;
+    int32_t z = int32_t(a.z) << 8;
+    const int32_t sx = n ? int32_t((int64_t(dx) << 16) / n) : 0, sy = n ? int32_t((int64_t(dy) << 16) / n) : 0;
+    const int32_t sz = n ? (int32_t(b.z) - int32_t(a.z)) * 256 / n : 0;
+    for (int32_t i = 0; i <= n; ++i, x += sx, y += sy, z += sz) {
+        const int32_t px = x >> 16, py = y >> 16;
+        if (px < 0 || py < 0 || px >= width_ || py >= height_) continue;
+        int32_t zv = (z >> 8) - bias;
+        zv = zv < 0 ? 0 : zv;
+        uint16_t& d = depth_[size_t(py) * width_ + px];
+        if (zv >= d) continue;
+        d = uint16_t(zv);
+        ++stats.pixels;
+        if (Status s = display_.fill_span(uint16_t(px), uint16_t(py), 1, colour); !ok(s)) return s;
+    }
+    return Status::Ok;
+}
+
 Status Rasterizer::flush(int32_t from, int32_t to, int64_t y) {
     const uint16_t n = static_cast<uint16_t>(to - from);
     ++stats.spans;

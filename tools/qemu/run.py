@@ -12,7 +12,10 @@ What it does:
   * '@shot NAME' from the firmware: takes a PNG screendump over QMP into OUT/NAME.png and
     acknowledges over the UART; '@dump NAME FILE': converts a framebuffer the board wrote via
     semihosting (F565) into OUT/NAME.png;
-  * --type TEXT: types TEXT into the UART (C-style escapes allowed, e.g. 'r\\n');
+  * --type TEXT: types TEXT into the UART at boot (C-style escapes allowed, e.g. 'r\\n');
+  * --send ENTRY (repeatable): a scripted session; each time the firmware prints '@idle' the
+    next entry is sent: 'keys TEXT' types TEXT (escapes allowed), 'mouse DX DY [BUTTON]' drags
+    the PS/2 mouse over QMP (button left/right/middle held during the move);
   * --icount: loads the facet-icount TCG plugin and names its numbered regions from the
     firmware's '@begin NAME' lines; --limit N stops any region over N instructions;
     --budget NAME=N fails the run if region NAME used more than N instructions;
@@ -102,6 +105,8 @@ def main():
     ap.add_argument('--out', required=True, help='directory for uart.log, screenshots, report.json')
     ap.add_argument('--load', action='append', default=[], metavar='FILE@ADDR')
     ap.add_argument('--type', default='', help='text typed into the UART at boot')
+    ap.add_argument('--send', action='append', default=[], metavar='ENTRY',
+                    help="sent at each '@idle': 'keys TEXT' or 'mouse DX DY [left|right|middle]'")
     ap.add_argument('--timeout', type=float, default=120)
     ap.add_argument('--icount', action='store_true', help='count instructions between markers')
     ap.add_argument('--limit', type=int, default=0, help='fail any region above N instructions')
@@ -171,6 +176,7 @@ def main():
     report = {'board': args.board, 'elf': os.path.relpath(elf, ROOT), 'regions': [], 'ram': {},
               'shots': [], 'exit_code': None, 'failures': []}
     begins = []
+    script = list(args.send)
     log = open(os.path.join(out, 'uart.log'), 'w')
     deadline = time.time() + args.timeout
     open_streams, timed_out = 2, False
@@ -196,6 +202,34 @@ def main():
             print(line, flush=True)
         words = line.split()
         if not words:
+            continue
+        if words[0] == '@idle':
+            # Each entry ends with ENQ (0x05) on the UART: the firmware says '@idle' again only
+            # once it has handled everything before it (mouse packets are polled first).
+            if script:
+                entry = script.pop(0)
+                kind, _, rest = entry.partition(' ')
+                if kind == 'keys':
+                    proc.stdin.write(rest.encode().decode('unicode_escape').encode('latin-1'))
+                    proc.stdin.flush()
+                elif kind == 'mouse':
+                    p = rest.split()
+                    button = p[2] if len(p) > 2 else 'left'
+                    try:
+                        if qmp is None:
+                            qmp = Qmp(qmp_path)
+                        press = lambda down: {'type': 'btn', 'data': {'down': down, 'button': button}}
+                        qmp.command('input-send-event', events=[press(True)])
+                        qmp.command('input-send-event', events=[
+                            {'type': 'rel', 'data': {'axis': 'x', 'value': int(p[0])}},
+                            {'type': 'rel', 'data': {'axis': 'y', 'value': int(p[1])}}])
+                        qmp.command('input-send-event', events=[press(False)])
+                    except (OSError, RuntimeError, IndexError, ValueError) as e:
+                        report['failures'].append(f'mouse {rest}: {e}')
+                else:
+                    report['failures'].append(f'unknown script entry: {entry}')
+                proc.stdin.write(b'\x05')
+                proc.stdin.flush()
             continue
         if words[0] == '@shot' and len(words) == 2:
             name = words[1]

@@ -48,6 +48,13 @@ public:
     Status draw(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c,
                 Cull cull = Cull::Back);
 
+    // Draws a one-pixel line from a to b (pixel centres nearest the ends, every pixel on the
+    // way: a DDA along the longer axis) in one colour. Depth-tested like triangles, but pulled
+    // `bias` units toward the eye first, so an edge of a surface shows on that surface (CAD
+    // edges over faces); it writes its depth, so faces drawn later behind it keep it.
+    // OutOfRange (nothing drawn) if an end is outside the guard band.
+    Status line(const ScreenVertex& a, const ScreenVertex& b, hal::Rgb565 colour, uint16_t bias);
+
     RasterStats stats;
 
 private:
