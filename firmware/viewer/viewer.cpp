@@ -424,9 +424,12 @@ void Viewer::present() {
     hal::Console& con = board_.console;
     const int b = buffers_ == 2 ? back_ : 0;
     if (stale_[b]) {
+        raster_[b].stats = {};
         hal::measure_begin(con, "frame");
         draw_full(b);
         hal::measure_end(con, "frame");
+        const render::RasterStats& st = raster_[b].stats;
+        print(con, "@frame triangles {} culled {} spans {} pixels {}\n", st.triangles, st.culled, st.spans, st.pixels);
         stale_[b] = false;
     } else {
         for (uint32_t k = applied_[b]; k < totals_.done; ++k) {

@@ -1,11 +1,13 @@
 #include "render/raster.h"
 
+#include <algorithm>
 #include <cstdint>
 
 namespace facet::render {
 namespace {
 
 constexpr int kFrac = 12; // fractional bits of interpolated attributes
+constexpr int64_t kSmall = 32; // triangles whose pixel box is under this (both ways) take scan_small
 
 // Truncating division, in 32 bits when both operands fit (a 64-bit divide is a long library
 // call on 32-bit cores; most triangles are small enough for the 32-bit one). Same result.
@@ -110,27 +112,25 @@ struct Plane {
     int64_t at(int64_t dx, int64_t dy) const { return a0 + gx * dx + gy * dy; }
 };
 
-// One attribute's walk along a span, in 32 bits.
-struct SpanValue {
-    int32_t v, step;
-    bool in_range; // start and end both within [0, max]: no clamping needed along the span
+// One attribute over a triangle, stepped per pixel and per row in 32-bit modular arithmetic
+// (exact wherever the true value fits in 32 bits: everywhere inside the triangle), in kFrac
+// fixed point, read back clamped to the range of its three vertex values.
+struct Interp {
+    uint32_t row = 0, sx = 0, sy = 0; // value at the current row's column 0; steps per pixel
+    int32_t lo = 0, hi = 0;
 
-    SpanValue(int64_t start, int64_t gx, int64_t n, int32_t max) {
-        constexpr int64_t kLimit = int64_t(1) << 29; // v + step never overflows 32 bits
-        int64_t st = gx * 16;
-        st = st > kLimit ? kLimit : (st < -kLimit ? -kLimit : st);
-        const int64_t end = start + st * (n - 1);
-        const int64_t top = (int64_t(max) << kFrac) | ((1 << kFrac) - 1);
-        in_range = start >= 0 && start <= top && end >= 0 && end <= top;
-        v = static_cast<int32_t>(start < -kLimit ? -kLimit : (start > kLimit ? kLimit : start));
-        step = static_cast<int32_t>(st);
+    Interp() = default;
+    Interp(const int32_t v[3], int64_t gx, int64_t gy, int64_t at_origin)
+        : row(uint32_t(at_origin)), sx(uint32_t(gx * 16)), sy(uint32_t(gy * 16)) {
+        const int32_t mn = std::min({v[0], v[1], v[2]}), mx = std::max({v[0], v[1], v[2]});
+        lo = mn << kFrac;
+        hi = (mx << kFrac) | ((1 << kFrac) - 1);
+    }
+    int32_t value(uint32_t v) const {
+        const int32_t s = int32_t(v);
+        return (s < lo ? lo : (s > hi ? hi : s)) >> kFrac;
     }
 };
-
-inline int32_t clamp_channel(int32_t v, int32_t max) {
-    const int32_t c = v >> kFrac;
-    return c < 0 ? 0 : (c > max ? max : static_cast<int32_t>(c));
-}
 
 } // namespace
 
@@ -190,15 +190,22 @@ Status Rasterizer::scan(const ScreenVertex& v0, const ScreenVertex& v1, const Sc
     col1 = col1 > width_ - 1 ? width_ - 1 : col1;
     if (row0 > row1 || col0 > col1) return Status::Ok;
 
+    if (col1 - col0 < kSmall && row1 - row0 < kSmall) {
+        return scan_small(v0, v1, v2, area2, int32_t(row0), int32_t(row1), int32_t(col0), int32_t(col1));
+    }
     const int64_t sy0 = row0 * 16 + 8;
     EdgeWalk edges[3];
     edges[0].start(v1, v2, sy0);
     edges[1].start(v2, v0, sy0);
     edges[2].start(v0, v1, sy0);
-    const Plane pz(v0.z, v1.z, v2.z, v0, v1, v2, area2);
-    const Plane pr(v0.r, v1.r, v2.r, v0, v1, v2, area2);
-    const Plane pg(v0.g, v1.g, v2.g, v0, v1, v2, area2);
-    const Plane pb(v0.b, v1.b, v2.b, v0, v1, v2, area2);
+    // Attributes: exact gradients, then stepped in 32-bit modular arithmetic (exact wherever
+    // the true value fits, i.e. inside the triangle) and clamped to the vertices' range.
+    const int32_t vals[4][3] = {{v0.z, v1.z, v2.z}, {v0.r, v1.r, v2.r}, {v0.g, v1.g, v2.g}, {v0.b, v1.b, v2.b}};
+    Interp at[4];
+    for (int k = 0; k < 4; ++k) {
+        const Plane pl(vals[k][0], vals[k][1], vals[k][2], v0, v1, v2, area2);
+        at[k] = Interp(vals[k], pl.gx, pl.gy, pl.at(8 - v0.x, sy0 - v0.y));
+    }
 
     for (int64_t y = row0; y <= row1; ++y) {
         int64_t lo = col0, hi = col1;
@@ -208,41 +215,120 @@ Status Rasterizer::scan(const ScreenVertex& v0, const ScreenVertex& v1, const Sc
         edges[0].next_row();
         edges[1].next_row();
         edges[2].next_row();
-        if (lo > hi) continue;
-
-        const int64_t dx = lo * 16 + 8 - v0.x, dy = y * 16 + 8 - v0.y, n = hi - lo + 1;
-        SpanValue z(pz.at(dx, dy), pz.gx, n, 0xFFFF), r(pr.at(dx, dy), pr.gx, n, 255);
-        SpanValue g(pg.at(dx, dy), pg.gx, n, 255), b(pb.at(dx, dy), pb.gx, n, 255);
-        const bool fast = z.in_range && r.in_range && g.in_range && b.in_range;
+        if (lo > hi) {
+            for (Interp& t : at) t.row += t.sy;
+            continue;
+        }
+        const int32_t x0 = static_cast<int32_t>(lo), x1 = static_cast<int32_t>(hi);
+        uint32_t z = at[0].row + at[0].sx * uint32_t(x0), r = at[1].row + at[1].sx * uint32_t(x0);
+        uint32_t g = at[2].row + at[2].sx * uint32_t(x0), b = at[3].row + at[3].sx * uint32_t(x0);
+        for (Interp& t : at) t.row += t.sy;
 
         uint16_t* drow = &depth_[size_t(y) * width_];
         hal::Rgb565* line = line_.data();
-        const int32_t x0 = static_cast<int32_t>(lo), x1 = static_cast<int32_t>(hi);
         int32_t run = -1; // first column of the pending run of visible pixels
         for (int32_t x = x0; x <= x1; ++x) {
-            const uint16_t zv = fast ? static_cast<uint16_t>(z.v >> kFrac)
-                                     : static_cast<uint16_t>(clamp_channel(z.v, 0xFFFF));
+            const uint16_t zv = uint16_t(at[0].value(z));
             if (zv < drow[x]) {
                 drow[x] = zv;
-                line[x] = fast ? static_cast<hal::Rgb565>(((r.v >> (kFrac + 3)) << 11) |
-                                                          ((g.v >> (kFrac + 2)) << 5) |
-                                                          (b.v >> (kFrac + 3)))
-                               : static_cast<hal::Rgb565>((clamp_channel(r.v, 255) >> 3) << 11 |
-                                                          (clamp_channel(g.v, 255) >> 2) << 5 |
-                                                          (clamp_channel(b.v, 255) >> 3));
+                line[x] = static_cast<hal::Rgb565>(((at[1].value(r) >> 3) << 11) | ((at[2].value(g) >> 2) << 5) |
+                                                   (at[3].value(b) >> 3));
                 if (run < 0) run = x;
             } else if (run >= 0) {
                 if (Status s = flush(run, x, y); !ok(s)) return s;
                 run = -1;
             }
-            z.v += z.step;
-            r.v += r.step;
-            g.v += g.step;
-            b.v += b.step;
+            z += at[0].sx, r += at[1].sx, g += at[2].sx, b += at[3].sx;
         }
         if (run >= 0) {
             if (Status s = flush(run, x1 + 1, y); !ok(s)) return s;
         }
+    }
+    return Status::Ok;
+}
+
+// Small triangles (most of a tessellated model on a handheld's screen): the triangle's pixel
+// box in 32-bit arithmetic, edge functions and attributes stepped per pixel. Coverage is the
+// same predicate as EdgeWalk's (the same pixels, top-left rule included). Attribute gradients
+// come from one reciprocal of the area (2^-15 relative error: a fraction of a unit inside a
+// triangle no thinner than a quarter of its box), or from exact divisions for slivers; values
+// are clamped to the vertices' range either way.
+Status Rasterizer::scan_small(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2,
+                              int64_t area2, int32_t row0, int32_t row1, int32_t col0, int32_t col1) {
+    const int32_t ox = col0 * 16 + 8, oy = row0 * 16 + 8; // the first pixel's centre
+    struct Edge {
+        int32_t e, sx, sy; // value at the current pixel; steps per pixel in x and y
+    } ed[3];
+    const ScreenVertex* from[3] = {&v1, &v2, &v0};
+    const ScreenVertex* to[3] = {&v2, &v0, &v1};
+    for (int i = 0; i < 3; ++i) {
+        const int32_t dx = to[i]->x - from[i]->x, dy = to[i]->y - from[i]->y;
+        const int32_t bias = (dy < 0 || (dy == 0 && dx > 0)) ? 0 : 1;
+        const int32_t px = from[i]->x - ox, py = from[i]->y - oy;
+        ed[i].e = dx * (0 - py) - dy * (0 - px) - bias;
+        ed[i].sx = -16 * dy;
+        ed[i].sy = 16 * dx;
+    }
+    // One reciprocal of the doubled area (normalized to 16 bits), then every gradient by it.
+    const uint32_t a = uint32_t(area2);
+    const int bits = 32 - __builtin_clz(a);
+    const int e = bits - 16;
+    const uint32_t an = e >= 0 ? a >> e : a << -e;
+    const int64_t recip = int64_t(0x80000000u / an);
+    const int shift = 31 + e - kFrac; // gradient in kFrac fixed point per sub-pixel unit
+    // Thinner than a quarter of its box: exact gradients (eight divisions) instead.
+    const int32_t bw = std::max({v0.x, v1.x, v2.x}) - std::min({v0.x, v1.x, v2.x});
+    const int32_t bh = std::max({v0.y, v1.y, v2.y}) - std::min({v0.y, v1.y, v2.y});
+    const bool sliver = int64_t(bw) * bh > 4 * area2;
+    Interp at[4];
+    const int32_t vals[4][3] = {{v0.z, v1.z, v2.z}, {v0.r, v1.r, v2.r}, {v0.g, v1.g, v2.g}, {v0.b, v1.b, v2.b}};
+    const int32_t y1 = v1.y - v0.y, y2 = v2.y - v0.y, x1 = v1.x - v0.x, x2 = v2.x - v0.x;
+    for (int k = 0; k < 4; ++k) {
+        const int32_t A0 = vals[k][0], d1 = vals[k][1] - A0, d2 = vals[k][2] - A0;
+        const int64_t numx = int64_t(d1) * y2 - int64_t(d2) * y1;
+        const int64_t numy = int64_t(d2) * x1 - int64_t(d1) * x2;
+        int64_t gx, gy;
+        if (sliver) { // exact: the reciprocal's error would grow with the gradients
+            gx = div_fast(numx * (int64_t(1) << kFrac), area2);
+            gy = div_fast(numy * (int64_t(1) << kFrac), area2);
+        } else {
+            gx = shift >= 0 ? (numx * recip) >> shift : (numx * recip) << -shift;
+            gy = shift >= 0 ? (numy * recip) >> shift : (numy * recip) << -shift;
+        }
+        at[k] = Interp(vals[k], gx, gy, (int64_t(A0) << kFrac) + gx * (ox - v0.x) + gy * (oy - v0.y));
+    }
+    for (int32_t y = row0; y <= row1; ++y) {
+        int32_t e0 = ed[0].e, e1 = ed[1].e, e2 = ed[2].e;
+        uint32_t z = at[0].row, r = at[1].row, g = at[2].row, b = at[3].row;
+        uint16_t* drow = &depth_[size_t(y) * width_];
+        hal::Rgb565* line = line_.data();
+        int32_t run = -1, run_end = 0; // the pending run of visible pixels: [run, run_end)
+        bool entered = false;
+        for (int32_t x = col0; x <= col1; ++x) {
+            if ((e0 | e1 | e2) >= 0) {
+                entered = true;
+                const uint16_t zv = uint16_t(at[0].value(z));
+                if (zv < drow[x]) {
+                    drow[x] = zv;
+                    line[x] = static_cast<hal::Rgb565>(((at[1].value(r) >> 3) << 11) | ((at[2].value(g) >> 2) << 5) |
+                                                       (at[3].value(b) >> 3));
+                    if (run < 0) run = x;
+                    run_end = x + 1;
+                } else if (run >= 0) {
+                    if (Status s = flush(run, x, y); !ok(s)) return s;
+                    run = -1;
+                }
+            } else if (entered) {
+                break; // convex: the row's span is over
+            }
+            e0 += ed[0].sx, e1 += ed[1].sx, e2 += ed[2].sx;
+            z += at[0].sx, r += at[1].sx, g += at[2].sx, b += at[3].sx;
+        }
+        if (run >= 0) {
+            if (Status s = flush(run, run_end, y); !ok(s)) return s;
+        }
+        ed[0].e += ed[0].sy, ed[1].e += ed[1].sy, ed[2].e += ed[2].sy;
+        for (Interp& t : at) t.row += t.sy;
     }
     return Status::Ok;
 }
