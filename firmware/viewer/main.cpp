@@ -17,12 +17,7 @@ namespace {
 using namespace facet;
 
 constexpr uint32_t kPixels = uint32_t(board_config::kDisplayWidth) * board_config::kDisplayHeight;
-constexpr size_t kFaces = 8192;
-constexpr size_t kEdges = 16384;
-constexpr size_t kSamples = 65536;       // edge samples of the whole model
-constexpr size_t kFaceVertices = 12000;  // per face, in the 16-bit CDT arena
-constexpr size_t kMeshVertices = 65536;
-constexpr size_t kMeshTriangles = 98304;
+using namespace viewer::capacity;
 
 #define ARENA __attribute__((section(".arena")))
 __attribute__((section(".zbuffer"))) uint16_t depth[2][kPixels]; // one per display buffer
@@ -38,7 +33,7 @@ ARENA int32_t sample_q[3 * kSamples];
 ARENA cdt::Arena<uint16_t, kFaceVertices> arena;
 ARENA cdt::Point loop_points[kFaceVertices];
 ARENA cdt::Point interior[kFaceVertices];
-ARENA uint32_t loop_sizes[512];
+ARENA uint32_t loop_sizes[kLoops];
 ARENA geom::Vec2 face_uv[kFaceVertices];
 ARENA uint8_t pinned[kFaceVertices];
 ARENA geom::Vec3 face_xyz[kFaceVertices];

@@ -24,6 +24,18 @@
 
 namespace facet::viewer {
 
+// Capacities of the viewer's buffers: the firmware's static arrays and the host reference
+// renderer's vectors are both sized from these, so both tessellate and draw identically.
+namespace capacity {
+constexpr size_t kFaces = 8192;
+constexpr size_t kEdges = 16384;
+constexpr size_t kSamples = 65536;       // edge samples of the whole model
+constexpr size_t kFaceVertices = 12000;  // per face, in the 16-bit CDT arena
+constexpr size_t kLoops = 512;           // per face
+constexpr size_t kMeshVertices = 65536;
+constexpr size_t kMeshTriangles = 98304;
+} // namespace capacity
+
 struct DrawVertex {
     int32_t p[3];  // shell coordinates in units of the pack's diagonal / 2^20
     int16_t n[3];  // unit normal, Q14
