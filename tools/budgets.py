@@ -3,12 +3,19 @@
 
 Budgets of the handheld: all RAM <= 32 MiB (33,554,432 bytes); CPU time in exact guest
 instructions at 600 MHz, one instruction per cycle; tessellating a model <= 600 M instructions
-(1 s); one frame <= 20 M instructions (30 frames/s). Prints a table and writes --json; with
---strict, exits non-zero if a budget is exceeded (the tests' use); otherwise it reports.
+(1 s); one frame <= 20 M instructions per 10,000 triangles in view, at least 20 M (30 frames/s).
+Tessellation = the viewer's 'edges' region + every 'face' region of its first pass (uart.log
+beside the report). Prints a table, writes --json and --markdown; with --strict, exits non-zero
+if a budget is exceeded; otherwise it reports.
 """
 import argparse
 import json
+import os
+import re
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), 'tests', 'qemu'))
+from viewer_test import analyse, frame_budget  # noqa: E402  (one definition of the regions' meaning)
 
 RAM_BUDGET = 32 << 20
 FRAME_BUDGET = 20_000_000
@@ -21,47 +28,74 @@ def main():
     ap.add_argument('report')
     ap.add_argument('--json', required=True)
     ap.add_argument('--model', default='')
+    ap.add_argument('--markdown')
     ap.add_argument('--strict', action='store_true')
     args = ap.parse_args()
     rep = json.load(open(args.report))
     ram = {k: v for k, v in rep['ram'].items() if k != 'total'}
     total = rep['ram'].get('total', sum(ram.values()))
-    frames = [r for r in rep['regions'] if r['name'].startswith('draw') or r['name'] == 'frame']
-    tess = next((r['instructions'] for r in rep['regions'] if r['name'] == 'tessellate'), None)
-    model = rep.get('model', {})
+    uart_path = os.path.join(os.path.dirname(os.path.abspath(args.report)), 'uart.log')
+    uart = open(uart_path).read() if os.path.exists(uart_path) else ''
+    passes, frame_list = analyse(uart, rep['regions'])
+    tess = passes.get(0)
+    m = re.search(r'^@tessellation faces (\d+) failed (\d+) triangles (\d+) vertices (\d+) mesh_bytes (\d+) '
+                  r'arena_peak (\d+)', uart, re.M)
+    frames = [{'name': f'frame {i + 1}', 'instructions': f['instructions'], 'triangles': f['triangles'],
+               'ms_at_600mhz': None if f['instructions'] is None else round(f['instructions'] / 600e3, 2)}
+              for i, f in enumerate(frame_list)]
     out = {
         'board': rep['board'],
+        'model': args.model,
         'ram_bytes': ram,
         'ram_total_bytes': total,
         'ram_budget_bytes': RAM_BUDGET,
         'stack_used_bytes': rep.get('stack_used'),
-        'frames': [{'name': r['name'], 'frame_instructions': r['instructions'],
-                    'ms_at_600mhz': r['ms_at_600mhz']} for r in frames],
-        'frame_budget_instructions': FRAME_BUDGET,
+        'faces': int(m.group(1)) if m else None,
+        'faces_failed': int(m.group(2)) if m else None,
+        'triangles': int(m.group(3)) if m else None,
+        'mesh_bytes': int(m.group(5)) if m else None,
+        'arena_peak': int(m.group(6)) if m else None,
+        'tri_instructions': tess,
+        'tri_ms_at_600mhz': None if tess is None else round(tess / 600e3, 1),
+        'frame_instructions': max((f['instructions'] or 0 for f in frame_list
+                                   if m and f['triangles'] == int(m.group(3))), default=None),
+        'frames': frames,
+        'frame_budget_instructions_per_10k_triangles': FRAME_BUDGET,
+        'tessellation_budget_instructions': TESSELLATION_BUDGET,
         'exit_code': rep['exit_code'],
     }
-    if args.model or tess is not None:
-        out['model'] = args.model
-        out.update({k: model.get(k) for k in ('faces', 'faces_failed', 'triangles', 'mesh_bytes')})
-        out['tri_instructions'] = tess
-        out['tri_ms_at_600mhz'] = None if tess is None else round(tess / 600e3, 1)
-        out['frame_instructions'] = frames[0]['instructions'] if frames else None
     fails = list(rep['failures'])
     if total > RAM_BUDGET:
         fails.append(f'RAM {total} bytes > {RAM_BUDGET}')
     for f in out['frames']:
-        if f['frame_instructions'] is None or f['frame_instructions'] > FRAME_BUDGET:
-            fails.append(f'{f["name"]}: {f["frame_instructions"]} instructions > {FRAME_BUDGET}')
+        if f['instructions'] is None or f['instructions'] > frame_budget(f['triangles']):
+            fails.append(f'{f["name"]} ({f["triangles"]:,} triangles): {f["instructions"]} instructions > '
+                         f'{frame_budget(f["triangles"]):,.0f}')
     if tess is not None and tess > TESSELLATION_BUDGET:
         fails.append(f'tessellation: {tess:,} instructions > {TESSELLATION_BUDGET:,}')
     out['within_budget'] = not fails and rep['exit_code'] == 0
     with open(args.json, 'w') as fh:
         json.dump(out, fh, indent=2)
+    if args.markdown:
+        with open(args.markdown, 'w') as fh:
+            fh.write(f'# Budget report — {out["board"]} — {args.model}\n\n')
+            fh.write('| measure | value | budget |\n|---|---:|---:|\n')
+            if tess is not None:
+                fh.write(f'| tessellation | {tess:,} instructions ({tess / 600e3:.0f} ms) | 600,000,000 (1 s) |\n')
+            for f in out['frames']:
+                if f['instructions'] is not None:
+                    fh.write(f'| {f["name"]} ({f["triangles"]:,} triangles) | {f["instructions"]:,} '
+                             f'({f["instructions"] / 600e3:.1f} ms) | {frame_budget(f["triangles"]):,.0f} |\n')
+            fh.write(f'| CDT arena peak | {out["arena_peak"]} bytes | |\n| mesh | {out["mesh_bytes"]} bytes | |\n')
+            fh.write('\n| RAM section | bytes |\n|---|---:|\n')
+            for k, v in ram.items():
+                fh.write(f'| {k} | {v:,} |\n')
+            fh.write(f'| total | {total:,} (budget {RAM_BUDGET:,}) |\n')
 
     print(f'\nBudget report — {rep["board"]}' + (f' — {args.model}' if args.model else ''))
-    if 'faces' in out and out['faces'] is not None:
+    if out['faces'] is not None:
         print(f'  model: {out["faces"]} faces ({out["faces_failed"]} failed), {out["triangles"]:,} triangles, '
-              f'mesh {out["mesh_bytes"]:,} bytes')
+              f'mesh {out["mesh_bytes"]:,} bytes, CDT arena peak {out["arena_peak"]:,} bytes')
     if tess is not None:
         print(f'  tessellation on the device: {tess:,} instructions = {tess / 600e3:.0f} ms at 600 MHz '
               f'(budget {TESSELLATION_BUDGET:,} = 1 s)')
@@ -71,11 +105,11 @@ def main():
     print(f'    {"total":<14} {total:>12,}  ({100.0 * total / RAM_BUDGET:.1f}% of the budget)')
     if rep.get('stack_used') is not None:
         print(f'  stack high-water: {rep["stack_used"]:,} of {rep["stack_size"]:,} bytes')
-    print(f'  frames (budget {FRAME_BUDGET:,} instructions = 33.3 ms at {MHZ} MHz):')
+    print(f'  full frames (budget {FRAME_BUDGET:,} instructions = 33.3 ms at {MHZ} MHz per 10k triangles):')
     for f in out['frames']:
-        n = f['frame_instructions']
-        print(f'    {f["name"]:<14} {n:>12,} instructions = {n / (MHZ * 1000):.2f} ms' if n is not None
-              else f'    {f["name"]:<14} not counted')
+        n = f['instructions']
+        print(f'    {f["name"]:<10} {f["triangles"]:>7,} triangles {n:>12,} instructions = {n / (MHZ * 1000):.2f} ms'
+              if n is not None else f'    {f["name"]:<10} not counted')
     for msg in fails:
         print(f'  OVER BUDGET / FAILED: {msg}')
     print(f'  within budget: {"yes" if out["within_budget"] else "NO"}')

@@ -168,6 +168,16 @@ def main():
 
     threading.Thread(target=pump, args=(proc.stdout, 'uart'), daemon=True).start()
     threading.Thread(target=pump, args=(proc.stderr, 'qemu'), daemon=True).start()
+    if window and not args.send:
+        # An interactive session: the terminal's keys go to the UART (the mouse is the window's).
+        def forward():
+            for chunk in iter(lambda: os.read(sys.stdin.fileno(), 64), b''):
+                try:
+                    proc.stdin.write(chunk)
+                    proc.stdin.flush()
+                except OSError:
+                    return
+        threading.Thread(target=forward, daemon=True).start()
     if args.type:
         proc.stdin.write(args.type.encode().decode('unicode_escape').encode('latin-1'))
         proc.stdin.flush()
