@@ -17,36 +17,10 @@ namespace {
 using namespace facet;
 
 constexpr uint32_t kPixels = uint32_t(board_config::kDisplayWidth) * board_config::kDisplayHeight;
-using namespace viewer::capacity;
 
-#define ARENA __attribute__((section(".arena")))
 __attribute__((section(".zbuffer"))) uint16_t depth[2][kPixels]; // one per display buffer
 hal::Rgb565 line[board_config::kDisplayWidth];
-
-ARENA uint32_t edge_first[kEdges];
-ARENA uint16_t edge_count[kEdges];
-ARENA uint8_t edge_drawn[kEdges];
-ARENA float sample_t[kSamples];
-ARENA geom::Vec3 sample_p[kSamples];
-ARENA int32_t sample_q[3 * kSamples];
-
-ARENA cdt::Arena<uint16_t, kFaceVertices> arena;
-ARENA cdt::Point loop_points[kFaceVertices];
-ARENA cdt::Point interior[kFaceVertices];
-ARENA uint32_t loop_sizes[kLoops];
-ARENA geom::Vec2 face_uv[kFaceVertices];
-ARENA uint8_t pinned[kFaceVertices];
-ARENA geom::Vec3 face_xyz[kFaceVertices];
-ARENA uint32_t mesh_of[kFaceVertices];
-ARENA uint64_t passed[cdt::triangles_for(kFaceVertices)];
-ARENA geom::MeshVertex face_vertices[kFaceVertices];
-ARENA uint32_t face_indices[3 * cdt::triangles_for(kFaceVertices)];
-
-ARENA viewer::DrawVertex mesh_vertices[kMeshVertices];
-ARENA uint16_t mesh_indices[3 * kMeshTriangles];
-ARENA viewer::FaceInfo faces[kFaces];
-ARENA uint32_t done_order[kFaces];
-ARENA viewer::Projected projected[kFaceVertices];
+__attribute__((section(".arena"))) viewer::Storage storage;
 
 Status capture(void*, const char* name) { return hal::capture(name); }
 
@@ -55,20 +29,7 @@ Status capture(void*, const char* name) { return hal::capture(name); }
 int facet_main(hal::Board& board) {
     hal::Console& con = board.console;
     fw::report_board(board);
-    viewer::Memory mem{
-        {depth[0], depth[1]},
-        line,
-        geom::EdgeSamples{edge_first, edge_count, sample_t, sample_p},
-        sample_q,
-        geom::FaceScratch{arena.view(), loop_points, loop_sizes, interior, face_uv, pinned, face_xyz, mesh_of, passed},
-        geom::Mesh{face_vertices, face_indices, {}},
-        mesh_vertices,
-        mesh_indices,
-        faces,
-        done_order,
-        projected,
-        edge_drawn,
-    };
+    viewer::Memory mem = storage.memory(depth[0], depth[1], line);
     static viewer::Viewer v(board, mem, capture, nullptr);
     const auto* header = reinterpret_cast<const pack::Header*>(board_config::kPackAddress);
     const uint32_t size = header->total_bytes <= board_config::kPackBytes ? header->total_bytes : 0;

@@ -1,6 +1,5 @@
 #include "viewer.h"
 
-#include "cdt/arena.h"
 #include "geom/fmath.h"
 #include "hal/measure.h"
 #include "hal/print.h"
@@ -33,6 +32,23 @@ inline int32_t divide(int64_t x, int32_t d) {
 inline int32_t round_to_int(float v) { return int32_t(v + (v >= 0 ? 0.5f : -0.5f)); }
 
 } // namespace
+
+Memory Storage::memory(std::span<uint16_t> depth0, std::span<uint16_t> depth1, std::span<hal::Rgb565> line) {
+    return Memory{
+        {depth0, depth1},
+        line,
+        geom::EdgeSamples{edge_first, edge_count, sample_t, sample_p},
+        sample_q,
+        geom::FaceScratch{arena.view(), loop_points, loop_sizes, interior, face_uv, pinned, face_xyz, mesh_of, passed},
+        geom::Mesh{face_vertices, face_indices, {}},
+        mesh_vertices,
+        mesh_indices,
+        faces,
+        done_order,
+        projected,
+        edge_drawn,
+    };
+}
 
 // One instance under the current camera: view = (a P >> 30) + b, all fixed point.
 struct Viewer::Instance {
@@ -432,12 +448,16 @@ void Viewer::present() {
         print(con, "@frame triangles {} culled {} spans {} pixels {}\n", st.triangles, st.culled, st.spans, st.pixels);
         stale_[b] = false;
     } else {
-        for (uint32_t k = applied_[b]; k < totals_.done; ++k) {
-            const uint32_t f = mem_.done_order[k];
-            for (uint32_t i = 0; i < pack_.instances().size(); ++i) {
-                const pack::Shell& sh = pack_.shells()[pack_.instances()[i].shell];
+        // The faces finished since this buffer was last shown, in every instance of their shell.
+        for (uint32_t i = 0; i < pack_.instances().size() && applied_[b] < totals_.done; ++i) {
+            const pack::Shell& sh = pack_.shells()[pack_.instances()[i].shell];
+            bool any = false;
+            Instance in;
+            for (uint32_t k = applied_[b]; k < totals_.done; ++k) {
+                const uint32_t f = mem_.done_order[k];
                 if (f < sh.first_face || f >= sh.first_face + sh.face_count) continue;
-                draw_face(b, f, instance_transform(i), true);
+                if (!any) in = instance_transform(i), any = true;
+                draw_face(b, f, in, true);
             }
         }
     }

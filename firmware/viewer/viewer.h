@@ -14,6 +14,7 @@
 // Triangles crossing the near plane or the rasterizer's guard band are clipped. B-rep edges
 // are drawn over the faces with a depth bias, as CAD viewers show them. Closed shells cull
 // back faces; open ones are lit on both sides.
+#include "cdt/arena.h"
 #include "geom/pack.h"
 #include "geom/tessellate.h"
 #include "hal/board.h"
@@ -73,6 +74,37 @@ struct Memory {
     std::span<uint32_t> done_order;    // faces in the order they were finished
     std::span<Projected> projected;    // one face's vertices (or one edge's samples)
     std::span<uint8_t> edge_drawn;     // per pack edge (a full frame draws each edge once)
+};
+
+// Every buffer of Memory except the display-sized ones, at the capacities above (a static
+// object in the firmware's .arena section; one heap object on the host).
+struct Storage {
+    uint32_t edge_first[capacity::kEdges];
+    uint16_t edge_count[capacity::kEdges];
+    uint8_t edge_drawn[capacity::kEdges];
+    float sample_t[capacity::kSamples];
+    geom::Vec3 sample_p[capacity::kSamples];
+    int32_t sample_q[3 * capacity::kSamples];
+    cdt::Arena<uint16_t, capacity::kFaceVertices> arena;
+    cdt::Point loop_points[capacity::kFaceVertices];
+    cdt::Point interior[capacity::kFaceVertices];
+    uint32_t loop_sizes[capacity::kLoops];
+    geom::Vec2 face_uv[capacity::kFaceVertices];
+    uint8_t pinned[capacity::kFaceVertices];
+    geom::Vec3 face_xyz[capacity::kFaceVertices];
+    uint32_t mesh_of[capacity::kFaceVertices];
+    uint64_t passed[cdt::triangles_for(capacity::kFaceVertices)];
+    geom::MeshVertex face_vertices[capacity::kFaceVertices];
+    uint32_t face_indices[3 * cdt::triangles_for(capacity::kFaceVertices)];
+    DrawVertex mesh_vertices[capacity::kMeshVertices];
+    uint16_t mesh_indices[3 * capacity::kMeshTriangles];
+    FaceInfo faces[capacity::kFaces];
+    uint32_t done_order[capacity::kFaces];
+    Projected projected[capacity::kFaceVertices];
+
+    // The viewer's Memory over these buffers and the display-sized ones (depth1 may be empty
+    // for a single-buffered display).
+    Memory memory(std::span<uint16_t> depth0, std::span<uint16_t> depth1, std::span<hal::Rgb565> line);
 };
 
 using CaptureFn = Status (*)(void* context, const char* name);

@@ -21,8 +21,6 @@ bool turns_more(Vec3 a, Vec3 b, float cos_max) {
     return d < 0 || d * d < cos_max * cos_max * l2;
 }
 
-float length2(Vec3 a) { return dot(a, a); }
-
 constexpr float kTwoPi = 6.28318530717958647692f;
 
 bool any_periodic(const Surface& s) { return u_periodic(s) || v_periodic(s); }

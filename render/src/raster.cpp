@@ -112,10 +112,12 @@ struct Plane {
     int64_t at(int64_t dx, int64_t dy) const { return a0 + gx * dx + gy * dy; }
 };
 
+} // namespace
+
 // One attribute over a triangle, stepped per pixel and per row in 32-bit modular arithmetic
 // (exact wherever the true value fits in 32 bits: everywhere inside the triangle), in kFrac
 // fixed point, read back clamped to the range of its three vertex values.
-struct Interp {
+struct Rasterizer::Interp {
     uint32_t row = 0, sx = 0, sy = 0; // value at the current row's column 0; steps per pixel
     int32_t lo = 0, hi = 0;
 
@@ -131,8 +133,6 @@ struct Interp {
         return (s < lo ? lo : (s > hi ? hi : s)) >> kFrac;
     }
 };
-
-} // namespace
 
 Rasterizer::Rasterizer(hal::Display& display, std::span<uint16_t> depth,
                        std::span<hal::Rgb565> line)
@@ -219,30 +219,8 @@ Status Rasterizer::scan(const ScreenVertex& v0, const ScreenVertex& v1, const Sc
             for (Interp& t : at) t.row += t.sy;
             continue;
         }
-        const int32_t x0 = static_cast<int32_t>(lo), x1 = static_cast<int32_t>(hi);
-        uint32_t z = at[0].row + at[0].sx * uint32_t(x0), r = at[1].row + at[1].sx * uint32_t(x0);
-        uint32_t g = at[2].row + at[2].sx * uint32_t(x0), b = at[3].row + at[3].sx * uint32_t(x0);
+        if (Status s = shade(int32_t(y), int32_t(lo), int32_t(hi), at); !ok(s)) return s;
         for (Interp& t : at) t.row += t.sy;
-
-        uint16_t* drow = &depth_[size_t(y) * width_];
-        hal::Rgb565* line = line_.data();
-        int32_t run = -1; // first column of the pending run of visible pixels
-        for (int32_t x = x0; x <= x1; ++x) {
-            const uint16_t zv = uint16_t(at[0].value(z));
-            if (zv < drow[x]) {
-                drow[x] = zv;
-                line[x] = static_cast<hal::Rgb565>(((at[1].value(r) >> 3) << 11) | ((at[2].value(g) >> 2) << 5) |
-                                                   (at[3].value(b) >> 3));
-                if (run < 0) run = x;
-            } else if (run >= 0) {
-                if (Status s = flush(run, x, y); !ok(s)) return s;
-                run = -1;
-            }
-            z += at[0].sx, r += at[1].sx, g += at[2].sx, b += at[3].sx;
-        }
-        if (run >= 0) {
-            if (Status s = flush(run, x1 + 1, y); !ok(s)) return s;
-        }
     }
     return Status::Ok;
 }
@@ -295,41 +273,44 @@ Status Rasterizer::scan_small(const ScreenVertex& v0, const ScreenVertex& v1, co
             gx = shift >= 0 ? (numx * recip) >> shift : (numx * recip) << -shift;
             gy = shift >= 0 ? (numy * recip) >> shift : (numy * recip) << -shift;
         }
-        at[k] = Interp(vals[k], gx, gy, (int64_t(A0) << kFrac) + gx * (ox - v0.x) + gy * (oy - v0.y));
+        at[k] = Interp(vals[k], gx, gy, (int64_t(A0) << kFrac) + gx * (8 - v0.x) + gy * (oy - v0.y));
     }
     for (int32_t y = row0; y <= row1; ++y) {
-        int32_t e0 = ed[0].e, e1 = ed[1].e, e2 = ed[2].e;
-        uint32_t z = at[0].row, r = at[1].row, g = at[2].row, b = at[3].row;
-        uint16_t* drow = &depth_[size_t(y) * width_];
-        hal::Rgb565* line = line_.data();
-        int32_t run = -1, run_end = 0; // the pending run of visible pixels: [run, run_end)
-        bool entered = false;
-        for (int32_t x = col0; x <= col1; ++x) {
-            if ((e0 | e1 | e2) >= 0) {
-                entered = true;
-                const uint16_t zv = uint16_t(at[0].value(z));
-                if (zv < drow[x]) {
-                    drow[x] = zv;
-                    line[x] = static_cast<hal::Rgb565>(((at[1].value(r) >> 3) << 11) | ((at[2].value(g) >> 2) << 5) |
-                                                       (at[3].value(b) >> 3));
-                    if (run < 0) run = x;
-                    run_end = x + 1;
-                } else if (run >= 0) {
-                    if (Status s = flush(run, x, y); !ok(s)) return s;
-                    run = -1;
-                }
-            } else if (entered) {
-                break; // convex: the row's span is over
-            }
-            e0 += ed[0].sx, e1 += ed[1].sx, e2 += ed[2].sx;
-            z += at[0].sx, r += at[1].sx, g += at[2].sx, b += at[3].sx;
-        }
-        if (run >= 0) {
-            if (Status s = flush(run, run_end, y); !ok(s)) return s;
+        // The row's span: the first pixel inside, then on while inside (a triangle is convex).
+        int32_t e0 = ed[0].e, e1 = ed[1].e, e2 = ed[2].e, x = col0;
+        for (; x <= col1 && (e0 | e1 | e2) < 0; ++x) e0 += ed[0].sx, e1 += ed[1].sx, e2 += ed[2].sx;
+        const int32_t lo = x;
+        for (; x <= col1 && (e0 | e1 | e2) >= 0; ++x) e0 += ed[0].sx, e1 += ed[1].sx, e2 += ed[2].sx;
+        if (x > lo) {
+            if (Status s = shade(y, lo, x - 1, at); !ok(s)) return s;
         }
         ed[0].e += ed[0].sy, ed[1].e += ed[1].sy, ed[2].e += ed[2].sy;
         for (Interp& t : at) t.row += t.sy;
     }
+    return Status::Ok;
+}
+
+// Shades the pixels lo..hi of row y that pass the depth test and pushes them in runs.
+Status Rasterizer::shade(int32_t y, int32_t lo, int32_t hi, const Interp* at) {
+    uint32_t z = at[0].row + at[0].sx * uint32_t(lo), r = at[1].row + at[1].sx * uint32_t(lo);
+    uint32_t g = at[2].row + at[2].sx * uint32_t(lo), b = at[3].row + at[3].sx * uint32_t(lo);
+    uint16_t* drow = &depth_[size_t(y) * width_];
+    hal::Rgb565* line = line_.data();
+    int32_t run = -1; // first column of the pending run of visible pixels
+    for (int32_t x = lo; x <= hi; ++x) {
+        const uint16_t zv = uint16_t(at[0].value(z));
+        if (zv < drow[x]) {
+            drow[x] = zv;
+            line[x] = static_cast<hal::Rgb565>(((at[1].value(r) >> 3) << 11) | ((at[2].value(g) >> 2) << 5) |
+                                               (at[3].value(b) >> 3));
+            if (run < 0) run = x;
+        } else if (run >= 0) {
+            if (Status s = flush(run, x, y); !ok(s)) return s;
+            run = -1;
+        }
+        z += at[0].sx, r += at[1].sx, g += at[2].sx, b += at[3].sx;
+    }
+    if (run >= 0) return flush(run, hi + 1, y);
     return Status::Ok;
 }
 

@@ -120,49 +120,15 @@ int main(int argc, char** argv) {
     std::vector<uint64_t> pack((bytes.size() + 7) / 8);
     std::memcpy(pack.data(), bytes.data(), bytes.size());
 
-    using namespace viewer::capacity;
     hal::fake::Display display{uint16_t(w), uint16_t(h)};
     hal::fake::Console console;
     hal::fake::Clock clock;
     hal::fake::Input input;
     hal::Board board{"host", console, clock, display, input};
-    const size_t pixels = size_t(w) * h;
-    std::vector<uint16_t> depth0(pixels), depth1(pixels);
+    std::vector<uint16_t> depth0(size_t(w) * h), depth1(size_t(w) * h);
     std::vector<hal::Rgb565> line(static_cast<size_t>(w));
-    std::vector<uint32_t> edge_first(kEdges);
-    std::vector<uint16_t> edge_count(kEdges);
-    std::vector<uint8_t> edge_drawn(kEdges);
-    std::vector<float> sample_t(kSamples);
-    std::vector<geom::Vec3> sample_p(kSamples);
-    std::vector<int32_t> sample_q(3 * kSamples);
-    auto arena = std::make_unique<cdt::Arena<uint16_t, kFaceVertices>>();
-    std::vector<cdt::Point> loop_points(kFaceVertices), interior(kFaceVertices);
-    std::vector<uint32_t> loop_sizes(kLoops), mesh_of(kFaceVertices);
-    std::vector<geom::Vec2> face_uv(kFaceVertices);
-    std::vector<uint8_t> pinned(kFaceVertices);
-    std::vector<geom::Vec3> face_xyz(kFaceVertices);
-    std::vector<uint64_t> passed(cdt::triangles_for(kFaceVertices));
-    std::vector<geom::MeshVertex> face_vertices(kFaceVertices);
-    std::vector<uint32_t> face_indices(3 * cdt::triangles_for(kFaceVertices));
-    std::vector<viewer::DrawVertex> mesh_vertices(kMeshVertices);
-    std::vector<uint16_t> mesh_indices(3 * kMeshTriangles);
-    std::vector<viewer::FaceInfo> faces(kFaces);
-    std::vector<uint32_t> done_order(kFaces);
-    std::vector<viewer::Projected> projected(kFaceVertices);
-    viewer::Memory mem{
-        {depth0, depth1},
-        line,
-        geom::EdgeSamples{edge_first, edge_count, sample_t, sample_p},
-        sample_q,
-        geom::FaceScratch{arena->view(), loop_points, loop_sizes, interior, face_uv, pinned, face_xyz, mesh_of, passed},
-        geom::Mesh{face_vertices, face_indices, {}},
-        mesh_vertices,
-        mesh_indices,
-        faces,
-        done_order,
-        projected,
-        edge_drawn,
-    };
+    auto storage = std::make_unique<viewer::Storage>();
+    viewer::Memory mem = storage->memory(depth0, depth1, line);
     Host host{&display, out_dir};
     viewer::Viewer v(board, mem, capture, &host);
     if (!ok(v.open(pack.data(), uint32_t(bytes.size())))) {

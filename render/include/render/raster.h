@@ -58,10 +58,12 @@ public:
     RasterStats stats;
 
 private:
+    struct Interp; // one interpolated attribute (raster.cpp)
     Status scan(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2,
                 int64_t area2);
     Status scan_small(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2, int64_t area2,
                       int32_t row0, int32_t row1, int32_t col0, int32_t col1);
+    Status shade(int32_t y, int32_t lo, int32_t hi, const Interp* at);
     Status flush(int32_t from, int32_t to, int64_t y);
 
     hal::Display& display_;
