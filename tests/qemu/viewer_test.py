@@ -107,6 +107,11 @@ def main():
                             '--timeout', '900', '--quiet'] + sends, capture_output=True, text=True)
         h = subprocess.run([args.ref, '--size', SIZE[args.board], '--pack', fpk, '--out', ref] + sends,
                            capture_output=True, text=True)
+        if not os.path.exists(os.path.join(out, 'report.json')):
+            failed = True
+            print(f'FAIL {args.board} {name}: the runner wrote no report (exit {r.returncode})\n{r.stdout[-1500:]}\n'
+                  f'{r.stderr[-3000:]}')
+            continue
         uart = open(os.path.join(out, 'uart.log')).read()
         rep = json.load(open(os.path.join(out, 'report.json')))
         ram = rep.get('ram', ram)

@@ -182,6 +182,14 @@ def main():
         proc.stdin.write(args.type.encode().decode('unicode_escape').encode('latin-1'))
         proc.stdin.flush()
 
+    def send(data):
+        # QEMU may be gone (it exited, or crashed): say so in the report instead of dying here.
+        try:
+            proc.stdin.write(data)
+            proc.stdin.flush()
+        except OSError as e:
+            report['failures'].append(f'UART input after QEMU closed it: {e}')
+
     qmp = None
     report = {'board': args.board, 'elf': os.path.relpath(elf, ROOT), 'regions': [], 'ram': {},
               'shots': [], 'exit_code': None, 'failures': []}
@@ -220,8 +228,7 @@ def main():
                 entry = script.pop(0)
                 kind, _, rest = entry.partition(' ')
                 if kind == 'keys':
-                    proc.stdin.write(rest.encode().decode('unicode_escape').encode('latin-1'))
-                    proc.stdin.flush()
+                    send(rest.encode().decode('unicode_escape').encode('latin-1'))
                 elif kind == 'mouse':
                     p = rest.split()
                     button = p[2] if len(p) > 2 else 'left'
@@ -238,8 +245,7 @@ def main():
                         report['failures'].append(f'mouse {rest}: {e}')
                 else:
                     report['failures'].append(f'unknown script entry: {entry}')
-                proc.stdin.write(b'\x05')
-                proc.stdin.flush()
+                send(b'\x05')
             continue
         if words[0] == '@shot' and len(words) == 2:
             name = words[1]
@@ -251,8 +257,7 @@ def main():
                 report['shots'].append(os.path.relpath(png, ROOT))
             except (OSError, RuntimeError) as e:
                 report['failures'].append(f'screendump {name}: {e}')
-            proc.stdin.write(b'\x06')
-            proc.stdin.flush()
+            send(b'\x06')
         elif words[0] == '@dump' and len(words) == 3:
             png = os.path.join(out, f'{words[1]}.png')
             try:
