@@ -39,7 +39,7 @@ Memory Storage::memory(std::span<uint16_t> depth0, std::span<uint16_t> depth1, s
         line,
         geom::EdgeSamples{edge_first, edge_count, sample_t, sample_p},
         sample_q,
-        geom::FaceScratch{arena.view(), loop_points, loop_sizes, interior, face_uv, pinned, face_xyz, mesh_of, passed},
+        geom::FaceScratch{arena.view(), loop_points, loop_sizes, face_uv, pinned, face_xyz, mesh_of, measured, slivers},
         geom::Mesh{face_vertices, face_indices, {}},
         mesh_vertices,
         mesh_indices,

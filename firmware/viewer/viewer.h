@@ -33,6 +33,7 @@ constexpr size_t kEdges = 16384;
 constexpr size_t kSamples = 65536;       // edge samples of the whole model
 constexpr size_t kFaceVertices = 12000;  // per face, in the 16-bit CDT arena
 constexpr size_t kLoops = 512;           // per face
+constexpr size_t kSlivers = 1024;        // per face: loop points closer than the CDT grid
 constexpr size_t kMeshVertices = 65536;
 constexpr size_t kMeshTriangles = 98304;
 } // namespace capacity
@@ -87,13 +88,13 @@ struct Storage {
     int32_t sample_q[3 * capacity::kSamples];
     cdt::Arena<uint16_t, capacity::kFaceVertices> arena;
     cdt::Point loop_points[capacity::kFaceVertices];
-    cdt::Point interior[capacity::kFaceVertices];
     uint32_t loop_sizes[capacity::kLoops];
     geom::Vec2 face_uv[capacity::kFaceVertices];
     uint8_t pinned[capacity::kFaceVertices];
     geom::Vec3 face_xyz[capacity::kFaceVertices];
     uint32_t mesh_of[capacity::kFaceVertices];
-    uint64_t passed[cdt::triangles_for(capacity::kFaceVertices)];
+    geom::TriangleMeasure measured[cdt::triangles_for(capacity::kFaceVertices)];
+    geom::Sliver slivers[capacity::kSlivers];
     geom::MeshVertex face_vertices[capacity::kFaceVertices];
     uint32_t face_indices[3 * cdt::triangles_for(capacity::kFaceVertices)];
     DrawVertex mesh_vertices[capacity::kMeshVertices];

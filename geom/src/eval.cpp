@@ -11,9 +11,13 @@ Vec3 v3(const float* p) { return {p[0], p[1], p[2]}; }
 
 // Non-zero B-spline basis functions and their first derivatives at t (The NURBS Book A2.2/A2.3).
 // knots: expanded; n: poles; p: degree. Returns the span index s: functions N[s-p .. s].
-int basis(const float* knots, int n, int p, float t, float* N, float* dN) {
-    // Clamp t to the valid range and find the span.
+// A periodic B-spline (stored over one period) takes t modulo the period; others clamp t.
+int basis(const float* knots, int n, int p, float t, bool periodic, float* N, float* dN) {
     const float lo = knots[p], hi = knots[n];
+    if (periodic && hi > lo && (t < lo || t > hi)) {
+        t = lo + std::fmod(t - lo, hi - lo);
+        if (t < lo) t += hi - lo;
+    }
     if (t < lo) t = lo;
     if (t > hi) t = hi;
     int s = p;
@@ -58,12 +62,12 @@ int basis(const float* knots, int n, int p, float t, float* N, float* dN) {
 // A B-spline curve of dimension dim at t: position and derivative (rational by the quotient rule).
 void bspline_curve(const float* prm, int dim, float t, float* pos, float* der) {
     const int p = int(prm[0]), n = int(prm[1]), k = int(prm[2]);
-    const bool rational = prm[3] != 0;
+    const bool rational = prm[3] != 0, periodic = prm[4] != 0;
     const float* knots = prm + 5;
     const float* poles = knots + k;
     const float* weights = poles + n * dim;
     float N[kMaxDegree + 1], dN[kMaxDegree + 1];
-    const int s = basis(knots, n, p, t, N, dN);
+    const int s = basis(knots, n, p, t, periodic, N, dN);
     float A[3] = {0, 0, 0}, dA[3] = {0, 0, 0}, W = 0, dW = 0;
     for (int j = 0; j <= p; ++j) {
         const int i = s - p + j;
@@ -189,7 +193,7 @@ SurfacePoint eval_surface(const Pack& pack, const Surface& s, float u, float v) 
         const float* poles = vk + kv;
         const float* weights = poles + 3 * nu * nv;
         float Nu[kMaxDegree + 1], dNu[kMaxDegree + 1], Nv[kMaxDegree + 1], dNv[kMaxDegree + 1];
-        const int su = basis(uk, nu, pu, u, Nu, dNu), sv = basis(vk, nv, pv, v, Nv, dNv);
+        const int su = basis(uk, nu, pu, u, q[7] != 0, Nu, dNu), sv = basis(vk, nv, pv, v, q[8] != 0, Nv, dNv);
         Vec3 A{0, 0, 0}, Au{0, 0, 0}, Av{0, 0, 0};
         float W = 0, Wu = 0, Wv = 0;
         for (int a = 0; a <= pu; ++a) {

@@ -201,7 +201,7 @@ Status Pack::check_records(PackProblem& p) {
         const Edge& e = edges_[i];
         if (e.curve != kNoIndex && e.curve >= curves3_.size()) return fail(p, "curve index out of range", E, i);
         if (e.v0 >= vertices_.size() || e.v1 >= vertices_.size()) return fail(p, "vertex index out of range", E, i);
-        if (!finite(e.t0) || !finite(e.t1) || !finite(e.tolerance) || e.tolerance < 0) return fail(p, "bad parameter range or tolerance", E, i);
+        if (!finite(e.t0) || !finite(e.t1) || !finite(e.max_sag) || e.max_sag < 0) return fail(p, "bad parameter range or sag limit", E, i);
     }
     constexpr uint32_t C = uint32_t(SectionId::Coedges);
     for (uint32_t i = 0; i < coedges_.size(); ++i) {

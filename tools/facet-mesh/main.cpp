@@ -2,11 +2,19 @@
 // PLY, with a report: faces, failed faces (and why), triangles, the deviation from the exact
 // surfaces, free and non-manifold edges, the share of thin triangles, time.
 //
-//   facet-mesh MODEL.fpk [--stl|--obj|--ply FILE] [--json REPORT] [--tolerance MM]
+//   facet-mesh MODEL.fpk [--stl|--obj|--ply FILE] [--json REPORT] [--tolerance MM] [--angle RAD] [--faces]
+//
+// Measured once per shell (a part placed several times is one mesh): the deviation on a
+// barycentric grid in every triangle and along its edges (geom/deviation.h); the topology
+// after welding the shell's vertices at exactly equal positions: a free edge has one triangle,
+// a non-manifold edge more than two. A closed shell (a solid) is watertight when it has
+// neither and no face failed.
+#include "geom/deviation.h"
 #include "geom/pack.h"
 #include "geom/tessellate.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -85,149 +93,203 @@ bool write_ply(const std::string& path, const Output& o) {
 int main(int argc, char** argv) {
     const char* in = nullptr;
     std::string out, format, json;
-    float tolerance = 0;
+    float tolerance = 0, angle = 0;
     bool quiet = false, per_face = false;
+    const char* usage = "usage: facet-mesh MODEL.fpk [--stl|--obj|--ply FILE] [--json REPORT] [--tolerance MM] [--angle RAD] [--faces] [--quiet]";
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         if ((a == "--stl" || a == "--obj" || a == "--ply") && i + 1 < argc) format = a.substr(2), out = argv[++i];
         else if (a == "--json" && i + 1 < argc) json = argv[++i];
         else if (a == "--tolerance" && i + 1 < argc) tolerance = std::strtof(argv[++i], nullptr);
+        else if (a == "--angle" && i + 1 < argc) angle = std::strtof(argv[++i], nullptr);
         else if (a == "--quiet") quiet = true;
         else if (a == "--faces") per_face = true;
-        else if (a[0] != '-') in = argv[i];
-        else return die("usage: facet-mesh MODEL.fpk [--stl|--obj|--ply FILE] [--json REPORT] [--tolerance MM]");
+        else if (a[0] != '-' && !in) in = argv[i];
+        else return die(usage);
     }
-    if (!in) return die("usage: facet-mesh MODEL.fpk [--stl|--obj|--ply FILE] [--json REPORT] [--tolerance MM]");
+    if (!in) return die(usage);
     std::ifstream f(in, std::ios::binary);
     if (!f) return die(std::string("cannot open ") + in);
     std::vector<char> bytes((std::istreambuf_iterator<char>(f)), {});
     std::vector<uint32_t> aligned((bytes.size() + 3) / 4);
-    std::memcpy(aligned.data(), bytes.data(), bytes.size());
+    if (!bytes.empty()) std::memcpy(aligned.data(), bytes.data(), bytes.size());
     Pack pack;
     PackProblem problem;
     if (pack.open(aligned.data(), uint32_t(bytes.size()), problem) != Status::Ok) return die(std::string(in) + ": " + problem.message);
 
     TessOptions opt;
     opt.tolerance = tolerance > 0 ? tolerance : default_tolerance(pack);
-    const auto t_start = std::chrono::steady_clock::now();
+    if (angle > 0) opt.max_angle = angle;
 
-    // Edge samples (once per edge, shared by every face and instance).
+    // Buffers: edge samples (once per edge, shared by every face and instance), the device's
+    // 16-bit CDT arena at its largest, one shell's mesh.
     const size_t ne = pack.edges().size();
     std::vector<uint32_t> ef(ne);
     std::vector<uint16_t> ec(ne);
     std::vector<float> et(ne * 64 + 1024);
     std::vector<Vec3> ep(ne * 64 + 1024);
-    EdgeSamples samples{ef, ec, et, ep};
-    if (sample_edges(pack, opt, samples) != Status::Ok) return die("edge sample pool full");
-
-    // Per-face scratch: the device's 16-bit CDT arena at its largest.
     constexpr size_t kV = 32000;
     std::vector<cdt::Vertex<uint16_t>> av(kV);
     std::vector<cdt::Triangle<uint16_t>> at(cdt::triangles_for(kV));
     std::vector<uint16_t> aw(cdt::work_for(kV)), ao(kV), am(kV), ai(kV);
     std::vector<uint32_t> ak(kV);
-    std::vector<cdt::Point> lp(kV), ip(kV);
+    std::vector<cdt::Point> lp(kV);
     std::vector<uint32_t> ls(4096), mesh_of(kV);
     std::vector<Vec2> uvs(kV);
     std::vector<Vec3> xyz(kV);
     std::vector<uint8_t> pinned(kV);
-    std::vector<uint64_t> passed(cdt::triangles_for(kV));
-    FaceScratch sc{{av, at, aw, ao, am, ai, ak}, lp, ls, ip, uvs, pinned, xyz, mesh_of, passed};
-
-    // Mesh per shell, then placed per instance.
+    std::vector<TriangleMeasure> measured(cdt::triangles_for(kV));
+    std::vector<Sliver> slivers(4096);
+    FaceScratch sc{{av, at, aw, ao, am, ai, ak}, lp, ls, uvs, pinned, xyz, mesh_of, measured, slivers};
     std::vector<MeshVertex> mv(1 << 22);
     std::vector<uint32_t> mi(3u << 22);
     std::vector<Vec2> muv(1 << 22);
-    Output o;
+
+    // Tessellate each shell once (timed: edge sampling and every face).
+    struct ShellMesh {
+        std::vector<MeshVertex> v;
+        std::vector<Vec2> uv;
+        std::vector<uint32_t> tri, face; // 3 indices per triangle; its face
+    };
+    std::vector<ShellMesh> shells(pack.shells().size());
     uint32_t faces = 0, failed = 0;
-    double max_dev = 0;
     std::map<std::string, uint32_t> reasons;
-    std::vector<int> shell_done(pack.shells().size(), 0);
-    std::map<uint32_t, double> face_dev;
-    for (const pack::Instance& inst : pack.instances()) {
-        const pack::Shell& sh = pack.shells()[inst.shell];
+    std::vector<std::string> failures;
+    const auto t_start = std::chrono::steady_clock::now();
+    EdgeSamples samples{ef, ec, et, ep};
+    if (sample_edges(pack, opt, samples) != Status::Ok) return die("edge sample pool full");
+    for (uint32_t s = 0; s < pack.shells().size(); ++s) {
+        const pack::Shell& sh = pack.shells()[s];
         Mesh mesh{mv, mi, muv};
-        std::vector<uint32_t> tri_face;
+        ShellMesh& out_shell = shells[s];
         for (uint32_t fi = sh.first_face; fi < sh.first_face + sh.face_count; ++fi) {
             const uint32_t before = mesh.triangle_count;
             const FaceResult r = tessellate_face(pack, fi, samples, opt, sc, mesh);
-            const bool first_time = !shell_done[inst.shell];
-            if (first_time) ++faces;
+            ++faces;
             if (!ok(r.status)) {
-                if (first_time) {
-                    ++failed;
-                    ++reasons[r.reason];
-                    if (!quiet) std::fprintf(stderr, "facet-mesh: face %u not triangulated: %s (%s)\n", fi, r.reason, status_name(r.status));
-                }
+                ++failed;
+                ++reasons[r.reason];
+                failures.push_back("face " + std::to_string(fi) + ": " + r.reason + " (" + status_name(r.status) + ")");
                 continue;
             }
-            for (uint32_t t = before; t < mesh.triangle_count; ++t) tri_face.push_back(fi);
-            if (per_face && first_time) {
+            for (uint32_t t = before; t < mesh.triangle_count; ++t) out_shell.face.push_back(fi);
+            if (per_face) {
                 std::printf("face %u: surface type %u, %u points, %u triangles\n", fi,
                             pack.surfaces()[pack.faces()[fi].surface].type, r.points, r.triangles);
             }
         }
-        shell_done[inst.shell] = 1;
-        // Deviation: each triangle's centroid against the surface at its interpolated (u,v).
-        for (uint32_t t = 0; t < mesh.triangle_count; ++t) {
-            const uint32_t* id = &mesh.indices[3 * t];
-            const pack::Face& F = pack.faces()[tri_face[t]];
-            const pack::Surface& S = pack.surfaces()[F.surface];
-            const Vec3 c = (mesh.vertices[id[0]].p + mesh.vertices[id[1]].p + mesh.vertices[id[2]].p) * (1.0f / 3);
-            const Vec2 guess = (mesh.uv[id[0]] + mesh.uv[id[1]] + mesh.uv[id[2]]) * (1.0f / 3);
-            const bool wraps = !is_elementary(S) && u_periodic(S) && (std::fabs(mesh.uv[id[0]].x - mesh.uv[id[1]].x) > 3 ||
-                                                                      std::fabs(mesh.uv[id[1]].x - mesh.uv[id[2]].x) > 3);
-            if (!wraps) {
-                Vec2 uv;
-                const double d = surface_deviation(pack, tri_face[t], c, guess, uv);
-                max_dev = std::max(max_dev, d);
-                face_dev[tri_face[t]] = std::max(face_dev[tri_face[t]], d);
-            }
-        }
-        const uint32_t base = uint32_t(o.p.size());
-        for (uint32_t v = 0; v < mesh.vertex_count; ++v) {
-            o.p.push_back(place(inst.m, mesh.vertices[v].p));
-            o.n.push_back(turn(inst.m, mesh.vertices[v].n));
-        }
-        for (uint32_t k = 0; k < mesh.triangle_count * 3; ++k) o.tri.push_back(base + mesh.indices[k]);
+        out_shell.v.assign(mv.begin(), mv.begin() + mesh.vertex_count);
+        out_shell.uv.assign(muv.begin(), muv.begin() + mesh.vertex_count);
+        out_shell.tri.assign(mi.begin(), mi.begin() + mesh.triangle_count * 3);
     }
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t_start).count();
 
-    // Topology of the welded mesh: vertices equal to the bit are one.
-    std::map<std::tuple<float, float, float>, uint32_t> weld;
-    std::vector<uint32_t> id(o.p.size());
-    for (size_t i = 0; i < o.p.size(); ++i) id[i] = weld.emplace(std::make_tuple(o.p[i].x, o.p[i].y, o.p[i].z), uint32_t(weld.size())).first->second;
-    std::map<std::pair<uint32_t, uint32_t>, int> uses;
-    uint32_t thin = 0;
-    for (size_t t = 0; t + 2 < o.tri.size(); t += 3) {
-        for (int k = 0; k < 3; ++k) {
-            uint32_t a = id[o.tri[t + k]], b = id[o.tri[t + (k + 1) % 3]];
-            if (a > b) std::swap(a, b);
-            ++uses[{a, b}];
+    // Measure each shell.
+    double max_dev = 0;
+    std::map<uint32_t, double> face_dev;
+    uint32_t free_edges = 0, nonmanifold = 0, overlap = 0, thin = 0, shell_triangles = 0, closed = 0, watertight = 0;
+    for (uint32_t s = 0; s < shells.size(); ++s) {
+        const ShellMesh& m = shells[s];
+        const uint32_t nt = uint32_t(m.tri.size() / 3);
+        const uint32_t overlap_before = overlap;
+        shell_triangles += nt;
+        for (uint32_t t = 0; t < nt; ++t) {
+            const uint32_t* id = &m.tri[3 * t];
+            const Vec3 p[3] = {m.v[id[0]].p, m.v[id[1]].p, m.v[id[2]].p};
+            const Vec2 uv[3] = {m.uv[id[0]], m.uv[id[1]], m.uv[id[2]]};
+            const double d = triangle_deviation(pack, m.face[t], p, uv);
+            max_dev = std::max(max_dev, d);
+            face_dev[m.face[t]] = std::max(face_dev[m.face[t]], d);
+            float ang[3];
+            for (int k = 0; k < 3; ++k) {
+                const Vec3 a = p[(k + 1) % 3] - p[k], b = p[(k + 2) % 3] - p[k];
+                const float la = length(a), lb = length(b);
+                ang[k] = la > 0 && lb > 0 ? std::acos(std::clamp(dot(a, b) / (la * lb), -1.0f, 1.0f)) : 0.0f;
+            }
+            if (std::min({ang[0], ang[1], ang[2]}) < 5.0f * 3.14159265f / 180) ++thin;
         }
-        const Vec3 A = o.p[o.tri[t]], B = o.p[o.tri[t + 1]], C = o.p[o.tri[t + 2]];
-        const float ang[3] = {std::acos(std::clamp(dot(normalized(B - A), normalized(C - A)), -1.0f, 1.0f)),
-                              std::acos(std::clamp(dot(normalized(A - B), normalized(C - B)), -1.0f, 1.0f)),
-                              std::acos(std::clamp(dot(normalized(A - C), normalized(B - C)), -1.0f, 1.0f))};
-        if (std::min({ang[0], ang[1], ang[2]}) < 5.0f * 3.14159265f / 180) ++thin;
+        std::map<std::tuple<float, float, float>, uint32_t> weld;
+        std::vector<uint32_t> id(m.v.size());
+        for (size_t i = 0; i < m.v.size(); ++i) id[i] = weld.emplace(std::make_tuple(m.v[i].p.x, m.v[i].p.y, m.v[i].p.z), uint32_t(weld.size())).first->second;
+        std::map<std::pair<uint32_t, uint32_t>, std::vector<uint32_t>> uses; // welded edge -> triangles
+        std::vector<uint32_t> first_of(weld.size());
+        for (size_t i = 0; i < m.v.size(); ++i) first_of[id[i]] = uint32_t(i);
+        for (size_t t = 0; t + 2 < m.tri.size(); t += 3) {
+            for (int k = 0; k < 3; ++k) {
+                uint32_t a = id[m.tri[t + k]], b = id[m.tri[t + (k + 1) % 3]];
+                if (a == b) continue;
+                if (a > b) std::swap(a, b);
+                uses[{a, b}].push_back(uint32_t(t / 3));
+            }
+        }
+        // A triangle with the same three points in two faces: the B-rep's faces overlap there
+        // (tail_section_asm: an extrusion lying on a cylinder). The edges of such a triangle
+        // that have more than two triangles are reported apart from other non-manifold edges.
+        std::map<std::array<uint32_t, 3>, std::vector<uint32_t>> by_corners; // sorted welded ids -> faces
+        auto corners = [&](uint32_t t) {
+            std::array<uint32_t, 3> c = {id[m.tri[3 * t]], id[m.tri[3 * t + 1]], id[m.tri[3 * t + 2]]};
+            std::sort(c.begin(), c.end());
+            return c;
+        };
+        for (uint32_t t = 0; t < nt; ++t) by_corners[corners(t)].push_back(m.face[t]);
+        auto doubled = [&](uint32_t t) {
+            const std::vector<uint32_t>& f = by_corners[corners(t)];
+            return f.size() > 1 && std::find_if(f.begin(), f.end(), [&](uint32_t x) { return x != f[0]; }) != f.end();
+        };
+        uint32_t fr = 0, nm = 0, listed = 0;
+        for (auto& [e, ts] : uses) {
+            fr += ts.size() == 1;
+            if (ts.size() > 2) {
+                if (std::any_of(ts.begin(), ts.end(), doubled)) ++overlap;
+                else ++nm;
+            }
+            if (per_face && ts.size() != 2 && listed++ < 40) {
+                const Vec3 a = m.v[first_of[e.first]].p, b = m.v[first_of[e.second]].p;
+                std::printf("  %s edge (%g %g %g)-(%g %g %g), faces", ts.size() == 1 ? "free" : "non-manifold", a.x, a.y, a.z, b.x, b.y, b.z);
+                for (uint32_t t : ts) std::printf(" %u", m.face[t]);
+                std::printf("\n");
+            }
+        }
+        free_edges += fr, nonmanifold += nm;
+        if (pack.shells()[s].closed) {
+            ++closed;
+            const pack::Shell& sh = pack.shells()[s];
+            bool all_faces = true;
+            for (uint32_t fi = sh.first_face; fi < sh.first_face + sh.face_count; ++fi)
+                all_faces = all_faces && std::find(m.face.begin(), m.face.end(), fi) != m.face.end();
+            if (!fr && !nm && all_faces) ++watertight;
+            else if (!quiet) std::fprintf(stderr, "facet-mesh: closed shell %u is not watertight: %u free, %u non-manifold edges%s\n", s, fr, nm, all_faces ? "" : ", a face failed");
+            if (overlap > overlap_before && !quiet) {
+                std::fprintf(stderr, "facet-mesh: closed shell %u: %u edges where two of its faces overlap in the B-rep\n", s,
+                             overlap - overlap_before);
+            }
+        }
     }
-    uint32_t free_edges = 0, nonmanifold = 0;
-    for (auto& [e, n] : uses) {
-        if (e.first == e.second) continue;
-        free_edges += n == 1;
-        nonmanifold += n > 2;
+
+    // The model: every instance of every shell, placed.
+    Output o;
+    for (const pack::Instance& inst : pack.instances()) {
+        const ShellMesh& m = shells[inst.shell];
+        const uint32_t base = uint32_t(o.p.size());
+        for (const MeshVertex& v : m.v) {
+            o.p.push_back(place(inst.m, v.p));
+            o.n.push_back(turn(inst.m, v.n));
+        }
+        for (uint32_t k : m.tri) o.tri.push_back(base + k);
     }
     const uint32_t ntri = uint32_t(o.tri.size() / 3);
-    const double thin_share = ntri ? double(thin) / ntri : 0;
+    const double thin_share = shell_triangles ? double(thin) / shell_triangles : 0;
     if (!out.empty()) {
         const bool okw = format == "stl" ? write_stl(out, o) : format == "obj" ? write_obj(out, o) : write_ply(out, o);
         if (!okw) return die("cannot write " + out);
     }
-    std::printf("%s: %u faces, %u failed, %u triangles, max deviation %.4f mm (tolerance %.4f), free edges %u, "
-                "non-manifold edges %u, thin (<5 deg) %.1f%%, %.1f ms\n",
-                in, faces, failed, ntri, max_dev, opt.tolerance, free_edges, nonmanifold, 100 * thin_share, ms);
+    std::printf("%s: %u faces, %u failed, %u triangles (%u per distinct part), max deviation %.4f mm (tolerance %.4f), "
+                "free edges %u, non-manifold edges %u (+%u where faces overlap), closed shells watertight %u of %u, thin (<5 deg) %.1f%%, %.1f ms\n",
+                in, faces, failed, ntri, shell_triangles, max_dev, opt.tolerance, free_edges, nonmanifold, overlap, watertight, closed,
+                100 * thin_share, ms);
     for (auto& [r, n] : reasons) std::printf("  %u faces: %s\n", n, r.c_str());
     if (!quiet) {
+        for (const std::string& f : failures) std::fprintf(stderr, "facet-mesh: %s\n", f.c_str());
         for (auto& [fi, d] : face_dev) {
             if (d > opt.tolerance) {
                 std::printf("  face %u (surface type %u): deviation %.4f mm over the tolerance\n", fi,
@@ -238,8 +300,11 @@ int main(int argc, char** argv) {
     if (!json.empty()) {
         std::ofstream j(json);
         j << "{\"faces\": " << faces << ", \"faces_failed\": " << failed << ", \"triangles\": " << ntri
-          << ", \"max_deviation\": " << max_dev << ", \"tolerance\": " << opt.tolerance << ", \"free_edges\": " << free_edges
-          << ", \"nonmanifold_edges\": " << nonmanifold << ", \"small_angle_share\": " << thin_share << ", \"ms\": " << ms << "}\n";
+          << ", \"part_triangles\": " << shell_triangles << ", \"max_deviation\": " << max_dev
+          << ", \"tolerance\": " << opt.tolerance << ", \"free_edges\": " << free_edges
+          << ", \"nonmanifold_edges\": " << nonmanifold << ", \"overlap_edges\": " << overlap << ", \"closed_shells\": " << closed
+          << ", \"watertight_closed_shells\": " << watertight << ", \"small_angle_share\": " << thin_share
+          << ", \"ms\": " << ms << "}\n";
     }
     return 0;
 }

@@ -119,5 +119,9 @@ int main(int argc, char** argv) {
     std::printf("\n  pack %zu bytes = %.1f%% of the STEP file (%lld bytes)\n", bytes.size(),
                 100.0 * double(bytes.size()) / double(st.st_size), (long long)st.st_size);
     for (auto& [k, v] : stats.converted) std::printf("  converted: %u %s\n", v, k.c_str());
+    if (model.open_solids) {
+        std::printf("  %u solids have gaps between their faces that healing could not close: packed as open shells\n",
+                    model.open_solids);
+    }
     return 0;
 }

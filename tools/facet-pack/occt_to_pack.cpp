@@ -1,5 +1,7 @@
 #include "occt_to_pack.h"
 
+#include "clearance.h"
+
 #include <BRepTools.hxx>
 #include <BRepTools_WireExplorer.hxx>
 #include <BRep_Tool.hxx>
@@ -60,15 +62,16 @@ void put(Floats& f, const gp_Pnt2d& p) { put(f, p.XY()); }
 // unperiodized first.
 template <typename Curve>
 Floats bspline_curve(opencascade::handle<Curve> c) {
-    if (c->IsPeriodic()) {
+    const bool periodic = c->IsPeriodic();
+    if (periodic) {
         c = opencascade::handle<Curve>::DownCast(c->Copy());
-        c->SetNotPeriodic();
+        c->SetNotPeriodic(); // same curve over one period; the reader wraps parameters into it
     }
     Floats f;
     const int n = c->NbPoles();
     TColStd_Array1OfReal knots(1, c->NbPoles() + c->Degree() + 1);
     c->KnotSequence(knots);
-    f.insert(f.end(), {float(c->Degree()), float(n), float(knots.Length()), c->IsRational() ? 1.0f : 0.0f, 0.0f});
+    f.insert(f.end(), {float(c->Degree()), float(n), float(knots.Length()), c->IsRational() ? 1.0f : 0.0f, periodic ? 1.0f : 0.0f});
     for (int i = knots.Lower(); i <= knots.Upper(); ++i) f.push_back(float(knots(i)));
     for (int i = 1; i <= n; ++i) put(f, c->Pole(i));
     if (c->IsRational())
@@ -243,15 +246,18 @@ static uint32_t add_surface(geom::PackWriter& w, const Handle(Geom_Surface)& sur
         ++st.converted["surface -> B-spline"];
     }
     b = Handle(Geom_BSplineSurface)::DownCast(b->Copy());
-    if (b->IsUPeriodic()) b->SetUNotPeriodic();
-    if (b->IsVPeriodic()) b->SetVNotPeriodic();
+    // Periodic directions are stored over one period; the reader wraps parameters into it (a
+    // face may use, say, v in [3.2, 9.5] of a 2 pi-periodic surface).
+    const bool u_periodic = b->IsUPeriodic(), v_periodic = b->IsVPeriodic();
+    if (u_periodic) b->SetUNotPeriodic();
+    if (v_periodic) b->SetVNotPeriodic();
     const int nu = b->NbUPoles(), nv = b->NbVPoles();
     TColStd_Array1OfReal uk(1, nu + b->UDegree() + 1), vk(1, nv + b->VDegree() + 1);
     b->UKnotSequence(uk);
     b->VKnotSequence(vk);
     const bool rational = b->IsURational() || b->IsVRational();
     f.insert(f.end(), {float(b->UDegree()), float(b->VDegree()), float(nu), float(nv), float(uk.Length()),
-                       float(vk.Length()), rational ? 1.0f : 0.0f, 0.0f, 0.0f});
+                       float(vk.Length()), rational ? 1.0f : 0.0f, u_periodic ? 1.0f : 0.0f, v_periodic ? 1.0f : 0.0f});
     for (int i = uk.Lower(); i <= uk.Upper(); ++i) f.push_back(float(uk(i)));
     for (int i = vk.Lower(); i <= vk.Upper(); ++i) f.push_back(float(vk(i)));
     for (int i = 1; i <= nu; ++i)
@@ -282,6 +288,7 @@ uint32_t Packer::add_prototype(const TopoDS_Shape& shape, bool closed) {
     TopExp::MapShapes(shape, TopAbs_VERTEX, vertex_map);
     TopExp::MapShapes(shape, TopAbs_EDGE, edge_map);
     std::vector<uint32_t> vertex_ids(vertex_map.Extent() + 1, kNoIndex), edge_ids(edge_map.Extent() + 1, kNoIndex);
+    const std::vector<float> max_sag = edge_sag_limits(shape, edge_map);
     for (int i = 1; i <= vertex_map.Extent(); ++i) {
         const gp_Pnt p = BRep_Tool::Pnt(TopoDS::Vertex(vertex_map(i)));
         vertex_ids[i] = w_.add_vertex(float(p.X()), float(p.Y()), float(p.Z()));
@@ -310,7 +317,7 @@ uint32_t Packer::add_prototype(const TopoDS_Shape& shape, bool closed) {
             return w_.add_vertex(float(p.X()), float(p.Y()), float(p.Z()));
         };
         const uint32_t va = end_vertex(a, t0), vb = end_vertex(b, t1);
-        edge_ids[i] = w_.add_edge({curve, float(t0), float(t1), va, vb, float(BRep_Tool::Tolerance(e))});
+        edge_ids[i] = w_.add_edge({curve, float(t0), float(t1), va, vb, max_sag[i]});
         ++stats_.edges;
     } catch (const Standard_Failure& f) {
         // The edge stays unpacked; faces that use it are skipped below with this reason.

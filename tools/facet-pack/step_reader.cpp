@@ -1,5 +1,9 @@
 #include "step_reader.h"
 
+#include <BRepBndLib.hxx>
+#include <BRepBuilderAPI_Sewing.hxx>
+#include <BRep_Tool.hxx>
+#include <Bnd_Box.hxx>
 #include <IFSelect_ReturnStatus.hxx>
 #include <STEPCAFControl_Reader.hxx>
 #include <STEPControl_Reader.hxx>
@@ -8,12 +12,17 @@
 #include <TColStd_SequenceOfAsciiString.hxx>
 #include <TDF_LabelSequence.hxx>
 #include <TDocStd_Document.hxx>
+#include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
+#include <TopTools_ListOfShape.hxx>
+#include <TopoDS.hxx>
 #include <XCAFApp_Application.hxx>
 #include <XCAFDoc_DocumentTool.hxx>
 #include <XCAFDoc_ShapeTool.hxx>
 #include <XSControl_WorkSession.hxx>
 
+#include <cmath>
 #include <cstdio>
 
 namespace facet::packer {
@@ -32,6 +41,45 @@ float unit_mm(STEPCAFControl_Reader& reader) {
     return 1.0f;
 }
 
+
+// Edges of the shape used by one face only (a seam, used twice by its face, and a degenerate
+// edge at a pole count as closed): where a solid's B-rep has gaps.
+int free_edges(const TopoDS_Shape& shape) {
+    TopTools_IndexedDataMapOfShapeListOfShape faces_of;
+    TopExp::MapShapesAndAncestors(shape, TopAbs_EDGE, TopAbs_FACE, faces_of);
+    int n = 0;
+    for (int i = 1; i <= faces_of.Extent(); ++i) {
+        const TopoDS_Edge& e = TopoDS::Edge(faces_of.FindKey(i));
+        if (BRep_Tool::Degenerated(e) || faces_of(i).Extent() != 1) continue;
+        if (BRep_Tool::IsClosed(e, TopoDS::Face(faces_of(i).First()))) continue; // a seam
+        ++n;
+    }
+    return n;
+}
+
+// A solid whose faces do not share their edges everywhere (an unsewn B-rep) is sewn within a
+// small tolerance; closed says whether every edge then has two faces.
+void close_gaps(Part& part) {
+    if (!part.closed || free_edges(part.shape) == 0) return;
+    Bnd_Box box;
+    BRepBndLib::Add(part.shape, box);
+    const double diag = box.IsVoid() ? 1.0 : std::sqrt(box.SquareExtent());
+    try {
+        BRepBuilderAPI_Sewing sew(1e-5 * diag);
+        sew.Add(part.shape);
+        sew.Perform();
+        TopoDS_Shape sewn = sew.SewedShape();
+        if (!sewn.IsNull() && free_edges(sewn) < free_edges(part.shape)) {
+            ShapeFix_Shape fix(sewn);
+            fix.Perform();
+            sewn = fix.Shape();
+            sewn.Location(part.shape.Location());
+            part.shape = sewn;
+        }
+    } catch (const Standard_Failure&) {
+    }
+    part.closed = free_edges(part.shape) == 0;
+}
 
 } // namespace
 
@@ -89,6 +137,10 @@ bool read_step(const std::string& in, StepModel& model, std::string& error, bool
                 healed.Location(p.shape.Location()); // keep the occurrence's placement
                 p.shape = healed;
             } catch (const Standard_Failure&) {
+            }
+            if (p.closed) {
+                close_gaps(p);
+                if (!p.closed) ++model.open_solids;
             }
             model.parts.push_back(p);
         }

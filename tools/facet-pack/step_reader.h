@@ -10,13 +10,14 @@ namespace facet::packer {
 
 struct Part {
     TopoDS_Shape shape; // a solid, an open shell or a lone face, healed, with its placement
-    bool closed;        // a solid
+    bool closed;        // a solid whose faces share every edge (after healing and sewing)
 };
 
 struct StepModel {
     std::vector<Part> parts;
     Handle(XCAFDoc_ColorTool) colours; // null when the file has no product structure
     float unit_mm = 1.0f;              // the file's length unit (OCCT converts to mm)
+    uint32_t open_solids = 0;          // solids with gaps healing could not close
 };
 
 // Reads and heals; on failure returns false with a message for the user.

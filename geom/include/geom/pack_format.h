@@ -10,7 +10,7 @@
 namespace facet::pack {
 
 constexpr char kMagic[4] = {'F', 'P', 'K', '1'};
-constexpr uint16_t kVersion = 1;
+constexpr uint16_t kVersion = 2;
 constexpr uint32_t kNoIndex = 0xFFFFFFFFu;
 constexpr uint32_t kMaxSections = 16;
 constexpr uint32_t kMaxBytes = 64u << 20; // a pack larger than this is refused as corrupt
@@ -115,7 +115,9 @@ struct Edge {
     uint32_t curve;     // Curves3 index; kNoIndex for a degenerate edge (a pole or apex)
     float t0, t1;       // parameter range on the curve
     uint32_t v0, v1;    // Vertices at t0 and t1
-    float tolerance;    // mm
+    float max_sag;      // mm, 0 = none: the largest chord sag that keeps every loop through the
+                        // edge simple (40% of its distance to the nearest edge of its faces that
+                        // shares no vertex with it): a thin face's two sides must not cross
 };
 static_assert(sizeof(Edge) == 24);
 

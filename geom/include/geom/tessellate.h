@@ -5,9 +5,11 @@
 // two faces of an edge use identical samples and identical 3D points: watertight by
 // construction. A face maps its loops' samples into (u,v) (its pcurves, or the inverse of an
 // elementary surface), scales (u,v) by the surface's metric so Delaunay in the plane gives
-// well-shaped 3D triangles, quantizes to the CDT grid, adds curvature points where the surface
-// leaves its flat cells by more than the tolerance, triangulates with cdt/, and appends the
-// inner triangles with 3D positions and normals to the mesh. All storage is the caller's.
+// well-shaped 3D triangles, quantizes to the CDT grid and triangulates the loops with cdt/.
+// Interior points then go in greedily where the mesh strays furthest from the surface, until
+// every inner triangle is within the tolerance (planes need none; a cylinder or cone needs
+// none while its triangles span small enough angles). The inner triangles are appended with
+// 3D positions and normals to the mesh. All storage is the caller's.
 #include "cdt/face.h"
 #include "geom/eval.h"
 #include "geom/pack.h"
@@ -18,7 +20,10 @@ namespace facet::geom {
 
 struct TessOptions {
     float tolerance = 0.1f;  // mm, chordal deviation allowed (default: 0.1% of the diagonal)
-    float max_angle = 0.5f;  // rad, turning between neighbouring samples / cell corners (< pi)
+    // rad (< pi), the most an edge's tangent may turn between two samples: a full circle gets
+    // at least 7 sides however small it is. The tolerance alone decides everything else; a
+    // view zoomed in on a small feature asks for a finer tolerance.
+    float max_angle = 1.0f;
 };
 
 struct MeshVertex {
@@ -42,26 +47,40 @@ struct EdgeSamples {
     uint32_t used = 0;
 };
 
-// Per-face working memory (one face at a time).
+// How far one triangle strays from its surface, and where a point would help most.
+struct TriangleMeasure {
+    uint64_t key;     // the slot's three vertices when measured (a changed triangle is re-measured)
+    float error2;     // squared deviation estimate
+    cdt::Point at;    // the grid point to insert if it is too large
+};
+
+// A triangle that keeps a loop point the CDT grid could not hold (see clean_loops).
+struct Sliver {
+    Vec3 p[3];
+    Vec2 uv[3];
+};
+
+// Per-face working memory (one face at a time). uv and xyz hold every point of the face:
+// the loops' samples, then the points refinement adds.
 struct FaceScratch {
     cdt::ArenaView<uint16_t> arena;
     std::span<cdt::Point> loop_points;
     std::span<uint32_t> loop_sizes;
-    std::span<cdt::Point> interior;
-    std::span<Vec2> uv;          // per input point (loops then interior), unquantized
+    std::span<Vec2> uv;          // per point, unquantized
     std::span<uint8_t> pinned;   // per loop point: bit 0 u, bit 1 v known exactly (seam, pcurve)
-    std::span<Vec3> xyz;         // per loop point: the edge sample's 3D point
-    std::span<uint32_t> mesh_of; // per CDT vertex: its mesh vertex
-    // Optional, per CDT triangle slot: which triangles already met the tolerance, so that a
-    // refinement round measures only the triangles that changed (empty: measure all, slower).
-    std::span<uint64_t> passed = {};
+    std::span<Vec3> xyz;         // per point: the edge sample's 3D point, or the surface point
+    std::span<uint32_t> mesh_of; // per CDT vertex: its point (while refining), then its mesh vertex
+    // Per CDT triangle slot: the last measure of the triangle in it, so that a refinement
+    // round measures only the triangles that changed. At least triangles_for(arena vertices).
+    std::span<TriangleMeasure> measured;
+    std::span<Sliver> slivers;  // loop points dropped from the grid, as triangles
 };
 
 struct FaceResult {
     Status status = Status::Ok;
     const char* reason = "";  // on failure
     uint32_t triangles = 0;
-    uint32_t points = 0;      // CDT input points
+    uint32_t points = 0;      // CDT points (loop samples and refinement points)
 };
 
 // Samples every edge of the pack. Full if the pool is too small.
@@ -70,11 +89,6 @@ Status sample_edges(const Pack& pack, const TessOptions& opt, EdgeSamples& out);
 // Tessellates face `face` of the pack (placed by nothing: shell coordinates).
 FaceResult tessellate_face(const Pack& pack, uint32_t face, const EdgeSamples& edges, const TessOptions& opt,
                            FaceScratch& scratch, Mesh& mesh);
-
-// How far point c (a triangle's centroid) is from face `face`'s surface, and the surface
-// point's (u,v): on elementary surfaces by inverting c (well defined even at poles and apexes),
-// else at `uv_guess` (the triangle's uv centroid).
-float surface_deviation(const Pack& pack, uint32_t face, Vec3 c, Vec2 uv_guess, Vec2& uv_out);
 
 // 0.1% of the pack's bounding-box diagonal (the default tolerance).
 float default_tolerance(const Pack& pack);

@@ -1,0 +1,242 @@
+// A face's loops into its (u,v) domain (tessellate_face steps 1 and 3b).
+#include "face_internal.h"
+#include "geom/fmath.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace facet::geom::detail {
+
+using namespace facet::pack;
+
+namespace {
+
+bool any_periodic(const Surface& s) { return u_periodic(s) || v_periodic(s); }
+
+// Makes the periodic coordinates of a loop continuous: inverted samples are only known modulo
+// 2 pi. Starts from a seam sample (its side is known), or else from the first sample taken
+// within pi of the face's middle.
+void unwrap_loop(FaceScratch& sc, uint32_t start, uint32_t n, const Surface& S, const pack::Face& F) {
+    for (int axis = 0; axis < 2; ++axis) {
+        if (!(axis == 0 ? u_periodic(S) : v_periodic(S))) continue;
+        const uint8_t bit = uint8_t(1 << axis);
+        auto get = [&](uint32_t i) -> float& { return axis == 0 ? sc.uv[start + i].x : sc.uv[start + i].y; };
+        uint32_t anchor = n;
+        for (uint32_t i = 0; i < n && anchor == n; ++i)
+            if (sc.pinned[start + i] & bit) anchor = i;
+        if (anchor == n) {
+            anchor = 0;
+            const float mid = axis == 0 ? 0.5f * (F.uv_min[0] + F.uv_max[0]) : 0.5f * (F.uv_min[1] + F.uv_max[1]);
+            float& a = get(0);
+            while (a < mid - kTwoPi / 2) a += kTwoPi;
+            while (a >= mid + kTwoPi / 2) a -= kTwoPi;
+        }
+        float prev = get(anchor);
+        for (uint32_t k = 1; k < n; ++k) {
+            const uint32_t i = (anchor + k) % n;
+            float& a = get(i);
+            if (!(sc.pinned[start + i] & bit)) {
+                while (a - prev > kTwoPi / 2) a -= kTwoPi;
+                while (a - prev < -kTwoPi / 2) a += kTwoPi;
+            }
+            prev = a;
+        }
+    }
+}
+
+// Two preimages (a self-intersecting torus): the one nearer the previous sample, periodic
+// coordinates compared modulo 2 pi.
+float periodic_distance(Vec2 a, Vec2 b) {
+    auto per = [](float d) {
+        d = std::fabs(std::fmod(d, kTwoPi));
+        return std::min(d, kTwoPi - d);
+    };
+    return per(a.x - b.x) + per(a.y - b.y);
+}
+
+// Whether point i and (p, uv) are one vertex of the loop: one 3D point, and either both from
+// pcurves (which may disagree a little) or at one (u,v) (an inverted point; the same 3D point
+// at u = 0 and u = 2 pi is two points of the loop).
+bool same_vertex(const FaceScratch& sc, uint32_t i, Vec3 p, Vec2 uv, uint8_t pinned) {
+    const Vec3 q = sc.xyz[i];
+    if (!(p.x == q.x && p.y == q.y && p.z == q.z)) return false;
+    if (pinned == 3 && sc.pinned[i] == 3) return true;
+    return uv.x == sc.uv[i].x && uv.y == sc.uv[i].y;
+}
+
+} // namespace
+
+Status map_loops(const Pack& pack, uint32_t fi, const EdgeSamples& edges, FaceScratch& sc, uint32_t& np, uint32_t& nl,
+                 const char*& why) {
+    const pack::Face& F = pack.faces()[fi];
+    const Surface& S = pack.surfaces()[F.surface];
+    const bool elementary = is_elementary(S);
+    np = nl = 0;
+    const uint32_t cap = uint32_t(std::min({sc.uv.size(), sc.xyz.size(), sc.loop_points.size(), sc.pinned.size()}));
+    for (uint32_t l = F.first_loop; l < F.first_loop + F.loop_count; ++l) {
+        const Loop& L = pack.loops()[l];
+        const uint32_t loop_start = np;
+        for (uint32_t c = L.first_coedge; c < L.first_coedge + L.coedge_count; ++c) {
+            const Coedge& CE = pack.coedges()[c];
+            const Edge& E = pack.edges()[CE.edge];
+            if (E.curve == kNoIndex && CE.pcurve == kNoIndex) continue; // a pole: bridged below
+            const uint32_t first = edges.first[CE.edge], n = edges.count[CE.edge];
+            for (uint32_t k = 0; k < n; ++k) {
+                const uint32_t s = first + (CE.reversed ? n - 1 - k : k);
+                if (np >= cap) {
+                    why = "more edge samples than the face scratch holds";
+                    return Status::Full;
+                }
+                Vec2 uv;
+                if (CE.pcurve != kNoIndex) {
+                    uv = eval_curve2(pack, pack.curves2()[CE.pcurve], edges.t[s]).p;
+                } else {
+                    Vec2 cand[2];
+                    const int count = invert_candidates(pack, S, edges.p[s], F.uv_min, F.uv_max, cand);
+                    if (count == 0) {
+                        why = "no pcurve on a free-form surface";
+                        return Status::Corrupt;
+                    }
+                    uv = cand[0];
+                    if (count == 2 && np > loop_start) {
+                        if (periodic_distance(cand[1], sc.uv[np - 1]) < periodic_distance(cand[0], sc.uv[np - 1])) uv = cand[1];
+                    } else if (count == 2) {
+                        invert_elementary(pack, S, edges.p[s], F.uv_min, F.uv_max, uv); // inside the bounds
+                    }
+                }
+                switch (Seam(CE.seam)) {
+                case Seam::ULow: uv.x = F.uv_min[0]; break;
+                case Seam::UHigh: uv.x = F.uv_max[0]; break;
+                case Seam::VLow: uv.y = F.uv_min[1]; break;
+                case Seam::VHigh: uv.y = F.uv_max[1]; break;
+                case Seam::None: break;
+                }
+                // Which parameters are pinned (by a seam) or exact (from a pcurve) for unwrapping.
+                const uint8_t pinned = uint8_t((CE.pcurve != kNoIndex ? 3 : 0) |
+                                               (CE.seam == uint8_t(Seam::ULow) || CE.seam == uint8_t(Seam::UHigh) ? 1 : 0) |
+                                               (CE.seam == uint8_t(Seam::VLow) || CE.seam == uint8_t(Seam::VHigh) ? 2 : 0));
+                // The vertex where two coedges meet is one point: two pcurves ending a hair
+                // apart there would give the loop a spike, or make it cross itself.
+                if (k == 0 && np > loop_start && same_vertex(sc, np - 1, edges.p[s], uv, pinned)) {
+                    sc.uv[np - 1] = (sc.uv[np - 1] + uv) * 0.5f;
+                    continue;
+                }
+                sc.uv[np] = uv;
+                sc.pinned[np] = pinned;
+                sc.xyz[np] = edges.p[s];
+                ++np;
+            }
+        }
+        if (np - loop_start > 1 && same_vertex(sc, loop_start, sc.xyz[np - 1], sc.uv[np - 1], sc.pinned[np - 1])) {
+            sc.uv[loop_start] = (sc.uv[loop_start] + sc.uv[np - 1]) * 0.5f; // the loop closes on its first point
+            --np;
+        }
+        const uint32_t n = np - loop_start;
+        // Singular samples (a sphere's or cone's apex: u undefined there) take u from a
+        // neighbour along the loop, so the pole becomes a segment along v = pole.
+        if (elementary && S.type != uint8_t(SurfaceType::Plane) && n > 2) {
+            const float* q = pack.floats().data() + S.params;
+            const Vec3 O{q[0], q[1], q[2]}, Z{q[9], q[10], q[11]};
+            auto singular = [&](uint32_t i) {
+                const Vec3 d = sc.xyz[loop_start + i] - O;
+                const Vec3 radial = d - Z * dot(d, Z);
+                return length2(radial) < 1e-10f * (length2(d) + 1e-12f);
+            };
+            for (uint32_t i = 0; i < n; ++i) {
+                if (!singular(i)) continue;
+                const uint32_t prev = (i + n - 1) % n, next = (i + 1) % n;
+                const Vec3 a = sc.xyz[loop_start + prev], b = sc.xyz[loop_start + i];
+                const bool prev_same = a.x == b.x && a.y == b.y && a.z == b.z;
+                // The copy of the pole that follows a real sample takes that sample's u; the copy
+                // that precedes the next real sample takes the next one's.
+                const uint32_t from = prev_same ? next : prev;
+                if (!singular(from)) sc.uv[loop_start + i].x = sc.uv[loop_start + from].x;
+            }
+        }
+        if (n > 1 && any_periodic(S)) unwrap_loop(sc, loop_start, n, S, F);
+        if (np > loop_start) {
+            if (nl >= sc.loop_sizes.size()) {
+                why = "more loops than the face scratch holds";
+                return Status::Full;
+            }
+            sc.loop_sizes[nl++] = np - loop_start;
+        }
+    }
+    if (nl == 0) {
+        why = "no loop with any sample";
+        return Status::Degenerate;
+    }
+    return Status::Ok;
+}
+
+namespace {
+
+bool uturn(cdt::Point A, cdt::Point B, cdt::Point C) { // A -> B -> C folds straight back
+    const int64_t cr = int64_t(B.x - A.x) * (C.y - B.y) - int64_t(B.y - A.y) * (C.x - B.x);
+    const int64_t dt = int64_t(B.x - A.x) * (C.x - B.x) + int64_t(B.y - A.y) * (C.y - B.y);
+    return cr == 0 && dt < 0;
+}
+
+} // namespace
+
+Status clean_loops(FaceScratch& sc, uint32_t& np, uint32_t& nl, uint32_t& slivers, const char*& why) {
+    // Point B of A -> B -> C goes when it sits on A's grid point or when the loop folds back
+    // at it; the triangle A, B, C (in loop order) keeps B's edges in the mesh.
+    auto move = [&](uint32_t to, uint32_t from) {
+        sc.loop_points[to] = sc.loop_points[from];
+        sc.uv[to] = sc.uv[from];
+        sc.xyz[to] = sc.xyz[from];
+        sc.pinned[to] = sc.pinned[from];
+    };
+    auto removable = [&](uint32_t a, uint32_t b, uint32_t c) {
+        return sc.loop_points[a] == sc.loop_points[b] || uturn(sc.loop_points[a], sc.loop_points[b], sc.loop_points[c]);
+    };
+    slivers = 0;
+    auto sliver = [&](uint32_t a, uint32_t b, uint32_t c) {
+        if (slivers >= sc.slivers.size()) return false;
+        sc.slivers[slivers++] = {{sc.xyz[a], sc.xyz[b], sc.xyz[c]}, {sc.uv[a], sc.uv[b], sc.uv[c]}};
+        return true;
+    };
+    auto full = [&]() {
+        why = "more collapsed loop points than the face scratch holds";
+        return Status::Full;
+    };
+    uint32_t read = 0, write = 0, kept_loops = 0;
+    for (uint32_t l = 0; l < nl; ++l) {
+        const uint32_t start = write;
+        // One pass along the loop, the kept points on a stack...
+        for (uint32_t k = 0; k < sc.loop_sizes[l]; ++k, ++read) {
+            move(write++, read);
+            while (write - start >= 3 && removable(write - 3, write - 2, write - 1)) {
+                if (!sliver(write - 3, write - 2, write - 1)) return full();
+                move(write - 2, write - 1);
+                --write;
+            }
+        }
+        // ...then where it closes: its last point, then its first, while either can go.
+        for (bool changed = true; changed && write - start >= 3;) {
+            changed = false;
+            if (removable(write - 2, write - 1, start)) {
+                if (!sliver(write - 2, write - 1, start)) return full();
+                --write;
+                changed = true;
+            } else if (removable(write - 1, start, start + 1)) {
+                if (!sliver(write - 1, start, start + 1)) return full();
+                for (uint32_t i = start; i + 1 < write; ++i) move(i, i + 1);
+                --write;
+                changed = true;
+            }
+        }
+        if (write - start >= 3) sc.loop_sizes[kept_loops++] = write - start;
+        else write = start; // nothing left with area: its slivers alone carry its edges
+    }
+    np = write;
+    nl = kept_loops;
+    if (kept_loops == 0 && slivers == 0) {
+        why = "no loop with any area in (u,v)";
+        return Status::Degenerate;
+    }
+    return Status::Ok;
+}
+
+} // namespace facet::geom::detail

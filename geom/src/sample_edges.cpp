@@ -1,0 +1,199 @@
+// Edge sampling: every edge once, into a pool both of its faces read (watertight by
+// construction), as few samples as keep every chord within the tolerance of the curve and
+// every turn of the tangent within the angle.
+#include "face_internal.h"
+#include "geom/fmath.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace facet::geom {
+
+using namespace facet::pack;
+
+float detail::max_arc_angle(float r, float tol) {
+    if (!(r > 0) || tol >= 2 * r) return 4 * kPi;
+    const float s = std::sqrt(tol / (2 * r)); // sin(a/4)
+    return 4 * atan2_f(s, std::sqrt(1 - s * s));
+}
+
+namespace {
+
+// Appends (t, p) to the pool; false when it is full.
+struct Pool {
+    EdgeSamples& out;
+    bool emit(float t, Vec3 p) {
+        if (out.used >= out.t.size() || out.used >= out.p.size()) return false;
+        out.t[out.used] = t;
+        out.p[out.used] = p;
+        ++out.used;
+        return true;
+    }
+};
+
+Vec3 vertex(const Pack& pack, uint32_t i) {
+    const float* p = pack.vertices()[i].p;
+    return {p[0], p[1], p[2]};
+}
+
+// A circular arc: the fewest equal steps that keep both the chord's sag and the turn within
+// bounds. Ends are the exact pack vertices.
+bool sample_circle(const Pack& pack, const Curve& C, const Edge& E, const TessOptions& opt, Pool& pool) {
+    const float r = pack.floats()[C.params + 9];
+    const float span = std::fabs(E.t1 - E.t0);
+    const float step = std::min(detail::max_arc_angle(r, opt.tolerance), opt.max_angle);
+    const float pieces = std::ceil(span / step);
+    const uint32_t n = pieces < 1 ? 1u : (pieces > 4096 ? 4096u : uint32_t(pieces));
+    if (!pool.emit(E.t0, vertex(pack, E.v0))) return false;
+    for (uint32_t k = 1; k < n; ++k) {
+        const float t = E.t0 + (E.t1 - E.t0) * float(k) / float(n);
+        if (!pool.emit(t, eval_curve3(pack, C, t).p)) return false;
+    }
+    return pool.emit(E.t1, vertex(pack, E.v1));
+}
+
+// Whether a B-spline edge is straight (STEP writers and healing make lines of them, seams
+// often): the curve lies in the convex hull of its poles, so if every pole is within a small
+// distance of the line through the edge's ends, and their positions along it are monotonic
+// (variation diminishing: the curve then never turns back), the chord is the edge.
+bool straight_bspline(const Pack& pack, const Curve& C, Vec3 a, Vec3 b, float tol) {
+    const float* q = pack.floats().data() + C.params;
+    const int n = int(q[1]), knots = int(q[2]);
+    const float* poles = q + 5 + knots;
+    const Vec3 d = b - a;
+    const float len2 = dot(d, d);
+    if (!(len2 > 0)) return false;
+    const float near2 = (tol / 16) * (tol / 16);
+    float last = -1e30f;
+    bool up = true, down = true;
+    for (int i = 0; i < n; ++i) {
+        const Vec3 p = Vec3{poles[3 * i], poles[3 * i + 1], poles[3 * i + 2]} - a;
+        const float along = dot(p, d) / len2;
+        if (length2(p - d * along) > near2) return false;
+        if (i > 0) up = up && along >= last, down = down && along <= last;
+        last = along;
+    }
+    return up || down;
+}
+
+// Any other curve, adaptively: a piece whose points leave its chord by more than the
+// tolerance (less a margin), or whose end tangents turn by more than the angle, is cut in k
+// equal pieces, k from the sag (which falls with the square of the length). Starts from 4
+// pieces, so a closed curve (ends equal) and an S-bend are seen.
+bool sample_adaptive(const Pack& pack, const Curve& C, const Edge& E, const TessOptions& opt, Pool& pool) {
+    // The sag is measured at three points of a piece, which need not be where the curve strays
+    // furthest from the chord: aim 5% under the tolerance.
+    const float tol2 = 0.9025f * opt.tolerance * opt.tolerance, cos_max = cos_f(opt.max_angle);
+    constexpr int kStack = 96;
+    constexpr uint32_t kMaxSamples = 4000;
+    struct Piece {
+        float t;
+        Curve3Point p;
+    };
+    Piece stack[kStack]; // right ends of the pieces still to check, the next one on top
+    int top = 0;
+    const float t0 = E.t0, t1 = E.t1;
+    const uint32_t start = pool.out.used;
+    if (!pool.emit(t0, vertex(pack, E.v0))) return false;
+    for (int k = 4; k >= 1; --k) {
+        const float t = k == 4 ? t1 : t0 + (t1 - t0) * float(k) / 4;
+        stack[top++] = {t, eval_curve3(pack, C, t)};
+    }
+    Curve3Point left = eval_curve3(pack, C, t0);
+    float tl = t0;
+    const float min_piece = 1e-6f * (std::fabs(t1 - t0) + 1e-6f);
+    while (top) {
+        const Piece right = stack[top - 1];
+        // The sag at a quarter, half and three quarters of the piece: where the curvature
+        // changes along it, the furthest point is off its middle.
+        const Vec3 chord = right.p.p - left.p;
+        const float len2 = dot(chord, chord);
+        float sag2 = 0;
+        for (int q = 1; q <= 3; ++q) {
+            const Vec3 off = eval_curve3(pack, C, tl + (right.t - tl) * 0.25f * float(q)).p - left.p;
+            const float along = len2 > 0 ? dot(off, chord) / len2 : 0;
+            sag2 = std::max(sag2, length2(off - chord * along));
+        }
+        const bool turned = detail::turns_more(left.d, right.p.d, cos_max);
+        const bool room = right.t - tl > min_piece && pool.out.used - start < kMaxSamples;
+        const int limit = std::min(16, kStack - top + 1); // pieces the stack has room for
+        if ((sag2 > tol2 || turned) && room && limit >= 2) {
+            // k pieces: sag / k^2 <= tol, at least 2.
+            int k = 2;
+            if (sag2 > 4 * tol2) k = int(std::ceil(std::sqrt(std::sqrt(sag2 / tol2)) * 1.05f));
+            k = std::clamp(k, 2, limit);
+            {
+                --top; // the right end goes back on top of the new pieces
+                for (int j = k; j >= 1; --j) {
+                    const float t = j == k ? right.t : tl + (right.t - tl) * float(j) / float(k);
+                    stack[top++] = {t, j == k ? right.p : eval_curve3(pack, C, t)};
+                }
+                continue;
+            }
+        }
+        --top;
+        if (!pool.emit(right.t, top == 0 ? vertex(pack, E.v1) : right.p.p)) return false;
+        tl = right.t;
+        left = right.p;
+    }
+    return true;
+}
+
+// Drops samples closer than min_gap to the sample kept before them (the edge's ends always
+// stay): features far below the tolerance gain nothing from them, and a face's CDT grid could
+// not tell them apart (clean_loops would then have to drop them in that face only).
+void thin_out(EdgeSamples& out, uint32_t first, float min_gap) {
+    const float gap2 = min_gap * min_gap;
+    const uint32_t last = out.used - 1;
+    uint32_t kept = first;
+    for (uint32_t i = first + 1; i < last; ++i) {
+        if (length2(out.p[i] - out.p[kept]) < gap2) continue;
+        ++kept;
+        out.t[kept] = out.t[i];
+        out.p[kept] = out.p[i];
+    }
+    if (kept > first && length2(out.p[last] - out.p[kept]) < gap2) --kept; // too near the end
+    ++kept;
+    out.t[kept] = out.t[last];
+    out.p[kept] = out.p[last];
+    out.used = kept + 1;
+}
+
+} // namespace
+
+Status sample_edges(const Pack& pack, const TessOptions& opt, EdgeSamples& out) {
+    out.used = 0;
+    const auto edges = pack.edges();
+    if (out.first.size() < edges.size() || out.count.size() < edges.size()) return Status::Full;
+    Pool pool{out};
+    for (uint32_t e = 0; e < edges.size(); ++e) {
+        const Edge& E = edges[e];
+        // A thin face's two sides must not cross: its edges' sag stays under their limit.
+        TessOptions edge_opt = opt;
+        if (E.max_sag > 0 && E.max_sag < opt.tolerance) edge_opt.tolerance = E.max_sag;
+        out.first[e] = out.used;
+        const Vec3 a = vertex(pack, E.v0), b = vertex(pack, E.v1);
+        bool room;
+        if (E.curve == kNoIndex) { // degenerate: a single point
+            room = pool.emit(E.t0, a) && pool.emit(E.t1, a);
+        } else {
+            const Curve& C = pack.curves3()[E.curve];
+            switch (CurveType(C.type)) {
+            case CurveType::Line: room = pool.emit(E.t0, a) && pool.emit(E.t1, b); break;
+            case CurveType::Circle: room = sample_circle(pack, C, E, edge_opt, pool); break;
+            case CurveType::BSpline:
+                room = straight_bspline(pack, C, a, b, edge_opt.tolerance) ? pool.emit(E.t0, a) && pool.emit(E.t1, b)
+                                                                           : sample_adaptive(pack, C, E, edge_opt, pool);
+                break;
+            default: room = sample_adaptive(pack, C, E, edge_opt, pool); break;
+            }
+        }
+        if (!room) return Status::Full;
+        if (out.used - out.first[e] > 2) thin_out(out, out.first[e], opt.tolerance / 16);
+        if (out.used - out.first[e] > 0xFFFF) return Status::Full;
+        out.count[e] = uint16_t(out.used - out.first[e]);
+    }
+    return Status::Ok;
+}
+
+} // namespace facet::geom
