@@ -278,6 +278,9 @@ bool invert_elementary(const Pack& pack, const Surface& s, Vec3 P, const float u
     const Vec3 d = P - v3(q);
     const float x = dot(d, v3(q + 3)), y = dot(d, v3(q + 6)), z = dot(d, v3(q + 9));
     auto wrap = [](float a, float lo) { // into [lo, lo + 2 pi)
+        if (a < lo) a += kTwoPi; // atan2 is within pi of 0: one turn does it for most faces
+        else if (a >= lo + kTwoPi) a -= kTwoPi;
+        if (a >= lo && a < lo + kTwoPi) return a;
         float r = std::fmod(a - lo, kTwoPi);
         if (r < 0) r += kTwoPi;
         return lo + r;

@@ -36,6 +36,34 @@ namespace {
 
 constexpr int kMaxRounds = 40;
 
+// The points (i, j, k) / 6 of a triangle, corners left out, in barycentric coordinates; edges:
+// bit e set when the point lies on edge e (coordinate e zero).
+struct GridPoint {
+    float l[3];
+    uint8_t edges;
+};
+constexpr int kGridSteps = 6;
+constexpr int kGridPoints = (kGridSteps + 1) * (kGridSteps + 2) / 2 - 3;
+constexpr auto make_sixths() {
+    struct Table {
+        GridPoint p[kGridPoints];
+        const GridPoint* begin() const { return p; }
+        const GridPoint* end() const { return p + kGridPoints; }
+        const GridPoint& operator[](int i) const { return p[i]; }
+    } t{};
+    int n = 0;
+    for (int i = 0; i <= kGridSteps; ++i) {
+        for (int j = 0; i + j <= kGridSteps; ++j) {
+            const int k = kGridSteps - i - j;
+            if (i == kGridSteps || j == kGridSteps || k == kGridSteps) continue;
+            t.p[n++] = {{float(i) / kGridSteps, float(j) / kGridSteps, float(k) / kGridSteps},
+                        uint8_t((i == 0 ? 1 : 0) | (j == 0 ? 2 : 0) | (k == 0 ? 4 : 0))};
+        }
+    }
+    return t;
+}
+constexpr auto kSixths = make_sixths();
+
 uint64_t key_of(const Tri& T) {
     return uint64_t(T.v[0]) | uint64_t(T.v[1]) << 16 | uint64_t(T.v[2]) << 32 | uint64_t(1) << 48;
 }
@@ -176,16 +204,13 @@ struct Context {
         };
         // A constrained edge is a chord of a B-rep edge, within the tolerance by edge sampling,
         // and no point inside changes it: its points feed the model, but do not count.
-        float worst = 0, w[3] = {1.0f / 3, 1.0f / 3, 1.0f / 3};
-        constexpr int kSteps = 6;
-        for (int i = 0; i <= kSteps; ++i) {
-            for (int j = 0; i + j <= kSteps; ++j) {
-                const int k = kSteps - i - j;
-                if ((i == 0 && T.constrained(0)) || (j == 0 && T.constrained(1)) || (k == 0 && T.constrained(2))) continue;
-                const float l[3] = {float(i) / kSteps, float(j) / kSteps, float(k) / kSteps};
-                const float e = std::fabs(model(l));
-                if (e > worst) worst = e, w[0] = l[0], w[1] = l[1], w[2] = l[2];
-            }
+        const uint8_t constrained = uint8_t((T.constrained(0) ? 1 : 0) | (T.constrained(1) ? 2 : 0) | (T.constrained(2) ? 4 : 0));
+        float worst = 0;
+        const float* w = kSixths[0].l;
+        for (const GridPoint& g : kSixths) {
+            if (g.edges & constrained) continue;
+            const float e = std::fabs(model(g.l));
+            if (e > worst) worst = e, w = g.l;
         }
         m.error2 = worst * worst;
         m.at = grid_at(w[0], w[1], w[2]);

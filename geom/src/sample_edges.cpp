@@ -45,9 +45,18 @@ bool sample_circle(const Pack& pack, const Curve& C, const Edge& E, const TessOp
     const float pieces = std::ceil(span / step);
     const uint32_t n = pieces < 1 ? 1u : (pieces > 4096 ? 4096u : uint32_t(pieces));
     if (!pool.emit(E.t0, vertex(pack, E.v0))) return false;
+    // cos and sin of the angle step by step (a rotation per sample): no trigonometry per point.
+    const float* q = pack.floats().data() + C.params;
+    const Vec3 O{q[0], q[1], q[2]}, X{q[3], q[4], q[5]}, Y{q[6], q[7], q[8]};
+    const float dt = (E.t1 - E.t0) / float(n);
+    float c, s, cd, sd;
+    sincos_f(E.t0, s, c);
+    sincos_f(dt, sd, cd);
     for (uint32_t k = 1; k < n; ++k) {
-        const float t = E.t0 + (E.t1 - E.t0) * float(k) / float(n);
-        if (!pool.emit(t, eval_curve3(pack, C, t).p)) return false;
+        const float cn = c * cd - s * sd;
+        s = s * cd + c * sd;
+        c = cn;
+        if (!pool.emit(E.t0 + dt * float(k), O + (X * c + Y * s) * r)) return false;
     }
     return pool.emit(E.t1, vertex(pack, E.v1));
 }

@@ -4,6 +4,7 @@
 #include "geom/fmath.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 namespace facet::geom {
@@ -27,17 +28,72 @@ float default_tolerance(const Pack& pack) {
 
 namespace {
 
-// The unit normal of the face at (u,v): the surface's, flipped on a reversed face. At a pole
-// (du x dv vanishes) it looks a little toward the middle of the face.
-Vec3 face_normal(const Pack& pack, const Surface& S, const pack::Face& F, Vec2 uv, const SurfacePoint& sp) {
-    Vec3 n = cross(sp.du, sp.dv);
-    if (length2(n) < 1e-24f) {
-        const float um = 0.5f * (F.uv_min[0] + F.uv_max[0]), vm = 0.5f * (F.uv_min[1] + F.uv_max[1]);
-        const SurfacePoint s2 = eval_surface(pack, S, uv.x + 1e-3f * (um - uv.x), uv.y + 1e-3f * (vm - uv.y));
-        n = cross(s2.du, s2.dv);
+// Unit normals of one face, flipped on a reversed face: in closed form from the 3D point on
+// planes, cylinders, cones and spheres (no trigonometry, no square root: on a soft-float core
+// these are the bulk of a vertex's cost), from the surface's derivatives elsewhere.
+class FaceNormals {
+public:
+    FaceNormals(const Pack& pack, const Surface& S, const pack::Face& F)
+        : pack_(pack), S_(S), F_(F), type_(SurfaceType(S.type)), flip_(F.reversed ? -1.0f : 1.0f) {
+        if (type_ > SurfaceType::Torus) return;
+        const float* q = pack.floats().data() + S.params;
+        O_ = {q[0], q[1], q[2]};
+        Z_ = {q[9], q[10], q[11]};
+        // du x dv is +-(X x Y)-oriented: the sign of a left-handed placement goes with it.
+        const float hand = dot(cross(Vec3{q[3], q[4], q[5]}, Vec3{q[6], q[7], q[8]}), Z_) < 0 ? -flip_ : flip_;
+        switch (type_) {
+        case SurfaceType::Plane: plane_ = Z_ * hand; break;
+        case SurfaceType::Cylinder:
+        case SurfaceType::Sphere: scale_ = hand / q[12]; break;
+        case SurfaceType::Cone:
+            sincos_f(q[13], sin_a_, cos_a_);
+            radius_ = q[12];
+            scale_ = hand;
+            break;
+        default: break;
+        }
     }
-    return normalized(n) * (F.reversed ? -1.0f : 1.0f);
-}
+
+    Vec3 at(Vec3 p, Vec2 uv) const {
+        const Vec3 d = p - O_;
+        switch (type_) {
+        case SurfaceType::Plane: return plane_;
+        case SurfaceType::Cylinder: return (d - Z_ * dot(d, Z_)) * scale_;
+        case SurfaceType::Sphere: return d * scale_;
+        case SurfaceType::Cone: {
+            // (cos a radial - sin a Z) on the near side of the apex, mirrored past it.
+            const float z = dot(d, Z_), s = radius_ + z / cos_a_ * sin_a_; // the signed radius there
+            if (std::fabs(s) > 1e-6f * (std::fabs(radius_) + std::fabs(z))) {
+                return ((d - Z_ * z) * (cos_a_ / std::fabs(s)) - Z_ * (s < 0 ? -sin_a_ : sin_a_)) * scale_;
+            }
+            break; // the apex: from the derivatives nearby
+        }
+        default: break;
+        }
+        return from_derivatives(uv);
+    }
+
+private:
+    // At a pole (du x dv vanishes) it looks a little toward the middle of the face.
+    Vec3 from_derivatives(Vec2 uv) const {
+        SurfacePoint sp = eval_surface(pack_, S_, uv.x, uv.y);
+        Vec3 n = cross(sp.du, sp.dv);
+        if (length2(n) < 1e-24f) {
+            const float um = 0.5f * (F_.uv_min[0] + F_.uv_max[0]), vm = 0.5f * (F_.uv_min[1] + F_.uv_max[1]);
+            sp = eval_surface(pack_, S_, uv.x + 1e-3f * (um - uv.x), uv.y + 1e-3f * (vm - uv.y));
+            n = cross(sp.du, sp.dv);
+        }
+        return normalized(n) * flip_;
+    }
+
+    const Pack& pack_;
+    const Surface& S_;
+    const pack::Face& F_;
+    SurfaceType type_;
+    float flip_;
+    Vec3 O_{}, Z_{}, plane_{};
+    float scale_ = 1, radius_ = 0, sin_a_ = 0, cos_a_ = 1;
+};
 
 // How much the surface bends along u and along v at (u, v): the normal curvatures of the
 // parameter directions (1/mm; magnitudes). Exact on the elementary surfaces; on the others
@@ -79,9 +135,8 @@ void bending(const Pack& pack, const Surface& S, const pack::Face& F, float u, f
 }
 
 // Appends a vertex (the caller checked the room).
-uint32_t add_vertex(const Pack& pack, const Surface& S, const pack::Face& F, Mesh& mesh, Vec3 p, Vec2 uv) {
-    const SurfacePoint sp = eval_surface(pack, S, uv.x, uv.y);
-    mesh.vertices[mesh.vertex_count] = {p, face_normal(pack, S, F, uv, sp)};
+uint32_t add_vertex(const FaceNormals& normals, Mesh& mesh, Vec3 p, Vec2 uv) {
+    mesh.vertices[mesh.vertex_count] = {p, normals.at(p, uv)};
     if (mesh.vertex_count < mesh.uv.size()) mesh.uv[mesh.vertex_count] = uv;
     return mesh.vertex_count++;
 }
@@ -96,12 +151,17 @@ void add_triangle(const pack::Face& F, Mesh& mesh, const uint32_t id[3], FaceRes
     ++res.triangles;
 }
 
-bool equal(Vec3 p, Vec3 q) { return p.x == q.x && p.y == q.y && p.z == q.z; }
+// One point: the same bits (compared as integers: float compares are library calls on a
+// soft-float core). Samples of one point are copies of one computation.
+bool equal(Vec3 p, Vec3 q) {
+    return std::bit_cast<uint32_t>(p.x) == std::bit_cast<uint32_t>(q.x) && std::bit_cast<uint32_t>(p.y) == std::bit_cast<uint32_t>(q.y) &&
+           std::bit_cast<uint32_t>(p.z) == std::bit_cast<uint32_t>(q.z);
+}
 
 // The CDT's inner triangles and their vertices, each vertex once, in the order first used.
 // sc.mesh_of maps CDT vertices to points on the way in and to mesh vertices on the way out.
-Status emit_triangles(const Pack& pack, const Surface& S, const pack::Face& F, const cdt::Cdt<uint16_t>& cdt,
-                      FaceScratch& sc, Mesh& mesh, FaceResult& res) {
+Status emit_triangles(const FaceNormals& normals, const pack::Face& F, const cdt::Cdt<uint16_t>& cdt, FaceScratch& sc,
+                      Mesh& mesh, FaceResult& res) {
     constexpr uint32_t kAssigned = 0x80000000u; // mesh_of[v]: a mesh vertex, not a point
     auto position = [&](uint16_t v) {
         const uint32_t m = sc.mesh_of[v];
@@ -121,7 +181,7 @@ Status emit_triangles(const Pack& pack, const Surface& S, const pack::Face& F, c
             uint32_t& m = sc.mesh_of[T.v[k]];
             if (!(m & kAssigned)) {
                 if (mesh.vertex_count >= mesh.vertices.size()) return Status::Full;
-                m = kAssigned | add_vertex(pack, S, F, mesh, sc.xyz[m], sc.uv[m]);
+                m = kAssigned | add_vertex(normals, mesh, sc.xyz[m], sc.uv[m]);
             }
             id[k] = m & ~kAssigned;
         }
@@ -189,6 +249,7 @@ FaceResult tessellate_face(const Pack& pack, uint32_t fi, const EdgeSamples& edg
         mesh.triangle_count = base_triangle;
         return fail(Status::Full, reason);
     };
+    const FaceNormals normals(pack, S, F);
     if (nl > 0) {
         // 4. Triangulate the loops.
         cdt::Cdt<uint16_t> cdt(sc.arena);
@@ -216,7 +277,7 @@ FaceResult tessellate_face(const Pack& pack, uint32_t fi, const EdgeSamples& edg
 
         // 6. Output: the inner triangles and their vertices (each once, in the order first
         //    used). Loop points keep their edge sample's 3D point, shared with the neighbour.
-        if (Status s = emit_triangles(pack, S, F, cdt, sc, mesh, res); !ok(s)) return rollback("the mesh is full");
+        if (Status s = emit_triangles(normals, F, cdt, sc, mesh, res); !ok(s)) return rollback("the mesh is full");
     }
     // The slivers of collapsed loop points (their own vertices; none with two equal corners).
     for (uint32_t k = 0; k < slivers; ++k) {
@@ -226,7 +287,7 @@ FaceResult tessellate_face(const Pack& pack, uint32_t fi, const EdgeSamples& edg
             return rollback("the mesh is full");
         }
         uint32_t id[3];
-        for (int c = 0; c < 3; ++c) id[c] = add_vertex(pack, S, F, mesh, v.p[c], v.uv[c]);
+        for (int c = 0; c < 3; ++c) id[c] = add_vertex(normals, mesh, v.p[c], v.uv[c]);
         add_triangle(F, mesh, id, res);
     }
     return res;

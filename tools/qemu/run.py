@@ -113,6 +113,8 @@ def main():
     ap.add_argument('--budget', action='append', default=[], metavar='REGION=N')
     ap.add_argument('--profile', action='store_true',
                     help='with --icount: write OUT/profile.txt, instructions per function in regions')
+    ap.add_argument('--profile-regions', metavar='A-B,C-D',
+                    help='with --profile: only these regions, numbered in the order they begin')
     ap.add_argument('--window', action='store_true', help='open a QEMU window if a display exists')
     ap.add_argument('--quiet', action='store_true')
     args = ap.parse_args()
@@ -150,6 +152,8 @@ def main():
             parg += f',limit={args.limit}'
         if args.profile:
             parg += f',profile={os.path.join(out, "profile.raw")}'
+            if args.profile_regions:
+                parg += ',profile_regions=' + args.profile_regions.replace(',', ':')
         cmd += ['-plugin', parg, '-d', 'plugin', '-D', plugin_log]
 
     budgets = {}

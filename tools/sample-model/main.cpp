@@ -15,6 +15,8 @@
 #include <GC_MakeCircle.hxx>
 #include <GC_MakeEllipse.hxx>
 #include <STEPControl_Writer.hxx>
+#include <ShapeCustom.hxx>
+#include <ShapeCustom_RestrictionParameters.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Edge.hxx>
@@ -64,7 +66,13 @@ int main(int argc, char** argv) {
     loft.AddWire(ellipse_wire(gp_Pnt(99, 41, H + 7), gp_Dir(0.15, 0.1, 1), 10, 7));
     loft.AddWire(BRepBuilderAPI_MakeWire(BRepBuilderAPI_MakeEdge(GC_MakeCircle(gp_Ax2(gp_Pnt(100, 42, H + 13), gp::DZ()), 3).Value())).Wire());
     loft.Build();
-    if (loft.IsDone()) part = BRepAlgoAPI_Fuse(part, loft.Shape()).Shape();
+    if (loft.IsDone()) {
+        // The loft comes out of degree 14 around; CAD systems write lower degrees (3 to 5).
+        Handle(ShapeCustom_RestrictionParameters) params = new ShapeCustom_RestrictionParameters;
+        const TopoDS_Shape dome = ShapeCustom::BSplineRestriction(loft.Shape(), 1e-3, 1e-5, 5, 64, GeomAbs_C2, GeomAbs_C1,
+                                                                  true, false, params);
+        part = BRepAlgoAPI_Fuse(part, dome).Shape();
+    }
 
     STEPControl_Writer writer;
     if (writer.Transfer(part, STEPControl_AsIs) != IFSelect_RetDone || writer.Write(argv[1]) != IFSelect_RetDone) {

@@ -2,6 +2,7 @@
  * facet-icount: exact guest instruction counts between two marker functions.
  *
  *   -plugin facet-icount.so,begin=0xADDR,end=0xADDR[,limit=N][,total=on][,profile=FILE]
+ *           [,profile_regions=A-B:C-D:...]
  *
  * begin/end are the addresses of facet_mark_begin and facet_mark_end (each a single return
  * instruction, see boards/common). Every translation block adds its instruction count to a
@@ -16,8 +17,9 @@
  * Interrupts must be off (or absent) in measured code for counts to repeat exactly; the facet
  * boards poll their timers and UARTs, so they are. With limit=N a region of more than N
  * instructions stops QEMU with exit code 3 and a message. With profile=FILE, every translation
- * block executed inside a region is tallied and FILE gets "address instructions" lines at exit
- * (tools/qemu/profile.py maps them to functions).
+ * block executed inside a region is tallied and FILE gets "address instructions block_length" lines at exit
+ * (tools/qemu/profile.py maps them to functions); profile_regions restricts the tally to the
+ * regions numbered A to B, C to D, ... (say, the tessellation's and not the frames').
  */
 #include "qemu_plugin_api.h"
 
@@ -39,6 +41,17 @@ static uint32_t open_id[MAX_DEPTH];
 static int depth;
 static uint32_t next_id;
 static const char* profile_path;
+#define MAX_RANGES 16
+static uint32_t range_first[MAX_RANGES], range_last[MAX_RANGES];
+static int ranges; /* 0: every region */
+static int profiling; /* an open region is one to profile */
+
+static int profiled(uint32_t id) {
+    if (ranges == 0) return 1;
+    for (int i = 0; i < ranges; ++i)
+        if (id >= range_first[i] && id <= range_last[i]) return 1;
+    return 0;
+}
 
 /* Profile: one record per translated block start, found by open addressing on the address. */
 #define PROFILE_SLOTS (1u << 20)
@@ -65,7 +78,7 @@ static struct tb_record* profile_slot(uint64_t vaddr, uint64_t insns) {
 static void on_tb_exec(unsigned int vcpu, void* udata) {
     (void)vcpu;
     struct tb_record* r = udata;
-    if (depth > 0) r->executed += r->insns;
+    if (profiling) r->executed += r->insns;
 }
 
 static void say(const char* text) { qemu_plugin_outs(text); }
@@ -81,6 +94,7 @@ static void on_begin(unsigned int vcpu, void* udata) {
     open_start[depth] = total;
     open_id[depth] = next_id++;
     ++depth;
+    profiling = profiling || profiled(open_id[depth - 1]);
 }
 
 static void on_end(unsigned int vcpu, void* udata) {
@@ -92,6 +106,8 @@ static void on_end(unsigned int vcpu, void* udata) {
         return;
     }
     --depth;
+    profiling = 0;
+    for (int d = 0; d < depth; ++d) profiling = profiling || profiled(open_id[d]);
     /* `total` includes the end marker's own return instruction: leave it out. */
     const uint64_t count = total - open_start[depth] - 1;
     snprintf(line, sizeof line, "facet-icount: region %" PRIu32 " depth %d instructions %" PRIu64 "\n",
@@ -142,7 +158,9 @@ static void on_exit_cb(qemu_plugin_id_t id, void* udata) {
             return;
         }
         for (uint32_t i = 0; i < PROFILE_SLOTS; ++i) {
-            if (profile_table[i].executed) fprintf(f, "0x%" PRIx64 " %" PRIu64 "\n", profile_table[i].vaddr, profile_table[i].executed);
+            if (profile_table[i].executed)
+                fprintf(f, "0x%" PRIx64 " %" PRIu64 " %" PRIu64 "\n", profile_table[i].vaddr, profile_table[i].executed,
+                        profile_table[i].insns);
         }
         fclose(f);
     }
@@ -169,6 +187,17 @@ FACET_PLUGIN_EXPORT int qemu_plugin_install(qemu_plugin_id_t id, const qemu_info
             }
         } else if (!strcmp(a, "total=on")) report_total = 1;
         else if (!strncmp(a, "profile=", 8)) profile_path = a + 8;
+        else if (!strncmp(a, "profile_regions=", 16)) {
+            const char* r = a + 16;
+            while (*r && ranges < MAX_RANGES) {
+                char* end;
+                range_first[ranges] = range_last[ranges] = (uint32_t)strtoul(r, &end, 0);
+                if (*end == '-') range_last[ranges] = (uint32_t)strtoul(end + 1, &end, 0);
+                ++ranges;
+                r = *end == ':' ? end + 1 : end;
+                if (*end != ':') break;
+            }
+        }
         else {
             fprintf(stderr, "facet-icount: unknown argument '%s'\n", a);
             return -1;
