@@ -18,6 +18,7 @@ constexpr uint32_t kDefaultRgb = 0x00CDBEB4;   // light warm grey (B,G,R bytes)
 constexpr float kStep = 0.2617993878f;          // 15 degrees
 
 constexpr uint8_t kOutNear = 1, kOutGuard = 2;
+constexpr uint32_t kNoColour = 0xFF000000u; // no palette in the slot (colours are 24-bit)
 
 // X / d for d >= 1, to about 2^-15 relative: one 32-bit division (a library call on the
 // ARM926) instead of a 64-bit one.
@@ -47,6 +48,8 @@ Memory Storage::memory(std::span<uint16_t> depth0, std::span<uint16_t> depth1, s
         done_order,
         projected,
         edge_drawn,
+        palettes,
+        palette_rgb,
     };
 }
 
@@ -66,6 +69,17 @@ Viewer::Viewer(hal::Board& board, Memory& memory, CaptureFn capture, void* captu
       raster_{{board.display, memory.depth[0], memory.line},
               {board.display, memory.depth[1].empty() ? memory.depth[0] : memory.depth[1], memory.line}} {
     buffers_ = board.display.info().buffers >= 2 && !memory.depth[1].empty() ? 2 : 1;
+    for (uint32_t& rgb : mem_.palette_rgb) rgb = kNoColour;
+}
+
+const render::Palette& Viewer::palette(uint32_t rgb) {
+    for (uint32_t i = 0; i < mem_.palette_rgb.size(); ++i)
+        if (mem_.palette_rgb[i] == rgb) return mem_.palettes[i];
+    const uint32_t i = next_palette_;
+    next_palette_ = (next_palette_ + 1) % uint32_t(mem_.palettes.size());
+    mem_.palette_rgb[i] = rgb;
+    render::make_palette(mem_.palettes[i], uint8_t(rgb & 255), uint8_t((rgb >> 8) & 255), uint8_t((rgb >> 16) & 255));
+    return mem_.palettes[i];
 }
 
 Status Viewer::open(const void* data, uint32_t bytes) {
@@ -289,16 +303,17 @@ void Viewer::project(const Instance& in, const int32_t p[3], Projected& o) const
     o.s.z = uint16_t(zz > 65535 ? 65535 : zz);
 }
 
-void Viewer::draw_triangle(int buffer, const Instance& in, const Projected& a, const Projected& b, const Projected& c, render::Cull cull) {
+void Viewer::draw_triangle(int buffer, const Instance& in, const Projected& a, const Projected& b, const Projected& c,
+                           const render::Palette& pal, render::Cull cull) {
     render::Rasterizer& r = raster_[buffer];
     if (!(a.out | b.out | c.out)) {
-        (void)r.draw(a.s, b.s, c.s, cull);
+        (void)r.draw(a.s, b.s, c.s, pal, cull);
         return;
     }
     if (a.out & b.out & c.out & kOutNear) return;
     // Clip against the near plane and the guard band (camera space, float: this path is rare).
     struct V {
-        float x, y, d, r, g, b;
+        float x, y, d, shade;
     };
     const float near = float(in.near), f16 = float(in.f16);
     const float G = float(in.guard) * 0.98f; // inside the band after rounding
@@ -306,7 +321,7 @@ void Viewer::draw_triangle(int buffer, const Instance& in, const Projected& a, c
     int n = 3;
     const Projected* src[3] = {&a, &b, &c};
     for (int i = 0; i < 3; ++i)
-        poly[i] = {float(src[i]->x), float(src[i]->y), float(src[i]->d), float(src[i]->s.r), float(src[i]->s.g), float(src[i]->s.b)};
+        poly[i] = {float(src[i]->x), float(src[i]->y), float(src[i]->d), float(src[i]->s.shade)};
     auto plane = [&](const V& v, int k) {
         switch (k) {
         case 0: return v.d - near * 1.01f;
@@ -325,8 +340,7 @@ void Viewer::draw_triangle(int buffer, const Instance& in, const Projected& a, c
             if (dp >= 0) tmp[m++] = p;
             if ((dp >= 0) != (dq >= 0)) {
                 const float t = dp / (dp - dq);
-                tmp[m++] = {p.x + (q.x - p.x) * t, p.y + (q.y - p.y) * t, p.d + (q.d - p.d) * t,
-                            p.r + (q.r - p.r) * t, p.g + (q.g - p.g) * t, p.b + (q.b - p.b) * t};
+                tmp[m++] = {p.x + (q.x - p.x) * t, p.y + (q.y - p.y) * t, p.d + (q.d - p.d) * t, p.shade + (q.shade - p.shade) * t};
             }
         }
         n = m;
@@ -340,17 +354,16 @@ void Viewer::draw_triangle(int buffer, const Instance& in, const Projected& a, c
         s[i].y = in.cy16 - divide(int64_t(round_to_int(poly[i].y)) * in.f16, d);
         const int64_t zz = (int64_t(d - in.near) * in.zk) >> 16;
         s[i].z = uint16_t(zz > 65535 ? 65535 : zz);
-        s[i].r = uint8_t(poly[i].r), s[i].g = uint8_t(poly[i].g), s[i].b = uint8_t(poly[i].b);
+        s[i].shade = uint8_t(poly[i].shade);
     }
-    for (int i = 1; i + 1 < n; ++i) (void)r.draw(s[0], s[i], s[i + 1], cull);
+    for (int i = 1; i + 1 < n; ++i) (void)r.draw(s[0], s[i], s[i + 1], pal, cull);
 }
 
 void Viewer::draw_face(int buffer, uint32_t f, const Instance& in, bool with_edges) {
     const FaceInfo& F = mem_.faces[f];
     if (F.state != FaceState::Done) return;
     Projected* P = mem_.projected.data();
-    const uint32_t rgb = F.rgb;
-    const int32_t cr = int32_t(rgb & 255), cg = int32_t((rgb >> 8) & 255), cb = int32_t((rgb >> 16) & 255);
+    const render::Palette& pal = palette(F.rgb);
     const bool two_sided = !in.closed;
     for (uint32_t v = 0; v < F.vertex_count; ++v) {
         const DrawVertex& dv = mem_.vertices[F.first_vertex + v];
@@ -359,16 +372,13 @@ void Viewer::draw_face(int buffer, uint32_t f, const Instance& in, bool with_edg
         int32_t lit = (int32_t(dv.n[0]) * in.light[0] + int32_t(dv.n[1]) * in.light[1] + int32_t(dv.n[2]) * in.light[2]) >> 14;
         if (lit < 0) lit = two_sided ? (-lit * 154) >> 8 : 0; // the back of an open sheet, a little darker
         if (lit > 16384) lit = 16384;
-        const int32_t k = 77 + ((179 * lit) >> 14); // ambient 0.3 + diffuse 0.7, in 1/256
-        o.s.r = uint8_t((cr * k) >> 8);
-        o.s.g = uint8_t((cg * k) >> 8);
-        o.s.b = uint8_t((cb * k) >> 8);
+        o.s.shade = uint8_t(77 + ((178 * lit) >> 14)); // ambient 0.3 + diffuse 0.7, of 255
     }
     const render::Cull cull = in.closed ? render::Cull::Back : render::Cull::None;
     const uint16_t* id = &mem_.indices[F.first_index];
     for (uint32_t t = 0; t < F.triangle_count; ++t, id += 3) {
-        if (in.mirrored) draw_triangle(buffer, in, P[id[0]], P[id[2]], P[id[1]], cull);
-        else draw_triangle(buffer, in, P[id[0]], P[id[1]], P[id[2]], cull);
+        if (in.mirrored) draw_triangle(buffer, in, P[id[0]], P[id[2]], P[id[1]], pal, cull);
+        else draw_triangle(buffer, in, P[id[0]], P[id[1]], P[id[2]], pal, cull);
     }
     if (with_edges) draw_face_edges(buffer, f, in, false);
 }

@@ -34,6 +34,7 @@ constexpr size_t kSamples = 65536;       // edge samples of the whole model
 constexpr size_t kFaceVertices = 12000;  // per face, in the 16-bit CDT arena
 constexpr size_t kLoops = 512;           // per face
 constexpr size_t kSlivers = 1024;        // per face: loop points closer than the CDT grid
+constexpr size_t kPalettes = 16;         // face colours shaded at once (more are rebuilt as needed)
 constexpr size_t kMeshVertices = 65536;
 constexpr size_t kMeshTriangles = 98304;
 } // namespace capacity
@@ -75,6 +76,8 @@ struct Memory {
     std::span<uint32_t> done_order;    // faces in the order they were finished
     std::span<Projected> projected;    // one face's vertices (or one edge's samples)
     std::span<uint8_t> edge_drawn;     // per pack edge (a full frame draws each edge once)
+    std::span<render::Palette> palettes; // the shades of recently drawn face colours
+    std::span<uint32_t> palette_rgb;   // which colour each holds (kNoColour: none)
 };
 
 // Every buffer of Memory except the display-sized ones, at the capacities above (a static
@@ -102,6 +105,8 @@ struct Storage {
     FaceInfo faces[capacity::kFaces];
     uint32_t done_order[capacity::kFaces];
     Projected projected[capacity::kFaceVertices];
+    render::Palette palettes[capacity::kPalettes];
+    uint32_t palette_rgb[capacity::kPalettes];
 
     // The viewer's Memory over these buffers and the display-sized ones (depth1 may be empty
     // for a single-buffered display).
@@ -142,13 +147,15 @@ private:
     void draw_face_edges(int buffer, uint32_t face, const Instance& in, bool once);
     void draw_edge(int buffer, uint32_t edge, const Instance& in);
     void draw_progress();
-    void draw_triangle(int buffer, const Instance& in, const Projected& a, const Projected& b, const Projected& c, render::Cull cull);
+    void draw_triangle(int buffer, const Instance& in, const Projected& a, const Projected& b, const Projected& c,
+                       const render::Palette& pal, render::Cull cull);
     Instance instance_transform(uint32_t instance) const;
     void project(const Instance& in, const int32_t p[3], Projected& out) const;
     void command(const char* line);
     void key(uint8_t k);
     void view_changed();
     void help();
+    const render::Palette& palette(uint32_t rgb);
 
     hal::Board& board_;
     Memory& mem_;
@@ -170,6 +177,7 @@ private:
     float yaw_ = 0, pitch_ = 0, zoom_ = 1, pan_x_ = 0, pan_y_ = 0;
     uint8_t buttons_ = 0;
 
+    uint32_t next_palette_ = 0;    // the palette slot to reuse next
     uint32_t next_face_ = 0;
     uint32_t pass_ = 0;            // 0: the first tessellation; +1 per level-of-detail change
     bool half_shot_ = false, quit_ = false;

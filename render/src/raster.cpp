@@ -134,6 +134,15 @@ struct Rasterizer::Interp {
     }
 };
 
+void make_palette(Palette& out, uint8_t r, uint8_t g, uint8_t b) {
+    // round(c * s / 255) without dividing: x / 255 = (x + 1 + (x >> 8)) >> 8 for x < 65535.
+    auto scaled = [](uint32_t c, uint32_t s) {
+        const uint32_t x = c * s + 127;
+        return uint8_t((x + 1 + (x >> 8)) >> 8);
+    };
+    for (uint32_t s = 0; s < 256; ++s) out.colour[s] = hal::rgb565(scaled(r, s), scaled(g, s), scaled(b, s));
+}
+
 Rasterizer::Rasterizer(hal::Display& display, std::span<uint16_t> depth,
                        std::span<hal::Rgb565> line)
     : display_(display), depth_(depth), line_(line), width_(display.info().width)
@@ -157,8 +166,9 @@ void Rasterizer::clear_depth() {
     for (i += words * 2; i < n; ++i) depth_[i] = 0xFFFF;
 }
 
-Status Rasterizer::draw(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c,
+Status Rasterizer::draw(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, const Palette& palette,
                         Cull cull) {
+    palette_ = &palette;
     if (!in_guard(a) || !in_guard(b) || !in_guard(c)) return Status::OutOfRange;
     // Doubled signed area; with y down, counter-clockwise on screen gives a negative value.
     const int64_t area2 =
@@ -200,9 +210,9 @@ Status Rasterizer::scan(const ScreenVertex& v0, const ScreenVertex& v1, const Sc
     edges[2].start(v0, v1, sy0);
     // Attributes: exact gradients, then stepped in 32-bit modular arithmetic (exact wherever
     // the true value fits, i.e. inside the triangle) and clamped to the vertices' range.
-    const int32_t vals[4][3] = {{v0.z, v1.z, v2.z}, {v0.r, v1.r, v2.r}, {v0.g, v1.g, v2.g}, {v0.b, v1.b, v2.b}};
-    Interp at[4];
-    for (int k = 0; k < 4; ++k) {
+    const int32_t vals[kAttributes][3] = {{v0.z, v1.z, v2.z}, {v0.shade, v1.shade, v2.shade}};
+    Interp at[kAttributes];
+    for (int k = 0; k < kAttributes; ++k) {
         const Plane pl(vals[k][0], vals[k][1], vals[k][2], v0, v1, v2, area2);
         at[k] = Interp(vals[k], pl.gx, pl.gy, pl.at(8 - v0.x, sy0 - v0.y));
     }
@@ -258,10 +268,10 @@ Status Rasterizer::scan_small(const ScreenVertex& v0, const ScreenVertex& v1, co
     const int32_t bw = std::max({v0.x, v1.x, v2.x}) - std::min({v0.x, v1.x, v2.x});
     const int32_t bh = std::max({v0.y, v1.y, v2.y}) - std::min({v0.y, v1.y, v2.y});
     const bool sliver = int64_t(bw) * bh > 4 * area2;
-    Interp at[4];
-    const int32_t vals[4][3] = {{v0.z, v1.z, v2.z}, {v0.r, v1.r, v2.r}, {v0.g, v1.g, v2.g}, {v0.b, v1.b, v2.b}};
+    Interp at[kAttributes];
+    const int32_t vals[kAttributes][3] = {{v0.z, v1.z, v2.z}, {v0.shade, v1.shade, v2.shade}};
     const int32_t y1 = v1.y - v0.y, y2 = v2.y - v0.y, x1 = v1.x - v0.x, x2 = v2.x - v0.x;
-    for (int k = 0; k < 4; ++k) {
+    for (int k = 0; k < kAttributes; ++k) {
         const int32_t A0 = vals[k][0], d1 = vals[k][1] - A0, d2 = vals[k][2] - A0;
         const int64_t numx = int64_t(d1) * y2 - int64_t(d2) * y1;
         const int64_t numy = int64_t(d2) * x1 - int64_t(d1) * x2;
@@ -292,23 +302,40 @@ Status Rasterizer::scan_small(const ScreenVertex& v0, const ScreenVertex& v1, co
 
 // Shades the pixels lo..hi of row y that pass the depth test and pushes them in runs.
 Status Rasterizer::shade(int32_t y, int32_t lo, int32_t hi, const Interp* at) {
-    uint32_t z = at[0].row + at[0].sx * uint32_t(lo), r = at[1].row + at[1].sx * uint32_t(lo);
-    uint32_t g = at[2].row + at[2].sx * uint32_t(lo), b = at[3].row + at[3].sx * uint32_t(lo);
+    uint32_t z = at[0].row + at[0].sx * uint32_t(lo), s = at[1].row + at[1].sx * uint32_t(lo);
+    const uint32_t zs = at[0].sx, ss = at[1].sx;
     uint16_t* drow = &depth_[size_t(y) * width_];
     hal::Rgb565* line = line_.data();
+    const hal::Rgb565* colour = palette_->colour;
     int32_t run = -1; // first column of the pending run of visible pixels
-    for (int32_t x = lo; x <= hi; ++x) {
-        const uint16_t zv = uint16_t(at[0].value(z));
-        if (zv < drow[x]) {
-            drow[x] = zv;
-            line[x] = static_cast<hal::Rgb565>(((at[1].value(r) >> 3) << 11) | ((at[2].value(g) >> 2) << 5) |
-                                               (at[3].value(b) >> 3));
-            if (run < 0) run = x;
-        } else if (run >= 0) {
-            if (Status s = flush(run, x, y); !ok(s)) return s;
-            run = -1;
+    // The values are linear along the span: when both ends are within the vertices' range,
+    // so is every pixel between, and the per-pixel clamps can go.
+    const uint32_t n = uint32_t(hi - lo);
+    auto inside = [](const Interp& t, uint32_t v) { return int32_t(v) >= t.lo && int32_t(v) <= t.hi; };
+    if (inside(at[0], z) && inside(at[0], z + zs * n) && inside(at[1], s) && inside(at[1], s + ss * n)) {
+        for (int32_t x = lo; x <= hi; ++x, z += zs, s += ss) {
+            const uint16_t zv = uint16_t(int32_t(z) >> kFrac);
+            if (zv < drow[x]) {
+                drow[x] = zv;
+                line[x] = colour[int32_t(s) >> kFrac];
+                if (run < 0) run = x;
+            } else if (run >= 0) {
+                if (Status st = flush(run, x, y); !ok(st)) return st;
+                run = -1;
+            }
         }
-        z += at[0].sx, r += at[1].sx, g += at[2].sx, b += at[3].sx;
+    } else {
+        for (int32_t x = lo; x <= hi; ++x, z += zs, s += ss) {
+            const uint16_t zv = uint16_t(at[0].value(z));
+            if (zv < drow[x]) {
+                drow[x] = zv;
+                line[x] = colour[at[1].value(s)];
+                if (run < 0) run = x;
+            } else if (run >= 0) {
+                if (Status st = flush(run, x, y); !ok(st)) return st;
+                run = -1;
+            }
+        }
     }
     if (run >= 0) return flush(run, hi + 1, y);
     return Status::Ok;

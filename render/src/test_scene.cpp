@@ -17,7 +17,7 @@ struct Shader {
     Vec3 light;         // unit vector toward the light, Q14
 
     // Position (object units) and unit normal (Q14) to a lit screen vertex.
-    ScreenVertex shade(Vec3 p, Vec3 n, uint8_t r, uint8_t g, uint8_t b) const {
+    ScreenVertex shade(Vec3 p, Vec3 n) const {
         const Vec3 q = rot.apply(p);
         const Vec3 m = rot.apply(n);
         const int32_t depth = kCameraDistance - q.z;
@@ -30,9 +30,7 @@ struct Shader {
         int32_t dot = (m.x * light.x + m.y * light.y + m.z * light.z) >> 14;
         if (dot < 0) dot = 0;
         const int32_t k = 4096 + ((dot * 3) >> 2);
-        v.r = static_cast<uint8_t>((r * k) >> 14);
-        v.g = static_cast<uint8_t>((g * k) >> 14);
-        v.b = static_cast<uint8_t>((b * k) >> 14);
+        v.shade = static_cast<uint8_t>((255 * k) >> 14);
         return v;
     }
 };
@@ -54,16 +52,18 @@ Status draw_cube(Rasterizer& raster, const Shader& s) {
         {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, 70, 110, 230},  {{-1, 0, 0}, {0, 0, 1}, {0, 1, 0}, 230, 200, 60},
         {{0, 1, 0}, {0, 0, 1}, {1, 0, 0}, 200, 200, 210}, {{0, -1, 0}, {1, 0, 0}, {0, 0, 1}, 160, 80, 200},
     };
+    Palette palette;
     for (const Face& f : faces) {
+        make_palette(palette, f.r, f.g, f.b);
         const Vec3 c = scale(f.n, h, 1), u = scale(f.u, h, 1), v = scale(f.v, h, 1);
         const Vec3 nq = scale(f.n, 16384, 1);
         const Vec3 corner[4] = {add(c, {-u.x - v.x, -u.y - v.y, -u.z - v.z}),
                                 add(c, {u.x - v.x, u.y - v.y, u.z - v.z}), add(c, add(u, v)),
                                 add(c, {v.x - u.x, v.y - u.y, v.z - u.z})};
         ScreenVertex sv[4];
-        for (int i = 0; i < 4; ++i) sv[i] = s.shade(corner[i], nq, f.r, f.g, f.b);
-        if (Status st = raster.draw(sv[0], sv[1], sv[2]); !ok(st)) return st;
-        if (Status st = raster.draw(sv[0], sv[2], sv[3]); !ok(st)) return st;
+        for (int i = 0; i < 4; ++i) sv[i] = s.shade(corner[i], nq);
+        if (Status st = raster.draw(sv[0], sv[1], sv[2], palette); !ok(st)) return st;
+        if (Status st = raster.draw(sv[0], sv[2], sv[3], palette); !ok(st)) return st;
     }
     return Status::Ok;
 }
@@ -79,14 +79,16 @@ Status draw_sphere(Rasterizer& raster, const Shader& s) {
         const Vec3 n = {int32_t((int64_t(cl) * cos_q15(lon)) >> 16), sin_q15(lat) >> 1,
                         int32_t((int64_t(cl) * sin_q15(lon)) >> 16)}; // Q14
         const Vec3 p = add(centre, scale(n, radius, 16384));
-        return s.shade(p, n, 240, 240, 245);
+        return s.shade(p, n);
     };
+    Palette palette;
+    make_palette(palette, 240, 240, 245);
     for (int i = 0; i < kRings; ++i) {
         for (int j = 0; j < kSegments; ++j) {
             const ScreenVertex p00 = vertex(i, j), p01 = vertex(i, j + 1);
             const ScreenVertex p10 = vertex(i + 1, j), p11 = vertex(i + 1, j + 1);
-            if (Status st = raster.draw(p00, p10, p11); !ok(st)) return st;
-            if (Status st = raster.draw(p00, p11, p01); !ok(st)) return st;
+            if (Status st = raster.draw(p00, p10, p11, palette); !ok(st)) return st;
+            if (Status st = raster.draw(p00, p11, p01, palette); !ok(st)) return st;
         }
     }
     return Status::Ok;

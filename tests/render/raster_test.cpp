@@ -1,5 +1,5 @@
 // Rasterizer properties: exact coverage (top-left rule: shared edges drawn once, no gaps),
-// depth order independent of draw order, culling, guard band, Gouraud end points.
+// depth order independent of draw order, culling, guard band, Gouraud end points, palettes.
 #include "render/raster.h"
 
 #include <gtest/gtest.h>
@@ -52,9 +52,18 @@ struct Fixture {
     }
 };
 
-ScreenVertex v(int32_t x, int32_t y, uint16_t z = 100, uint8_t r = 255, uint8_t g = 255, uint8_t b = 255) {
-    return {x, y, z, r, g, b};
+ScreenVertex v(int32_t x, int32_t y, uint16_t z = 100, uint8_t shade = 255) { return {x, y, z, shade}; }
+
+// A palette whose colour is its own index: a pixel then shows the shade it was given.
+const render::Palette& ramp() {
+    static render::Palette p = [] {
+        render::Palette r;
+        for (int i = 0; i < 256; ++i) r.colour[i] = hal::Rgb565(i);
+        return r;
+    }();
+    return p;
 }
+
 
 } // namespace
 
@@ -70,8 +79,8 @@ TEST(Raster, TwoTrianglesTileTheScreenExactlyOnce) {
     Fixture f(64, 48);
     const int32_t W = 64 * 16, H = 48 * 16;
     // Counter-clockwise on screen (y down): (0,0) -> (0,H) -> (W,H).
-    ASSERT_EQ(f.raster.draw(v(0, 0), v(0, H), v(W, H)), Status::Ok);
-    ASSERT_EQ(f.raster.draw(v(0, 0), v(W, H, 50), v(W, 0, 50)), Status::Ok);
+    ASSERT_EQ(f.raster.draw(v(0, 0), v(0, H), v(W, H), ramp()), Status::Ok);
+    ASSERT_EQ(f.raster.draw(v(0, 0), v(W, H, 50), v(W, 0, 50), ramp()), Status::Ok);
     for (size_t i = 0; i < f.display.count.size(); ++i) ASSERT_EQ(f.display.count[i], 1) << i;
     EXPECT_EQ(f.display.bad, 0);
 }
@@ -100,8 +109,8 @@ TEST(Raster, RandomMeshCoversEveryInteriorPixelExactlyOnce) {
             const ScreenVertex a = v(px[i][j], py[i][j]), b = v(px[i + 1][j], py[i + 1][j]);
             const ScreenVertex c = v(px[i + 1][j + 1], py[i + 1][j + 1]), d = v(px[i][j + 1], py[i][j + 1]);
             // Screen-CCW: a (top-left) -> d (below) -> c -> b.
-            ASSERT_EQ(f.raster.draw(a, d, c), Status::Ok);
-            ASSERT_EQ(f.raster.draw(a, c, b), Status::Ok);
+            ASSERT_EQ(f.raster.draw(a, d, c, ramp()), Status::Ok);
+            ASSERT_EQ(f.raster.draw(a, c, b, ramp()), Status::Ok);
         }
     }
     // Pixels whose centre lies strictly inside the outer boundary (axis-aligned here).
@@ -120,54 +129,60 @@ TEST(Raster, RandomMeshCoversEveryInteriorPixelExactlyOnce) {
 TEST(Raster, NearerTriangleWinsWhateverTheOrder) {
     for (int order = 0; order < 2; ++order) {
         Fixture f(32, 32);
-        const ScreenVertex nearA = v(0, 0, 10, 255, 0, 0), nearB = v(0, 512, 10, 255, 0, 0), nearC = v(512, 512, 10, 255, 0, 0);
-        const ScreenVertex farA = v(0, 0, 900, 0, 0, 255), farB = v(0, 512, 900, 0, 0, 255), farC = v(512, 512, 900, 0, 0, 255);
+        const ScreenVertex nearA = v(0, 0, 10, 200), nearB = v(0, 512, 10, 200), nearC = v(512, 512, 10, 200);
+        const ScreenVertex farA = v(0, 0, 900, 50), farB = v(0, 512, 900, 50), farC = v(512, 512, 900, 50);
         if (order == 0) {
-            ASSERT_EQ(f.raster.draw(nearA, nearB, nearC), Status::Ok);
-            ASSERT_EQ(f.raster.draw(farA, farB, farC), Status::Ok);
+            ASSERT_EQ(f.raster.draw(nearA, nearB, nearC, ramp()), Status::Ok);
+            ASSERT_EQ(f.raster.draw(farA, farB, farC, ramp()), Status::Ok);
         } else {
-            ASSERT_EQ(f.raster.draw(farA, farB, farC), Status::Ok);
-            ASSERT_EQ(f.raster.draw(nearA, nearB, nearC), Status::Ok);
+            ASSERT_EQ(f.raster.draw(farA, farB, farC, ramp()), Status::Ok);
+            ASSERT_EQ(f.raster.draw(nearA, nearB, nearC, ramp()), Status::Ok);
         }
-        EXPECT_EQ(f.display.colour[20 * 32 + 5], 0xF800) << "order " << order;
+        EXPECT_EQ(f.display.colour[20 * 32 + 5], 200) << "order " << order;
     }
 }
 
 TEST(Raster, BackFacesAreCulledAndDegenerateOnesSkipped) {
     Fixture f(16, 16);
-    ASSERT_EQ(f.raster.draw(v(0, 0), v(200, 200), v(0, 200)), Status::Ok); // clockwise on screen
-    ASSERT_EQ(f.raster.draw(v(0, 0), v(100, 100), v(200, 200)), Status::Ok); // collinear
+    ASSERT_EQ(f.raster.draw(v(0, 0), v(200, 200), v(0, 200), ramp()), Status::Ok); // clockwise on screen
+    ASSERT_EQ(f.raster.draw(v(0, 0), v(100, 100), v(200, 200), ramp()), Status::Ok); // collinear
     EXPECT_EQ(f.raster.stats.culled, 2u);
     for (int c : f.display.count) EXPECT_EQ(c, 0);
-    ASSERT_EQ(f.raster.draw(v(0, 0), v(200, 200), v(0, 200), render::Cull::None), Status::Ok);
+    ASSERT_EQ(f.raster.draw(v(0, 0), v(200, 200), v(0, 200), ramp(), render::Cull::None), Status::Ok);
     EXPECT_GT(f.raster.stats.pixels, 0u);
 }
 
 TEST(Raster, RefusesVerticesOutsideTheGuardBand) {
     Fixture f(16, 16);
-    EXPECT_EQ(f.raster.draw(v(0, 0), v(0, 100), v(render::kGuardBand + 1, 100)), Status::OutOfRange);
+    EXPECT_EQ(f.raster.draw(v(0, 0), v(0, 100), v(render::kGuardBand + 1, 100), ramp()), Status::OutOfRange);
     EXPECT_EQ(f.raster.stats.triangles, 0u);
 }
 
-TEST(Raster, GouraudReproducesVertexColoursAtVertexPixels) {
+TEST(Raster, GouraudReproducesVertexShadesAtVertexPixels) {
     Fixture f(64, 64);
     // Vertex a sits on a pixel centre where a left edge (a-b) meets a top edge (c-a), so the
-    // top-left rule gives that pixel to this triangle and its colour is a's exactly.
-    const ScreenVertex a = {8, 8, 100, 255, 0, 0}, b = {8, 62 * 16 + 8, 100, 0, 255, 0},
-                       c = {62 * 16 + 8, 8, 100, 0, 0, 255};
-    ASSERT_EQ(f.raster.draw(a, b, c), Status::Ok);
+    // top-left rule gives that pixel to this triangle and its shade is a's exactly.
+    const ScreenVertex a = {8, 8, 100, 240}, b = {8, 62 * 16 + 8, 100, 40}, c = {62 * 16 + 8, 8, 100, 0};
+    ASSERT_EQ(f.raster.draw(a, b, c, ramp()), Status::Ok);
     EXPECT_EQ(f.display.count[0], 1);
-    EXPECT_EQ(f.display.colour[0], 0xF800);
+    EXPECT_EQ(f.display.colour[0], 240);
     // Pixels on b-c (a right edge) belong to the neighbour: b's and c's pixels are not drawn.
     EXPECT_EQ(f.display.count[size_t(62) * 64], 0);
     EXPECT_EQ(f.display.count[62], 0);
-    // Midway down the left edge: half red, half green; midway along the top: half red, half blue.
-    const hal::Rgb565 left = f.display.colour[size_t(31) * 64];
-    EXPECT_NEAR((left >> 11) & 31, 16, 1);
-    EXPECT_NEAR((left >> 5) & 63, 32, 1);
-    EXPECT_EQ(left & 31, 0);
-    const hal::Rgb565 top = f.display.colour[31];
-    EXPECT_NEAR((top >> 11) & 31, 16, 1);
-    EXPECT_EQ((top >> 5) & 63, 0);
-    EXPECT_NEAR(top & 31, 16, 1);
+    // Midway down the left edge and along the top edge: the mean of the ends' shades; and every
+    // shade along the top falls from a's to c's.
+    EXPECT_NEAR(f.display.colour[size_t(31) * 64], 140, 2);
+    EXPECT_NEAR(f.display.colour[31], 120, 2);
+    for (int x = 1; x < 62; ++x) EXPECT_LE(f.display.colour[x], f.display.colour[x - 1]) << x;
+}
+
+TEST(Raster, PalettesScaleTheColourByTheShade) {
+    render::Palette p;
+    render::make_palette(p, 255, 128, 64);
+    EXPECT_EQ(p.colour[0], hal::rgb565(0, 0, 0));
+    EXPECT_EQ(p.colour[255], hal::rgb565(255, 128, 64));
+    EXPECT_EQ(p.colour[128], hal::rgb565(128, 64, 32));
+    Fixture f(16, 16);
+    ASSERT_EQ(f.raster.draw(v(0, 0), v(0, 256), v(256, 256), p), Status::Ok);
+    EXPECT_EQ(f.display.colour[15 * 16], hal::rgb565(255, 128, 64));
 }

@@ -4,7 +4,10 @@
 // Screen space, y down. Vertex positions are 28.4 fixed point (1/16 pixel); pixel (x, y) is
 // sampled at its centre (16x+8, 16y+8). Coverage follows the top-left rule, so triangles
 // sharing an edge never draw a pixel twice and never leave a gap. Depth is a 16-bit z-buffer
-// (0 nearest); colour is Gouraud-interpolated per vertex. Integer arithmetic only.
+// (0 nearest). Shading is Gouraud: a shade index (how lit the surface is) is interpolated per
+// pixel and the triangle's palette colours it, one table look-up per pixel (a lit CAD face is
+// its colour times its lighting, so one interpolant does the work of three). Integer
+// arithmetic only.
 #include "hal/display.h"
 #include "hal/status.h"
 
@@ -16,8 +19,16 @@ namespace facet::render {
 struct ScreenVertex {
     int32_t x, y;     // 28.4 sub-pixel position
     uint16_t z;       // depth, 0 = nearest
-    uint8_t r, g, b;  // colour
+    uint8_t shade;    // palette index: 0 darkest, 255 brightest
 };
+
+// The colours of one material from dark (0) to fully lit (255).
+struct Palette {
+    hal::Rgb565 colour[256];
+};
+
+// The palette of a colour under light: shade s gives (r, g, b) * s / 255.
+void make_palette(Palette& out, uint8_t r, uint8_t g, uint8_t b);
 
 // Positions must satisfy |x|, |y| <= kGuardBand (28.4 units) so every product stays in 64 bits;
 // triangles beyond it are refused with OutOfRange (clipping happens before the rasterizer).
@@ -44,8 +55,9 @@ public:
     uint16_t height() const { return height_; }
 
     void clear_depth();
-    // Draws one triangle. Front faces are counter-clockwise as seen on the screen.
-    Status draw(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c,
+    // Draws one triangle coloured from `palette`. Front faces are counter-clockwise as seen
+    // on the screen.
+    Status draw(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, const Palette& palette,
                 Cull cull = Cull::Back);
 
     // Draws a one-pixel line from a to b (pixel centres nearest the ends, every pixel on the
@@ -59,13 +71,14 @@ public:
 
 private:
     struct Interp; // one interpolated attribute (raster.cpp)
-    Status scan(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2,
-                int64_t area2);
+    Status scan(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2, int64_t area2);
     Status scan_small(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2, int64_t area2,
                       int32_t row0, int32_t row1, int32_t col0, int32_t col1);
     Status shade(int32_t y, int32_t lo, int32_t hi, const Interp* at);
+    static constexpr int kAttributes = 2; // depth, shade
     Status flush(int32_t from, int32_t to, int64_t y);
 
+    const Palette* palette_ = nullptr; // the triangle being drawn's
     hal::Display& display_;
     std::span<uint16_t> depth_;
     std::span<hal::Rgb565> line_;
