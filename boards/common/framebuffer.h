@@ -13,6 +13,7 @@ public:
     Status fill_span(uint16_t x, uint16_t y, uint16_t count, hal::Rgb565 colour);
     void swap();
     const hal::Rgb565* shown() const { return shown_; }
+    hal::Rgb565* draw() { return draw_; }
     uint16_t width() const { return w_; }
     uint16_t height() const { return h_; }
 

@@ -13,6 +13,7 @@ public:
     Status push_span(uint16_t x, uint16_t y, const hal::Rgb565* pixels, uint16_t count) override;
     Status fill_span(uint16_t x, uint16_t y, uint16_t count, hal::Rgb565 colour) override;
     Status flip() override;
+    hal::Rgb565* draw_buffer() override { return fb_.draw(); }
     const hal::Rgb565* shown() const { return fb_.shown(); }
 
 private:

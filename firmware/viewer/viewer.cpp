@@ -3,6 +3,7 @@
 #include "geom/fmath.h"
 #include "hal/measure.h"
 #include "hal/print.h"
+#include "render/fixed.h"
 
 #include <cmath>
 
@@ -20,15 +21,8 @@ constexpr float kStep = 0.2617993878f;          // 15 degrees
 constexpr uint8_t kOutNear = 1, kOutGuard = 2;
 constexpr uint32_t kNoColour = 0xFF000000u; // no palette in the slot (colours are 24-bit)
 
-// X / d for d >= 1, to about 2^-15 relative: one 32-bit division (a library call on the
-// ARM926) instead of a 64-bit one.
-inline int32_t divide(int64_t x, int32_t d) {
-    const int bits = 32 - __builtin_clz(uint32_t(d));
-    const int e = bits - 16; // d >> e in [2^15, 2^16)
-    const uint32_t dn = e >= 0 ? uint32_t(d) >> e : uint32_t(d) << -e;
-    const uint32_t r = 0x80000000u / dn;
-    return int32_t((x * int64_t(r)) >> (31 + e));
-}
+// X / d for d >= 1, to about 2^-15 relative, without dividing (render/fixed.h).
+inline int32_t divide(int64_t x, int32_t d) { return render::divide(x, render::reciprocal(uint32_t(d))); }
 
 inline int32_t round_to_int(float v) { return int32_t(v + (v >= 0 ? 0.5f : -0.5f)); }
 
@@ -297,8 +291,9 @@ void Viewer::project(const Instance& in, const int32_t p[3], Projected& o) const
         o.out = kOutGuard;
         return;
     }
-    o.s.x = in.cx16 + divide(X, o.d);
-    o.s.y = in.cy16 - divide(Y, o.d);
+    const render::Reciprocal r = render::reciprocal(uint32_t(o.d)); // the perspective: x and y over one depth
+    o.s.x = in.cx16 + render::divide(X, r);
+    o.s.y = in.cy16 - render::divide(Y, r);
     const int64_t zz = (int64_t(o.d - in.near) * in.zk) >> 16;
     o.s.z = uint16_t(zz > 65535 ? 65535 : zz);
 }

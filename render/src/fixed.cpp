@@ -29,6 +29,14 @@ constexpr std::array<int16_t, 257> make_table() {
 constexpr auto kQuarter = make_table();
 static_assert(kQuarter[0] == 0 && kQuarter[256] == 32767, "sine table endpoints");
 
+// 2^31 / (the middle of each 1/128 of [2^15, 2^16)): the first guess of recip31.
+constexpr std::array<uint32_t, 128> make_recip_table() {
+    std::array<uint32_t, 128> t{};
+    for (uint32_t i = 0; i < 128; ++i) t[i] = uint32_t((uint64_t(1) << 31) / (32768 + i * 256 + 128));
+    return t;
+}
+constexpr auto kRecip = make_recip_table();
+
 } // namespace
 
 int32_t sin_q15(uint16_t angle) {
@@ -87,6 +95,18 @@ uint32_t isqrt(uint64_t v) {
         bit >>= 2;
     }
     return static_cast<uint32_t>(res);
+}
+
+uint32_t recip31(uint32_t d) {
+    constexpr uint64_t kOne = uint64_t(1) << 31;
+    uint32_t x = kRecip[(d >> 8) - 128]; // within 0.4%
+    for (int k = 0; k < 2; ++k) { // x += x (1 - d x / 2^31): the error squares each time
+        const int64_t err = int64_t(kOne) - int64_t(uint64_t(d) * x);
+        x = uint32_t(int64_t(x) + ((int64_t(x) * err) >> 31));
+    }
+    while (uint64_t(d) * x > kOne) --x; // exact: d x <= 2^31 < d (x + 1)
+    while (uint64_t(d) * (x + 1) <= kOne) ++x;
+    return x;
 }
 
 } // namespace facet::render

@@ -1,5 +1,7 @@
 #include "render/raster.h"
 
+#include "render/fixed.h"
+
 #include <algorithm>
 #include <cstdint>
 
@@ -33,19 +35,20 @@ bool in_guard(const ScreenVertex& v) {
 // For dy != 0 the condition bounds sx on one side by t(sy)/s for an integer t that changes by a
 // constant from row to row, so the bound is kept exactly as a quotient and remainder
 // (t = q*s + r, 0 <= r < s) and advanced without dividing.
+template <typename T>
 struct EdgeWalk {
     enum class Side : uint8_t { Left, Right, Flat } side;
-    int64_t q = 0, r = 0, s = 1, dq = 0, dr = 0; // Left/Right: bound = t/s; Flat: q = k
+    T q = 0, r = 0, s = 1, dq = 0, dr = 0; // Left/Right: bound = t/s; Flat: q = k
 
     void start(const ScreenVertex& p, const ScreenVertex& e, int64_t sy) {
         const int64_t dx = e.x - p.x, dy = e.y - p.y;
         const int64_t bias = (dy < 0 || (dy == 0 && dx > 0)) ? 0 : 1;
         const int64_t k = dx * (sy - p.y) + dy * p.x - bias; // inside: -dy*sx + k >= 0
-        int64_t t, step;
+        int64_t t, step, s;
         if (dy == 0) {
             side = Side::Flat;
-            q = k;
-            dq = 16 * dx;
+            q = T(k);
+            dq = T(16 * dx);
             return;
         }
         if (dy < 0) { // sx >= ceil(-k / -dy)
@@ -59,25 +62,27 @@ struct EdgeWalk {
             t = k;
             step = 16 * dx;
         }
-        q = floor_div(t, s);
-        r = t - q * s;
-        dq = floor_div(step, s);
-        dr = step - dq * s;
+        const int64_t q64 = floor_div(t, s), dq64 = floor_div(step, s);
+        this->s = T(s);
+        q = T(q64);
+        r = T(t - q64 * s);
+        dq = T(dq64);
+        dr = T(step - dq64 * s);
     }
 
     // Narrows [lo, hi] (pixel columns) for the current row.
-    void clip(int64_t& lo, int64_t& hi) const {
+    void clip(T& lo, T& hi) const {
         switch (side) {
         case Side::Flat:
             if (q < 0) hi = lo - 1;
             break;
         case Side::Left: { // first column whose centre 16x+8 >= ceil(t/s)
-            const int64_t x = (q + (r != 0) + 7) >> 4;
+            const T x = (q + (r != 0) + 7) >> 4;
             if (x > lo) lo = x;
             break;
         }
         case Side::Right: { // last column whose centre 16x+8 <= floor(t/s)
-            const int64_t x = (q - 8) >> 4;
+            const T x = (q - 8) >> 4;
             if (x < hi) hi = x;
             break;
         }
@@ -117,6 +122,18 @@ struct Plane {
 // One attribute over a triangle, stepped per pixel and per row in 32-bit modular arithmetic
 // (exact wherever the true value fits in 32 bits: everywhere inside the triangle), in kFrac
 // fixed point, read back clamped to the range of its three vertex values.
+// Whether the attributes of a triangle whose pixel box is `extent` pixels across need clamping
+// per pixel: a value inside the triangle is a mix of its vertices' values, off by the rounding
+// of its gradients: under extent/128 units (gradients carry kFrac bits per sub-pixel), plus two
+// where the small path multiplies by a reciprocal of the area (2^-15 of the range). Only where
+// that could leave the representable range (depth 0..65535, a palette index) is it clamped.
+bool needs_clamp(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, int32_t extent) {
+    const int32_t margin = 4 + extent / 64;
+    const int32_t zmin = std::min({a.z, b.z, c.z}), zmax = std::max({a.z, b.z, c.z});
+    const int32_t smin = std::min({a.shade, b.shade, c.shade}), smax = std::max({a.shade, b.shade, c.shade});
+    return zmin < margin || zmax > 65535 - margin || smin < margin || smax > 255 + Palette::kPad - 1 - margin;
+}
+
 struct Rasterizer::Interp {
     uint32_t row = 0, sx = 0, sy = 0; // value at the current row's column 0; steps per pixel
     int32_t lo = 0, hi = 0;
@@ -141,6 +158,7 @@ void make_palette(Palette& out, uint8_t r, uint8_t g, uint8_t b) {
         return uint8_t((x + 1 + (x >> 8)) >> 8);
     };
     for (uint32_t s = 0; s < 256; ++s) out.colour[s] = hal::rgb565(scaled(r, s), scaled(g, s), scaled(b, s));
+    for (int k = 0; k < Palette::kPad; ++k) out.colour[256 + k] = out.colour[255];
 }
 
 Rasterizer::Rasterizer(hal::Display& display, std::span<uint16_t> depth,
@@ -169,6 +187,7 @@ void Rasterizer::clear_depth() {
 Status Rasterizer::draw(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, const Palette& palette,
                         Cull cull) {
     palette_ = &palette;
+    fb_ = display_.draw_buffer();
     if (!in_guard(a) || !in_guard(b) || !in_guard(c)) return Status::OutOfRange;
     // Doubled signed area; with y down, counter-clockwise on screen gives a negative value.
     const int64_t area2 =
@@ -203,8 +222,19 @@ Status Rasterizer::scan(const ScreenVertex& v0, const ScreenVertex& v1, const Sc
     if (col1 - col0 < kSmall && row1 - row0 < kSmall) {
         return scan_small(v0, v1, v2, area2, int32_t(row0), int32_t(row1), int32_t(col0), int32_t(col1));
     }
-    const int64_t sy0 = row0 * 16 + 8;
-    EdgeWalk edges[3];
+    const bool clamp = needs_clamp(v0, v1, v2, int32_t(std::max(xmax - xmin, ymax - ymin) >> 4));
+    constexpr int32_t kNear = 16 * 1024; // sub-pixels: 32-bit edge walks within this of the origin
+    const bool near = xmin >= -kNear && xmax <= kNear && ymin >= -kNear && ymax <= kNear;
+    return near ? scan_rows<int32_t>(v0, v1, v2, area2, int32_t(row0), int32_t(row1), int32_t(col0), int32_t(col1), clamp)
+                : scan_rows<int64_t>(v0, v1, v2, area2, int32_t(row0), int32_t(row1), int32_t(col0), int32_t(col1), clamp);
+}
+
+// The rows of a larger triangle: each row's span from the three edge walks.
+template <typename T>
+Status Rasterizer::scan_rows(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2, int64_t area2,
+                             int32_t row0, int32_t row1, int32_t col0, int32_t col1, bool clamp) {
+    const int64_t sy0 = int64_t(row0) * 16 + 8;
+    EdgeWalk<T> edges[3];
     edges[0].start(v1, v2, sy0);
     edges[1].start(v2, v0, sy0);
     edges[2].start(v0, v1, sy0);
@@ -217,8 +247,8 @@ Status Rasterizer::scan(const ScreenVertex& v0, const ScreenVertex& v1, const Sc
         at[k] = Interp(vals[k], pl.gx, pl.gy, pl.at(8 - v0.x, sy0 - v0.y));
     }
 
-    for (int64_t y = row0; y <= row1; ++y) {
-        int64_t lo = col0, hi = col1;
+    for (int32_t y = row0; y <= row1; ++y) {
+        T lo = col0, hi = col1;
         edges[0].clip(lo, hi);
         edges[1].clip(lo, hi);
         edges[2].clip(lo, hi);
@@ -229,7 +259,7 @@ Status Rasterizer::scan(const ScreenVertex& v0, const ScreenVertex& v1, const Sc
             for (Interp& t : at) t.row += t.sy;
             continue;
         }
-        if (Status s = shade(int32_t(y), int32_t(lo), int32_t(hi), at); !ok(s)) return s;
+        if (Status s = shade(int32_t(y), int32_t(lo), int32_t(hi), at, clamp); !ok(s)) return s;
         for (Interp& t : at) t.row += t.sy;
     }
     return Status::Ok;
@@ -244,6 +274,7 @@ Status Rasterizer::scan(const ScreenVertex& v0, const ScreenVertex& v1, const Sc
 Status Rasterizer::scan_small(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2,
                               int64_t area2, int32_t row0, int32_t row1, int32_t col0, int32_t col1) {
     const int32_t ox = col0 * 16 + 8, oy = row0 * 16 + 8; // the first pixel's centre
+    const bool clamp = needs_clamp(v0, v1, v2, kSmall);
     struct Edge {
         int32_t e, sx, sy; // value at the current pixel; steps per pixel in x and y
     } ed[3];
@@ -262,7 +293,7 @@ Status Rasterizer::scan_small(const ScreenVertex& v0, const ScreenVertex& v1, co
     const int bits = 32 - __builtin_clz(a);
     const int e = bits - 16;
     const uint32_t an = e >= 0 ? a >> e : a << -e;
-    const int64_t recip = int64_t(0x80000000u / an);
+    const int64_t recip = int64_t(recip31(an));
     const int shift = 31 + e - kFrac; // gradient in kFrac fixed point per sub-pixel unit
     // Thinner than a quarter of its box: exact gradients (eight divisions) instead.
     const int32_t bw = std::max({v0.x, v1.x, v2.x}) - std::min({v0.x, v1.x, v2.x});
@@ -292,7 +323,7 @@ Status Rasterizer::scan_small(const ScreenVertex& v0, const ScreenVertex& v1, co
         const int32_t lo = x;
         for (; x <= col1 && (e0 | e1 | e2) >= 0; ++x) e0 += ed[0].sx, e1 += ed[1].sx, e2 += ed[2].sx;
         if (x > lo) {
-            if (Status s = shade(y, lo, x - 1, at); !ok(s)) return s;
+            if (Status s = shade(y, lo, x - 1, at, clamp); !ok(s)) return s;
         }
         ed[0].e += ed[0].sy, ed[1].e += ed[1].sy, ed[2].e += ed[2].sy;
         for (Interp& t : at) t.row += t.sy;
@@ -301,29 +332,33 @@ Status Rasterizer::scan_small(const ScreenVertex& v0, const ScreenVertex& v1, co
 }
 
 // Shades the pixels lo..hi of row y that pass the depth test and pushes them in runs.
-Status Rasterizer::shade(int32_t y, int32_t lo, int32_t hi, const Interp* at) {
+Status Rasterizer::shade(int32_t y, int32_t lo, int32_t hi, const Interp* at, bool clamp) {
     uint32_t z = at[0].row + at[0].sx * uint32_t(lo), s = at[1].row + at[1].sx * uint32_t(lo);
     const uint32_t zs = at[0].sx, ss = at[1].sx;
     uint16_t* drow = &depth_[size_t(y) * width_];
-    hal::Rgb565* line = line_.data();
+    // Pixels go straight into a memory-mapped draw buffer, else into the line and out in runs.
+    hal::Rgb565* line = fb_ ? fb_ + size_t(y) * width_ : line_.data();
     const hal::Rgb565* colour = palette_->colour;
     int32_t run = -1; // first column of the pending run of visible pixels
-    // The values are linear along the span: when both ends are within the vertices' range,
-    // so is every pixel between, and the per-pixel clamps can go.
-    const uint32_t n = uint32_t(hi - lo);
-    auto inside = [](const Interp& t, uint32_t v) { return int32_t(v) >= t.lo && int32_t(v) <= t.hi; };
-    if (inside(at[0], z) && inside(at[0], z + zs * n) && inside(at[1], s) && inside(at[1], s + ss * n)) {
-        for (int32_t x = lo; x <= hi; ++x, z += zs, s += ss) {
-            const uint16_t zv = uint16_t(int32_t(z) >> kFrac);
-            if (zv < drow[x]) {
-                drow[x] = zv;
-                line[x] = colour[int32_t(s) >> kFrac];
-                if (run < 0) run = x;
-            } else if (run >= 0) {
-                if (Status st = flush(run, x, y); !ok(st)) return st;
-                run = -1;
+    if (!clamp) {
+        // Alternate runs of hidden and of visible pixels; each visible run is pushed whole.
+        uint16_t* d = drow + lo;
+        uint16_t* const end = drow + hi + 1;
+        hal::Rgb565* out = line + lo;
+        while (d < end) {
+            while (d < end && (int32_t(z) >> kFrac) >= int32_t(*d)) ++d, ++out, z += zs, s += ss;
+            hal::Rgb565* const first = out;
+            for (; d < end; ++d, ++out, z += zs, s += ss) {
+                const int32_t zv = int32_t(z) >> kFrac;
+                if (zv >= int32_t(*d)) break;
+                *d = uint16_t(zv);
+                *out = colour[int32_t(s) >> kFrac];
+            }
+            if (out > first) {
+                if (Status st = flush(int32_t(first - line), int32_t(out - line), y); !ok(st)) return st;
             }
         }
+        return Status::Ok;
     } else {
         for (int32_t x = lo; x <= hi; ++x, z += zs, s += ss) {
             const uint16_t zv = uint16_t(at[0].value(z));
@@ -343,14 +378,24 @@ Status Rasterizer::shade(int32_t y, int32_t lo, int32_t hi, const Interp* at) {
 
 Status Rasterizer::line(const ScreenVertex& a, const ScreenVertex& b, hal::Rgb565 colour, uint16_t bias) {
     if (!in_guard(a) || !in_guard(b)) return Status::OutOfRange;
+    fb_ = display_.draw_buffer();
     const int32_t x0 = a.x >> 4, y0 = a.y >> 4, x1 = b.x >> 4, y1 = b.y >> 4;
     const int32_t dx = x1 - x0, dy = y1 - y0;
     const int32_t n = (dx < 0 ? -dx : dx) > (dy < 0 ? -dy : dy) ? (dx < 0 ? -dx : dx) : (dy < 0 ? -dy : dy);
-    // 16.16 positions and depth, stepped once per pixel along the longer axis.
+    // 16.16 positions and depth, stepped once per pixel along the longer axis (within the guard
+    // band |dx|, |dy| < 2^14 pixels, so the slopes divide in 32 bits).
     int32_t x = (x0 << 16) + 0x8000, y = (y0 << 16) + 0x8000;
     int32_t z = int32_t(a.z) << 8;
-    const int32_t sx = n ? int32_t((int64_t(dx) << 16) / n) : 0, sy = n ? int32_t((int64_t(dy) << 16) / n) : 0;
+    const int32_t sx = n ? (dx << 16) / n : 0, sy = n ? (dy << 16) / n : 0;
     const int32_t sz = n ? (int32_t(b.z) - int32_t(a.z)) * 256 / n : 0;
+    // Without a memory-mapped buffer, pixels that follow each other along a row go out as one span.
+    int32_t run_x = 0, run_y = -1, run_n = 0;
+    auto flush_run = [&]() {
+        if (run_n == 0) return Status::Ok;
+        const Status st = display_.fill_span(uint16_t(run_x), uint16_t(run_y), uint16_t(run_n), colour);
+        run_n = 0;
+        return st;
+    };
     for (int32_t i = 0; i <= n; ++i, x += sx, y += sy, z += sz) {
         const int32_t px = x >> 16, py = y >> 16;
         if (px < 0 || py < 0 || px >= width_ || py >= height_) continue;
@@ -360,15 +405,23 @@ Status Rasterizer::line(const ScreenVertex& a, const ScreenVertex& b, hal::Rgb56
         if (zv >= d) continue;
         d = uint16_t(zv);
         ++stats.pixels;
-        if (Status s = display_.fill_span(uint16_t(px), uint16_t(py), 1, colour); !ok(s)) return s;
+        if (fb_) {
+            fb_[size_t(py) * width_ + px] = colour;
+        } else if (py == run_y && px == run_x + run_n) {
+            ++run_n;
+        } else {
+            if (Status st = flush_run(); !ok(st)) return st;
+            run_x = px, run_y = py, run_n = 1;
+        }
     }
-    return Status::Ok;
+    return flush_run();
 }
 
 Status Rasterizer::flush(int32_t from, int32_t to, int64_t y) {
     const uint16_t n = static_cast<uint16_t>(to - from);
     ++stats.spans;
     stats.pixels += n;
+    if (fb_) return Status::Ok; // already in place
     return display_.push_span(uint16_t(from), uint16_t(y), &line_[from], n);
 }
 

@@ -13,7 +13,7 @@ TEST(FakeDisplay, RejectsSpansOffScreenAndDrawsNothing) {
     EXPECT_EQ(d.push_span(0, 0, nullptr, 1), Status::OutOfRange);
     EXPECT_EQ(d.rejected, 4u);
     EXPECT_EQ(d.pixels, 0u);
-    for (hal::Rgb565 p : d.draw_buffer()) EXPECT_EQ(p, 0);
+    for (hal::Rgb565 p : d.drawn()) EXPECT_EQ(p, 0);
 }
 
 TEST(FakeDisplay, DoubleBufferingShowsOnlyAfterFlip) {

@@ -40,3 +40,7 @@ TEST(Fixed, IsqrtIsFloorOfSquareRoot) {
     }
     EXPECT_EQ(isqrt(UINT64_MAX), 4294967295u);
 }
+
+TEST(Fixed, ReciprocalIsTheExactFloorEverywhere) {
+    for (uint32_t d = 1u << 15; d < 1u << 16; ++d) ASSERT_EQ(recip31(d), uint32_t((uint64_t(1) << 31) / d)) << d;
+}

@@ -33,6 +33,10 @@ public:
     // Shows the draw buffer; the other buffer becomes the draw buffer. Content of the new draw
     // buffer is undefined (callers redraw every pixel).
     virtual Status flip() = 0;
+    // The draw buffer itself (width * height pixels, row after row) when it is plain memory, so
+    // a renderer can write pixels in place; null when pixels must go through the spans (a
+    // controller behind a bus). Valid until the next flip().
+    virtual Rgb565* draw_buffer() { return nullptr; }
 
 protected:
     ~Display() = default;

@@ -35,4 +35,22 @@ constexpr int32_t kMaxCoordinate = 1 << 27;
 // Integer square root (floor).
 uint32_t isqrt(uint64_t v);
 
+// floor(2^31 / d) for d in [2^15, 2^16), exactly, without a division (a library call of over
+// a hundred instructions on a core without a divider): a table estimate, two Newton steps, a
+// last correction.
+uint32_t recip31(uint32_t d);
+
+// x / d for d >= 1, to about 2^-15 relative (d's 16 leading bits): one reciprocal, which can be
+// shared by several numerators over one denominator (a vertex's x and y over its depth).
+struct Reciprocal {
+    uint32_t m;   // floor(2^31 / (d normalized to [2^15, 2^16)))
+    int shift;    // x / d ~= (x * m) >> shift
+};
+inline Reciprocal reciprocal(uint32_t d) {
+    const int e = (32 - __builtin_clz(d)) - 16; // d >> e in [2^15, 2^16)
+    const uint32_t dn = e >= 0 ? d >> e : d << -e;
+    return {recip31(dn), 31 + e};
+}
+inline int32_t divide(int64_t x, Reciprocal r) { return int32_t((x * int64_t(r.m)) >> r.shift); }
+
 } // namespace facet::render

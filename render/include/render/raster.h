@@ -22,9 +22,12 @@ struct ScreenVertex {
     uint8_t shade;    // palette index: 0 darkest, 255 brightest
 };
 
-// The colours of one material from dark (0) to fully lit (255).
+// The colours of one material from dark (0) to fully lit (255), then a few copies of the
+// brightest: an interpolated shade may overshoot its vertices' by a rounding unit or two, and
+// the rasterizer indexes without clamping where that is all it can do.
 struct Palette {
-    hal::Rgb565 colour[256];
+    static constexpr int kPad = 16;
+    hal::Rgb565 colour[256 + kPad];
 };
 
 // The palette of a colour under light: shade s gives (r, g, b) * s / 255.
@@ -72,13 +75,17 @@ public:
 private:
     struct Interp; // one interpolated attribute (raster.cpp)
     Status scan(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2, int64_t area2);
+    template <typename T>
+    Status scan_rows(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2, int64_t area2,
+                     int32_t row0, int32_t row1, int32_t col0, int32_t col1, bool clamp);
     Status scan_small(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2, int64_t area2,
                       int32_t row0, int32_t row1, int32_t col0, int32_t col1);
-    Status shade(int32_t y, int32_t lo, int32_t hi, const Interp* at);
+    Status shade(int32_t y, int32_t lo, int32_t hi, const Interp* at, bool clamp);
     static constexpr int kAttributes = 2; // depth, shade
     Status flush(int32_t from, int32_t to, int64_t y);
 
     const Palette* palette_ = nullptr; // the triangle being drawn's
+    hal::Rgb565* fb_ = nullptr;        // the display's draw buffer, when it is memory-mapped
     hal::Display& display_;
     std::span<uint16_t> depth_;
     std::span<hal::Rgb565> line_;

@@ -37,10 +37,13 @@ public:
     Status push_span(uint16_t x, uint16_t y, const Rgb565* pixels, uint16_t count) override;
     Status fill_span(uint16_t x, uint16_t y, uint16_t count, Rgb565 colour) override;
     Status flip() override;
+    Rgb565* draw_buffer() override { return direct ? draw_.data() : nullptr; }
+
+    bool direct = true; // offer the draw buffer for in-place writes (false: spans only)
 
     // The buffer last shown by flip() (or the only buffer for single-buffered displays).
     const std::vector<Rgb565>& front() const { return buffers_ == 1 ? draw_ : shown_; }
-    const std::vector<Rgb565>& draw_buffer() const { return draw_; }
+    const std::vector<Rgb565>& drawn() const { return draw_; } // the draw buffer
     Rgb565 pixel(uint16_t x, uint16_t y) const { return front()[size_t(y) * width_ + x]; }
 
     uint64_t spans = 0;      // accepted push/fill calls
