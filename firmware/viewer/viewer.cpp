@@ -133,7 +133,7 @@ Status Viewer::restart() {
               uint32_t(opt_.tolerance * 1000), mem_.samples.t.size());
         return st;
     }
-    for (uint32_t f = 0; f < pack_.faces().size(); ++f) mem_.faces[f] = {0, 0, 0, 0, 0, FaceState::Pending};
+    for (uint32_t f = 0; f < pack_.faces().size(); ++f) mem_.faces[f] = {0, 0, 0, 0, 0, {0, 0, 0}, 0, FaceState::Pending, false};
     const uint32_t arena_peak = totals_.arena_peak_bytes;
     totals_ = {};
     totals_.faces = uint32_t(pack_.faces().size());
@@ -220,12 +220,28 @@ void Viewer::tessellate(uint32_t f) {
     hal::measure_end(con, "face");
 
     if (!ok(st)) {
-        info = {0, 0, 0, 0, rgb, FaceState::Failed};
+        info = {0, 0, 0, 0, rgb, {0, 0, 0}, 0, FaceState::Failed, false};
         ++totals_.failed;
         print(con, "@face {} failed: {} ({}); it stays wireframe\n", f, why, status_name(st));
         return;
     }
-    info = {v0, fm.vertex_count, i0, fm.triangle_count, rgb, FaceState::Done};
+    // The face's bounding sphere: its box's centre, and half the box's edges summed (no less
+    // than half its diagonal).
+    int32_t lo[3] = {INT32_MAX, INT32_MAX, INT32_MAX}, hi[3] = {INT32_MIN, INT32_MIN, INT32_MIN};
+    for (uint32_t v = 0; v < fm.vertex_count; ++v) {
+        for (int k = 0; k < 3; ++k) {
+            const int32_t c = mem_.vertices[v0 + v].p[k];
+            lo[k] = c < lo[k] ? c : lo[k];
+            hi[k] = c > hi[k] ? c : hi[k];
+        }
+    }
+    int32_t centre[3] = {0, 0, 0}, radius = 0;
+    if (fm.vertex_count) {
+        for (int k = 0; k < 3; ++k) centre[k] = int32_t((int64_t(lo[k]) + hi[k]) / 2);
+        radius = int32_t((int64_t(hi[0] - lo[0]) + (hi[1] - lo[1]) + (hi[2] - lo[2])) / 2 + 2);
+    }
+    const bool planar = pack_.surfaces()[F.surface].type == uint8_t(pack::SurfaceType::Plane);
+    info = {v0, fm.vertex_count, i0, fm.triangle_count, rgb, {centre[0], centre[1], centre[2]}, radius, FaceState::Done, planar};
     mem_.done_order[totals_.done++] = f;
     totals_.vertices += fm.vertex_count;
     totals_.triangles += fm.triangle_count;
@@ -298,6 +314,47 @@ void Viewer::project(const Instance& in, const int32_t p[3], Projected& o) const
     o.s.z = uint16_t(zz > 65535 ? 65535 : zz);
 }
 
+// Whether a face's bounding sphere may touch the screen: false only when it lies wholly
+// behind the near plane or beyond one side of the view (each test conservative: the sphere's
+// distance to a side plane is compared with its radius times a bound on the plane normal's
+// length).
+bool Viewer::on_screen(const Instance& in, const FaceInfo& face) const {
+    if (face.radius <= 0) return true;
+    const int32_t* p = face.centre;
+    const int64_t x = int64_t(in.a[0]) * p[0] + int64_t(in.a[1]) * p[1] + int64_t(in.a[2]) * p[2];
+    const int64_t y = int64_t(in.a[3]) * p[0] + int64_t(in.a[4]) * p[1] + int64_t(in.a[5]) * p[2];
+    const int64_t z = int64_t(in.a[6]) * p[0] + int64_t(in.a[7]) * p[1] + int64_t(in.a[8]) * p[2];
+    const int64_t cx = int32_t(x >> 30) + in.b[0], cy = int32_t(y >> 30) + in.b[1];
+    const int64_t d = in.dist - (int32_t(z >> 30) + in.b[2]);
+    // Mesh units are 16 view units (kUnitsPerDiagonal / kViewPerDiagonal); an eighth more for
+    // the rounding of the fixed-point rotation.
+    const int64_t r = face.radius / 16 + face.radius / 128 + 2;
+    if (d + r < in.near) return false;
+    const int64_t f = in.f16, w = in.cx16, h = in.cy16;
+    if (cx * f - w * d > r * (f + w) || -cx * f - w * d > r * (f + w)) return false;
+    if (cy * f - h * d > r * (f + h) || -cy * f - h * d > r * (f + h)) return false;
+    return true;
+}
+
+// Whether a planar face of a closed shell turns its back to the eye (then every triangle of
+// it would be culled, and its edges are drawn by its neighbours if they are seen).
+bool Viewer::faces_away(const Instance& in, const FaceInfo& face) const {
+    if (!face.planar || !in.closed || face.vertex_count == 0) return false;
+    const DrawVertex& v = mem_.vertices[face.first_vertex];
+    const int32_t* p = v.p;
+    const int64_t x = (int64_t(in.a[0]) * p[0] + int64_t(in.a[1]) * p[1] + int64_t(in.a[2]) * p[2]) >> 30;
+    const int64_t y = (int64_t(in.a[3]) * p[0] + int64_t(in.a[4]) * p[1] + int64_t(in.a[5]) * p[2]) >> 30;
+    const int64_t z = (int64_t(in.a[6]) * p[0] + int64_t(in.a[7]) * p[1] + int64_t(in.a[8]) * p[2]) >> 30;
+    // The normal in view space (the rotation, scaled by 2^26, keeps it outward even mirrored).
+    const int64_t nx = (int64_t(in.a[0]) * v.n[0] + int64_t(in.a[1]) * v.n[1] + int64_t(in.a[2]) * v.n[2]) >> 14;
+    const int64_t ny = (int64_t(in.a[3]) * v.n[0] + int64_t(in.a[4]) * v.n[1] + int64_t(in.a[5]) * v.n[2]) >> 14;
+    const int64_t nz = (int64_t(in.a[6]) * v.n[0] + int64_t(in.a[7]) * v.n[1] + int64_t(in.a[8]) * v.n[2]) >> 14;
+    // The eye sits at (0, 0, dist) in view space (depth d = dist - z); the face looks at it
+    // when n . (eye - p) > 0.
+    const int64_t to_eye_x = -(x + in.b[0]), to_eye_y = -(y + in.b[1]), to_eye_z = in.dist - (z + in.b[2]);
+    return nx * to_eye_x + ny * to_eye_y + nz * to_eye_z < 0;
+}
+
 void Viewer::draw_triangle(int buffer, const Instance& in, const Projected& a, const Projected& b, const Projected& c,
                            const render::Palette& pal, render::Cull cull) {
     render::Rasterizer& r = raster_[buffer];
@@ -356,7 +413,7 @@ void Viewer::draw_triangle(int buffer, const Instance& in, const Projected& a, c
 
 void Viewer::draw_face(int buffer, uint32_t f, const Instance& in, bool with_edges) {
     const FaceInfo& F = mem_.faces[f];
-    if (F.state != FaceState::Done) return;
+    if (F.state != FaceState::Done || !on_screen(in, F) || faces_away(in, F)) return;
     Projected* P = mem_.projected.data();
     const render::Palette& pal = palette(F.rgb);
     const bool two_sided = !in.closed;
@@ -379,6 +436,8 @@ void Viewer::draw_face(int buffer, uint32_t f, const Instance& in, bool with_edg
 }
 
 void Viewer::draw_face_edges(int buffer, uint32_t f, const Instance& in, bool once) {
+    // Its edges lie in its sphere; a plane facing away hides them unless a neighbour shows them.
+    if (!on_screen(in, mem_.faces[f]) || faces_away(in, mem_.faces[f])) return;
     const pack::Face& F = pack_.faces()[f];
     for (uint32_t l = F.first_loop; l < F.first_loop + F.loop_count; ++l) {
         const pack::Loop& L = pack_.loops()[l];
@@ -420,23 +479,20 @@ void Viewer::draw_progress() {
 
 void Viewer::draw_full(int buffer) {
     const hal::DisplayInfo d = board_.display.info();
-    // A CAD-style background: light at the top, darker toward the bottom.
-    for (uint16_t y = 0; y < d.height; ++y) {
-        const uint32_t t = uint32_t(y) * 255 / (d.height > 1 ? d.height - 1 : 1);
-        (void)board_.display.fill_span(0, y, d.width, hal::rgb565(uint8_t(214 - t * 80 / 255), uint8_t(222 - t * 78 / 255), uint8_t(234 - t * 64 / 255)));
+    // A CAD-style background: light at the top, darker toward the bottom (16.16 steps per row).
+    const int32_t rows = d.height > 1 ? d.height - 1 : 1;
+    const int32_t dr = (80 << 16) / rows, dg = (78 << 16) / rows, db = (64 << 16) / rows;
+    int32_t r = 214 << 16, g = 222 << 16, b = 234 << 16;
+    for (uint16_t y = 0; y < d.height; ++y, r -= dr, g -= dg, b -= db) {
+        (void)board_.display.fill_span(0, y, d.width, hal::rgb565(uint8_t(r >> 16), uint8_t(g >> 16), uint8_t(b >> 16)));
     }
     raster_[buffer].clear_depth();
     for (uint32_t i = 0; i < pack_.instances().size(); ++i) {
         const Instance in = instance_transform(i);
         const pack::Shell& sh = pack_.shells()[pack_.instances()[i].shell];
         for (uint32_t f = sh.first_face; f < sh.first_face + sh.face_count; ++f) draw_face(buffer, f, in, false);
-        for (uint32_t f = sh.first_face; f < sh.first_face + sh.face_count; ++f) {
-            const pack::Face& F = pack_.faces()[f];
-            for (uint32_t l = F.first_loop; l < F.first_loop + F.loop_count; ++l) {
-                const pack::Loop& L = pack_.loops()[l];
-                for (uint32_t c = L.first_coedge; c < L.first_coedge + L.coedge_count; ++c) mem_.edge_drawn[pack_.coedges()[c].edge] = 0;
-            }
-        }
+        // Each edge once per instance (an edge has two faces).
+        for (uint8_t& drawn : mem_.edge_drawn.first(pack_.edges().size())) drawn = 0;
         for (uint32_t f = sh.first_face; f < sh.first_face + sh.face_count; ++f) draw_face_edges(buffer, f, in, true);
     }
 }

@@ -50,8 +50,11 @@ enum class FaceState : uint8_t { Pending, Done, Failed };
 
 struct FaceInfo {
     uint32_t first_vertex, vertex_count, first_index, triangle_count;
-    uint32_t rgb; // r | g << 8 | b << 16
+    uint32_t rgb;      // r | g << 8 | b << 16
+    int32_t centre[3]; // a sphere holding the face's vertices (DrawVertex units), so a face
+    int32_t radius;    // off the screen is skipped whole; radius 0: none known
     FaceState state;
+    bool planar;       // one normal: a closed shell's plane facing away is skipped whole
 };
 
 // A vertex in camera space (x right, y up, d = depth in front of the eye; units of the
@@ -151,6 +154,8 @@ private:
                        const render::Palette& pal, render::Cull cull);
     Instance instance_transform(uint32_t instance) const;
     void project(const Instance& in, const int32_t p[3], Projected& out) const;
+    bool on_screen(const Instance& in, const FaceInfo& face) const;
+    bool faces_away(const Instance& in, const FaceInfo& face) const;
     void command(const char* line);
     void key(uint8_t k);
     void view_changed();

@@ -29,10 +29,11 @@ constexpr std::array<int16_t, 257> make_table() {
 constexpr auto kQuarter = make_table();
 static_assert(kQuarter[0] == 0 && kQuarter[256] == 32767, "sine table endpoints");
 
-// 2^31 / (the middle of each 1/128 of [2^15, 2^16)): the first guess of recip31.
-constexpr std::array<uint32_t, 128> make_recip_table() {
-    std::array<uint32_t, 128> t{};
-    for (uint32_t i = 0; i < 128; ++i) t[i] = uint32_t((uint64_t(1) << 31) / (32768 + i * 256 + 128));
+// 2^31 / (the middle of each 1/1024 of [2^15, 2^16)): the first guess of recip31, within
+// 2^-11, so one Newton step leaves it within a unit or two.
+constexpr std::array<uint32_t, 1024> make_recip_table() {
+    std::array<uint32_t, 1024> t{};
+    for (uint32_t i = 0; i < 1024; ++i) t[i] = uint32_t((uint64_t(1) << 31) / (32768 + i * 32 + 16));
     return t;
 }
 constexpr auto kRecip = make_recip_table();
@@ -99,11 +100,10 @@ uint32_t isqrt(uint64_t v) {
 
 uint32_t recip31(uint32_t d) {
     constexpr uint64_t kOne = uint64_t(1) << 31;
-    uint32_t x = kRecip[(d >> 8) - 128]; // within 0.4%
-    for (int k = 0; k < 2; ++k) { // x += x (1 - d x / 2^31): the error squares each time
-        const int64_t err = int64_t(kOne) - int64_t(uint64_t(d) * x);
-        x = uint32_t(int64_t(x) + ((int64_t(x) * err) >> 31));
-    }
+    uint32_t x = kRecip[(d >> 5) - 1024];
+    // x += x (1 - d x / 2^31): the relative error squares.
+    const int64_t err = int64_t(kOne) - int64_t(uint64_t(d) * x);
+    x = uint32_t(int64_t(x) + ((int64_t(x) * err) >> 31));
     while (uint64_t(d) * x > kOne) --x; // exact: d x <= 2^31 < d (x + 1)
     while (uint64_t(d) * (x + 1) <= kOne) ++x;
     return x;

@@ -9,7 +9,7 @@ namespace facet::render {
 namespace {
 
 constexpr int kFrac = 12; // fractional bits of interpolated attributes
-constexpr int64_t kSmall = 32; // triangles whose pixel box is under this (both ways) take scan_small
+constexpr int64_t kSmall = 20; // triangles whose pixel box is under this (both ways) take scan_small
 
 // Truncating division, in 32 bits when both operands fit (a 64-bit divide is a long library
 // call on 32-bit cores; most triangles are small enough for the 32-bit one). Same result.
@@ -70,51 +70,15 @@ struct EdgeWalk {
         dr = T(step - dq64 * s);
     }
 
-    // Narrows [lo, hi] (pixel columns) for the current row.
-    void clip(T& lo, T& hi) const {
-        switch (side) {
-        case Side::Flat:
-            if (q < 0) hi = lo - 1;
-            break;
-        case Side::Left: { // first column whose centre 16x+8 >= ceil(t/s)
-            const T x = (q + (r != 0) + 7) >> 4;
-            if (x > lo) lo = x;
-            break;
-        }
-        case Side::Right: { // last column whose centre 16x+8 <= floor(t/s)
-            const T x = (q - 8) >> 4;
-            if (x < hi) hi = x;
-            break;
-        }
-        }
-    }
-
-    void next_row() {
+    // The next row of a Left or Right edge.
+    void step() {
         q += dq;
-        if (side == Side::Flat) return;
         r += dr;
         if (r >= s) {
             r -= s;
             ++q;
         }
     }
-};
-
-// A linearly interpolated attribute: value(sx, sy) = a0 + gx*(sx - x0) + gy*(sy - y0),
-// gradients per sub-pixel in kFrac fixed point.
-struct Plane {
-    int64_t a0, gx, gy;
-
-    Plane(int32_t A0, int32_t A1, int32_t A2, const ScreenVertex& v0, const ScreenVertex& v1,
-          const ScreenVertex& v2, int64_t area2) {
-        const int64_t d1 = A1 - A0, d2 = A2 - A0;
-        const int64_t numx = d1 * (v2.y - v0.y) - d2 * (v1.y - v0.y);
-        const int64_t numy = d2 * (v1.x - v0.x) - d1 * (v2.x - v0.x);
-        a0 = int64_t(A0) << kFrac;
-        gx = div_fast(numx * (int64_t(1) << kFrac), area2);
-        gy = div_fast(numy * (int64_t(1) << kFrac), area2);
-    }
-    int64_t at(int64_t dx, int64_t dy) const { return a0 + gx * dx + gy * dy; }
 };
 
 } // namespace
@@ -134,11 +98,59 @@ bool needs_clamp(const ScreenVertex& a, const ScreenVertex& b, const ScreenVerte
     return zmin < margin || zmax > 65535 - margin || smin < margin || smax > 255 + Palette::kPad - 1 - margin;
 }
 
-struct Rasterizer::Interp {
-    uint32_t row = 0, sx = 0, sy = 0; // value at the current row's column 0; steps per pixel
-    int32_t lo = 0, hi = 0;
+// The common case of a span: pixels in place, values within range (no clamps). z and s are
+// the depth and shade at the first pixel. Returns the pixels that passed the depth test.
+[[gnu::always_inline]] inline uint32_t shade_in_place(uint16_t* d, uint16_t* end, hal::Rgb565* out, uint32_t z,
+                                                      uint32_t zs, uint32_t s, uint32_t ss, const uint32_t* colour) {
+    uint32_t written = 0;
+    for (; d < end; ++d, ++out, z += zs, s += ss) {
+        const int32_t zv = int32_t(z) >> kFrac;
+        if (zv < int32_t(*d)) {
+            *d = uint16_t(zv);
+            *out = hal::Rgb565(colour[int32_t(s) >> kFrac]);
+            ++written;
+        }
+    }
+    return written;
+}
 
-    Interp() = default;
+// One part of a larger triangle (rows between two vertices), pixels in place: the exact edge
+// walks of its left and right edges, and depth and shade at each row's column 0.
+struct InPlaceRows {
+    int32_t lq, lr, ls, ldq, ldr; // left edge: first column from (q + (r != 0) + 7) >> 4
+    int32_t rq, rr, rs, rdq, rdr; // right edge: last column from (q - 8) >> 4
+    uint32_t zrow, zx, zy, srow, sx, sy;
+};
+
+// The hot loop of larger triangles, apart from the rest so it has the registers to itself.
+// Returns the pixels that passed the depth test.
+[[gnu::noinline]] uint32_t rows_in_place(InPlaceRows& w, int32_t rows, int32_t col0, int32_t col1, uint16_t* depth,
+                                          hal::Rgb565* fb, uint32_t width, const uint32_t* colour) {
+    uint32_t written = 0;
+    int32_t lq = w.lq + 7, lr = w.lr, rq = w.rq - 8, rr = w.rr; // biased by the column rounding
+    uint32_t zrow = w.zrow, srow = w.srow;
+    for (; rows > 0; --rows, depth += width, fb += width, zrow += w.zy, srow += w.sy) {
+        int32_t lo = (lq + (lr != 0)) >> 4, hi = rq >> 4;
+        lq += w.ldq, lr += w.ldr;
+        if (lr >= w.ls) lr -= w.ls, ++lq;
+        rq += w.rdq, rr += w.rdr;
+        if (rr >= w.rs) rr -= w.rs, ++rq;
+        lo = lo < col0 ? col0 : lo;
+        hi = hi > col1 ? col1 : hi;
+        if (lo <= hi) {
+            written += shade_in_place(depth + lo, depth + hi + 1, fb + lo, zrow + w.zx * uint32_t(lo), w.zx,
+                                      srow + w.sx * uint32_t(lo), w.sx, colour);
+        }
+    }
+    w.lq = lq - 7, w.lr = lr, w.rq = rq + 8, w.rr = rr, w.zrow = zrow, w.srow = srow;
+    return written;
+}
+
+struct Rasterizer::Interp {
+    uint32_t row, sx, sy; // value at the current row's column 0; steps per pixel (and row)
+    int32_t lo, hi;       // the vertices' range, for clamping
+
+    Interp() = default; // filled by gradients()
     Interp(const int32_t v[3], int64_t gx, int64_t gy, int64_t at_origin)
         : row(uint32_t(at_origin)), sx(uint32_t(gx * 16)), sy(uint32_t(gy * 16)) {
         const int32_t mn = std::min({v[0], v[1], v[2]}), mx = std::max({v[0], v[1], v[2]});
@@ -182,6 +194,42 @@ void Rasterizer::clear_depth() {
     const size_t words = (n - i) / 2;
     for (size_t k = 0; k < words; ++k) w[k] = 0xFFFFFFFFu;
     for (i += words * 2; i < n; ++i) depth_[i] = 0xFFFF;
+}
+
+// The attributes (depth, shade) of a triangle: gradients per sub-pixel in kFrac fixed point and
+// values at column 0 of the row whose centre is at sub-pixel y = oy, stepped from there in
+// 32-bit modular arithmetic (exact wherever the true value fits, i.e. inside the triangle).
+// The gradients come from one reciprocal of the area (2^-15 relative error: under two units
+// across a triangle no thinner than a quarter of its box), or from exact divisions for slivers
+// and for areas past 32 bits.
+[[gnu::always_inline]] inline void Rasterizer::gradients(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2,
+                                                       int64_t area2, int32_t oy, Interp at[]) const {
+    const int32_t bw = std::max({v0.x, v1.x, v2.x}) - std::min({v0.x, v1.x, v2.x});
+    const int32_t bh = std::max({v0.y, v1.y, v2.y}) - std::min({v0.y, v1.y, v2.y});
+    const bool exact = int64_t(bw) * bh > 4 * area2 || area2 > int64_t(UINT32_MAX);
+    int64_t recip = 0;
+    int shift = 0;
+    if (!exact) {
+        const Reciprocal r = reciprocal(uint32_t(area2)); // x / area2 ~= (x * r.m) >> r.shift
+        recip = r.m;
+        shift = r.shift - kFrac; // gradient in kFrac fixed point per sub-pixel unit
+    }
+    const int32_t vals[kAttributes][3] = {{v0.z, v1.z, v2.z}, {v0.shade, v1.shade, v2.shade}};
+    const int32_t y1 = v1.y - v0.y, y2 = v2.y - v0.y, x1 = v1.x - v0.x, x2 = v2.x - v0.x;
+    for (int k = 0; k < kAttributes; ++k) {
+        const int32_t A0 = vals[k][0], d1 = vals[k][1] - A0, d2 = vals[k][2] - A0;
+        const int64_t numx = int64_t(d1) * y2 - int64_t(d2) * y1;
+        const int64_t numy = int64_t(d2) * x1 - int64_t(d1) * x2;
+        int64_t gx, gy;
+        if (exact) { // the reciprocal's error would grow with the gradients
+            gx = div_fast(numx * (int64_t(1) << kFrac), area2);
+            gy = div_fast(numy * (int64_t(1) << kFrac), area2);
+        } else {
+            gx = shift >= 0 ? (numx * recip) >> shift : (numx * recip) << -shift;
+            gy = shift >= 0 ? (numy * recip) >> shift : (numy * recip) << -shift;
+        }
+        at[k] = Interp(vals[k], gx, gy, (int64_t(A0) << kFrac) + gx * (8 - v0.x) + gy * (oy - v0.y));
+    }
 }
 
 Status Rasterizer::draw(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, const Palette& palette,
@@ -238,43 +286,122 @@ Status Rasterizer::scan_rows(const ScreenVertex& v0, const ScreenVertex& v1, con
     edges[0].start(v1, v2, sy0);
     edges[1].start(v2, v0, sy0);
     edges[2].start(v0, v1, sy0);
-    // Attributes: exact gradients, then stepped in 32-bit modular arithmetic (exact wherever
-    // the true value fits, i.e. inside the triangle) and clamped to the vertices' range.
-    const int32_t vals[kAttributes][3] = {{v0.z, v1.z, v2.z}, {v0.shade, v1.shade, v2.shade}};
     Interp at[kAttributes];
-    for (int k = 0; k < kAttributes; ++k) {
-        const Plane pl(vals[k][0], vals[k][1], vals[k][2], v0, v1, v2, area2);
-        at[k] = Interp(vals[k], pl.gx, pl.gy, pl.at(8 - v0.x, sy0 - v0.y));
-    }
+    gradients(v0, v1, v2, area2, int32_t(sy0), at);
 
-    for (int32_t y = row0; y <= row1; ++y) {
-        T lo = col0, hi = col1;
-        edges[0].clip(lo, hi);
-        edges[1].clip(lo, hi);
-        edges[2].clip(lo, hi);
-        edges[0].next_row();
-        edges[1].next_row();
-        edges[2].next_row();
-        if (lo > hi) {
-            for (Interp& t : at) t.row += t.sy;
-            continue;
+    // Rows above the middle vertex are bounded by the long edge (top to bottom) and the top
+    // edge, rows below by the long edge and the bottom edge: one left and one right edge per
+    // row, kept in registers. (The third edge's half-plane holds the whole span of those rows.)
+    // A flat edge only decides whether its own row is in.
+    const ScreenVertex* from[3] = {&v1, &v2, &v0};
+    const ScreenVertex* to[3] = {&v2, &v0, &v1};
+    const int32_t ymid = v0.y + v1.y + v2.y - std::min({v0.y, v1.y, v2.y}) - std::max({v0.y, v1.y, v2.y});
+    int upper = -1, lower = -1, longest = -1;
+    for (int i = 0; i < 3; ++i) {
+        const int32_t a = std::min(from[i]->y, to[i]->y), b = std::max(from[i]->y, to[i]->y);
+        if (a == b) continue; // flat
+        if (longest < 0 || b - a > std::max(from[longest]->y, to[longest]->y) - std::min(from[longest]->y, to[longest]->y)) longest = i;
+    }
+    for (int i = 0; i < 3; ++i) {
+        if (i == longest) continue;
+        const int32_t a = std::min(from[i]->y, to[i]->y), b = std::max(from[i]->y, to[i]->y);
+        if (a == b) continue;
+        if (b <= ymid) upper = i;
+        else lower = i;
+    }
+    int32_t flat_skip_first = 0, flat_skip_last = 0; // rows a flat edge leaves out, at each end
+    for (const EdgeWalk<T>& e : edges) {
+        if (e.side != EdgeWalk<T>::Side::Flat || e.q >= 0) continue;
+        if (e.dq > 0) flat_skip_first = 1; // a flat edge left out its first row (the top)
+        else flat_skip_last = 1;
+    }
+    for (const EdgeWalk<T>& e : edges) {
+        if (e.side != EdgeWalk<T>::Side::Flat || e.dq > 0 || e.q + T(row1 - row0) * e.dq >= 0) continue;
+        flat_skip_last = 1; // a bottom edge whose row is out
+    }
+    const bool in_place = fb_ && !clamp;
+    uint32_t zrow = at[0].row, srow = at[1].row;
+    const uint32_t zx = at[0].sx, zy = at[0].sy, sx = at[1].sx, sy = at[1].sy;
+    EdgeWalk<T> lng = edges[longest];
+    int32_t y = row0;
+    const int32_t last = row1 - flat_skip_last;
+    if (flat_skip_first) { // the long edge still moves through the skipped row
+        lng.step();
+        if (upper >= 0) edges[upper].step();
+        else if (lower >= 0) edges[lower].step();
+        zrow += zy, srow += sy, ++y;
+    }
+    for (int part = 0; part < 2; ++part) {
+        const int other = part == 0 ? upper : lower;
+        if (other < 0) continue;
+        EdgeWalk<T> oth = edges[other];
+        // Upper part: rows whose centre is above the middle vertex; lower part: the rest.
+        const int32_t end = part == 0 ? std::min(last, int32_t((int64_t(ymid) - 9) >> 4)) : last;
+        const bool long_left = lng.side == EdgeWalk<T>::Side::Left;
+        EdgeWalk<T>& L = long_left ? lng : oth;
+        EdgeWalk<T>& R = long_left ? oth : lng;
+        if constexpr (sizeof(T) == 4) {
+            if (in_place) {
+                const int32_t rows = end - y + 1;
+                if (rows > 0) {
+                    InPlaceRows w{L.q, L.r, L.s, L.dq, L.dr, R.q, R.r, R.s, R.dq, R.dr, zrow, zx, zy, srow, sx, sy};
+                    stats.pixels += rows_in_place(w, rows, col0, col1, depth_.data() + size_t(y) * width_, fb_ + size_t(y) * width_,
+                                                  width_, palette_->colour);
+                    L.q = w.lq, L.r = w.lr, R.q = w.rq, R.r = w.rr, zrow = w.zrow, srow = w.srow;
+                    y = end + 1;
+                }
+                if (part == 0 && lower >= 0) {
+                    for (int32_t k = row0; k < y; ++k) edges[lower].step();
+                }
+                continue;
+            }
         }
-        if (Status s = shade(int32_t(y), int32_t(lo), int32_t(hi), at, clamp); !ok(s)) return s;
-        for (Interp& t : at) t.row += t.sy;
+        // The walks in locals (registers, as far as the core has them).
+        T lq = L.q, lr = L.r, rq = R.q, rr = R.r;
+        const T ls = L.s, ldq = L.dq, ldr = L.dr, rs = R.s, rdq = R.dq, rdr = R.dr;
+        uint16_t* const depth = depth_.data();
+        hal::Rgb565* const fb = fb_;
+        const uint32_t* const colour = palette_->colour;
+        const size_t width = width_;
+        uint32_t pixels = 0, spans = 0;
+        for (; y <= end; ++y, zrow += zy, srow += sy) {
+            T lo = (lq + (lr != 0) + 7) >> 4; // first column whose centre 16x+8 >= ceil(t/s)
+            T hi = (rq - 8) >> 4;             // last column whose centre 16x+8 <= floor(t/s)
+            lq += ldq, lr += ldr;
+            if (lr >= ls) lr -= ls, ++lq;
+            rq += rdq, rr += rdr;
+            if (rr >= rs) rr -= rs, ++rq;
+            if (lo < col0) lo = col0;
+            if (hi > col1) hi = col1;
+            if (lo > hi) continue;
+            if (in_place) {
+                const size_t row = size_t(y) * width;
+                pixels += shade_in_place(depth + row + lo, depth + row + hi + 1, fb + row + lo, zrow + zx * uint32_t(lo), zx,
+                                         srow + sx * uint32_t(lo), sx, colour);
+                ++spans;
+            } else {
+                at[0].row = zrow, at[1].row = srow;
+                if (Status st = shade(int32_t(y), int32_t(lo), int32_t(hi), at, clamp); !ok(st)) return st;
+            }
+        }
+        L.q = lq, L.r = lr, R.q = rq, R.r = rr;
+        stats.pixels += pixels;
+        stats.spans += spans;
+        if (part == 0 && lower >= 0) { // the bottom edge starts where the top edge ended
+            for (int32_t k = row0; k < y; ++k) edges[lower].step();
+        }
     }
     return Status::Ok;
 }
 
 // Small triangles (most of a tessellated model on a handheld's screen): the triangle's pixel
-// box in 32-bit arithmetic, edge functions and attributes stepped per pixel. Coverage is the
-// same predicate as EdgeWalk's (the same pixels, top-left rule included). Attribute gradients
-// come from one reciprocal of the area (2^-15 relative error: a fraction of a unit inside a
-// triangle no thinner than a quarter of its box), or from exact divisions for slivers; values
-// are clamped to the vertices' range either way.
+// box in 32-bit arithmetic, edge functions stepped per pixel. Coverage is the same predicate as
+// EdgeWalk's (the same pixels, top-left rule included).
 Status Rasterizer::scan_small(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2,
                               int64_t area2, int32_t row0, int32_t row1, int32_t col0, int32_t col1) {
     const int32_t ox = col0 * 16 + 8, oy = row0 * 16 + 8; // the first pixel's centre
     const bool clamp = needs_clamp(v0, v1, v2, kSmall);
+    const bool in_place = fb_ && !clamp;
     struct Edge {
         int32_t e, sx, sy; // value at the current pixel; steps per pixel in x and y
     } ed[3];
@@ -288,34 +415,8 @@ Status Rasterizer::scan_small(const ScreenVertex& v0, const ScreenVertex& v1, co
         ed[i].sx = -16 * dy;
         ed[i].sy = 16 * dx;
     }
-    // One reciprocal of the doubled area (normalized to 16 bits), then every gradient by it.
-    const uint32_t a = uint32_t(area2);
-    const int bits = 32 - __builtin_clz(a);
-    const int e = bits - 16;
-    const uint32_t an = e >= 0 ? a >> e : a << -e;
-    const int64_t recip = int64_t(recip31(an));
-    const int shift = 31 + e - kFrac; // gradient in kFrac fixed point per sub-pixel unit
-    // Thinner than a quarter of its box: exact gradients (eight divisions) instead.
-    const int32_t bw = std::max({v0.x, v1.x, v2.x}) - std::min({v0.x, v1.x, v2.x});
-    const int32_t bh = std::max({v0.y, v1.y, v2.y}) - std::min({v0.y, v1.y, v2.y});
-    const bool sliver = int64_t(bw) * bh > 4 * area2;
     Interp at[kAttributes];
-    const int32_t vals[kAttributes][3] = {{v0.z, v1.z, v2.z}, {v0.shade, v1.shade, v2.shade}};
-    const int32_t y1 = v1.y - v0.y, y2 = v2.y - v0.y, x1 = v1.x - v0.x, x2 = v2.x - v0.x;
-    for (int k = 0; k < kAttributes; ++k) {
-        const int32_t A0 = vals[k][0], d1 = vals[k][1] - A0, d2 = vals[k][2] - A0;
-        const int64_t numx = int64_t(d1) * y2 - int64_t(d2) * y1;
-        const int64_t numy = int64_t(d2) * x1 - int64_t(d1) * x2;
-        int64_t gx, gy;
-        if (sliver) { // exact: the reciprocal's error would grow with the gradients
-            gx = div_fast(numx * (int64_t(1) << kFrac), area2);
-            gy = div_fast(numy * (int64_t(1) << kFrac), area2);
-        } else {
-            gx = shift >= 0 ? (numx * recip) >> shift : (numx * recip) << -shift;
-            gy = shift >= 0 ? (numy * recip) >> shift : (numy * recip) << -shift;
-        }
-        at[k] = Interp(vals[k], gx, gy, (int64_t(A0) << kFrac) + gx * (8 - v0.x) + gy * (oy - v0.y));
-    }
+    gradients(v0, v1, v2, area2, oy, at);
     for (int32_t y = row0; y <= row1; ++y) {
         // The row's span: the first pixel inside, then on while inside (a triangle is convex).
         int32_t e0 = ed[0].e, e1 = ed[1].e, e2 = ed[2].e, x = col0;
@@ -323,7 +424,13 @@ Status Rasterizer::scan_small(const ScreenVertex& v0, const ScreenVertex& v1, co
         const int32_t lo = x;
         for (; x <= col1 && (e0 | e1 | e2) >= 0; ++x) e0 += ed[0].sx, e1 += ed[1].sx, e2 += ed[2].sx;
         if (x > lo) {
-            if (Status s = shade(y, lo, x - 1, at, clamp); !ok(s)) return s;
+            if (in_place) {
+                const size_t row = size_t(y) * width_;
+                stats.pixels += shade_in_place(&depth_[row + lo], &depth_[row + x], fb_ + row + lo, at[0].row + at[0].sx * uint32_t(lo),
+                                               at[0].sx, at[1].row + at[1].sx * uint32_t(lo), at[1].sx, palette_->colour);
+            } else if (Status s = shade(y, lo, x - 1, at, clamp); !ok(s)) {
+                return s;
+            }
         }
         ed[0].e += ed[0].sy, ed[1].e += ed[1].sy, ed[2].e += ed[2].sy;
         for (Interp& t : at) t.row += t.sy;
@@ -338,7 +445,7 @@ Status Rasterizer::shade(int32_t y, int32_t lo, int32_t hi, const Interp* at, bo
     uint16_t* drow = &depth_[size_t(y) * width_];
     // Pixels go straight into a memory-mapped draw buffer, else into the line and out in runs.
     hal::Rgb565* line = fb_ ? fb_ + size_t(y) * width_ : line_.data();
-    const hal::Rgb565* colour = palette_->colour;
+    const uint32_t* colour = palette_->colour;
     int32_t run = -1; // first column of the pending run of visible pixels
     if (!clamp) {
         // Alternate runs of hidden and of visible pixels; each visible run is pushed whole.
@@ -352,7 +459,7 @@ Status Rasterizer::shade(int32_t y, int32_t lo, int32_t hi, const Interp* at, bo
                 const int32_t zv = int32_t(z) >> kFrac;
                 if (zv >= int32_t(*d)) break;
                 *d = uint16_t(zv);
-                *out = colour[int32_t(s) >> kFrac];
+                *out = hal::Rgb565(colour[int32_t(s) >> kFrac]);
             }
             if (out > first) {
                 if (Status st = flush(int32_t(first - line), int32_t(out - line), y); !ok(st)) return st;
@@ -364,7 +471,7 @@ Status Rasterizer::shade(int32_t y, int32_t lo, int32_t hi, const Interp* at, bo
             const uint16_t zv = uint16_t(at[0].value(z));
             if (zv < drow[x]) {
                 drow[x] = zv;
-                line[x] = colour[at[1].value(s)];
+                line[x] = hal::Rgb565(colour[at[1].value(s)]);
                 if (run < 0) run = x;
             } else if (run >= 0) {
                 if (Status st = flush(run, x, y); !ok(st)) return st;
@@ -382,12 +489,35 @@ Status Rasterizer::line(const ScreenVertex& a, const ScreenVertex& b, hal::Rgb56
     const int32_t x0 = a.x >> 4, y0 = a.y >> 4, x1 = b.x >> 4, y1 = b.y >> 4;
     const int32_t dx = x1 - x0, dy = y1 - y0;
     const int32_t n = (dx < 0 ? -dx : dx) > (dy < 0 ? -dy : dy) ? (dx < 0 ? -dx : dx) : (dy < 0 ? -dy : dy);
-    // 16.16 positions and depth, stepped once per pixel along the longer axis (within the guard
-    // band |dx|, |dy| < 2^14 pixels, so the slopes divide in 32 bits).
+    // 16.16 positions and depth, stepped once per pixel along the longer axis; the three slopes
+    // share one reciprocal of the length.
     int32_t x = (x0 << 16) + 0x8000, y = (y0 << 16) + 0x8000;
     int32_t z = int32_t(a.z) << 8;
-    const int32_t sx = n ? (dx << 16) / n : 0, sy = n ? (dy << 16) / n : 0;
-    const int32_t sz = n ? (int32_t(b.z) - int32_t(a.z)) * 256 / n : 0;
+    int32_t sx = 0, sy = 0, sz = 0;
+    if (n) {
+        const Reciprocal r = reciprocal(uint32_t(n));
+        sx = divide(int64_t(dx) << 16, r);
+        sy = divide(int64_t(dy) << 16, r);
+        sz = divide((int64_t(b.z) - a.z) << 8, r);
+    }
+    z -= int32_t(bias) << 8; // pulled toward the eye
+    uint16_t* const depth = depth_.data();
+    const uint32_t width = width_, height = height_;
+    uint32_t written = 0;
+    if (hal::Rgb565* const fb = fb_) {
+        for (int32_t i = 0; i <= n; ++i, x += sx, y += sy, z += sz) {
+            const int32_t px = x >> 16, py = y >> 16;
+            if (uint32_t(px) >= width || uint32_t(py) >= height) continue; // off the screen (negatives too)
+            const int32_t zv = z < 0 ? 0 : z >> 8;
+            const size_t at = size_t(py) * width + uint32_t(px);
+            if (zv >= depth[at]) continue;
+            depth[at] = uint16_t(zv);
+            fb[at] = colour;
+            ++written;
+        }
+        stats.pixels += written;
+        return Status::Ok;
+    }
     // Without a memory-mapped buffer, pixels that follow each other along a row go out as one span.
     int32_t run_x = 0, run_y = -1, run_n = 0;
     auto flush_run = [&]() {
@@ -398,30 +528,28 @@ Status Rasterizer::line(const ScreenVertex& a, const ScreenVertex& b, hal::Rgb56
     };
     for (int32_t i = 0; i <= n; ++i, x += sx, y += sy, z += sz) {
         const int32_t px = x >> 16, py = y >> 16;
-        if (px < 0 || py < 0 || px >= width_ || py >= height_) continue;
-        int32_t zv = (z >> 8) - bias;
-        zv = zv < 0 ? 0 : zv;
-        uint16_t& d = depth_[size_t(py) * width_ + px];
-        if (zv >= d) continue;
-        d = uint16_t(zv);
-        ++stats.pixels;
-        if (fb_) {
-            fb_[size_t(py) * width_ + px] = colour;
-        } else if (py == run_y && px == run_x + run_n) {
+        if (uint32_t(px) >= width || uint32_t(py) >= height) continue;
+        const int32_t zv = z < 0 ? 0 : z >> 8;
+        const size_t at = size_t(py) * width + uint32_t(px);
+        if (zv >= depth[at]) continue;
+        depth[at] = uint16_t(zv);
+        ++written;
+        if (py == run_y && px == run_x + run_n) {
             ++run_n;
         } else {
             if (Status st = flush_run(); !ok(st)) return st;
             run_x = px, run_y = py, run_n = 1;
         }
     }
+    stats.pixels += written;
     return flush_run();
 }
 
 Status Rasterizer::flush(int32_t from, int32_t to, int64_t y) {
     const uint16_t n = static_cast<uint16_t>(to - from);
-    ++stats.spans;
     stats.pixels += n;
     if (fb_) return Status::Ok; // already in place
+    ++stats.spans;
     return display_.push_span(uint16_t(from), uint16_t(y), &line_[from], n);
 }
 

@@ -60,7 +60,7 @@ ScreenVertex v(int32_t x, int32_t y, uint16_t z = 100, uint8_t shade = 255) { re
 const render::Palette& ramp() {
     static render::Palette p = [] {
         render::Palette r;
-        for (int i = 0; i < 256; ++i) r.colour[i] = hal::Rgb565(i);
+        for (int i = 0; i < 256; ++i) r.colour[i] = uint32_t(i);
         return r;
     }();
     return p;
@@ -218,4 +218,43 @@ TEST(Raster, SamePixelsInPlaceAndThroughSpans) {
     EXPECT_EQ(depth_a, depth_b);
     EXPECT_EQ(a.stats.pixels, b.stats.pixels);
     EXPECT_GT(spans.spans, 0u);
+}
+
+TEST(Raster, CoverageIsExactlyTheTopLeftRule) {
+    // Random triangles, small and large, on and off the screen: the pixels drawn are exactly
+    // those whose centre passes all three edge tests, with the top-left rule for centres on an
+    // edge (evaluated here pixel by pixel, in 64 bits).
+    constexpr uint16_t W = 120, H = 90;
+    std::mt19937 rng(11);
+    for (int trial = 0; trial < 400; ++trial) {
+        Fixture f(W, H);
+        const int span = trial % 2 ? 16 * 40 : 16 * 400; // small boxes, then large ones
+        std::uniform_int_distribution<int> cx(-16 * 20, 16 * (W + 20)), cy(-16 * 20, 16 * (H + 20)), d(-span, span);
+        const int ox = cx(rng), oy = cy(rng);
+        ScreenVertex t[3];
+        for (ScreenVertex& p : t) {
+            p = v(ox + d(rng), oy + d(rng));
+            if (trial % 5 == 0) p.x = (p.x / 16) * 16 + 8, p.y = (p.y / 16) * 16 + 8; // on pixel centres
+            if (trial % 7 == 0) p.y = t[0].y;                                        // flat edges
+        }
+        ASSERT_EQ(f.raster.draw(t[0], t[1], t[2], ramp(), render::Cull::None), Status::Ok);
+        int64_t area2 = int64_t(t[1].x - t[0].x) * (t[2].y - t[0].y) - int64_t(t[1].y - t[0].y) * (t[2].x - t[0].x);
+        if (area2 == 0) continue;
+        if (area2 < 0) std::swap(t[1], t[2]);
+        for (int y = 0; y < H; ++y) {
+            for (int x = 0; x < W; ++x) {
+                const int64_t sx = 16 * x + 8, sy = 16 * y + 8;
+                bool inside = true;
+                for (int e = 0; e < 3; ++e) {
+                    const ScreenVertex& p = t[(e + 1) % 3];
+                    const ScreenVertex& q = t[(e + 2) % 3];
+                    const int64_t dx = q.x - p.x, dy = q.y - p.y;
+                    const int64_t bias = (dy < 0 || (dy == 0 && dx > 0)) ? 0 : 1;
+                    inside = inside && dx * (sy - p.y) - dy * (sx - p.x) - bias >= 0;
+                }
+                ASSERT_EQ(f.display.count[size_t(y) * W + x], inside ? 1 : 0)
+                    << "trial " << trial << " pixel " << x << "," << y;
+            }
+        }
+    }
 }

@@ -27,7 +27,7 @@ struct ScreenVertex {
 // the rasterizer indexes without clamping where that is all it can do.
 struct Palette {
     static constexpr int kPad = 16;
-    hal::Rgb565 colour[256 + kPad];
+    uint32_t colour[256 + kPad]; // RGB565 values, one word each (a shifted word load per pixel)
 };
 
 // The palette of a colour under light: shade s gives (r, g, b) * s / 255.
@@ -42,7 +42,7 @@ enum class Cull : uint8_t { None, Back };
 struct RasterStats {
     uint32_t triangles = 0;   // triangles that reached scan conversion
     uint32_t culled = 0;      // back-facing or zero-area
-    uint32_t spans = 0;       // spans pushed to the display
+    uint32_t spans = 0;       // spans pushed to the display (none when pixels go in place)
     uint32_t pixels = 0;      // pixels that passed the depth test
 };
 
@@ -81,6 +81,8 @@ private:
     Status scan_small(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2, int64_t area2,
                       int32_t row0, int32_t row1, int32_t col0, int32_t col1);
     Status shade(int32_t y, int32_t lo, int32_t hi, const Interp* at, bool clamp);
+    void gradients(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2, int64_t area2, int32_t oy,
+                   Interp at[]) const;
     static constexpr int kAttributes = 2; // depth, shade
     Status flush(int32_t from, int32_t to, int64_t y);
 
