@@ -12,7 +12,7 @@ drag with the PS/2 mouse on versatilepb, zoom, fit, finer level of detail, quit)
     first pass; a frame = one full redraw ('frame'). Budgets: tessellation <= 600 M
     instructions (1 s at 600 MHz), a frame <= 20 M per 10,000 triangles in view (30 frames/s;
     views under 10k triangles get the full 20 M). Printed for every run; asserted with
-    --assert-budgets (not yet met on the ARM926 for every model and view: docs/budgets.md).
+    --assert-budgets (the ctest runs on the ARM926 do).
 
   viewer_test.py --board B --elf ELF --packer facet-pack --ref facet-viewer-ref --work DIR
                  [--sample facet-sample-model] [--markdown FILE] MODEL.step...
