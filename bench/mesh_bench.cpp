@@ -280,6 +280,7 @@ int main(int argc, char** argv) {
                 const double ratio = mb.max_deviation / last.max_deviation;
                 if (last.max_deviation <= mb.max_deviation && ratio < 1.03) break;
                 t *= last.max_deviation <= mb.max_deviation ? ratio : 0.97 * ratio;
+                t = std::max(t, defl / 20); // BRepMesh far under its own deflection: stop there
                 Measure m;
                 if (!run_facet(bytes, proj, t, m)) break;
                 if (m.max_deviation <= mb.max_deviation && (!met || m.tolerance > eq.tolerance)) eq = m, met = true;

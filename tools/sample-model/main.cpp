@@ -1,6 +1,6 @@
 // facet-sample-model: writes the project's own sample part as STEP (AP214), made with Open
 // CASCADE: an ANC101-like block with filleted vertical edges, four through holes, a pocket, a
-// bored cylindrical boss and a lofted free-form (B-spline) dome, each face family coloured.
+// bored cylindrical boss and a lofted free-form (B-spline) dome, face families coloured.
 //
 //   facet-sample-model OUT.step
 #include <BRepAdaptor_Curve.hxx>
@@ -14,7 +14,18 @@
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <GC_MakeCircle.hxx>
 #include <GC_MakeEllipse.hxx>
-#include <STEPControl_Writer.hxx>
+#include <BRepAdaptor_Surface.hxx>
+#include <Message.hxx>
+#include <Message_Messenger.hxx>
+#include <Message_Printer.hxx>
+#include <Quantity_Color.hxx>
+#include <STEPCAFControl_Writer.hxx>
+#include <TDF_Label.hxx>
+#include <TDocStd_Document.hxx>
+#include <XCAFApp_Application.hxx>
+#include <XCAFDoc_ColorTool.hxx>
+#include <XCAFDoc_DocumentTool.hxx>
+#include <XCAFDoc_ShapeTool.hxx>
 #include <ShapeCustom.hxx>
 #include <ShapeCustom_RestrictionParameters.hxx>
 #include <TopExp_Explorer.hxx>
@@ -32,6 +43,8 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "usage: facet-sample-model OUT.step\n");
         return 2;
     }
+    // Open CASCADE's own statistics on the console are noise here.
+    for (auto& p : Message::DefaultMessenger()->Printers()) p->SetTraceLevel(Message_Fail);
     const double L = 120, W = 80, H = 30;
     TopoDS_Shape part = BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), L, W, H).Shape();
 
@@ -74,8 +87,29 @@ int main(int argc, char** argv) {
         part = BRepAlgoAPI_Fuse(part, dome).Shape();
     }
 
-    STEPControl_Writer writer;
-    if (writer.Transfer(part, STEPControl_AsIs) != IFSelect_RetDone || writer.Write(argv[1]) != IFSelect_RetDone) {
+    // Colours, as a CAD system writes them (STEP styled items through an XCAF document): the
+    // body one colour, the bores and holes another, the boss and the dome their own.
+    Handle(XCAFApp_Application) app = XCAFApp_Application::GetApplication();
+    Handle(TDocStd_Document) doc;
+    app->NewDocument("MDTV-XCAF", doc);
+    Handle(XCAFDoc_ShapeTool) shapes = XCAFDoc_DocumentTool::ShapeTool(doc->Main());
+    Handle(XCAFDoc_ColorTool) colours = XCAFDoc_DocumentTool::ColorTool(doc->Main());
+    const TDF_Label label = shapes->AddShape(part, false);
+    colours->SetColor(label, Quantity_Color(0.72, 0.74, 0.78, Quantity_TOC_sRGB), XCAFDoc_ColorSurf);
+    for (TopExp_Explorer x(part, TopAbs_FACE); x.More(); x.Next()) {
+        const TopoDS_Face face = TopoDS::Face(x.Current());
+        BRepAdaptor_Surface s(face);
+        Quantity_Color c;
+        if (s.GetType() == GeomAbs_BSplineSurface) c = Quantity_Color(0.90, 0.55, 0.20, Quantity_TOC_sRGB); // the dome
+        else if (s.GetType() == GeomAbs_Cylinder && s.Cylinder().Radius() < 6) c = Quantity_Color(0.85, 0.75, 0.35, Quantity_TOC_sRGB); // bores
+        else if (s.GetType() == GeomAbs_Cylinder && s.Cylinder().Radius() > 10) c = Quantity_Color(0.30, 0.55, 0.80, Quantity_TOC_sRGB); // the boss
+        else continue;
+        const TDF_Label sub = shapes->AddSubShape(label, face);
+        if (!sub.IsNull()) colours->SetColor(sub, c, XCAFDoc_ColorSurf);
+    }
+    STEPCAFControl_Writer writer;
+    writer.SetColorMode(true);
+    if (!writer.Transfer(doc, STEPControl_AsIs) || writer.Write(argv[1]) != IFSelect_RetDone) {
         std::fprintf(stderr, "facet-sample-model: cannot write %s\n", argv[1]);
         return 1;
     }
