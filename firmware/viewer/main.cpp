@@ -54,6 +54,9 @@ int facet_main(hal::Board& board) {
         }
     }
     const viewer::Totals& t = v.totals();
+    // What this model needed: the pack as loaded and the viewer's storage at its peak (the
+    // host adds the display buffers, code and stack high-water: the model's peak RAM).
+    print(con, "@memory pack_bytes {} storage_peak_bytes {}\n", size, v.storage_in_use());
     print(con, "viewer: {} faces ({} failed), {} triangles; bye\n", t.faces, t.failed, t.triangles);
     return 0;
 }

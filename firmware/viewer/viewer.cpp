@@ -134,10 +134,16 @@ Status Viewer::restart() {
         return st;
     }
     for (uint32_t f = 0; f < pack_.faces().size(); ++f) mem_.faces[f] = {0, 0, 0, 0, 0, {0, 0, 0}, 0, FaceState::Pending, false};
-    const uint32_t arena_peak = totals_.arena_peak_bytes;
+    const Totals before = totals_;
     totals_ = {};
     totals_.faces = uint32_t(pack_.faces().size());
-    totals_.arena_peak_bytes = pass_ == 0 ? 0 : arena_peak;
+    if (pass_ > 0) { // the session's peaks carry over
+        totals_.arena_peak_bytes = before.arena_peak_bytes;
+        totals_.samples_peak = before.samples_peak, totals_.face_points_peak = before.face_points_peak;
+        totals_.slivers_peak = before.slivers_peak, totals_.vertices_peak = before.vertices_peak;
+        totals_.triangles_peak = before.triangles_peak;
+    }
+    if (mem_.samples.used > totals_.samples_peak) totals_.samples_peak = mem_.samples.used;
     next_face_ = 0;
     half_shot_ = false;
     applied_[0] = applied_[1] = 0;
@@ -248,7 +254,28 @@ void Viewer::tessellate(uint32_t f) {
     totals_.mesh_bytes = totals_.vertices * uint32_t(sizeof(DrawVertex)) + totals_.triangles * 3 * uint32_t(sizeof(uint16_t));
     const uint32_t arena = uint32_t(cdt::arena_bytes<uint16_t>(r.points + 4));
     if (arena > totals_.arena_peak_bytes) totals_.arena_peak_bytes = arena;
+    if (r.points > totals_.face_points_peak) totals_.face_points_peak = r.points;
+    if (r.slivers > totals_.slivers_peak) totals_.slivers_peak = r.slivers;
+    if (totals_.vertices > totals_.vertices_peak) totals_.vertices_peak = totals_.vertices;
+    if (totals_.triangles > totals_.triangles_peak) totals_.triangles_peak = totals_.triangles;
     print(con, "@progress {}/{} triangles {}\n", totals_.done + totals_.failed, totals_.faces, totals_.triangles);
+}
+
+uint32_t Viewer::storage_in_use() const {
+    const uint64_t edges = pack_.edges().size(), faces = pack_.faces().size();
+    const uint64_t points = totals_.face_points_peak + cdt::kBoxVertices, triangles = cdt::triangles_for(points);
+    const uint64_t bytes =
+        edges * (sizeof(uint32_t) + sizeof(uint16_t) + sizeof(uint8_t)) +              // per-edge sample index, drawn mark
+        uint64_t(totals_.samples_peak) * (sizeof(float) + sizeof(geom::Vec3) + 3 * sizeof(int32_t)) + // samples
+        cdt::arena_bytes<uint16_t>(points) +                                            // one face's CDT
+        points * (sizeof(cdt::Point) + sizeof(geom::Vec2) + 1 + sizeof(geom::Vec3) + sizeof(uint32_t) +
+                  sizeof(geom::MeshVertex) + sizeof(Projected)) +                       // one face's points
+        triangles * (sizeof(geom::TriangleMeasure) + 3 * sizeof(uint32_t)) +            // its triangles
+        uint64_t(totals_.slivers_peak) * sizeof(geom::Sliver) + capacity::kLoops * sizeof(uint32_t) +
+        uint64_t(totals_.vertices_peak) * sizeof(DrawVertex) + uint64_t(totals_.triangles_peak) * 3 * sizeof(uint16_t) +
+        faces * (sizeof(FaceInfo) + sizeof(uint32_t)) +                                 // per face
+        capacity::kPalettes * (sizeof(render::Palette) + sizeof(uint32_t));
+    return uint32_t(bytes);
 }
 
 Viewer::Instance Viewer::instance_transform(uint32_t index) const {

@@ -122,6 +122,8 @@ struct Totals {
     uint32_t faces = 0, done = 0, failed = 0, triangles = 0, vertices = 0;
     uint32_t arena_peak_bytes = 0; // largest CDT use of one face (vertices + triangles)
     uint32_t mesh_bytes = 0;       // vertices + indices in use
+    // High-water marks over the session (every level of detail), for storage_in_use().
+    uint32_t samples_peak = 0, face_points_peak = 0, slivers_peak = 0, vertices_peak = 0, triangles_peak = 0;
 };
 
 class Viewer {
@@ -137,6 +139,9 @@ public:
     void handle(const hal::InputEvent& event);
     bool quit() const { return quit_; }
     const Totals& totals() const { return totals_; }
+    // Bytes of Storage this model has needed at its peak (the rest of Storage is capacity for
+    // larger models): what a build sized for it would hold.
+    uint32_t storage_in_use() const;
     float tolerance() const { return opt_.tolerance; }
 
 private:

@@ -242,6 +242,7 @@ FaceResult tessellate_face(const Pack& pack, uint32_t fi, const EdgeSamples& edg
     for (uint32_t i = 0; i < np; ++i) sc.loop_points[i] = grid.to_grid(sc.uv[i]);
     uint32_t slivers = 0;
     if (Status s = detail::clean_loops(sc, np, nl, slivers, why); !ok(s)) return fail(s, why);
+    res.slivers = slivers;
 
     const uint32_t base_vertex = mesh.vertex_count, base_triangle = mesh.triangle_count;
     auto rollback = [&](const char* reason) {

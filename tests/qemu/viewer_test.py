@@ -43,6 +43,18 @@ def session(board):
     return s
 
 
+def peak_ram(rep):
+    """RAM the model needed at its peak: code, data, display and depth buffers, MMU table as
+    reserved; the stack's high-water; the pack as loaded; the viewer's storage at its peak
+    (the rest of the arena and pack regions is capacity for larger models). None without the
+    firmware's @memory line."""
+    mem, ram = rep.get('memory'), rep.get('ram', {})
+    if not mem or 'storage_peak_bytes' not in mem or rep.get('stack_used') is None:
+        return None
+    fixed = sum(v for k, v in ram.items() if k not in ('arena', 'pack', 'stack', 'total'))
+    return fixed + rep['stack_used'] + mem.get('pack_bytes', 0) + mem['storage_peak_bytes']
+
+
 def frame_budget(triangles):
     return FRAME_BUDGET_PER_10K * max(1.0, triangles / 10_000)
 
@@ -163,7 +175,11 @@ def main():
             print(uart[-1500:])
             continue
         big = max(frames, key=lambda f: f['triangles'])
+        peak = peak_ram(rep)
+        if peak is None:
+            problems.append('no @memory report')
         row = {'model': name, 'faces': int(m.group(1)), 'triangles': int(m.group(3)), 'mesh_bytes': int(m.group(5)),
+               'peak_ram': peak,
                'arena_peak': int(m.group(6)), 'pack_bytes': os.path.getsize(fpk), 'tess': t0,
                'frame': max(f['instructions'] for f in frames if f['pass'] == 0 and f['triangles'] == int(m.group(3))),
                'big_frame': big, 'tess_lod': tess.get(max(tess)), 'notes': budget_notes}
@@ -172,6 +188,7 @@ def main():
               f'{row["arena_peak"]:,} B, mesh {row["mesh_bytes"]:,} B; tessellation {t0:,} instructions '
               f'({t0 / 600e3:.0f} ms at 600 MHz); frame {row["frame"]:,} ({row["frame"] / 600e3:.1f} ms); '
               f'finest frame {big["instructions"]:,} for {big["triangles"]:,} triangles; '
+              f'peak RAM {peak / (1 << 20):.2f} MiB; '
               f'{len(shots)} screenshots pixel-identical to the host'
               + (f'; OVER BUDGET: {"; ".join(budget_notes)}' if budget_notes else '; within budgets'))
     if args.markdown and rows:
@@ -182,13 +199,13 @@ def main():
 def write_markdown(path, board, rows, ram):
     ms = lambda n: f'{n / 600e3:.1f}'
     lines = [f'### {board}', '',
-             '| model | faces | triangles | pack B | mesh B | arena peak B | tessellation (M instr / ms) '
+             '| model | faces | triangles | pack B | mesh B | arena peak B | peak RAM MiB | tessellation (M instr / ms) '
              '| frame (M instr / ms) | finest view: triangles, frame (M / ms) | budgets |',
-             '|---|---:|---:|---:|---:|---:|---:|---:|---:|---|']
+             '|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|']
     for r in rows:
         b = r['big_frame']
         lines.append(f'| {r["model"]} | {r["faces"]} | {r["triangles"]:,} | {r["pack_bytes"]:,} | {r["mesh_bytes"]:,} '
-                     f'| {r["arena_peak"]:,} | {r["tess"] / 1e6:.1f} / {ms(r["tess"])} '
+                     f'| {r["arena_peak"]:,} | {r["peak_ram"] / (1 << 20):.2f} | {r["tess"] / 1e6:.1f} / {ms(r["tess"])} '
                      f'| {r["frame"] / 1e6:.1f} / {ms(r["frame"])} '
                      f'| {b["triangles"]:,}: {b["instructions"] / 1e6:.1f} / {ms(b["instructions"])} '
                      f'| {"; ".join(r["notes"]) if r["notes"] else "within"} |')

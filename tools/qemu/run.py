@@ -286,6 +286,8 @@ def main():
             kv = dict(zip(words[1::2], words[2::2]))
             report['model'] = {'faces': int(kv['faces']), 'faces_failed': int(kv['failed']),
                                'triangles': int(kv['triangles']), 'mesh_bytes': int(kv['mesh_bytes'])}
+        elif words[0] == '@memory' and len(words) >= 3:
+            report['memory'] = {k: int(v) for k, v in zip(words[1::2], words[2::2])}
         elif words[0] == '@expect' and len(words) == 3:
             report.setdefault('expect', {})[words[1]] = int(words[2])
 

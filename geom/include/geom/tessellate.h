@@ -81,6 +81,7 @@ struct FaceResult {
     const char* reason = "";  // on failure
     uint32_t triangles = 0;
     uint32_t points = 0;      // CDT points (loop samples and refinement points)
+    uint32_t slivers = 0;     // loop points kept as slivers (FaceScratch::slivers in use)
 };
 
 // Samples every edge of the pack. Full if the pool is too small.
