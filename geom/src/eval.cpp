@@ -12,6 +12,7 @@ Vec3 v3(const float* p) { return {p[0], p[1], p[2]}; }
 // Non-zero B-spline basis functions and their first derivatives at t (The NURBS Book A2.2/A2.3).
 // knots: expanded; n: poles; p: degree. Returns the span index s: functions N[s-p .. s].
 // A periodic B-spline (stored over one period) takes t modulo the period; others clamp t.
+// dN null: the values only.
 int basis(const float* knots, int n, int p, float t, bool periodic, float* N, float* dN) {
     const float lo = knots[p], hi = knots[n];
     if (periodic && hi > lo && (t < lo || t > hi)) {
@@ -49,6 +50,7 @@ int basis(const float* knots, int n, int p, float t, bool periodic, float* N, fl
         ndu[j][j] = saved;
     }
     for (int j = 0; j <= p; ++j) N[j] = ndu[j][p];
+    if (!dN) return s; // values only
     // First derivatives: p * (N_{j,p-1}/(u_{j+p}-u_j) - N_{j+1,p-1}/(u_{j+p+1}-u_{j+1})).
     for (int r = 0; r <= p; ++r) {
         float d = 0;
@@ -235,6 +237,35 @@ SurfacePoint eval_surface(const Pack& pack, const Surface& s, float u, float v) 
     }
     }
     return {};
+}
+
+Vec3 eval_surface_point(const Pack& pack, const Surface& s, float u, float v) {
+    if (SurfaceType(s.type) != SurfaceType::BSpline) return eval_surface(pack, s, u, v).p;
+    // The position alone: basis values without derivatives, one weighted sum of the poles.
+    const float* q = pack.floats().data() + s.params;
+    const int pu = int(q[0]), pv = int(q[1]), nu = int(q[2]), nv = int(q[3]), ku = int(q[4]), kv = int(q[5]);
+    const bool rational = q[6] != 0;
+    const float* uk = q + 9;
+    const float* vk = uk + ku;
+    const float* poles = vk + kv;
+    const float* weights = poles + 3 * nu * nv;
+    float Nu[kMaxDegree + 1], Nv[kMaxDegree + 1];
+    const int su = basis(uk, nu, pu, u, q[7] != 0, Nu, nullptr), sv = basis(vk, nv, pv, v, q[8] != 0, Nv, nullptr);
+    float x = 0, y = 0, z = 0, W = 0;
+    for (int a = 0; a <= pu; ++a) {
+        const int i = su - pu + a;
+        float rx = 0, ry = 0, rz = 0, rw = 0; // the row of poles contracted in v first
+        for (int b = 0; b <= pv; ++b) {
+            const int j = sv - pv + b;
+            const float* P = poles + 3 * (i * nv + j);
+            const float w = rational ? weights[i * nv + j] * Nv[b] : Nv[b];
+            rx += P[0] * w, ry += P[1] * w, rz += P[2] * w, rw += w;
+        }
+        x += rx * Nu[a], y += ry * Nu[a], z += rz * Nu[a], W += rw * Nu[a];
+    }
+    if (W == 0) W = 1;
+    const float inv = 1 / W;
+    return {x * inv, y * inv, z * inv};
 }
 
 namespace {

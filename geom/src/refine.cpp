@@ -129,15 +129,10 @@ struct Context {
         }
     }
 
-    // Signed deviation of x (the triangle's point at parameters uv) from a free-form surface,
-    // along the surface's normal at uv.
-    float freeform_error(Vec3 x, Vec2 uv) const {
-        const SurfacePoint s = eval_surface(pack, S, uv.x, uv.y);
-        const Vec3 d = x - s.p, n = cross(s.du, s.dv);
-        const float nn = dot(n, n);
-        if (!(nn > 1e-30f)) return length(d);
-        return dot(n, d) / std::sqrt(nn);
-    }
+    // Signed deviation of x (the triangle's point at parameters uv) from a free-form surface:
+    // from the surface point at uv, along the triangle's unit normal n (near the surface's
+    // where it matters, and no derivatives to evaluate).
+    float freeform_error(Vec3 x, Vec2 uv, Vec3 n) const { return dot(n, x - eval_surface_point(pack, S, uv.x, uv.y)); }
 
     TriangleMeasure measure(const Tri& T) const {
         TriangleMeasure m{key_of(T), 0, {0, 0}};
@@ -170,9 +165,10 @@ struct Context {
         default: break;
         }
         const bool elementary = type <= SurfaceType::Torus;
+        const Vec3 normal = elementary ? Vec3{0, 0, 0} : normalized(cross(e1, e2));
         auto error = [&](float w0, float w1, float w2) {
             const Vec3 x = P[0] * w0 + P[1] * w1 + P[2] * w2;
-            return elementary ? elementary_error(x) : freeform_error(x, UV[0] * w0 + UV[1] * w1 + UV[2] * w2);
+            return elementary ? elementary_error(x) : freeform_error(x, UV[0] * w0 + UV[1] * w1 + UV[2] * w2, normal);
         };
         auto grid_at = [&](float w0, float w1, float w2) {
             return cdt::Point{int32_t(std::lround(w0 * float(G[0].x) + w1 * float(G[1].x) + w2 * float(G[2].x))),

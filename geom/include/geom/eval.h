@@ -22,6 +22,8 @@ struct Curve2Point {
 };
 
 SurfacePoint eval_surface(const Pack& pack, const pack::Surface& s, float u, float v);
+// The position alone (cheaper on B-splines: no derivatives).
+Vec3 eval_surface_point(const Pack& pack, const pack::Surface& s, float u, float v);
 Curve3Point eval_curve3(const Pack& pack, const pack::Curve& c, float t);
 Curve2Point eval_curve2(const Pack& pack, const pack::Curve& c, float t);
 
