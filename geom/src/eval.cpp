@@ -251,14 +251,24 @@ Vec3 eval_surface_point(const Pack& pack, const Surface& s, float u, float v) {
     const float* weights = poles + 3 * nu * nv;
     float Nu[kMaxDegree + 1], Nv[kMaxDegree + 1];
     const int su = basis(uk, nu, pu, u, q[7] != 0, Nu, nullptr), sv = basis(vk, nv, pv, v, q[8] != 0, Nv, nullptr);
-    float x = 0, y = 0, z = 0, W = 0;
+    float x = 0, y = 0, z = 0;
+    if (!rational) { // the basis functions sum to one: no weights, no division
+        for (int a = 0; a <= pu; ++a) {
+            const float* row = poles + 3 * ((su - pu + a) * nv + sv - pv);
+            float rx = 0, ry = 0, rz = 0; // the row of poles contracted in v first
+            for (int b = 0; b <= pv; ++b, row += 3) rx += row[0] * Nv[b], ry += row[1] * Nv[b], rz += row[2] * Nv[b];
+            x += rx * Nu[a], y += ry * Nu[a], z += rz * Nu[a];
+        }
+        return {x, y, z};
+    }
+    float W = 0;
     for (int a = 0; a <= pu; ++a) {
         const int i = su - pu + a;
-        float rx = 0, ry = 0, rz = 0, rw = 0; // the row of poles contracted in v first
+        float rx = 0, ry = 0, rz = 0, rw = 0;
         for (int b = 0; b <= pv; ++b) {
             const int j = sv - pv + b;
             const float* P = poles + 3 * (i * nv + j);
-            const float w = rational ? weights[i * nv + j] * Nv[b] : Nv[b];
+            const float w = weights[i * nv + j] * Nv[b];
             rx += P[0] * w, ry += P[1] * w, rz += P[2] * w, rw += w;
         }
         x += rx * Nu[a], y += ry * Nu[a], z += rz * Nu[a], W += rw * Nu[a];

@@ -12,12 +12,13 @@
 //   * plane: 0;  cylinder, cone: the sag of the arc its corners span in u, an exact bound
 //     (its points project along the axis into the arc's circular segment); sphere: the
 //     triangle's plane cuts the sphere in its circumcircle, so R - sqrt(R^2 - rho^2) bounds it;
-//   * otherwise sampled at the midpoints of its edges and at its centroid, and modelled as a
-//     quadratic over the triangle whose peak inside is computed: on elementary surfaces from
-//     the exact signed distance of the samples to the surface, on the others from the distance
-//     along the surface normal between a sample and the surface point at the sample's (u,v).
-//     The point goes where the deviation peaks (never on a constrained edge: that is a chord
-//     of a B-rep edge, within the tolerance by edge sampling).
+//   * otherwise sampled at seven points (each edge's thirds, the centroid) that fix a cubic
+//     model of the deviation over the triangle, whose peak on a grid of sixths is the
+//     estimate: on elementary surfaces from the exact signed distance of the samples to the
+//     surface, on the others from the distance along the triangle's normal between a sample
+//     and the surface point at the sample's (u,v). The point goes where the model peaks
+//     (never on a constrained edge: that is a chord of a B-rep edge, within the tolerance by
+//     edge sampling).
 #include "face_internal.h"
 #include "geom/fmath.h"
 
@@ -36,10 +37,19 @@ namespace {
 
 constexpr int kMaxRounds = 40;
 
-// The points (i, j, k) / 6 of a triangle, corners left out, in barycentric coordinates; edges:
-// bit e set when the point lies on edge e (coordinate e zero).
+// The deviation over a triangle, zero at its corners, is modelled as a cubic in the
+// barycentric coordinates l0, l1, l2 (exact for cubic deviations, which bend one way more than
+// the other along an edge: the peak is then off the middle):
+//   sum over edges k (between corners i, j):  li lj (A_k + B_k (li - lj))  +  C l0 l1 l2.
+// Seven samples fix it: each edge k at li = 2/3 (a_k) and li = 1/3 (b_k), and the centroid
+// (c), which give A_k = 9/4 (a_k + b_k), B_k = 27/4 (a_k - b_k), C = 27 c - 3 sum A_k. Its
+// value at a point is therefore a fixed combination of the seven samples, tabulated below for
+// the points (i, j, k) / 6 of the triangle (corners left out). edges: bit e set when the point
+// lies on edge e (coordinate e zero).
+constexpr int kSamples = 7; // a0 b0 a1 b1 a2 b2 c
 struct GridPoint {
     float l[3];
+    float w[kSamples]; // the model's value here = sum of w[s] * sample s
     uint8_t edges;
 };
 constexpr int kGridSteps = 6;
@@ -47,19 +57,34 @@ constexpr int kGridPoints = (kGridSteps + 1) * (kGridSteps + 2) / 2 - 3;
 constexpr auto make_sixths() {
     struct Table {
         GridPoint p[kGridPoints];
+        float lebesgue; // the largest sum of |w| over the points: |model| <= it * max |sample|
         const GridPoint* begin() const { return p; }
         const GridPoint* end() const { return p + kGridPoints; }
-        const GridPoint& operator[](int i) const { return p[i]; }
     } t{};
     int n = 0;
     for (int i = 0; i <= kGridSteps; ++i) {
         for (int j = 0; i + j <= kGridSteps; ++j) {
             const int k = kGridSteps - i - j;
             if (i == kGridSteps || j == kGridSteps || k == kGridSteps) continue;
-            t.p[n++] = {{float(i) / kGridSteps, float(j) / kGridSteps, float(k) / kGridSteps},
-                        uint8_t((i == 0 ? 1 : 0) | (j == 0 ? 2 : 0) | (k == 0 ? 4 : 0))};
+            const double l[3] = {double(i) / kGridSteps, double(j) / kGridSteps, double(k) / kGridSteps};
+            const double cube = l[0] * l[1] * l[2];
+            GridPoint& g = t.p[n++];
+            double sum = 0;
+            for (int e = 0; e < 3; ++e) {
+                const double li = l[(e + 1) % 3], lj = l[(e + 2) % 3];
+                const double wa = li * lj * (2.25 + 6.75 * (li - lj)) - 6.75 * cube;
+                const double wb = li * lj * (2.25 - 6.75 * (li - lj)) - 6.75 * cube;
+                g.w[2 * e] = float(wa), g.w[2 * e + 1] = float(wb);
+                sum += (wa < 0 ? -wa : wa) + (wb < 0 ? -wb : wb);
+            }
+            g.w[6] = float(27 * cube);
+            sum += 27 * cube;
+            for (int e = 0; e < 3; ++e) g.l[e] = float(l[e]);
+            g.edges = uint8_t((i == 0 ? 1 : 0) | (j == 0 ? 2 : 0) | (k == 0 ? 4 : 0));
+            if (float(sum) > t.lebesgue) t.lebesgue = float(sum);
         }
     }
+    t.lebesgue *= 1.0001f; // the table's float rounding
     return t;
 }
 constexpr auto kSixths = make_sixths();
@@ -85,7 +110,7 @@ struct Context {
             const cdt::Cdt<uint16_t>& c)
         : pack(p), S(s), type(SurfaceType(s.type)), q(p.floats().data() + s.params), tol2(tol * tol), sc(scratch), cdt(c) {
         // On a doubly curved surface the deviation is modelled from samples (exact only for
-        // quadratic deviations); free-form deviations are estimated along the normal. Aim 5%
+        // cubic deviations); free-form deviations are estimated along the normal. Aim 5%
         // under the tolerance there.
         const bool exact = type == SurfaceType::Plane || type == SurfaceType::Cylinder || type == SurfaceType::Cone;
         target2 = exact ? tol2 : 0.9025f * tol2;
@@ -174,39 +199,36 @@ struct Context {
             return cdt::Point{int32_t(std::lround(w0 * float(G[0].x) + w1 * float(G[1].x) + w2 * float(G[2].x))),
                               int32_t(std::lround(w0 * float(G[0].y) + w1 * float(G[1].y) + w2 * float(G[2].y)))};
         };
-        // The deviation over the triangle, zero at its corners, modelled as a cubic in the
-        // barycentric coordinates l0, l1, l2 (exact for cubic deviations, which bend one way
-        // more than the other along an edge: the peak is then off the middle):
-        //   sum over edges k (between corners i, j):  li lj (A_k + B_k (li - lj))  +  C l0 l1 l2.
-        // Seven samples fix it: each edge at a third and two thirds, and the centroid. Its
-        // largest value over a grid of sixths is the estimate, and where the point goes.
-        float A[3], B[3];
+        // The cubic model of the deviation (above): its seven samples, then its largest value
+        // over the grid of sixths as the estimate, and where the point goes. When every sample
+        // is so small that the model cannot reach the target anywhere, that bound will do.
+        float e[kSamples];
+        float largest = 0;
         for (int k = 0; k < 3; ++k) {
             const int i = (k + 1) % 3, j = (k + 2) % 3;
             float wa[3] = {0, 0, 0}, wb[3] = {0, 0, 0};
             wa[i] = wb[j] = 2.0f / 3, wa[j] = wb[i] = 1.0f / 3;
-            const float ea = error(wa[0], wa[1], wa[2]), eb = error(wb[0], wb[1], wb[2]); // li = 2/3, then 1/3
-            A[k] = 2.25f * (ea + eb);
-            B[k] = 6.75f * (ea - eb);
+            e[2 * k] = error(wa[0], wa[1], wa[2]);
+            e[2 * k + 1] = error(wb[0], wb[1], wb[2]);
         }
-        const float C = 27 * (error(1.0f / 3, 1.0f / 3, 1.0f / 3) - (A[0] + A[1] + A[2]) / 9);
-        auto model = [&](const float l[3]) {
-            float e = C * l[0] * l[1] * l[2];
-            for (int k = 0; k < 3; ++k) {
-                const int i = (k + 1) % 3, j = (k + 2) % 3;
-                e += l[i] * l[j] * (A[k] + B[k] * (l[i] - l[j]));
-            }
-            return e;
-        };
+        e[6] = error(1.0f / 3, 1.0f / 3, 1.0f / 3);
+        for (float x : e) largest = std::max(largest, std::fabs(x));
+        const float bound = kSixths.lebesgue * largest;
+        if (bound * bound <= target2) {
+            m.error2 = bound * bound;
+            return m;
+        }
         // A constrained edge is a chord of a B-rep edge, within the tolerance by edge sampling,
         // and no point inside changes it: its points feed the model, but do not count.
         const uint8_t constrained = uint8_t((T.constrained(0) ? 1 : 0) | (T.constrained(1) ? 2 : 0) | (T.constrained(2) ? 4 : 0));
         float worst = 0;
-        const float* w = kSixths[0].l;
+        const float* w = kSixths.p[0].l;
         for (const GridPoint& g : kSixths) {
             if (g.edges & constrained) continue;
-            const float e = std::fabs(model(g.l));
-            if (e > worst) worst = e, w = g.l;
+            float v = 0;
+            for (int s = 0; s < kSamples; ++s) v += g.w[s] * e[s];
+            v = std::fabs(v);
+            if (v > worst) worst = v, w = g.l;
         }
         m.error2 = worst * worst;
         m.at = grid_at(w[0], w[1], w[2]);
