@@ -3,7 +3,8 @@
 // (0.1% and 1% of the bounding-box diagonal; angular 0.5 rad), measured by the same code:
 //   max deviation  7 points per triangle (its centroid and the thirds of its edges, so chords
 //                  of boundary edges count too) projected onto the face's exact surface (OCCT)
-//   free / non-manifold edges, per part, after welding vertices at exactly equal positions
+//   free / non-manifold edges, per part, after welding vertices at exactly equal positions;
+//                  edges where two faces of the B-rep overlap apart (geom/host/mesh_topology.h)
 //   small-angle share  triangles with an angle under 5 degrees
 // Each distinct part (prototype) is meshed once by both, as a viewer would. A third row per
 // deflection, facet@equal, is facet at the largest tolerance whose measured deviation does not
@@ -12,6 +13,7 @@
 //   facet-bench-mesh MODEL.step... [--csv FILE]
 #include "geom/pack.h"
 #include "geom/tessellate.h"
+#include "mesh_topology.h"
 #include "occt_to_pack.h"
 #include "pack_writer.h"
 #include "step_reader.h"
@@ -49,7 +51,7 @@ struct Tri {
 
 struct Measure {
     double ms = 0, max_deviation = 0, small_angle_share = 0, tolerance = 0;
-    uint64_t triangles = 0, free_edges = 0, nonmanifold_edges = 0, faces_failed = 0;
+    uint64_t triangles = 0, free_edges = 0, nonmanifold_edges = 0, overlap_edges = 0, faces_failed = 0;
 };
 
 // One projector per face, set up once (its search grid is the costly part on free-form faces).
@@ -88,17 +90,15 @@ private:
 
 void measure(const std::vector<Tri>& tris, Projectors& proj, Measure& m) {
     m.triangles = tris.size();
-    std::map<std::tuple<uint32_t, float, float, float>, uint32_t> weld;
-    std::map<std::pair<uint32_t, uint32_t>, int> uses;
+    std::vector<geom::TopoTriangle> soup;
+    soup.reserve(tris.size());
     uint64_t thin = 0;
     for (const Tri& t : tris) {
-        uint32_t id[3];
-        for (int k = 0; k < 3; ++k) id[k] = weld.emplace(std::make_tuple(t.part, t.p[k][0], t.p[k][1], t.p[k][2]), uint32_t(weld.size())).first->second;
-        for (int k = 0; k < 3; ++k) {
-            uint32_t a = id[k], b = id[(k + 1) % 3];
-            if (a > b) std::swap(a, b);
-            if (a != b) ++uses[{a, b}];
-        }
+        geom::TopoTriangle& s = soup.emplace_back();
+        s.group = t.part;
+        s.face = t.face;
+        for (int k = 0; k < 3; ++k)
+            for (int c = 0; c < 3; ++c) s.p[k][c] = t.p[k][c];
         gp_Pnt P[3] = {{t.p[0][0], t.p[0][1], t.p[0][2]}, {t.p[1][0], t.p[1][1], t.p[1][2]}, {t.p[2][0], t.p[2][1], t.p[2][2]}};
         double minang = 180;
         for (int k = 0; k < 3; ++k) {
@@ -115,10 +115,10 @@ void measure(const std::vector<Tri>& tris, Projectors& proj, Measure& m) {
             m.max_deviation = std::max(m.max_deviation, proj.distance(t.face, x));
         }
     }
-    for (auto& [e, n] : uses) {
-        m.free_edges += n == 1;
-        m.nonmanifold_edges += n > 2;
-    }
+    const geom::EdgeTopology topo = geom::edge_topology(soup);
+    m.free_edges = topo.free;
+    m.nonmanifold_edges = topo.nonmanifold;
+    m.overlap_edges = topo.overlap;
     m.small_angle_share = tris.empty() ? 0 : double(thin) / double(tris.size());
 }
 
@@ -244,10 +244,10 @@ int main(int argc, char** argv) {
     FILE* out = csv.empty() ? nullptr : std::fopen(csv.c_str(), "w");
     if (out) {
         std::fprintf(out, "model,impl,deflection,ms,triangles,max_deviation,free_edges,nonmanifold_edges,small_angle_share,"
-                          "tolerance,faces_failed\n");
+                          "tolerance,faces_failed,overlap_edges\n");
     }
-    std::printf("%-22s %-12s %10s %10s %9s %10s %11s %6s %6s %6s %6s\n", "model", "impl", "deflection", "tolerance", "ms",
-                "triangles", "max_dev", "free", "nonman", "thin%", "failed");
+    std::printf("%-22s %-12s %10s %10s %9s %10s %11s %6s %6s %6s %6s %6s\n", "model", "impl", "deflection", "tolerance", "ms",
+                "triangles", "max_dev", "free", "nonman", "overlap", "thin%", "failed");
     for (const std::string& path : models) {
         packer::StepModel model;
         std::string error;
@@ -271,32 +271,42 @@ int main(int argc, char** argv) {
             if (!run_facet(bytes, proj, defl, mf)) continue;
             run_brepmesh(packer.prototypes, defl, mb);
             // facet at equal measured deviation: the largest tolerance (a few secant steps on
-            // tolerance ~ deviation) whose deviation stays within BRepMesh's.
+            // tolerance ~ deviation) whose deviation stays within BRepMesh's, equal within float
+            // noise (a plane meshed by both deviates by ~1e-7 of its size).
+            const double target = std::max(mb.max_deviation, 1e-4 * defl);
             Measure eq = mf;
-            bool met = mf.max_deviation <= mb.max_deviation;
+            bool met = mf.max_deviation <= target;
             double t = defl;
             Measure last = mf;
-            for (int step = 0; step < 5 && mb.max_deviation > 0 && last.max_deviation > 0; ++step) {
-                const double ratio = mb.max_deviation / last.max_deviation;
-                if (last.max_deviation <= mb.max_deviation && ratio < 1.03) break;
-                t *= last.max_deviation <= mb.max_deviation ? ratio : 0.97 * ratio;
-                t = std::max(t, defl / 20); // BRepMesh far under its own deflection: stop there
+            for (int step = 0; step < 5 && last.max_deviation > 0; ++step) {
+                const double ratio = target / last.max_deviation;
+                if (last.max_deviation <= target && ratio < 1.03) break; // close enough below
+                t *= last.max_deviation <= target ? ratio : 0.97 * ratio;
+                // Searched within [deflection / 200, 10 x deflection]: BRepMesh far under its own
+                // deflection (its angular limit) or a planar model (any tolerance gives the same
+                // mesh) stop at the ends.
+                const double clamped = std::clamp(t, defl / 200, 10 * defl);
+                if (clamped != t && (t = clamped) == last.tolerance) break;
                 Measure m;
                 if (!run_facet(bytes, proj, t, m)) break;
-                if (m.max_deviation <= mb.max_deviation && (!met || m.tolerance > eq.tolerance)) eq = m, met = true;
+                // Only a mesh as complete as facet's own at the deflection counts.
+                // (Free edges are not compared: an open shell's boundary has more of them when it
+                // is sampled finer.)
+                const bool complete = m.faces_failed <= mf.faces_failed && m.nonmanifold_edges <= mf.nonmanifold_edges;
+                if (complete && m.max_deviation <= target && (!met || m.tolerance > eq.tolerance)) eq = m, met = true;
                 last = m;
             }
             const std::pair<const char*, const Measure*> rows[] = {{"facet", &mf}, {"brepmesh", &mb}, {met ? "facet@equal" : "facet@equal?", &eq}};
             for (const auto& [impl, m] : rows) {
-                std::printf("%-22s %-12s %10.4f %10.4f %9.1f %10llu %11.4f %6llu %6llu %6.1f %6llu\n", name.c_str(), impl, defl,
-                            m->tolerance, m->ms, (unsigned long long)m->triangles, m->max_deviation,
+                std::printf("%-22s %-12s %10.4f %10.4f %9.1f %10llu %11.4f %6llu %6llu %7llu %6.1f %6llu\n", name.c_str(), impl,
+                            defl, m->tolerance, m->ms, (unsigned long long)m->triangles, m->max_deviation,
                             (unsigned long long)m->free_edges, (unsigned long long)m->nonmanifold_edges,
-                            100 * m->small_angle_share, (unsigned long long)m->faces_failed);
+                            (unsigned long long)m->overlap_edges, 100 * m->small_angle_share, (unsigned long long)m->faces_failed);
                 if (out) {
-                    std::fprintf(out, "%s,%s,%.6f,%.3f,%llu,%.6f,%llu,%llu,%.4f,%.6f,%llu\n", name.c_str(), impl, defl, m->ms,
+                    std::fprintf(out, "%s,%s,%.6f,%.3f,%llu,%.6f,%llu,%llu,%.4f,%.6f,%llu,%llu\n", name.c_str(), impl, defl, m->ms,
                                  (unsigned long long)m->triangles, m->max_deviation, (unsigned long long)m->free_edges,
                                  (unsigned long long)m->nonmanifold_edges, m->small_angle_share, m->tolerance,
-                                 (unsigned long long)m->faces_failed);
+                                 (unsigned long long)m->faces_failed, (unsigned long long)m->overlap_edges);
                 }
             }
             std::fflush(stdout);

@@ -15,7 +15,7 @@ import re
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), 'tests', 'qemu'))
-from viewer_test import analyse, frame_budget, peak_ram  # noqa: E402  (one definition of each measure)
+from viewer_test import analyse, frame_budget, peak_ram, unpack_instructions  # noqa: E402  (one definition of each measure)
 
 RAM_BUDGET = 32 << 20
 PEAK_RAM_GOAL = 8 << 20  # issue 5's goal for the largest test model, display buffers included
@@ -54,6 +54,9 @@ def main():
         'ram_peak_bytes': peak_ram(rep),
         'ram_peak_goal_bytes': PEAK_RAM_GOAL,
         'stack_used_bytes': rep.get('stack_used'),
+        'pack_file_bytes': rep.get('memory', {}).get('pack_file_bytes'),
+        'pack_bytes': rep.get('memory', {}).get('pack_bytes'),
+        'unpack_instructions': unpack_instructions(rep['regions']),
         'faces': int(m.group(1)) if m else None,
         'faces_failed': int(m.group(2)) if m else None,
         'triangles': int(m.group(3)) if m else None,

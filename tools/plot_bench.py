@@ -3,6 +3,7 @@
 
   plot_bench.py cdt out/bench/cdt.csv     ns per vertex by input, facet vs CGAL (log scale)
   plot_bench.py mesh out/bench/mesh.csv   triangles and time per model, facet vs BRepMesh
+  plot_bench.py mesh-table out/bench/mesh.csv   the same as a Markdown table (docs/geom.md)
 """
 import csv
 import os
@@ -92,11 +93,46 @@ unset multiplot
     print(f'plot: {png}')
 
 
+def mesh_table(path):
+    """One row per model at its finer deflection (0.1% of the diagonal)."""
+    rows = list(csv.DictReader(open(path)))
+    by = {}
+    for r in rows:
+        by.setdefault(r['model'], {}).setdefault(float(r['deflection']), {})[r['impl'].rstrip('?')] = r  # facet@equal? = not reached
+    print('| model | BRepMesh triangles | BRepMesh deviation | facet triangles (same deflection) | facet deviation '
+          '| facet at BRepMesh\'s deviation | ratio | facet ms | BRepMesh ms | speed-up '
+          '| free / non-manifold / overlap edges: facet; BRepMesh |')
+    print('|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|')
+    ratios, speed = [], []
+    for model, per in by.items():
+        d = min(per)
+        f, b, e = per[d].get('facet'), per[d].get('brepmesh'), per[d].get('facet@equal')
+        if not (f and b and e):
+            continue
+        bt, et = int(b['triangles']), int(e['triangles'])
+        reached = not e['impl'].endswith('?')
+        ratio = et / bt if bt and reached else None
+        sp = float(b['ms']) / max(float(f['ms']), 1e-3)
+        if ratio is not None:
+            ratios.append(ratio)
+        speed.append(sp)
+        topo = lambda r: f"{r['free_edges']} / {r['nonmanifold_edges']} / {r.get('overlap_edges', '-')}"
+        print(f"| {model} | {bt:,} | {float(b['max_deviation']):.4f} | {int(f['triangles']):,} | {float(f['max_deviation']):.4f} "
+              f"| {str(et) + ' ' if not reached else f'{et:,}'}{'' if reached else '(not reached)'} "
+              f"| {'-' if ratio is None else f'{ratio:.2f}'} | {float(f['ms']):.1f} | {float(b['ms']):.1f} "
+              f"| {sp:.0f}x | {topo(f)}; {topo(b)} |")
+    if ratios:
+        ratios.sort()
+        speed.sort()
+        print(f'\nMedian ratio {ratios[len(ratios) // 2]:.2f} over {len(ratios)} models (range {ratios[0]:.2f}-{ratios[-1]:.2f}); '
+              f'median speed-up {speed[len(speed) // 2]:.0f}x (range {speed[0]:.0f}x-{speed[-1]:.0f}x).')
+
+
 def main():
-    if len(sys.argv) != 3 or sys.argv[1] not in ('cdt', 'mesh'):
+    if len(sys.argv) != 3 or sys.argv[1] not in ('cdt', 'mesh', 'mesh-table'):
         print(__doc__)
         return 2
-    (plot_cdt if sys.argv[1] == 'cdt' else plot_mesh)(sys.argv[2])
+    {'cdt': plot_cdt, 'mesh': plot_mesh, 'mesh-table': mesh_table}[sys.argv[1]](sys.argv[2])
     return 0
 
 

@@ -31,9 +31,8 @@ int facet_main(hal::Board& board) {
     fw::report_board(board);
     viewer::Memory mem = storage.memory(depth[0], depth[1], line);
     static viewer::Viewer v(board, mem, capture, nullptr);
-    const auto* header = reinterpret_cast<const pack::Header*>(board_config::kPackAddress);
-    const uint32_t size = header->total_bytes <= board_config::kPackBytes ? header->total_bytes : 0;
-    if (!ok(v.open(header, size))) {
+    auto* region = reinterpret_cast<uint8_t*>(board_config::kPackAddress);
+    if (!ok(v.open(region, board_config::kPackBytes))) {
         print(con, "viewer: nothing to show (load a pack with run.py --load MODEL.fpk@{})\n", hex(board_config::kPackAddress));
         return 1;
     }
@@ -54,9 +53,11 @@ int facet_main(hal::Board& board) {
         }
     }
     const viewer::Totals& t = v.totals();
-    // What this model needed: the pack as loaded and the viewer's storage at its peak (the
-    // host adds the display buffers, code and stack high-water: the model's peak RAM).
-    print(con, "@memory pack_bytes {} storage_peak_bytes {}\n", size, v.storage_in_use());
+    // What this model needed: the pack (inflated, and the file it came from, both held while
+    // inflating) and the viewer's storage at its peak (the host adds the display buffers, code
+    // and stack high-water: the model's peak RAM).
+    print(con, "@memory pack_bytes {} pack_file_bytes {} storage_peak_bytes {}\n", v.pack_bytes(), v.pack_file_bytes(),
+          v.storage_in_use());
     print(con, "viewer: {} faces ({} failed), {} triangles; bye\n", t.faces, t.failed, t.triangles);
     return 0;
 }

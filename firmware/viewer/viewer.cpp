@@ -1,6 +1,7 @@
 #include "viewer.h"
 
 #include "geom/fmath.h"
+#include "geom/pack_file.h"
 #include "hal/measure.h"
 #include "hal/print.h"
 #include "render/fixed.h"
@@ -76,15 +77,27 @@ const render::Palette& Viewer::palette(uint32_t rgb) {
     return mem_.palettes[i];
 }
 
-Status Viewer::open(const void* data, uint32_t bytes) {
+Status Viewer::open(uint8_t* region, uint32_t capacity) {
     hal::Console& con = board_.console;
     if (!ok(raster_[0].check()) || !ok(raster_[1].check())) {
         print(con, "viewer: the z-buffer is smaller than the display\n");
         return Status::OutOfRange;
     }
+    pack_file_bytes_ = geom::pack_file_bytes(region, capacity);
+    uint32_t bytes = 0;
+    const char* why = "";
+    const bool deflated = geom::pack_file_kind(region, capacity) == geom::PackFileKind::Deflated;
+    if (deflated) hal::measure_begin(con, "unpack");
+    const Status unpacked = geom::unpack_in_place(region, capacity, capacity, bytes, why);
+    if (deflated) hal::measure_end(con, "unpack");
+    if (!ok(unpacked)) {
+        print(con, "viewer: no valid pack: {}\n", why);
+        return unpacked;
+    }
+    pack_bytes_ = bytes;
     geom::PackProblem problem;
-    if (bytes == 0 || !ok(pack_.open(data, bytes, problem))) {
-        print(con, "viewer: no valid pack: {}\n", bytes == 0 ? "nothing loaded" : problem.message);
+    if (!ok(pack_.open(region, bytes, problem))) {
+        print(con, "viewer: no valid pack: {}\n", problem.message);
         return Status::Corrupt;
     }
     if (pack_.faces().size() > mem_.faces.size() || pack_.edges().size() > mem_.edge_drawn.size() ||
@@ -105,8 +118,8 @@ Status Viewer::open(const void* data, uint32_t bytes) {
     default_tolerance_ = geom::default_tolerance(pack_);
     opt_.tolerance = default_tolerance_;
     yaw_ = 0.6f, pitch_ = -0.95f, zoom_ = 1, pan_x_ = pan_y_ = 0;
-    print(con, "@model faces {} edges {} shells {} instances {} bytes {}\n", pack_.faces().size(), pack_.edges().size(),
-          pack_.shells().size(), pack_.instances().size(), bytes);
+    print(con, "@model faces {} edges {} shells {} instances {} bytes {} file_bytes {}\n", pack_.faces().size(),
+          pack_.edges().size(), pack_.shells().size(), pack_.instances().size(), bytes, pack_file_bytes_);
     help();
     if (Status s = restart(); !ok(s)) return s;
     (void)capture_(capture_context_, "wireframe");
@@ -470,8 +483,8 @@ void Viewer::draw_face_edges(int buffer, uint32_t f, const Instance& in, bool on
         const pack::Loop& L = pack_.loops()[l];
         for (uint32_t c = L.first_coedge; c < L.first_coedge + L.coedge_count; ++c) {
             const pack::Coedge& C = pack_.coedges()[c];
-            if (C.seam != uint8_t(pack::Seam::None)) continue; // a periodic surface's seam is no B-rep edge to the eye
-            const uint32_t e = C.edge;
+            if (C.seam() != pack::Seam::None) continue; // a periodic surface's seam is no B-rep edge to the eye
+            const uint32_t e = C.edge();
             if (once) {
                 if (mem_.edge_drawn[e]) continue;
                 mem_.edge_drawn[e] = 1;

@@ -130,9 +130,13 @@ class Viewer {
 public:
     Viewer(hal::Board& board, Memory& memory, CaptureFn capture, void* capture_context);
 
-    // Validates the pack (a clear message on the console if it is bad), samples its edges and
-    // shows the wireframe. Not Ok: nothing to show.
-    Status open(const void* data, uint32_t bytes);
+    // Takes the pack file loaded at the start of region (capacity bytes, 4-byte aligned): a
+    // deflated one is inflated there first (geom/pack_file.h). Then validates the pack (a clear
+    // message on the console if it is bad), samples its edges and shows the wireframe. Not Ok:
+    // nothing to show.
+    Status open(uint8_t* region, uint32_t capacity);
+    uint32_t pack_bytes() const { return pack_bytes_; }           // the pack, inflated
+    uint32_t pack_file_bytes() const { return pack_file_bytes_; } // the file as loaded
 
     // One unit of work: the next face (tessellated and drawn). False when there is none.
     bool step();
@@ -177,6 +181,7 @@ private:
     uint32_t applied_[2] = {0, 0}; // faces of done_order already drawn into each buffer
 
     geom::Pack pack_;
+    uint32_t pack_bytes_ = 0, pack_file_bytes_ = 0;
     geom::TessOptions opt_;
     float default_tolerance_ = 0;
     float unit_ = 1;               // mm per quantized unit (diag / 2^20)

@@ -9,9 +9,11 @@ namespace facet::geom {
 using namespace facet::pack;
 
 uint32_t PackWriter::add_floats(const std::vector<float>& values) {
-    const uint32_t first = uint32_t(floats_.size());
-    floats_.insert(floats_.end(), values.begin(), values.end());
-    return first;
+    std::string key(values.size() * sizeof(float), '\0');
+    if (!values.empty()) std::memcpy(key.data(), values.data(), key.size());
+    const auto [it, added] = blocks_.try_emplace(std::move(key), uint32_t(floats_.size()));
+    if (added) floats_.insert(floats_.end(), values.begin(), values.end());
+    return it->second;
 }
 
 uint32_t PackWriter::add_surface(SurfaceType type, const std::vector<float>& params, uint32_t ref) {

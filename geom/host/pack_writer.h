@@ -4,6 +4,7 @@
 #include "geom/pack_format.h"
 
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -11,7 +12,9 @@ namespace facet::geom {
 
 class PackWriter {
 public:
-    uint32_t add_floats(const std::vector<float>& values); // returns the first index
+    // A block of parameters; returns its first index. A block equal bit for bit to one added
+    // before is not stored again (the halves of a hole share their cylinder, say).
+    uint32_t add_floats(const std::vector<float>& values);
     uint32_t add_surface(pack::SurfaceType type, const std::vector<float>& params,
                          uint32_t ref = pack::kNoIndex);
     uint32_t add_curve(pack::CurveType type, uint8_t dim, const std::vector<float>& params);
@@ -25,6 +28,7 @@ public:
     uint32_t add_colour(pack::Colour c);
 
     uint32_t coedge_count() const { return uint32_t(coedges_.size()); }
+    uint32_t curve2_count() const { return uint32_t(curves2_.size()); }
     uint32_t loop_count() const { return uint32_t(loops_.size()); }
     uint32_t face_count() const { return uint32_t(faces_.size()); }
 
@@ -36,6 +40,7 @@ public:
 
 private:
     std::vector<float> floats_;
+    std::map<std::string, uint32_t> blocks_; // a block's bytes -> its first index
     std::vector<pack::Surface> surfaces_;
     std::vector<pack::Curve> curves3_, curves2_;
     std::vector<pack::Vertex> vertices_;

@@ -78,18 +78,20 @@ Status map_loops(const Pack& pack, uint32_t fi, const EdgeSamples& edges, FaceSc
         const uint32_t loop_start = np;
         for (uint32_t c = L.first_coedge; c < L.first_coedge + L.coedge_count; ++c) {
             const Coedge& CE = pack.coedges()[c];
-            const Edge& E = pack.edges()[CE.edge];
-            if (E.curve == kNoIndex && CE.pcurve == kNoIndex) continue; // a pole: bridged below
-            const uint32_t first = edges.first[CE.edge], n = edges.count[CE.edge];
+            const uint32_t ei = CE.edge(), pcurve = pack.pcurve_of(F, c);
+            const Seam seam = CE.seam();
+            const Edge& E = pack.edges()[ei];
+            if (E.curve == kNoIndex && pcurve == kNoIndex) continue; // a pole: bridged below
+            const uint32_t first = edges.first[ei], n = edges.count[ei];
             for (uint32_t k = 0; k < n; ++k) {
-                const uint32_t s = first + (CE.reversed ? n - 1 - k : k);
+                const uint32_t s = first + (CE.reversed() ? n - 1 - k : k);
                 if (np >= cap) {
                     why = "more edge samples than the face scratch holds";
                     return Status::Full;
                 }
                 Vec2 uv;
-                if (CE.pcurve != kNoIndex) {
-                    uv = eval_curve2(pack, pack.curves2()[CE.pcurve], edges.t[s]).p;
+                if (pcurve != kNoIndex) {
+                    uv = eval_curve2(pack, pack.curves2()[pcurve], edges.t[s]).p;
                 } else {
                     Vec2 cand[2];
                     const int count = invert_candidates(pack, S, edges.p[s], F.uv_min, F.uv_max, cand);
@@ -104,7 +106,7 @@ Status map_loops(const Pack& pack, uint32_t fi, const EdgeSamples& edges, FaceSc
                         invert_elementary(pack, S, edges.p[s], F.uv_min, F.uv_max, uv); // inside the bounds
                     }
                 }
-                switch (Seam(CE.seam)) {
+                switch (seam) {
                 case Seam::ULow: uv.x = F.uv_min[0]; break;
                 case Seam::UHigh: uv.x = F.uv_max[0]; break;
                 case Seam::VLow: uv.y = F.uv_min[1]; break;
@@ -112,9 +114,8 @@ Status map_loops(const Pack& pack, uint32_t fi, const EdgeSamples& edges, FaceSc
                 case Seam::None: break;
                 }
                 // Which parameters are pinned (by a seam) or exact (from a pcurve) for unwrapping.
-                const uint8_t pinned = uint8_t((CE.pcurve != kNoIndex ? 3 : 0) |
-                                               (CE.seam == uint8_t(Seam::ULow) || CE.seam == uint8_t(Seam::UHigh) ? 1 : 0) |
-                                               (CE.seam == uint8_t(Seam::VLow) || CE.seam == uint8_t(Seam::VHigh) ? 2 : 0));
+                const uint8_t pinned = uint8_t((pcurve != kNoIndex ? 3 : 0) | (seam == Seam::ULow || seam == Seam::UHigh ? 1 : 0) |
+                                               (seam == Seam::VLow || seam == Seam::VHigh ? 2 : 0));
                 // The vertex where two coedges meet is one point: two pcurves ending a hair
                 // apart there would give the loop a spike, or make it cross itself.
                 if (k == 0 && np > loop_start && same_vertex(sc, np - 1, edges.p[s], uv, pinned)) {

@@ -199,16 +199,15 @@ Status Pack::check_records(PackProblem& p) {
     constexpr uint32_t E = uint32_t(SectionId::Edges);
     for (uint32_t i = 0; i < edges_.size(); ++i) {
         const Edge& e = edges_[i];
-        if (e.curve != kNoIndex && e.curve >= curves3_.size()) return fail(p, "curve index out of range", E, i);
+        if (e.curve != kNoIndex && e.curve != kStraight && e.curve >= curves3_.size()) return fail(p, "curve index out of range", E, i);
         if (e.v0 >= vertices_.size() || e.v1 >= vertices_.size()) return fail(p, "vertex index out of range", E, i);
         if (!finite(e.t0) || !finite(e.t1) || !finite(e.max_sag) || e.max_sag < 0) return fail(p, "bad parameter range or sag limit", E, i);
     }
     constexpr uint32_t C = uint32_t(SectionId::Coedges);
     for (uint32_t i = 0; i < coedges_.size(); ++i) {
         const Coedge& c = coedges_[i];
-        if (c.edge >= edges_.size()) return fail(p, "edge index out of range", C, i);
-        if (c.pcurve != kNoIndex && c.pcurve >= curves2_.size()) return fail(p, "pcurve index out of range", C, i);
-        if (c.reversed > 1 || c.seam > uint8_t(Seam::VHigh)) return fail(p, "bad flags", C, i);
+        if (c.edge() >= edges_.size()) return fail(p, "edge index out of range", C, i);
+        if (c.seam() > Seam::VHigh) return fail(p, "bad seam side", C, i);
     }
     constexpr uint32_t L = uint32_t(SectionId::Loops);
     for (uint32_t i = 0; i < loops_.size(); ++i) {
@@ -224,12 +223,18 @@ Status Pack::check_records(PackProblem& p) {
         if (f.loop_count == 0 || uint64_t(f.first_loop) + f.loop_count > loops_.size()) return fail(p, "loop range out of range or empty", FA, i);
         if (f.colour != kNoIndex && f.colour >= colours_.size()) return fail(p, "colour index out of range", FA, i);
         if (f.reversed > 1) return fail(p, "bad orientation flag", FA, i);
-        // Only elementary surfaces may leave out pcurves (they are inverted analytically).
-        const bool elementary = surfaces_[f.surface].type <= uint8_t(SurfaceType::Torus);
-        for (uint32_t l = f.first_loop; l < f.first_loop + f.loop_count; ++l) {
-            const Loop& loop = loops_[l];
-            for (uint32_t c = loop.first_coedge; c < loop.first_coedge + loop.coedge_count; ++c) {
-                if (coedges_[c].pcurve == kNoIndex && !elementary) return fail(p, "a coedge on a free-form surface has no pcurve", FA, i);
+        // Pcurves follow the face's coedges, so its loops' coedges must follow each other; only
+        // elementary surfaces may leave pcurves out (they are inverted analytically).
+        if (f.first_pcurve == kNoIndex) {
+            if (surfaces_[f.surface].type > uint8_t(SurfaceType::Torus)) return fail(p, "a free-form face has no pcurves", FA, i);
+        } else {
+            uint64_t next = loops_[f.first_loop].first_coedge;
+            for (uint32_t l = f.first_loop; l < f.first_loop + f.loop_count; ++l) {
+                if (loops_[l].first_coedge != next) return fail(p, "the face's coedges are not consecutive", FA, i);
+                next += loops_[l].coedge_count;
+            }
+            if (uint64_t(f.first_pcurve) + (next - loops_[f.first_loop].first_coedge) > curves2_.size()) {
+                return fail(p, "pcurve range out of range", FA, i);
             }
         }
         for (int k = 0; k < 2; ++k) {

@@ -185,6 +185,8 @@ Status sample_edges(const Pack& pack, const TessOptions& opt, EdgeSamples& out) 
         bool room;
         if (E.curve == kNoIndex) { // degenerate: a single point
             room = pool.emit(E.t0, a) && pool.emit(E.t1, a);
+        } else if (E.curve == kStraight) {
+            room = pool.emit(E.t0, a) && pool.emit(E.t1, b);
         } else {
             const Curve& C = pack.curves3()[E.curve];
             switch (CurveType(C.type)) {

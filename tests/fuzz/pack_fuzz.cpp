@@ -1,24 +1,41 @@
-// libFuzzer target for the pack reader: any bytes in; open() must return a status and, when
-// it says Ok, every record it exposes must be readable within the buffer.
+// libFuzzer target for the pack file reader: any bytes in, plain or deflated. unpack_in_place()
+// and open() must return a status and, when they say Ok, every record the pack exposes must be
+// readable within the buffer.
 #include "geom/pack.h"
+#include "geom/pack_file.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <vector>
 
+using namespace facet;
+
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-    std::vector<uint32_t> aligned((size + 3) / 4 + 1);
-    std::memcpy(aligned.data(), data, size);
-    facet::geom::Pack pack;
-    facet::geom::PackProblem problem;
-    // Half the time fix the CRC so the fuzzer gets past it to the record checks.
-    if (size >= sizeof(facet::pack::Header) && (size & 1)) {
-        auto* h = reinterpret_cast<facet::pack::Header*>(aligned.data());
-        h->total_bytes = uint32_t(size);
-        const auto* bytes = reinterpret_cast<const uint8_t*>(aligned.data());
-        h->crc32 = facet::pack::crc32(bytes + sizeof(facet::pack::Header), uint32_t(size - sizeof(facet::pack::Header)));
+    // The region the device would load the file into: the file, then room for what it inflates
+    // to (capped, so a head claiming a huge pack is refused as too big, as on the device).
+    uint32_t room = 0;
+    if (geom::pack_file_kind(data, uint32_t(size)) == geom::PackFileKind::Deflated && size >= sizeof(pack::DeflatedHead)) {
+        pack::DeflatedHead head;
+        std::memcpy(&head, data, sizeof head);
+        room = std::min<uint32_t>(head.pack_bytes, 1u << 20);
     }
-    if (pack.open(aligned.data(), uint32_t(size), problem) != facet::Status::Ok) return 0;
+    const uint32_t capacity = uint32_t(size) + room;
+    std::vector<uint32_t> region(capacity / 4 + 1);
+    std::memcpy(region.data(), data, size);
+    auto* bytes = reinterpret_cast<uint8_t*>(region.data());
+    // Half the time fix a plain pack's size and CRC so the fuzzer gets past them to the records.
+    if (room == 0 && size >= sizeof(pack::Header) && (size & 1)) {
+        auto* h = reinterpret_cast<pack::Header*>(bytes);
+        h->total_bytes = uint32_t(size);
+        h->crc32 = pack::crc32(bytes + sizeof(pack::Header), uint32_t(size - sizeof(pack::Header)));
+    }
+    uint32_t pack_bytes = 0;
+    const char* why = "";
+    if (geom::unpack_in_place(bytes, capacity, uint32_t(size), pack_bytes, why) != Status::Ok) return 0;
+    geom::Pack pack;
+    geom::PackProblem problem;
+    if (pack.open(bytes, pack_bytes, problem) != Status::Ok) return 0;
     uint64_t sum = 0;
     for (const auto& f : pack.faces()) {
         const auto& s = pack.surfaces()[f.surface];
@@ -26,8 +43,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         for (uint32_t l = f.first_loop; l < f.first_loop + f.loop_count; ++l) {
             const auto& loop = pack.loops()[l];
             for (uint32_t c = loop.first_coedge; c < loop.first_coedge + loop.coedge_count; ++c) {
-                const auto& e = pack.edges()[pack.coedges()[c].edge];
+                const auto& e = pack.edges()[pack.coedges()[c].edge()];
                 sum += pack.vertices()[e.v0].p[0] != 0;
+                const uint32_t pc = pack.pcurve_of(f, c);
+                if (pc != pack::kNoIndex) sum += pack.curves2()[pc].count;
             }
         }
     }

@@ -4,7 +4,7 @@
 For each model: facet-pack must either exit 0 and write a pack that the device's reader
 (facet-pack --check) validates, or exit 1 with a 'facet-pack: error: ...' line. A crash, a
 signal, a timeout, or a pack the reader refuses fails the test. Prints one line per model
-(faces by surface type, pack size as % of the STEP file) and the counts, and writes them to
+(faces by surface type, pack file size as % of the STEP file) and the counts, and writes them to
 WORK/pack-models.json.
 """
 import argparse
@@ -41,9 +41,10 @@ def main():
                 bad.append(f'{f}: packed, but the reader refuses it: {c.stderr.strip()}')
                 continue
             m = re.search(r'pack (\d+) bytes = ([\d.]+)% of the STEP', r.stdout)
+            inflated = re.search(r'(\d+) bytes inflated', r.stdout)
             summary = r.stdout.strip().splitlines()[0].split(': ', 1)[1]
             rows.append({'model': f, 'status': 'packed', 'bytes': int(m.group(1)), 'percent_of_step': float(m.group(2)),
-                         'summary': summary})
+                         'inflated_bytes': int(inflated.group(1)) if inflated else int(m.group(1)), 'summary': summary})
             print(f'packed  {f}: {summary}; {m.group(2)}% of the STEP file')
         elif r.returncode == 1 and 'facet-pack: error:' in r.stderr:
             reason = r.stderr.strip().splitlines()[-1]

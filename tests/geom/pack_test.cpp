@@ -15,7 +15,8 @@ using namespace facet::pack;
 
 namespace {
 
-// A 10 mm cube: 6 planes, 12 line edges, 8 vertices, 24 coedges with line pcurves.
+// A 10 mm cube: 6 planes, 12 edges (the first six straight, the others on line curves), 8
+// vertices, 24 coedges; the first three faces carry line pcurves (optional on planes).
 std::vector<uint8_t> cube_pack() {
     PackWriter w;
     const float s = 10;
@@ -25,12 +26,10 @@ std::vector<uint8_t> cube_pack() {
     uint32_t e[12];
     for (int i = 0; i < 12; ++i) {
         const uint32_t a = v[edges[i][0]], b = v[edges[i][1]];
-        const float* pa = nullptr;
-        (void)pa;
         const int ia = edges[i][0], ib = edges[i][1];
         const float o[3] = {s * (ia & 1), s * ((ia >> 1) & 1), s * ((ia >> 2) & 1)};
         const float d[3] = {s * ((ib & 1) - (ia & 1)), s * (((ib >> 1) & 1) - ((ia >> 1) & 1)), s * (((ib >> 2) & 1) - ((ia >> 2) & 1))};
-        const uint32_t c = w.add_curve(CurveType::Line, 3, {o[0], o[1], o[2], d[0] / s, d[1] / s, d[2] / s});
+        const uint32_t c = i < 6 ? kStraight : w.add_curve(CurveType::Line, 3, {o[0], o[1], o[2], d[0] / s, d[1] / s, d[2] / s});
         e[i] = w.add_edge({c, 0, s, a, b, 0});
     }
     // One face per side; pcurves are simple lines (the test only needs valid structure).
@@ -38,13 +37,13 @@ std::vector<uint8_t> cube_pack() {
     const uint32_t first_face = w.face_count();
     for (int f = 0; f < 6; ++f) {
         const uint32_t surf = w.add_surface(SurfaceType::Plane, {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1});
-        const uint32_t first = w.coedge_count();
+        const uint32_t first = w.coedge_count(), first_pcurve = f < 3 ? w.curve2_count() : kNoIndex;
         for (int k = 0; k < 4; ++k) {
-            const uint32_t pc = w.add_curve(CurveType::Line, 2, {0, 0, 1, 0});
-            w.add_coedge({e[(f * 2 + k) % 12], pc, uint8_t(k & 1), 0, 0});
+            if (f < 3) w.add_curve(CurveType::Line, 2, {0, 0, 1, 0});
+            w.add_coedge(Coedge::make(e[(f * 2 + k) % 12], k & 1, Seam::None));
         }
         const uint32_t loop = w.add_loop({first, 4});
-        w.add_face({surf, loop, 1, colour, 0, {0, 0, 0}, {0, 0}, {s, s}});
+        w.add_face({surf, loop, 1, first_pcurve, colour, 0, {0, 0, 0}, {0, 0}, {s, s}});
     }
     const uint32_t shell = w.add_shell({first_face, 6, kNoIndex, 1});
     w.add_instance({shell, {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0}});
@@ -82,6 +81,12 @@ TEST(Pack, ValidCubeReadsInPlace) {
     EXPECT_EQ(p.faces().size(), 6u);
     EXPECT_EQ(p.edges().size(), 12u);
     EXPECT_EQ(p.coedges().size(), 24u);
+    EXPECT_EQ(p.edges()[0].curve, kStraight);
+    EXPECT_EQ(p.coedges()[5].edge(), 3u);
+    EXPECT_TRUE(p.coedges()[5].reversed());
+    EXPECT_EQ(p.pcurve_of(p.faces()[2], 10), 10u) << "pcurves follow the face's coedges";
+    EXPECT_EQ(p.pcurve_of(p.faces()[4], 17), kNoIndex);
+    EXPECT_EQ(p.surfaces()[5].params, p.surfaces()[0].params) << "equal parameter blocks are stored once";
     EXPECT_EQ(p.header().bbox_max[2], 10.0f);
     EXPECT_EQ(reinterpret_cast<const uint8_t*>(p.faces().data()), b.bytes() + b.section(SectionId::Faces).offset) << "zero-copy";
 }
@@ -178,8 +183,10 @@ TEST(Pack, BadIndicesNameTheRecord) {
         {"face colour", [](Buf& b) { b.record<pack::Face>(SectionId::Faces, 0).colour = 7; }, SectionId::Faces, 0},
         {"edge vertex", [](Buf& b) { b.record<Edge>(SectionId::Edges, 11).v1 = 8; }, SectionId::Edges, 11},
         {"edge curve", [](Buf& b) { b.record<Edge>(SectionId::Edges, 2).curve = 12; }, SectionId::Edges, 2},
-        {"coedge edge", [](Buf& b) { b.record<Coedge>(SectionId::Coedges, 23).edge = 12; }, SectionId::Coedges, 23},
-        {"coedge pcurve", [](Buf& b) { b.record<Coedge>(SectionId::Coedges, 4).pcurve = 1000; }, SectionId::Coedges, 4},
+        {"edge curve past kStraight", [](Buf& b) { b.record<Edge>(SectionId::Edges, 4).curve = kStraight - 1; }, SectionId::Edges, 4},
+        {"coedge edge", [](Buf& b) { b.record<Coedge>(SectionId::Coedges, 23) = Coedge::make(12, false, Seam::None); }, SectionId::Coedges, 23},
+        {"coedge seam", [](Buf& b) { b.record<Coedge>(SectionId::Coedges, 6) = Coedge::make(1, false, Seam(7)); }, SectionId::Coedges, 6},
+        {"face pcurves", [](Buf& b) { b.record<pack::Face>(SectionId::Faces, 1).first_pcurve = 9; }, SectionId::Faces, 1},
         {"loop range", [](Buf& b) { b.record<Loop>(SectionId::Loops, 1).coedge_count = 40; }, SectionId::Loops, 1},
         {"empty loop", [](Buf& b) { b.record<Loop>(SectionId::Loops, 2).coedge_count = 0; }, SectionId::Loops, 2},
         {"shell faces", [](Buf& b) { b.record<Shell>(SectionId::Shells, 0).face_count = 7; }, SectionId::Shells, 0},

@@ -45,14 +45,23 @@ def session(board):
 
 def peak_ram(rep):
     """RAM the model needed at its peak: code, data, display and depth buffers, MMU table as
-    reserved; the stack's high-water; the pack as loaded; the viewer's storage at its peak
-    (the rest of the arena and pack regions is capacity for larger models). None without the
+    reserved; the stack's high-water; the pack, with the viewer's storage at its peak or (while
+    a deflated pack is inflated, before any storage is used) with the file it came from (the
+    rest of the arena and pack regions is capacity for larger models). None without the
     firmware's @memory line."""
     mem, ram = rep.get('memory'), rep.get('ram', {})
     if not mem or 'storage_peak_bytes' not in mem or rep.get('stack_used') is None:
         return None
     fixed = sum(v for k, v in ram.items() if k not in ('arena', 'pack', 'stack', 'total'))
-    return fixed + rep['stack_used'] + mem.get('pack_bytes', 0) + mem['storage_peak_bytes']
+    pack = mem.get('pack_bytes', 0)
+    file = mem.get('pack_file_bytes', 0) if mem.get('pack_file_bytes', 0) != pack else 0
+    return fixed + rep['stack_used'] + pack + max(mem['storage_peak_bytes'], file)
+
+
+def unpack_instructions(regions):
+    """Instructions to inflate a deflated pack at load (the 'unpack' region), or None."""
+    counts = [r['instructions'] for r in regions if r['name'] == 'unpack']
+    return counts[0] if counts else None
 
 
 def frame_budget(triangles):
@@ -180,7 +189,9 @@ def main():
             problems.append('no @memory report')
         row = {'model': name, 'faces': int(m.group(1)), 'triangles': int(m.group(3)), 'mesh_bytes': int(m.group(5)),
                'peak_ram': peak,
-               'arena_peak': int(m.group(6)), 'pack_bytes': os.path.getsize(fpk), 'tess': t0,
+               'arena_peak': int(m.group(6)), 'file_bytes': os.path.getsize(fpk),
+               'pack_bytes': rep.get('memory', {}).get('pack_bytes', 0), 'unpack': unpack_instructions(rep['regions']),
+               'tess': t0,
                'frame': max(f['instructions'] for f in frames if f['pass'] == 0 and f['triangles'] == int(m.group(3))),
                'big_frame': big, 'tess_lod': tess.get(max(tess)), 'notes': budget_notes}
         rows.append(row)
@@ -199,12 +210,15 @@ def main():
 def write_markdown(path, board, rows, ram):
     ms = lambda n: f'{n / 600e3:.1f}'
     lines = [f'### {board}', '',
-             '| model | faces | triangles | pack B | mesh B | arena peak B | peak RAM MiB | tessellation (M instr / ms) '
-             '| frame (M instr / ms) | finest view: triangles, frame (M / ms) | budgets |',
-             '|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|']
+             '| model | faces | triangles | pack file / inflated B | inflating (M instr) | mesh B | arena peak B '
+             '| peak RAM MiB | tessellation (M instr / ms) | frame (M instr / ms) | finest view: triangles, frame (M / ms) '
+             '| budgets |',
+             '|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|']
     for r in rows:
         b = r['big_frame']
-        lines.append(f'| {r["model"]} | {r["faces"]} | {r["triangles"]:,} | {r["pack_bytes"]:,} | {r["mesh_bytes"]:,} '
+        inflating = f'{r["unpack"] / 1e6:.1f}' if r['unpack'] else '-'
+        lines.append(f'| {r["model"]} | {r["faces"]} | {r["triangles"]:,} | {r["file_bytes"]:,} / {r["pack_bytes"]:,} '
+                     f'| {inflating} | {r["mesh_bytes"]:,} '
                      f'| {r["arena_peak"]:,} | {r["peak_ram"] / (1 << 20):.2f} | {r["tess"] / 1e6:.1f} / {ms(r["tess"])} '
                      f'| {r["frame"] / 1e6:.1f} / {ms(r["frame"])} '
                      f'| {b["triangles"]:,}: {b["instructions"] / 1e6:.1f} / {ms(b["instructions"])} '

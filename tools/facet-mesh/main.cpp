@@ -12,6 +12,8 @@
 #include "geom/deviation.h"
 #include "geom/pack.h"
 #include "geom/tessellate.h"
+#include "mesh_topology.h"
+#include "pack_io.h"
 
 #include <algorithm>
 #include <array>
@@ -108,14 +110,12 @@ int main(int argc, char** argv) {
         else return die(usage);
     }
     if (!in) return die(usage);
-    std::ifstream f(in, std::ios::binary);
-    if (!f) return die(std::string("cannot open ") + in);
-    std::vector<char> bytes((std::istreambuf_iterator<char>(f)), {});
-    std::vector<uint32_t> aligned((bytes.size() + 3) / 4);
-    if (!bytes.empty()) std::memcpy(aligned.data(), bytes.data(), bytes.size());
+    LoadedPack file;
+    std::string error;
+    if (!load_pack_file(in, file, error)) return die(std::string(in) + ": " + error);
     Pack pack;
     PackProblem problem;
-    if (pack.open(aligned.data(), uint32_t(bytes.size()), problem) != Status::Ok) return die(std::string(in) + ": " + problem.message);
+    if (pack.open(file.data(), file.bytes, problem) != Status::Ok) return die(std::string(in) + ": " + problem.message);
 
     TessOptions opt;
     opt.tolerance = tolerance > 0 ? tolerance : default_tolerance(pack);
@@ -208,48 +208,25 @@ int main(int argc, char** argv) {
             }
             if (std::min({ang[0], ang[1], ang[2]}) < 5.0f * 3.14159265f / 180) ++thin;
         }
-        std::map<std::tuple<float, float, float>, uint32_t> weld;
-        std::vector<uint32_t> id(m.v.size());
-        for (size_t i = 0; i < m.v.size(); ++i) id[i] = weld.emplace(std::make_tuple(m.v[i].p.x, m.v[i].p.y, m.v[i].p.z), uint32_t(weld.size())).first->second;
-        std::map<std::pair<uint32_t, uint32_t>, std::vector<uint32_t>> uses; // welded edge -> triangles
-        std::vector<uint32_t> first_of(weld.size());
-        for (size_t i = 0; i < m.v.size(); ++i) first_of[id[i]] = uint32_t(i);
-        for (size_t t = 0; t + 2 < m.tri.size(); t += 3) {
+        std::vector<TopoTriangle> soup(nt);
+        for (uint32_t t = 0; t < nt; ++t) {
+            soup[t].group = 0;
+            soup[t].face = m.face[t];
             for (int k = 0; k < 3; ++k) {
-                uint32_t a = id[m.tri[t + k]], b = id[m.tri[t + (k + 1) % 3]];
-                if (a == b) continue;
-                if (a > b) std::swap(a, b);
-                uses[{a, b}].push_back(uint32_t(t / 3));
+                const Vec3 q = m.v[m.tri[3 * t + k]].p;
+                soup[t].p[k][0] = q.x, soup[t].p[k][1] = q.y, soup[t].p[k][2] = q.z;
             }
         }
-        // A triangle with the same three points in two faces: the B-rep's faces overlap there
-        // (tail_section_asm: an extrusion lying on a cylinder). The edges of such a triangle
-        // that have more than two triangles are reported apart from other non-manifold edges.
-        std::map<std::array<uint32_t, 3>, std::vector<uint32_t>> by_corners; // sorted welded ids -> faces
-        auto corners = [&](uint32_t t) {
-            std::array<uint32_t, 3> c = {id[m.tri[3 * t]], id[m.tri[3 * t + 1]], id[m.tri[3 * t + 2]]};
-            std::sort(c.begin(), c.end());
-            return c;
-        };
-        for (uint32_t t = 0; t < nt; ++t) by_corners[corners(t)].push_back(m.face[t]);
-        auto doubled = [&](uint32_t t) {
-            const std::vector<uint32_t>& f = by_corners[corners(t)];
-            return f.size() > 1 && std::find_if(f.begin(), f.end(), [&](uint32_t x) { return x != f[0]; }) != f.end();
-        };
-        uint32_t fr = 0, nm = 0, listed = 0;
-        for (auto& [e, ts] : uses) {
-            fr += ts.size() == 1;
-            if (ts.size() > 2) {
-                if (std::any_of(ts.begin(), ts.end(), doubled)) ++overlap;
-                else ++nm;
-            }
-            if (per_face && ts.size() != 2 && listed++ < 40) {
-                const Vec3 a = m.v[first_of[e.first]].p, b = m.v[first_of[e.second]].p;
-                std::printf("  %s edge (%g %g %g)-(%g %g %g), faces", ts.size() == 1 ? "free" : "non-manifold", a.x, a.y, a.z, b.x, b.y, b.z);
-                for (uint32_t t : ts) std::printf(" %u", m.face[t]);
-                std::printf("\n");
-            }
-        }
+        uint32_t listed = 0;
+        const EdgeTopology topo = edge_topology(soup, [&](const BadEdge& e) {
+            if (!per_face || listed++ >= 40) return;
+            std::printf("  %s edge (%g %g %g)-(%g %g %g), faces", e.triangles.size() == 1 ? "free" : "non-manifold", e.a[0], e.a[1],
+                        e.a[2], e.b[0], e.b[1], e.b[2]);
+            for (uint32_t t : e.triangles) std::printf(" %u", m.face[t]);
+            std::printf("\n");
+        });
+        const uint32_t fr = uint32_t(topo.free), nm = uint32_t(topo.nonmanifold);
+        overlap += uint32_t(topo.overlap);
         free_edges += fr, nonmanifold += nm;
         if (pack.shells()[s].closed) {
             ++closed;

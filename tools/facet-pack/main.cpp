@@ -1,7 +1,7 @@
 // facet-pack: STEP (AP203/AP214/AP242) -> facet pack, with Open CASCADE.
 //
-//   facet-pack model.step -o model.fpk      pack, print a summary
-//   facet-pack --check model.fpk            validate a pack with the device's reader
+//   facet-pack model.step -o model.fpk [--plain]   pack (deflated unless --plain), print a summary
+//   facet-pack --check model.fpk                   validate a pack file with the device's code
 //
 // Reads with the XCAF reader (units converted to mm, assemblies, colours from styled items),
 // heals each solid and shell with ShapeFix, and writes every face's exact surface, its loops
@@ -9,6 +9,7 @@
 // message on unreadable or empty input.
 #include "geom/pack.h"
 #include "occt_to_pack.h"
+#include "pack_io.h"
 #include "pack_writer.h"
 #include "step_reader.h"
 
@@ -43,7 +44,7 @@ using namespace facet;
 namespace {
 
 int usage() {
-    std::fprintf(stderr, "usage: facet-pack MODEL.step -o MODEL.fpk [--quiet]\n       facet-pack --check MODEL.fpk\n");
+    std::fprintf(stderr, "usage: facet-pack MODEL.step -o MODEL.fpk [--plain] [--quiet]\n       facet-pack --check MODEL.fpk\n");
     return 2;
 }
 
@@ -53,18 +54,16 @@ int die(const std::string& msg) {
 }
 
 int check(const char* path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return die(std::string("cannot open ") + path);
-    std::vector<char> bytes((std::istreambuf_iterator<char>(in)), {});
-    std::vector<uint32_t> aligned((bytes.size() + 3) / 4);
-    std::memcpy(aligned.data(), bytes.data(), bytes.size());
+    geom::LoadedPack file;
+    std::string error;
+    if (!geom::load_pack_file(path, file, error)) return die(std::string(path) + ": " + error);
     geom::Pack pack;
     geom::PackProblem problem;
-    if (pack.open(aligned.data(), uint32_t(bytes.size()), problem) != Status::Ok) {
-        return die(std::string(path) + ": " + problem.message);
-    }
-    std::printf("%s: valid pack, %zu faces, %zu edges, %zu shells, %zu instances, %zu bytes\n", path,
-                pack.faces().size(), pack.edges().size(), pack.shells().size(), pack.instances().size(), bytes.size());
+    if (pack.open(file.data(), file.bytes, problem) != Status::Ok) return die(std::string(path) + ": " + problem.message);
+    std::printf("%s: valid pack, %zu faces, %zu edges, %zu shells, %zu instances, %u bytes", path, pack.faces().size(),
+                pack.edges().size(), pack.shells().size(), pack.instances().size(), file.bytes);
+    if (file.deflated) std::printf(" (deflated file: %u bytes)", file.file_bytes);
+    std::printf("\n");
     return 0;
 }
 
@@ -72,11 +71,12 @@ int check(const char* path) {
 
 int main(int argc, char** argv) {
     const char *in = nullptr, *out = nullptr;
-    bool quiet = false;
+    bool quiet = false, plain = false;
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--check") && i + 1 < argc) return check(argv[i + 1]);
         if (!std::strcmp(argv[i], "-o") && i + 1 < argc) out = argv[++i];
         else if (!std::strcmp(argv[i], "--quiet")) quiet = true;
+        else if (!std::strcmp(argv[i], "--plain")) plain = true;
         else if (argv[i][0] == '-') return usage();
         else in = argv[i];
     }
@@ -106,7 +106,9 @@ int main(int argc, char** argv) {
         return die(std::string(in) + ": no face could be packed" +
                    (stats.first_problem.empty() ? "" : " (" + stats.first_problem + ")"));
     }
-    const std::vector<uint8_t> bytes = writer.finish();
+    const std::vector<uint8_t> pack = writer.finish();
+    const std::vector<uint8_t> bytes = plain ? pack : geom::deflate_pack(pack);
+    if (bytes.empty()) return die("zlib could not deflate the pack");
     std::ofstream o(out, std::ios::binary);
     if (!o.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()))) {
         return die(std::string("cannot write ") + out);
@@ -116,8 +118,10 @@ int main(int argc, char** argv) {
     std::printf("%s: %u solids, %u open shells, %u instances, %u faces (%s), %u edges", in, stats.solids, stats.shells,
                 stats.instances, stats.faces, types.c_str(), stats.edges);
     if (stats.faces_skipped) std::printf(", %u faces skipped (%s)", stats.faces_skipped, stats.first_problem.c_str());
-    std::printf("\n  pack %zu bytes = %.1f%% of the STEP file (%lld bytes)\n", bytes.size(),
+    std::printf("\n  pack %zu bytes = %.1f%% of the STEP file (%lld bytes)", bytes.size(),
                 100.0 * double(bytes.size()) / double(st.st_size), (long long)st.st_size);
+    if (!plain) std::printf("; %zu bytes inflated", pack.size());
+    std::printf("\n");
     for (auto& [k, v] : stats.converted) std::printf("  converted: %u %s\n", v, k.c_str());
     if (model.open_solids) {
         std::printf("  %u solids have gaps between their faces that healing could not close: packed as open shells\n",

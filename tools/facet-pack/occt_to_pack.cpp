@@ -33,6 +33,7 @@
 #include <TopoDS_Vertex.hxx>
 #include <TopoDS_Wire.hxx>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -79,6 +80,69 @@ Floats bspline_curve(opencascade::handle<Curve> c) {
     return f;
 }
 
+// A degree-1 B-spline with two poles is a line, exactly: P0 + (t - k0) (P1 - P0) / (k1 - k0).
+template <typename BSpline>
+bool bspline_line(const opencascade::handle<BSpline>& b, Floats& f) {
+    if (b->Degree() != 1 || b->NbPoles() != 2 || b->IsRational() || b->IsPeriodic()) return false;
+    const double k0 = b->FirstParameter(), k1 = b->LastParameter();
+    if (!(k1 > k0)) return false;
+    const auto d = (b->Pole(2).XYZ() - b->Pole(1).XYZ()) / (k1 - k0);
+    put(f, b->Pole(1).XYZ() - d * k0);
+    put(f, d);
+    return true;
+}
+template <>
+bool bspline_line(const opencascade::handle<Geom2d_BSplineCurve>& b, Floats& f) {
+    if (b->Degree() != 1 || b->NbPoles() != 2 || b->IsRational() || b->IsPeriodic()) return false;
+    const double k0 = b->FirstParameter(), k1 = b->LastParameter();
+    if (!(k1 > k0)) return false;
+    const gp_XY d = (b->Pole(2).XY() - b->Pole(1).XY()) / (k1 - k0);
+    put(f, b->Pole(1).XY() - d * k0);
+    put(f, d);
+    return true;
+}
+
+// A pcurve's parameter space is only where the face's boundary lies in (u,v): the boundary's
+// 3D points come from the edge's own curve. So a long B-spline pcurve (healing and projection
+// make them with dozens of poles) is re-approximated on the edge's range with as few poles as
+// keep it within kApproxTolerance in 3D, checked on the surface, when that saves poles.
+Handle(Geom2d_BSplineCurve) simpler_pcurve(const Handle(Geom2d_BSplineCurve)& b, const Handle(Geom_Surface)& surface,
+                                           double t0, double t1) {
+    constexpr int kWorthIt = 12; // poles: below this, keep the curve as it is
+    if (b->NbPoles() < kWorthIt || !(t1 > t0) || surface.IsNull()) return {};
+    // The surface's largest speed along the curve: turns the 3D tolerance into one in (u,v).
+    constexpr int kChecks = 256;
+    double speed = 0;
+    for (int i = 0; i <= 32; ++i) {
+        gp_Pnt p;
+        gp_Vec du, dv;
+        const gp_Pnt2d uv = b->Value(t0 + (t1 - t0) * i / 32);
+        surface->D1(uv.X(), uv.Y(), p, du, dv);
+        speed = std::max({speed, du.Magnitude(), dv.Magnitude()});
+    }
+    if (!(speed > 0)) return {};
+    const double tol_uv = 0.25 * kApproxTolerance / speed;
+    Handle(Geom2d_BSplineCurve) simple;
+    try {
+        Handle(Geom2d_Curve) part = new Geom2d_TrimmedCurve(b, t0, t1);
+        Geom2dConvert_ApproxCurve approx(part, tol_uv, GeomAbs_C2, 64, 5);
+        if (!approx.HasResult()) return {};
+        simple = approx.Curve();
+    } catch (const Standard_Failure&) {
+        return {};
+    }
+    const size_t before = size_t(b->NbPoles()) * (b->IsRational() ? 3 : 2) + b->NbPoles() + b->Degree() + 1;
+    const size_t after = size_t(simple->NbPoles()) * (simple->IsRational() ? 3 : 2) + simple->NbPoles() + simple->Degree() + 1;
+    if (after >= before) return {};
+    // Checked where it counts: the two curves' points on the surface, densely over the range.
+    for (int i = 0; i <= kChecks; ++i) {
+        const double t = t0 + (t1 - t0) * i / kChecks;
+        const gp_Pnt2d a = b->Value(t), c = simple->Value(t);
+        if (surface->Value(a.X(), a.Y()).Distance(surface->Value(c.X(), c.Y())) > kApproxTolerance) return {};
+    }
+    return simple;
+}
+
 } // namespace
 
 // A 3D curve as a Curves3 record; other kinds become B-splines within kApproxTolerance.
@@ -108,7 +172,12 @@ static uint32_t add_curve3(geom::PackWriter& w, const Handle(Geom_Curve)& curve,
         f.insert(f.end(), {float(e.MajorRadius()), float(e.MinorRadius())});
         return w.add_curve(CurveType::Ellipse, 3, f);
     }
-    case GeomAbs_BSplineCurve: return w.add_curve(CurveType::BSpline, 3, bspline_curve(a.BSpline()));
+    case GeomAbs_BSplineCurve:
+        if (bspline_line(a.BSpline(), f)) {
+            ++st.converted["3D B-spline of degree 1 -> line"];
+            return w.add_curve(CurveType::Line, 3, f);
+        }
+        return w.add_curve(CurveType::BSpline, 3, bspline_curve(a.BSpline()));
     default: break;
     }
     // Other kinds (Bezier, offset, parabola, hyperbola...): approximate the part the edge uses,
@@ -127,7 +196,8 @@ static uint32_t add_curve3(geom::PackWriter& w, const Handle(Geom_Curve)& curve,
     return w.add_curve(CurveType::BSpline, 3, bspline_curve(b));
 }
 
-static uint32_t add_curve2(geom::PackWriter& w, const Handle(Geom2d_Curve)& curve, double t0, double t1, Stats& st) {
+static uint32_t add_curve2(geom::PackWriter& w, const Handle(Geom2d_Curve)& curve, double t0, double t1,
+                           const Handle(Geom_Surface)& surface, Stats& st) {
     Geom2dAdaptor_Curve a(curve);
     Floats f;
     switch (a.GetType()) {
@@ -153,7 +223,18 @@ static uint32_t add_curve2(geom::PackWriter& w, const Handle(Geom2d_Curve)& curv
         f.insert(f.end(), {float(e.MajorRadius()), float(e.MinorRadius())});
         return w.add_curve(CurveType::Ellipse, 2, f);
     }
-    case GeomAbs_BSplineCurve: return w.add_curve(CurveType::BSpline, 2, bspline_curve(a.BSpline()));
+    case GeomAbs_BSplineCurve: {
+        const Handle(Geom2d_BSplineCurve) b = a.BSpline();
+        if (bspline_line(b, f)) {
+            ++st.converted["pcurve B-spline of degree 1 -> line"];
+            return w.add_curve(CurveType::Line, 2, f);
+        }
+        if (const Handle(Geom2d_BSplineCurve) simple = simpler_pcurve(b, surface, t0, t1); !simple.IsNull()) {
+            ++st.converted["pcurve B-spline -> fewer poles"];
+            return w.add_curve(CurveType::BSpline, 2, bspline_curve(simple));
+        }
+        return w.add_curve(CurveType::BSpline, 2, bspline_curve(b));
+    }
     default: break;
     }
     Handle(Geom2d_BSplineCurve) b;
@@ -305,7 +386,10 @@ uint32_t Packer::add_prototype(const TopoDS_Shape& shape, bool closed) {
             c = BRep_Tool::Curve(e, loc, t0, t1);
             if (!c.IsNull()) {
                 if (!loc.IsIdentity()) c = Handle(Geom_Curve)::DownCast(c->Transformed(loc.Transformation()));
-                curve = add_curve3(w_, c, t0, t1, stats_);
+                // A line's edge is the segment between its vertices (OCCT lines run at unit
+                // speed: the parameter is linear along it), with no curve record.
+                const bool straight = GeomAdaptor_Curve(c).GetType() == GeomAbs_Line && !a.IsNull() && !b.IsNull() && !a.IsSame(b);
+                curve = straight ? kStraight : add_curve3(w_, c, t0, t1, stats_);
             }
         } else {
             BRep_Tool::Range(e, t0, t1);
@@ -346,7 +430,7 @@ uint32_t Packer::add_prototype(const TopoDS_Shape& shape, bool closed) {
         }
         // Loops: the outer wire first, each traversed in order on the FORWARD face, so outer
         // loops run counter-clockwise in (u,v) and holes clockwise.
-        const uint32_t first_loop = w_.loop_count();
+        const uint32_t first_loop = w_.loop_count(), first_pcurve = w_.curve2_count();
         const TopoDS_Wire outer = BRepTools::OuterWire(face);
         std::vector<TopoDS_Wire> wires;
         if (!outer.IsNull()) wires.push_back(outer);
@@ -371,7 +455,7 @@ uint32_t Packer::add_prototype(const TopoDS_Shape& shape, bool closed) {
                 }
                 // Elementary surfaces keep no pcurve (the device inverts the surface); free-form
                 // ones do.
-                const uint32_t p = elementary ? kNoIndex : add_curve2(w_, pc, f0, f1, stats_);
+                const uint32_t p = elementary ? kNoIndex : add_curve2(w_, pc, f0, f1, s, stats_);
                 if (!elementary && p == kNoIndex) {
                     ok = false;
                     break;
@@ -387,7 +471,7 @@ uint32_t Packer::add_prototype(const TopoDS_Shape& shape, bool closed) {
                 }
                 // The coedge's direction is the current edge's own orientation. (The explorer's
                 // Orientation() is not: on anc101 face 13 it says FORWARD for a REVERSED edge.)
-                w_.add_coedge({edge_ids[idx], p, uint8_t(e.Orientation() == TopAbs_REVERSED), seam, 0});
+                w_.add_coedge(pack::Coedge::make(edge_ids[idx], e.Orientation() == TopAbs_REVERSED, pack::Seam(seam)));
                 ++n;
             }
             if (!ok) break;
@@ -402,8 +486,9 @@ uint32_t Packer::add_prototype(const TopoDS_Shape& shape, bool closed) {
             if (stats_.first_problem.empty()) stats_.first_problem = "a face has an edge without a pcurve";
             continue;
         }
-        w_.add_face({surface, first_loop, loops, colour_of(original), uint8_t(original.Orientation() == TopAbs_REVERSED),
-                     {0, 0, 0}, {float(u0), float(v0)}, {float(u1), float(v1)}});
+        // Its pcurves (if any) were added in coedge order, from first_pcurve on.
+        w_.add_face({surface, first_loop, loops, elementary ? kNoIndex : first_pcurve, colour_of(original),
+                     uint8_t(original.Orientation() == TopAbs_REVERSED), {0, 0, 0}, {float(u0), float(v0)}, {float(u1), float(v1)}});
         ++faces;
         ++stats_.faces;
         packed_faces.push_back(face);

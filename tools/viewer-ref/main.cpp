@@ -9,8 +9,10 @@
 //   per idle moment, as tools/qemu/run.py does; the session ends when they run out.
 #include "hal/fake.h"
 #include "hal/print.h"
+#include "geom/pack_file.h"
 #include "viewer.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -116,9 +118,16 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "facet-viewer-ref: cannot read %s\n", pack_path.c_str());
         return 1;
     }
-    // 8-byte aligned, as the device's pack region is.
-    std::vector<uint64_t> pack((bytes.size() + 7) / 8);
-    std::memcpy(pack.data(), bytes.data(), bytes.size());
+    // The file at the start of a region as the device's (8-byte aligned), large enough for the
+    // pack and its deflated file together.
+    uint64_t capacity = bytes.size();
+    if (geom::pack_file_kind(bytes.data(), uint32_t(bytes.size())) == geom::PackFileKind::Deflated && bytes.size() >= sizeof(pack::DeflatedHead)) {
+        pack::DeflatedHead head;
+        std::memcpy(&head, bytes.data(), sizeof head);
+        capacity += std::min<uint64_t>(head.pack_bytes, pack::kMaxBytes);
+    }
+    std::vector<uint64_t> pack((capacity + 7) / 8);
+    if (!bytes.empty()) std::memcpy(pack.data(), bytes.data(), bytes.size());
 
     hal::fake::Display display{uint16_t(w), uint16_t(h)};
     hal::fake::Console console;
@@ -131,7 +140,7 @@ int main(int argc, char** argv) {
     viewer::Memory mem = storage->memory(depth0, depth1, line);
     Host host{&display, out_dir};
     viewer::Viewer v(board, mem, capture, &host);
-    if (!ok(v.open(pack.data(), uint32_t(bytes.size())))) {
+    if (!ok(v.open(reinterpret_cast<uint8_t*>(pack.data()), uint32_t(capacity)))) {
         std::fputs(console.output.c_str(), stderr);
         return 1;
     }

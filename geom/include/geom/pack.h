@@ -42,6 +42,11 @@ public:
     std::span<const pack::Instance> instances() const { return instances_; }
     std::span<const pack::Colour> colours() const { return colours_; }
 
+    // The pcurve of coedge c (one of face F's) on F's surface; kNoIndex if F has none.
+    uint32_t pcurve_of(const pack::Face& F, uint32_t c) const {
+        return F.first_pcurve == pack::kNoIndex ? pack::kNoIndex : F.first_pcurve + (c - loops_[F.first_loop].first_coedge);
+    }
+
     // The parameters of a surface or curve (validated by open()).
     std::span<const float> params(uint32_t first, uint32_t count) const {
         return floats_.subspan(first, count);

@@ -5,13 +5,17 @@
 // Layout: a 64-byte header, a table of sections, then each section's records, every part
 // 4-byte aligned. Little-endian. Geometry is float32 (a 2 m part keeps ~0.1 um steps, far below
 // the 0.1% visual tolerance); indices are uint32 with kNoIndex for "none".
+//
+// Stored or sent, a pack is usually deflated (DeflatedHead below, then a raw DEFLATE stream):
+// geom/pack_file.h turns either form into a pack ready to read in place.
 #include <cstdint>
 
 namespace facet::pack {
 
 constexpr char kMagic[4] = {'F', 'P', 'K', '1'};
-constexpr uint16_t kVersion = 2;
+constexpr uint16_t kVersion = 3;
 constexpr uint32_t kNoIndex = 0xFFFFFFFFu;
+constexpr uint32_t kStraight = 0xFFFFFFFEu; // Edge::curve of a straight edge (no curve record)
 constexpr uint32_t kMaxSections = 16;
 constexpr uint32_t kMaxBytes = 64u << 20; // a pack larger than this is refused as corrupt
 
@@ -112,7 +116,9 @@ struct Vertex {
 };
 
 struct Edge {
-    uint32_t curve;     // Curves3 index; kNoIndex for a degenerate edge (a pole or apex)
+    uint32_t curve;     // Curves3 index; kStraight: the segment from v0 to v1, its parameter
+                        // running linearly from t0 to t1 (a line's edge needs no curve record);
+                        // kNoIndex: a degenerate edge (a pole or apex)
     float t0, t1;       // parameter range on the curve
     uint32_t v0, v1;    // Vertices at t0 and t1
     float max_sag;      // mm, 0 = none: the largest chord sag that keeps every loop through the
@@ -124,17 +130,22 @@ static_assert(sizeof(Edge) == 24);
 // Which side of a periodic surface's parameter range a seam coedge lies on.
 enum class Seam : uint8_t { None = 0, ULow = 1, UHigh = 2, VLow = 3, VHigh = 4 };
 
+// An edge as used by a loop, in one word: the edge's index, whether the loop runs it from t1
+// to t0, and (a seam edge of a periodic surface) the side of the face's (u,v) bounds this use
+// lies on (its twin lies on the other). Its pcurve, if the face has them, is the face's
+// first_pcurve + its position among the face's coedges.
 struct Coedge {
-    uint32_t edge;
-    uint32_t pcurve;  // Curves2 index on the face's surface, same parameter as the edge; kNoIndex
-                      // on elementary surfaces (plane, cylinder, cone, sphere, torus), where
-                      // (u,v) comes from inverting the surface at the edge's 3D samples
-    uint8_t reversed; // 1: the loop runs the edge from t1 to t0
-    uint8_t seam;     // Seam: for a seam edge of a periodic surface, the side of the face's
-                      // (u,v) bounds this coedge runs on (its twin runs on the other)
-    uint16_t pad;
+    uint32_t bits; // edge (bits 0-27), reversed (bit 28), Seam (bits 29-31)
+
+    static constexpr uint32_t kEdgeBits = 28, kMaxEdges = 1u << kEdgeBits;
+    uint32_t edge() const { return bits & (kMaxEdges - 1); }
+    bool reversed() const { return (bits >> kEdgeBits) & 1u; }
+    Seam seam() const { return Seam(bits >> (kEdgeBits + 1)); }
+    static constexpr Coedge make(uint32_t edge, bool reversed, Seam seam) {
+        return {edge | uint32_t(reversed) << kEdgeBits | uint32_t(seam) << (kEdgeBits + 1)};
+    }
 };
-static_assert(sizeof(Coedge) == 12);
+static_assert(sizeof(Coedge) == 4);
 
 struct Loop {
     uint32_t first_coedge;
@@ -143,14 +154,18 @@ struct Loop {
 
 struct Face {
     uint32_t surface;
-    uint32_t first_loop; // the outer loop first
+    uint32_t first_loop;   // the outer loop first; the loops' coedges follow each other
     uint32_t loop_count;
-    uint32_t colour;     // Colours index or kNoIndex
-    uint8_t reversed;    // 1: the face's normal is opposite the surface's
+    uint32_t first_pcurve; // Curves2 index of the pcurve of the face's first coedge, the others'
+                           // following in order; kNoIndex on elementary surfaces (plane,
+                           // cylinder, cone, sphere, torus), where (u,v) comes from inverting
+                           // the surface at the edges' 3D samples
+    uint32_t colour;       // Colours index or kNoIndex
+    uint8_t reversed;      // 1: the face's normal is opposite the surface's
     uint8_t pad[3];
     float uv_min[2], uv_max[2]; // parameter bounds of the face
 };
-static_assert(sizeof(Face) == 36);
+static_assert(sizeof(Face) == 40);
 
 struct Shell {
     uint32_t first_face;
@@ -168,6 +183,16 @@ static_assert(sizeof(Instance) == 52);
 struct Colour {
     uint8_t r, g, b, a;
 };
+
+// A deflated pack: this head, then the pack as a raw DEFLATE stream (RFC 1951).
+constexpr char kDeflatedMagic[4] = {'F', 'P', 'Z', '1'};
+struct DeflatedHead {
+    char magic[4];
+    uint32_t pack_bytes;   // the pack, inflated
+    uint32_t stream_bytes; // the DEFLATE stream that follows
+    uint32_t reserved;     // 0
+};
+static_assert(sizeof(DeflatedHead) == 16);
 
 // CRC-32 (IEEE 802.3, reflected, as zlib) for the header's checksum.
 uint32_t crc32(const void* data, uint32_t size, uint32_t crc = 0);

@@ -1,0 +1,22 @@
+#pragma once
+// DEFLATE (RFC 1951) decoding for the device: packs travel deflated (a third to a quarter of
+// their size) and are inflated once, into the memory they are then read from in place.
+//
+//   uint32_t written;
+//   const char* why;
+//   if (inflate(stream, out, written, why) != Status::Ok) print(con, "pack: {}\n", why);
+//
+// No heap and no window of its own (the output is the history); about 2 KB of stack.
+// Every read, length and distance is checked: a corrupt or truncated stream, or one that
+// does not fit the output, gets Status::Corrupt (or Full) and a reason, never a write outside
+// `out`.
+#include "hal/status.h"
+
+#include <cstdint>
+#include <span>
+
+namespace facet::geom {
+
+Status inflate(std::span<const uint8_t> in, std::span<uint8_t> out, uint32_t& written, const char*& why);
+
+} // namespace facet::geom

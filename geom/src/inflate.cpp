@@ -1,0 +1,271 @@
+// DEFLATE decoding (RFC 1951): stored, fixed-Huffman and dynamic-Huffman blocks.
+//
+// Canonical Huffman codes are decoded one bit at a time against the count of codes of each
+// length (codes of one length are consecutive integers, in symbol order): small tables, no
+// lookup table to build, and about a hundred instructions per symbol, which inflates a large
+// pack in a few million instructions, once, at load.
+#include "geom/inflate.h"
+
+namespace facet::geom {
+namespace {
+
+constexpr int kMaxBits = 15;              // longest code
+constexpr int kLiteralLengthCodes = 288;  // 286 used, 2 reserved
+constexpr int kDistanceCodes = 30;
+constexpr int kCodeLengthCodes = 19;
+
+// LSB-first bits from the stream; past its end every read gives zeros and sets `truncated`.
+struct Bits {
+    const uint8_t* p;
+    const uint8_t* end;
+    uint32_t buffer = 0;
+    int count = 0; // bits in buffer (under 8 between reads)
+    bool truncated = false;
+
+    uint32_t take(int n) { // n <= 16
+        while (count < n) {
+            if (p == end) {
+                truncated = true;
+                return 0;
+            }
+            buffer |= uint32_t(*p++) << count;
+            count += 8;
+        }
+        const uint32_t v = buffer & ((1u << n) - 1);
+        buffer >>= n;
+        count -= n;
+        return v;
+    }
+    void to_byte() { buffer = 0, count = 0; } // the rest of the current byte is padding
+};
+
+struct Huffman {
+    uint16_t count[kMaxBits + 1];
+    uint16_t symbol[kLiteralLengthCodes]; // by code: shortest codes first, then by symbol
+};
+
+// The code for symbols 0..n-1 of the given lengths (0: unused). Returns 0 for a complete code,
+// the number of missing codes (> 0) for an incomplete one, < 0 for an over-subscribed one.
+int build(Huffman& h, const uint8_t* length, int n) {
+    for (uint16_t& c : h.count) c = 0;
+    for (int s = 0; s < n; ++s) ++h.count[length[s]];
+    if (h.count[0] == n) return 0; // no codes at all: complete, and never decodes
+    int left = 1;
+    for (int len = 1; len <= kMaxBits; ++len) {
+        left = 2 * left - h.count[len];
+        if (left < 0) return left;
+    }
+    uint16_t offset[kMaxBits + 2];
+    offset[1] = 0;
+    for (int len = 1; len <= kMaxBits; ++len) offset[len + 1] = uint16_t(offset[len] + h.count[len]);
+    for (int s = 0; s < n; ++s)
+        if (length[s]) h.symbol[offset[length[s]]++] = uint16_t(s);
+    return left;
+}
+
+// The next symbol, or -1 (no such code, or the stream ended).
+int decode(Bits& in, const Huffman& h) {
+    int code = 0, first = 0, index = 0;
+    for (int len = 1; len <= kMaxBits; ++len) {
+        code |= int(in.take(1));
+        if (in.truncated) return -1;
+        const int count = h.count[len];
+        if (code - first < count) return h.symbol[index + (code - first)];
+        index += count;
+        first = (first + count) << 1;
+        code <<= 1;
+    }
+    return -1;
+}
+
+constexpr uint16_t kLengthBase[29] = {3,  4,  5,  6,  7,  8,  9,  10, 11,  13,  15,  17,  19,  23, 27,
+                                      31, 35, 43, 51, 59, 67, 83, 99, 115, 131, 163, 195, 227, 258};
+constexpr uint8_t kLengthExtra[29] = {0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2, 2, 3, 3, 3, 3, 4, 4, 4, 4, 5, 5, 5, 5, 0};
+constexpr uint16_t kDistanceBase[kDistanceCodes] = {1,    2,    3,    4,    5,    7,     9,     13,    17,  25,
+                                                    33,   49,   65,   97,   129,  193,   257,   385,   513, 769,
+                                                    1025, 1537, 2049, 3073, 4097, 6145, 8193, 12289, 16385, 24577};
+constexpr uint8_t kDistanceExtra[kDistanceCodes] = {0, 0, 0, 0, 1, 1, 2, 2, 3, 3, 4, 4, 5, 5, 6, 6, 7, 7, 8, 8, 9, 9, 10, 10, 11, 11, 12, 12, 13, 13};
+
+struct Output {
+    uint8_t* data;
+    uint32_t size;
+    uint32_t at = 0;
+};
+
+// One block's literals and copies, up to its end-of-block symbol.
+Status codes(Bits& in, Output& out, const Huffman& literal, const Huffman& distance, const char*& why) {
+    for (;;) {
+        int sym = decode(in, literal);
+        if (sym < 0) {
+            why = in.truncated ? "the DEFLATE stream ends early" : "an invalid literal/length code";
+            return Status::Corrupt;
+        }
+        if (sym < 256) {
+            if (out.at == out.size) {
+                why = "the inflated data is larger than its space";
+                return Status::Full;
+            }
+            out.data[out.at++] = uint8_t(sym);
+            continue;
+        }
+        if (sym == 256) return Status::Ok;
+        sym -= 257;
+        if (sym >= 29) {
+            why = "an invalid length symbol";
+            return Status::Corrupt;
+        }
+        const uint32_t length = kLengthBase[sym] + in.take(kLengthExtra[sym]);
+        const int dsym = decode(in, distance);
+        if (dsym < 0 || dsym >= kDistanceCodes) {
+            why = in.truncated ? "the DEFLATE stream ends early" : "an invalid distance code";
+            return Status::Corrupt;
+        }
+        const uint32_t dist = kDistanceBase[dsym] + in.take(kDistanceExtra[dsym]);
+        if (in.truncated) {
+            why = "the DEFLATE stream ends early";
+            return Status::Corrupt;
+        }
+        if (dist > out.at) {
+            why = "a copy reaches back before the start";
+            return Status::Corrupt;
+        }
+        if (length > out.size - out.at) {
+            why = "the inflated data is larger than its space";
+            return Status::Full;
+        }
+        // Byte by byte: a copy may overlap what it writes (a run).
+        uint8_t* to = out.data + out.at;
+        const uint8_t* from = to - dist;
+        for (uint32_t k = 0; k < length; ++k) to[k] = from[k];
+        out.at += length;
+    }
+}
+
+Status stored(Bits& in, Output& out, const char*& why) {
+    in.to_byte();
+    if (in.end - in.p < 4) {
+        why = "the DEFLATE stream ends early";
+        return Status::Corrupt;
+    }
+    const uint32_t len = uint32_t(in.p[0]) | uint32_t(in.p[1]) << 8, nlen = uint32_t(in.p[2]) | uint32_t(in.p[3]) << 8;
+    in.p += 4;
+    if (len != (~nlen & 0xFFFFu)) {
+        why = "a stored block's length check fails";
+        return Status::Corrupt;
+    }
+    if (uint32_t(in.end - in.p) < len) {
+        why = "the DEFLATE stream ends early";
+        return Status::Corrupt;
+    }
+    if (len > out.size - out.at) {
+        why = "the inflated data is larger than its space";
+        return Status::Full;
+    }
+    for (uint32_t k = 0; k < len; ++k) out.data[out.at + k] = in.p[k];
+    in.p += len;
+    out.at += len;
+    return Status::Ok;
+}
+
+Status fixed(Bits& in, Output& out, const char*& why) {
+    uint8_t length[kLiteralLengthCodes];
+    Huffman literal, distance;
+    for (int s = 0; s < kLiteralLengthCodes; ++s) length[s] = s < 144 ? 8 : s < 256 ? 9 : s < 280 ? 7 : 8;
+    build(literal, length, kLiteralLengthCodes);
+    for (int s = 0; s < kDistanceCodes; ++s) length[s] = 5;
+    build(distance, length, kDistanceCodes);
+    return codes(in, out, literal, distance, why);
+}
+
+Status dynamic(Bits& in, Output& out, const char*& why) {
+    static constexpr uint8_t kOrder[kCodeLengthCodes] = {16, 17, 18, 0, 8, 7, 9, 6, 10, 5, 11, 4, 12, 3, 13, 2, 14, 1, 15};
+    const int nlen = int(in.take(5)) + 257, ndist = int(in.take(5)) + 1, ncode = int(in.take(4)) + 4;
+    if (nlen > 286 || ndist > kDistanceCodes) {
+        why = "a block header has too many codes";
+        return Status::Corrupt;
+    }
+    uint8_t length[286 + kDistanceCodes];
+    for (int k = 0; k < kCodeLengthCodes; ++k) length[kOrder[k]] = k < ncode ? uint8_t(in.take(3)) : 0;
+    Huffman lencode, distance;
+    if (in.truncated || build(lencode, length, kCodeLengthCodes) != 0) {
+        why = in.truncated ? "the DEFLATE stream ends early" : "an incomplete code-length code";
+        return Status::Corrupt;
+    }
+    for (int k = 0; k < nlen + ndist;) {
+        const int sym = decode(in, lencode);
+        if (sym < 0) {
+            why = in.truncated ? "the DEFLATE stream ends early" : "an invalid code-length code";
+            return Status::Corrupt;
+        }
+        if (sym < 16) {
+            length[k++] = uint8_t(sym);
+            continue;
+        }
+        uint8_t value = 0;
+        int repeat;
+        if (sym == 16) {
+            if (k == 0) {
+                why = "a repeated code length with none before it";
+                return Status::Corrupt;
+            }
+            value = length[k - 1];
+            repeat = 3 + int(in.take(2));
+        } else if (sym == 17) {
+            repeat = 3 + int(in.take(3));
+        } else {
+            repeat = 11 + int(in.take(7));
+        }
+        if (k + repeat > nlen + ndist) {
+            why = "code lengths run past their count";
+            return Status::Corrupt;
+        }
+        while (repeat--) length[k++] = value;
+    }
+    if (length[256] == 0) {
+        why = "a block without an end-of-block code";
+        return Status::Corrupt;
+    }
+    // An incomplete code is allowed only when it has a single symbol (RFC 1951, 3.2.7).
+    Huffman literal;
+    int err = build(literal, length, nlen);
+    if (err < 0 || (err > 0 && nlen - literal.count[0] != 1)) {
+        why = "an over-subscribed or incomplete literal/length code";
+        return Status::Corrupt;
+    }
+    err = build(distance, length + nlen, ndist);
+    if (err < 0 || (err > 0 && ndist - distance.count[0] != 1)) {
+        why = "an over-subscribed or incomplete distance code";
+        return Status::Corrupt;
+    }
+    return codes(in, out, literal, distance, why);
+}
+
+} // namespace
+
+Status inflate(std::span<const uint8_t> in, std::span<uint8_t> out, uint32_t& written, const char*& why) {
+    Bits bits{in.data(), in.data() + in.size()};
+    Output o{out.data(), uint32_t(out.size())};
+    written = 0;
+    why = "";
+    bool last = false;
+    while (!last) {
+        last = bits.take(1) != 0;
+        const uint32_t type = bits.take(2);
+        if (bits.truncated) {
+            why = "the DEFLATE stream ends early";
+            return Status::Corrupt;
+        }
+        Status st;
+        switch (type) {
+        case 0: st = stored(bits, o, why); break;
+        case 1: st = fixed(bits, o, why); break;
+        case 2: st = dynamic(bits, o, why); break;
+        default: why = "an invalid block type"; return Status::Corrupt;
+        }
+        if (!ok(st)) return st;
+    }
+    written = o.at;
+    return Status::Ok;
+}
+
+} // namespace facet::geom
