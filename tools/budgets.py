@@ -94,6 +94,11 @@ def main():
                     fh.write(f'| {f["name"]} ({f["triangles"]:,} triangles) | {f["instructions"]:,} '
                              f'({f["instructions"] / 600e3:.1f} ms) | {frame_budget(f["triangles"]):,.0f} |\n')
             fh.write(f'| CDT arena peak | {out["arena_peak"]} bytes | |\n| mesh | {out["mesh_bytes"]} bytes | |\n')
+            if out['pack_bytes']:
+                fh.write(f'| pack as loaded / in place | {out["pack_file_bytes"]:,} / {out["pack_bytes"]:,} bytes | |\n')
+            if out['unpack_instructions']:
+                fh.write(f'| inflating the pack | {out["unpack_instructions"]:,} instructions '
+                         f'({out["unpack_instructions"] / 600e3:.1f} ms) | |\n')
             fh.write('\n| RAM section | bytes |\n|---|---:|\n')
             for k, v in ram.items():
                 fh.write(f'| {k} | {v:,} |\n')
@@ -106,6 +111,10 @@ def main():
     if out['faces'] is not None:
         print(f'  model: {out["faces"]} faces ({out["faces_failed"]} failed), {out["triangles"]:,} triangles, '
               f'mesh {out["mesh_bytes"]:,} bytes, CDT arena peak {out["arena_peak"]:,} bytes')
+    if out['pack_bytes']:
+        unpack = out['unpack_instructions']
+        print(f'  pack: {out["pack_file_bytes"]:,} bytes as loaded, {out["pack_bytes"]:,} bytes in place'
+              + (f' (inflated on the device in {unpack:,} instructions = {unpack / 600e3:.1f} ms)' if unpack else ''))
     if tess is not None:
         print(f'  tessellation on the device: {tess:,} instructions = {tess / 600e3:.0f} ms at 600 MHz '
               f'(budget {TESSELLATION_BUDGET:,} = 1 s)')
