@@ -28,7 +28,7 @@ def plot_cdt(path):
     png = os.path.splitext(path)[0] + '.png'
     cols = ', '.join(f"'{dat.name}' using {k + 2}:xtic(1) title columnheader" for k in range(len(impls)))
     script = f"""
-set terminal pngcairo size 1200,600 font 'sans,10'
+set terminal pngcairo noenhanced size 1200,600 font 'sans,10'
 set output '{png}'
 set title 'Constrained Delaunay triangulation: ns per inserted vertex (lower is better)'
 set style data histograms
@@ -72,7 +72,7 @@ def plot_mesh(path):
                       f'{tri.get((m, "brepmesh"), "NaN")} {ms.get((m, "facet"), "NaN")} {ms.get((m, "brepmesh"), "NaN")}\n')
     png = os.path.splitext(path)[0] + '.png'
     script = f"""
-set terminal pngcairo size 1400,900 font 'sans,9'
+set terminal pngcairo noenhanced size 1400,900 font 'sans,9'
 set output '{png}'
 set multiplot layout 2,1 title 'Tessellation at 0.1% of the bounding-box diagonal: facet vs BRepMesh'
 set style data histograms
