@@ -204,6 +204,9 @@ def main():
               + (f'; OVER BUDGET: {"; ".join(budget_notes)}' if budget_notes else '; within budgets'))
     if args.markdown and rows:
         write_markdown(args.markdown, args.board, rows, ram)
+        # The same rows for tools/budgets_doc.py (docs/budgets.md from both boards).
+        with open(os.path.splitext(args.markdown)[0] + '.json', 'w') as f:
+            json.dump({'board': args.board, 'rows': rows, 'ram': ram}, f, indent=1)
     return 1 if failed else 0
 
 
