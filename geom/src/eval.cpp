@@ -61,6 +61,19 @@ int basis(const float* knots, int n, int p, float t, bool periodic, float* N, fl
     return s;
 }
 
+// A B-spline surface's parameters (BSplineSurfaceHead, then knots, poles, weights) by name.
+struct BSplineSurfaceView {
+    int pu, pv, nu, nv, ku, kv;
+    bool rational, u_periodic, v_periodic;
+    const float *uk, *vk, *poles, *weights;
+
+    explicit BSplineSurfaceView(const float* q)
+        : pu(int(q[0])), pv(int(q[1])), nu(int(q[2])), nv(int(q[3])), ku(int(q[4])), kv(int(q[5])), rational(q[6] != 0),
+          u_periodic(q[7] != 0), v_periodic(q[8] != 0), uk(q + 9), vk(uk + ku), poles(vk + kv), weights(poles + 3 * nu * nv) {}
+    int u_basis(float u, float* N, float* dN) const { return basis(uk, nu, pu, u, u_periodic, N, dN); }
+    int v_basis(float v, float* N, float* dN) const { return basis(vk, nv, pv, v, v_periodic, N, dN); }
+};
+
 // A B-spline curve of dimension dim at t: position and derivative (rational by the quotient rule).
 void bspline_curve(const float* prm, int dim, float t, float* pos, float* der) {
     const int p = int(prm[0]), n = int(prm[1]), k = int(prm[2]);
@@ -188,14 +201,12 @@ SurfacePoint eval_surface(const Pack& pack, const Surface& s, float u, float v) 
         return {O + radial * (R + r * cv) + Z * (r * sv), (X * -su + Y * cu) * (R + r * cv), radial * (-r * sv) + Z * (r * cv)};
     }
     case SurfaceType::BSpline: {
-        const int pu = int(q[0]), pv = int(q[1]), nu = int(q[2]), nv = int(q[3]), ku = int(q[4]), kv = int(q[5]);
-        const bool rational = q[6] != 0;
-        const float* uk = q + 9;
-        const float* vk = uk + ku;
-        const float* poles = vk + kv;
-        const float* weights = poles + 3 * nu * nv;
+        const BSplineSurfaceView B(q);
+        const int pu = B.pu, pv = B.pv, nv = B.nv;
+        const bool rational = B.rational;
+        const float *poles = B.poles, *weights = B.weights;
         float Nu[kMaxDegree + 1], dNu[kMaxDegree + 1], Nv[kMaxDegree + 1], dNv[kMaxDegree + 1];
-        const int su = basis(uk, nu, pu, u, q[7] != 0, Nu, dNu), sv = basis(vk, nv, pv, v, q[8] != 0, Nv, dNv);
+        const int su = B.u_basis(u, Nu, dNu), sv = B.v_basis(v, Nv, dNv);
         Vec3 A{0, 0, 0}, Au{0, 0, 0}, Av{0, 0, 0};
         float W = 0, Wu = 0, Wv = 0;
         for (int a = 0; a <= pu; ++a) {
@@ -242,15 +253,12 @@ SurfacePoint eval_surface(const Pack& pack, const Surface& s, float u, float v) 
 Vec3 eval_surface_point(const Pack& pack, const Surface& s, float u, float v) {
     if (SurfaceType(s.type) != SurfaceType::BSpline) return eval_surface(pack, s, u, v).p;
     // The position alone: basis values without derivatives, one weighted sum of the poles.
-    const float* q = pack.floats().data() + s.params;
-    const int pu = int(q[0]), pv = int(q[1]), nu = int(q[2]), nv = int(q[3]), ku = int(q[4]), kv = int(q[5]);
-    const bool rational = q[6] != 0;
-    const float* uk = q + 9;
-    const float* vk = uk + ku;
-    const float* poles = vk + kv;
-    const float* weights = poles + 3 * nu * nv;
+    const BSplineSurfaceView B(pack.floats().data() + s.params);
+    const int pu = B.pu, pv = B.pv, nv = B.nv;
+    const bool rational = B.rational;
+    const float *poles = B.poles, *weights = B.weights;
     float Nu[kMaxDegree + 1], Nv[kMaxDegree + 1];
-    const int su = basis(uk, nu, pu, u, q[7] != 0, Nu, nullptr), sv = basis(vk, nv, pv, v, q[8] != 0, Nv, nullptr);
+    const int su = B.u_basis(u, Nu, nullptr), sv = B.v_basis(v, Nv, nullptr);
     float x = 0, y = 0, z = 0;
     if (!rational) { // the basis functions sum to one: no weights, no division
         for (int a = 0; a <= pu; ++a) {

@@ -80,24 +80,20 @@ Floats bspline_curve(opencascade::handle<Curve> c) {
     return f;
 }
 
+// A point's coordinates as OCCT's vector type of its dimension.
+gp_XYZ coords(const gp_Pnt& p) { return p.XYZ(); }
+gp_XY coords(const gp_Pnt2d& p) { return p.XY(); }
+
 // A degree-1 B-spline with two poles is a line, exactly: P0 + (t - k0) (P1 - P0) / (k1 - k0).
+// (Geom_BSplineCurve or Geom2d_BSplineCurve.)
 template <typename BSpline>
 bool bspline_line(const opencascade::handle<BSpline>& b, Floats& f) {
     if (b->Degree() != 1 || b->NbPoles() != 2 || b->IsRational() || b->IsPeriodic()) return false;
     const double k0 = b->FirstParameter(), k1 = b->LastParameter();
     if (!(k1 > k0)) return false;
-    const auto d = (b->Pole(2).XYZ() - b->Pole(1).XYZ()) / (k1 - k0);
-    put(f, b->Pole(1).XYZ() - d * k0);
-    put(f, d);
-    return true;
-}
-template <>
-bool bspline_line(const opencascade::handle<Geom2d_BSplineCurve>& b, Floats& f) {
-    if (b->Degree() != 1 || b->NbPoles() != 2 || b->IsRational() || b->IsPeriodic()) return false;
-    const double k0 = b->FirstParameter(), k1 = b->LastParameter();
-    if (!(k1 > k0)) return false;
-    const gp_XY d = (b->Pole(2).XY() - b->Pole(1).XY()) / (k1 - k0);
-    put(f, b->Pole(1).XY() - d * k0);
+    const auto p0 = coords(b->Pole(1));
+    const auto d = (coords(b->Pole(2)) - p0) / (k1 - k0);
+    put(f, p0 - d * k0);
     put(f, d);
     return true;
 }
