@@ -201,7 +201,9 @@ Status Pack::check_records(PackProblem& p) {
         const Edge& e = edges_[i];
         if (e.curve != kNoIndex && e.curve != kStraight && e.curve >= curves3_.size()) return fail(p, "curve index out of range", E, i);
         if (e.v0 >= vertices_.size() || e.v1 >= vertices_.size()) return fail(p, "vertex index out of range", E, i);
-        if (!finite(e.t0) || !finite(e.t1) || !finite(e.max_sag) || e.max_sag < 0) return fail(p, "bad parameter range or sag limit", E, i);
+        if (!finite(e.t0) || !finite(e.t1) || !finite(e.max_sag) || e.max_sag < 0 || !finite(e.tolerance) || e.tolerance < 0) {
+            return fail(p, "bad parameter range, tolerance or sag limit", E, i);
+        }
     }
     constexpr uint32_t C = uint32_t(SectionId::Coedges);
     for (uint32_t i = 0; i < coedges_.size(); ++i) {

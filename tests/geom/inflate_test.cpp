@@ -160,9 +160,9 @@ namespace {
 Bytes triangle_pack() {
     PackWriter w;
     const uint32_t v0 = w.add_vertex(0, 0, 0), v1 = w.add_vertex(10, 0, 0), v2 = w.add_vertex(0, 10, 0);
-    const uint32_t e0 = w.add_edge({pack::kStraight, 0, 10, v0, v1, 0});
-    const uint32_t e1 = w.add_edge({pack::kStraight, 0, 14.142f, v1, v2, 0});
-    const uint32_t e2 = w.add_edge({pack::kStraight, 0, 10, v2, v0, 0});
+    const uint32_t e0 = w.add_edge({pack::kStraight, 0, 10, v0, v1, 1e-7f, 0});
+    const uint32_t e1 = w.add_edge({pack::kStraight, 0, 14.142f, v1, v2, 1e-7f, 0});
+    const uint32_t e2 = w.add_edge({pack::kStraight, 0, 10, v2, v0, 1e-7f, 0});
     const uint32_t first = w.coedge_count();
     for (uint32_t e : {e0, e1, e2}) w.add_coedge(pack::Coedge::make(e, false, pack::Seam::None));
     const uint32_t loop = w.add_loop({first, 3});

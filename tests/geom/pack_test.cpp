@@ -30,7 +30,7 @@ std::vector<uint8_t> cube_pack() {
         const float o[3] = {s * (ia & 1), s * ((ia >> 1) & 1), s * ((ia >> 2) & 1)};
         const float d[3] = {s * ((ib & 1) - (ia & 1)), s * (((ib >> 1) & 1) - ((ia >> 1) & 1)), s * (((ib >> 2) & 1) - ((ia >> 2) & 1))};
         const uint32_t c = i < 6 ? kStraight : w.add_curve(CurveType::Line, 3, {o[0], o[1], o[2], d[0] / s, d[1] / s, d[2] / s});
-        e[i] = w.add_edge({c, 0, s, a, b, 0});
+        e[i] = w.add_edge({c, 0, s, a, b, 1e-7f, 0});
     }
     // One face per side; pcurves are simple lines (the test only needs valid structure).
     const uint32_t colour = w.add_colour({200, 180, 40, 255});

@@ -34,15 +34,15 @@ Bytes polygon_and_triangle(uint32_t sides) {
     }
     const float side = float(2 * 100 * std::sin(M_PI / sides));
     std::vector<uint32_t> e(sides);
-    for (uint32_t i = 0; i < sides; ++i) e[i] = w.add_edge({pack::kStraight, 0, side, v[i], v[(i + 1) % sides], 0});
+    for (uint32_t i = 0; i < sides; ++i) e[i] = w.add_edge({pack::kStraight, 0, side, v[i], v[(i + 1) % sides], 1e-7f, 0});
     uint32_t first = w.coedge_count();
     for (uint32_t i = 0; i < sides; ++i) w.add_coedge(pack::Coedge::make(e[i], false, pack::Seam::None));
     uint32_t loop = w.add_loop({first, sides});
     w.add_face({plane, loop, 1, pack::kNoIndex, pack::kNoIndex, 0, {0, 0, 0}, {-100, -100}, {100, 100}});
 
     const uint32_t a = w.add_vertex(120, 0, 0), b = w.add_vertex(140, 0, 0), c = w.add_vertex(120, 20, 0);
-    const uint32_t ab = w.add_edge({pack::kStraight, 0, 20, a, b, 0}), bc = w.add_edge({pack::kStraight, 0, 28.28f, b, c, 0}),
-                   ca = w.add_edge({pack::kStraight, 0, 20, c, a, 0});
+    const uint32_t ab = w.add_edge({pack::kStraight, 0, 20, a, b, 1e-7f, 0}), bc = w.add_edge({pack::kStraight, 0, 28.28f, b, c, 1e-7f, 0}),
+                   ca = w.add_edge({pack::kStraight, 0, 20, c, a, 1e-7f, 0});
     first = w.coedge_count();
     for (uint32_t x : {ab, bc, ca}) w.add_coedge(pack::Coedge::make(x, false, pack::Seam::None));
     loop = w.add_loop({first, 3});

@@ -397,7 +397,7 @@ uint32_t Packer::add_prototype(const TopoDS_Shape& shape, bool closed) {
             return w_.add_vertex(float(p.X()), float(p.Y()), float(p.Z()));
         };
         const uint32_t va = end_vertex(a, t0), vb = end_vertex(b, t1);
-        edge_ids[i] = w_.add_edge({curve, float(t0), float(t1), va, vb, max_sag[i]});
+        edge_ids[i] = w_.add_edge({curve, float(t0), float(t1), va, vb, float(BRep_Tool::Tolerance(e)), max_sag[i]});
         ++stats_.edges;
     } catch (const Standard_Failure& f) {
         // The edge stays unpacked; faces that use it are skipped below with this reason.

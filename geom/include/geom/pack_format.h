@@ -121,11 +121,14 @@ struct Edge {
                         // kNoIndex: a degenerate edge (a pole or apex)
     float t0, t1;       // parameter range on the curve
     uint32_t v0, v1;    // Vertices at t0 and t1
+    float tolerance;    // mm: the B-rep's own tolerance of the edge (how far its curve may be
+                        // from its faces' surfaces and its ends from their vertices), as the STEP
+                        // file and healing left it
     float max_sag;      // mm, 0 = none: the largest chord sag that keeps every loop through the
                         // edge simple (40% of its distance to the nearest edge of its faces that
                         // shares no vertex with it): a thin face's two sides must not cross
 };
-static_assert(sizeof(Edge) == 24);
+static_assert(sizeof(Edge) == 28);
 
 // Which side of a periodic surface's parameter range a seam coedge lies on.
 enum class Seam : uint8_t { None = 0, ULow = 1, UHigh = 2, VLow = 3, VHigh = 4 };
