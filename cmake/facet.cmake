@@ -37,6 +37,11 @@ else()
         add_compile_options(-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer)
         add_link_options(-fsanitize=address,undefined)
     endif()
+    if(FACET_FUZZ)
+        # Coverage feedback from the libraries too (cdt/, geom/), not just the fuzz targets:
+        # without it libFuzzer mutates blind past the harness.
+        add_compile_options(-fsanitize=fuzzer-no-link)
+    endif()
 endif()
 
 # facet_firmware(<name> SOURCES ...): a firmware ELF for the configured board.

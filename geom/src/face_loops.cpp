@@ -13,6 +13,19 @@ namespace {
 
 bool any_periodic(const Surface& s) { return u_periodic(s) || v_periodic(s); }
 
+// a moved by whole turns to within half a turn of ref. Neighbouring samples are a turn or two
+// apart at most: a step at a time. A corrupt pack can put them 1e30 apart, where adding 2 pi
+// does nothing: then one jump of whole turns, and the steps are bounded.
+float wrap_near(float a, float ref) {
+    if (std::fabs(a - ref) > 4 * kTwoPi) {
+        const float turns = std::nearbyint((a - ref) / kTwoPi);
+        if (std::fabs(turns) < 1e6f) a -= turns * kTwoPi; // else no parameter a face can have
+    }
+    for (int k = 0; k < 8 && a - ref > kTwoPi / 2; ++k) a -= kTwoPi;
+    for (int k = 0; k < 8 && a - ref < -kTwoPi / 2; ++k) a += kTwoPi;
+    return a;
+}
+
 // Makes the periodic coordinates of a loop continuous: inverted samples are only known modulo
 // 2 pi. Starts from a seam sample (its side is known), or else from the first sample taken
 // within pi of the face's middle.
@@ -28,17 +41,13 @@ void unwrap_loop(FaceScratch& sc, uint32_t start, uint32_t n, const Surface& S, 
             anchor = 0;
             const float mid = axis == 0 ? 0.5f * (F.uv_min[0] + F.uv_max[0]) : 0.5f * (F.uv_min[1] + F.uv_max[1]);
             float& a = get(0);
-            while (a < mid - kTwoPi / 2) a += kTwoPi;
-            while (a >= mid + kTwoPi / 2) a -= kTwoPi;
+            a = wrap_near(a, mid);
         }
         float prev = get(anchor);
         for (uint32_t k = 1; k < n; ++k) {
             const uint32_t i = (anchor + k) % n;
             float& a = get(i);
-            if (!(sc.pinned[start + i] & bit)) {
-                while (a - prev > kTwoPi / 2) a -= kTwoPi;
-                while (a - prev < -kTwoPi / 2) a += kTwoPi;
-            }
+            if (!(sc.pinned[start + i] & bit)) a = wrap_near(a, prev);
             prev = a;
         }
     }

@@ -2,6 +2,7 @@
 
 #include "hal/print.h"
 
+#include <cmath>
 #include <cstring>
 
 namespace facet::pack {
@@ -23,11 +24,10 @@ namespace {
 
 using namespace facet::pack;
 
-bool finite(float f) {
-    uint32_t bits;
-    std::memcpy(&bits, &f, 4);
-    return (bits & 0x7F800000u) != 0x7F800000u; // exponent all ones: inf or NaN
-}
+// A value a CAD model can hold: not NaN, and within +-kMaxMagnitude (100 km in millimetres, or
+// a parameter that large), so that the geometry's squares and products stay far from float's
+// range and a corrupt pack cannot send the tessellation into overflow.
+bool finite(float f) { return std::fabs(f) <= kMaxMagnitude; }
 
 // A float that must hold a small non-negative integer (B-spline heads).
 bool whole(float f, uint32_t max, uint32_t& out) {
@@ -120,7 +120,7 @@ Status Pack::open(const void* data, uint32_t size, PackProblem& p) {
     if (pack::crc32(base + sizeof(Header), size - sizeof(Header)) != h->crc32) return fail(p, "CRC mismatch", 0, 0);
     for (int i = 0; i < 3; ++i) {
         if (!finite(h->bbox_min[i]) || !finite(h->bbox_max[i]) || h->bbox_min[i] > h->bbox_max[i]) {
-            return fail(p, "bounding box is not finite or inverted", 0, 0);
+            return fail(p, "bounding box is not finite, beyond +-1e8 or inverted", 0, 0);
         }
     }
     if (!finite(h->source_unit_mm) || !(h->source_unit_mm > 0)) return fail(p, "bad source unit", 0, 0);
@@ -163,7 +163,7 @@ Status Pack::open(const void* data, uint32_t size, PackProblem& p) {
 Status Pack::check_records(PackProblem& p) {
     constexpr uint32_t F = uint32_t(SectionId::Floats);
     for (uint32_t i = 0; i < floats_.size(); ++i) {
-        if (!finite(floats_[i])) return fail(p, "a parameter is NaN or infinite", F, i);
+        if (!finite(floats_[i])) return fail(p, "a parameter is NaN, infinite or beyond +-1e8", F, i);
     }
     auto params_ok = [&](uint32_t first, uint32_t count) {
         return uint64_t(first) + count <= floats_.size();
@@ -193,7 +193,11 @@ Status Pack::check_records(PackProblem& p) {
     constexpr uint32_t V = uint32_t(SectionId::Vertices);
     for (uint32_t i = 0; i < vertices_.size(); ++i) {
         for (float f : vertices_[i].p) {
-            if (!finite(f)) return fail(p, "vertex is NaN or infinite", V, i);
+            if (!finite(f)) return fail(p, "vertex is NaN, infinite or beyond +-1e8", V, i);
+        }
+        for (int k = 0; k < 3; ++k) {
+            const float x = vertices_[i].p[k];
+            if (x < header_->bbox_min[k] || x > header_->bbox_max[k]) return fail(p, "vertex outside the header's bounding box", V, i);
         }
     }
     constexpr uint32_t E = uint32_t(SectionId::Edges);
@@ -254,7 +258,7 @@ Status Pack::check_records(PackProblem& p) {
     for (uint32_t i = 0; i < instances_.size(); ++i) {
         if (instances_[i].shell >= shells_.size()) return fail(p, "shell index out of range", IN, i);
         for (float f : instances_[i].m) {
-            if (!finite(f)) return fail(p, "placement is NaN or infinite", IN, i);
+            if (!finite(f)) return fail(p, "placement is NaN, infinite or beyond +-1e8", IN, i);
         }
     }
     return Status::Ok;

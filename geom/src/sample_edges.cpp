@@ -129,7 +129,10 @@ bool sample_adaptive(const Pack& pack, const Curve& C, const Edge& E, const Tess
         if ((sag2 > tol2 || turned) && room && limit >= 2) {
             // k pieces: sag / k^2 <= tol, at least 2.
             int k = 2;
-            if (sag2 > 4 * tol2) k = int(std::ceil(std::sqrt(std::sqrt(sag2 / tol2)) * 1.05f));
+            if (sag2 > 4 * tol2) { // (in float first: the ratio is huge on a corrupt curve)
+                const float pieces = std::ceil(std::sqrt(std::sqrt(sag2 / tol2)) * 1.05f);
+                k = pieces < float(limit) ? int(pieces) : limit;
+            }
             k = std::clamp(k, 2, limit);
             {
                 --top; // the right end goes back on top of the new pieces
@@ -173,6 +176,7 @@ void thin_out(EdgeSamples& out, uint32_t first, float min_gap) {
 Status sample_edges(const Pack& pack, const TessOptions& opt, EdgeSamples& out) {
     out.used = 0;
     const auto edges = pack.edges();
+    if (!(opt.tolerance > 0 && opt.tolerance <= kMaxMagnitude) || !(opt.max_angle > 0)) return Status::OutOfRange;
     if (out.first.size() < edges.size() || out.count.size() < edges.size()) return Status::Full;
     Pool pool{out};
     for (uint32_t e = 0; e < edges.size(); ++e) {

@@ -203,6 +203,9 @@ FaceResult tessellate_face(const Pack& pack, uint32_t fi, const EdgeSamples& edg
     const pack::Face& F = pack.faces()[fi];
     const Surface& S = pack.surfaces()[F.surface];
     const char* why = "";
+    if (!(opt.tolerance > 0 && opt.tolerance <= pack::kMaxMagnitude) || !(opt.max_angle > 0)) {
+        return fail(Status::OutOfRange, "the tolerance and the angle must be positive");
+    }
 
     // 1. Loops into (u,v).
     uint32_t np = 0, nl = 0;

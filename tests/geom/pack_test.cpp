@@ -218,7 +218,7 @@ TEST(Pack, NanAndInfinityAnywhereAreRefused) {
         EXPECT_EQ(b.open(p, pr), Status::Corrupt);
         EXPECT_EQ(pr.section, uint32_t(SectionId::Floats));
         EXPECT_EQ(pr.index, 5u);
-        EXPECT_EQ(std::string(pr.message), "section Floats record 5: a parameter is NaN or infinite");
+        EXPECT_EQ(std::string(pr.message), "section Floats record 5: a parameter is NaN, infinite or beyond +-1e8");
     }
     {
         Buf b(cube_pack());
@@ -228,6 +228,24 @@ TEST(Pack, NanAndInfinityAnywhereAreRefused) {
         PackProblem pr;
         EXPECT_EQ(b.open(p, pr), Status::Corrupt);
         EXPECT_EQ(pr.section, uint32_t(SectionId::Vertices));
+    }
+    {
+        Buf b(cube_pack());
+        b.record<float>(SectionId::Floats, 2) = 2e8f; // finite, but no CAD model's
+        b.reseal();
+        Pack p;
+        PackProblem pr;
+        EXPECT_EQ(b.open(p, pr), Status::Corrupt);
+        EXPECT_EQ(pr.index, 2u);
+    }
+    {
+        Buf b(cube_pack());
+        b.record<Vertex>(SectionId::Vertices, 3).p[0] = 11; // outside the 10 mm box the header states
+        b.reseal();
+        Pack p;
+        PackProblem pr;
+        EXPECT_EQ(b.open(p, pr), Status::Corrupt);
+        EXPECT_STREQ(pr.what, "vertex outside the header's bounding box");
     }
     {
         Buf b(cube_pack());

@@ -157,7 +157,9 @@ int main(int argc, char** argv) {
     std::vector<std::string> failures;
     const auto t_start = std::chrono::steady_clock::now();
     EdgeSamples samples{ef, ec, et, ep};
-    if (sample_edges(pack, opt, samples) != Status::Ok) return die("edge sample pool full");
+    if (const Status st = sample_edges(pack, opt, samples); st != Status::Ok) {
+        return die(std::string("edge sampling: ") + (st == Status::Full ? "more samples than the pool holds" : "bad tolerance or angle"));
+    }
     for (uint32_t s = 0; s < pack.shells().size(); ++s) {
         const pack::Shell& sh = pack.shells()[s];
         Mesh mesh{mv, mi, muv};

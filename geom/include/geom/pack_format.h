@@ -18,6 +18,7 @@ constexpr uint32_t kNoIndex = 0xFFFFFFFFu;
 constexpr uint32_t kStraight = 0xFFFFFFFEu; // Edge::curve of a straight edge (no curve record)
 constexpr uint32_t kMaxSections = 16;
 constexpr uint32_t kMaxBytes = 64u << 20; // a pack larger than this is refused as corrupt
+constexpr float kMaxMagnitude = 1e8f;     // every float of a pack lies within +-this
 
 struct Header {
     char magic[4];
@@ -27,7 +28,7 @@ struct Header {
     uint32_t crc32;         // CRC-32 (IEEE) of bytes [header_bytes, total_bytes)
     uint32_t section_count; // entries in the section table that follows the header
     uint32_t flags;         // reserved, 0
-    float bbox_min[3];      // of every vertex and pole, in millimetres
+    float bbox_min[3];      // of every vertex (a reader checks they lie inside), in millimetres
     float bbox_max[3];
     float source_unit_mm;   // the STEP file's length unit (coordinates are converted to mm)
     uint32_t reserved[3];
