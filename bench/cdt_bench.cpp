@@ -73,19 +73,19 @@ template <typename Index>
 void run_facet(benchmark::State& state, const OwnedInput* in, cdt::LocateMode mode, const std::string& key) {
     HostArena<Index> arena(in->input.points() + cdt::kBoxVertices + 8);
     cdt::Cdt<Index> cdt(arena.view());
-    cdt::FaceReport rep;
     for (auto _ : state) {
-        const Status s = cdt::triangulate_face(cdt, in->input.face, mode, rep);
-        if (!ok(s)) {
-            state.SkipWithError(status_name(s));
+        const facet::Result s = cdt::triangulate_face(cdt, in->input.face, mode);
+        if (!s.ok()) {
+            state.SkipWithError(status_name(s.status));
             return;
         }
-        benchmark::DoNotOptimize(rep.inner);
+        benchmark::DoNotOptimize(cdt.triangle_count());
     }
     const uint64_t v = in->input.points();
+    const uint32_t inner = cdt.inner_count();
     state.counters["vertices"] = double(v);
-    state.counters["triangles"] = rep.inner;
-    results[key] = {0, v, rep.inner};
+    state.counters["triangles"] = inner;
+    results[key] = {0, v, inner};
 }
 
 #ifdef FACET_HAVE_CGAL

@@ -32,11 +32,10 @@ int main(int argc, char** argv) {
     std::vector<cdt::Triangle<uint32_t>> tri(cdt::triangles_for(v));
     std::vector<uint32_t> work(cdt::work_for(v)), order(v), minseq(v), ins(v), keys(v);
     cdt::Cdt<uint32_t> cdt({vert, tri, work, order, minseq, ins, keys});
-    cdt::FaceReport rep;
-    const Status s = cdt::triangulate_face(cdt, in.face, mode, rep);
+    const Status s = cdt::triangulate_face(cdt, in.face, mode).status;
     const cdt::CdtStats& st = cdt.stats();
     std::printf("%s: %s, %u vertices, %u inner triangles, walk steps %llu, flips %llu, cavities %llu (%llu triangles)\n",
-                argv[1], status_name(s), cdt.vertex_count(), rep.inner, (unsigned long long)st.walk_steps,
+                argv[1], status_name(s), cdt.vertex_count(), cdt.inner_count(), (unsigned long long)st.walk_steps,
                 (unsigned long long)st.flips, (unsigned long long)st.cavities, (unsigned long long)st.cavity_triangles);
     return ok(s) ? 0 : 1;
 }

@@ -167,8 +167,7 @@ bool run_facet(const std::vector<uint8_t>& bytes, Projectors& proj, double defle
     std::vector<uint32_t> aligned((bytes.size() + 3) / 4);
     std::memcpy(aligned.data(), bytes.data(), bytes.size());
     geom::Pack pack;
-    geom::PackProblem problem;
-    if (pack.open(aligned.data(), uint32_t(bytes.size()), problem) != Status::Ok) return false;
+    if (!pack.open(aligned.data(), uint32_t(bytes.size())).ok()) return false;
     geom::TessOptions opt;
     opt.tolerance = float(deflection);
     const size_t ne = pack.edges().size();
@@ -198,15 +197,15 @@ bool run_facet(const std::vector<uint8_t>& bytes, Projectors& proj, double defle
     m.faces_failed = 0;
     const auto t0 = std::chrono::steady_clock::now();
     geom::EdgeSamples samples{ef, ec, et, ep};
-    if (geom::sample_edges(pack, opt, samples) != Status::Ok) return false;
+    if (!geom::sample_edges(pack, opt, samples).ok()) return false;
     for (uint32_t part = 0; part < pack.shells().size(); ++part) {
         const pack::Shell& sh = pack.shells()[part];
         geom::Mesh mesh{mv, mi, {}};
         std::vector<uint32_t> face_of;
         for (uint32_t f = sh.first_face; f < sh.first_face + sh.face_count; ++f) {
             const uint32_t before = mesh.triangle_count;
-            const geom::FaceResult r = geom::tessellate_face(pack, f, samples, opt, sc, mesh);
-            if (!ok(r.status)) ++m.faces_failed;
+            geom::FaceStats st;
+            if (!geom::tessellate_face(pack, f, samples, opt, sc, mesh, st).ok()) ++m.faces_failed;
             for (uint32_t t = before; t < mesh.triangle_count; ++t) face_of.push_back(f);
         }
         for (uint32_t t = 0; t < mesh.triangle_count; ++t) {

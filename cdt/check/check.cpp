@@ -8,12 +8,9 @@
 namespace facet::cdt {
 namespace {
 
-template <typename... Args>
-CheckResult fail(const char* fmt, const Args&... args) {
-    CheckResult r;
-    r.ok = false;
-    format(r.message, sizeof r.message, fmt, args...);
-    return r;
+// A broken property of the triangulation (Corrupt), or of the checker's own scratch (Full).
+constexpr Result fail(const char* what, Place where = {}, Place at = {}) {
+    return Result::fail(Status::Corrupt, what, where, at);
 }
 
 int64_t orient_pts(Point a, Point b, Point c) { return orient2d(a.x, a.y, b.x, b.y, c.x, c.y); }
@@ -62,54 +59,54 @@ size_t check_scratch_words(size_t vertices, size_t triangles, std::span<const Se
 }
 
 template <typename Index>
-CheckResult check(const Cdt<Index>& cdt, std::span<const Segment> cons, bool check_inner,
+Result check(const Cdt<Index>& cdt, std::span<const Segment> cons, bool check_inner,
                   std::span<uint32_t> scratch) {
     const uint32_t nv = cdt.vertex_count(), nt = cdt.triangle_count();
     if (scratch.size() < check_scratch_words(nv, nt, cons)) {
-        return fail("checker: scratch of {} words is too small", scratch.size());
+        return Result::fail(Status::Full, "the checker's scratch is too small", {"words", uint32_t(scratch.size())});
     }
-    if (nv < 4) return fail("fewer than the 4 box vertices");
-    if (nt != 2 * nv - 6) return fail("Euler: {} triangles for {} vertices, expected {}", nt, nv, 2 * nv - 6);
+    if (nv < 4) return fail("fewer than the 4 box vertices", {"vertices", nv});
+    if (nt != 2 * nv - 6) return fail("Euler: not 2V - 6 triangles", {"triangles", nt}, {"vertices", nv});
 
     // Topology and orientation.
     uint32_t hull = 0;
     for (uint32_t t = 0; t < nt; ++t) {
         const Triangle<Index>& T = cdt.triangle(Index(t));
         for (int i = 0; i < 3; ++i) {
-            if (T.v[i] >= nv) return fail("triangle {} has vertex {} out of range", t, T.v[i]);
+            if (T.v[i] >= nv) return fail("a vertex index out of range", {"triangle", t}, {"vertex", uint32_t(T.v[i])});
         }
-        if (T.v[0] == T.v[1] || T.v[1] == T.v[2] || T.v[0] == T.v[2]) return fail("triangle {} repeats a vertex", t);
+        if (T.v[0] == T.v[1] || T.v[1] == T.v[2] || T.v[0] == T.v[2]) return fail("a vertex repeats", {"triangle", t});
         const int64_t o = orient_pts(cdt.vertex(T.v[0]).p, cdt.vertex(T.v[1]).p, cdt.vertex(T.v[2]).p);
-        if (o <= 0) return fail("triangle {} ({},{},{}) is {}", t, T.v[0], T.v[1], T.v[2], o == 0 ? "degenerate" : "clockwise");
+        if (o <= 0) return fail(o == 0 ? "degenerate" : "clockwise", {"triangle", t});
         for (int i = 0; i < 3; ++i) {
             const Index u = T.n[i];
             const Index a = T.v[next3(i)], b = T.v[prev3(i)];
             if (u == kNone<Index>) {
                 ++hull;
-                if (a >= kBoxVertices || b >= kBoxVertices) return fail("triangle {} edge {} has no neighbour but is not a box edge", t, i);
-                if (T.flag(i) != Flag::None) return fail("box edge of triangle {} is flagged", t);
+                if (a >= kBoxVertices || b >= kBoxVertices) return fail("no neighbour, but not a box edge", {"triangle", t}, {"edge", uint32_t(i)});
+                if (T.flag(i) != Flag::None) return fail("a box edge is flagged", {"triangle", t});
                 continue;
             }
-            if (u >= nt) return fail("triangle {} neighbour {} out of range", t, u);
+            if (u >= nt) return fail("a neighbour index out of range", {"triangle", t}, {"neighbour", uint32_t(u)});
             const Triangle<Index>& U = cdt.triangle(u);
             const int j = U.edge_to(Index(t));
-            if (j < 0) return fail("neighbours not symmetric: {} -> {} but not back", t, u);
-            if (U.v[next3(j)] != b || U.v[prev3(j)] != a) return fail("triangles {} and {} disagree on their shared edge", t, u);
+            if (j < 0) return fail("neighbours not symmetric (no link back)", {"triangle", t}, {"neighbour", uint32_t(u)});
+            if (U.v[next3(j)] != b || U.v[prev3(j)] != a) return fail("neighbours disagree on their shared edge", {"triangle", t}, {"neighbour", uint32_t(u)});
             const Flag f = T.flag(i), g = U.flag(j);
-            if (f != reverse(g)) return fail("edge {}-{}: flags {} and {} are not consistent", a, b, int(f), int(g));
+            if (f != reverse(g)) return fail("the two sides' constraint flags are not consistent", {"edge from vertex", uint32_t(a)}, {"to vertex", uint32_t(b)});
             if (f == Flag::None) {
                 const Point pa = cdt.vertex(T.v[i]).p, pb = cdt.vertex(a).p, pc = cdt.vertex(b).p;
                 const Point q = cdt.vertex(U.v[j]).p;
                 if (incircle_exact(pa.x, pa.y, pb.x, pb.y, pc.x, pc.y, q.x, q.y) > 0) {
-                    return fail("edge {}-{} (triangles {}, {}) is not locally Delaunay", a, b, t, u);
+                    return fail("an edge is not locally Delaunay", {"triangle", t}, {"neighbour", uint32_t(u)});
                 }
             }
         }
     }
-    if (hull != 4) return fail("{} hull edges, expected the 4 box edges", hull);
+    if (hull != 4) return fail("the hull is not the 4 box edges", {"hull edges", hull});
     for (uint32_t v = 0; v < nv; ++v) {
         const Index t = cdt.vertex(Index(v)).tri;
-        if (t >= nt || cdt.triangle(t).index_of(Index(v)) < 0) return fail("vertex {}: incident triangle {} does not hold it", v, t);
+        if (t >= nt || cdt.triangle(t).index_of(Index(v)) < 0) return fail("its incident triangle does not hold it", {"vertex", v}, {"triangle", uint32_t(t)});
     }
 
     // Constraints. Vertices sorted by position, for looking up segment end points.
@@ -121,7 +118,7 @@ CheckResult check(const Cdt<Index>& cdt, std::span<const Segment> cons, bool che
     };
     std::sort(byxy, byxy + nv, less_xy);
     for (uint32_t i = 1; i < nv; ++i) {
-        if (cdt.vertex(Index(byxy[i])).p == cdt.vertex(Index(byxy[i - 1])).p) return fail("vertices {} and {} coincide", byxy[i - 1], byxy[i]);
+        if (cdt.vertex(Index(byxy[i])).p == cdt.vertex(Index(byxy[i - 1])).p) return fail("two vertices coincide", {"vertex", byxy[i - 1]}, {"vertex", byxy[i]});
     }
     auto find = [&](Point p) -> int64_t {
         uint32_t lo = 0, hi = nv;
@@ -158,7 +155,7 @@ CheckResult check(const Cdt<Index>& cdt, std::span<const Segment> cons, bool che
         const Segment& sg = cons[s];
         if (sg.a == sg.b) continue;
         const int64_t a = find(sg.a), b = find(sg.b);
-        if (a < 0 || b < 0) return fail("constraint {}: an end point is not a vertex", s);
+        if (a < 0 || b < 0) return fail("an end point is not a vertex", {"constraint", uint32_t(s)});
         uint32_t cur = uint32_t(a);
         while (cur != uint32_t(b)) {
             // The outgoing Along edge of cur that runs along a->b toward b.
@@ -179,12 +176,12 @@ CheckResult check(const Cdt<Index>& cdt, std::span<const Segment> cons, bool che
                 used[e] = 1;
                 break;
             }
-            if (next < 0) return fail("constraint {} ({},{})->({},{}) is missing after vertex {}", s, sg.a.x, sg.a.y, sg.b.x, sg.b.y, cur);
+            if (next < 0) return fail("missing from the triangulation", {"constraint", uint32_t(s)}, {"after vertex", uint32_t(cur)});
             cur = uint32_t(next);
         }
     }
     for (uint32_t e = 0; e < ne; ++e) {
-        if (!used[e]) return fail("edge {}->{} is flagged but no input constraint covers it", edges[2 * e], edges[2 * e + 1]);
+        if (!used[e]) return fail("a flagged edge that no input constraint covers", {"edge from vertex", edges[2 * e]}, {"to vertex", edges[2 * e + 1]});
     }
 
     if (!check_inner) return {};
@@ -210,7 +207,7 @@ CheckResult check(const Cdt<Index>& cdt, std::span<const Segment> cons, bool che
         }
         if (pass == 0) {
             for (uint32_t k = 0; k < kSlabs; ++k) slab_start[k + 1] += slab_start[k];
-            if (slab_start[kSlabs] > room) return fail("checker: scratch too small for the slab index");
+            if (slab_start[kSlabs] > room) return Result::fail(Status::Full, "the checker's scratch is too small for the slab index");
         } else {
             for (uint32_t k = kSlabs; k > 0; --k) slab_start[k] = slab_start[k - 1];
             slab_start[0] = 0;
@@ -229,13 +226,13 @@ CheckResult check(const Cdt<Index>& cdt, std::span<const Segment> cons, bool che
         }
         const bool expect = wind > 0;
         if (expect != T.inner()) {
-            return fail("triangle {} ({},{},{}): inner is {}, winding number {} says {}", t, T.v[0], T.v[1], T.v[2], T.inner(), wind, expect);
+            return fail(T.inner() ? "marked inner, but its winding number says outside" : "not marked inner, but its winding number says inside", {"triangle", t});
         }
     }
     return {};
 }
 
-template CheckResult check(const Cdt<uint16_t>&, std::span<const Segment>, bool, std::span<uint32_t>);
-template CheckResult check(const Cdt<uint32_t>&, std::span<const Segment>, bool, std::span<uint32_t>);
+template Result check(const Cdt<uint16_t>&, std::span<const Segment>, bool, std::span<uint32_t>);
+template Result check(const Cdt<uint32_t>&, std::span<const Segment>, bool, std::span<uint32_t>);
 
 } // namespace facet::cdt

@@ -35,12 +35,11 @@ bool run(hal::Board& board, const char* name, const char* region, cdt::LocateMod
         return false;
     }
     cdt::Cdt<uint16_t> cdt(arena.view());
-    cdt::FaceReport rep;
     hal::measure_begin(con, region);
-    const Status s = cdt::triangulate_face(cdt, in.face, mode, rep);
+    const Result s = cdt::triangulate_face(cdt, in.face, mode);
     hal::measure_end(con, region);
-    if (!ok(s)) {
-        print(con, "cdt-bench: {} failed: {} at loop {} point {}\n", name, status_name(s), rep.loop, rep.point);
+    if (!s.ok()) {
+        print(con, "cdt-bench: {} failed: {} ({})\n", name, s, s.status);
         return false;
     }
     // The checker needs the constraint list.
@@ -57,13 +56,13 @@ bool run(hal::Board& board, const char* name, const char* region, cdt::LocateMod
         print(con, "cdt-bench: checker needs {} words, has {}\n", need, kScratchWords);
         return false;
     }
-    const cdt::CheckResult r = cdt::check(cdt, segs, true, std::span<uint32_t>(scratch, kScratchWords));
+    const Result r = cdt::check(cdt, segs, true, std::span<uint32_t>(scratch, kScratchWords));
     const cdt::CdtStats& st = cdt.stats();
     print(con, "@cdt {} points {} segments {} vertices {} triangles {} inner {} flips {} walk {} checker {}\n",
           region, in.points(), in.segments, cdt.vertex_count() - cdt::kBoxVertices, cdt.triangle_count(),
-          rep.inner, st.flips, st.walk_steps, r.ok ? "ok" : r.message);
+          cdt.inner_count(), st.flips, st.walk_steps, r);
     print(con, "@vertices {} {}\n", region, in.points());
-    return r.ok;
+    return r.ok();
 }
 
 } // namespace

@@ -1,5 +1,7 @@
 #include "pack_io.h"
 
+#include "hal/print.h"
+
 #include "geom/pack_file.h"
 #include "geom/pack_format.h"
 
@@ -55,10 +57,11 @@ bool load_pack_bytes(const std::vector<uint8_t>& file, LoadedPack& out, std::str
     }
     out.words.resize((size_t(h.pack_bytes) + 3) / 4);
     out.deflated = true;
-    const char* why = "";
-    if (inflate_pack_file({file.data(), file.size()}, {reinterpret_cast<uint8_t*>(out.words.data()), h.pack_bytes}, out.bytes,
-                          why) != Status::Ok) {
-        error = std::string("cannot inflate: ") + why;
+    const Result r = inflate_pack_file({file.data(), file.size()}, {reinterpret_cast<uint8_t*>(out.words.data()), h.pack_bytes}, out.bytes);
+    if (!r.ok()) {
+        char text[160];
+        describe(r, text, sizeof text);
+        error = std::string("cannot inflate: ") + text;
         return false;
     }
     return true;

@@ -23,22 +23,10 @@ inline bool turns_more(Vec3 a, Vec3 b, float cos_max) {
 // r (1 - cos(a/2)) = 2 r sin^2(a/4) <= tol. 2 pi and more when any chord will do.
 float max_arc_angle(float r, float tol);
 
-// How a face's (u,v) maps to the CDT's integer grid: u and v scaled by the surface's metric
-// (|Su|, |Sv| at the middle of the face), shifted and scaled so the face's extent spans
-// [-kGridHalf, kGridHalf].
-struct Grid {
-    float su = 1, sv = 1; // metric scale
-    float x0 = 0, y0 = 0; // scaled (u,v) of the grid's corner
-    float q = 1;          // grid units per scaled unit
-
-    cdt::Point to_grid(Vec2 uv) const;
-    Vec2 to_uv(cdt::Point g) const;
-};
-
 // Step 1: every sample of every coedge of every loop of the face into (u,v) (sc.uv, sc.xyz,
 // sc.pinned), loop after loop (sc.loop_sizes). np, nl: points and loops.
-Status map_loops(const Pack& pack, uint32_t face, const EdgeSamples& edges, FaceScratch& sc, uint32_t& np,
-                 uint32_t& nl, const char*& why);
+Result map_loops(const Pack& pack, uint32_t face, const EdgeSamples& edges, FaceScratch& sc, uint32_t& np,
+                 uint32_t& nl);
 
 // Step 3b: after quantization (sc.loop_points), drop the points that fall on their
 // predecessor's grid point and the tips of collinear U-turns (two pcurves ending a hair apart
@@ -46,12 +34,13 @@ Status map_loops(const Pack& pack, uint32_t face, const EdgeSamples& edges, Face
 // B of A -> B -> C becomes a sliver triangle A, B, C (sc.slivers), so that the face still uses
 // every edge sample its neighbour uses: the mesh stays watertight around features smaller
 // than the grid.
-Status clean_loops(FaceScratch& sc, uint32_t& np, uint32_t& nl, uint32_t& slivers, const char*& why);
+Result clean_loops(FaceScratch& sc, uint32_t& np, uint32_t& nl, uint32_t& slivers);
 
 // Step 5: adds surface points until every inner triangle is within the tolerance (see
-// refine.cpp). `point_of` maps CDT vertices to points (sc.uv/sc.xyz); `total` grows with
-// every point added.
-Status refine(const Pack& pack, uint32_t face, const TessOptions& opt, const Grid& grid, cdt::Cdt<uint16_t>& cdt,
-              FaceScratch& sc, uint32_t& total, const char*& why);
+// refine.cpp), about `units` of work at a time: Busy while unfinished. sc.mesh_of maps CDT
+// vertices to points (sc.uv/sc.xyz); state.total (the face's points so far) grows with every
+// point added. A fresh RefineState{} with total set starts a face.
+Result refine(const Pack& pack, uint32_t face, const TessOptions& opt, const Grid& grid, cdt::Cdt<uint16_t>& cdt,
+              FaceScratch& sc, RefineState& state, uint32_t units);
 
 } // namespace facet::geom::detail

@@ -75,8 +75,7 @@ bool same_vertex(const FaceScratch& sc, uint32_t i, Vec3 p, Vec2 uv, uint8_t pin
 
 } // namespace
 
-Status map_loops(const Pack& pack, uint32_t fi, const EdgeSamples& edges, FaceScratch& sc, uint32_t& np, uint32_t& nl,
-                 const char*& why) {
+Result map_loops(const Pack& pack, uint32_t fi, const EdgeSamples& edges, FaceScratch& sc, uint32_t& np, uint32_t& nl) {
     const pack::Face& F = pack.faces()[fi];
     const Surface& S = pack.surfaces()[F.surface];
     const bool elementary = is_elementary(S);
@@ -95,8 +94,7 @@ Status map_loops(const Pack& pack, uint32_t fi, const EdgeSamples& edges, FaceSc
             for (uint32_t k = 0; k < n; ++k) {
                 const uint32_t s = first + (CE.reversed() ? n - 1 - k : k);
                 if (np >= cap) {
-                    why = "more edge samples than the face scratch holds";
-                    return Status::Full;
+                    return Result::fail(Status::Full, "more edge samples than the face scratch holds", {"loop", l - F.first_loop});
                 }
                 Vec2 uv;
                 if (pcurve != kNoIndex) {
@@ -105,8 +103,7 @@ Status map_loops(const Pack& pack, uint32_t fi, const EdgeSamples& edges, FaceSc
                     Vec2 cand[2];
                     const int count = invert_candidates(pack, S, edges.p[s], F.uv_min, F.uv_max, cand);
                     if (count == 0) {
-                        why = "no pcurve on a free-form surface";
-                        return Status::Corrupt;
+                        return Result::fail(Status::Corrupt, "no pcurve on a free-form surface", {"loop", l - F.first_loop}, {"coedge", c - L.first_coedge});
                     }
                     uv = cand[0];
                     if (count == 2 && np > loop_start) {
@@ -166,17 +163,15 @@ Status map_loops(const Pack& pack, uint32_t fi, const EdgeSamples& edges, FaceSc
         if (n > 1 && any_periodic(S)) unwrap_loop(sc, loop_start, n, S, F);
         if (np > loop_start) {
             if (nl >= sc.loop_sizes.size()) {
-                why = "more loops than the face scratch holds";
-                return Status::Full;
+                return Result::fail(Status::Full, "more loops than the face scratch holds", {"loops", F.loop_count});
             }
             sc.loop_sizes[nl++] = np - loop_start;
         }
     }
     if (nl == 0) {
-        why = "no loop with any sample";
-        return Status::Degenerate;
+        return Result::fail(Status::Degenerate, "no loop with any sample");
     }
-    return Status::Ok;
+    return {};
 }
 
 namespace {
@@ -189,7 +184,7 @@ bool uturn(cdt::Point A, cdt::Point B, cdt::Point C) { // A -> B -> C folds stra
 
 } // namespace
 
-Status clean_loops(FaceScratch& sc, uint32_t& np, uint32_t& nl, uint32_t& slivers, const char*& why) {
+Result clean_loops(FaceScratch& sc, uint32_t& np, uint32_t& nl, uint32_t& slivers) {
     // Point B of A -> B -> C goes when it sits on A's grid point or when the loop folds back
     // at it; the triangle A, B, C (in loop order) keeps B's edges in the mesh.
     auto move = [&](uint32_t to, uint32_t from) {
@@ -208,8 +203,7 @@ Status clean_loops(FaceScratch& sc, uint32_t& np, uint32_t& nl, uint32_t& sliver
         return true;
     };
     auto full = [&]() {
-        why = "more collapsed loop points than the face scratch holds";
-        return Status::Full;
+        return Result::fail(Status::Full, "more collapsed loop points than the face scratch holds");
     };
     uint32_t read = 0, write = 0, kept_loops = 0;
     for (uint32_t l = 0; l < nl; ++l) {
@@ -243,10 +237,9 @@ Status clean_loops(FaceScratch& sc, uint32_t& np, uint32_t& nl, uint32_t& sliver
     np = write;
     nl = kept_loops;
     if (kept_loops == 0 && slivers == 0) {
-        why = "no loop with any area in (u,v)";
-        return Status::Degenerate;
+        return Result::fail(Status::Degenerate, "no loop with any area in (u,v)");
     }
-    return Status::Ok;
+    return {};
 }
 
 } // namespace facet::geom::detail

@@ -93,45 +93,38 @@ struct Output {
 };
 
 // One block's literals and copies, up to its end-of-block symbol.
-Status codes(Bits& in, Output& out, const Huffman& literal, const Huffman& distance, const char*& why) {
+Result codes(Bits& in, Output& out, const Huffman& literal, const Huffman& distance) {
     for (;;) {
         int sym = decode(in, literal);
         if (sym < 0) {
-            why = in.truncated ? "the DEFLATE stream ends early" : "an invalid literal/length code";
-            return Status::Corrupt;
+            return Result::fail(Status::Corrupt, in.truncated ? "the DEFLATE stream ends early" : "an invalid literal/length code");
         }
         if (sym < 256) {
             if (out.at == out.size) {
-                why = "the inflated data is larger than its space";
-                return Status::Full;
+                return Result::fail(Status::Full, "the inflated data is larger than its space");
             }
             out.data[out.at++] = uint8_t(sym);
             continue;
         }
-        if (sym == 256) return Status::Ok;
+        if (sym == 256) return {};
         sym -= 257;
         if (sym >= 29) {
-            why = "an invalid length symbol";
-            return Status::Corrupt;
+            return Result::fail(Status::Corrupt, "an invalid length symbol");
         }
         const uint32_t length = kLengthBase[sym] + in.take(kLengthExtra[sym]);
         const int dsym = decode(in, distance);
         if (dsym < 0 || dsym >= kDistanceCodes) {
-            why = in.truncated ? "the DEFLATE stream ends early" : "an invalid distance code";
-            return Status::Corrupt;
+            return Result::fail(Status::Corrupt, in.truncated ? "the DEFLATE stream ends early" : "an invalid distance code");
         }
         const uint32_t dist = kDistanceBase[dsym] + in.take(kDistanceExtra[dsym]);
         if (in.truncated) {
-            why = "the DEFLATE stream ends early";
-            return Status::Corrupt;
+            return Result::fail(Status::Corrupt, "the DEFLATE stream ends early");
         }
         if (dist > out.at) {
-            why = "a copy reaches back before the start";
-            return Status::Corrupt;
+            return Result::fail(Status::Corrupt, "a copy reaches back before the start");
         }
         if (length > out.size - out.at) {
-            why = "the inflated data is larger than its space";
-            return Status::Full;
+            return Result::fail(Status::Full, "the inflated data is larger than its space");
         }
         // Byte by byte: a copy may overlap what it writes (a run).
         uint8_t* to = out.data + out.at;
@@ -141,61 +134,54 @@ Status codes(Bits& in, Output& out, const Huffman& literal, const Huffman& dista
     }
 }
 
-Status stored(Bits& in, Output& out, const char*& why) {
+Result stored(Bits& in, Output& out) {
     in.to_byte();
     if (in.end - in.p < 4) {
-        why = "the DEFLATE stream ends early";
-        return Status::Corrupt;
+        return Result::fail(Status::Corrupt, "the DEFLATE stream ends early");
     }
     const uint32_t len = uint32_t(in.p[0]) | uint32_t(in.p[1]) << 8, nlen = uint32_t(in.p[2]) | uint32_t(in.p[3]) << 8;
     in.p += 4;
     if (len != (~nlen & 0xFFFFu)) {
-        why = "a stored block's length check fails";
-        return Status::Corrupt;
+        return Result::fail(Status::Corrupt, "a stored block's length check fails");
     }
     if (uint32_t(in.end - in.p) < len) {
-        why = "the DEFLATE stream ends early";
-        return Status::Corrupt;
+        return Result::fail(Status::Corrupt, "the DEFLATE stream ends early");
     }
     if (len > out.size - out.at) {
-        why = "the inflated data is larger than its space";
-        return Status::Full;
+        return Result::fail(Status::Full, "the inflated data is larger than its space");
     }
     for (uint32_t k = 0; k < len; ++k) out.data[out.at + k] = in.p[k];
     in.p += len;
     out.at += len;
-    return Status::Ok;
+    return {};
 }
 
-Status fixed(Bits& in, Output& out, const char*& why) {
+Result fixed(Bits& in, Output& out) {
     uint8_t length[kLiteralLengthCodes];
     Huffman literal, distance;
     for (int s = 0; s < kLiteralLengthCodes; ++s) length[s] = s < 144 ? 8 : s < 256 ? 9 : s < 280 ? 7 : 8;
     build(literal, length, kLiteralLengthCodes);
     for (int s = 0; s < kDistanceCodes; ++s) length[s] = 5;
     build(distance, length, kDistanceCodes);
-    return codes(in, out, literal, distance, why);
+    return codes(in, out, literal, distance);
 }
 
-Status dynamic(Bits& in, Output& out, const char*& why) {
+Result dynamic(Bits& in, Output& out) {
     static constexpr uint8_t kOrder[kCodeLengthCodes] = {16, 17, 18, 0, 8, 7, 9, 6, 10, 5, 11, 4, 12, 3, 13, 2, 14, 1, 15};
     const int nlen = int(in.take(5)) + 257, ndist = int(in.take(5)) + 1, ncode = int(in.take(4)) + 4;
     if (nlen > 286 || ndist > kDistanceCodes) {
-        why = "a block header has too many codes";
-        return Status::Corrupt;
+        return Result::fail(Status::Corrupt, "a block header has too many codes");
     }
     uint8_t length[286 + kDistanceCodes];
     for (int k = 0; k < kCodeLengthCodes; ++k) length[kOrder[k]] = k < ncode ? uint8_t(in.take(3)) : 0;
     Huffman lencode, distance;
     if (in.truncated || build(lencode, length, kCodeLengthCodes) != 0) {
-        why = in.truncated ? "the DEFLATE stream ends early" : "an incomplete code-length code";
-        return Status::Corrupt;
+        return Result::fail(Status::Corrupt, in.truncated ? "the DEFLATE stream ends early" : "an incomplete code-length code");
     }
     for (int k = 0; k < nlen + ndist;) {
         const int sym = decode(in, lencode);
         if (sym < 0) {
-            why = in.truncated ? "the DEFLATE stream ends early" : "an invalid code-length code";
-            return Status::Corrupt;
+            return Result::fail(Status::Corrupt, in.truncated ? "the DEFLATE stream ends early" : "an invalid code-length code");
         }
         if (sym < 16) {
             length[k++] = uint8_t(sym);
@@ -205,8 +191,7 @@ Status dynamic(Bits& in, Output& out, const char*& why) {
         int repeat;
         if (sym == 16) {
             if (k == 0) {
-                why = "a repeated code length with none before it";
-                return Status::Corrupt;
+                return Result::fail(Status::Corrupt, "a repeated code length with none before it");
             }
             value = length[k - 1];
             repeat = 3 + int(in.take(2));
@@ -216,56 +201,50 @@ Status dynamic(Bits& in, Output& out, const char*& why) {
             repeat = 11 + int(in.take(7));
         }
         if (k + repeat > nlen + ndist) {
-            why = "code lengths run past their count";
-            return Status::Corrupt;
+            return Result::fail(Status::Corrupt, "code lengths run past their count");
         }
         while (repeat--) length[k++] = value;
     }
     if (length[256] == 0) {
-        why = "a block without an end-of-block code";
-        return Status::Corrupt;
+        return Result::fail(Status::Corrupt, "a block without an end-of-block code");
     }
     // An incomplete code is allowed only when it has a single symbol (RFC 1951, 3.2.7).
     Huffman literal;
     int err = build(literal, length, nlen);
     if (err < 0 || (err > 0 && nlen - literal.count[0] != 1)) {
-        why = "an over-subscribed or incomplete literal/length code";
-        return Status::Corrupt;
+        return Result::fail(Status::Corrupt, "an over-subscribed or incomplete literal/length code");
     }
     err = build(distance, length + nlen, ndist);
     if (err < 0 || (err > 0 && ndist - distance.count[0] != 1)) {
-        why = "an over-subscribed or incomplete distance code";
-        return Status::Corrupt;
+        return Result::fail(Status::Corrupt, "an over-subscribed or incomplete distance code");
     }
-    return codes(in, out, literal, distance, why);
+    return codes(in, out, literal, distance);
 }
 
 } // namespace
 
-Status inflate(std::span<const uint8_t> in, std::span<uint8_t> out, uint32_t& written, const char*& why) {
+Result inflate(std::span<const uint8_t> in, std::span<uint8_t> out, uint32_t& written) {
     Bits bits{in.data(), in.data() + in.size()};
     Output o{out.data(), uint32_t(out.size())};
     written = 0;
-    why = "";
     bool last = false;
     while (!last) {
         last = bits.take(1) != 0;
         const uint32_t type = bits.take(2);
         if (bits.truncated) {
-            why = "the DEFLATE stream ends early";
-            return Status::Corrupt;
+            return Result::fail(Status::Corrupt, "the DEFLATE stream ends early");
         }
-        Status st;
+        Result st;
         switch (type) {
-        case 0: st = stored(bits, o, why); break;
-        case 1: st = fixed(bits, o, why); break;
-        case 2: st = dynamic(bits, o, why); break;
-        default: why = "an invalid block type"; return Status::Corrupt;
+        case 0: st = stored(bits, o); break;
+        case 1: st = fixed(bits, o); break;
+        case 2: st = dynamic(bits, o); break;
+        default: return Result::fail(Status::Corrupt, "an invalid block type");
         }
-        if (!ok(st)) return st;
+        if (!st.ok()) return st;
     }
     written = o.at;
-    return Status::Ok;
+    return {};
 }
 
 } // namespace facet::geom

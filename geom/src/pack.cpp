@@ -93,37 +93,42 @@ const char* section_name(uint32_t id) {
     return id < sizeof names / sizeof names[0] ? names[id] : "unknown";
 }
 
-Status Pack::fail(PackProblem& p, const char* what, uint32_t section, uint32_t index) {
-    p.what = what;
-    p.section = section;
-    p.index = index;
-    if (section == 0) format(p.message, sizeof p.message, "header: {}", what);
-    else format(p.message, sizeof p.message, "section {} record {}: {}", section_name(section), index, what);
-    *this = Pack{};
-    return Status::Corrupt;
+Place section_place(uint32_t id, uint32_t index) {
+    static const char* const kinds[] = {"header", "section Floats record", "section Surfaces record",
+                                        "section Curves3 record", "section Curves2 record", "section Vertices record",
+                                        "section Edges record", "section Coedges record", "section Loops record",
+                                        "section Faces record", "section Shells record", "section Instances record",
+                                        "section Colours record"};
+    if (id == 0) return {kinds[0]};
+    return {id < sizeof kinds / sizeof kinds[0] ? kinds[id] : "section record", index};
 }
 
-Status Pack::open(const void* data, uint32_t size, PackProblem& p) {
+Result Pack::fail(const char* what, uint32_t section, uint32_t index) {
+    *this = Pack{};
+    return Result::fail(Status::Corrupt, what, section_place(section, index));
+}
+
+Result Pack::open(const void* data, uint32_t size) {
     *this = Pack{};
     const uint8_t* base = static_cast<const uint8_t*>(data);
-    if (!data || (reinterpret_cast<uintptr_t>(data) & 3)) return fail(p, "pack is not 4-byte aligned", 0, 0);
-    if (size < sizeof(Header)) return fail(p, "shorter than the header (truncated)", 0, 0);
+    if (!data || (reinterpret_cast<uintptr_t>(data) & 3)) return fail("pack is not 4-byte aligned", 0, 0);
+    if (size < sizeof(Header)) return fail("shorter than the header (truncated)", 0, 0);
     const Header* h = reinterpret_cast<const Header*>(base);
-    if (std::memcmp(h->magic, kMagic, 4) != 0) return fail(p, "not a facet pack (bad magic)", 0, 0);
-    if (h->version != kVersion) return fail(p, "unsupported version", 0, 0);
-    if (h->header_bytes != sizeof(Header)) return fail(p, "unexpected header size", 0, 0);
-    if (h->total_bytes != size) return fail(p, "size does not match the header (truncated or padded)", 0, 0);
-    if (size > kMaxBytes) return fail(p, "larger than the 64 MiB limit", 0, 0);
-    if (h->section_count > kMaxSections) return fail(p, "too many sections", 0, 0);
+    if (std::memcmp(h->magic, kMagic, 4) != 0) return fail("not a facet pack (bad magic)", 0, 0);
+    if (h->version != kVersion) return fail("unsupported version", 0, 0);
+    if (h->header_bytes != sizeof(Header)) return fail("unexpected header size", 0, 0);
+    if (h->total_bytes != size) return fail("size does not match the header (truncated or padded)", 0, 0);
+    if (size > kMaxBytes) return fail("larger than the 64 MiB limit", 0, 0);
+    if (h->section_count > kMaxSections) return fail("too many sections", 0, 0);
     const uint64_t table_end = sizeof(Header) + uint64_t(h->section_count) * sizeof(SectionEntry);
-    if (table_end > size) return fail(p, "section table runs past the end", 0, 0);
-    if (pack::crc32(base + sizeof(Header), size - sizeof(Header)) != h->crc32) return fail(p, "CRC mismatch", 0, 0);
+    if (table_end > size) return fail("section table runs past the end", 0, 0);
+    if (pack::crc32(base + sizeof(Header), size - sizeof(Header)) != h->crc32) return fail("CRC mismatch", 0, 0);
     for (int i = 0; i < 3; ++i) {
         if (!finite(h->bbox_min[i]) || !finite(h->bbox_max[i]) || h->bbox_min[i] > h->bbox_max[i]) {
-            return fail(p, "bounding box is not finite, beyond +-1e8 or inverted", 0, 0);
+            return fail("bounding box is not finite, beyond +-1e8 or inverted", 0, 0);
         }
     }
-    if (!finite(h->source_unit_mm) || !(h->source_unit_mm > 0)) return fail(p, "bad source unit", 0, 0);
+    if (!finite(h->source_unit_mm) || !(h->source_unit_mm > 0)) return fail("bad source unit", 0, 0);
 
     const SectionEntry* table = reinterpret_cast<const SectionEntry*>(base + sizeof(Header));
     uint32_t seen = 0;
@@ -131,14 +136,14 @@ Status Pack::open(const void* data, uint32_t size, PackProblem& p) {
         const SectionEntry& s = table[i];
         const uint32_t id = s.id;
         if (id < 1 || id > uint32_t(SectionId::Colours)) continue; // unknown sections are skipped
-        if (seen & (1u << id)) return fail(p, "section appears twice", id, 0);
+        if (seen & (1u << id)) return fail("section appears twice", id, 0);
         seen |= 1u << id;
         static const uint32_t sizes[] = {0, 4, sizeof(Surface), sizeof(Curve), sizeof(Curve), sizeof(Vertex), sizeof(Edge),
                                          sizeof(Coedge), sizeof(Loop), sizeof(pack::Face), sizeof(Shell), sizeof(Instance), sizeof(Colour)};
-        if (s.record_bytes != sizes[id]) return fail(p, "record size does not match this reader", id, 0);
-        if (s.offset & 3) return fail(p, "section offset is not 4-byte aligned", id, 0);
+        if (s.record_bytes != sizes[id]) return fail("record size does not match this reader", id, 0);
+        if (s.offset & 3) return fail("section offset is not 4-byte aligned", id, 0);
         if (s.offset < table_end || uint64_t(s.offset) + uint64_t(s.count) * s.record_bytes > size) {
-            return fail(p, "section lies outside the pack (bad offset or count)", id, 0);
+            return fail("section lies outside the pack (bad offset or count)", id, 0);
         }
         const uint8_t* at = base + s.offset;
         switch (SectionId(id)) {
@@ -157,13 +162,13 @@ Status Pack::open(const void* data, uint32_t size, PackProblem& p) {
         }
     }
     header_ = h;
-    return check_records(p);
+    return check_records();
 }
 
-Status Pack::check_records(PackProblem& p) {
+Result Pack::check_records() {
     constexpr uint32_t F = uint32_t(SectionId::Floats);
     for (uint32_t i = 0; i < floats_.size(); ++i) {
-        if (!finite(floats_[i])) return fail(p, "a parameter is NaN, infinite or beyond +-1e8", F, i);
+        if (!finite(floats_[i])) return fail("a parameter is NaN, infinite or beyond +-1e8", F, i);
     }
     auto params_ok = [&](uint32_t first, uint32_t count) {
         return uint64_t(first) + count <= floats_.size();
@@ -171,97 +176,97 @@ Status Pack::check_records(PackProblem& p) {
     constexpr uint32_t S = uint32_t(SectionId::Surfaces);
     for (uint32_t i = 0; i < surfaces_.size(); ++i) {
         const Surface& s = surfaces_[i];
-        if (!params_ok(s.params, s.count)) return fail(p, "parameters lie outside the float pool", S, i);
+        if (!params_ok(s.params, s.count)) return fail("parameters lie outside the float pool", S, i);
         const uint32_t need = surface_param_count(s.type, floats_.data() + s.params, s.count);
-        if (need == 0) return fail(p, "unknown surface type or bad B-spline head", S, i);
-        if (need != s.count) return fail(p, "parameter count does not match the surface type", S, i);
+        if (need == 0) return fail("unknown surface type or bad B-spline head", S, i);
+        if (need != s.count) return fail("parameter count does not match the surface type", S, i);
         const bool swept = s.type == uint8_t(SurfaceType::Revolution) || s.type == uint8_t(SurfaceType::Extrusion);
-        if (swept ? s.ref >= curves3_.size() : s.ref != kNoIndex) return fail(p, "bad swept-curve reference", S, i);
+        if (swept ? s.ref >= curves3_.size() : s.ref != kNoIndex) return fail("bad swept-curve reference", S, i);
     }
     for (int dim = 3; dim >= 2; --dim) {
         const std::span<const Curve> cs = dim == 3 ? curves3_ : curves2_;
         const uint32_t id = uint32_t(dim == 3 ? SectionId::Curves3 : SectionId::Curves2);
         for (uint32_t i = 0; i < cs.size(); ++i) {
             const Curve& c = cs[i];
-            if (c.dim != dim) return fail(p, "curve dimension does not match its section", id, i);
-            if (!params_ok(c.params, c.count)) return fail(p, "parameters lie outside the float pool", id, i);
+            if (c.dim != dim) return fail("curve dimension does not match its section", id, i);
+            if (!params_ok(c.params, c.count)) return fail("parameters lie outside the float pool", id, i);
             const uint32_t need = curve_param_count(c.type, c.dim, floats_.data() + c.params, c.count);
-            if (need == 0) return fail(p, "unknown curve type or bad B-spline head", id, i);
-            if (need != c.count) return fail(p, "parameter count does not match the curve type", id, i);
+            if (need == 0) return fail("unknown curve type or bad B-spline head", id, i);
+            if (need != c.count) return fail("parameter count does not match the curve type", id, i);
         }
     }
     constexpr uint32_t V = uint32_t(SectionId::Vertices);
     for (uint32_t i = 0; i < vertices_.size(); ++i) {
         for (float f : vertices_[i].p) {
-            if (!finite(f)) return fail(p, "vertex is NaN, infinite or beyond +-1e8", V, i);
+            if (!finite(f)) return fail("vertex is NaN, infinite or beyond +-1e8", V, i);
         }
         for (int k = 0; k < 3; ++k) {
             const float x = vertices_[i].p[k];
-            if (x < header_->bbox_min[k] || x > header_->bbox_max[k]) return fail(p, "vertex outside the header's bounding box", V, i);
+            if (x < header_->bbox_min[k] || x > header_->bbox_max[k]) return fail("vertex outside the header's bounding box", V, i);
         }
     }
     constexpr uint32_t E = uint32_t(SectionId::Edges);
     for (uint32_t i = 0; i < edges_.size(); ++i) {
         const Edge& e = edges_[i];
-        if (e.curve != kNoIndex && e.curve != kStraight && e.curve >= curves3_.size()) return fail(p, "curve index out of range", E, i);
-        if (e.v0 >= vertices_.size() || e.v1 >= vertices_.size()) return fail(p, "vertex index out of range", E, i);
+        if (e.curve != kNoIndex && e.curve != kStraight && e.curve >= curves3_.size()) return fail("curve index out of range", E, i);
+        if (e.v0 >= vertices_.size() || e.v1 >= vertices_.size()) return fail("vertex index out of range", E, i);
         if (!finite(e.t0) || !finite(e.t1) || !finite(e.max_sag) || e.max_sag < 0 || !finite(e.tolerance) || e.tolerance < 0) {
-            return fail(p, "bad parameter range, tolerance or sag limit", E, i);
+            return fail("bad parameter range, tolerance or sag limit", E, i);
         }
     }
     constexpr uint32_t C = uint32_t(SectionId::Coedges);
     for (uint32_t i = 0; i < coedges_.size(); ++i) {
         const Coedge& c = coedges_[i];
-        if (c.edge() >= edges_.size()) return fail(p, "edge index out of range", C, i);
-        if (c.seam() > Seam::VHigh) return fail(p, "bad seam side", C, i);
+        if (c.edge() >= edges_.size()) return fail("edge index out of range", C, i);
+        if (c.seam() > Seam::VHigh) return fail("bad seam side", C, i);
     }
     constexpr uint32_t L = uint32_t(SectionId::Loops);
     for (uint32_t i = 0; i < loops_.size(); ++i) {
         const Loop& l = loops_[i];
         if (l.coedge_count == 0 || uint64_t(l.first_coedge) + l.coedge_count > coedges_.size()) {
-            return fail(p, "coedge range out of range or empty", L, i);
+            return fail("coedge range out of range or empty", L, i);
         }
     }
     constexpr uint32_t FA = uint32_t(SectionId::Faces);
     for (uint32_t i = 0; i < faces_.size(); ++i) {
         const pack::Face& f = faces_[i];
-        if (f.surface >= surfaces_.size()) return fail(p, "surface index out of range", FA, i);
-        if (f.loop_count == 0 || uint64_t(f.first_loop) + f.loop_count > loops_.size()) return fail(p, "loop range out of range or empty", FA, i);
-        if (f.colour != kNoIndex && f.colour >= colours_.size()) return fail(p, "colour index out of range", FA, i);
-        if (f.reversed > 1) return fail(p, "bad orientation flag", FA, i);
+        if (f.surface >= surfaces_.size()) return fail("surface index out of range", FA, i);
+        if (f.loop_count == 0 || uint64_t(f.first_loop) + f.loop_count > loops_.size()) return fail("loop range out of range or empty", FA, i);
+        if (f.colour != kNoIndex && f.colour >= colours_.size()) return fail("colour index out of range", FA, i);
+        if (f.reversed > 1) return fail("bad orientation flag", FA, i);
         // Pcurves follow the face's coedges, so its loops' coedges must follow each other; only
         // elementary surfaces may leave pcurves out (they are inverted analytically).
         if (f.first_pcurve == kNoIndex) {
-            if (surfaces_[f.surface].type > uint8_t(SurfaceType::Torus)) return fail(p, "a free-form face has no pcurves", FA, i);
+            if (surfaces_[f.surface].type > uint8_t(SurfaceType::Torus)) return fail("a free-form face has no pcurves", FA, i);
         } else {
             uint64_t next = loops_[f.first_loop].first_coedge;
             for (uint32_t l = f.first_loop; l < f.first_loop + f.loop_count; ++l) {
-                if (loops_[l].first_coedge != next) return fail(p, "the face's coedges are not consecutive", FA, i);
+                if (loops_[l].first_coedge != next) return fail("the face's coedges are not consecutive", FA, i);
                 next += loops_[l].coedge_count;
             }
             if (uint64_t(f.first_pcurve) + (next - loops_[f.first_loop].first_coedge) > curves2_.size()) {
-                return fail(p, "pcurve range out of range", FA, i);
+                return fail("pcurve range out of range", FA, i);
             }
         }
         for (int k = 0; k < 2; ++k) {
-            if (!finite(f.uv_min[k]) || !finite(f.uv_max[k]) || f.uv_min[k] > f.uv_max[k]) return fail(p, "bad (u,v) bounds", FA, i);
+            if (!finite(f.uv_min[k]) || !finite(f.uv_max[k]) || f.uv_min[k] > f.uv_max[k]) return fail("bad (u,v) bounds", FA, i);
         }
     }
     constexpr uint32_t SH = uint32_t(SectionId::Shells);
     for (uint32_t i = 0; i < shells_.size(); ++i) {
         const Shell& s = shells_[i];
-        if (uint64_t(s.first_face) + s.face_count > faces_.size()) return fail(p, "face range out of range", SH, i);
-        if (s.colour != kNoIndex && s.colour >= colours_.size()) return fail(p, "colour index out of range", SH, i);
-        if (s.closed > 1) return fail(p, "bad closed flag", SH, i);
+        if (uint64_t(s.first_face) + s.face_count > faces_.size()) return fail("face range out of range", SH, i);
+        if (s.colour != kNoIndex && s.colour >= colours_.size()) return fail("colour index out of range", SH, i);
+        if (s.closed > 1) return fail("bad closed flag", SH, i);
     }
     constexpr uint32_t IN = uint32_t(SectionId::Instances);
     for (uint32_t i = 0; i < instances_.size(); ++i) {
-        if (instances_[i].shell >= shells_.size()) return fail(p, "shell index out of range", IN, i);
+        if (instances_[i].shell >= shells_.size()) return fail("shell index out of range", IN, i);
         for (float f : instances_[i].m) {
-            if (!finite(f)) return fail(p, "placement is NaN, infinite or beyond +-1e8", IN, i);
+            if (!finite(f)) return fail("placement is NaN, infinite or beyond +-1e8", IN, i);
         }
     }
-    return Status::Ok;
+    return {};
 }
 
 } // namespace facet::geom

@@ -8,6 +8,10 @@ namespace facet::geom {
 
 using namespace facet::pack;
 
+namespace {
+constexpr Place kFile{"pack file"};
+} // namespace
+
 PackFileKind pack_file_kind(const void* data, uint32_t available) {
     if (!data || available < 4) return PackFileKind::Unknown;
     if (std::memcmp(data, kMagic, 4) == 0) return PackFileKind::Pack;
@@ -37,67 +41,58 @@ uint32_t pack_file_bytes(const void* data, uint32_t available) {
     return n <= available ? uint32_t(n) : 0;
 }
 
-Status inflate_pack_file(std::span<const uint8_t> file, std::span<uint8_t> out, uint32_t& bytes, const char*& why) {
+Result inflate_pack_file(std::span<const uint8_t> file, std::span<uint8_t> out, uint32_t& bytes) {
     bytes = 0;
     if (pack_file_kind(file.data(), uint32_t(file.size())) != PackFileKind::Deflated || file.size() < sizeof(DeflatedHead)) {
-        why = "not a deflated pack";
-        return Status::Corrupt;
+        return Result::fail(Status::Corrupt, "not a deflated pack", kFile);
     }
     DeflatedHead h;
     std::memcpy(&h, file.data(), sizeof h);
     if (uint64_t(sizeof h) + h.stream_bytes > file.size()) {
-        why = "the deflated pack is shorter than its head says (truncated)";
-        return Status::Corrupt;
+        return Result::fail(Status::Corrupt, "the deflated pack is shorter than its head says (truncated)", kFile);
     }
     if (h.pack_bytes > kMaxBytes) {
-        why = "the pack would be larger than the 64 MiB limit";
-        return Status::Corrupt;
+        return Result::fail(Status::Corrupt, "the pack would be larger than the 64 MiB limit", kFile);
     }
     if (h.pack_bytes > out.size()) {
-        why = "the inflated pack does not fit its memory";
-        return Status::Full;
+        return Result::fail(Status::Full, "the inflated pack does not fit its memory", kFile);
     }
     uint32_t written = 0;
-    if (Status st = inflate(file.subspan(sizeof h, h.stream_bytes), out.first(h.pack_bytes), written, why); !ok(st)) return st;
+    if (Result r = inflate(file.subspan(sizeof h, h.stream_bytes), out.first(h.pack_bytes), written); !r.ok()) return r.within(kFile);
     if (written != h.pack_bytes) {
-        why = "the inflated pack is shorter than its head says";
-        return Status::Corrupt;
+        return Result::fail(Status::Corrupt, "the inflated pack is shorter than its head says", kFile);
     }
     bytes = written;
-    return Status::Ok;
+    return {};
 }
 
-Status unpack_in_place(uint8_t* region, uint32_t capacity, uint32_t loaded, uint32_t& bytes, const char*& why) {
+Result unpack_in_place(uint8_t* region, uint32_t capacity, uint32_t loaded, uint32_t& bytes) {
     bytes = 0;
     if (loaded > capacity) loaded = capacity;
     const uint32_t file = pack_file_bytes(region, loaded);
     switch (pack_file_kind(region, loaded)) {
     case PackFileKind::Unknown:
-        why = "no pack here (neither FPK1 nor FPZ1)";
-        return Status::Corrupt;
+        return Result::fail(Status::Corrupt, "no pack here (neither FPK1 nor FPZ1)", kFile);
     case PackFileKind::Pack:
         if (file == 0) {
-            why = "the pack is larger than the memory it was loaded into, or truncated";
-            return Status::Corrupt;
+            return Result::fail(Status::Corrupt, "the pack is larger than the memory it was loaded into, or truncated", kFile);
         }
         bytes = file;
-        return Status::Ok;
+        return {};
     case PackFileKind::Deflated: break;
     }
     if (file == 0) {
-        why = "the deflated pack is larger than the memory it was loaded into, or truncated";
-        return Status::Corrupt;
+        return Result::fail(Status::Corrupt, "the deflated pack is larger than the memory it was loaded into, or truncated", kFile);
     }
     DeflatedHead h;
     std::memcpy(&h, region, sizeof h);
     if (uint64_t(h.pack_bytes) + file > capacity) {
-        why = "the pack and its deflated form together do not fit the pack memory";
-        return Status::Full;
+        return Result::fail(Status::Full, "the pack and its deflated form together do not fit the pack memory", kFile);
     }
     // The stream to the end of the region, then inflated to the start: the two never overlap.
     uint8_t* moved = region + (capacity - file);
     std::memmove(moved, region, file);
-    return inflate_pack_file({moved, file}, {region, capacity - file}, bytes, why);
+    return inflate_pack_file({moved, file}, {region, capacity - file}, bytes);
 }
 
 } // namespace facet::geom

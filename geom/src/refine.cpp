@@ -159,8 +159,11 @@ struct Context {
     // where it matters, and no derivatives to evaluate).
     float freeform_error(Vec3 x, Vec2 uv, Vec3 n) const { return dot(n, x - eval_surface_point(pack, S, uv.x, uv.y)); }
 
-    TriangleMeasure measure(const Tri& T) const {
+    // The measure of T; `cost` gets the work it took in units (1, or 8 when it sampled the
+    // surface at seven points).
+    TriangleMeasure measure(const Tri& T, uint32_t& cost) const {
         TriangleMeasure m{key_of(T), 0, {0, 0}};
+        cost = 1;
         Vec3 P[3];
         Vec2 UV[3];
         cdt::Point G[3];
@@ -204,6 +207,7 @@ struct Context {
         // is so small that the model cannot reach the target anywhere, that bound will do.
         float e[kSamples];
         float largest = 0;
+        cost = 8;
         for (int k = 0; k < 3; ++k) {
             const int i = (k + 1) % 3, j = (k + 2) % 3;
             float wa[3] = {0, 0, 0}, wb[3] = {0, 0, 0};
@@ -238,38 +242,55 @@ struct Context {
 
 } // namespace
 
-Status refine(const Pack& pack, uint32_t fi, const TessOptions& opt, const Grid& grid, cdt::Cdt<uint16_t>& cdt,
-              FaceScratch& sc, uint32_t& total, const char*& why) {
+Result refine(const Pack& pack, uint32_t fi, const TessOptions& opt, const Grid& grid, cdt::Cdt<uint16_t>& cdt,
+              FaceScratch& sc, RefineState& st, uint32_t units) {
     const pack::Face& F = pack.faces()[fi];
     const Surface& S = pack.surfaces()[F.surface];
-    if (S.type == uint8_t(SurfaceType::Plane)) return Status::Ok; // flat: nothing to add
+    if (S.type == uint8_t(SurfaceType::Plane)) return {}; // flat: nothing to add
     const Context ctx(pack, F, S, opt.tolerance, sc, cdt);
     if (sc.measured.size() < cdt::triangles_for(cdt.vertex_capacity())) {
-        why = "the refinement's triangle measures are fewer than the arena's triangles";
-        return Status::Full;
+        return Result::fail(Status::Full, "the refinement's triangle measures are fewer than the arena's triangles");
     }
-    uint32_t cleared = 0; // measured[] slots reset for this face
-    for (int round = 0; round < kMaxRounds; ++round) {
-        const uint16_t nt = cdt.triangle_count();
-        for (; cleared < nt; ++cleared) sc.measured[cleared].key = 0;
-        float worst = 0;
-        for (uint16_t t = 0; t < nt; ++t) {
-            const Tri& T = cdt.triangle(t);
-            if (!T.inner()) continue;
-            TriangleMeasure& m = sc.measured[t];
-            if (m.key != key_of(T)) m = ctx.measure(T);
-            worst = std::max(worst, m.error2);
-        }
+    const Result busy = Result::fail(Status::Busy, "refining");
+    uint32_t spent = 0;
+    while (spent < units) {
+        if (!st.inserting) {
+            // A round: measure the triangles that changed, and find the worst.
+            if (st.next == 0) {
+                if (st.round >= kMaxRounds) return {};
+                st.triangles = cdt.triangle_count();
+                for (; st.cleared < st.triangles; ++st.cleared) sc.measured[st.cleared].key = 0;
+                st.worst = 0;
+            }
+            for (; st.next < st.triangles && spent < units; ++st.next) {
+                const Tri& T = cdt.triangle(uint16_t(st.next));
+                if (!T.inner()) continue;
+                TriangleMeasure& m = sc.measured[st.next];
+                if (m.key != key_of(T)) {
+                    uint32_t cost;
+                    m = ctx.measure(T, cost);
+                    spent += cost;
+                }
+                st.worst = std::max(st.worst, m.error2);
+            }
+            if (st.next < st.triangles) return busy;
 #ifdef FACET_DEBUG_REFINE
-        std::fprintf(stderr, "face %u round %d worst %g target %g tris %u\n", fi, round, std::sqrt(worst), std::sqrt(ctx.target2), nt);
+            std::fprintf(stderr, "face %u round %u worst %g target %g tris %u\n", fi, st.round, std::sqrt(st.worst),
+                         std::sqrt(ctx.target2), st.triangles);
 #endif
-        if (worst <= ctx.target2) return Status::Ok;
-        const float threshold = std::max(ctx.target2, 0.25f * worst); // half the worst deviation
-        uint32_t added = 0;
-        for (uint16_t t = 0; t < nt; ++t) {
-            const Tri& T = cdt.triangle(t);
-            TriangleMeasure& m = sc.measured[t];
-            if (!T.inner() || m.key != key_of(T) || m.error2 <= threshold) continue; // changed since measured
+            if (st.worst <= ctx.target2) return {};
+            st.threshold = std::max(ctx.target2, 0.25f * st.worst); // half the worst deviation
+            st.added = 0;
+            st.next = 0;
+            st.inserting = true;
+            continue;
+        }
+        // Then a point into every triangle (of those at the round's start) above the threshold.
+        for (; st.next < st.triangles && spent < units; ++st.next) {
+            const Tri& T = cdt.triangle(uint16_t(st.next));
+            TriangleMeasure& m = sc.measured[st.next];
+            if (!T.inner() || m.key != key_of(T) || m.error2 <= st.threshold) continue; // changed since measured
+            spent += 4;
             const uint16_t from = T.v[0];
             // Never onto a vertex or a constrained edge (that would split a loop's edge in this
             // face only): then the centroid, else give up on this triangle.
@@ -290,35 +311,33 @@ Status refine(const Pack& pack, uint32_t fi, const TessOptions& opt, const Grid&
             }
             if (!placed) {
 #ifdef FACET_DEBUG_REFINE
-                std::fprintf(stderr, "  not placed: tri %u err %g\n", t, std::sqrt(m.error2));
+                std::fprintf(stderr, "  not placed: tri %u err %g\n", st.next, std::sqrt(m.error2));
 #endif
                 m.error2 = 0; // nowhere to put a point: leave it as it is
                 continue;
             }
-            if (total >= sc.uv.size() || total >= sc.xyz.size()) {
-                why = "refinement needs more points than the face scratch holds";
-                return Status::Full;
+            if (st.total >= sc.uv.size() || st.total >= sc.xyz.size()) {
+                return Result::fail(Status::Full, "refinement needs more points than the face scratch holds", {"points", st.total});
             }
             uint16_t v;
             const Status ins = cdt.insert_point(at, v, from);
-            if (ins == Status::Full) {
-                why = "more points than the CDT arena holds";
-                return Status::Full;
-            }
+            if (ins == Status::Full) return Result::fail(Status::Full, "more points than the CDT arena holds", {"points", st.total});
             if (!ok(ins) || v < cdt.vertex_count() - 1) continue; // not a new vertex
             const Vec2 uv = grid.to_uv(at);
-            sc.uv[total] = uv;
-            sc.xyz[total] = eval_surface(pack, S, uv.x, uv.y).p;
-            sc.mesh_of[v] = total++;
-            ++added;
+            sc.uv[st.total] = uv;
+            sc.xyz[st.total] = eval_surface(pack, S, uv.x, uv.y).p;
+            sc.mesh_of[v] = st.total++;
+            ++st.added;
         }
-        if (!added) return Status::Ok;
-        if (!ok(cdt.mark_inner())) {
-            why = "refinement broke the loops";
-            return Status::Degenerate;
-        }
+        if (st.next < st.triangles) return busy;
+        if (!st.added) return {};
+        if (!ok(cdt.mark_inner())) return Result::fail(Status::Degenerate, "refinement broke the loops");
+        spent += 1 + st.triangles / 64;
+        ++st.round;
+        st.next = 0;
+        st.inserting = false;
     }
-    return Status::Ok;
+    return busy;
 }
 
 } // namespace facet::geom::detail

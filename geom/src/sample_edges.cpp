@@ -173,13 +173,18 @@ void thin_out(EdgeSamples& out, uint32_t first, float min_gap) {
 
 } // namespace
 
-Status sample_edges(const Pack& pack, const TessOptions& opt, EdgeSamples& out) {
-    out.used = 0;
+Result sample_edges(const Pack& pack, const TessOptions& opt, EdgeSamples& out, uint32_t begin, uint32_t end) {
     const auto edges = pack.edges();
-    if (!(opt.tolerance > 0 && opt.tolerance <= kMaxMagnitude) || !(opt.max_angle > 0)) return Status::OutOfRange;
-    if (out.first.size() < edges.size() || out.count.size() < edges.size()) return Status::Full;
+    if (begin == 0) out.used = 0;
+    if (!(opt.tolerance > 0 && opt.tolerance <= kMaxMagnitude) || !(opt.max_angle > 0)) {
+        return Result::fail(Status::OutOfRange, "the tolerance and the angle must be positive");
+    }
+    if (out.first.size() < edges.size() || out.count.size() < edges.size()) {
+        return Result::fail(Status::Full, "more edges than the sample index holds", {"edges", uint32_t(edges.size())});
+    }
+    if (end > edges.size()) end = uint32_t(edges.size());
     Pool pool{out};
-    for (uint32_t e = 0; e < edges.size(); ++e) {
+    for (uint32_t e = begin; e < end; ++e) {
         const Edge& E = edges[e];
         // A thin face's two sides must not cross: its edges' sag stays under their limit.
         TessOptions edge_opt = opt;
@@ -203,12 +208,16 @@ Status sample_edges(const Pack& pack, const TessOptions& opt, EdgeSamples& out) 
             default: room = sample_adaptive(pack, C, E, edge_opt, pool); break;
             }
         }
-        if (!room) return Status::Full;
+        if (!room) return Result::fail(Status::Full, "more edge samples than the pool holds", {"edge", e});
         if (out.used - out.first[e] > 2) thin_out(out, out.first[e], opt.tolerance / 16);
-        if (out.used - out.first[e] > 0xFFFF) return Status::Full;
+        if (out.used - out.first[e] > 0xFFFF) return Result::fail(Status::Full, "more than 65,535 samples on one edge", {"edge", e});
         out.count[e] = uint16_t(out.used - out.first[e]);
     }
-    return Status::Ok;
+    return {};
+}
+
+Result sample_edges(const Pack& pack, const TessOptions& opt, EdgeSamples& out) {
+    return sample_edges(pack, opt, out, 0, uint32_t(pack.edges().size()));
 }
 
 } // namespace facet::geom

@@ -142,13 +142,13 @@ uint32_t add_vertex(const FaceNormals& normals, Mesh& mesh, Vec3 p, Vec2 uv) {
 }
 
 // Appends a triangle wound as the face's normal (the caller checked the room).
-void add_triangle(const pack::Face& F, Mesh& mesh, const uint32_t id[3], FaceResult& res) {
+void add_triangle(const pack::Face& F, Mesh& mesh, const uint32_t id[3], FaceStats& stats) {
     uint32_t* out = &mesh.indices[mesh.triangle_count * 3];
     out[0] = id[0];
     out[1] = F.reversed ? id[2] : id[1];
     out[2] = F.reversed ? id[1] : id[2];
     ++mesh.triangle_count;
-    ++res.triangles;
+    ++stats.triangles;
 }
 
 // One point: the same bits (compared as integers: float compares are library calls on a
@@ -161,7 +161,7 @@ bool equal(Vec3 p, Vec3 q) {
 // The CDT's inner triangles and their vertices, each vertex once, in the order first used.
 // sc.mesh_of maps CDT vertices to points on the way in and to mesh vertices on the way out.
 Status emit_triangles(const FaceNormals& normals, const pack::Face& F, const cdt::Cdt<uint16_t>& cdt, FaceScratch& sc,
-                      Mesh& mesh, FaceResult& res) {
+                      Mesh& mesh, FaceStats& stats) {
     constexpr uint32_t kAssigned = 0x80000000u; // mesh_of[v]: a mesh vertex, not a point
     auto position = [&](uint16_t v) {
         const uint32_t m = sc.mesh_of[v];
@@ -185,38 +185,53 @@ Status emit_triangles(const FaceNormals& normals, const pack::Face& F, const cdt
             }
             id[k] = m & ~kAssigned;
         }
-        add_triangle(F, mesh, id, res);
+        add_triangle(F, mesh, id, stats);
     }
     return Status::Ok;
 }
 
 } // namespace
 
-FaceResult tessellate_face(const Pack& pack, uint32_t fi, const EdgeSamples& edges, const TessOptions& opt,
-                           FaceScratch& sc, Mesh& mesh) {
-    FaceResult res;
-    auto fail = [&](Status s, const char* why) {
-        res.status = s;
-        res.reason = why;
-        return res;
-    };
-    const pack::Face& F = pack.faces()[fi];
+void FaceJob::start(const Pack& pack, uint32_t face, const EdgeSamples& edges, const TessOptions& opt, FaceScratch& sc,
+                    Mesh& mesh) {
+    pack_ = &pack, edges_ = &edges, opt_ = opt, sc_ = &sc, mesh_ = &mesh, face_ = face;
+    stage_ = Stage::Map;
+    np_ = nl_ = 0;
+    base_vertex_ = mesh.vertex_count, base_triangle_ = mesh.triangle_count;
+    grid_ = {};
+    refine_ = {};
+    cdt_ = cdt::Cdt<uint16_t>(sc.arena);
+    stats_ = {};
+    result_ = Result::fail(Status::Busy, "tessellating");
+}
+
+Result FaceJob::fail(Result r) {
+    stage_ = Stage::Failed;
+    mesh_->vertex_count = base_vertex_;
+    mesh_->triangle_count = base_triangle_;
+    result_ = r.within({"face", face_});
+    return result_;
+}
+
+// Steps 1 to 3: the loops into (u,v), the metric, the CDT grid.
+Result FaceJob::prepare() {
+    const Pack& pack = *pack_;
+    FaceScratch& sc = *sc_;
+    const pack::Face& F = pack.faces()[face_];
     const Surface& S = pack.surfaces()[F.surface];
-    const char* why = "";
-    if (!(opt.tolerance > 0 && opt.tolerance <= pack::kMaxMagnitude) || !(opt.max_angle > 0)) {
-        return fail(Status::OutOfRange, "the tolerance and the angle must be positive");
+    if (!(opt_.tolerance > 0 && opt_.tolerance <= pack::kMaxMagnitude) || !(opt_.max_angle > 0)) {
+        return Result::fail(Status::OutOfRange, "the tolerance and the angle must be positive");
     }
 
     // 1. Loops into (u,v).
-    uint32_t np = 0, nl = 0;
-    if (Status s = detail::map_loops(pack, fi, edges, sc, np, nl, why); !ok(s)) return fail(s, why);
+    if (Result r = detail::map_loops(pack, face_, *edges_, sc, np_, nl_); !r.ok()) return r;
 
     // 2. Metric scale at the middle of the face: |Su| and |Sv|, so that distances in the scaled
     //    (u,v) are distances on the surface, then each direction weighted by the square root
     //    of the surface's bending along it, so that equal distances mean equal deviations of a
     //    chord: Delaunay triangles are then stretched along the flatter direction (a torus
     //    fillet's triangles run around its ring), as the deviation allows.
-    detail::Grid grid;
+    detail::Grid& grid = grid_;
     const float um = 0.5f * (F.uv_min[0] + F.uv_max[0]), vm = 0.5f * (F.uv_min[1] + F.uv_max[1]);
     const SurfacePoint mid = eval_surface(pack, S, um, vm);
     grid.su = length(mid.du), grid.sv = length(mid.dv);
@@ -235,66 +250,97 @@ FaceResult tessellate_face(const Pack& pack, uint32_t fi, const EdgeSamples& edg
     //    fastest predicate tier. Every point refinement adds lies inside the loops.
     float x1 = -1e30f, y1 = -1e30f;
     grid.x0 = grid.y0 = 1e30f;
-    for (uint32_t i = 0; i < np; ++i) {
+    for (uint32_t i = 0; i < np_; ++i) {
         grid.x0 = std::min(grid.x0, sc.uv[i].x * grid.su), x1 = std::max(x1, sc.uv[i].x * grid.su);
         grid.y0 = std::min(grid.y0, sc.uv[i].y * grid.sv), y1 = std::max(y1, sc.uv[i].y * grid.sv);
     }
     const float extent = std::max(x1 - grid.x0, y1 - grid.y0);
-    if (!(extent > 0) || !std::isfinite(extent)) return fail(Status::Degenerate, "the face has no extent in (u,v)");
+    if (!(extent > 0) || !std::isfinite(extent)) return Result::fail(Status::Degenerate, "the face has no extent in (u,v)");
     grid.q = float(2 * detail::kGridHalf) / extent;
-    for (uint32_t i = 0; i < np; ++i) sc.loop_points[i] = grid.to_grid(sc.uv[i]);
-    uint32_t slivers = 0;
-    if (Status s = detail::clean_loops(sc, np, nl, slivers, why); !ok(s)) return fail(s, why);
-    res.slivers = slivers;
+    for (uint32_t i = 0; i < np_; ++i) sc.loop_points[i] = grid.to_grid(sc.uv[i]);
+    return detail::clean_loops(sc, np_, nl_, stats_.slivers);
+}
 
-    const uint32_t base_vertex = mesh.vertex_count, base_triangle = mesh.triangle_count;
-    auto rollback = [&](const char* reason) {
-        mesh.vertex_count = base_vertex;
-        mesh.triangle_count = base_triangle;
-        return fail(Status::Full, reason);
-    };
-    const FaceNormals normals(pack, S, F);
-    if (nl > 0) {
-        // 4. Triangulate the loops.
-        cdt::Cdt<uint16_t> cdt(sc.arena);
-        cdt::FaceReport rep;
-        const cdt::FaceInput in{{sc.loop_points.data(), np}, {sc.loop_sizes.data(), nl}, {}};
-        res.points = np;
-        const Status st = cdt::triangulate_face(cdt, in, cdt::kDefaultLocateMode, rep);
-        if (!ok(st)) {
-            return fail(st, st == Status::Full ? "more points than the CDT arena holds"
-                            : st == Status::Crossing ? "its loops cross in (u,v)"
-                            : st == Status::Degenerate ? "a loop is open or runs the wrong way in (u,v)"
-                                                        : "triangulation failed");
+Result FaceJob::run(uint32_t units) {
+    if (stage_ == Stage::Done || stage_ == Stage::Failed) return result_;
+    const Pack& pack = *pack_;
+    FaceScratch& sc = *sc_;
+    Mesh& mesh = *mesh_;
+    const pack::Face& F = pack.faces()[face_];
+    const Result busy = Result::fail(Status::Busy, "tessellating");
+    uint32_t spent = 0;
+    if (stage_ == Stage::Map) {
+        if (Result r = prepare(); !r.ok()) return fail(r);
+        spent += 1 + np_ / 16;
+        stats_.points = np_;
+        if (nl_ == 0) {
+            stage_ = Stage::Emit; // slivers alone
+        } else {
+            // 4. Triangulate the loops.
+            const cdt::FaceInput in{{sc.loop_points.data(), np_}, {sc.loop_sizes.data(), nl_}, {}};
+            if (Result r = builder_.start(in, cdt::kDefaultLocateMode); !r.ok()) return fail(r);
+            spent += 1 + np_ / 16;
+            stage_ = Stage::Triangulate;
         }
-        if (sc.mesh_of.size() < cdt.vertex_capacity()) return fail(Status::Full, "more vertices than the face scratch holds");
-        for (uint32_t v = 0; v < cdt.vertex_count(); ++v) sc.mesh_of[v] = UINT32_MAX;
-        for (uint32_t i = 0; i < np; ++i) { // point -> vertex after triangulate_face; repeats keep the first
+        if (spent >= units) return busy;
+    }
+    if (stage_ == Stage::Triangulate) {
+        const Result r = builder_.run(units - spent);
+        if (r.status == Status::Busy) return busy;
+        if (!r.ok()) return fail(r);
+        if (sc.mesh_of.size() < cdt_.vertex_capacity()) {
+            return fail(Result::fail(Status::Full, "more vertices than the face scratch holds"));
+        }
+        for (uint32_t v = 0; v < cdt_.vertex_count(); ++v) sc.mesh_of[v] = UINT32_MAX;
+        for (uint32_t i = 0; i < np_; ++i) { // point -> vertex after triangulation; repeats keep the first
             const uint32_t v = sc.arena.keys[i];
-            if (v < cdt.vertex_count() && sc.mesh_of[v] == UINT32_MAX) sc.mesh_of[v] = i;
+            if (v < cdt_.vertex_count() && sc.mesh_of[v] == UINT32_MAX) sc.mesh_of[v] = i;
         }
-
+        refine_ = {};
+        refine_.total = np_;
+        stage_ = Stage::Refine;
+        return busy;
+    }
+    if (stage_ == Stage::Refine) {
         // 5. Refine until every inner triangle is within the tolerance.
-        uint32_t total = np;
-        if (Status s = detail::refine(pack, fi, opt, grid, cdt, sc, total, why); !ok(s)) return fail(s, why);
-        res.points = total;
-
-        // 6. Output: the inner triangles and their vertices (each once, in the order first
-        //    used). Loop points keep their edge sample's 3D point, shared with the neighbour.
-        if (Status s = emit_triangles(normals, F, cdt, sc, mesh, res); !ok(s)) return rollback("the mesh is full");
+        const Result r = detail::refine(pack, face_, opt_, grid_, cdt_, sc, refine_, units);
+        if (r.status == Status::Busy) return busy;
+        if (!r.ok()) return fail(r);
+        stats_.points = refine_.total;
+        stage_ = Stage::Emit;
+        return busy;
+    }
+    // 6. Output: the inner triangles and their vertices (each once, in the order first used).
+    //    Loop points keep their edge sample's 3D point, shared with the neighbour.
+    const FaceNormals normals(pack, pack.surfaces()[F.surface], F);
+    if (nl_ > 0 && !ok(emit_triangles(normals, F, cdt_, sc, mesh, stats_))) {
+        return fail(Result::fail(Status::Full, "the mesh is full"));
     }
     // The slivers of collapsed loop points (their own vertices; none with two equal corners).
-    for (uint32_t k = 0; k < slivers; ++k) {
+    for (uint32_t k = 0; k < stats_.slivers; ++k) {
         const Sliver& v = sc.slivers[k];
         if (equal(v.p[0], v.p[1]) || equal(v.p[1], v.p[2]) || equal(v.p[2], v.p[0])) continue;
         if (mesh.vertex_count + 3 > mesh.vertices.size() || (mesh.triangle_count + 1) * 3 > mesh.indices.size()) {
-            return rollback("the mesh is full");
+            return fail(Result::fail(Status::Full, "the mesh is full"));
         }
         uint32_t id[3];
         for (int c = 0; c < 3; ++c) id[c] = add_vertex(normals, mesh, v.p[c], v.uv[c]);
-        add_triangle(F, mesh, id, res);
+        add_triangle(F, mesh, id, stats_);
     }
-    return res;
+    stage_ = Stage::Done;
+    result_ = {};
+    return result_;
+}
+
+Result tessellate_face(const Pack& pack, uint32_t face, const EdgeSamples& edges, const TessOptions& opt, FaceScratch& scratch,
+                       Mesh& mesh, FaceStats& stats) {
+    FaceJob job;
+    job.start(pack, face, edges, opt, scratch, mesh);
+    Result r;
+    while ((r = job.run(UINT32_MAX)).status == Status::Busy) {
+    }
+    stats = job.stats();
+    return r;
 }
 
 } // namespace facet::geom

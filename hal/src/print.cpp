@@ -35,6 +35,30 @@ uint64_t magnitude(int64_t v) {
     return v < 0 ? ~static_cast<uint64_t>(v) + 1 : static_cast<uint64_t>(v);
 }
 
+void put_place(Sink& s, const Place& p) {
+    put_str(s, p.kind);
+    if (p.index != Place::kNoIndex) {
+        put(s, ' ');
+        put_unsigned(s, p.index, 10, 1);
+    }
+}
+
+void put_result(Sink& s, const Result& r) {
+    if (r.ok()) {
+        put_str(s, "ok");
+        return;
+    }
+    if (r.where.kind) {
+        put_place(s, r.where);
+        if (r.at.kind) {
+            put_str(s, ", ");
+            put_place(s, r.at);
+        }
+        put_str(s, ": ");
+    }
+    put_str(s, r.what && *r.what ? r.what : status_name(r.status));
+}
+
 void put_arg(Sink& s, const Arg& a) {
     switch (a.kind) {
     case Arg::Kind::Signed:
@@ -43,6 +67,7 @@ void put_arg(Sink& s, const Arg& a) {
         break;
     case Arg::Kind::Unsigned: put_unsigned(s, a.u, 10, 1); break;
     case Arg::Kind::String: put_str(s, a.s); break;
+    case Arg::Kind::Result: put_result(s, *a.r); break;
     case Arg::Kind::Hex:
         put_str(s, "0x");
         put_unsigned(s, a.u, 16, a.digits);
@@ -84,3 +109,9 @@ void format_args(Sink& s, const char* fmt, const Arg* args, size_t count) {
 }
 
 } // namespace facet::fmt_detail
+
+namespace facet {
+
+size_t describe(const Result& r, char* buf, size_t size) { return format(buf, size, "{}", r); }
+
+} // namespace facet

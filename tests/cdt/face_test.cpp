@@ -29,11 +29,11 @@ uint32_t triangulate_all_modes(const Face& face) {
     uint32_t inner = 0;
     for (LocateMode m : kModes) {
         FaceRun<Index> r = triangulate<Index>(face, m);
-        EXPECT_EQ(r.status, Status::Ok) << name(m) << ": " << status_name(r.status) << " at loop " << r.report.loop << " point " << r.report.point;
+        EXPECT_EQ(r.status, Status::Ok) << name(m) << ": " << status_name(r.status) << " at loop " << r.result.where.index << " point " << r.result.at.index;
         if (!ok(r.status)) return 0;
         EXPECT_TRUE(check_cdt(*r.cdt, face.segments(), true)) << name(m);
-        if (m == LocateMode::Sequential) inner = r.report.inner;
-        else EXPECT_EQ(r.report.inner, inner) << name(m) << ": the inner count is topological";
+        if (m == LocateMode::Sequential) inner = r.inner;
+        else EXPECT_EQ(r.inner, inner) << name(m) << ": the inner count is topological";
     }
     return inner;
 }
@@ -116,7 +116,7 @@ TEST(Face, Lattice317WithItsBoundaryAsLoop) {
     FaceRun<uint32_t> r = triangulate<uint32_t>(f);
     ASSERT_EQ(r.status, Status::Ok);
     EXPECT_EQ(r.cdt->vertex_count(), 4u + n * n);
-    EXPECT_EQ(r.report.inner, 2u * (n - 1) * (n - 1));
+    EXPECT_EQ(r.inner, 2u * (n - 1) * (n - 1));
     EXPECT_TRUE(check_cdt(*r.cdt, f.segments(), true));
 }
 
@@ -188,7 +188,8 @@ TEST(Face, CrossingLoopsAreReportedWithTheirPlace) {
     f.add_loop({{500, -100}, {600, 500}, {400, 500}}); // crosses the outer loop
     FaceRun<uint16_t> r = triangulate<uint16_t>(f);
     EXPECT_EQ(r.status, Status::Crossing);
-    EXPECT_EQ(r.report.loop, 1u);
+    EXPECT_STREQ(r.result.where.kind, "loop");
+    EXPECT_EQ(r.result.where.index, 1u);
     Face outer;
     outer.add_loop(rectangle(0, 0, 1000, 1000, 2));
     EXPECT_TRUE(check_cdt(*r.cdt, outer.segments(), false)) << "still valid: the outer loop, nothing of the crossing one";
@@ -200,8 +201,33 @@ TEST(Face, TooManyPointsForTheArenaIsFullNotACrash) {
     for (int i = 0; i < 100; ++i) f.interior.push_back({i * 7 + 1, i * 9 + 1});
     HostArena<uint16_t> arena(40);
     Cdt<uint16_t> cdt(arena.view());
-    FaceReport rep;
-    EXPECT_EQ(triangulate_face(cdt, f.input(), LocateMode::Sequential, rep), Status::Full);
+    EXPECT_EQ(triangulate_face(cdt, f.input(), LocateMode::Sequential).status, Status::Full);
+}
+
+TEST(Face, InPiecesTheSameTriangulationAsAtOnce) {
+    // FaceBuilder::run(units) stops after `units` insertions and goes on where it stopped: one
+    // unit at a time must give the very same arrays as one call, in every mode.
+    const Face f = random_face(5, 120, 200);
+    for (LocateMode m : kModes) {
+        FaceRun<uint32_t> whole = triangulate<uint32_t>(f, m);
+        ASSERT_EQ(whole.status, Status::Ok) << name(m);
+        HostArena<uint32_t> arena(f.points() + kBoxVertices + 16);
+        Cdt<uint32_t> cdt(arena.view());
+        FaceBuilder<uint32_t> b(cdt);
+        ASSERT_TRUE(b.start(f.input(), m).ok()) << name(m);
+        Result r;
+        uint32_t pieces = 0;
+        while ((r = b.run(1)).status == Status::Busy) ++pieces;
+        ASSERT_TRUE(r.ok()) << name(m) << ": " << r.what;
+        EXPECT_GE(pieces, f.points()) << name(m) << ": a piece per point at least";
+        ASSERT_EQ(cdt.vertex_count(), whole.cdt->vertex_count()) << name(m);
+        ASSERT_EQ(cdt.triangle_count(), whole.cdt->triangle_count()) << name(m);
+        for (uint32_t t = 0; t < cdt.triangle_count(); ++t) {
+            const Triangle<uint32_t>& a = cdt.triangle(t);
+            const Triangle<uint32_t>& w = whole.cdt->triangle(t);
+            ASSERT_TRUE(a.v[0] == w.v[0] && a.v[1] == w.v[1] && a.v[2] == w.v[2] && a.flags == w.flags) << name(m) << " triangle " << t;
+        }
+    }
 }
 
 TEST(Face, HilbertIndexStepsBetweenNeighbouringCells) {

@@ -2,6 +2,7 @@
 // Test harness for cdt/: heap-backed arenas of any size, face builders, and a one-call
 // "triangulate and run the independent checker" helper.
 #include "cdt/check.h"
+#include "hal/print.h"
 #include "cdt/face.h"
 
 #include <gtest/gtest.h>
@@ -58,9 +59,11 @@ std::vector<Point> circle(int32_t cx, int32_t cy, int32_t r, int n, bool ccw);
 template <typename Index>
 ::testing::AssertionResult check_cdt(const Cdt<Index>& cdt, const std::vector<Segment>& segs, bool inner) {
     std::vector<uint32_t> scratch(check_scratch_words(cdt.vertex_count(), cdt.triangle_count(), std::span<const Segment>(segs)));
-    const CheckResult r = check(cdt, std::span<const Segment>(segs), inner, std::span<uint32_t>(scratch));
-    if (r.ok) return ::testing::AssertionSuccess();
-    return ::testing::AssertionFailure() << r.message;
+    const Result r = check(cdt, std::span<const Segment>(segs), inner, std::span<uint32_t>(scratch));
+    if (r.ok()) return ::testing::AssertionSuccess();
+    char message[192];
+    describe(r, message, sizeof message);
+    return ::testing::AssertionFailure() << message;
 }
 
 // Triangulates `face` with a fresh arena sized for it and checks the result.
@@ -68,8 +71,9 @@ template <typename Index = uint32_t>
 struct FaceRun {
     std::unique_ptr<HostArena<Index>> arena;
     std::unique_ptr<Cdt<Index>> cdt;
-    FaceReport report;
-    Status status;
+    Result result;         // what triangulate_face returned
+    Status status;         // its code
+    uint32_t inner = 0;    // inner triangles
 };
 
 template <typename Index = uint32_t>
@@ -77,7 +81,9 @@ FaceRun<Index> triangulate(const Face& face, LocateMode mode = LocateMode::Seque
     FaceRun<Index> r;
     r.arena = std::make_unique<HostArena<Index>>(face.points() + kBoxVertices + extra);
     r.cdt = std::make_unique<Cdt<Index>>(r.arena->view());
-    r.status = triangulate_face(*r.cdt, face.input(), mode, r.report);
+    r.result = triangulate_face(*r.cdt, face.input(), mode);
+    r.status = r.result.status;
+    r.inner = r.cdt->inner_count();
     return r;
 }
 

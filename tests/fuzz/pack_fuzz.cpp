@@ -31,11 +31,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         h->crc32 = pack::crc32(bytes + sizeof(pack::Header), uint32_t(size - sizeof(pack::Header)));
     }
     uint32_t pack_bytes = 0;
-    const char* why = "";
-    if (geom::unpack_in_place(bytes, capacity, uint32_t(size), pack_bytes, why) != Status::Ok) return 0;
+    if (!geom::unpack_in_place(bytes, capacity, uint32_t(size), pack_bytes).ok()) return 0;
     geom::Pack pack;
-    geom::PackProblem problem;
-    if (pack.open(bytes, pack_bytes, problem) != Status::Ok) return 0;
+    if (!pack.open(bytes, pack_bytes).ok()) return 0;
     uint64_t sum = 0;
     for (const auto& f : pack.faces()) {
         const auto& s = pack.surfaces()[f.surface];

@@ -52,8 +52,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     h->total_bytes = uint32_t(size);
     h->crc32 = pack::crc32(bytes + sizeof(pack::Header), uint32_t(size - sizeof(pack::Header)));
     Pack pack;
-    PackProblem problem;
-    if (pack.open(bytes, uint32_t(size), problem) != Status::Ok) return 0;
+    if (!pack.open(bytes, uint32_t(size)).ok()) return 0;
 
     static Buffers b; // large: allocated once
     const size_t ne = pack.edges().size();
@@ -64,15 +63,17 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     EdgeSamples samples{ef, ec, et, ep};
     TessOptions opt;
     opt.tolerance = default_tolerance(pack);
-    if (sample_edges(pack, opt, samples) != Status::Ok) return 0;
+    if (!sample_edges(pack, opt, samples).ok()) return 0;
 
     FaceScratch sc{{b.av, b.at, b.aw, b.ao, b.am, b.ai, b.ak}, b.lp, b.ls, b.uvs, b.pinned, b.xyz, b.mesh_of, b.measured, b.slivers};
     Mesh mesh{b.mv, b.mi, b.muv};
     for (uint32_t f = 0; f < pack.faces().size() && f < kFaces; ++f) {
         const uint32_t v0 = mesh.vertex_count, t0 = mesh.triangle_count;
-        const FaceResult r = tessellate_face(pack, f, samples, opt, sc, mesh);
-        if (!ok(r.status)) {
-            if (!r.reason || !r.reason[0]) std::abort(); // a failure names its reason
+        FaceStats st;
+        const Result r = tessellate_face(pack, f, samples, opt, sc, mesh, st);
+        if (!r.ok()) {
+            if (!r.what || !r.what[0] || !r.where.kind) std::abort(); // a failure names its reason and face
+            if (mesh.vertex_count != v0 || mesh.triangle_count != t0) std::abort(); // and leaves the mesh as it was
             continue;
         }
         for (uint32_t t = t0; t < mesh.triangle_count; ++t)

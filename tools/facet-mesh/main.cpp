@@ -10,6 +10,7 @@
 // a non-manifold edge more than two. A closed shell (a solid) is watertight when it has
 // neither and no face failed.
 #include "geom/deviation.h"
+#include "hal/print.h"
 #include "geom/pack.h"
 #include "geom/tessellate.h"
 #include "mesh_topology.h"
@@ -114,8 +115,11 @@ int main(int argc, char** argv) {
     std::string error;
     if (!load_pack_file(in, file, error)) return die(std::string(in) + ": " + error);
     Pack pack;
-    PackProblem problem;
-    if (pack.open(file.data(), file.bytes, problem) != Status::Ok) return die(std::string(in) + ": " + problem.message);
+    char text[200];
+    if (const Result r = pack.open(file.data(), file.bytes); !r.ok()) {
+        describe(r, text, sizeof text);
+        return die(std::string(in) + ": " + text);
+    }
 
     TessOptions opt;
     opt.tolerance = tolerance > 0 ? tolerance : default_tolerance(pack);
@@ -157,8 +161,9 @@ int main(int argc, char** argv) {
     std::vector<std::string> failures;
     const auto t_start = std::chrono::steady_clock::now();
     EdgeSamples samples{ef, ec, et, ep};
-    if (const Status st = sample_edges(pack, opt, samples); st != Status::Ok) {
-        return die(std::string("edge sampling: ") + (st == Status::Full ? "more samples than the pool holds" : "bad tolerance or angle"));
+    if (const Result r = sample_edges(pack, opt, samples); !r.ok()) {
+        describe(r, text, sizeof text);
+        return die(std::string("edge sampling: ") + text);
     }
     for (uint32_t s = 0; s < pack.shells().size(); ++s) {
         const pack::Shell& sh = pack.shells()[s];
@@ -166,18 +171,20 @@ int main(int argc, char** argv) {
         ShellMesh& out_shell = shells[s];
         for (uint32_t fi = sh.first_face; fi < sh.first_face + sh.face_count; ++fi) {
             const uint32_t before = mesh.triangle_count;
-            const FaceResult r = tessellate_face(pack, fi, samples, opt, sc, mesh);
+            FaceStats st;
+            const Result r = tessellate_face(pack, fi, samples, opt, sc, mesh, st);
             ++faces;
-            if (!ok(r.status)) {
+            if (!r.ok()) {
                 ++failed;
-                ++reasons[r.reason];
-                failures.push_back("face " + std::to_string(fi) + ": " + r.reason + " (" + status_name(r.status) + ")");
+                ++reasons[r.what];
+                describe(r, text, sizeof text);
+                failures.push_back(std::string(text) + " (" + status_name(r.status) + ")");
                 continue;
             }
             for (uint32_t t = before; t < mesh.triangle_count; ++t) out_shell.face.push_back(fi);
             if (per_face) {
                 std::printf("face %u: surface type %u, %u points, %u triangles\n", fi,
-                            pack.surfaces()[pack.faces()[fi].surface].type, r.points, r.triangles);
+                            pack.surfaces()[pack.faces()[fi].surface].type, st.points, st.triangles);
             }
         }
         out_shell.v.assign(mv.begin(), mv.begin() + mesh.vertex_count);

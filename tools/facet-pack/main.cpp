@@ -8,6 +8,7 @@
 // of edges with their 3D curves and pcurves, and the colours. Exits non-zero with a clear
 // message on unreadable or empty input.
 #include "geom/pack.h"
+#include "hal/print.h"
 #include "occt_to_pack.h"
 #include "pack_io.h"
 #include "pack_writer.h"
@@ -58,8 +59,11 @@ int check(const char* path) {
     std::string error;
     if (!geom::load_pack_file(path, file, error)) return die(std::string(path) + ": " + error);
     geom::Pack pack;
-    geom::PackProblem problem;
-    if (pack.open(file.data(), file.bytes, problem) != Status::Ok) return die(std::string(path) + ": " + problem.message);
+    if (const Result r = pack.open(file.data(), file.bytes); !r.ok()) {
+        char text[160];
+        describe(r, text, sizeof text);
+        return die(std::string(path) + ": " + text);
+    }
     std::printf("%s: valid pack, %zu faces, %zu edges, %zu shells, %zu instances, %u bytes", path, pack.faces().size(),
                 pack.edges().size(), pack.shells().size(), pack.instances().size(), file.bytes);
     if (file.deflated) std::printf(" (deflated file: %u bytes)", file.file_bytes);

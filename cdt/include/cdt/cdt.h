@@ -67,6 +67,11 @@ public:
     // Read access.
     Index vertex_count() const { return nv_; }
     Index triangle_count() const { return nt_; }
+    Index inner_count() const { // triangles inside the loops (after mark_inner)
+        Index n = 0;
+        for (Index t = 0; t < nt_; ++t) n = Index(n + a_.triangles[t].inner());
+        return n;
+    }
     const Vertex<Index>& vertex(Index i) const { return a_.vertices[i]; }
     const Triangle<Index>& triangle(Index i) const { return a_.triangles[i]; }
     Index vertex_capacity() const { return Index(a_.vertices.size()); }

@@ -10,7 +10,8 @@
 //   - every unconstrained edge locally Delaunay
 //   - (after mark_inner) the inner set equal to a point-in-polygon classification of each
 //     triangle's centroid by winding number against the input constraints
-// Allocation-free: the caller passes scratch (check_scratch_words()).
+// Allocation-free: the caller passes scratch (check_scratch_words()). A broken property is
+// Corrupt, naming it and the triangle, edge or vertex where it was found.
 #include "cdt/cdt.h"
 
 #include <span>
@@ -21,22 +22,17 @@ struct Segment {
     Point a, b; // a directed constraint: a -> b along its loop
 };
 
-struct CheckResult {
-    bool ok = true;
-    char message[192] = {};
-};
-
 // Scratch (32-bit words) check() needs: sorted vertices, the Along edges and their marks, and
 // a slab index of the segments (its size depends on how tall they are, so it is counted).
 size_t check_scratch_words(size_t vertices, size_t triangles, std::span<const Segment> segments);
 
 template <typename Index>
-CheckResult check(const Cdt<Index>& cdt, std::span<const Segment> constraints, bool check_inner,
+Result check(const Cdt<Index>& cdt, std::span<const Segment> constraints, bool check_inner,
                   std::span<uint32_t> scratch);
 
-extern template CheckResult check(const Cdt<uint16_t>&, std::span<const Segment>, bool,
+extern template Result check(const Cdt<uint16_t>&, std::span<const Segment>, bool,
                                   std::span<uint32_t>);
-extern template CheckResult check(const Cdt<uint32_t>&, std::span<const Segment>, bool,
+extern template Result check(const Cdt<uint32_t>&, std::span<const Segment>, bool,
                                   std::span<uint32_t>);
 
 } // namespace facet::cdt

@@ -27,20 +27,47 @@ enum class LocateMode : uint8_t {
 };
 constexpr LocateMode kDefaultLocateMode = LocateMode::HilbertFirst;
 
-struct FaceReport {
-    Status status = Status::Ok;
-    uint32_t loop = 0;     // on failure: the loop (or loop count for interior points)
-    uint32_t point = 0;    // and the point index within the input
-    uint32_t inner = 0;    // inner triangles
+// A face triangulated a bounded amount at a time, so a caller can do other work between
+// pieces (a viewer's frames and input):
+//
+//   FaceBuilder<uint16_t> b(cdt);
+//   Result r = b.start(input, kDefaultLocateMode);   // checks, orders the points, resets cdt
+//   while (r.ok() && (r = b.run(256)).status == Status::Busy) { /* something else */ }
+//
+// run(units) inserts up to `units` points or constraints (the flood fill at the end counts as
+// one) and returns Busy while work remains, Ok when done. On failure the result names the loop
+// and the point (its index in the input); the arena still holds a valid triangulation of what
+// was inserted before. The input's spans must stay valid until the end.
+template <typename Index>
+class FaceBuilder {
+public:
+    explicit FaceBuilder(Cdt<Index>& cdt) : cdt_(cdt) {}
+    Result start(const FaceInput& in, LocateMode mode);
+    Result run(uint32_t units);
+    Point point(uint32_t i) const; // input point i (loop points, then interior ones)
+
+private:
+    enum class Stage : uint8_t { Points, Constraints, Inner, Done, Failed };
+    Cdt<Index>& cdt_;
+    FaceInput in_;
+    LocateMode mode_ = kDefaultLocateMode;
+    Stage stage_ = Stage::Failed;
+    uint32_t n_loop_ = 0, n_ = 0;
+    uint32_t k_ = 0, loop_ = 0, loop_first_ = 0; // the next point by rank; its loop (paper's modes)
+    uint32_t cl_ = 0, cj_ = 0, cfirst_ = 0;        // the next constraint: loop, point, loop's first
+    bool tree_built_ = false;
+    Result result_ = Result::fail(Status::Busy, "not started");
 };
 
-// Triangulates a face into `cdt` (which it resets). On failure the report names the loop and
-// point; the arena still holds a valid triangulation of what was inserted before.
-template <typename Index>
-Status triangulate_face(Cdt<Index>& cdt, const FaceInput& in, LocateMode mode, FaceReport& report);
+extern template class FaceBuilder<uint16_t>;
+extern template class FaceBuilder<uint32_t>;
 
-extern template Status triangulate_face(Cdt<uint16_t>&, const FaceInput&, LocateMode, FaceReport&);
-extern template Status triangulate_face(Cdt<uint32_t>&, const FaceInput&, LocateMode, FaceReport&);
+// The whole face at once: start() and run() to the end.
+template <typename Index>
+Result triangulate_face(Cdt<Index>& cdt, const FaceInput& in, LocateMode mode);
+
+extern template Result triangulate_face(Cdt<uint16_t>&, const FaceInput&, LocateMode);
+extern template Result triangulate_face(Cdt<uint32_t>&, const FaceInput&, LocateMode);
 
 // Hilbert curve index of (x, y) on a 2^16 x 2^16 grid (exposed for tests).
 uint32_t hilbert_index(uint32_t x, uint32_t y);

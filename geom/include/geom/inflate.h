@@ -3,8 +3,7 @@
 // their size) and are inflated once, into the memory they are then read from in place.
 //
 //   uint32_t written;
-//   const char* why;
-//   if (inflate(stream, out, written, why) != Status::Ok) print(con, "pack: {}\n", why);
+//   if (Result r = inflate(stream, out, written); !r.ok()) print(con, "pack: {}\n", r);
 //
 // No heap and no window of its own (the output is the history); about 2 KB of stack.
 // Every read, length and distance is checked: a corrupt or truncated stream, or one that
@@ -17,6 +16,6 @@
 
 namespace facet::geom {
 
-Status inflate(std::span<const uint8_t> in, std::span<uint8_t> out, uint32_t& written, const char*& why);
+Result inflate(std::span<const uint8_t> in, std::span<uint8_t> out, uint32_t& written);
 
 } // namespace facet::geom

@@ -2,8 +2,8 @@
 // Reading a pack in place (zero-copy) after validating all of it.
 //
 //   geom::Pack pack;
-//   geom::PackProblem problem;
-//   if (pack.open(data, size, problem) != Status::Ok) print(con, "pack: {}\n", problem.what);
+//   if (Result r = pack.open(data, size); !r.ok()) print(con, "pack: {}\n", r);
+//       -> "pack: section Faces record 12: surface index out of range"
 //
 // open() checks the header, the CRC, every section's bounds and record size, every index
 // against its target's count, every surface's and curve's parameter layout, and that every
@@ -17,16 +17,10 @@
 
 namespace facet::geom {
 
-struct PackProblem {
-    const char* what = "";    // a fixed description of the failed check
-    uint32_t section = 0;     // SectionId of the bad record (0: the header)
-    uint32_t index = 0;       // the bad record within its section
-    char message[128] = {};   // "section Faces record 12: surface index out of range"
-};
-
 class Pack {
 public:
-    Status open(const void* data, uint32_t size, PackProblem& problem);
+    // Corrupt, with the bad record as the place (section_place), unless every check passes.
+    Result open(const void* data, uint32_t size);
 
     const pack::Header& header() const { return *header_; }
     std::span<const float> floats() const { return floats_; }
@@ -53,8 +47,8 @@ public:
     }
 
 private:
-    Status fail(PackProblem& p, const char* what, uint32_t section, uint32_t index);
-    Status check_records(PackProblem& p);
+    Result fail(const char* what, uint32_t section, uint32_t index);
+    Result check_records();
 
     const pack::Header* header_ = nullptr;
     std::span<const float> floats_;
@@ -76,5 +70,7 @@ uint32_t surface_param_count(uint8_t type, const float* p, uint32_t avail);
 uint32_t curve_param_count(uint8_t type, uint8_t dim, const float* p, uint32_t avail);
 
 const char* section_name(uint32_t id);
+// The place of record `index` of section `id` ("section Faces record" 12; id 0: "header").
+Place section_place(uint32_t id, uint32_t index);
 
 } // namespace facet::geom

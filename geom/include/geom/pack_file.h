@@ -7,8 +7,7 @@
 // a deflated one there:
 //
 //   uint32_t bytes;
-//   const char* why;
-//   if (unpack_in_place(region, capacity, loaded, bytes, why) == Status::Ok) pack.open(region, bytes, problem);
+//   if (unpack_in_place(region, capacity, loaded, bytes).ok()) r = pack.open(region, bytes);
 #include "geom/pack_format.h"
 #include "hal/status.h"
 
@@ -28,9 +27,9 @@ uint32_t pack_file_bytes(const void* data, uint32_t available);
 // Makes the file loaded at region[0, loaded) a pack at region[0, bytes). A deflated file is
 // moved to the region's end and inflated to its start: it needs the pack's size plus its own
 // within `capacity`. A plain pack is left as it is. The region must be 4-byte aligned.
-Status unpack_in_place(uint8_t* region, uint32_t capacity, uint32_t loaded, uint32_t& bytes, const char*& why);
+Result unpack_in_place(uint8_t* region, uint32_t capacity, uint32_t loaded, uint32_t& bytes);
 
 // Inflates a deflated file into out (at least its head's pack_bytes long; the host sizes it).
-Status inflate_pack_file(std::span<const uint8_t> file, std::span<uint8_t> out, uint32_t& bytes, const char*& why);
+Result inflate_pack_file(std::span<const uint8_t> file, std::span<uint8_t> out, uint32_t& bytes);
 
 } // namespace facet::geom

@@ -11,6 +11,7 @@
 // none while its triangles span small enough angles). The inner triangles are appended with
 // 3D positions and normals to the mesh. All storage is the caller's.
 #include "cdt/face.h"
+#include "cdt/cdt.h"
 #include "geom/eval.h"
 #include "geom/pack.h"
 
@@ -76,20 +77,93 @@ struct FaceScratch {
     std::span<Sliver> slivers;  // loop points dropped from the grid, as triangles
 };
 
-struct FaceResult {
-    Status status = Status::Ok;
-    const char* reason = "";  // on failure
+// What one face took.
+struct FaceStats {
     uint32_t triangles = 0;
     uint32_t points = 0;      // CDT points (loop samples and refinement points)
     uint32_t slivers = 0;     // loop points kept as slivers (FaceScratch::slivers in use)
 };
 
 // Samples every edge of the pack. Full if the pool is too small.
-Status sample_edges(const Pack& pack, const TessOptions& opt, EdgeSamples& out);
+Result sample_edges(const Pack& pack, const TessOptions& opt, EdgeSamples& out);
+// The same a few edges at a time: edges [begin, end) appended to the pool (begin 0 empties it
+// first), so a caller can do other work between pieces.
+Result sample_edges(const Pack& pack, const TessOptions& opt, EdgeSamples& out, uint32_t begin, uint32_t end);
 
-// Tessellates face `face` of the pack (placed by nothing: shell coordinates).
-FaceResult tessellate_face(const Pack& pack, uint32_t face, const EdgeSamples& edges, const TessOptions& opt,
-                           FaceScratch& scratch, Mesh& mesh);
+namespace detail {
+// How a face's (u,v) maps to the CDT's integer grid: u and v scaled by the surface's metric
+// (|Su|, |Sv| at the middle of the face), shifted and scaled so the face's extent spans
+// [-kGridHalf, kGridHalf].
+struct Grid {
+    float su = 1, sv = 1; // metric scale
+    float x0 = 0, y0 = 0; // scaled (u,v) of the grid's corner
+    float q = 1;          // grid units per scaled unit
+
+    cdt::Point to_grid(Vec2 uv) const;
+    Vec2 to_uv(cdt::Point g) const;
+};
+// Where refinement (Step 5) stands between two pieces.
+struct RefineState {
+    uint32_t round = 0;
+    uint32_t cleared = 0;   // measured[] slots reset for this face
+    uint32_t next = 0;      // the next triangle slot to measure or to refine
+    uint32_t triangles = 0; // the triangles at the round's start
+    bool inserting = false; // measuring the changed triangles, or inserting points
+    float worst = 0, threshold = 0;
+    uint32_t added = 0;     // points this round
+    uint32_t total = 0;     // points of the face so far
+};
+} // namespace detail
+
+// One face tessellated a bounded amount at a time (Steps 1 to 6 in pieces), so that a viewer
+// can draw frames and take input between them:
+//
+//   FaceJob job;
+//   job.start(pack, f, samples, opt, scratch, mesh);
+//   Result r;
+//   while ((r = job.run(256)).status == Status::Busy) { /* a frame, input */ }
+//
+// A unit of work is about one CDT insertion (a few thousand instructions on the ARM926); a
+// piece ends at the first point where `units` are spent. Busy while unfinished; Ok when the
+// face's triangles are in the mesh; a failure names the face (and its loop and point where
+// known), and leaves the mesh as it was before the face. The pack, samples, scratch and mesh
+// must stay put until the job ends.
+class FaceJob {
+public:
+    FaceJob() = default;
+    FaceJob(const FaceJob&) = delete; // its builder refers to its own triangulation
+    FaceJob& operator=(const FaceJob&) = delete;
+    void start(const Pack& pack, uint32_t face, const EdgeSamples& edges, const TessOptions& opt, FaceScratch& scratch,
+               Mesh& mesh);
+    Result run(uint32_t units);
+    uint32_t face() const { return face_; }
+    const FaceStats& stats() const { return stats_; }
+
+private:
+    enum class Stage : uint8_t { Map, Triangulate, Refine, Emit, Done, Failed };
+    Result fail(Result r);
+    Result prepare();
+
+    const Pack* pack_ = nullptr;
+    const EdgeSamples* edges_ = nullptr;
+    TessOptions opt_;
+    FaceScratch* sc_ = nullptr;
+    Mesh* mesh_ = nullptr;
+    uint32_t face_ = 0;
+    Stage stage_ = Stage::Failed;
+    uint32_t np_ = 0, nl_ = 0;
+    uint32_t base_vertex_ = 0, base_triangle_ = 0;
+    detail::Grid grid_;
+    detail::RefineState refine_;
+    cdt::Cdt<uint16_t> cdt_{{}};
+    cdt::FaceBuilder<uint16_t> builder_{cdt_};
+    FaceStats stats_;
+    Result result_ = Result::fail(Status::Busy, "not started");
+};
+
+// Tessellates face `face` of the pack (placed by nothing: shell coordinates), all at once.
+Result tessellate_face(const Pack& pack, uint32_t face, const EdgeSamples& edges, const TessOptions& opt,
+                       FaceScratch& scratch, Mesh& mesh, FaceStats& stats);
 
 // 0.1% of the pack's bounding-box diagonal (the default tolerance).
 float default_tolerance(const Pack& pack);

@@ -6,8 +6,10 @@
 //   format(buffer, sizeof buffer, "{}.png", name);   // always NUL-terminated, truncates
 //
 // "{}" takes the next argument; "{{" and "}}" are literal braces. Integers of any width,
-// bool, const char*, hex(x) and fixed(value, decimals) (an integer scaled by 10^decimals).
+// bool, const char*, hex(x), fixed(value, decimals) (an integer scaled by 10^decimals), a
+// Status (its name) and a Result ("face 12, loop 3: its loops cross in (u,v)").
 #include "hal/console.h"
+#include "hal/status.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -30,12 +32,13 @@ constexpr Fixed fixed(int64_t value, uint8_t decimals) { return {value, decimals
 namespace fmt_detail {
 
 struct Arg {
-    enum class Kind : uint8_t { Signed, Unsigned, String, Hex, Fixed } kind;
+    enum class Kind : uint8_t { Signed, Unsigned, String, Hex, Fixed, Result } kind;
     uint8_t digits;
     union {
         int64_t i;
         uint64_t u;
         const char* s;
+        const facet::Result* r;
     };
 };
 
@@ -50,6 +53,12 @@ Arg make_arg(const T& v) {
         a.kind = Arg::Kind::Fixed;
         a.i = v.value;
         a.digits = v.decimals;
+    } else if constexpr (std::is_same_v<T, Result>) {
+        a.kind = Arg::Kind::Result;
+        a.r = &v;
+    } else if constexpr (std::is_same_v<T, Status>) {
+        a.kind = Arg::Kind::String;
+        a.s = status_name(v);
     } else if constexpr (std::is_same_v<T, bool>) {
         a.kind = Arg::Kind::String;
         a.s = v ? "true" : "false";
@@ -82,6 +91,9 @@ struct Sink {
 void format_args(Sink& sink, const char* fmt, const Arg* args, size_t count);
 
 } // namespace fmt_detail
+
+// "where, at: what" (or "what" alone) -- a Result as one line of text, without its code.
+size_t describe(const Result& r, char* buf, size_t size);
 
 // Formats into `buf` (always NUL-terminated when size > 0). Returns the length the full
 // result would have, so a caller can detect truncation (result >= size).

@@ -1,5 +1,16 @@
 #pragma once
-// One status enum for every fallible call in facet (Ok = 0, like pico-sdk and Zephyr).
+// How facet reports errors, everywhere (cdt/, geom/, render/, the module, the boards):
+//
+//   Status   the code: Ok = 0 and a few kinds of failure (like pico-sdk's and Zephyr's codes).
+//            Low-level calls whose failure needs no more words than the code return it alone
+//            (a CDT insertion, a rasterized triangle).
+//   Result   the code, what went wrong (fixed text) and where (up to two places, outer
+//            first: "face 12, loop 3"). Every call that can say why it failed returns one.
+//
+//   if (Result r = pack.open(data, size); !r.ok()) print(con, "pack: {}\n", r);
+//       -> "pack: section Faces record 12: surface index out of range"
+//
+// Both are [[nodiscard]]: a failure is handled or passed on, never dropped.
 #include <cstdint>
 
 namespace facet {
@@ -34,6 +45,39 @@ constexpr const char* status_name(Status s) {
 }
 
 constexpr bool ok(Status s) { return s == Status::Ok; }
+
+// A place a problem was found: a kind of thing and which one ("face" 12, "section Faces
+// record" 3). No kind: nowhere in particular; kNoIndex: the thing as a whole ("header").
+struct Place {
+    static constexpr uint32_t kNoIndex = 0xFFFFFFFFu;
+    const char* kind = nullptr;
+    uint32_t index = kNoIndex;
+};
+
+struct [[nodiscard]] Result {
+    Status status = Status::Ok;
+    const char* what = "";  // static text; "" when Ok
+    Place where{};          // the outer place (a face, a pack record)
+    Place at{};             // within it (a loop, a point)
+
+    constexpr bool ok() const { return status == Status::Ok; }
+
+    // A failure; `what` must outlive the result (a string literal).
+    static constexpr Result fail(Status s, const char* what, Place where = {}, Place at = {}) {
+        return Result{s, what, where, at};
+    }
+    // This result with an outer place put in front (a face's loop problem, seen from the face).
+    constexpr Result within(Place outer) const {
+        if (ok()) return *this;
+        if (!where.kind) return Result{status, what, outer, at};
+        return Result{status, what, outer, where};
+    }
+};
+
+constexpr bool ok(const Result& r) { return r.ok(); }
+
+// A Status as a Result with the code alone: "what" is the code's name.
+constexpr Result result_of(Status s) { return Result{s, s == Status::Ok ? "" : status_name(s), {}, {}}; }
 
 // Broken invariants (not bad input) go to one hook that the board or test decides about
 // (modm_assert style). `scope` names the module, `what` the invariant.
