@@ -1,11 +1,97 @@
 # Build-wide flags for the host and the ARM targets.
 
+# A size from a board description ('4M', '256K', '0x1000', '4096') as a number of bytes.
+function(facet_board_bytes text out)
+    string(REGEX MATCH "^([0-9A-Fa-fx]+)([KM]?)$" _ "${text}")
+    if(NOT CMAKE_MATCH_1)
+        message(FATAL_ERROR "board.json: not a size: ${text}")
+    endif()
+    set(scale 1)
+    if(CMAKE_MATCH_2 STREQUAL "K")
+        set(scale 1024)
+    elseif(CMAKE_MATCH_2 STREQUAL "M")
+        set(scale 1048576)
+    endif()
+    math(EXPR v "${CMAKE_MATCH_1} * ${scale}")
+    set(${out} ${v} PARENT_SCOPE)
+endfunction()
+
+# Reads boards/<board>/board.json, the board's one description, and writes what the build
+# needs from it: the CPU flags, the config header the firmware sizes its buffers from
+# (facet_board_config.h) and the linker script's memory map and pack region (board_memory.ld).
+macro(facet_read_board board)
+    set(FACET_BOARD_JSON ${CMAKE_SOURCE_DIR}/boards/${board}/board.json)
+    if(NOT EXISTS ${FACET_BOARD_JSON})
+        message(FATAL_ERROR "no board description ${FACET_BOARD_JSON}")
+    endif()
+    set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${FACET_BOARD_JSON})
+    file(READ ${FACET_BOARD_JSON} _json)
+    string(JSON _n LENGTH "${_json}" cpu_flags)
+    set(FACET_CPU_FLAGS "")
+    math(EXPR _last "${_n} - 1")
+    foreach(_i RANGE ${_last})
+        string(JSON _f GET "${_json}" cpu_flags ${_i})
+        list(APPEND FACET_CPU_FLAGS ${_f})
+    endforeach()
+    string(JSON FACET_QEMU_MACHINE GET "${_json}" qemu machine)
+    string(JSON _w GET "${_json}" display width)
+    string(JSON _h GET "${_json}" display height)
+    string(JSON _budget GET "${_json}" ram_budget)
+    string(JSON _stack GET "${_json}" stack)
+    string(JSON _pack GET "${_json}" pack address)
+    string(JSON _pack_size GET "${_json}" pack bytes)
+    facet_board_bytes(${_budget} _budget_bytes)
+    facet_board_bytes(${_pack} _pack_address)
+    facet_board_bytes(${_pack_size} _pack_bytes)
+    set(FACET_BOARD_GENERATED ${CMAKE_BINARY_DIR}/board)
+    set(_mem "")
+    string(JSON _regions LENGTH "${_json}" memory)
+    math(EXPR _last "${_regions} - 1")
+    foreach(_i RANGE ${_last})
+        string(JSON _rn GET "${_json}" memory ${_i} name)
+        string(JSON _ra GET "${_json}" memory ${_i} attributes)
+        string(JSON _ro GET "${_json}" memory ${_i} origin)
+        string(JSON _rb GET "${_json}" memory ${_i} bytes)
+        string(APPEND _mem "    ${_rn} (${_ra}) : ORIGIN = ${_ro}, LENGTH = ${_rb}\n")
+    endforeach()
+    file(WRITE ${FACET_BOARD_GENERATED}/board_memory.ld.in
+"/* Generated from boards/${board}/board.json by cmake/facet.cmake: edit that file, not this. */
+MEMORY
+{
+${_mem}}
+STACK_SIZE = ${_stack};
+/* The pack (exact geometry), written by QEMU's loader (or flashed) before boot: an address
+   range, not a section, so the ELF has no load segment there to collide with it. */
+__pack_start = ${_pack};
+__pack_end = __pack_start + ${_pack_size};
+__ram_budget = ${_budget};
+")
+    configure_file(${FACET_BOARD_GENERATED}/board_memory.ld.in ${FACET_BOARD_GENERATED}/board_memory.ld COPYONLY)
+    file(WRITE ${FACET_BOARD_GENERATED}/facet_board_config.h.in
+"#pragma once
+// Generated from boards/${board}/board.json by cmake/facet.cmake: edit that file, not this.
+// What the firmware sizes its static buffers from; only firmware sees it.
+#include <cstdint>
+
+namespace facet::board_config {
+constexpr const char* kName = \"${board}\";
+constexpr uint16_t kDisplayWidth = ${_w};
+constexpr uint16_t kDisplayHeight = ${_h};
+constexpr uint32_t kRamBytes = ${_budget_bytes}u;  // the RAM budget (${_budget})
+constexpr uintptr_t kPackAddress = ${_pack_address}u; // ${_pack}: where the pack file is loaded
+constexpr uint32_t kPackBytes = ${_pack_bytes}u;   // its room (${_pack_size})
+} // namespace facet::board_config
+")
+    configure_file(${FACET_BOARD_GENERATED}/facet_board_config.h.in ${FACET_BOARD_GENERATED}/facet_board_config.h COPYONLY)
+    set(FACET_LINKER_SCRIPT ${CMAKE_SOURCE_DIR}/linker/${board}.ld)
+endmacro()
+
 if(CMAKE_CROSSCOMPILING)
     set(FACET_TARGET_BUILD ON)
     if(NOT FACET_BOARD)
         message(FATAL_ERROR "FACET_BOARD is required for an ARM build (qemu-versatilepb, qemu-mps2-an500)")
     endif()
-    include(${CMAKE_SOURCE_DIR}/cmake/boards/${FACET_BOARD}.cmake)
+    facet_read_board(${FACET_BOARD})
 
     add_compile_options(
         ${FACET_CPU_FLAGS}
@@ -50,6 +136,9 @@ function(facet_firmware name)
     add_executable(${name} ${FW_SOURCES})
     set_target_properties(${name} PROPERTIES SUFFIX ".elf")
     target_link_libraries(${name} PRIVATE facet_board facet_board_common ${FW_LIBS})
-    target_link_options(${name} PRIVATE -T${FACET_LINKER_SCRIPT} -Wl,-Map=$<TARGET_FILE:${name}>.map)
-    set_target_properties(${name} PROPERTIES LINK_DEPENDS ${FACET_LINKER_SCRIPT})
+    if(TARGET facet_qemu)
+        target_link_libraries(${name} PRIVATE facet_qemu)
+    endif()
+    target_link_options(${name} PRIVATE -L${FACET_BOARD_GENERATED} -T${FACET_LINKER_SCRIPT} -Wl,-Map=$<TARGET_FILE:${name}>.map)
+    set_target_properties(${name} PROPERTIES LINK_DEPENDS "${FACET_LINKER_SCRIPT};${FACET_BOARD_GENERATED}/board_memory.ld")
 endfunction()

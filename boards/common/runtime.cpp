@@ -2,7 +2,6 @@
 
 #include "hal/board.h"
 #include "hal/print.h"
-#include "semihosting.h"
 #include "stack.h"
 
 // Linker-script symbols shared by every facet board script.
@@ -44,10 +43,6 @@ namespace facet {
 }
 
 } // namespace facet
-
-namespace facet::hal {
-[[noreturn]] void exit(int code) { semihosting::exit(code); }
-} // namespace facet::hal
 
 // The C++ runtime hooks a bare-metal program may reference.
 extern "C" {

@@ -1,23 +1,20 @@
 #pragma once
-// A double-buffered RAM framebuffer (the board has no LCD). Captures are written to the host
-// through semihosting as F565 files (tools/img.py).
-#include "framebuffer.h"
+// The mps2 has no LCD: a "panel" that shows a frame in RAM (the firmware's), with the geometry
+// of the MIMXRT1060-EVKB's panel (board.json), whose Cortex-M7 this board stands in for.
+// Captures are written to the host through semihosting as F565 files (tools/img.py).
 #include "hal/display.h"
 
 namespace facet::mps2 {
 
 class RamDisplay final : public hal::Display {
 public:
-    void init();
     hal::DisplayInfo info() const override;
-    Status push_span(uint16_t x, uint16_t y, const hal::Rgb565* pixels, uint16_t count) override;
-    Status fill_span(uint16_t x, uint16_t y, uint16_t count, hal::Rgb565 colour) override;
-    Status flip() override;
-    hal::Rgb565* draw_buffer() override { return fb_.draw(); }
-    const hal::Rgb565* shown() const { return fb_.shown(); }
+    Status show(hal::Rgb565* frame) override;
+    Status write(const hal::Rect& area, const hal::Rgb565* pixels) override;
+    const hal::Rgb565* frame() const override { return shown_; }
 
 private:
-    boards::Framebuffers fb_;
+    hal::Rgb565* shown_ = nullptr;
 };
 
 } // namespace facet::mps2

@@ -8,7 +8,9 @@
 #include "memory_report.h"
 #include "input_uart.h"
 #include "mouse_pl050.h"
+#include "qemu/capture.h"
 #include "runtime.h"
+#include "semihosting.h"
 #include "stack.h"
 
 namespace facet::versatilepb {
@@ -54,20 +56,7 @@ namespace facet::hal {
 
 Board& board() { return versatilepb::the_board; }
 
-Status capture(const char* name) {
-    // The host runner takes the screendump over QMP when it reads this line, then sends ACK.
-    // Without a runner (no ACK within 2 s) the firmware carries on.
-    versatilepb::Pl011Console& con = versatilepb::console;
-    print(con, "@shot {}\n", name);
-    const uint64_t deadline = versatilepb::clock.ticks() + 2'000'000;
-    while (versatilepb::clock.ticks() < deadline) {
-        const int c = con.read_hardware();
-        if (c == 0x06) return Status::Ok;
-        if (c >= 0) con.keep(static_cast<uint8_t>(c));
-    }
-    print(con, "capture {}: no acknowledgement from the host\n", name);
-    return Status::Io;
-}
+[[noreturn]] void exit(int code) { semihosting::exit(code); }
 
 uint32_t memory_map(MemoryRegion* out, uint32_t max) {
     static const boards::LinkerSpan spans[] = {
@@ -85,3 +74,22 @@ uint32_t memory_map(MemoryRegion* out, uint32_t max) {
 }
 
 } // namespace facet::hal
+
+namespace facet::qemu {
+
+Status capture(const char* name) {
+    // The host runner takes the screendump over QMP when it reads this line, then sends ACK.
+    // Without a runner (no ACK within 2 s) the firmware carries on.
+    versatilepb::Pl011Console& con = versatilepb::console;
+    print(con, "@shot {}\n", name);
+    const uint64_t deadline = versatilepb::clock.ticks() + 2'000'000;
+    while (versatilepb::clock.ticks() < deadline) {
+        const int c = con.read_hardware();
+        if (c == 0x06) return Status::Ok;
+        if (c >= 0) con.keep(static_cast<uint8_t>(c));
+    }
+    print(con, "capture {}: no acknowledgement from the host\n", name);
+    return Status::Io;
+}
+
+} // namespace facet::qemu

@@ -1,21 +1,20 @@
 #pragma once
-// PL110 colour LCD at 640x480 RGB565, double-buffered by swapping the upper-panel base.
-#include "framebuffer.h"
+// PL110 colour LCD at the board's resolution (board.json), RGB565, scanning out whichever frame
+// it was shown last (the firmware owns the frames; switching the base is the double buffering).
 #include "hal/display.h"
 
 namespace facet::versatilepb {
 
 class Pl110Display final : public hal::Display {
 public:
-    void init();
+    void init(); // timings; the controller is enabled with the first frame shown
     hal::DisplayInfo info() const override;
-    Status push_span(uint16_t x, uint16_t y, const hal::Rgb565* pixels, uint16_t count) override;
-    Status fill_span(uint16_t x, uint16_t y, uint16_t count, hal::Rgb565 colour) override;
-    Status flip() override;
-    hal::Rgb565* draw_buffer() override { return fb_.draw(); }
+    Status show(hal::Rgb565* frame) override;
+    Status write(const hal::Rect& area, const hal::Rgb565* pixels) override;
+    const hal::Rgb565* frame() const override { return shown_; }
 
 private:
-    boards::Framebuffers fb_;
+    hal::Rgb565* shown_ = nullptr;
 };
 
 } // namespace facet::versatilepb

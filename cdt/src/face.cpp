@@ -148,7 +148,7 @@ Result FaceBuilder<Index>::start(const FaceInput& in, LocateMode mode) {
     // loop points, ranked by index, and is built on first use.
     if (mode == LocateMode::KdTreeNearest) {
         KdTree<Index, PointOf<Index>> tree(a.order.data(), a.minseq.data(), n_, PointOf<Index>{this});
-        tree.build([&](Index i) { return keys[i]; });
+        tree.build(keys);
         tree_built_ = true;
     }
     for (uint32_t i = 0; i < n_; ++i) keys[i] = kNone<Index>; // keys: vertex of each point
@@ -173,7 +173,7 @@ Result FaceBuilder<Index>::run(uint32_t units) {
     KdTree<Index, PointOf<Index>> tree(a.order.data(), a.minseq.data(), tree_size, PointOf<Index>{this});
     auto nearest = [&](Point p, uint32_t rank) -> Index {
         if (!tree_built_) {
-            tree.build([](Index i) { return uint32_t(i); });
+            tree.build(nullptr);
             tree_built_ = true;
         }
         const int64_t i = tree.nearest(p, rank, [&](Index j) { return keys[j] != kNone<Index>; });
@@ -191,6 +191,7 @@ Result FaceBuilder<Index>::run(uint32_t units) {
     };
 
     uint32_t done = 0;
+    used_ = 0;
     // Every point, in order; the paper's modes trace each loop as its points arrive.
     for (; stage_ == Stage::Points && k_ < n_ && done < units; ++k_, ++done) {
         const uint32_t k = k_, i = ins[k];
@@ -239,7 +240,9 @@ Result FaceBuilder<Index>::run(uint32_t units) {
         ++done;
         if (++cj_ == size) cfirst_ += size, cj_ = 0, ++cl_;
     }
+    used_ = done;
     if (stage_ == Stage::Inner && done < units) {
+        ++used_;
         if (Status s = cdt_.mark_inner(); !ok(s)) {
             stage_ = Stage::Failed;
             result_ = Result::fail(s, what_failed(s));

@@ -19,9 +19,8 @@ public:
     KdTree(Index* order, Index* minrank, uint32_t n, PointAt point)
         : order_(order), minrank_(minrank), n_(n), point_(point) {}
 
-    // rank(i): the insertion rank of point i.
-    template <typename Rank>
-    void build(Rank rank) {
+    // rank[i]: the insertion rank of point i (null: its index).
+    void build(const uint32_t* rank) {
         for (uint32_t i = 0; i < n_; ++i) order_[i] = Index(i);
         build(0, n_, 0, rank);
     }
@@ -41,8 +40,7 @@ private:
         int64_t d2;
     };
 
-    template <typename Rank>
-    uint32_t build(uint32_t lo, uint32_t hi, int depth, Rank rank) {
+    uint32_t build(uint32_t lo, uint32_t hi, int depth, const uint32_t* rank) {
         if (lo >= hi) return UINT32_MAX;
         const uint32_t mid = lo + (hi - lo) / 2;
         const bool by_x = (depth & 1) == 0;
@@ -52,7 +50,7 @@ private:
         });
         const uint32_t l = build(lo, mid, depth + 1, rank);
         const uint32_t r = build(mid + 1, hi, depth + 1, rank);
-        const uint32_t m = std::min<uint32_t>(rank(order_[mid]), std::min(l, r));
+        const uint32_t m = std::min<uint32_t>(rank ? rank[order_[mid]] : uint32_t(order_[mid]), std::min(l, r));
         minrank_[mid] = Index(m);
         return m;
     }

@@ -6,7 +6,7 @@ namespace facet::fw {
 
 void report_board(hal::Board& board) {
     const hal::DisplayInfo d = board.display.info();
-    print(board.console, "@board {} {}x{} buffers {}\n", board.name, d.width, d.height, d.buffers);
+    print(board.console, "@board {} {}x{} scanout {}\n", board.name, d.width, d.height, d.scanout);
     hal::MemoryRegion regions[16];
     const uint32_t n = hal::memory_map(regions, 16);
     uint32_t total = 0;

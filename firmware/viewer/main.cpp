@@ -1,63 +1,300 @@
-// facet-viewer: the handheld viewer. The pack comes from the board's pack address; the viewer
-// (viewer.h) shows its wireframe, fills in the faces one by one, and then follows the keys on
-// the UART and the mouse (versatilepb's PL050) until 'q'.
+// facet-viewer: the module (facet/viewer.h) on a QEMU board. The pack file comes from the
+// board's pack address (run.py --load FILE@ADDR); the viewer shows its wireframe, fills in the
+// faces, and then follows the keys on the UART and the mouse (versatilepb's PL050) until 'q'.
 //
-// UART protocol for the host runner: "@idle" when the viewer waits for input (the runner sends
-// its next scripted entry then, ending with ENQ), "@progress", "@tessellation", "@view" status lines,
-// and the instruction-count regions "edges", "face" (one per face) and "frame" (a full
-// redraw).
+// This program is one user of the module's events: it turns them into the UART test protocol
+// the host runner and the tests read, and it owns the buffers (two full frames shown by the
+// display's scan-out, a depth buffer each, the workspace, the pack region).
+//
+//   from the firmware   @model, @pass, @lod, @progress, @face N failed, @tessellation /
+//                       @retessellation, @frame, @view, @pick, @budget, @memory; "@begin NAME" /
+//                       "@end NAME" around each piece of work (instruction-count regions:
+//                       unpack, edges, face, frame, update; step with !budget); @shot (capture);
+//                       @idle when the viewer has nothing left to do
+//   from the host       keys; ENQ (0x05) after each scripted entry (then "@idle" again once
+//                       handled); "!shot NAME" + Enter: a screenshot (once the viewer has
+//                       drawn all the input before it); "!budget US" + Enter: step
+//                       budget, each step an instruction-count region; ESC leaves a command
+#include "facet/viewer.h"
 #include "facet_board_config.h"
 #include "hal/board.h"
+#include "hal/measure.h"
 #include "hal/print.h"
+#include "qemu/capture.h"
 #include "report.h"
-#include "viewer.h"
 
 namespace {
 
 using namespace facet;
 
-constexpr uint32_t kPixels = uint32_t(board_config::kDisplayWidth) * board_config::kDisplayHeight;
+constexpr uint16_t kW = board_config::kDisplayWidth, kH = board_config::kDisplayHeight;
+constexpr uint32_t kPixels = uint32_t(kW) * kH;
+constexpr uint8_t kEnq = 0x05, kEsc = 0x1B;
 
-__attribute__((section(".zbuffer"))) uint16_t depth[2][kPixels]; // one per display buffer
-hal::Rgb565 line[board_config::kDisplayWidth];
-__attribute__((section(".arena"))) viewer::Storage storage;
+alignas(64) __attribute__((section(".framebuffers"))) Rgb565 frames[2][kPixels];
+alignas(64) __attribute__((section(".zbuffer"))) uint16_t depth[2][kPixels];
+alignas(8) __attribute__((section(".arena"))) uint8_t workspace[FACET_WORKSPACE_BYTES_DEFAULT];
 
-Status capture(void*, const char* name) { return hal::capture(name); }
+struct Session {
+    hal::Board* board = nullptr;
+    Viewer* viewer = nullptr;
+    bool prompt = true, quit = false;
+    bool wireframe_shot = false, half_shot = false, done_shot = false;
+    uint32_t step_us = 8000;
+    bool step_regions = false;
+    char line[48] = {};
+    uint32_t line_len = 0;
+    bool in_line = false;
+    char shot[48] = {};  // a screenshot asked for: taken once the viewer has caught up (idle)
+} session;
+
+const char* work_name(Work w) {
+    switch (w) {
+    case Work::Unpack: return "unpack";
+    case Work::Sampling: return "edges";
+    case Work::Face: return "face";
+    case Work::Frame: return "frame";
+    case Work::Update: return "update";
+    }
+    return "work";
+}
+
+uint32_t um(float mm) { return uint32_t(mm * 1000 + 0.5f); }
+
+void capture(const char* name) {
+    if (Status s = qemu::capture(name); !ok(s)) print(session.board->console, "viewer: capture {} failed ({})\n", name, s);
+}
+
+void on_event(void*, const Event& e) {
+    hal::Console& con = session.board->console;
+    switch (e.kind) {
+    // Pieces of work as instruction-count regions (with !budget, whole steps instead).
+    case Event::Kind::WorkBegin:
+        if (!session.step_regions) hal::measure_begin(con, work_name(e.work.what));
+        break;
+    case Event::Kind::WorkEnd:
+        if (!session.step_regions) hal::measure_end(con, work_name(e.work.what));
+        break;
+    case Event::Kind::Loaded:
+        print(con, "@model faces {} edges {} shells {} instances {} bytes {} file_bytes {}\n", e.loaded.faces, e.loaded.edges,
+              e.loaded.shells, e.loaded.instances, e.loaded.pack_bytes, e.loaded.file_bytes);
+        break;
+    case Event::Kind::Pass: print(con, "@pass {} tolerance_um {}\n", e.pass.pass, um(e.pass.tolerance_mm)); break;
+    case Event::Kind::Sampled: print(con, "@lod tolerance_um {} samples {}\n", um(e.pass.tolerance_mm), e.pass.samples); break;
+    case Event::Kind::PassFailed:
+        print(con, "viewer: the edges at tolerance {} um: {} ({})\n", um(e.pass.tolerance_mm), e.why, e.why.status);
+        break;
+    case Event::Kind::Progress:
+        print(con, "@progress {}/{} triangles {}\n", e.progress.done + e.progress.failed, e.progress.total, e.progress.triangles);
+        break;
+    case Event::Kind::FaceFailed:
+        print(con, "@face {} failed: {} ({}); it stays wireframe\n", e.failed.face, e.why, e.why.status);
+        break;
+    case Event::Kind::Tessellated: {
+        const auto& t = e.tessellated;
+        print(con, "@{} faces {} failed {} triangles {} vertices {} mesh_bytes {} arena_peak {} tolerance_um {}\n",
+              t.pass == 0 ? "tessellation" : "retessellation", t.faces, t.failed, t.triangles, t.vertices, t.mesh_bytes,
+              t.arena_peak_bytes, um(t.tolerance_mm));
+        break;
+    }
+    case Event::Kind::FrameDone: {
+        const auto& f = e.frame;
+        if (f.full) print(con, "@frame triangles {} culled {} pixels {} pieces {}\n", f.triangles, f.culled, f.pixels, f.pieces);
+        // The screenshots of the first pass: the wireframe, half the faces, all of them.
+        if (f.pass != 0) break;
+        if (!session.wireframe_shot && f.faces_done == 0) session.wireframe_shot = true, capture("wireframe");
+        if (!session.half_shot && f.faces_done > 0 && 2 * f.faces_done >= f.faces_total) session.half_shot = true, capture("half");
+        if (!session.done_shot && f.full && f.faces_done == f.faces_total) session.done_shot = true, capture("done");
+        break;
+    }
+    case Event::Kind::ViewChanged:
+        print(con, "@view yaw {} pitch {} zoom_pct {}\n", int32_t(e.view.yaw_deg + (e.view.yaw_deg >= 0 ? 0.5f : -0.5f)),
+              int32_t(e.view.pitch_deg + (e.view.pitch_deg >= 0 ? 0.5f : -0.5f)), uint32_t(100.0f / e.view.zoom + 0.5f));
+        break;
+    case Event::Kind::Picked:
+        if (e.pick.hit) {
+            print(con, "@pick face {} instance {} shell {} surface_type {} at {} {}\n", e.pick.face, e.pick.instance,
+                  e.pick.shell, e.pick.surface_type, e.pick.x, e.pick.y);
+        } else {
+            print(con, "@pick none at {} {}\n", e.pick.x, e.pick.y);
+        }
+        break;
+    case Event::Kind::BudgetExceeded:
+        print(con, "@budget {} used_us {} budget_us {}\n", e.budget.step ? "step" : "frame", e.budget.used_us, e.budget.budget_us);
+        break;
+    }
+}
+
+// Scan-out: the display shows the finished frame from now on (QEMU has no refresh to wait for).
+void flush(void*, const Area&, const Rgb565* pixels) {
+    if (Status s = session.board->display.show(const_cast<Rgb565*>(pixels)); !ok(s)) {
+        print(session.board->console, "viewer: the display refused a frame ({})\n", s);
+    }
+    session.viewer->flush_done();
+}
+
+// Microseconds from the board's clock, without a 64-bit division per call (a library call
+// of over a hundred instructions on these cores): the ticks since the last call, carried over.
+uint32_t now_us(void*) {
+    static uint64_t last = 0;
+    static uint32_t us = 0, rest = 0;
+    hal::Clock& c = session.board->clock;
+    const uint64_t t = c.ticks();
+    const uint32_t per_us = c.ticks_per_second() / 1'000'000; // 1 (SP804) or 25 (mps2's timer)
+    const uint32_t d = uint32_t(t - last) + rest;
+    last = t;
+    if (per_us <= 1) return us += d, rest = 0, us;
+    us += d / per_us;
+    rest = d % per_us;
+    return us;
+}
+
+void help(hal::Console& con) {
+    print(con, "keys:");
+    const KeyBindings keys = key_bindings();
+    for (uint32_t i = 0; i < keys.count; ++i)
+        if (keys.table[i].key < 0x80) print(con, " {}", char(keys.table[i].key));
+    print(con, " (turn, tilt, zoom, pan, fit, coarser/finer detail), h help, q quit;\n"
+               "      !shot NAME<enter> takes a screenshot; mouse: left drag turns, right drag pans, middle drag zooms\n");
+}
+
+// A screenshot's name: letters, digits, '-' and '_' only (the host makes a file of it).
+bool good_name(const char* s) {
+    if (!*s) return false;
+    for (; *s; ++s) {
+        const char c = *s;
+        if (!((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' || c == '_')) return false;
+    }
+    return true;
+}
+
+void command(const char* text) {
+    hal::Console& con = session.board->console;
+    auto starts = [&](const char* p) {
+        uint32_t i = 0;
+        for (; p[i]; ++i)
+            if (text[i] != p[i]) return false;
+        return true;
+    };
+    if (starts("shot ")) {
+        if (!good_name(text + 5)) {
+            print(con, "viewer: a screenshot's name is letters, digits, - and _ only: '{}'\n", text + 5);
+            return;
+        }
+        if (session.shot[0]) capture(session.shot); // an earlier one, before this one's input
+        uint32_t i = 0;
+        for (const char* p = text + 5; *p && i + 1 < sizeof session.shot; ++p) session.shot[i++] = *p;
+        session.shot[i] = 0;
+        return;
+    }
+    if (starts("budget ")) {
+        uint32_t us = 0;
+        for (const char* p = text + 7; *p >= '0' && *p <= '9'; ++p) us = us * 10 + uint32_t(*p - '0');
+        session.step_us = us;
+        session.step_regions = true;
+        print(con, "@step_budget_us {}\n", us);
+        return;
+    }
+    print(con, "viewer: unknown command '{}'\n", text);
+}
+
+// A byte from the UART: the protocol's own bytes and commands, or a key for the viewer.
+void key(uint8_t k) {
+    Session& s = session;
+    if (s.in_line) {
+        if (k == '\n' || k == '\r') {
+            s.line[s.line_len] = 0;
+            s.in_line = false;
+            command(s.line);
+        } else if (k == kEsc || k == kEnq || k < 0x20 || k >= 0x7F) {
+            s.in_line = false; // not command text: the command is dropped
+            print(s.board->console, "viewer: command dropped\n");
+            if (k == kEnq) s.prompt = true;
+        } else if (s.line_len + 1 < sizeof s.line) {
+            s.line[s.line_len++] = char(k);
+        }
+        return;
+    }
+    switch (k) {
+    case kEnq: s.prompt = true; return;
+    case '!': s.in_line = true, s.line_len = 0; return;
+    case 'q': s.quit = true; return;
+    case 'h': case '?': help(s.board->console); return;
+    case '\r': case '\n': case ' ': return;
+    default: break;
+    }
+    const KeyBindings keys = key_bindings();
+    for (uint32_t i = 0; i < keys.count; ++i) {
+        if (keys.table[i].key == k) {
+            s.viewer->key(k);
+            return;
+        }
+    }
+    print(s.board->console, "viewer: unknown key {} (h for help)\n", uint32_t(k));
+}
 
 } // namespace
 
 int facet_main(hal::Board& board) {
     hal::Console& con = board.console;
+    session.board = &board;
     fw::report_board(board);
-    viewer::Memory mem = storage.memory(depth[0], depth[1], line);
-    static viewer::Viewer v(board, mem, capture, nullptr);
-    auto* region = reinterpret_cast<uint8_t*>(board_config::kPackAddress);
-    if (!ok(v.open(region, board_config::kPackBytes))) {
-        print(con, "viewer: nothing to show (load a pack with run.py --load MODEL.fpk@{})\n", hex(board_config::kPackAddress));
+
+    Config cfg;
+    cfg.display.width = kW, cfg.display.height = kH, cfg.display.band_lines = kH;
+    cfg.display.buffers[0] = frames[0], cfg.display.buffers[1] = frames[1];
+    cfg.display.depth[0] = depth[0], cfg.display.depth[1] = depth[1];
+    cfg.display.mode = Flush::Scanout;
+    cfg.display.flush = flush;
+    cfg.on_event = on_event;
+    cfg.now_us = now_us;
+    Result why;
+    session.viewer = Viewer::create(cfg, workspace, sizeof workspace, &why);
+    if (!session.viewer) {
+        print(con, "viewer: {} ({})\n", why, why.status);
         return 1;
     }
-    // "@idle" once the viewer has nothing left to do, then again after each ENQ (0x05) from
-    // the host runner: a scripted session sends its next entry only then.
-    bool prompt = true;
-    while (!v.quit()) {
-        hal::InputEvent e;
-        while (!v.quit() && board.input.poll(e)) {
-            if (e.kind == hal::InputEvent::Kind::Key && e.key == 0x05) prompt = true;
-            else v.handle(e);
+    Viewer& v = *session.viewer;
+    auto* region = reinterpret_cast<uint8_t*>(board_config::kPackAddress);
+    // The file was loaded at the start of the pack region: a deflated one is inflated there.
+    if (Result r = v.load(region, board_config::kPackBytes, region, board_config::kPackBytes); !r.ok()) {
+        print(con, "viewer: no valid pack: {} ({})\n", r, r.status);
+        if (region[0] == 0 && region[1] == 0 && region[2] == 0 && region[3] == 0) {
+            print(con, "viewer: nothing was loaded (run.py --load MODEL.fpk@{})\n", hex(board_config::kPackAddress));
         }
-        if (v.quit()) break;
-        if (v.step()) continue;
-        if (prompt) {
+        return 1;
+    }
+    help(con);
+    while (!session.quit) {
+        hal::InputEvent e;
+        while (!session.quit && board.input.poll(e)) {
+            switch (e.kind) {
+            case hal::InputEvent::Kind::Key: key(e.key); break;
+            case hal::InputEvent::Kind::PointerDown:
+            case hal::InputEvent::Kind::PointerUp: v.pointer(0, 0, e.buttons); break;
+            case hal::InputEvent::Kind::PointerMove: v.pointer(e.dx, e.dy, e.buttons); break;
+            }
+        }
+        if (session.quit) break;
+        if (session.step_regions) hal::measure_begin(con, "step");
+        const Activity a = v.step(session.step_us);
+        if (session.step_regions) hal::measure_end(con, "step");
+        if (a != Activity::Idle) continue;
+        if (session.shot[0]) { // the picture of everything before the command
+            capture(session.shot);
+            session.shot[0] = 0;
+        }
+        if (session.prompt) {
             print(con, "@idle\n");
-            prompt = false;
+            session.prompt = false;
         }
     }
-    const viewer::Totals& t = v.totals();
+    const Stats t = v.stats();
     // What this model needed: the pack (inflated, and the file it came from, both held while
-    // inflating) and the viewer's storage at its peak (the host adds the display buffers, code
-    // and stack high-water: the model's peak RAM).
-    print(con, "@memory pack_bytes {} pack_file_bytes {} storage_peak_bytes {}\n", v.pack_bytes(), v.pack_file_bytes(),
-          v.storage_in_use());
+    // inflating) and the workspace at its peak (the host adds the display buffers, code and
+    // stack high-water: the model's peak RAM).
+    print(con, "@memory pack_bytes {} pack_file_bytes {} storage_peak_bytes {}\n", t.pack_bytes, t.pack_file_bytes,
+          t.workspace_peak_bytes);
     print(con, "viewer: {} faces ({} failed), {} triangles; bye\n", t.faces, t.failed, t.triangles);
     return 0;
 }

@@ -37,10 +37,10 @@ Result map_loops(const Pack& pack, uint32_t face, const EdgeSamples& edges, Face
 Result clean_loops(FaceScratch& sc, uint32_t& np, uint32_t& nl, uint32_t& slivers);
 
 // Step 5: adds surface points until every inner triangle is within the tolerance (see
-// refine.cpp), about `units` of work at a time: Busy while unfinished. sc.mesh_of maps CDT
-// vertices to points (sc.uv/sc.xyz); state.total (the face's points so far) grows with every
-// point added. A fresh RefineState{} with total set starts a face.
+// refine.cpp), about `units` of work at a time (`spent` says how much): Busy while unfinished.
+// sc.mesh_of maps CDT vertices to points (sc.uv/sc.xyz); state.total (the face's points so
+// far) grows with every point added. A fresh RefineState{} with total set starts a face.
 Result refine(const Pack& pack, uint32_t face, const TessOptions& opt, const Grid& grid, cdt::Cdt<uint16_t>& cdt,
-              FaceScratch& sc, RefineState& state, uint32_t units);
+              FaceScratch& sc, RefineState& state, uint32_t units, uint32_t& spent);
 
 } // namespace facet::geom::detail

@@ -243,16 +243,16 @@ struct Context {
 } // namespace
 
 Result refine(const Pack& pack, uint32_t fi, const TessOptions& opt, const Grid& grid, cdt::Cdt<uint16_t>& cdt,
-              FaceScratch& sc, RefineState& st, uint32_t units) {
+              FaceScratch& sc, RefineState& st, uint32_t units, uint32_t& spent) {
     const pack::Face& F = pack.faces()[fi];
     const Surface& S = pack.surfaces()[F.surface];
+    spent = 0;
     if (S.type == uint8_t(SurfaceType::Plane)) return {}; // flat: nothing to add
     const Context ctx(pack, F, S, opt.tolerance, sc, cdt);
     if (sc.measured.size() < cdt::triangles_for(cdt.vertex_capacity())) {
         return Result::fail(Status::Full, "the refinement's triangle measures are fewer than the arena's triangles");
     }
     const Result busy = Result::fail(Status::Busy, "refining");
-    uint32_t spent = 0;
     while (spent < units) {
         if (!st.inserting) {
             // A round: measure the triangles that changed, and find the worst.

@@ -288,6 +288,7 @@ Result FaceJob::run(uint32_t units) {
         const Result r = builder_.run(units - spent);
         if (r.status == Status::Busy) return busy;
         if (!r.ok()) return fail(r);
+        spent += builder_.used() + np_ / 32;
         if (sc.mesh_of.size() < cdt_.vertex_capacity()) {
             return fail(Result::fail(Status::Full, "more vertices than the face scratch holds"));
         }
@@ -299,16 +300,18 @@ Result FaceJob::run(uint32_t units) {
         refine_ = {};
         refine_.total = np_;
         stage_ = Stage::Refine;
-        return busy;
+        if (spent >= units) return busy;
     }
     if (stage_ == Stage::Refine) {
         // 5. Refine until every inner triangle is within the tolerance.
-        const Result r = detail::refine(pack, face_, opt_, grid_, cdt_, sc, refine_, units);
+        uint32_t used = 0;
+        const Result r = detail::refine(pack, face_, opt_, grid_, cdt_, sc, refine_, units - spent, used);
         if (r.status == Status::Busy) return busy;
         if (!r.ok()) return fail(r);
+        spent += used;
         stats_.points = refine_.total;
         stage_ = Stage::Emit;
-        return busy;
+        if (spent >= units) return busy;
     }
     // 6. Output: the inner triangles and their vertices (each once, in the order first used).
     //    Loop points keep their edge sample's 3D point, shared with the neighbour.

@@ -12,41 +12,31 @@ int Console::read_byte() {
     return c;
 }
 
-Display::Display(uint16_t width, uint16_t height, uint8_t buffers)
-    : width_(width), height_(height), buffers_(buffers)
-    , draw_(size_t(width) * height, 0), shown_(size_t(width) * height, 0) {}
+Display::Display(uint16_t width, uint16_t height, bool scanout)
+    : width_(width), height_(height), scanout_(scanout), panel_(size_t(width) * height, 0) {}
 
-bool Display::in_range(uint16_t x, uint16_t y, uint16_t count) const {
-    return count > 0 && y < height_ && x < width_ && uint32_t(x) + count <= width_;
-}
-
-Status Display::push_span(uint16_t x, uint16_t y, const Rgb565* px, uint16_t count) {
-    if (!px || !in_range(x, y, count)) {
+Status Display::show(Rgb565* frame) {
+    if (!scanout_) {
+        ++rejected;
+        return Status::Unsupported;
+    }
+    if (!frame) {
         ++rejected;
         return Status::OutOfRange;
     }
-    Rgb565* row = &draw_[size_t(y) * width_ + x];
-    for (uint16_t i = 0; i < count; ++i) row[i] = px[i];
-    ++spans;
-    pixels += count;
+    shown_ = frame;
+    ++shows;
     return Status::Ok;
 }
 
-Status Display::fill_span(uint16_t x, uint16_t y, uint16_t count, Rgb565 colour) {
-    if (!in_range(x, y, count)) {
+Status Display::write(const Rect& area, const Rgb565* px) {
+    const Status s = copy_area(shown_ ? shown_ : panel_.data(), width_, height_, area, px);
+    if (!ok(s)) {
         ++rejected;
-        return Status::OutOfRange;
+        return s;
     }
-    Rgb565* row = &draw_[size_t(y) * width_ + x];
-    for (uint16_t i = 0; i < count; ++i) row[i] = colour;
-    ++spans;
-    pixels += count;
-    return Status::Ok;
-}
-
-Status Display::flip() {
-    ++flips;
-    if (buffers_ == 2) std::swap(draw_, shown_);
+    ++writes;
+    pixels += uint64_t(area.width) * area.height;
     return Status::Ok;
 }
 

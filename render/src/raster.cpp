@@ -173,27 +173,16 @@ void make_palette(Palette& out, uint8_t r, uint8_t g, uint8_t b) {
     for (int k = 0; k < Palette::kPad; ++k) out.colour[256 + k] = out.colour[255];
 }
 
-Rasterizer::Rasterizer(hal::Display& display, std::span<uint16_t> depth,
-                       std::span<hal::Rgb565> line)
-    : display_(display), depth_(depth), line_(line), width_(display.info().width)
-    , height_(display.info().height) {}
-
-Status Rasterizer::check() const {
-    if (depth_.size() < size_t(width_) * height_ || line_.size() < width_) {
-        return Status::OutOfRange;
-    }
-    return Status::Ok;
-}
-
 void Rasterizer::clear_depth() {
     // Two entries per 32-bit store; the buffer is 2-byte aligned at least, so peel one.
     using Word = uint32_t __attribute__((may_alias, aligned(2)));
-    size_t n = size_t(width_) * height_, i = 0;
-    if (reinterpret_cast<uintptr_t>(depth_.data()) & 2) depth_[i++] = 0xFFFF;
-    Word* w = reinterpret_cast<Word*>(depth_.data() + i);
+    uint16_t* const depth = t_.depth;
+    size_t n = size_t(t_.width) * t_.rows, i = 0;
+    if (n && (reinterpret_cast<uintptr_t>(depth) & 2)) depth[i++] = 0xFFFF;
+    Word* w = reinterpret_cast<Word*>(depth + i);
     const size_t words = (n - i) / 2;
     for (size_t k = 0; k < words; ++k) w[k] = 0xFFFFFFFFu;
-    for (i += words * 2; i < n; ++i) depth_[i] = 0xFFFF;
+    for (i += words * 2; i < n; ++i) depth[i] = 0xFFFF;
 }
 
 // The attributes (depth, shade) of a triangle: gradients per sub-pixel in kFrac fixed point and
@@ -235,7 +224,6 @@ void Rasterizer::clear_depth() {
 Status Rasterizer::draw(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, const Palette& palette,
                         Cull cull) {
     palette_ = &palette;
-    fb_ = display_.draw_buffer();
     if (!in_guard(a) || !in_guard(b) || !in_guard(c)) return Status::OutOfRange;
     // Doubled signed area; with y down, counter-clockwise on screen gives a negative value.
     const int64_t area2 =
@@ -250,7 +238,6 @@ Status Rasterizer::draw(const ScreenVertex& a, const ScreenVertex& b, const Scre
 
 Status Rasterizer::scan(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2,
                         int64_t area2) {
-    ++stats.triangles;
     int32_t ymin = v0.y, ymax = v0.y, xmin = v0.x, xmax = v0.x;
     for (const ScreenVertex* v : {&v1, &v2}) {
         ymin = v->y < ymin ? v->y : ymin;
@@ -258,28 +245,36 @@ Status Rasterizer::scan(const ScreenVertex& v0, const ScreenVertex& v1, const Sc
         xmin = v->x < xmin ? v->x : xmin;
         xmax = v->x > xmax ? v->x : xmax;
     }
-    // Rows and columns whose centres (16i+8) can be inside, clipped to the screen.
+    // Rows and columns whose centres (16i+8) can be inside, clipped to the screen: the way a
+    // triangle is scanned depends on the screen alone, so every band gets the same values.
     int64_t row0 = (int64_t(ymin) + 7) >> 4, row1 = (int64_t(ymax) - 8) >> 4;
     int64_t col0 = (int64_t(xmin) + 7) >> 4, col1 = (int64_t(xmax) - 8) >> 4;
     row0 = row0 < 0 ? 0 : row0;
-    row1 = row1 > height_ - 1 ? height_ - 1 : row1;
+    row1 = row1 > t_.height - 1 ? t_.height - 1 : row1;
     col0 = col0 < 0 ? 0 : col0;
-    col1 = col1 > width_ - 1 ? width_ - 1 : col1;
+    col1 = col1 > t_.width - 1 ? t_.width - 1 : col1;
     if (row0 > row1 || col0 > col1) return Status::Ok;
-
-    if (col1 - col0 < kSmall && row1 - row0 < kSmall) {
-        return scan_small(v0, v1, v2, area2, int32_t(row0), int32_t(row1), int32_t(col0), int32_t(col1));
+    const bool small = col1 - col0 < kSmall && row1 - row0 < kSmall;
+    // Then the rows of this band.
+    row0 = row0 < t_.y0 ? t_.y0 : row0;
+    row1 = row1 > t_.y0 + t_.rows - 1 ? t_.y0 + t_.rows - 1 : row1;
+    if (row0 > row1) return Status::Ok;
+    ++stats.triangles;
+    if (small) {
+        scan_small(v0, v1, v2, area2, int32_t(row0), int32_t(row1), int32_t(col0), int32_t(col1));
+        return Status::Ok;
     }
     const bool clamp = needs_clamp(v0, v1, v2, int32_t(std::max(xmax - xmin, ymax - ymin) >> 4));
     constexpr int32_t kNear = 16 * 1024; // sub-pixels: 32-bit edge walks within this of the origin
     const bool near = xmin >= -kNear && xmax <= kNear && ymin >= -kNear && ymax <= kNear;
-    return near ? scan_rows<int32_t>(v0, v1, v2, area2, int32_t(row0), int32_t(row1), int32_t(col0), int32_t(col1), clamp)
-                : scan_rows<int64_t>(v0, v1, v2, area2, int32_t(row0), int32_t(row1), int32_t(col0), int32_t(col1), clamp);
+    if (near) scan_rows<int32_t>(v0, v1, v2, area2, int32_t(row0), int32_t(row1), int32_t(col0), int32_t(col1), clamp);
+    else scan_rows<int64_t>(v0, v1, v2, area2, int32_t(row0), int32_t(row1), int32_t(col0), int32_t(col1), clamp);
+    return Status::Ok;
 }
 
 // The rows of a larger triangle: each row's span from the three edge walks.
 template <typename T>
-Status Rasterizer::scan_rows(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2, int64_t area2,
+void Rasterizer::scan_rows(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2, int64_t area2,
                              int32_t row0, int32_t row1, int32_t col0, int32_t col1, bool clamp) {
     const int64_t sy0 = int64_t(row0) * 16 + 8;
     EdgeWalk<T> edges[3];
@@ -319,7 +314,6 @@ Status Rasterizer::scan_rows(const ScreenVertex& v0, const ScreenVertex& v1, con
         if (e.side != EdgeWalk<T>::Side::Flat || e.dq > 0 || e.q + T(row1 - row0) * e.dq >= 0) continue;
         flat_skip_last = 1; // a bottom edge whose row is out
     }
-    const bool in_place = fb_ && !clamp;
     uint32_t zrow = at[0].row, srow = at[1].row;
     const uint32_t zx = at[0].sx, zy = at[0].sy, sx = at[1].sx, sy = at[1].sy;
     EdgeWalk<T> lng = edges[longest];
@@ -341,12 +335,13 @@ Status Rasterizer::scan_rows(const ScreenVertex& v0, const ScreenVertex& v1, con
         EdgeWalk<T>& L = long_left ? lng : oth;
         EdgeWalk<T>& R = long_left ? oth : lng;
         if constexpr (sizeof(T) == 4) {
-            if (in_place) {
+            if (!clamp) {
                 const int32_t rows = end - y + 1;
                 if (rows > 0) {
                     InPlaceRows w{L.q, L.r, L.s, L.dq, L.dr, R.q, R.r, R.s, R.dq, R.dr, zrow, zx, zy, srow, sx, sy};
-                    stats.pixels += rows_in_place(w, rows, col0, col1, depth_.data() + size_t(y) * width_, fb_ + size_t(y) * width_,
-                                                  width_, palette_->colour);
+                    const size_t at_row = size_t(y - t_.y0) * t_.width;
+                    stats.pixels += rows_in_place(w, rows, col0, col1, t_.depth + at_row, t_.pixels + at_row, t_.width,
+                                                  palette_->colour);
                     L.q = w.lq, L.r = w.lr, R.q = w.rq, R.r = w.rr, zrow = w.zrow, srow = w.srow;
                     y = end + 1;
                 }
@@ -359,10 +354,10 @@ Status Rasterizer::scan_rows(const ScreenVertex& v0, const ScreenVertex& v1, con
         // The walks in locals (registers, as far as the core has them).
         T lq = L.q, lr = L.r, rq = R.q, rr = R.r;
         const T ls = L.s, ldq = L.dq, ldr = L.dr, rs = R.s, rdq = R.dq, rdr = R.dr;
-        uint16_t* const depth = depth_.data();
-        hal::Rgb565* const fb = fb_;
+        uint16_t* const depth = t_.depth;
+        hal::Rgb565* const fb = t_.pixels;
         const uint32_t* const colour = palette_->colour;
-        const size_t width = width_;
+        const size_t width = t_.width;
         uint32_t pixels = 0, spans = 0;
         for (; y <= end; ++y, zrow += zy, srow += sy) {
             T lo = (lq + (lr != 0) + 7) >> 4; // first column whose centre 16x+8 >= ceil(t/s)
@@ -374,14 +369,14 @@ Status Rasterizer::scan_rows(const ScreenVertex& v0, const ScreenVertex& v1, con
             if (lo < col0) lo = col0;
             if (hi > col1) hi = col1;
             if (lo > hi) continue;
-            if (in_place) {
-                const size_t row = size_t(y) * width;
+            if (!clamp) {
+                const size_t row = size_t(y - t_.y0) * width;
                 pixels += shade_in_place(depth + row + lo, depth + row + hi + 1, fb + row + lo, zrow + zx * uint32_t(lo), zx,
                                          srow + sx * uint32_t(lo), sx, colour);
                 ++spans;
             } else {
                 at[0].row = zrow, at[1].row = srow;
-                if (Status st = shade(int32_t(y), int32_t(lo), int32_t(hi), at, clamp); !ok(st)) return st;
+                shade(int32_t(y), int32_t(lo), int32_t(hi), at, clamp);
             }
         }
         L.q = lq, L.r = lr, R.q = rq, R.r = rr;
@@ -391,17 +386,15 @@ Status Rasterizer::scan_rows(const ScreenVertex& v0, const ScreenVertex& v1, con
             for (int32_t k = row0; k < y; ++k) edges[lower].step();
         }
     }
-    return Status::Ok;
 }
 
 // Small triangles (most of a tessellated model on a handheld's screen): the triangle's pixel
 // box in 32-bit arithmetic, edge functions stepped per pixel. Coverage is the same predicate as
 // EdgeWalk's (the same pixels, top-left rule included).
-Status Rasterizer::scan_small(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2,
-                              int64_t area2, int32_t row0, int32_t row1, int32_t col0, int32_t col1) {
+void Rasterizer::scan_small(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2,
+                            int64_t area2, int32_t row0, int32_t row1, int32_t col0, int32_t col1) {
     const int32_t ox = col0 * 16 + 8, oy = row0 * 16 + 8; // the first pixel's centre
     const bool clamp = needs_clamp(v0, v1, v2, kSmall);
-    const bool in_place = fb_ && !clamp;
     struct Edge {
         int32_t e, sx, sy; // value at the current pixel; steps per pixel in x and y
     } ed[3];
@@ -424,68 +417,49 @@ Status Rasterizer::scan_small(const ScreenVertex& v0, const ScreenVertex& v1, co
         const int32_t lo = x;
         for (; x <= col1 && (e0 | e1 | e2) >= 0; ++x) e0 += ed[0].sx, e1 += ed[1].sx, e2 += ed[2].sx;
         if (x > lo) {
-            if (in_place) {
-                const size_t row = size_t(y) * width_;
-                stats.pixels += shade_in_place(&depth_[row + lo], &depth_[row + x], fb_ + row + lo, at[0].row + at[0].sx * uint32_t(lo),
-                                               at[0].sx, at[1].row + at[1].sx * uint32_t(lo), at[1].sx, palette_->colour);
-            } else if (Status s = shade(y, lo, x - 1, at, clamp); !ok(s)) {
-                return s;
+            if (!clamp) {
+                const size_t row = size_t(y - t_.y0) * t_.width;
+                stats.pixels += shade_in_place(t_.depth + row + lo, t_.depth + row + x, t_.pixels + row + lo,
+                                               at[0].row + at[0].sx * uint32_t(lo), at[0].sx, at[1].row + at[1].sx * uint32_t(lo),
+                                               at[1].sx, palette_->colour);
+            } else {
+                shade(y, lo, x - 1, at, clamp);
             }
         }
         ed[0].e += ed[0].sy, ed[1].e += ed[1].sy, ed[2].e += ed[2].sy;
         for (Interp& t : at) t.row += t.sy;
     }
-    return Status::Ok;
 }
 
-// Shades the pixels lo..hi of row y that pass the depth test and pushes them in runs.
-Status Rasterizer::shade(int32_t y, int32_t lo, int32_t hi, const Interp* at, bool clamp) {
+// Shades the pixels lo..hi of row y that pass the depth test, with the attributes clamped to
+// their vertices' range where `clamp` says they could leave it.
+void Rasterizer::shade(int32_t y, int32_t lo, int32_t hi, const Interp* at, bool clamp) {
     uint32_t z = at[0].row + at[0].sx * uint32_t(lo), s = at[1].row + at[1].sx * uint32_t(lo);
     const uint32_t zs = at[0].sx, ss = at[1].sx;
-    uint16_t* drow = &depth_[size_t(y) * width_];
-    // Pixels go straight into a memory-mapped draw buffer, else into the line and out in runs.
-    hal::Rgb565* line = fb_ ? fb_ + size_t(y) * width_ : line_.data();
+    const size_t row = size_t(y - t_.y0) * t_.width;
+    uint16_t* const drow = t_.depth + row;
+    hal::Rgb565* const line = t_.pixels + row;
     const uint32_t* colour = palette_->colour;
-    int32_t run = -1; // first column of the pending run of visible pixels
     if (!clamp) {
-        // Alternate runs of hidden and of visible pixels; each visible run is pushed whole.
-        uint16_t* d = drow + lo;
-        uint16_t* const end = drow + hi + 1;
-        hal::Rgb565* out = line + lo;
-        while (d < end) {
-            while (d < end && (int32_t(z) >> kFrac) >= int32_t(*d)) ++d, ++out, z += zs, s += ss;
-            hal::Rgb565* const first = out;
-            for (; d < end; ++d, ++out, z += zs, s += ss) {
-                const int32_t zv = int32_t(z) >> kFrac;
-                if (zv >= int32_t(*d)) break;
-                *d = uint16_t(zv);
-                *out = hal::Rgb565(colour[int32_t(s) >> kFrac]);
-            }
-            if (out > first) {
-                if (Status st = flush(int32_t(first - line), int32_t(out - line), y); !ok(st)) return st;
-            }
-        }
-        return Status::Ok;
-    } else {
-        for (int32_t x = lo; x <= hi; ++x, z += zs, s += ss) {
-            const uint16_t zv = uint16_t(at[0].value(z));
-            if (zv < drow[x]) {
-                drow[x] = zv;
-                line[x] = hal::Rgb565(colour[at[1].value(s)]);
-                if (run < 0) run = x;
-            } else if (run >= 0) {
-                if (Status st = flush(run, x, y); !ok(st)) return st;
-                run = -1;
-            }
+        stats.pixels += shade_in_place(drow + lo, drow + hi + 1, line + lo, z, zs, s, ss, colour);
+        ++stats.spans;
+        return;
+    }
+    uint32_t written = 0;
+    for (int32_t x = lo; x <= hi; ++x, z += zs, s += ss) {
+        const uint16_t zv = uint16_t(at[0].value(z));
+        if (zv < drow[x]) {
+            drow[x] = zv;
+            line[x] = hal::Rgb565(colour[at[1].value(s)]);
+            ++written;
         }
     }
-    if (run >= 0) return flush(run, hi + 1, y);
-    return Status::Ok;
+    stats.pixels += written;
+    ++stats.spans;
 }
 
 Status Rasterizer::line(const ScreenVertex& a, const ScreenVertex& b, hal::Rgb565 colour, uint16_t bias) {
     if (!in_guard(a) || !in_guard(b)) return Status::OutOfRange;
-    fb_ = display_.draw_buffer();
     const int32_t x0 = a.x >> 4, y0 = a.y >> 4, x1 = b.x >> 4, y1 = b.y >> 4;
     const int32_t dx = x1 - x0, dy = y1 - y0;
     const int32_t n = (dx < 0 ? -dx : dx) > (dy < 0 ? -dy : dy) ? (dx < 0 ? -dx : dx) : (dy < 0 ? -dy : dy);
@@ -501,56 +475,23 @@ Status Rasterizer::line(const ScreenVertex& a, const ScreenVertex& b, hal::Rgb56
         sz = divide((int64_t(b.z) - a.z) << 8, r);
     }
     z -= int32_t(bias) << 8; // pulled toward the eye
-    uint16_t* const depth = depth_.data();
-    const uint32_t width = width_, height = height_;
+    uint16_t* const depth = t_.depth;
+    hal::Rgb565* const fb = t_.pixels;
+    const uint32_t width = t_.width, band0 = t_.y0, rows = t_.rows;
     uint32_t written = 0;
-    if (hal::Rgb565* const fb = fb_) {
-        for (int32_t i = 0; i <= n; ++i, x += sx, y += sy, z += sz) {
-            const int32_t px = x >> 16, py = y >> 16;
-            if (uint32_t(px) >= width || uint32_t(py) >= height) continue; // off the screen (negatives too)
-            const int32_t zv = z < 0 ? 0 : z >> 8;
-            const size_t at = size_t(py) * width + uint32_t(px);
-            if (zv >= depth[at]) continue;
-            depth[at] = uint16_t(zv);
-            fb[at] = colour;
-            ++written;
-        }
-        stats.pixels += written;
-        return Status::Ok;
-    }
-    // Without a memory-mapped buffer, pixels that follow each other along a row go out as one span.
-    int32_t run_x = 0, run_y = -1, run_n = 0;
-    auto flush_run = [&]() {
-        if (run_n == 0) return Status::Ok;
-        const Status st = display_.fill_span(uint16_t(run_x), uint16_t(run_y), uint16_t(run_n), colour);
-        run_n = 0;
-        return st;
-    };
     for (int32_t i = 0; i <= n; ++i, x += sx, y += sy, z += sz) {
         const int32_t px = x >> 16, py = y >> 16;
-        if (uint32_t(px) >= width || uint32_t(py) >= height) continue;
+        // Off the screen or the band (negatives too).
+        if (uint32_t(px) >= width || uint32_t(py) - band0 >= rows) continue;
         const int32_t zv = z < 0 ? 0 : z >> 8;
-        const size_t at = size_t(py) * width + uint32_t(px);
+        const size_t at = size_t(uint32_t(py) - band0) * width + uint32_t(px);
         if (zv >= depth[at]) continue;
         depth[at] = uint16_t(zv);
+        fb[at] = colour;
         ++written;
-        if (py == run_y && px == run_x + run_n) {
-            ++run_n;
-        } else {
-            if (Status st = flush_run(); !ok(st)) return st;
-            run_x = px, run_y = py, run_n = 1;
-        }
     }
     stats.pixels += written;
-    return flush_run();
-}
-
-Status Rasterizer::flush(int32_t from, int32_t to, int64_t y) {
-    const uint16_t n = static_cast<uint16_t>(to - from);
-    stats.pixels += n;
-    if (fb_) return Status::Ok; // already in place
-    ++stats.spans;
-    return display_.push_span(uint16_t(from), uint16_t(y), &line_[from], n);
+    return Status::Ok;
 }
 
 } // namespace facet::render

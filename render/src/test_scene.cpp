@@ -96,15 +96,16 @@ Status draw_sphere(Rasterizer& raster, const Shader& s) {
 
 } // namespace
 
-Status draw_test_scene(Rasterizer& raster, hal::Display& display, const SceneView& view) {
-    if (Status st = raster.check(); !ok(st)) return st;
-    const uint16_t w = raster.width(), h = raster.height();
+Status draw_test_scene(Rasterizer& raster, const SceneView& view) {
+    const Target& t = raster.target();
+    const uint16_t w = t.width, h = t.height;
     // Background: a vertical gradient, dark blue-grey at the top to light grey at the bottom.
-    for (uint16_t y = 0; y < h; ++y) {
-        const uint32_t t = uint32_t(y) * 255 / (h > 1 ? h - 1 : 1);
-        const hal::Rgb565 c = hal::rgb565(uint8_t(40 + t * 150 / 255), uint8_t(48 + t * 150 / 255),
-                                          uint8_t(70 + t * 140 / 255));
-        if (Status st = display.fill_span(0, y, w, c); !ok(st)) return st;
+    for (int32_t y = t.y0; y < t.y0 + t.rows; ++y) {
+        const uint32_t k = uint32_t(y) * 255 / (h > 1 ? h - 1 : 1);
+        const hal::Rgb565 c = hal::rgb565(uint8_t(40 + k * 150 / 255), uint8_t(48 + k * 150 / 255),
+                                          uint8_t(70 + k * 140 / 255));
+        hal::Rgb565* row = t.row(y);
+        for (uint16_t x = 0; x < w; ++x) row[x] = c;
     }
     raster.clear_depth();
 

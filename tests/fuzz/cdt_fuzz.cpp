@@ -6,6 +6,7 @@
 // topology, constraints and the Delaunay property; odd = a valid face (outer rectangle, holes in
 // separate cells) also checked for the inner set.
 #include "cdt/check.h"
+#include "hal/print.h"
 
 #include <cstdint>
 #include <cstdio>
@@ -33,9 +34,11 @@ struct Arena32 {
     ArenaView<uint32_t> view() { return {v, t, work, order, minseq, ins, keys}; }
 };
 
-void require(const CheckResult& r) {
-    if (!r.ok) {
-        std::fprintf(stderr, "checker: %s\n", r.message);
+void require(const Result& r) {
+    if (!r.ok()) {
+        char text[200];
+        describe(r, text, sizeof text);
+        std::fprintf(stderr, "checker: %s\n", text);
         std::abort();
     }
 }

@@ -4,26 +4,31 @@
 
 using namespace facet;
 
-TEST(FakeDisplay, RejectsSpansOffScreenAndDrawsNothing) {
-    hal::fake::Display d(32, 8);
+TEST(FakeDisplay, RejectsAreasOffScreenAndDrawsNothing) {
+    hal::fake::Display d(32, 8, false);
     const hal::Rgb565 px[4] = {1, 2, 3, 4};
-    EXPECT_EQ(d.push_span(30, 0, px, 4), Status::OutOfRange); // runs off the right edge
-    EXPECT_EQ(d.push_span(0, 8, px, 1), Status::OutOfRange);  // below the last row
-    EXPECT_EQ(d.fill_span(0, 0, 0, 7), Status::OutOfRange);   // empty span
-    EXPECT_EQ(d.push_span(0, 0, nullptr, 1), Status::OutOfRange);
-    EXPECT_EQ(d.rejected, 4u);
+    EXPECT_EQ(d.write({30, 0, 4, 1}, px), Status::OutOfRange); // runs off the right edge
+    EXPECT_EQ(d.write({0, 8, 1, 1}, px), Status::OutOfRange);  // below the last row
+    EXPECT_EQ(d.write({0, 0, 0, 1}, px), Status::OutOfRange);  // empty
+    EXPECT_EQ(d.write({0, 0, 1, 1}, nullptr), Status::OutOfRange);
+    EXPECT_EQ(d.show(nullptr), Status::Unsupported) << "no scan-out on this panel";
+    EXPECT_EQ(d.rejected, 5u);
     EXPECT_EQ(d.pixels, 0u);
-    for (hal::Rgb565 p : d.drawn()) EXPECT_EQ(p, 0);
+    for (hal::Rgb565 p : d.front()) EXPECT_EQ(p, 0);
 }
 
-TEST(FakeDisplay, DoubleBufferingShowsOnlyAfterFlip) {
+TEST(FakeDisplay, ShowsFramesInPlaceAndWritesAreasIntoThem) {
     hal::fake::Display d(16, 4);
-    ASSERT_EQ(d.fill_span(0, 1, 16, 0xF800), Status::Ok);
-    EXPECT_EQ(d.pixel(3, 1), 0);
-    ASSERT_EQ(d.flip(), Status::Ok);
-    EXPECT_EQ(d.pixel(3, 1), 0xF800);
-    EXPECT_EQ(d.pixel(3, 0), 0);
-    EXPECT_EQ(d.info().buffers, 2);
+    std::vector<hal::Rgb565> a(16 * 4, 0x1111), b(16 * 4, 0x2222);
+    ASSERT_EQ(d.show(a.data()), Status::Ok);
+    EXPECT_EQ(d.pixel(3, 1), 0x1111);
+    ASSERT_EQ(d.show(b.data()), Status::Ok);
+    EXPECT_EQ(d.pixel(3, 1), 0x2222);
+    const hal::Rgb565 band[16 * 2] = {};
+    ASSERT_EQ(d.write({0, 2, 16, 2}, band), Status::Ok);
+    EXPECT_EQ(b[16 * 2 + 5], 0) << "an area goes into the frame shown";
+    EXPECT_EQ(d.pixel(5, 1), 0x2222);
+    EXPECT_TRUE(d.info().scanout);
 }
 
 TEST(FakeConsoleInput, RecordsAndReplays) {

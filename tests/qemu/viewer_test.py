@@ -8,13 +8,13 @@ drag with the PS/2 mouse on versatilepb, zoom, fit, finer level of detail, quit)
   * every screenshot (wireframe, half, done, turned, dragged, zoomed, lod) is pixel-identical
     to the one facet-viewer-ref renders on the host with the same code and the same session;
     the session changed the picture (done, turned, zoomed and lod all differ);
-  * exact instruction counts: tessellation = the 'edges' region + every 'face' region of the
-    first pass; a frame = one full redraw ('frame'). Budgets: tessellation <= 600 M
+  * exact instruction counts: tessellation = every 'edges' and 'face' region (pieces of work) of
+    the first pass; a frame = the 'frame' pieces of one full redraw (up to its '@frame' line). Budgets: tessellation <= 600 M
     instructions (1 s at 600 MHz), a frame <= 20 M per 10,000 triangles in view (30 frames/s;
     views under 10k triangles get the full 20 M). Printed for every run; asserted with
     --assert-budgets (the ctest runs on the ARM926 do).
 
-  viewer_test.py --board B --elf ELF --packer facet-pack --ref facet-viewer-ref --work DIR
+  viewer_test.py --board B --elf ELF --packer facet-pack --ref facet-sim --work DIR
                  [--sample facet-sample-model] [--markdown FILE] MODEL.step...
 """
 import argparse
@@ -27,10 +27,9 @@ import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 sys.path.insert(0, os.path.join(ROOT, 'tools'))
+import board as boards  # noqa: E402
 import img  # noqa: E402
 
-PACK_ADDRESS = {'qemu-versatilepb': '0x01C00000', 'qemu-mps2-an500': '0x60C00000'}
-SIZE = {'qemu-versatilepb': '640x480', 'qemu-mps2-an500': '480x272'}
 TESSELLATION_BUDGET = 600_000_000
 FRAME_BUDGET_PER_10K = 20_000_000
 
@@ -69,26 +68,34 @@ def frame_budget(triangles):
 
 
 def analyse(uart, regions):
-    """Per pass: tessellation instructions; per full frame: instructions and mesh triangles."""
+    """Per pass: tessellation instructions (its pieces of sampling and faces); per full frame:
+    its pieces' instructions (the last 'pieces' frame regions before its '@frame' line: a frame
+    the view outdated while it was drawn is not one) and the mesh's triangles then."""
     names = [r['name'] for r in regions]
     counts = [r['instructions'] for r in regions]
-    tess, frames, tri_now, pass_no, i = {}, [], 0, -1, 0
+    tess, frames, tri_now, pass_no, i, pieces = {}, [], 0, -1, 0, []
     for line in uart.splitlines():
         w = line.split()
         if not w:
             continue
-        if w[0] == '@lod':
-            pass_no += 1
+        if w[0] == '@pass':
+            pass_no = int(w[1])
             tri_now = 0
         elif w[0] == '@progress':
             tri_now = int(w[3])
+        elif w[0] == '@frame':
+            kv = dict(zip(w[1::2], w[2::2]))
+            n = int(kv.get('pieces', 1))
+            mine = pieces[-n:] if len(pieces) >= n else [None]
+            frames.append({'instructions': None if None in mine else sum(mine), 'triangles': tri_now, 'pass': pass_no})
+            pieces = []
         elif w[0] == '@begin' and len(w) == 2:
             if i < len(names) and names[i] == w[1]:
                 n = counts[i]
                 if w[1] in ('edges', 'face'):
                     tess[pass_no] = tess.get(pass_no, 0) + (n or 0)
                 elif w[1] == 'frame':
-                    frames.append({'instructions': n, 'triangles': tri_now, 'pass': pass_no})
+                    pieces.append(n)
             i += 1
     return tess, frames
 
@@ -106,6 +113,7 @@ def main():
     ap.add_argument('models', nargs='*')
     args = ap.parse_args()
     os.makedirs(args.work, exist_ok=True)
+    board = boards.load(args.board)
     models = list(args.models)
     if args.sample:
         step = os.path.join(args.work, 'sample.step')
@@ -124,9 +132,9 @@ def main():
         script = session(args.board)
         sends = [x for s in script for x in ('--send', s)]
         r = subprocess.run([sys.executable, os.path.join(ROOT, 'tools', 'qemu', 'run.py'), '--board', args.board,
-                            '--elf', args.elf, '--out', out, '--load', f'{fpk}@{PACK_ADDRESS[args.board]}', '--icount',
+                            '--elf', args.elf, '--out', out, '--load', f'{fpk}@{board["pack"]["address"]}', '--icount',
                             '--timeout', '900', '--quiet'] + sends, capture_output=True, text=True)
-        h = subprocess.run([args.ref, '--size', SIZE[args.board], '--pack', fpk, '--out', ref] + sends,
+        h = subprocess.run([args.ref, '--headless', '--quiet', '--size', board['size'], '--pack', fpk, '--out', ref] + sends,
                            capture_output=True, text=True)
         if not os.path.exists(os.path.join(out, 'report.json')):
             failed = True
@@ -140,7 +148,7 @@ def main():
         if r.returncode != 0:
             problems.append(f'exit {r.returncode}: {r.stderr.strip()[-300:]}')
         if h.returncode != 0:
-            problems.append(f'facet-viewer-ref exit {h.returncode}: {h.stderr.strip()[-300:]}')
+            problems.append(f'facet-sim exit {h.returncode}: {h.stderr.strip()[-300:]}')
         m = re.search(r'^@tessellation faces (\d+) failed (\d+) triangles (\d+) vertices (\d+) mesh_bytes (\d+) '
                       r'arena_peak (\d+)', uart, re.M)
         if not m:

@@ -1,15 +1,16 @@
-// The viewer core with bad input, on the host (the firmware runs the same code): a face too
-// big for the CET arena is reported and stays wireframe while the rest fills in; a corrupt,
-// truncated or foreign pack file is refused with its reason and nothing is drawn from it.
+// The module through its public API (facet/viewer.h), as an application uses it: bad packs,
+// faces over capacity, the display contract (full frames and bands, copy and scan-out, a DMA's
+// late flush_done), time slicing, input and the events out.
+#include "facet/viewer.h"
 #include "geom/pack.h"
-#include "hal/fake.h"
+#include "hal/print.h"
 #include "pack_io.h"
 #include "pack_writer.h"
-#include "viewer.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <algorithm>
 #include <cstring>
 #include <memory>
 #include <string>
@@ -52,61 +53,133 @@ Bytes polygon_and_triangle(uint32_t sides) {
     return w.finish();
 }
 
-// The viewer on fake hardware, as facet-viewer-ref runs it.
-struct Rig {
-    hal::fake::Display display{320, 240};
-    hal::fake::Console console;
-    hal::fake::Clock clock;
-    hal::fake::Input input;
-    hal::Board board{"host", console, clock, display, input};
-    std::vector<uint16_t> depth0 = std::vector<uint16_t>(320 * 240), depth1 = std::vector<uint16_t>(320 * 240);
-    std::vector<hal::Rgb565> line = std::vector<hal::Rgb565>(320);
-    std::unique_ptr<viewer::Storage> storage = std::make_unique<viewer::Storage>();
-    viewer::Memory mem = storage->memory(depth0, depth1, line);
-    std::unique_ptr<viewer::Viewer> v = std::make_unique<viewer::Viewer>(board, mem, [](void*, const char*) { return Status::Ok; }, nullptr);
-    std::vector<uint64_t> region;
+std::string text(const Result& r) {
+    char buf[200];
+    describe(r, buf, sizeof buf);
+    return buf;
+}
 
-    // The file at the start of a region with room for it and its inflated pack.
-    Status open(const Bytes& file, uint32_t room = 1u << 20) {
-        region.assign((file.size() + room) / 8 + 1, 0);
-        std::memcpy(region.data(), file.data(), file.size());
-        return v->open(reinterpret_cast<uint8_t*>(region.data()), uint32_t(file.size() + room));
+// An application: its buffers, its display (a panel it copies bands or frames into, or one it
+// shows full frames on), its event log.
+struct App {
+    uint16_t w = 160, h = 120;
+    uint16_t lines = 120;
+    int buffers = 2;
+    Flush mode = Flush::Copy;
+    bool late_done = false; // a DMA: flush_done() comes later (call done())
+    std::vector<Rgb565> buf[2];
+    std::vector<uint16_t> depth[2];
+    std::vector<Rgb565> panel;
+    const Rgb565* shown = nullptr;
+    std::vector<uint64_t> workspace;
+    std::vector<uint32_t> file, memory;
+    Viewer* v = nullptr;
+    std::vector<Event> events;
+    uint32_t flushes = 0, pending = 0;
+    uint32_t clock_us = 0, tick_us = 0; // a fake clock: each read advances it
+    bool use_clock = false;
+
+    Result create(bool depth_per_buffer = true) {
+        for (int b = 0; b < 2; ++b) {
+            buf[b].assign(size_t(w) * lines, 0);
+            depth[b].assign(size_t(w) * lines, 0);
+        }
+        panel.assign(size_t(w) * h, 0);
+        Config cfg;
+        cfg.display.width = w, cfg.display.height = h, cfg.display.band_lines = lines;
+        cfg.display.buffers[0] = buf[0].data();
+        cfg.display.buffers[1] = buffers == 2 ? buf[1].data() : nullptr;
+        cfg.display.depth[0] = depth[0].data();
+        cfg.display.depth[1] = depth_per_buffer && buffers == 2 ? depth[1].data() : nullptr;
+        cfg.display.mode = mode;
+        cfg.display.flush = [](void* self, const Area& a, const Rgb565* px) { static_cast<App*>(self)->flushed(a, px); };
+        cfg.display.user = this;
+        cfg.on_event = [](void* self, const Event& e) { static_cast<App*>(self)->events.push_back(e); };
+        cfg.event_user = this;
+        if (use_clock) {
+            cfg.now_us = [](void* self) {
+                App& a = *static_cast<App*>(self);
+                return a.clock_us += a.tick_us;
+            };
+            cfg.clock_user = this;
+        }
+        workspace.assign(workspace_bytes() / 8 + 1, 0);
+        Result why;
+        v = Viewer::create(cfg, workspace.data(), workspace.size() * 8, &why);
+        return why;
+    }
+    void flushed(const Area& a, const Rgb565* px) {
+        ++flushes;
+        if (mode == Flush::Scanout) {
+            shown = px;
+        } else {
+            for (uint16_t y = 0; y < a.height; ++y)
+                std::memcpy(&panel[size_t(a.y + y) * w + a.x], px + size_t(y) * a.width, size_t(a.width) * 2);
+        }
+        if (late_done) ++pending;
+        else v->flush_done();
+    }
+    void done() {
+        for (; pending; --pending) v->flush_done();
+    }
+    std::vector<Rgb565> screen() const { return mode == Flush::Scanout ? std::vector<Rgb565>(shown, shown + size_t(w) * h) : panel; }
+    Result load(const Bytes& pack_file) {
+        file.assign(pack_file.size() / 4 + 1, 0);
+        std::memcpy(file.data(), pack_file.data(), pack_file.size());
+        memory.assign(pack_memory_bytes(file.data(), uint32_t(pack_file.size())) / 4 + 1, 0);
+        return v->load(file.data(), uint32_t(pack_file.size()), memory.data(), uint32_t(memory.size() * 4));
     }
     void run() {
-        while (v->step()) {
-        }
+        for (int i = 0; i < 100000 && v->step(100000) != Activity::Idle; ++i) done();
     }
-    bool said(const std::string& text) const { return console.output.find(text) != std::string::npos; }
+    int count(Event::Kind k) const {
+        int n = 0;
+        for (const Event& e : events) n += e.kind == k;
+        return n;
+    }
+    const Event* last(Event::Kind k) const {
+        for (auto it = events.rbegin(); it != events.rend(); ++it)
+            if (it->kind == k) return &*it;
+        return nullptr;
+    }
 };
 
 } // namespace
 
-TEST(ViewerInput, AFaceTooBigForTheArenaStaysWireframeAndTheRestFillsIn) {
-    const uint32_t sides = uint32_t(viewer::capacity::kFaceVertices) + 500;
-    Rig rig;
-    ASSERT_EQ(rig.open(deflate_pack(polygon_and_triangle(sides))), Status::Ok) << rig.console.output;
-    rig.run();
-    const viewer::Totals& t = rig.v->totals();
-    EXPECT_EQ(t.faces, 2u);
-    EXPECT_EQ(t.failed, 1u);
-    EXPECT_EQ(t.done, 1u);
-    EXPECT_EQ(t.triangles, 1u) << "the triangle face";
-    EXPECT_TRUE(rig.said("@face 0 failed: ")) << rig.console.output.substr(0, 2000);
-    EXPECT_TRUE(rig.said("it stays wireframe"));
-    EXPECT_TRUE(rig.said("@tessellation faces 2 failed 1 triangles 1 "));
+TEST(Viewer, AFaceTooBigForTheArenaStaysWireframeAndTheRestFillsIn) {
+    const uint32_t sides = FACET_DEFAULT_FACE_POINTS + 500;
+    App app;
+    ASSERT_TRUE(app.create().ok());
+    ASSERT_TRUE(app.load(deflate_pack(polygon_and_triangle(sides))).ok());
+    app.run();
+    const Stats s = app.v->stats();
+    EXPECT_EQ(s.faces, 2u);
+    EXPECT_EQ(s.failed, 1u);
+    EXPECT_EQ(s.done, 1u);
+    EXPECT_EQ(s.triangles, 1u) << "the triangle face";
+    ASSERT_EQ(app.count(Event::Kind::FaceFailed), 1);
+    const Event& f = *app.last(Event::Kind::FaceFailed);
+    EXPECT_EQ(f.failed.face, 0u);
+    EXPECT_EQ(f.why.status, Status::Full);
+    EXPECT_EQ(text(f.why).rfind("face 0", 0), 0u) << text(f.why);
+    const Event& t = *app.last(Event::Kind::Tessellated);
+    EXPECT_EQ(t.tessellated.faces, 2u);
+    EXPECT_EQ(t.tessellated.failed, 1u);
+    EXPECT_EQ(t.tessellated.triangles, 1u);
 }
 
-TEST(ViewerInput, APolygonWithinTheArenaFillsIn) {
+TEST(Viewer, APolygonWithinTheArenaFillsIn) {
     // The same model with a face the arena holds: both faces tessellated (the test above
     // fails for the reason it names, not for the model).
-    Rig rig;
-    ASSERT_EQ(rig.open(deflate_pack(polygon_and_triangle(2000))), Status::Ok) << rig.console.output;
-    rig.run();
-    EXPECT_EQ(rig.v->totals().failed, 0u) << rig.console.output.substr(0, 2000);
-    EXPECT_EQ(rig.v->totals().triangles, 1998u + 1u);
+    App app;
+    ASSERT_TRUE(app.create().ok());
+    ASSERT_TRUE(app.load(deflate_pack(polygon_and_triangle(2000))).ok());
+    app.run();
+    EXPECT_EQ(app.v->stats().failed, 0u);
+    EXPECT_EQ(app.v->stats().triangles, 1998u + 1u);
 }
 
-TEST(ViewerInput, BadPackFilesAreRefusedWithTheirReason) {
+TEST(Viewer, BadPackFilesAreRefusedWithTheirReason) {
     const Bytes plain = polygon_and_triangle(12);
     const Bytes deflated = deflate_pack(plain);
     struct Case {
@@ -120,24 +193,261 @@ TEST(ViewerInput, BadPackFilesAreRefusedWithTheirReason) {
     truncated_stream.resize(deflated.size() / 2);
     Bytes bad_stream = deflated;
     bad_stream[sizeof(pack::DeflatedHead)] = 0xFF; // a final block of the reserved type
+    Bytes bad_record = plain;
     const Case cases[] = {
-        {"a bit flipped in a plain pack", flipped, "CRC mismatch"},
-        {"a deflated pack cut in half", truncated_stream, "viewer: no valid pack: "},
-        {"a damaged DEFLATE stream", bad_stream, "viewer: no valid pack: "},
+        {"a bit flipped in a plain pack", flipped, "header: CRC mismatch"},
+        {"a deflated pack cut in half", truncated_stream, "pack file: "},
+        {"a damaged DEFLATE stream", bad_stream, "pack file: "},
         {"not a pack at all", Bytes(300, 'x'), "no pack here (neither FPK1 nor FPZ1)"},
         {"nothing loaded", Bytes(64, 0), "no pack here"},
     };
     for (const Case& c : cases) {
-        Rig rig;
-        EXPECT_NE(rig.open(c.file), Status::Ok) << c.name;
-        EXPECT_TRUE(rig.said(c.reason)) << c.name << ": " << rig.console.output;
-        EXPECT_FALSE(rig.v->step()) << c.name << ": nothing to tessellate";
+        App app;
+        ASSERT_TRUE(app.create().ok());
+        const Result r = app.load(c.file);
+        EXPECT_FALSE(r.ok()) << c.name;
+        EXPECT_NE(text(r).find(c.reason), std::string::npos) << c.name << ": " << text(r);
+        EXPECT_EQ(app.v->step(1000), Activity::Idle) << c.name << ": nothing to show";
+        EXPECT_EQ(app.flushes, 0u) << c.name;
     }
 }
 
-TEST(ViewerInput, APackLargerThanItsMemoryIsRefused) {
-    Rig rig;
+TEST(Viewer, ADeflatedPackNeedsItsMemory) {
+    App app;
+    ASSERT_TRUE(app.create().ok());
     const Bytes deflated = deflate_pack(polygon_and_triangle(12));
-    EXPECT_EQ(rig.open(deflated, 64), Status::Full); // room for the file, not for the pack too
-    EXPECT_TRUE(rig.said("do not fit the pack memory")) << rig.console.output;
+    std::vector<uint32_t> file(deflated.size() / 4 + 1), small(16);
+    std::memcpy(file.data(), deflated.data(), deflated.size());
+    EXPECT_EQ(app.v->load(file.data(), uint32_t(deflated.size()), nullptr, 0).status, Status::Full);
+    EXPECT_EQ(app.v->load(file.data(), uint32_t(deflated.size()), small.data(), 64).status, Status::Full);
+    EXPECT_GT(pack_memory_bytes(file.data(), uint32_t(deflated.size())), deflated.size());
+    // In place, as a board loads it: the file at the start of its pack memory.
+    std::vector<uint32_t> region((deflated.size() + pack_memory_bytes(file.data(), uint32_t(deflated.size()))) / 4 + 1);
+    std::memcpy(region.data(), deflated.data(), deflated.size());
+    EXPECT_TRUE(app.v->load(region.data(), uint32_t(region.size() * 4), region.data(), uint32_t(region.size() * 4)).ok());
+}
+
+TEST(Viewer, CreateRefusesMissingOrSmallBuffers) {
+    std::vector<uint64_t> ws(workspace_bytes() / 8 + 1);
+    std::vector<Rgb565> px(160 * 120);
+    std::vector<uint16_t> z(160 * 120);
+    auto config = [&]() {
+        Config c;
+        c.display = {160, 120, 120, {px.data(), nullptr}, {z.data(), nullptr}, Flush::Copy, [](void*, const Area&, const Rgb565*) {}, nullptr};
+        return c;
+    };
+    Result why;
+    Config c = config();
+    ASSERT_NE(Viewer::create(c, ws.data(), ws.size() * 8, &why), nullptr) << text(why);
+    EXPECT_EQ(Viewer::create(c, ws.data(), workspace_bytes() / 2, &why), nullptr);
+    EXPECT_EQ(why.status, Status::Full);
+    EXPECT_EQ(Viewer::create(c, reinterpret_cast<uint8_t*>(ws.data()) + 4, ws.size() * 8 - 8, &why), nullptr);
+    EXPECT_NE(text(why).find("aligned"), std::string::npos);
+    c = config(), c.display.buffers[0] = nullptr;
+    EXPECT_EQ(Viewer::create(c, ws.data(), ws.size() * 8, &why), nullptr);
+    c = config(), c.display.band_lines = 121;
+    EXPECT_EQ(Viewer::create(c, ws.data(), ws.size() * 8, &why), nullptr);
+    c = config(), c.display.mode = Flush::Scanout, c.display.band_lines = 16;
+    EXPECT_EQ(Viewer::create(c, ws.data(), ws.size() * 8, &why), nullptr) << "scan-out takes full frames";
+    c = config(), c.capacity.face_points = 40000;
+    EXPECT_EQ(Viewer::create(c, ws.data(), ws.size() * 8, &why), nullptr) << "a 16-bit arena";
+}
+
+TEST(Viewer, BandsGiveTheSamePixelsAsFullFrames) {
+    // The same model and view through every display configuration: full frames (two buffers
+    // with a depth buffer each, or one shared depth buffer; scan-out or copy) and bands of
+    // several heights with one or two band buffers. The final pictures are identical.
+    const Bytes pack = deflate_pack(polygon_and_triangle(40));
+    struct Setup {
+        uint16_t lines;
+        int buffers;
+        Flush mode;
+        bool depth_each;
+    };
+    const Setup setups[] = {{120, 2, Flush::Scanout, true}, {120, 2, Flush::Copy, false}, {120, 1, Flush::Copy, true},
+                            {16, 2, Flush::Copy, false},    {7, 1, Flush::Copy, false},   {1, 2, Flush::Copy, false},
+                            {50, 2, Flush::Copy, false}};
+    std::vector<Rgb565> reference;
+    for (const Setup& s : setups) {
+        App app;
+        app.lines = s.lines, app.buffers = s.buffers, app.mode = s.mode;
+        ASSERT_TRUE(app.create(s.depth_each).ok());
+        ASSERT_TRUE(app.load(pack).ok());
+        app.run();
+        app.v->key('d'); // a view change: every configuration draws it whole
+        app.v->key('w');
+        app.run();
+        const std::vector<Rgb565> got = app.screen();
+        if (reference.empty()) {
+            reference = got;
+            size_t lit = 0;
+            for (size_t i = 0; i < got.size(); ++i) lit += got[i] != got[0];
+            EXPECT_GT(lit, got.size() / 20) << "the picture shows something";
+        }
+        EXPECT_EQ(got, reference) << "bands of " << s.lines << ", " << s.buffers << " buffers";
+    }
+}
+
+TEST(Viewer, WithoutAClockEachStepIsOnePieceOfWork) {
+    App app;
+    ASSERT_TRUE(app.create().ok());
+    ASSERT_TRUE(app.load(polygon_and_triangle(3000)).ok());
+    int steps = 0;
+    size_t seen = 0;
+    while (app.v->step(0) != Activity::Idle && steps < 10000) {
+        ++steps;
+        int begun = 0;
+        for (; seen < app.events.size(); ++seen) begun += app.events[seen].kind == Event::Kind::WorkBegin;
+        ASSERT_EQ(begun, 1) << "step " << steps;
+    }
+    EXPECT_GT(steps, 5) << "sampling, the faces in pieces, frames";
+    EXPECT_EQ(app.v->stats().done, 2u);
+}
+
+TEST(Viewer, AStepStopsWhenItsBudgetIsSpent) {
+    // A clock that advances 50 us at every read: a step goes on with pieces of work while its
+    // budget lasts (the step reads the clock once a piece at least: at most budget / 50 + 1
+    // pieces), and always does one.
+    for (uint32_t budget : {1u, 400u, 2000u}) {
+        App a;
+        a.use_clock = true, a.tick_us = 50;
+        ASSERT_TRUE(a.create().ok());
+        ASSERT_TRUE(a.load(polygon_and_triangle(3000)).ok());
+        size_t seen = 0;
+        int steps = 0, most = 0;
+        while (a.v->step(budget) != Activity::Idle && steps < 10000) {
+            ++steps;
+            int begun = 0;
+            for (; seen < a.events.size(); ++seen) begun += a.events[seen].kind == Event::Kind::WorkBegin;
+            ASSERT_GE(begun, 1) << "budget " << budget;
+            ASSERT_LE(begun, int(budget / 50 + 1)) << "budget " << budget;
+            most = std::max(most, begun);
+        }
+        EXPECT_EQ(a.v->stats().done, 2u);
+        if (budget == 1) {
+            EXPECT_EQ(most, 1);
+        }
+        if (budget == 2000) {
+            EXPECT_GT(most, 3);
+        }
+    }
+    App b;
+    b.use_clock = true, b.tick_us = 50;
+    ASSERT_TRUE(b.create().ok());
+    ASSERT_TRUE(b.load(polygon_and_triangle(3000)).ok());
+    EXPECT_EQ(b.v->step(1'000'000'000), Activity::Idle) << "all of it in one step";
+    EXPECT_EQ(b.v->stats().done, 2u);
+    App c;
+    ASSERT_TRUE(c.create().ok());
+    ASSERT_TRUE(c.load(polygon_and_triangle(3000)).ok());
+    c.run();
+    EXPECT_EQ(b.screen(), c.screen()) << "however the work is cut, the same picture";
+}
+
+TEST(Viewer, ADmaDisplayGetsNoDrawingIntoABufferInFlight) {
+    // flush_done() comes only when step() says it waits for it (a slow DMA): meanwhile the
+    // module draws into no buffer that is being copied, hands over one flush at a time, and
+    // the picture comes out whole.
+    for (int buffers : {1, 2}) {
+        App app;
+        app.lines = 30, app.buffers = buffers, app.late_done = true;
+        ASSERT_TRUE(app.create(false).ok());
+        ASSERT_TRUE(app.load(polygon_and_triangle(40)).ok());
+        int waits = 0;
+        Activity a = Activity::Busy;
+        for (int i = 0; i < 100000; ++i) {
+            const uint32_t before = app.flushes;
+            a = app.v->step(0);
+            ASSERT_LE(app.pending, 1u) << "one flush in flight at most";
+            if (app.flushes > before) {
+                // The pixels just handed over: they must stay until flush_done().
+                const Rgb565* px = app.buffers == 2 ? app.buf[(app.flushes - 1) % 2].data() : app.buf[0].data();
+                const std::vector<Rgb565> copy(px, px + size_t(app.w) * app.lines);
+                while ((a = app.v->step(0)) == Activity::Busy) {
+                    ASSERT_TRUE(std::equal(copy.begin(), copy.end(), px)) << "drawn into while in flight";
+                }
+                ASSERT_TRUE(std::equal(copy.begin(), copy.end(), px));
+            }
+            if (a == Activity::Waiting) ++waits;
+            app.done();
+            if (a == Activity::Idle) break;
+        }
+        EXPECT_GT(waits, 0) << buffers << " buffers";
+        EXPECT_EQ(a, Activity::Idle);
+        EXPECT_EQ(app.v->stats().done, 2u);
+        App ref; // the same, copied at once
+        ASSERT_TRUE(ref.create().ok());
+        ASSERT_TRUE(ref.load(polygon_and_triangle(40)).ok());
+        ref.run();
+        EXPECT_EQ(app.screen(), ref.screen()) << buffers << " buffers";
+    }
+}
+
+TEST(Viewer, KeysGesturesAndPicks) {
+    App app;
+    ASSERT_TRUE(app.create().ok());
+    ASSERT_TRUE(app.load(polygon_and_triangle(40)).ok());
+    app.run();
+    auto view = [&]() { return app.last(Event::Kind::ViewChanged)->view; };
+    app.v->key('d');
+    ASSERT_NE(app.last(Event::Kind::ViewChanged), nullptr);
+    const float yaw = view().yaw_deg;
+    app.v->key(KeyLeft);
+    EXPECT_NEAR(view().yaw_deg, yaw - 15, 0.01f);
+    app.v->key('+');
+    EXPECT_NEAR(view().zoom, 0.8f, 1e-5f);
+    app.v->wheel(-1);
+    EXPECT_NEAR(view().zoom, 1.0f, 1e-5f);
+    const int changes = app.count(Event::Kind::ViewChanged);
+    app.v->key('%'); // no key of the table
+    EXPECT_EQ(app.count(Event::Kind::ViewChanged), changes);
+    // One finger: small motions are a tap's; a drag orbits.
+    app.v->touch(0, 80, 60, true);
+    app.v->touch(0, 83, 60, true);
+    EXPECT_EQ(app.count(Event::Kind::ViewChanged), changes) << "within the tap slop";
+    app.v->touch(0, 100, 60, true);
+    EXPECT_NEAR(view().yaw_deg, yaw - 15 + 20 * 0.5f, 0.01f) << "half a degree a pixel, from where it landed";
+    app.v->touch(0, 100, 60, false);
+    EXPECT_EQ(app.count(Event::Kind::Picked), 0) << "a drag is no tap";
+    // Two fingers apart: zoom in.
+    app.v->touch(0, 60, 60, true);
+    app.v->touch(1, 100, 60, true);
+    const float zoom = view().zoom;
+    app.v->touch(1, 140, 60, true);
+    EXPECT_LT(view().zoom, zoom);
+    app.v->touch(1, 140, 60, false);
+    app.v->touch(0, 60, 60, false);
+    EXPECT_EQ(app.count(Event::Kind::Picked), 0) << "a pinch is no tap";
+    // Back to the fitted view: a tap in the middle picks the polygon, one in a corner nothing.
+    app.v->key('f');
+    app.run();
+    app.v->touch(0, 60, 60, true);
+    app.v->touch(0, 60, 60, false);
+    ASSERT_EQ(app.count(Event::Kind::Picked), 1);
+    EXPECT_TRUE(app.last(Event::Kind::Picked)->pick.hit);
+    EXPECT_EQ(app.last(Event::Kind::Picked)->pick.face, 0u);
+    app.v->touch(0, 1, 1, true);
+    app.v->touch(0, 1, 1, false);
+    EXPECT_FALSE(app.last(Event::Kind::Picked)->pick.hit);
+    // A mouse click picks where the pointer is (it starts in the middle).
+    app.v->pointer(0, 0, 1);
+    app.v->pointer(0, 0, 0);
+    EXPECT_EQ(app.count(Event::Kind::Picked), 3);
+    EXPECT_TRUE(app.last(Event::Kind::Picked)->pick.hit);
+}
+
+TEST(Viewer, LevelsOfDetailRetessellateWithinTheirLimits) {
+    App app;
+    ASSERT_TRUE(app.create().ok());
+    ASSERT_TRUE(app.load(polygon_and_triangle(40)).ok());
+    app.run();
+    const float t0 = app.v->stats().tolerance_mm;
+    app.v->key(']');
+    app.run();
+    EXPECT_NEAR(app.v->stats().tolerance_mm, t0 / 2, t0 * 1e-6f);
+    EXPECT_EQ(app.v->stats().pass, 1u);
+    EXPECT_EQ(app.count(Event::Kind::Tessellated), 2);
+    for (int i = 0; i < 10; ++i) app.v->key(']');
+    app.run();
+    EXPECT_NEAR(app.v->stats().tolerance_mm, t0 / 8, t0 * 1e-6f) << "no finer than an eighth";
 }

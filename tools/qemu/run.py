@@ -37,14 +37,16 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, os.path.dirname(HERE))
+import board as boards  # noqa: E402
 import img  # noqa: E402
 
-BOARDS = {
-    'qemu-versatilepb': ['-M', 'versatilepb', '-m', '32M',
-                         '-audiodev', 'none,id=snd0', '-global', 'pl041.audiodev=snd0'],
-    'qemu-mps2-an500': ['-M', 'mps2-an500', '-m', '16M'],
-}
 MHZ = 600
+
+
+def qemu_board(name):
+    """The machine and its options, from the board's description (boards/<board>/board.json)."""
+    b = boards.load(name)
+    return ['-M', b['qemu']['machine']] + b['qemu']['args']
 
 
 def find_plugin():
@@ -100,7 +102,7 @@ class Qmp:
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument('--board', required=True, choices=sorted(BOARDS))
+    ap.add_argument('--board', required=True, choices=[b for b in boards.names() if b.startswith('qemu-')])
     ap.add_argument('--elf', required=True)
     ap.add_argument('--out', required=True, help='directory for uart.log, screenshots, report.json')
     ap.add_argument('--load', action='append', default=[], metavar='FILE@ADDR')
@@ -129,7 +131,7 @@ def main():
     if os.path.exists(plugin_log):
         os.unlink(plugin_log)
 
-    cmd = ['qemu-system-arm'] + BOARDS[args.board] + [
+    cmd = ['qemu-system-arm'] + qemu_board(args.board) + [
         '-kernel', elf, '-serial', 'stdio', '-monitor', 'none',
         '-semihosting-config', 'enable=on,target=native',
         '-qmp', f'unix:{qmp_path},server=on,wait=off', '-no-reboot']

@@ -44,6 +44,7 @@ public:
     explicit FaceBuilder(Cdt<Index>& cdt) : cdt_(cdt) {}
     Result start(const FaceInput& in, LocateMode mode);
     Result run(uint32_t units);
+    uint32_t used() const { return used_; } // the units the last run() spent
     Point point(uint32_t i) const; // input point i (loop points, then interior ones)
 
 private:
@@ -56,6 +57,7 @@ private:
     uint32_t k_ = 0, loop_ = 0, loop_first_ = 0; // the next point by rank; its loop (paper's modes)
     uint32_t cl_ = 0, cj_ = 0, cfirst_ = 0;        // the next constraint: loop, point, loop's first
     bool tree_built_ = false;
+    uint32_t used_ = 0;
     Result result_ = Result::fail(Status::Busy, "not started");
 };
 

@@ -18,12 +18,9 @@ struct Board {
 // The board's singletons, ready to use (startup has initialised them).
 Board& board();
 
-// Ends the program with an exit code that reaches the host shell (semihosting on QEMU).
+// Ends the program with an exit code: on QEMU it reaches the host shell (semihosting); a real
+// board halts or resets.
 [[noreturn]] void exit(int code);
-
-// Makes the currently shown frame available to the host under `name` (a screenshot):
-// on versatilepb the host takes it over QMP, on mps2 the board writes it via semihosting.
-Status capture(const char* name);
 
 // One named span of RAM, reported by report_memory().
 struct MemoryRegion {

@@ -1,45 +1,45 @@
 #pragma once
-// Display: the smallest contract a span renderer needs (cf. LVGL flush_cb, Zephyr display_write).
-// The geometry comes from the driver; nothing outside boards/ may assume a resolution.
+// Display: a board's panel, in the two ways pixels reach one (LVGL's flush_cb, Zephyr's
+// display_write): an LCD controller that scans a frame out of RAM is shown a frame the caller
+// owns; any panel takes areas copied into the frame it shows (or into its own memory, behind a
+// bus). The geometry comes from the driver; nothing outside boards/ may assume a resolution.
+#include "hal/pixel.h"
 #include "hal/status.h"
 
 #include <cstdint>
 
 namespace facet::hal {
 
-enum class PixelFormat : uint8_t { Rgb565 };
-
 struct DisplayInfo {
     uint16_t width;
     uint16_t height;
     PixelFormat format;
-    uint8_t buffers; // 2: draws go to a back buffer shown by flip(); 1: draws are visible at once
+    bool scanout; // show() works: the controller reads frames from RAM
 };
 
-using Rgb565 = uint16_t;
-
-constexpr Rgb565 rgb565(uint8_t r, uint8_t g, uint8_t b) {
-    return static_cast<Rgb565>(((r >> 3) << 11) | ((g >> 2) << 5) | (b >> 3));
-}
+struct Rect {
+    uint16_t x, y, width, height;
+};
 
 class Display {
 public:
     virtual DisplayInfo info() const = 0;
-    // Copies `count` pixels to row y starting at column x of the draw buffer.
-    // OutOfRange (and nothing drawn) if the span leaves the screen.
-    virtual Status push_span(uint16_t x, uint16_t y, const Rgb565* pixels, uint16_t count) = 0;
-    // Fills `count` pixels of row y from column x with one colour.
-    virtual Status fill_span(uint16_t x, uint16_t y, uint16_t count, Rgb565 colour) = 0;
-    // Shows the draw buffer; the other buffer becomes the draw buffer. Content of the new draw
-    // buffer is undefined (callers redraw every pixel).
-    virtual Status flip() = 0;
-    // The draw buffer itself (width * height pixels, row after row) when it is plain memory, so
-    // a renderer can write pixels in place; null when pixels must go through the spans (a
-    // controller behind a bus). Valid until the next flip().
-    virtual Rgb565* draw_buffer() { return nullptr; }
+    // Shows `frame` (width * height pixels, row after row, in the caller's memory, which must
+    // stay valid while it is shown) from the next refresh on. Unsupported without scan-out.
+    virtual Status show(Rgb565* frame) = 0;
+    // Copies `pixels` (area.width * area.height, row after row) into the frame on the panel.
+    // OutOfRange (nothing written) if the area leaves the screen; NotFound on a scan-out panel
+    // that was shown no frame yet.
+    virtual Status write(const Rect& area, const Rgb565* pixels) = 0;
+    // The frame on the screen (for captures); null when there is none in RAM.
+    virtual const Rgb565* frame() const = 0;
 
 protected:
     ~Display() = default;
 };
+
+// The copy every RAM-frame driver needs: `area` of `pixels` into `frame` (width x height),
+// bounds-checked.
+Status copy_area(Rgb565* frame, uint16_t width, uint16_t height, const Rect& area, const Rgb565* pixels);
 
 } // namespace facet::hal

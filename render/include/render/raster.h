@@ -1,5 +1,7 @@
 #pragma once
-// Span rasterizer: triangles in, horizontal runs of RGB565 pixels out through hal::Display.
+// Span rasterizer: triangles and lines into caller-owned RGB565 pixels and a 16-bit depth
+// buffer, for the whole screen or for a band of its rows (partial rendering: a board without
+// room for full frames draws the screen band after band, with the same pixels).
 //
 // Screen space, y down. Vertex positions are 28.4 fixed point (1/16 pixel); pixel (x, y) is
 // sampled at its centre (16x+8, 16y+8). Coverage follows the top-left rule, so triangles
@@ -8,11 +10,11 @@
 // pixel and the triangle's palette colours it, one table look-up per pixel (a lit CAD face is
 // its colour times its lighting, so one interpolant does the work of three). Integer
 // arithmetic only.
-#include "hal/display.h"
+#include "hal/pixel.h"
 #include "hal/status.h"
 
+#include <cstddef>
 #include <cstdint>
-#include <span>
 
 namespace facet::render {
 
@@ -39,6 +41,19 @@ constexpr int32_t kGuardBand = 8192 * 16;
 
 enum class Cull : uint8_t { None, Back };
 
+// Where the rasterizer draws: rows [y0, y0 + rows) of a width x height screen. `pixels` and
+// `depth` hold those rows, row after row (rows * width entries each), in the caller's memory.
+// Everything outside the band is clipped, exactly: a triangle drawn band by band covers the
+// same pixels with the same values as drawn into the whole screen at once.
+struct Target {
+    hal::Rgb565* pixels = nullptr;
+    uint16_t* depth = nullptr;
+    uint16_t width = 0, height = 0; // the screen
+    uint16_t y0 = 0, rows = 0;      // the band (0, height: the whole screen)
+
+    hal::Rgb565* row(int32_t y) const { return pixels + size_t(y - y0) * width; } // y within the band
+};
+
 struct RasterStats {
     uint32_t triangles = 0;   // triangles that reached scan conversion
     uint32_t culled = 0;      // back-facing or zero-area
@@ -48,18 +63,15 @@ struct RasterStats {
 
 class Rasterizer {
 public:
-    // `depth` must hold width*height entries and `line` at least width, for the display's
-    // geometry; the caller owns both (they live in the board's NOLOAD sections).
-    Rasterizer(hal::Display& display, std::span<uint16_t> depth, std::span<hal::Rgb565> line);
+    Rasterizer() = default;
+    explicit Rasterizer(const Target& target) { set_target(target); }
+    // Draws into `target` from now on (a band, a buffer); stats carry on.
+    void set_target(const Target& target) { t_ = target; }
+    const Target& target() const { return t_; }
 
-    // Ok, or OutOfRange if the buffers are too small for the display.
-    Status check() const;
-    uint16_t width() const { return width_; }
-    uint16_t height() const { return height_; }
-
-    void clear_depth();
+    void clear_depth(); // the band's depth: all far
     // Draws one triangle coloured from `palette`. Front faces are counter-clockwise as seen
-    // on the screen.
+    // on the screen. OutOfRange (nothing drawn) if a vertex is outside the guard band.
     Status draw(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, const Palette& palette,
                 Cull cull = Cull::Back);
 
@@ -76,22 +88,17 @@ private:
     struct Interp; // one interpolated attribute (raster.cpp)
     Status scan(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2, int64_t area2);
     template <typename T>
-    Status scan_rows(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2, int64_t area2,
-                     int32_t row0, int32_t row1, int32_t col0, int32_t col1, bool clamp);
-    Status scan_small(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2, int64_t area2,
-                      int32_t row0, int32_t row1, int32_t col0, int32_t col1);
-    Status shade(int32_t y, int32_t lo, int32_t hi, const Interp* at, bool clamp);
+    void scan_rows(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2, int64_t area2, int32_t row0,
+                   int32_t row1, int32_t col0, int32_t col1, bool clamp);
+    void scan_small(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2, int64_t area2, int32_t row0,
+                    int32_t row1, int32_t col0, int32_t col1);
+    void shade(int32_t y, int32_t lo, int32_t hi, const Interp* at, bool clamp);
     void gradients(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2, int64_t area2, int32_t oy,
                    Interp at[]) const;
     static constexpr int kAttributes = 2; // depth, shade
-    Status flush(int32_t from, int32_t to, int64_t y);
 
     const Palette* palette_ = nullptr; // the triangle being drawn's
-    hal::Rgb565* fb_ = nullptr;        // the display's draw buffer, when it is memory-mapped
-    hal::Display& display_;
-    std::span<uint16_t> depth_;
-    std::span<hal::Rgb565> line_;
-    uint16_t width_, height_;
+    Target t_;
 };
 
 } // namespace facet::render

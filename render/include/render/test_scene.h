@@ -15,8 +15,8 @@ struct SceneView {
 // The views the tests capture: "scene-a" and "scene-b".
 constexpr SceneView kSceneViews[2] = {{degrees(35), degrees(25)}, {degrees(150), degrees(-20)}};
 
-// Draws the whole frame into the display's draw buffer (background, then geometry).
-// Does not flip. Scales to the display's geometry.
-Status draw_test_scene(Rasterizer& raster, hal::Display& display, const SceneView& view);
+// Draws the frame into the rasterizer's target (background, then geometry), for the screen
+// size the target states (the whole screen, or one band of it).
+Status draw_test_scene(Rasterizer& raster, const SceneView& view);
 
 } // namespace facet::render

@@ -29,34 +29,31 @@ public:
     uint64_t step = 1; // each read advances the fake time
 };
 
+// A panel: scan-out (frames shown in place) unless told otherwise; areas written go into the
+// frame shown, or into the panel's own memory.
 class Display final : public hal::Display {
 public:
-    Display(uint16_t width, uint16_t height, uint8_t buffers = 2);
+    Display(uint16_t width, uint16_t height, bool scanout = true);
 
-    DisplayInfo info() const override { return {width_, height_, PixelFormat::Rgb565, buffers_}; }
-    Status push_span(uint16_t x, uint16_t y, const Rgb565* pixels, uint16_t count) override;
-    Status fill_span(uint16_t x, uint16_t y, uint16_t count, Rgb565 colour) override;
-    Status flip() override;
-    Rgb565* draw_buffer() override { return direct ? draw_.data() : nullptr; }
+    DisplayInfo info() const override { return {width_, height_, PixelFormat::Rgb565, scanout_}; }
+    Status show(Rgb565* frame) override;
+    Status write(const Rect& area, const Rgb565* pixels) override;
+    const Rgb565* frame() const override { return shown_ ? shown_ : panel_.data(); }
 
-    bool direct = true; // offer the draw buffer for in-place writes (false: spans only)
+    // What the panel shows now, as pixels.
+    std::vector<Rgb565> front() const { return {frame(), frame() + size_t(width_) * height_}; }
+    Rgb565 pixel(uint16_t x, uint16_t y) const { return frame()[size_t(y) * width_ + x]; }
 
-    // The buffer last shown by flip() (or the only buffer for single-buffered displays).
-    const std::vector<Rgb565>& front() const { return buffers_ == 1 ? draw_ : shown_; }
-    const std::vector<Rgb565>& drawn() const { return draw_; } // the draw buffer
-    Rgb565 pixel(uint16_t x, uint16_t y) const { return front()[size_t(y) * width_ + x]; }
-
-    uint64_t spans = 0;      // accepted push/fill calls
+    uint64_t writes = 0;     // accepted write() calls
     uint64_t pixels = 0;     // pixels written
-    uint64_t rejected = 0;   // calls refused with OutOfRange
-    uint32_t flips = 0;
+    uint64_t rejected = 0;   // calls refused
+    uint32_t shows = 0;
 
 private:
-    bool in_range(uint16_t x, uint16_t y, uint16_t count) const;
-
     uint16_t width_, height_;
-    uint8_t buffers_;
-    std::vector<Rgb565> draw_, shown_;
+    bool scanout_;
+    Rgb565* shown_ = nullptr;
+    std::vector<Rgb565> panel_;
 };
 
 class Input final : public hal::Input {

@@ -1,0 +1,60 @@
+/* facet: the sizes of the buffers an application gives the module, in bytes. C and C++ alike
+ * (usable in #if and in the size of a static array). The module checks every buffer it is given
+ * against these and refuses one that is too small.
+ *
+ *   buffer            what it holds                                   bytes
+ *   draw buffer       RGB565 pixels of a frame or of a band of rows   FACET_DRAW_BYTES(w, lines)
+ *   depth buffer      16-bit depth of the same rows                   FACET_DEPTH_BYTES(w, lines)
+ *   workspace         the model: edges, samples, one face's CDT       FACET_WORKSPACE_BYTES(...)
+ *                     arena, the mesh, per-face state, palettes
+ *   pack memory       a deflated pack, inflated (plain packs are      facet_pack_memory_bytes()
+ *                     read in place from flash or RAM)
+ *
+ * The two shipped configurations (the workspace at the default capacities):
+ *
+ *   configuration                          draw buffers       depth buffers      workspace
+ *   qemu-versatilepb 640x480, full frames  2 x 614,400        2 x 614,400        FACET_WORKSPACE_BYTES_DEFAULT
+ *   480x272 (mps2-an500, the EVKB panel)   2 x 261,120        2 x 261,120        (9.4 MiB at the defaults)
+ *   480x272 in bands of 16 lines           2 x 15,360         1 x 15,360
+ */
+#ifndef FACET_SIZES_H
+#define FACET_SIZES_H
+
+#define FACET_DRAW_BYTES(width, lines) ((unsigned long)(width) * (unsigned long)(lines) * 2ul)
+#define FACET_DEPTH_BYTES(width, lines) ((unsigned long)(width) * (unsigned long)(lines) * 2ul)
+
+/* Default capacities: the largest model a default workspace holds. */
+#define FACET_DEFAULT_FACES 8192u          /* faces of the pack */
+#define FACET_DEFAULT_EDGES 16384u         /* edges of the pack */
+#define FACET_DEFAULT_SAMPLES 65536u       /* edge samples of the whole model */
+#define FACET_DEFAULT_FACE_POINTS 12000u   /* points of one face in its CDT (at most 32,760) */
+#define FACET_DEFAULT_LOOPS 512u           /* loops of one face */
+#define FACET_DEFAULT_SLIVERS 1024u        /* loop points of one face closer than its CDT grid */
+#define FACET_DEFAULT_MESH_VERTICES 65536u /* the mesh of the whole model */
+#define FACET_DEFAULT_MESH_TRIANGLES 98304u
+
+/* Bytes per item of each capacity, and the fixed part (the viewer's state, 16 colour palettes,
+ * alignment). The module asserts these against its own records when it is built. */
+#define FACET_BYTES_PER_FACE 44ul
+#define FACET_BYTES_PER_EDGE 7ul
+#define FACET_BYTES_PER_SAMPLE 28ul
+#define FACET_BYTES_PER_FACE_POINT 223ul
+#define FACET_BYTES_PER_LOOP 4ul
+#define FACET_BYTES_PER_SLIVER 60ul
+#define FACET_BYTES_PER_MESH_VERTEX 20ul
+#define FACET_BYTES_PER_MESH_TRIANGLE 6ul
+#define FACET_WORKSPACE_FIXED_BYTES 28672ul
+
+#define FACET_WORKSPACE_BYTES(faces, edges, samples, face_points, loops, slivers, mesh_vertices, mesh_triangles)      \
+    (FACET_WORKSPACE_FIXED_BYTES + (unsigned long)(faces)*FACET_BYTES_PER_FACE +                                        \
+     (unsigned long)(edges)*FACET_BYTES_PER_EDGE + (unsigned long)(samples)*FACET_BYTES_PER_SAMPLE +                    \
+     (unsigned long)(face_points)*FACET_BYTES_PER_FACE_POINT + (unsigned long)(loops)*FACET_BYTES_PER_LOOP +            \
+     (unsigned long)(slivers)*FACET_BYTES_PER_SLIVER + (unsigned long)(mesh_vertices)*FACET_BYTES_PER_MESH_VERTEX +     \
+     (unsigned long)(mesh_triangles)*FACET_BYTES_PER_MESH_TRIANGLE)
+
+#define FACET_WORKSPACE_BYTES_DEFAULT                                                                                   \
+    FACET_WORKSPACE_BYTES(FACET_DEFAULT_FACES, FACET_DEFAULT_EDGES, FACET_DEFAULT_SAMPLES, FACET_DEFAULT_FACE_POINTS,   \
+                          FACET_DEFAULT_LOOPS, FACET_DEFAULT_SLIVERS, FACET_DEFAULT_MESH_VERTICES,                      \
+                          FACET_DEFAULT_MESH_TRIANGLES)
+
+#endif /* FACET_SIZES_H */

@@ -1,0 +1,189 @@
+#pragma once
+// facet: a CAD model shown from its exact geometry, in caller memory, a bounded step at a time.
+//
+//   facet::Config cfg{};                      // the display, callbacks, capacities (below)
+//   facet::Viewer* v = facet::Viewer::create(cfg, workspace, sizeof workspace, &why);
+//   v->load(pack, pack_bytes);                 // a pack file, in flash or RAM
+//   for (;;) {                                 // a bare-metal loop, or an RTOS task's
+//       feed input: v->key(k), v->pointer(dx, dy, buttons), v->touch(id, x, y, down), ...
+//       if (v->step(5000) == facet::Activity::Idle) sleep until input;
+//   }
+//
+// The module allocates nothing: every byte it uses is handed in (facet/sizes.h gives the sizes).
+// It draws into the caller's draw buffers and hands each finished area to display.flush, like
+// LVGL's flush_cb; it reports through on_event and never prints.
+//
+// Threads and interrupts: one Viewer is used from one thread (a task, or the main loop) and is
+// not re-entrant: create, load, step, the input calls and the queries, in any order, from that
+// thread only. flush_done() alone may be called from any context, an interrupt included (a DMA
+// or vertical-blank handler); it only sets a flag. The callbacks run inside step() (flush,
+// on_event) or load() (on_event), on the caller's thread; they may call flush_done() and the
+// queries, nothing else of the module. Input from an interrupt is queued by the application and
+// fed from its thread. Several Viewers (each with its own memory) are independent.
+#include "facet/sizes.h"
+#include "hal/pixel.h"
+#include "hal/status.h"
+
+#include <cstddef>
+#include <cstdint>
+
+namespace facet {
+
+using hal::Rgb565;
+
+struct Capacity {
+    uint32_t faces = FACET_DEFAULT_FACES, edges = FACET_DEFAULT_EDGES, samples = FACET_DEFAULT_SAMPLES;
+    uint32_t face_points = FACET_DEFAULT_FACE_POINTS, loops = FACET_DEFAULT_LOOPS, slivers = FACET_DEFAULT_SLIVERS;
+    uint32_t mesh_vertices = FACET_DEFAULT_MESH_VERTICES, mesh_triangles = FACET_DEFAULT_MESH_TRIANGLES;
+};
+
+constexpr size_t workspace_bytes(const Capacity& c = {}) {
+    return FACET_WORKSPACE_BYTES(c.faces, c.edges, c.samples, c.face_points, c.loops, c.slivers, c.mesh_vertices,
+                                 c.mesh_triangles);
+}
+constexpr size_t draw_bytes(uint16_t width, uint16_t lines) { return FACET_DRAW_BYTES(width, lines); }
+constexpr size_t depth_bytes(uint16_t width, uint16_t lines) { return FACET_DEPTH_BYTES(width, lines); }
+
+// Bytes of pack memory load() needs for this pack file: 0 for a plain pack it can read in
+// place (4-byte aligned), the pack's size for a deflated one (its head says) or an unaligned
+// plain one; 0 for bytes that are no pack (load() then says why).
+uint32_t pack_memory_bytes(const void* file, uint32_t file_bytes);
+
+struct Area {
+    uint16_t x, y, width, height;
+};
+
+// How the application's display takes a finished area.
+enum class Flush : uint8_t {
+    Copy,    // the pixels are copied out (SPI, DMA, memcpy into the panel's frame): flush_done()
+             // once the copy has finished; the buffer is then drawn into again
+    Scanout, // full frames the LCD controller reads in place: show the buffer from the next
+             // refresh on, and flush_done() once it is shown (the previous frame is then free)
+};
+
+struct Display {
+    uint16_t width = 0, height = 0;
+    uint16_t band_lines = 0;          // = height: full frames; fewer: the screen in bands of these
+    Rgb565* buffers[2] = {};          // draw buffers, width * band_lines pixels; the second may be null
+    uint16_t* depth[2] = {};          // depth buffers, width * band_lines entries: one, or (full
+                                      // frames) one per draw buffer: faces then fill in without
+                                      // redrawing the whole frame
+    Flush mode = Flush::Copy;
+    // The area of the screen in `pixels` (area.width * area.height, row after row) is ready.
+    void (*flush)(void* user, const Area& area, const Rgb565* pixels) = nullptr;
+    void* user = nullptr;
+};
+
+enum class Work : uint8_t { Unpack, Sampling, Face, Frame, Update }; // pieces of work (for profiling)
+
+struct Event {
+    enum class Kind : uint8_t {
+        Loaded,          // a pack was validated: counts
+        Pass,            // a level of detail begins (the first one at load): tolerance
+        Sampled,         // its edges are sampled: samples
+        Progress,        // a face was tessellated (or failed): counts
+        FaceFailed,      // a face could not be tessellated (why); it stays wireframe
+        PassFailed,      // a level of detail could not sample its edges (why): the previous one
+                         // stays (none at load: nothing is shown)
+        Tessellated,     // every face of the pass is done: totals
+        FrameDone,       // a frame was handed to the display: what it drew and its cost
+        BudgetExceeded,  // a step ran past its budget by more than Config::step_slack_us, or a
+                         // frame took longer than Config::frame_budget_us
+        Picked,          // a tap or click picked a face (or nothing)
+        ViewChanged,     // the camera moved
+        WorkBegin,       // a piece of work begins / ends (regions for a profiler)
+        WorkEnd,
+    } kind;
+    union {
+        struct { uint32_t faces, edges, shells, instances, pack_bytes, file_bytes; } loaded;
+        struct { uint32_t pass; float tolerance_mm; uint32_t samples; } pass;     // Pass, Sampled
+        struct { uint32_t done, failed, total, triangles; } progress;
+        struct { uint32_t face; } failed;
+        struct { uint32_t pass, faces, failed, triangles, vertices, mesh_bytes, arena_peak_bytes; float tolerance_mm; } tessellated;
+        struct { uint32_t triangles, culled, pixels, cost_us, pieces, faces_done, faces_total, pass; bool full; } frame;
+        struct { bool step; uint32_t budget_us, used_us; } budget;
+        struct { bool hit; uint32_t face, instance, shell; uint8_t surface_type; int16_t x, y; } pick;
+        struct { float yaw_deg, pitch_deg, zoom; } view;
+        struct { Work what; uint32_t item; } work;
+    };
+    Result why; // FaceFailed, PassFailed
+};
+
+struct Config {
+    Display display;
+    Capacity capacity;
+    void (*on_event)(void* user, const Event& event) = nullptr; // optional
+    void* event_user = nullptr;
+    uint32_t (*now_us)(void* user) = nullptr; // optional clock (wraps): step budgets and costs in us;
+    void* clock_user = nullptr;               // without one, step() does one piece of work per call
+    uint32_t frame_budget_us = 0;             // BudgetExceeded past these (0: never)
+    uint32_t step_slack_us = 2000;
+};
+
+enum class Activity : uint8_t {
+    Busy,    // work remains: call step() again (after input and the rest of the application)
+    Waiting, // a frame waits for flush_done() and there is nothing else to do
+    Idle,    // nothing to do until input
+};
+
+// Keys: printable characters as themselves (the table: facet::key_bindings()), and these.
+enum Key : uint32_t { KeyLeft = 0x100, KeyRight, KeyUp, KeyDown, KeyPageUp, KeyPageDown, KeyHome };
+
+// What a key, a gesture or an application's own button does.
+enum class Action : uint8_t {
+    None, TurnLeft, TurnRight, TiltUp, TiltDown, ZoomIn, ZoomOut, PanLeft, PanRight, PanUp, PanDown, Fit,
+    Coarser, Finer,
+};
+struct KeyBinding {
+    uint32_t key;
+    Action action;
+    const char* help;
+};
+struct KeyBindings {
+    const KeyBinding* table;
+    uint32_t count;
+};
+KeyBindings key_bindings(); // for a help screen: what each key does
+
+struct Stats {
+    uint32_t faces, done, failed, triangles, vertices, pass;
+    uint32_t mesh_bytes, arena_peak_bytes, pack_bytes, pack_file_bytes;
+    uint32_t workspace_peak_bytes; // the workspace this model needed at its peak (the rest is room)
+    float tolerance_mm;
+};
+
+class Viewer {
+public:
+    // A viewer in `workspace` (8-byte aligned, at least workspace_bytes(config.capacity) bytes),
+    // or null with the reason in *why (a buffer too small or missing, a bad size).
+    static Viewer* create(const Config& config, void* workspace, size_t bytes, Result* why = nullptr);
+
+    // Takes a pack file (plain or deflated) and shows its wireframe. A plain, 4-byte aligned pack
+    // is read in place and must stay there; a deflated one is inflated into `memory`
+    // (pack_memory_bytes()); when the file itself lies inside `memory`, it is inflated in place
+    // (memory: the pack's size plus the file's). Corrupt names the bad record; Full: the model
+    // exceeds the capacities. The previous model, if any, is dropped first.
+    Result load(const void* file, uint32_t file_bytes, void* memory = nullptr, uint32_t memory_bytes = 0);
+
+    // Does pieces of work (a frame, a piece of a face's tessellation) until `budget_us` have
+    // passed on the clock, and at least one piece. A piece takes at most about a millisecond
+    // on a 600 MHz core (docs/module.md: the measured bound).
+    Activity step(uint32_t budget_us);
+
+    // The last flushed area is taken (Flush::Copy) or shown (Flush::Scanout). Any context.
+    void flush_done();
+
+    void key(uint32_t key);                              // a key press
+    void pointer(int16_t dx, int16_t dy, uint8_t buttons); // relative motion; buttons: 1 left, 2 right, 4 middle
+    void wheel(int16_t clicks);                          // > 0: away from the user (zoom in)
+    void touch(uint8_t id, int16_t x, int16_t y, bool down); // a finger (id 0, 1) at (x, y) pixels
+    void act(Action action);                             // as if its key were pressed
+
+    Stats stats() const;
+
+private:
+    Viewer() = default; // lives in the workspace (create())
+    friend class Core;
+};
+
+} // namespace facet

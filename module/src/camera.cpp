@@ -1,0 +1,110 @@
+#include "camera.h"
+
+#include "geom/fmath.h"
+#include "scene.h"
+
+namespace facet::module {
+namespace {
+
+constexpr float kViewPerDiagonal = 65536.0f; // 2^16: camera-space unit = diagonal / 2^16
+constexpr int32_t kRadiusV = 32768;          // the bounding sphere's radius in view units
+
+inline int32_t round_to_int(float v) { return int32_t(v + (v >= 0 ? 0.5f : -0.5f)); }
+
+} // namespace
+
+void Camera::orbit(float d_yaw, float d_pitch) {
+    view_.yaw += d_yaw;
+    view_.pitch += d_pitch;
+}
+
+void Camera::dolly(float factor) {
+    view_.zoom *= factor;
+    if (view_.zoom < 0.05f) view_.zoom = 0.05f;
+    if (view_.zoom > 20.0f) view_.zoom = 20.0f;
+}
+
+void Camera::pan(float dx_mm, float dy_mm) {
+    view_.pan_x += dx_mm;
+    view_.pan_y += dy_mm;
+}
+
+void Camera::pan_pixels(int32_t dx, int32_t dy, float radius, uint16_t width, uint16_t height) {
+    // Millimetres per pixel at the model's centre (its bounding sphere fills 80% of the short side).
+    const float px = 2 * radius * 3 * view_.zoom / (2.5f * 0.5f * float(width < height ? width : height));
+    view_.pan_x += float(dx) * px / 2;
+    view_.pan_y -= float(dy) * px / 2;
+}
+
+Transform Camera::transform(const Scene& scene, uint32_t index, uint16_t width, uint16_t height) const {
+    const pack::Instance& inst = scene.pack().instances()[index];
+    Transform in{};
+    float sy, cy, sp, cp;
+    geom::sincos_f(view_.yaw, sy, cy);
+    geom::sincos_f(view_.pitch, sp, cp);
+    // Rotate about z (yaw), then tilt about x (pitch): CAD models are usually z-up.
+    const float R[9] = {cy, -sy, 0, sy * cp, cy * cp, -sp, sy * sp, cy * sp, cp};
+    const float* m = inst.m;
+    float A[9];
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) A[3 * i + j] = R[3 * i] * m[j] + R[3 * i + 1] * m[4 + j] + R[3 * i + 2] * m[8 + j];
+    const float radius = scene.radius();
+    const float* centre = scene.centre();
+    const float v_per_mm = kViewPerDiagonal / (2 * radius);
+    const float t[3] = {m[3] - centre[0], m[7] - centre[1], m[11] - centre[2]};
+    const float pan[3] = {view_.pan_x, view_.pan_y, 0};
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) in.a[3 * i + j] = round_to_int(A[3 * i + j] * 67108864.0f); // 2^30 / 16
+        in.b[i] = round_to_int((R[3 * i] * t[0] + R[3 * i + 1] * t[1] + R[3 * i + 2] * t[2] + pan[i]) * v_per_mm);
+    }
+    // The light, fixed in view space (upper left, toward the viewer), into shell coordinates.
+    const float L[3] = {-0.38f, 0.5f, 0.78f};
+    for (int j = 0; j < 3; ++j) in.light[j] = round_to_int((A[j] * L[0] + A[3 + j] * L[1] + A[6 + j] * L[2]) * 16384.0f);
+    const float det = m[0] * (m[5] * m[10] - m[6] * m[9]) - m[1] * (m[4] * m[10] - m[6] * m[8]) + m[2] * (m[4] * m[9] - m[5] * m[8]);
+    in.mirrored = det < 0;
+    in.closed = scene.pack().shells()[inst.shell].closed != 0;
+
+    const float half = 0.5f * float(width < height ? width : height);
+    in.dist = round_to_int(3.0f * kRadiusV * view_.zoom);
+    in.near = kRadiusV / 64;
+    in.f16 = round_to_int(16 * 2.5f * half); // the bounding sphere fills 80% of the short side when fitted
+    in.cx16 = int32_t(width) * 8;
+    in.cy16 = int32_t(height) * 8;
+    in.guard = render::kGuardBand - (in.cx16 > in.cy16 ? in.cx16 : in.cy16) - 64;
+    const int32_t far = in.dist + kRadiusV;
+    in.zk = (int64_t(65535) << 16) / (far - in.near > 1 ? far - in.near : 1);
+    return in;
+}
+
+// Each side test is conservative: the sphere's distance to a side plane is compared with its
+// radius times a bound on the plane normal's length.
+bool Transform::visible(const int32_t centre[3], int32_t radius, Rows rows) const {
+    if (radius <= 0) return true;
+    int32_t cx, cy, d;
+    to_view(centre, cx, cy, d);
+    // Mesh units are 16 view units (2^20 / 2^16); an eighth more for the rounding of the
+    // fixed-point rotation.
+    const int64_t r = radius / 16 + radius / 128 + 2;
+    if (d + r < near) return false;
+    const int64_t f = f16, w = cx16, X = cx, Y = cy, D = d;
+    if (X * f - w * D > r * (f + w) || -X * f - w * D > r * (f + w)) return false;
+    const int64_t top = rows.top16, bottom = rows.bottom16;
+    const int64_t top_n = top < 0 ? -top : top, bottom_n = bottom < 0 ? -bottom : bottom;
+    if (Y * f - top * D > r * (f + top_n) || -Y * f - bottom * D > r * (f + bottom_n)) return false;
+    return true;
+}
+
+bool Transform::faces_away(const int32_t p[3], const int16_t n[3]) const {
+    int64_t q[3], m[3];
+    rotate(p, q);
+    const int32_t nn[3] = {n[0], n[1], n[2]};
+    rotate(nn, m);
+    // The normal in view space (the rotation, scaled by 2^26, keeps it outward even mirrored).
+    // The eye sits at (0, 0, dist) in view space (depth d = dist - z); the face looks at it
+    // when n . (eye - p) > 0.
+    const int64_t nx = m[0] >> 14, ny = m[1] >> 14, nz = m[2] >> 14;
+    const int64_t to_eye_x = -((q[0] >> 30) + b[0]), to_eye_y = -((q[1] >> 30) + b[1]), to_eye_z = dist - ((q[2] >> 30) + b[2]);
+    return nx * to_eye_x + ny * to_eye_y + nz * to_eye_z < 0;
+}
+
+} // namespace facet::module

@@ -1,0 +1,111 @@
+#pragma once
+// The camera: an orbit (yaw about the model's z, then pitch), a dolly and a pan, and for each
+// instance of the model one fixed-point transform from mesh units to the view and the screen.
+// Everything per vertex is integer (host and targets compute the same pixels): a 3x3 product
+// in 64 bits, and one reciprocal per vertex for the perspective.
+#include "render/fixed.h"
+#include "render/raster.h"
+
+#include <cstdint>
+
+namespace facet::module {
+
+class Scene;
+
+// A vertex in camera space (x right, y up, d = depth in front of the eye; units of the
+// diagonal / 2^16) and on the screen.
+struct Projected {
+    int32_t x, y, d;
+    render::ScreenVertex s;
+    uint8_t out; // bit 0: behind the near plane; bit 1: beyond the guard band
+};
+constexpr uint8_t kOutNear = 1, kOutGuard = 2;
+
+// Rows of the screen being drawn, as distances from the screen's centre (28.4 sub-pixels):
+// the view volume's top and bottom sides for culling. The whole screen: both cy16.
+struct Rows {
+    int32_t top16, bottom16;
+};
+
+// One instance under the camera: view = (a P >> 30) + b (a: rotation x scale, 2^26 = 1).
+struct Transform {
+    int32_t a[9];
+    int32_t b[3];
+    int32_t light[3]; // Q14, in shell coordinates
+    bool mirrored;
+    bool closed;
+    int32_t dist, near, f16, cx16, cy16, guard;
+    int64_t zk; // depth scale: z16 = (d - near) * zk >> 16
+
+    // The rotation part applied to v, before the shift (the one place the 3x3 product is written).
+    void rotate(const int32_t v[3], int64_t out[3]) const {
+        out[0] = int64_t(a[0]) * v[0] + int64_t(a[1]) * v[1] + int64_t(a[2]) * v[2];
+        out[1] = int64_t(a[3]) * v[0] + int64_t(a[4]) * v[1] + int64_t(a[5]) * v[2];
+        out[2] = int64_t(a[6]) * v[0] + int64_t(a[7]) * v[1] + int64_t(a[8]) * v[2];
+    }
+    // Mesh point -> camera space: x, y and depth d in front of the eye.
+    void to_view(const int32_t p[3], int32_t& x, int32_t& y, int32_t& d) const {
+        int64_t r[3];
+        rotate(p, r);
+        x = int32_t(r[0] >> 30) + b[0];
+        y = int32_t(r[1] >> 30) + b[1];
+        d = dist - (int32_t(r[2] >> 30) + b[2]);
+    }
+    void project(const int32_t p[3], Projected& o) const {
+        to_view(p, o.x, o.y, o.d);
+        o.out = 0;
+        if (o.d < near) {
+            o.out = kOutNear;
+            return;
+        }
+        const int64_t X = int64_t(o.x) * f16, Y = int64_t(o.y) * f16, G = int64_t(guard) * o.d;
+        if (X > G || -X > G || Y > G || -Y > G) {
+            o.out = kOutGuard;
+            return;
+        }
+        const render::Reciprocal r = render::reciprocal(uint32_t(o.d)); // x and y over one depth
+        o.s.x = cx16 + render::divide(X, r);
+        o.s.y = cy16 - render::divide(Y, r);
+        const int64_t zz = (int64_t(o.d - near) * zk) >> 16;
+        o.s.z = uint16_t(zz > 65535 ? 65535 : zz);
+    }
+    // Whether a sphere (mesh units) may touch the rows: false only when it lies wholly behind
+    // the near plane or beyond one side of the view volume (conservative).
+    bool visible(const int32_t centre[3], int32_t radius, Rows rows) const;
+    // Whether the plane through p with normal n (Q14) turns its back to the eye.
+    bool faces_away(const int32_t p[3], const int16_t n[3]) const;
+    // The Gouraud shade (palette index) of a unit normal (Q14); open sheets are lit both sides.
+    uint8_t shade(const int16_t n[3]) const {
+        int32_t lit = (int32_t(n[0]) * light[0] + int32_t(n[1]) * light[1] + int32_t(n[2]) * light[2]) >> 14;
+        if (lit < 0) lit = closed ? 0 : (-lit * 154) >> 8; // the back of an open sheet, a little darker
+        if (lit > 16384) lit = 16384;
+        return uint8_t(77 + ((178 * lit) >> 14)); // ambient 0.3 + diffuse 0.7, of 255
+    }
+};
+
+// The view: orbit angles (rad), dolly factor (1 = fitted), pan (mm, in view x/y).
+struct View {
+    float yaw = 0.6f, pitch = -0.95f, zoom = 1, pan_x = 0, pan_y = 0;
+};
+
+class Camera {
+public:
+    static constexpr float kTurn = 0.2617993878f; // a key turns by 15 degrees
+
+    void fit() { view_ = View{}; } // the whole model, from the default direction
+    const View& view() const { return view_; }
+    // Orbit by angles (rad), dolly by a factor (< 1: closer; kept within 0.05 and 20), pan by
+    // millimetres, or by screen pixels (the model's centre follows the pointer).
+    void orbit(float d_yaw, float d_pitch);
+    void dolly(float factor);
+    void pan(float dx_mm, float dy_mm);
+    void pan_pixels(int32_t dx, int32_t dy, float radius, uint16_t width, uint16_t height);
+
+    // Instance `instance` of the scene under this camera on a width x height screen.
+    Transform transform(const Scene& scene, uint32_t instance, uint16_t width, uint16_t height) const;
+
+private:
+    View view_;
+};
+
+} // namespace facet::module

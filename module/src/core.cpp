@@ -1,0 +1,383 @@
+#include "core.h"
+
+#include "cdt/arena.h"
+#include "geom/pack_file.h"
+
+#include <cstring>
+#include <new>
+
+namespace facet {
+namespace {
+
+using module::Carver;
+
+// Every array of the workspace, in the order they are cut.
+struct Arrays {
+    std::span<uint32_t> edge_first;
+    std::span<uint16_t> edge_count;
+    std::span<uint8_t> edge_drawn;
+    std::span<float> sample_t;
+    std::span<geom::Vec3> sample_p;
+    std::span<int32_t> sample_q;
+    cdt::ArenaView<uint16_t> arena;
+    std::span<cdt::Point> loop_points;
+    std::span<uint32_t> loop_sizes;
+    std::span<geom::Vec2> face_uv;
+    std::span<uint8_t> pinned;
+    std::span<geom::Vec3> face_xyz;
+    std::span<uint32_t> mesh_of;
+    std::span<geom::TriangleMeasure> measured;
+    std::span<geom::Sliver> slivers;
+    std::span<geom::MeshVertex> face_vertices;
+    std::span<uint32_t> face_indices;
+    std::span<module::DrawVertex> mesh_vertices;
+    std::span<uint16_t> mesh_indices;
+    std::span<module::FaceInfo> faces;
+    std::span<uint32_t> done_order;
+    std::span<module::Projected> projected;
+    std::span<render::Palette> palettes;
+    std::span<uint32_t> palette_rgb;
+};
+
+constexpr uint32_t kPalettes = 16; // face colours shaded at once (more are rebuilt as needed)
+
+// (Out of line at run time: once, in the constructor; the compiler evaluates it for the checks.)
+[[gnu::noinline]] constexpr void carve(Carver& k, const Capacity& c, Arrays* out) {
+    const size_t V = c.face_points + cdt::kBoxVertices, T = cdt::triangles_for(V);
+    auto e_first = k.take<uint32_t>(c.edges);
+    auto e_count = k.take<uint16_t>(c.edges);
+    auto e_drawn = k.take<uint8_t>(c.edges);
+    auto s_t = k.take<float>(c.samples);
+    auto s_p = k.take<geom::Vec3>(c.samples);
+    auto s_q = k.take<int32_t>(3 * size_t(c.samples));
+    auto a_v = k.take<cdt::Vertex<uint16_t>>(V);
+    auto a_t = k.take<cdt::Triangle<uint16_t>>(T);
+    auto a_w = k.take<uint16_t>(cdt::work_for(V));
+    auto a_o = k.take<uint16_t>(V);
+    auto a_m = k.take<uint16_t>(V);
+    auto a_i = k.take<uint16_t>(V);
+    auto a_k = k.take<uint32_t>(V);
+    auto lp = k.take<cdt::Point>(V);
+    auto ls = k.take<uint32_t>(c.loops);
+    auto uv = k.take<geom::Vec2>(V);
+    auto pin = k.take<uint8_t>(V);
+    auto xyz = k.take<geom::Vec3>(V);
+    auto mo = k.take<uint32_t>(V);
+    auto ms = k.take<geom::TriangleMeasure>(T);
+    auto sl = k.take<geom::Sliver>(c.slivers);
+    auto fv = k.take<geom::MeshVertex>(V);
+    auto fi = k.take<uint32_t>(3 * T);
+    auto mv = k.take<module::DrawVertex>(c.mesh_vertices);
+    auto mi = k.take<uint16_t>(3 * size_t(c.mesh_triangles));
+    auto fa = k.take<module::FaceInfo>(c.faces);
+    auto dn = k.take<uint32_t>(c.faces);
+    auto pr = k.take<module::Projected>(V);
+    auto pa = k.take<render::Palette>(kPalettes);
+    auto pc = k.take<uint32_t>(kPalettes);
+    if (out) {
+        *out = {e_first, e_count, e_drawn, s_t, s_p, s_q, {a_v, a_t, a_w, a_o, a_m, a_i, a_k}, lp, ls, uv, pin, xyz, mo, ms,
+                sl, fv, fi, mv, mi, fa, dn, pr, pa, pc};
+    }
+}
+
+constexpr size_t core_bytes() { return (sizeof(Core) + 15) / 16 * 16; }
+
+constexpr size_t layout_bytes(const Capacity& c) {
+    Carver k;
+    carve(k, c, nullptr);
+    return core_bytes() + k.used();
+}
+
+// The public formula (facet/sizes.h) must hold what the layout takes.
+static_assert(layout_bytes(Capacity{}) <= workspace_bytes(Capacity{}), "facet/sizes.h understates the default workspace");
+static_assert(sizeof(module::Projected) == 28 && sizeof(geom::TriangleMeasure) == 24 && sizeof(geom::MeshVertex) == 24 &&
+                  sizeof(cdt::Vertex<uint16_t>) == 12 && sizeof(cdt::Triangle<uint16_t>) == 14,
+              "FACET_BYTES_PER_FACE_POINT counts these records' sizes");
+static_assert(sizeof(geom::Sliver) == FACET_BYTES_PER_SLIVER);
+static_assert(core_bytes() + kPalettes * (sizeof(render::Palette) + 4) + 1024 <= FACET_WORKSPACE_FIXED_BYTES,
+              "FACET_WORKSPACE_FIXED_BYTES: the viewer's state, palettes and alignment");
+
+} // namespace
+
+uint32_t pack_memory_bytes(const void* file, uint32_t file_bytes) {
+    switch (geom::pack_file_kind(file, file_bytes)) {
+    case geom::PackFileKind::Unknown: return 0;
+    case geom::PackFileKind::Pack: return (reinterpret_cast<uintptr_t>(file) & 3) ? file_bytes : 0;
+    case geom::PackFileKind::Deflated: {
+        if (file_bytes < sizeof(pack::DeflatedHead)) return 0;
+        pack::DeflatedHead h;
+        std::memcpy(&h, file, sizeof h);
+        return h.pack_bytes;
+    }
+    }
+    return 0;
+}
+
+Core::Core(const Config& config, Carver& k)
+    : config_(config), emitter_{relay, this}, painter_(scene_, raster_), scheduler_(scene_, emitter_),
+      presenter_(scene_, camera_, painter_, raster_, emitter_, {config.now_us, config.clock_user}) {
+    Arrays a{};
+    carve(k, config.capacity, &a);
+    carved_ = k.fits();
+    if (!carved_) return;
+    scene_.init({geom::EdgeSamples{a.edge_first, a.edge_count, a.sample_t, a.sample_p}, a.sample_q, a.mesh_vertices,
+                 a.mesh_indices, a.faces, a.done_order});
+    geom::FaceScratch scratch{a.arena, a.loop_points, a.loop_sizes, a.face_uv, a.pinned, a.face_xyz, a.mesh_of, a.measured, a.slivers};
+    scheduler_.init({scratch, geom::Mesh{a.face_vertices, a.face_indices, {}}, uint32_t(a.projected.size())});
+    painter_.init({a.projected, a.edge_drawn, a.palettes, a.palette_rgb});
+    projected_ = a.projected;
+    controls_.set_screen(config.display.width, config.display.height);
+}
+
+Viewer* Viewer::create(const Config& config, void* workspace, size_t bytes, Result* why) {
+    auto refuse = [&](Result r) -> Viewer* {
+        if (why) *why = r;
+        return nullptr;
+    };
+    if (!workspace || (reinterpret_cast<uintptr_t>(workspace) & 7)) {
+        return refuse(Result::fail(Status::OutOfRange, "the workspace must be 8-byte aligned", {"workspace"}));
+    }
+    const Capacity& c = config.capacity;
+    if (c.face_points < 8 || c.face_points > 32760 || c.loops == 0 || c.faces == 0 || c.edges == 0 || c.samples < 2) {
+        return refuse(Result::fail(Status::OutOfRange, "a capacity is out of range (face_points 8 to 32,760; the others above 0)", {"capacity"}));
+    }
+    if (bytes < layout_bytes(c)) {
+        return refuse(Result::fail(Status::Full, "the workspace is smaller than workspace_bytes(capacity)", {"bytes", uint32_t(bytes)}));
+    }
+    Carver k(static_cast<uint8_t*>(workspace) + core_bytes(), bytes - core_bytes());
+    Core* core = new (workspace) Core(config, k);
+    if (!core->carved()) return refuse(Result::fail(Status::Full, "the workspace is smaller than workspace_bytes(capacity)"));
+    if (Result r = core->configure(); !r.ok()) return refuse(r);
+    if (why) *why = {};
+    return core;
+}
+
+void Core::relay(void* self, const Event& e) {
+    Core& c = *static_cast<Core*>(self);
+    switch (e.kind) {
+    case Event::Kind::Sampled: c.presenter_.invalidate(); break;     // the new level's wireframe
+    case Event::Kind::Tessellated: c.presenter_.invalidate(); break; // the progress bar goes
+    default: break;
+    }
+    if (!c.config_.on_event) return;
+    if (c.in_piece_ && c.held_count_ < kHeld) {
+        c.held_[c.held_count_++] = e;
+        return;
+    }
+    c.emit(e);
+}
+
+void Core::drain() {
+    for (uint32_t i = 0; i < held_count_; ++i) emit(held_[i]);
+    held_count_ = 0;
+}
+
+void Core::work(Event::Kind kind, Work what, uint32_t item) {
+    in_piece_ = kind == Event::Kind::WorkBegin;
+    if (!config_.on_event) return;
+    Event e;
+    e.kind = kind;
+    e.work = {what, item};
+    emit(e);
+    if (!in_piece_) drain();
+}
+
+Result Core::load(const void* file, uint32_t file_bytes, void* memory, uint32_t memory_bytes) {
+    scheduler_.stop();
+    presenter_.reset();
+    scene_.close();
+    pack_bytes_ = pack_file_bytes_ = 0;
+    auto* mem = static_cast<uint8_t*>(memory);
+    const auto* in = static_cast<const uint8_t*>(file);
+    if (!mem) memory_bytes = 0;
+    const bool inside = mem && in >= mem && in < mem + memory_bytes;
+    if (!file) return Result::fail(Status::OutOfRange, "no pack file");
+    pack_file_bytes_ = geom::pack_file_bytes(file, file_bytes);
+    const uint8_t* pack = in;
+    uint32_t bytes = 0;
+    switch (geom::pack_file_kind(file, file_bytes)) {
+    case geom::PackFileKind::Unknown: return Result::fail(Status::Corrupt, "no pack here (neither FPK1 nor FPZ1)", {"pack file"});
+    case geom::PackFileKind::Pack:
+        bytes = pack_file_bytes_;
+        if (bytes == 0) return Result::fail(Status::Corrupt, "the pack is longer than the bytes given, or truncated", {"pack file"});
+        if (reinterpret_cast<uintptr_t>(in) & 3) { // copied where it can be read in place
+            if (memory_bytes < bytes || (reinterpret_cast<uintptr_t>(mem) & 3)) {
+                return Result::fail(Status::Full, "an unaligned pack needs 4-byte aligned pack memory of its size", {"pack file"});
+            }
+            std::memmove(mem, in, bytes);
+            pack = mem;
+        }
+        break;
+    case geom::PackFileKind::Deflated: {
+        work(Event::Kind::WorkBegin, Work::Unpack, 0);
+        Result r;
+        if (!mem || (reinterpret_cast<uintptr_t>(mem) & 3)) {
+            r = Result::fail(Status::Full, "a deflated pack needs 4-byte aligned pack memory", {"pack file"});
+        } else if (inside) { // the file was loaded into the pack memory: inflated in place
+            const uint32_t offset = uint32_t(in - mem);
+            if (offset) std::memmove(mem, in, memory_bytes - offset < file_bytes ? memory_bytes - offset : file_bytes);
+            r = geom::unpack_in_place(mem, memory_bytes, memory_bytes - offset, bytes);
+        } else {
+            r = geom::inflate_pack_file({in, file_bytes}, {mem, memory_bytes}, bytes);
+        }
+        work(Event::Kind::WorkEnd, Work::Unpack, 0);
+        if (!r.ok()) return r;
+        pack = mem;
+        break;
+    }
+    }
+    geom::Pack p;
+    if (Result r = p.open(pack, bytes); !r.ok()) return r;
+    if (Result r = scene_.open(p); !r.ok()) return r;
+    pack_bytes_ = bytes;
+    default_tolerance_ = geom::default_tolerance(p);
+    camera_.fit();
+    Event e{};
+    e.kind = Event::Kind::Loaded;
+    e.loaded = {uint32_t(p.faces().size()), uint32_t(p.edges().size()), uint32_t(p.shells().size()),
+                uint32_t(p.instances().size()), bytes, pack_file_bytes_};
+    emit(e);
+    scheduler_.begin_pass(default_tolerance_);
+    return {};
+}
+
+bool Core::frame_wanted() const {
+    if (!scene_.loaded() || scheduler_.sampling()) return false;
+    const module::Totals& t = scene_.totals();
+    return presenter_.wanted(t.done + t.failed, t.faces);
+}
+
+Activity Core::step(uint32_t budget_us) {
+    if (!scene_.loaded()) return Activity::Idle;
+    const uint32_t t0 = now();
+    for (;;) {
+        // A frame when the screen is behind and a buffer is free; tessellation otherwise, but
+        // not between the bands of one frame (they show one state of the model).
+        const bool frame = frame_wanted() && presenter_.can_draw();
+        const bool mid_bands = presenter_.drawing() && config_.display.band_lines < config_.display.height;
+        if (frame) {
+            const Work w = presenter_.work();
+            work(Event::Kind::WorkBegin, w, 0);
+            presenter_.run(kFrameUnits, scheduler_.pass());
+            work(Event::Kind::WorkEnd, w, 0);
+        } else if (scheduler_.busy() && !mid_bands) {
+            const Work w = scheduler_.work();
+            const uint32_t item = scheduler_.item();
+            work(Event::Kind::WorkBegin, w, item);
+            (void)scheduler_.run(kTessUnits); // busy: there was a piece to do
+            work(Event::Kind::WorkEnd, w, item);
+        } else {
+            break;
+        }
+        if (!config_.now_us || now() - t0 >= budget_us) break;
+    }
+    const uint32_t used = now() - t0;
+    if (config_.now_us && used > budget_us + config_.step_slack_us) {
+        Event e{};
+        e.kind = Event::Kind::BudgetExceeded;
+        e.budget = {true, budget_us, used};
+        emit(e);
+    }
+    // What is left: work that can go on, or only a flush_done() that can free a buffer.
+    const bool mid_bands = presenter_.drawing() && config_.display.band_lines < config_.display.height;
+    if ((frame_wanted() && presenter_.can_draw()) || (scheduler_.busy() && !mid_bands)) return Activity::Busy;
+    if (frame_wanted()) return Activity::Waiting;
+    return Activity::Idle;
+}
+
+void Core::command(const module::Command& c) {
+    using Kind = module::Command::Kind;
+    const Display& d = config_.display;
+    switch (c.kind) {
+    case Kind::None: return;
+    case Kind::Act: act(c.action); return;
+    case Kind::Orbit: camera_.orbit(c.yaw, c.pitch); break;
+    case Kind::Pan: camera_.pan_pixels(c.dx, c.dy, scene_.radius(), d.width, d.height); break;
+    case Kind::Dolly: camera_.dolly(c.factor); break;
+    case Kind::Pick: pick(c.x, c.y); return;
+    }
+    view_changed();
+}
+
+void Core::view_changed() {
+    presenter_.invalidate();
+    Event e{};
+    e.kind = Event::Kind::ViewChanged;
+    const module::View& v = camera_.view();
+    e.view = {v.yaw * 57.29578f, v.pitch * 57.29578f, v.zoom};
+    emit(e);
+}
+
+void Core::act(Action a) {
+    if (!scene_.loaded()) return;
+    const float pan = 0.1f * scene_.radius(), turn = module::Camera::kTurn;
+    switch (a) {
+    case Action::None: return;
+    case Action::TurnLeft: camera_.orbit(-turn, 0); break;
+    case Action::TurnRight: camera_.orbit(turn, 0); break;
+    case Action::TiltUp: camera_.orbit(0, -turn); break;
+    case Action::TiltDown: camera_.orbit(0, turn); break;
+    case Action::ZoomIn: camera_.dolly(0.8f); break;
+    case Action::ZoomOut: camera_.dolly(1.25f); break;
+    case Action::PanLeft: camera_.pan(-pan, 0); break;
+    case Action::PanRight: camera_.pan(pan, 0); break;
+    case Action::PanUp: camera_.pan(0, pan); break;
+    case Action::PanDown: camera_.pan(0, -pan); break;
+    case Action::Fit: camera_.fit(); break;
+    case Action::Coarser:
+    case Action::Finer: {
+        const float t = a == Action::Coarser ? scheduler_.tolerance() * 2 : scheduler_.tolerance() * 0.5f;
+        if (t > default_tolerance_ * 16.01f || t < default_tolerance_ / 8.01f) return; // at its limit
+        scheduler_.begin_pass(t);
+        return;
+    }
+    }
+    view_changed();
+}
+
+Stats Core::stats() const {
+    const module::Totals& t = scene_.totals();
+    const geom::Pack& p = scene_.pack();
+    const uint64_t edges = p.edges().size(), faces = p.faces().size();
+    const uint64_t points = t.face_points_peak + cdt::kBoxVertices, triangles = cdt::triangles_for(points);
+    const uint64_t peak =
+        core_bytes() + edges * (sizeof(uint32_t) + sizeof(uint16_t) + sizeof(uint8_t)) +
+        uint64_t(t.samples_peak) * (sizeof(float) + sizeof(geom::Vec3) + 3 * sizeof(int32_t)) + cdt::arena_bytes<uint16_t>(points) +
+        points * (sizeof(cdt::Point) + sizeof(geom::Vec2) + 1 + sizeof(geom::Vec3) + sizeof(uint32_t) + sizeof(geom::MeshVertex) +
+                  sizeof(module::Projected)) +
+        triangles * (sizeof(geom::TriangleMeasure) + 3 * sizeof(uint32_t)) + uint64_t(t.slivers_peak) * sizeof(geom::Sliver) +
+        uint64_t(config_.capacity.loops) * sizeof(uint32_t) + uint64_t(t.vertices_peak) * sizeof(module::DrawVertex) +
+        uint64_t(t.triangles_peak) * 3 * sizeof(uint16_t) + faces * (sizeof(module::FaceInfo) + sizeof(uint32_t)) +
+        kPalettes * (sizeof(render::Palette) + sizeof(uint32_t));
+    return {t.faces, t.done, t.failed, t.triangles, t.vertices, scheduler_.pass(), t.mesh_bytes, t.arena_peak_bytes,
+            pack_bytes_, pack_file_bytes_, uint32_t(peak), scheduler_.tolerance()};
+}
+
+// The viewer's public face: each call goes to the Core the workspace holds.
+Result Viewer::load(const void* file, uint32_t file_bytes, void* memory, uint32_t memory_bytes) {
+    return static_cast<Core*>(this)->load(file, file_bytes, memory, memory_bytes);
+}
+Activity Viewer::step(uint32_t budget_us) { return static_cast<Core*>(this)->step(budget_us); }
+void Viewer::flush_done() { static_cast<Core*>(this)->flush_done(); }
+void Viewer::key(uint32_t k) {
+    Core& c = *static_cast<Core*>(this);
+    c.command(c.controls().key(k));
+}
+void Viewer::pointer(int16_t dx, int16_t dy, uint8_t buttons) {
+    Core& c = *static_cast<Core*>(this);
+    c.command(c.controls().pointer(dx, dy, buttons));
+}
+void Viewer::wheel(int16_t clicks) {
+    Core& c = *static_cast<Core*>(this);
+    c.command(c.controls().wheel(clicks));
+}
+void Viewer::touch(uint8_t id, int16_t x, int16_t y, bool down) {
+    Core& c = *static_cast<Core*>(this);
+    module::Command out[2];
+    const uint32_t n = c.controls().touch(id, x, y, down, out);
+    for (uint32_t i = 0; i < n; ++i) c.command(out[i]);
+}
+void Viewer::act(Action a) { static_cast<Core*>(this)->act(a); }
+Stats Viewer::stats() const { return static_cast<const Core*>(this)->stats(); }
+
+} // namespace facet

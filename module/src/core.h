@@ -1,0 +1,70 @@
+#pragma once
+// The viewer behind facet::Viewer: its parts, in the workspace, and the loop of step().
+#include "camera.h"
+#include "controls.h"
+#include "facet/viewer.h"
+#include "painter.h"
+#include "presenter.h"
+#include "scene.h"
+#include "scheduler.h"
+#include "workspace.h"
+
+namespace facet::module {
+
+class Core;
+
+} // namespace facet::module
+
+namespace facet {
+
+class Core : public Viewer {
+public:
+    Core(const Config& config, module::Carver& carver);
+
+    Result load(const void* file, uint32_t file_bytes, void* memory, uint32_t memory_bytes);
+    Activity step(uint32_t budget_us);
+    void flush_done() { presenter_.flush_done(); }
+    void command(const module::Command& c);
+    void act(Action a);
+    Stats stats() const;
+    bool carved() const { return carved_; }
+    Result configure() { return presenter_.configure(config_.display, config_.frame_budget_us); }
+
+    // Pieces of work, in units: a frame's (triangles) and a face's (geom::FaceJob units).
+    static constexpr uint32_t kFrameUnits = 1500;
+    static constexpr uint32_t kTessUnits = 200;
+
+    module::Controls& controls() { return controls_; }
+
+private:
+    static void relay(void* self, const Event& e); // the parts' events: act on some, pass all on
+    void emit(const Event& e) const { if (config_.on_event) config_.on_event(config_.event_user, e); }
+    void drain(); // the events held back while a piece of work ran
+    void work(Event::Kind kind, Work what, uint32_t item);
+    uint32_t now() const { return config_.now_us ? config_.now_us(config_.clock_user) : 0; }
+    bool frame_wanted() const;
+    void pick(int16_t x, int16_t y);
+    void view_changed();
+
+    Config config_;
+    module::Emitter emitter_;
+    module::Scene scene_;
+    module::Camera camera_;
+    module::Controls controls_;
+    render::Rasterizer raster_;
+    module::Painter painter_;
+    module::Scheduler scheduler_;
+    module::Presenter presenter_;
+    std::span<module::Projected> projected_;
+    float default_tolerance_ = 0;
+    uint32_t pack_bytes_ = 0, pack_file_bytes_ = 0;
+    bool carved_ = false;
+    // Events of a piece of work are handed on after it (so a profiler's region around the
+    // piece measures the work, not what the application does with its events).
+    static constexpr uint32_t kHeld = 8;
+    Event held_[kHeld];
+    uint32_t held_count_ = 0;
+    bool in_piece_ = false;
+};
+
+} // namespace facet

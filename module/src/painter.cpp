@@ -1,0 +1,186 @@
+#include "painter.h"
+
+#include "render/fixed.h"
+
+namespace facet::module {
+namespace {
+
+constexpr uint16_t kLineBias = 384; // depth units edges are pulled toward the eye
+constexpr hal::Rgb565 kEdgeColour = hal::rgb565(28, 30, 38);
+constexpr uint32_t kNoColour = 0xFF000000u; // no palette in the slot (colours are 24-bit)
+
+// X / d for d >= 1, to about 2^-15 relative, without dividing (render/fixed.h).
+inline int32_t divide(int64_t x, int32_t d) { return render::divide(x, render::reciprocal(uint32_t(d))); }
+
+inline int32_t round_to_int(float v) { return int32_t(v + (v >= 0 ? 0.5f : -0.5f)); }
+
+} // namespace
+
+void Painter::init(const Memory& memory) {
+    mem_ = memory;
+    for (uint32_t& rgb : mem_.palette_rgb) rgb = kNoColour;
+    next_palette_ = 0;
+}
+
+const render::Palette& Painter::palette(uint32_t rgb) {
+    for (uint32_t i = 0; i < mem_.palette_rgb.size(); ++i)
+        if (mem_.palette_rgb[i] == rgb) return mem_.palettes[i];
+    const uint32_t i = next_palette_;
+    next_palette_ = (next_palette_ + 1) % uint32_t(mem_.palettes.size());
+    mem_.palette_rgb[i] = rgb;
+    render::make_palette(mem_.palettes[i], uint8_t(rgb & 255), uint8_t((rgb >> 8) & 255), uint8_t((rgb >> 16) & 255));
+    return mem_.palettes[i];
+}
+
+Rows Painter::rows(const Transform& t) const {
+    const render::Target& tg = raster_.target();
+    return {t.cy16 - int32_t(tg.y0) * 16, int32_t(tg.y0 + tg.rows) * 16 - t.cy16};
+}
+
+void Painter::background() {
+    const render::Target& t = raster_.target();
+    // A CAD-style background: light at the top, darker toward the bottom (16.16 steps per row,
+    // from the screen's top whatever the band).
+    const int32_t rows = t.height > 1 ? t.height - 1 : 1;
+    const int32_t dr = (80 << 16) / rows, dg = (78 << 16) / rows, db = (64 << 16) / rows;
+    int32_t r = (214 << 16) - int32_t(t.y0) * dr, g = (222 << 16) - int32_t(t.y0) * dg, b = (234 << 16) - int32_t(t.y0) * db;
+    for (int32_t y = t.y0; y < t.y0 + t.rows; ++y, r -= dr, g -= dg, b -= db) {
+        fill(t.row(y), t.width, hal::rgb565(uint8_t(r >> 16), uint8_t(g >> 16), uint8_t(b >> 16)));
+    }
+}
+
+void fill(hal::Rgb565* p, uint32_t n, hal::Rgb565 c) {
+    // Two pixels per word store, eight words per round: the odd pixel at each end on its own.
+    using Pair = uint32_t __attribute__((may_alias, aligned(4)));
+    if ((reinterpret_cast<uintptr_t>(p) & 2) && n) *p++ = c, --n;
+    Pair* w = reinterpret_cast<Pair*>(p);
+    const uint32_t pair = uint32_t(c) * 0x00010001u;
+    uint32_t words = n / 2;
+    for (; words >= 8; words -= 8, w += 8) w[0] = w[1] = w[2] = w[3] = w[4] = w[5] = w[6] = w[7] = pair;
+    while (words--) *w++ = pair;
+    if (n & 1) *reinterpret_cast<hal::Rgb565*>(w) = c;
+}
+
+void Painter::reset_edges() {
+    for (uint8_t& drawn : mem_.edge_drawn.first(scene_.edge_count())) drawn = 0;
+}
+
+void Painter::triangle(const Transform& t, const Projected& a, const Projected& b, const Projected& c,
+                       const render::Palette& pal, render::Cull cull) {
+    if (!(a.out | b.out | c.out)) {
+        refused_ += !ok(raster_.draw(a.s, b.s, c.s, pal, cull)); // inside the guard band: never refused
+        return;
+    }
+    if (a.out & b.out & c.out & kOutNear) return;
+    // Clip against the near plane and the guard band (camera space, float: this path is rare).
+    struct V {
+        float x, y, d, shade;
+    };
+    const float near = float(t.near), f16 = float(t.f16);
+    const float G = float(t.guard) * 0.98f; // inside the band after rounding
+    V poly[9], tmp[9];
+    int n = 3;
+    const Projected* src[3] = {&a, &b, &c};
+    for (int i = 0; i < 3; ++i) poly[i] = {float(src[i]->x), float(src[i]->y), float(src[i]->d), float(src[i]->s.shade)};
+    auto plane = [&](const V& v, int k) {
+        switch (k) {
+        case 0: return v.d - near * 1.01f;
+        case 1: return G * v.d - f16 * v.x;
+        case 2: return G * v.d + f16 * v.x;
+        case 3: return G * v.d - f16 * v.y;
+        default: return G * v.d + f16 * v.y;
+        }
+    };
+    for (int k = 0; k < 5 && n >= 3; ++k) {
+        int m = 0;
+        for (int i = 0; i < n; ++i) {
+            const V& p = poly[i];
+            const V& q = poly[(i + 1) % n];
+            const float dp = plane(p, k), dq = plane(q, k);
+            if (dp >= 0) tmp[m++] = p;
+            if ((dp >= 0) != (dq >= 0)) {
+                const float s = dp / (dp - dq);
+                tmp[m++] = {p.x + (q.x - p.x) * s, p.y + (q.y - p.y) * s, p.d + (q.d - p.d) * s, p.shade + (q.shade - p.shade) * s};
+            }
+        }
+        n = m;
+        for (int i = 0; i < n; ++i) poly[i] = tmp[i];
+    }
+    if (n < 3) return;
+    render::ScreenVertex s[9];
+    for (int i = 0; i < n; ++i) {
+        const int32_t d = round_to_int(poly[i].d) > t.near ? round_to_int(poly[i].d) : t.near;
+        s[i].x = t.cx16 + divide(int64_t(round_to_int(poly[i].x)) * t.f16, d);
+        s[i].y = t.cy16 - divide(int64_t(round_to_int(poly[i].y)) * t.f16, d);
+        const int64_t zz = (int64_t(d - t.near) * t.zk) >> 16;
+        s[i].z = uint16_t(zz > 65535 ? 65535 : zz);
+        s[i].shade = uint8_t(poly[i].shade);
+    }
+    for (int i = 1; i + 1 < n; ++i) refused_ += !ok(raster_.draw(s[0], s[i], s[i + 1], pal, cull));
+}
+
+uint32_t Painter::face(uint32_t f, const Transform& t, Rows rows, bool with_edges) {
+    const FaceInfo& F = scene_.face(f);
+    if (F.state != FaceState::Done || !t.visible(F.centre, F.radius, rows)) return 0;
+    const DrawVertex* verts = scene_.vertices() + F.first_vertex;
+    if (F.planar && t.closed && F.vertex_count && t.faces_away(verts[0].p, verts[0].n)) return 0;
+    Projected* P = mem_.projected.data();
+    const render::Palette& pal = palette(F.rgb);
+    for (uint32_t v = 0; v < F.vertex_count; ++v) {
+        t.project(verts[v].p, P[v]);
+        P[v].s.shade = t.shade(verts[v].n);
+    }
+    const render::Cull cull = t.closed ? render::Cull::Back : render::Cull::None;
+    const uint16_t* id = scene_.indices() + F.first_index;
+    for (uint32_t k = 0; k < F.triangle_count; ++k, id += 3) {
+        if (t.mirrored) triangle(t, P[id[0]], P[id[2]], P[id[1]], pal, cull);
+        else triangle(t, P[id[0]], P[id[1]], P[id[2]], pal, cull);
+    }
+    uint32_t work = F.triangle_count + F.vertex_count / 2;
+    if (with_edges) work += face_edges(f, t, rows, false);
+    return work;
+}
+
+uint32_t Painter::face_edges(uint32_t f, const Transform& t, Rows rows, bool once) {
+    // Its edges lie in its sphere; a plane facing away hides them unless a neighbour shows them.
+    const FaceInfo& info = scene_.face(f);
+    if (!t.visible(info.centre, info.radius, rows)) return 0;
+    if (info.planar && t.closed && info.vertex_count) {
+        const DrawVertex& v = scene_.vertices()[info.first_vertex];
+        if (t.faces_away(v.p, v.n)) return 0;
+    }
+    const geom::Pack& pack = scene_.pack();
+    const pack::Face& F = pack.faces()[f];
+    uint32_t work = 0;
+    for (uint32_t l = F.first_loop; l < F.first_loop + F.loop_count; ++l) {
+        const pack::Loop& L = pack.loops()[l];
+        for (uint32_t c = L.first_coedge; c < L.first_coedge + L.coedge_count; ++c) {
+            const pack::Coedge& C = pack.coedges()[c];
+            if (C.seam() != pack::Seam::None) continue; // a periodic surface's seam is no B-rep edge to the eye
+            const uint32_t e = C.edge();
+            if (once) {
+                if (mem_.edge_drawn[e]) continue;
+                mem_.edge_drawn[e] = 1;
+            }
+            work += edge(e, t);
+        }
+    }
+    return work;
+}
+
+uint32_t Painter::edge(uint32_t e, const Transform& t) {
+    const pack::Edge& E = scene_.pack().edges()[e];
+    if (E.curve == pack::kNoIndex) return 0; // a pole: nothing to draw
+    const geom::EdgeSamples& samples = scene_.samples();
+    const uint32_t first = samples.first[e], n = samples.count[e];
+    Projected prev{}, cur{};
+    for (uint32_t k = 0; k < n; ++k) {
+        t.project(scene_.sample_q(first + k), cur);
+        // Segments that leave the view volume are left out (edges are not clipped).
+        if (k > 0 && !(prev.out | cur.out)) refused_ += !ok(raster_.line(prev.s, cur.s, kEdgeColour, kLineBias));
+        prev = cur;
+    }
+    return n / 4;
+}
+
+} // namespace facet::module

@@ -1,0 +1,55 @@
+#pragma once
+// Drawing the scene into the rasterizer's target (a frame, or a band of it): the background,
+// a face's triangles (clipped against the near plane and the guard band where they cross
+// them), its B-rep edges over it, and the palettes that colour them.
+#include "camera.h"
+#include "render/raster.h"
+#include "scene.h"
+
+#include <span>
+
+namespace facet::module {
+
+// n pixels of one colour from p (word stores).
+void fill(hal::Rgb565* p, uint32_t n, hal::Rgb565 colour);
+
+class Painter {
+public:
+    struct Memory {
+        std::span<Projected> projected;       // one face's vertices (or one edge's samples)
+        std::span<uint8_t> edge_drawn;        // per pack edge: drawn in this instance already
+        std::span<render::Palette> palettes;  // the shades of recently drawn face colours
+        std::span<uint32_t> palette_rgb;      // which colour each holds (kNoColour: none)
+    };
+
+    Painter(const Scene& scene, render::Rasterizer& raster) : scene_(scene), raster_(raster) {}
+    void init(const Memory& memory);
+
+    // The background of the target's rows: light at the top, darker toward the bottom.
+    void background();
+    // The face's triangles (and its edges over them), if it may show in `rows`. Returns the
+    // triangles it went through (the work done).
+    uint32_t face(uint32_t f, const Transform& t, Rows rows, bool with_edges);
+    // The edges of the face, each at most once per reset_edges() when `once`.
+    uint32_t face_edges(uint32_t f, const Transform& t, Rows rows, bool once);
+    void reset_edges();
+    // The rows of the screen being drawn (the target's band) for culling.
+    Rows rows(const Transform& t) const;
+    // Triangles and lines the rasterizer refused (outside its guard band): none, as every
+    // one is projected or clipped into the band first; counted so that none goes unseen.
+    uint32_t refused() const { return refused_; }
+
+private:
+    void triangle(const Transform& t, const Projected& a, const Projected& b, const Projected& c, const render::Palette& pal,
+                  render::Cull cull);
+    uint32_t edge(uint32_t e, const Transform& t);
+    const render::Palette& palette(uint32_t rgb);
+
+    const Scene& scene_;
+    render::Rasterizer& raster_;
+    Memory mem_{};
+    uint32_t next_palette_ = 0; // the palette slot to reuse next
+    uint32_t refused_ = 0;
+};
+
+} // namespace facet::module

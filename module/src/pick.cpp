@@ -1,0 +1,56 @@
+// Picking: the face under a screen pixel, as drawn (the same transforms, culling and
+// projection as the frame; the nearest triangle that covers the pixel's centre).
+#include "core.h"
+
+namespace facet {
+
+void Core::pick(int16_t x, int16_t y) {
+    Event e{};
+    e.kind = Event::Kind::Picked;
+    e.pick = {false, 0, 0, 0, 0, x, y};
+    const Display& d = config_.display;
+    if (!scene_.loaded() || x < 0 || y < 0 || x >= d.width || y >= d.height) {
+        emit(e);
+        return;
+    }
+    const geom::Pack& pack = scene_.pack();
+    const int64_t sx = int64_t(x) * 16 + 8, sy = int64_t(y) * 16 + 8;
+    float best = 1e30f;
+    for (uint32_t i = 0; i < pack.instances().size(); ++i) {
+        const module::Transform t = camera_.transform(scene_, i, d.width, d.height);
+        const module::Rows row{t.cy16 - int32_t(y) * 16, (int32_t(y) + 1) * 16 - t.cy16};
+        const pack::Shell& sh = pack.shells()[pack.instances()[i].shell];
+        for (uint32_t f = sh.first_face; f < sh.first_face + sh.face_count; ++f) {
+            const module::FaceInfo& F = scene_.face(f);
+            if (F.state != module::FaceState::Done || !t.visible(F.centre, F.radius, row)) continue;
+            const module::DrawVertex* v = scene_.vertices() + F.first_vertex;
+            if (F.planar && t.closed && F.vertex_count && t.faces_away(v[0].p, v[0].n)) continue;
+            module::Projected* P = projected_.data();
+            for (uint32_t k = 0; k < F.vertex_count; ++k) t.project(v[k].p, P[k]);
+            const uint16_t* id = scene_.indices() + F.first_index;
+            for (uint32_t k = 0; k < F.triangle_count; ++k, id += 3) {
+                const module::Projected& a = P[id[0]];
+                const module::Projected& b = P[t.mirrored ? id[2] : id[1]];
+                const module::Projected& c = P[t.mirrored ? id[1] : id[2]];
+                if (a.out | b.out | c.out) continue; // crossing the near plane: not pickable
+                const int64_t area2 = int64_t(b.s.x - a.s.x) * (c.s.y - a.s.y) - int64_t(b.s.y - a.s.y) * (c.s.x - a.s.x);
+                if (area2 == 0 || (t.closed && area2 > 0)) continue; // as the rasterizer culls
+                // Barycentric weights of the pixel centre (areas of the sub-triangles).
+                const int64_t wa = int64_t(b.s.x - sx) * (c.s.y - sy) - int64_t(b.s.y - sy) * (c.s.x - sx);
+                const int64_t wb = int64_t(c.s.x - sx) * (a.s.y - sy) - int64_t(c.s.y - sy) * (a.s.x - sx);
+                const int64_t wc = area2 - wa - wb;
+                const bool inside = area2 > 0 ? (wa >= 0 && wb >= 0 && wc >= 0) : (wa <= 0 && wb <= 0 && wc <= 0);
+                if (!inside) continue;
+                const float z = (float(wa) * a.s.z + float(wb) * b.s.z + float(wc) * c.s.z) / float(area2);
+                if (z < best) {
+                    best = z;
+                    const uint8_t type = pack.surfaces()[pack.faces()[f].surface].type;
+                    e.pick = {true, f, i, pack.instances()[i].shell, type, x, y};
+                }
+            }
+        }
+    }
+    emit(e);
+}
+
+} // namespace facet

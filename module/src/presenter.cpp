@@ -1,0 +1,238 @@
+#include "presenter.h"
+
+namespace facet::module {
+
+Result Presenter::configure(const Display& d, uint32_t frame_budget_us) {
+    auto bad = [](const char* what) { return Result::fail(Status::OutOfRange, what, {"display"}); };
+    if (d.width == 0 || d.height == 0 || d.width > 4096 || d.height > 4096) return bad("width and height must be 1 to 4096");
+    if (d.band_lines == 0 || d.band_lines > d.height) return bad("band_lines must be 1 to the height (the height: full frames)");
+    if (!d.buffers[0]) return bad("no draw buffer (buffers[0])");
+    if (!d.depth[0]) return bad("no depth buffer (depth[0])");
+    if (!d.flush) return bad("no flush callback");
+    if (d.mode == Flush::Scanout && d.band_lines != d.height) return bad("scan-out displays take full frames (band_lines = height)");
+    display_ = d;
+    budget_us_ = frame_budget_us;
+    buffers_ = d.buffers[1] ? 2 : 1;
+    const bool full = d.band_lines == d.height;
+    incremental_ = full && (buffers_ == 1 || d.depth[1] != nullptr);
+    bands_ = uint16_t((d.height + d.band_lines - 1) / d.band_lines);
+    reset();
+    return {};
+}
+
+void Presenter::reset() {
+    // What a flush in flight still reads stays busy until its flush_done(); the rest is free.
+    for (Buffer& b : buf_) b.version = 0, b.applied = 0;
+    version_ = 1;
+    shown_version_ = shown_finished_ = 0;
+    job_ = {};
+}
+
+void Presenter::invalidate() { ++version_; }
+
+bool Presenter::wanted(uint32_t finished, uint32_t total) const {
+    if (job_.active) return true;
+    if (shown_version_ != version_) return true;
+    if (finished == shown_finished_) return false;
+    if (incremental_) return true;
+    // Whole frames for progress: every sixteenth of the faces (and the last).
+    const uint32_t step = total / 16 > 1 ? total / 16 : 1;
+    return finished >= total || finished - shown_finished_ >= step;
+}
+
+void Presenter::take_done() {
+    while (taken_ != done_count_) {
+        ++taken_;
+        if (pending_ < 0) continue; // more flush_done() calls than flushes: nothing to free
+        if (display_.mode == Flush::Copy || buffers_ == 1) {
+            buf_[pending_].busy = false; // copied out (or a single frame drawn where it is shown)
+        } else {
+            if (shown_ >= 0 && shown_ != pending_) buf_[shown_].busy = false; // the previous frame is off the screen
+            shown_ = pending_;
+        }
+        pending_ = -1;
+    }
+}
+
+bool Presenter::buffer_free(uint8_t b) const { return !buf_[b].busy; }
+
+bool Presenter::can_draw() {
+    take_done();
+    if (!job_.active) return buffer_free(buffers_ == 2 ? uint8_t(next_ & 1) : 0);
+    if (job_.stage == Job::Stage::Begin) return buffer_free(job_.buffer);
+    if (job_.stage == Job::Stage::Flush) return pending_ < 0;
+    return true;
+}
+
+bool Presenter::waiting() const { return job_.active || shown_version_ != version_; }
+
+void Presenter::start(uint32_t finished) {
+    const uint8_t b = buffers_ == 2 ? uint8_t(next_ & 1) : 0;
+    job_ = {};
+    job_.active = true;
+    job_.buffer = b;
+    job_.full = !(incremental_ && buf_[b].version == version_);
+    job_.version = version_;
+    job_.finished = finished;
+    job_.applied_to = scene_.totals().done;
+    job_.face = job_.full ? 0 : buf_[b].applied;
+    job_.pieces = 1; // this one
+    raster_.stats = {};
+}
+
+void Presenter::set_band() {
+    const uint16_t y0 = uint16_t(job_.band * display_.band_lines);
+    const uint16_t rows = uint16_t(display_.height - y0 < display_.band_lines ? display_.height - y0 : display_.band_lines);
+    uint16_t* depth = incremental_ && buffers_ == 2 ? display_.depth[job_.buffer] : display_.depth[0];
+    raster_.set_target({display_.buffers[job_.buffer], depth, display_.width, display_.height, y0, rows});
+}
+
+bool Presenter::full_pieces(uint32_t units) {
+    const geom::Pack& pack = scene_.pack();
+    uint32_t spent = 0;
+    while (job_.instance < pack.instances().size()) {
+        const pack::Shell& sh = pack.shells()[pack.instances()[job_.instance].shell];
+        if (!job_.have_transform) {
+            job_.transform = camera_.transform(scene_, job_.instance, display_.width, display_.height);
+            job_.have_transform = true;
+        }
+        const Transform& t = job_.transform;
+        const Rows rows = painter_.rows(t);
+        if (job_.stage == Job::Stage::Faces) {
+            for (; job_.face < sh.face_count && spent < units; ++job_.face) spent += 1 + painter_.face(sh.first_face + job_.face, t, rows, false);
+            if (job_.face < sh.face_count) return false;
+            // Then each edge once in this instance (an edge has two faces).
+            job_.stage = Job::Stage::Edges;
+            job_.face = 0;
+            painter_.reset_edges();
+            spent += scene_.edge_count() / 256;
+        }
+        for (; job_.face < sh.face_count && spent < units; ++job_.face) spent += 1 + painter_.face_edges(sh.first_face + job_.face, t, rows, true);
+        if (job_.face < sh.face_count) return false;
+        ++job_.instance;
+        job_.face = 0;
+        job_.stage = Job::Stage::Faces;
+        job_.have_transform = false;
+    }
+    return true;
+}
+
+bool Presenter::update_pieces(uint32_t units) {
+    const geom::Pack& pack = scene_.pack();
+    uint32_t spent = 0;
+    // The faces finished since this buffer was last drawn, in every instance of their shell.
+    while (job_.instance < pack.instances().size()) {
+        const pack::Shell& sh = pack.shells()[pack.instances()[job_.instance].shell];
+        for (; job_.face < job_.applied_to && spent < units; ++job_.face) {
+            const uint32_t f = scene_.done_face(job_.face);
+            if (f < sh.first_face || f >= sh.first_face + sh.face_count) continue;
+            if (!job_.have_transform) {
+                job_.transform = camera_.transform(scene_, job_.instance, display_.width, display_.height);
+                job_.have_transform = true;
+            }
+            spent += 1 + painter_.face(f, job_.transform, painter_.rows(job_.transform), true);
+        }
+        if (job_.face < job_.applied_to) return false;
+        ++job_.instance;
+        job_.face = buf_[job_.buffer].applied;
+        job_.have_transform = false;
+    }
+    return true;
+}
+
+void Presenter::progress_bar() {
+    const uint32_t total = scene_.totals().faces;
+    if (job_.finished >= total) return;
+    const render::Target& t = raster_.target();
+    const uint32_t w = t.width * job_.finished / (total ? total : 1);
+    const hal::Rgb565 done = hal::rgb565(40, 110, 220), left = hal::rgb565(70, 74, 84);
+    for (int32_t y = t.height - 4; y < t.height; ++y) {
+        if (y < t.y0 || y >= t.y0 + t.rows) continue;
+        fill(t.row(y), w, done);
+        fill(t.row(y) + w, t.width - w, left);
+    }
+}
+
+void Presenter::flush(uint32_t pass) {
+    const render::Target& t = raster_.target();
+    const uint8_t b = job_.buffer;
+    pending_ = int8_t(b);
+    buf_[b].busy = true;
+    ++flushes_;
+    if (buffers_ == 2) ++next_;
+    const bool last = job_.band + 1 >= bands_;
+    if (last) {
+        buf_[b].version = job_.full || buf_[b].version == job_.version ? job_.version : 0;
+        buf_[b].applied = job_.applied_to;
+    }
+    display_.flush(display_.user, Area{0, t.y0, t.width, t.rows}, t.pixels); // may call flush_done()
+    if (!last) {
+        ++job_.band;
+        job_.stage = Job::Stage::Begin;
+        job_.buffer = buffers_ == 2 ? uint8_t(next_ & 1) : 0;
+        return;
+    }
+    shown_version_ = job_.version;
+    shown_finished_ = job_.finished;
+    job_.active = false;
+    Event e{};
+    e.kind = Event::Kind::FrameDone;
+    const render::RasterStats& s = raster_.stats;
+    const uint32_t cost = job_.cost_us + (clock_() - piece_start_);
+    e.frame = {s.triangles, s.culled, s.pixels, cost, job_.pieces, job_.finished, scene_.totals().faces, pass, job_.full};
+    emit_(e);
+    if (budget_us_ && cost > budget_us_) {
+        Event b{};
+        b.kind = Event::Kind::BudgetExceeded;
+        b.budget = {false, budget_us_, cost};
+        emit_(b);
+    }
+}
+
+Work Presenter::work() const {
+    if (job_.active && job_.version == version_) return job_.full ? Work::Frame : Work::Update;
+    const uint8_t b = buffers_ == 2 ? uint8_t(next_ & 1) : 0;
+    return incremental_ && buf_[b].version == version_ ? Work::Update : Work::Frame;
+}
+
+void Presenter::run(uint32_t units, uint32_t pass) {
+    piece_start_ = clock_();
+    if (!job_.active || job_.version != version_) job_.pieces = 0; // (a new frame: start() resets it)
+    ++job_.pieces;
+    run_piece(units, pass);
+    if (job_.active) job_.cost_us += clock_() - piece_start_;
+}
+
+void Presenter::run_piece(uint32_t units, uint32_t pass) {
+    take_done();
+    if (job_.active && job_.version != version_) job_.active = false; // outdated: start over
+    if (!job_.active) start(scene_.totals().done + scene_.totals().failed);
+    if (job_.stage == Job::Stage::Begin) {
+        if (!buffer_free(job_.buffer)) return;
+        set_band();
+        if (job_.full) {
+            painter_.background();
+            raster_.clear_depth();
+        }
+        job_.stage = Job::Stage::Faces;
+        job_.instance = 0;
+        job_.face = job_.full ? 0 : buf_[job_.buffer].applied;
+        job_.have_transform = false;
+        const uint32_t spent = 1 + uint32_t(raster_.target().rows) * display_.width / 2048;
+        if (spent >= units) return;
+        units -= spent;
+    }
+    if (job_.stage == Job::Stage::Faces || job_.stage == Job::Stage::Edges) {
+        if (!(job_.full ? full_pieces(units) : update_pieces(units))) return;
+        job_.stage = Job::Stage::Overlay;
+    }
+    if (job_.stage == Job::Stage::Overlay) {
+        progress_bar();
+        job_.stage = Job::Stage::Flush;
+    }
+    take_done();
+    if (pending_ >= 0) return; // the previous flush is still in flight
+    flush(pass);
+}
+
+} // namespace facet::module

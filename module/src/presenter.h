@@ -1,0 +1,102 @@
+#pragma once
+// Frames: which buffer to draw into, whole or band by band, a piece at a time, and the
+// handshake with the application's display (flush, flush_done).
+//
+// A frame is drawn when the picture on the screen is behind the model: the view changed, a
+// level of detail began, a face was finished (the progress bar moved). With full frames and a
+// depth buffer per draw buffer, a buffer that only lacks the latest faces gets just those
+// (filling in costs a face, not a frame); otherwise the whole frame is drawn again, band after
+// band with partial rendering (then progress is shown every sixteenth of the faces).
+#include "camera.h"
+#include "facet/viewer.h"
+#include "painter.h"
+#include "scene.h"
+#include "scheduler.h"
+
+namespace facet::module {
+
+class Presenter {
+public:
+    // The application's clock, if any (a frame's cost in microseconds).
+    struct Clock {
+        uint32_t (*now_us)(void* user) = nullptr;
+        void* user = nullptr;
+        uint32_t operator()() const { return now_us ? now_us(user) : 0; }
+    };
+
+    Presenter(const Scene& scene, const Camera& camera, Painter& painter, render::Rasterizer& raster, const Emitter& emit,
+              const Clock& clock)
+        : scene_(scene), camera_(camera), painter_(painter), raster_(raster), emit_(emit), clock_(clock) {}
+
+    // Checks the display's buffers; nothing is drawn before a model is loaded.
+    Result configure(const Display& display, uint32_t frame_budget_us);
+    void reset();        // a new model: nothing shown, nothing drawn
+    void invalidate();   // every buffer must be drawn whole again (view, level of detail)
+
+    // Whether the screen is behind the model (`finished` faces of `total` done or failed).
+    bool wanted(uint32_t finished, uint32_t total) const;
+    // Whether a piece of a frame can be done now (a buffer free, or a frame under way).
+    bool can_draw();
+    // One piece of the frame (about `units` triangles). The last piece hands the frame over.
+    void run(uint32_t units, uint32_t pass);
+    void run_piece(uint32_t units, uint32_t pass);
+    // The kind of the piece run() would do next.
+    Work work() const;
+    bool drawing() const { return job_.active; }
+
+    void flush_done() { done_count_ = done_count_ + 1; } // any context: only interrupts and this write it
+    bool waiting() const;                // a frame is due, and only flush_done() can free a buffer
+
+private:
+    struct Job {
+        bool active = false, full = false;
+        uint8_t buffer = 0;
+        uint16_t band = 0;            // full frames: the band being drawn
+        enum class Stage : uint8_t { Begin, Faces, Edges, Overlay, Flush } stage = Stage::Begin;
+        uint32_t instance = 0, face = 0; // cursor: the instance, and the face within its shell (or done_order index)
+        bool have_transform = false;
+        Transform transform{};
+        uint32_t version = 0, finished = 0, applied_to = 0;
+        uint32_t cost_us = 0;
+        uint32_t pieces = 0;          // pieces of work this frame took so far
+        render::RasterStats stats;
+    };
+    void start(uint32_t finished);
+    void set_band();
+    void take_done();
+    bool buffer_free(uint8_t b) const;
+    bool full_pieces(uint32_t units);   // faces then edges, instance by instance; true when done
+    bool update_pieces(uint32_t units); // the faces since the buffer was last drawn
+    void progress_bar();
+    void flush(uint32_t pass);
+
+    const Scene& scene_;
+    const Camera& camera_;
+    Painter& painter_;
+    render::Rasterizer& raster_;
+    Emitter emit_;
+    Clock clock_;
+    Display display_{};
+    uint8_t buffers_ = 1;
+    bool incremental_ = false; // full frames with a depth buffer per draw buffer
+    uint16_t bands_ = 1;
+
+    uint32_t version_ = 1;      // the picture's state: +1 whenever every buffer must be redrawn
+    struct Buffer {
+        uint32_t version = 0;   // drawn for this version (0: nothing)
+        uint32_t applied = 0;   // faces of done_order drawn into it
+        bool busy = false;      // in flight (Copy), or on the screen (Scanout)
+    } buf_[2];
+    int8_t shown_ = -1;         // Scanout: the buffer on the screen
+    int8_t pending_ = -1;       // the buffer of the flush in flight
+    uint32_t shown_version_ = 0, shown_finished_ = 0; // what the screen shows
+    uint32_t flushes_ = 0;      // flushes issued
+    uint32_t next_ = 0;         // with two buffers: the next one to draw into (its low bit)
+    volatile uint32_t done_count_ = 0; // flush_done() calls (written by interrupts too)
+    uint32_t taken_ = 0;        // flush_done() calls handled
+    uint32_t piece_start_ = 0;  // the clock when the current piece began
+    uint32_t budget_us_ = 0;    // Config::frame_budget_us
+    Job job_;
+};
+
+} // namespace facet::module

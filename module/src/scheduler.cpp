@@ -1,0 +1,109 @@
+#include "scheduler.h"
+
+namespace facet::module {
+
+void Scheduler::begin_pass(float tolerance) {
+    pass_ = started_ ? pass_ + 1 : 0;
+    started_ = true;
+    restoring_ = false;
+    previous_ = opt_.tolerance;
+    opt_.tolerance = tolerance;
+    stage_ = Stage::Sampling;
+    next_edge_ = 0;
+    face_ = 0;
+    in_face_ = false;
+    scene_.samples().used = 0;
+    Event e{};
+    e.kind = Event::Kind::Pass;
+    e.pass = {pass_, tolerance, 0};
+    emit_(e);
+}
+
+bool Scheduler::run(uint32_t units) {
+    switch (stage_) {
+    case Stage::Idle: return false;
+    case Stage::Sampling: sample(units); return true;
+    case Stage::Faces: break;
+    }
+    if (!in_face_) {
+        mem_.face_mesh.vertex_count = mem_.face_mesh.triangle_count = 0;
+        job_.start(scene_.pack(), face_, scene_.samples(), opt_, mem_.scratch, mem_.face_mesh);
+        in_face_ = true;
+    }
+    const Result r = job_.run(units);
+    if (r.status != Status::Busy) finish_face(r);
+    return true;
+}
+
+// A few edges: as many as take about `units` (a unit: a few samples).
+void Scheduler::sample(uint32_t units) {
+    geom::EdgeSamples& s = scene_.samples();
+    const uint32_t edges = scene_.edge_count(), from = s.used, limit = 8 * units;
+    Result r;
+    while (next_edge_ < edges && s.used - from < limit && r.ok()) {
+        r = geom::sample_edges(scene_.pack(), opt_, s, next_edge_, next_edge_ + 1);
+        ++next_edge_;
+    }
+    scene_.quantize_samples(from, s.used);
+    if (!r.ok()) {
+        // No room for the model's edges at this tolerance. Later passes go back to the previous
+        // one's samples (the same bits: its mesh stays valid); at load nothing can be shown.
+        Event e{};
+        e.kind = Event::Kind::PassFailed;
+        e.pass = {pass_, opt_.tolerance, s.used};
+        e.why = r;
+        emit_(e);
+        stage_ = Stage::Idle;
+        if (pass_ > 0 && !restoring_) {
+            opt_.tolerance = previous_;
+            restoring_ = true;
+            stage_ = Stage::Sampling;
+            next_edge_ = 0;
+            s.used = 0;
+        }
+        return;
+    }
+    if (next_edge_ < edges) return;
+    if (restoring_) { // the previous pass's samples are back, and its mesh with them
+        restoring_ = false;
+        stage_ = Stage::Idle;
+        return;
+    }
+    scene_.reset_mesh(pass_ > 0);
+    stage_ = scene_.face_count() ? Stage::Faces : Stage::Idle;
+    Event e{};
+    e.kind = Event::Kind::Sampled;
+    e.pass = {pass_, opt_.tolerance, s.used};
+    emit_(e);
+}
+
+void Scheduler::finish_face(const Result& done) {
+    Result r = done;
+    const geom::Mesh& fm = mem_.face_mesh;
+    if (r.ok() && fm.vertex_count > mem_.max_face_vertices) {
+        r = Result::fail(Status::Full, "more vertices than the viewer projects per face (Capacity::face_points)", {"face", face_});
+    }
+    if (r.ok()) r = scene_.append(face_, fm, job_.stats()).within({"face", face_});
+    const Totals& t = scene_.totals();
+    if (!r.ok()) {
+        scene_.mark_failed(face_);
+        Event e{};
+        e.kind = Event::Kind::FaceFailed;
+        e.failed = {face_};
+        e.why = r;
+        emit_(e);
+    }
+    Event p;
+    p.kind = Event::Kind::Progress;
+    p.progress = {t.done, t.failed, t.faces, t.triangles};
+    emit_(p);
+    in_face_ = false;
+    if (++face_ < scene_.face_count()) return;
+    stage_ = Stage::Idle;
+    Event e{};
+    e.kind = Event::Kind::Tessellated;
+    e.tessellated = {pass_, t.faces, t.failed, t.triangles, t.vertices, t.mesh_bytes, t.arena_peak_bytes, opt_.tolerance};
+    emit_(e);
+}
+
+} // namespace facet::module

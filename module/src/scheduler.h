@@ -1,0 +1,66 @@
+#pragma once
+// The progressive tessellation, a piece at a time: a pass samples every edge (a few edges per
+// piece), then tessellates the faces one after the other (a piece of a face per piece), each
+// appended to the scene's mesh as it is finished. A new level of detail starts a new pass.
+#include "facet/viewer.h"
+#include "geom/tessellate.h"
+#include "scene.h"
+
+namespace facet::module {
+
+// How the module's parts report: the application's event callback, if any.
+struct Emitter {
+    void (*fn)(void* user, const Event& e) = nullptr;
+    void* user = nullptr;
+    void operator()(const Event& e) const {
+        if (fn) fn(user, e);
+    }
+};
+
+class Scheduler {
+public:
+    struct Memory {
+        geom::FaceScratch scratch;
+        geom::Mesh face_mesh;           // one face's float output, before the scene quantizes it
+        uint32_t max_face_vertices = 0; // the most a face may have (the painter projects them)
+    };
+
+    Scheduler(Scene& scene, const Emitter& emit) : scene_(scene), emit_(emit) {}
+    void init(const Memory& memory) { mem_ = memory; }
+
+    // A pass at `tolerance` (mm): nothing of the previous one is kept but the peaks.
+    void begin_pass(float tolerance);
+    void stop() { stage_ = Stage::Idle, started_ = false; }
+
+    bool busy() const { return stage_ != Stage::Idle; }
+    bool sampling() const { return stage_ == Stage::Sampling; } // no edge may be drawn meanwhile
+    uint32_t pass() const { return pass_; }
+    float tolerance() const { return opt_.tolerance; }
+    Work work() const { return stage_ == Stage::Sampling ? Work::Sampling : Work::Face; }
+    uint32_t item() const { return stage_ == Stage::Sampling ? next_edge_ : face_; }
+
+    // One piece: about `units` of work (geom::FaceJob's units). False when there was none.
+    bool run(uint32_t units);
+
+private:
+    enum class Stage : uint8_t { Idle, Sampling, Faces };
+    void sample(uint32_t units);
+    void next_face();
+    void finish_face(const Result& r);
+
+    Scene& scene_;
+    Emitter emit_;
+    Memory mem_{};
+    geom::TessOptions opt_;
+    Stage stage_ = Stage::Idle;
+    uint32_t pass_ = 0;        // 0: the first tessellation; +1 per level-of-detail change
+    bool started_ = false;     // a pass has begun since load
+    bool restoring_ = false;   // sampling the previous pass again after this one failed
+    float previous_ = 0;       // the previous pass's tolerance
+    uint32_t next_edge_ = 0;
+    uint32_t face_ = 0;        // the face being tessellated
+    bool in_face_ = false;
+    geom::FaceJob job_;
+};
+
+} // namespace facet::module
