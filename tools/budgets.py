@@ -4,8 +4,8 @@
 Budgets of the handheld: all RAM <= 32 MiB (33,554,432 bytes); CPU time in exact guest
 instructions at 600 MHz, one instruction per cycle; tessellating a model <= 600 M instructions
 (1 s); one frame <= 20 M instructions per 10,000 triangles in view, at least 20 M (30 frames/s).
-Tessellation = the viewer's 'edges' region + every 'face' region of its first pass (uart.log
-beside the report). Prints a table, writes --json and --markdown; with --strict, exits non-zero
+Tessellation = every 'edges' and 'face' region (the pieces of work) of the viewer's first pass
+(uart.log beside the report). Prints a table, writes --json and --markdown; with --strict, exits non-zero
 if a budget is exceeded; otherwise it reports.
 """
 import argparse

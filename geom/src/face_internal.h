@@ -24,9 +24,11 @@ inline bool turns_more(Vec3 a, Vec3 b, float cos_max) {
 float max_arc_angle(float r, float tol);
 
 // Step 1: every sample of every coedge of every loop of the face into (u,v) (sc.uv, sc.xyz,
-// sc.pinned), loop after loop (sc.loop_sizes). np, nl: points and loops.
+// sc.pinned), loop after loop (sc.loop_sizes). np, nl: points and loops so far. From loop
+// `next_loop` (of the face) on, whole loops until `max_points` have been mapped: Busy, and
+// next_loop says where to go on (np, nl 0 and next_loop 0 start a face).
 Result map_loops(const Pack& pack, uint32_t face, const EdgeSamples& edges, FaceScratch& sc, uint32_t& np,
-                 uint32_t& nl);
+                 uint32_t& nl, uint32_t& next_loop, uint32_t max_points);
 
 // Step 3b: after quantization (sc.loop_points), drop the points that fall on their
 // predecessor's grid point and the tips of collinear U-turns (two pcurves ending a hair apart

@@ -75,13 +75,19 @@ bool same_vertex(const FaceScratch& sc, uint32_t i, Vec3 p, Vec2 uv, uint8_t pin
 
 } // namespace
 
-Result map_loops(const Pack& pack, uint32_t fi, const EdgeSamples& edges, FaceScratch& sc, uint32_t& np, uint32_t& nl) {
+Result map_loops(const Pack& pack, uint32_t fi, const EdgeSamples& edges, FaceScratch& sc, uint32_t& np, uint32_t& nl,
+                 uint32_t& next_loop, uint32_t max_points) {
     const pack::Face& F = pack.faces()[fi];
     const Surface& S = pack.surfaces()[F.surface];
     const bool elementary = is_elementary(S);
-    np = nl = 0;
+    if (next_loop == 0) np = nl = 0;
     const uint32_t cap = uint32_t(std::min({sc.uv.size(), sc.xyz.size(), sc.loop_points.size(), sc.pinned.size()}));
-    for (uint32_t l = F.first_loop; l < F.first_loop + F.loop_count; ++l) {
+    const uint32_t np0 = np;
+    for (uint32_t l = F.first_loop + next_loop; l < F.first_loop + F.loop_count; ++l) {
+        if (np - np0 >= max_points) { // enough for this piece: the next loop next time
+            next_loop = l - F.first_loop;
+            return Result::fail(Status::Busy, "mapping loops");
+        }
         const Loop& L = pack.loops()[l];
         const uint32_t loop_start = np;
         for (uint32_t c = L.first_coedge; c < L.first_coedge + L.coedge_count; ++c) {
@@ -168,6 +174,7 @@ Result map_loops(const Pack& pack, uint32_t fi, const EdgeSamples& edges, FaceSc
             sc.loop_sizes[nl++] = np - loop_start;
         }
     }
+    next_loop = F.loop_count;
     if (nl == 0) {
         return Result::fail(Status::Degenerate, "no loop with any sample");
     }

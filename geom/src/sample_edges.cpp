@@ -44,6 +44,7 @@ bool sample_circle(const Pack& pack, const Curve& C, const Edge& E, const TessOp
     const float step = std::min(detail::max_arc_angle(r, opt.tolerance), opt.max_angle);
     const float pieces = std::ceil(span / step);
     const uint32_t n = pieces < 1 ? 1u : (pieces > 4096 ? 4096u : uint32_t(pieces));
+    pool.out.work += 1 + n / 16; // a rotation per sample
     if (!pool.emit(E.t0, vertex(pack, E.v0))) return false;
     // cos and sin of the angle step by step (a rotation per sample): no trigonometry per point.
     const float* q = pack.floats().data() + C.params;
@@ -85,72 +86,6 @@ bool straight_bspline(const Pack& pack, const Curve& C, Vec3 a, Vec3 b, float to
     return up || down;
 }
 
-// Any other curve, adaptively: a piece whose points leave its chord by more than the
-// tolerance (less a margin), or whose end tangents turn by more than the angle, is cut in k
-// equal pieces, k from the sag (which falls with the square of the length). Starts from 4
-// pieces, so a closed curve (ends equal) and an S-bend are seen.
-bool sample_adaptive(const Pack& pack, const Curve& C, const Edge& E, const TessOptions& opt, Pool& pool) {
-    // The sag is measured at three points of a piece, which need not be where the curve strays
-    // furthest from the chord: aim 5% under the tolerance.
-    const float tol2 = 0.9025f * opt.tolerance * opt.tolerance, cos_max = cos_f(opt.max_angle);
-    constexpr int kStack = 96;
-    constexpr uint32_t kMaxSamples = 4000;
-    struct Piece {
-        float t;
-        Curve3Point p;
-    };
-    Piece stack[kStack]; // right ends of the pieces still to check, the next one on top
-    int top = 0;
-    const float t0 = E.t0, t1 = E.t1;
-    const uint32_t start = pool.out.used;
-    if (!pool.emit(t0, vertex(pack, E.v0))) return false;
-    for (int k = 4; k >= 1; --k) {
-        const float t = k == 4 ? t1 : t0 + (t1 - t0) * float(k) / 4;
-        stack[top++] = {t, eval_curve3(pack, C, t)};
-    }
-    Curve3Point left = eval_curve3(pack, C, t0);
-    float tl = t0;
-    const float min_piece = 1e-6f * (std::fabs(t1 - t0) + 1e-6f);
-    while (top) {
-        const Piece right = stack[top - 1];
-        // The sag at a quarter, half and three quarters of the piece: where the curvature
-        // changes along it, the furthest point is off its middle.
-        const Vec3 chord = right.p.p - left.p;
-        const float len2 = dot(chord, chord);
-        float sag2 = 0;
-        for (int q = 1; q <= 3; ++q) {
-            const Vec3 off = eval_curve3(pack, C, tl + (right.t - tl) * 0.25f * float(q)).p - left.p;
-            const float along = len2 > 0 ? dot(off, chord) / len2 : 0;
-            sag2 = std::max(sag2, length2(off - chord * along));
-        }
-        const bool turned = detail::turns_more(left.d, right.p.d, cos_max);
-        const bool room = right.t - tl > min_piece && pool.out.used - start < kMaxSamples;
-        const int limit = std::min(16, kStack - top + 1); // pieces the stack has room for
-        if ((sag2 > tol2 || turned) && room && limit >= 2) {
-            // k pieces: sag / k^2 <= tol, at least 2.
-            int k = 2;
-            if (sag2 > 4 * tol2) { // (in float first: the ratio is huge on a corrupt curve)
-                const float pieces = std::ceil(std::sqrt(std::sqrt(sag2 / tol2)) * 1.05f);
-                k = pieces < float(limit) ? int(pieces) : limit;
-            }
-            k = std::clamp(k, 2, limit);
-            {
-                --top; // the right end goes back on top of the new pieces
-                for (int j = k; j >= 1; --j) {
-                    const float t = j == k ? right.t : tl + (right.t - tl) * float(j) / float(k);
-                    stack[top++] = {t, j == k ? right.p : eval_curve3(pack, C, t)};
-                }
-                continue;
-            }
-        }
-        --top;
-        if (!pool.emit(right.t, top == 0 ? vertex(pack, E.v1) : right.p.p)) return false;
-        tl = right.t;
-        left = right.p;
-    }
-    return true;
-}
-
 // Drops samples closer than min_gap to the sample kept before them (the edge's ends always
 // stay): features far below the tolerance gain nothing from them, and a face's CDT grid could
 // not tell them apart (clean_loops would then have to drop them in that face only).
@@ -173,6 +108,140 @@ void thin_out(EdgeSamples& out, uint32_t first, float min_gap) {
 
 } // namespace
 
+void EdgeSampler::start(const Pack& pack, const TessOptions& opt, EdgeSamples& out, uint32_t e) {
+    pack_ = &pack, out_ = &out, edge_ = e;
+    top_ = 0;
+    const Edge& E = pack.edges()[e];
+    // A thin face's two sides must not cross: its edges' sag stays under their limit.
+    opt_ = opt;
+    if (E.max_sag > 0 && E.max_sag < opt.tolerance) opt_.tolerance = E.max_sag;
+    start_ = out.used;
+    out.first[e] = out.used;
+    adaptive_ = false;
+    result_ = Result::fail(Status::Busy, "sampling");
+    Pool pool{out};
+    const Vec3 a = vertex(pack, E.v0), b = vertex(pack, E.v1);
+    bool room = true;
+    if (E.curve == kNoIndex) { // degenerate: a single point
+        room = pool.emit(E.t0, a) && pool.emit(E.t1, a);
+    } else if (E.curve == kStraight) {
+        room = pool.emit(E.t0, a) && pool.emit(E.t1, b);
+    } else {
+        const Curve& C = pack.curves3()[E.curve];
+        switch (CurveType(C.type)) {
+        case CurveType::Line: room = pool.emit(E.t0, a) && pool.emit(E.t1, b); break;
+        case CurveType::Circle: room = sample_circle(pack, C, E, opt_, pool); break;
+        case CurveType::BSpline:
+            if (straight_bspline(pack, C, a, b, opt_.tolerance)) room = pool.emit(E.t0, a) && pool.emit(E.t1, b);
+            else adaptive_ = true;
+            break;
+        default: adaptive_ = true; break;
+        }
+    }
+    if (!room) {
+        result_ = Result::fail(Status::Full, "more edge samples than the pool holds", {"edge", e});
+        return;
+    }
+    if (!adaptive_) {
+        finish();
+        return;
+    }
+    // Any other curve, adaptively: a piece whose points leave its chord by more than the
+    // tolerance (less a margin), or whose end tangents turn by more than the angle, is cut in k
+    // equal pieces, k from the sag (which falls with the square of the length). Starts from 4
+    // pieces, so a closed curve (ends equal) and an S-bend are seen. The sag is measured at
+    // three points of a piece, which need not be where the curve strays furthest from the
+    // chord: aim 5% under the tolerance.
+    curve_ = &pack.curves3()[E.curve];
+    tol2_ = 0.9025f * opt_.tolerance * opt_.tolerance;
+    cos_max_ = cos_f(opt_.max_angle);
+    // The work of an evaluation: a B-spline's (its basis and derivative, soft-float on the
+    // ARM926) grows with the square of its degree.
+    eval_ = 1;
+    if (CurveType(curve_->type) == CurveType::BSpline) {
+        const uint32_t degree = uint32_t(pack.floats()[curve_->params]);
+        eval_ = 1 + (degree + 1) * (degree + 1) / 2;
+    }
+    if (!pool.emit(E.t0, a)) {
+        result_ = Result::fail(Status::Full, "more edge samples than the pool holds", {"edge", e});
+        return;
+    }
+    const float t0 = E.t0, t1 = E.t1;
+    for (int k = 4; k >= 1; --k) {
+        const float t = k == 4 ? t1 : t0 + (t1 - t0) * float(k) / 4;
+        stack_[top_++] = {t, eval_curve3(pack, *curve_, t)};
+    }
+    left_ = eval_curve3(pack, *curve_, t0);
+    tl_ = t0;
+    min_piece_ = 1e-6f * (std::fabs(t1 - t0) + 1e-6f);
+    out.work += 5 * eval_;
+}
+
+Result EdgeSampler::run(uint32_t units) {
+    if (result_.status != Status::Busy) return result_;
+    EdgeSamples& out = *out_;
+    const Pack& pack = *pack_;
+    const Curve& C = *curve_;
+    const Edge& E = pack.edges()[edge_];
+    constexpr uint32_t kMaxSamples = 4000;
+    Pool pool{out};
+    const uint32_t work0 = out.work;
+    while (top_) {
+        if (out.work - work0 >= units) return result_; // Busy: the rest next time
+        const Piece right = stack_[top_ - 1];
+        // The sag at a quarter, half and three quarters of the piece: where the curvature
+        // changes along it, the furthest point is off its middle.
+        const Vec3 chord = right.p.p - left_.p;
+        const float len2 = dot(chord, chord);
+        float sag2 = 0;
+        out.work += 3 * eval_;
+        for (int q = 1; q <= 3; ++q) {
+            const Vec3 off = eval_curve3(pack, C, tl_ + (right.t - tl_) * 0.25f * float(q)).p - left_.p;
+            const float along = len2 > 0 ? dot(off, chord) / len2 : 0;
+            sag2 = std::max(sag2, length2(off - chord * along));
+        }
+        const bool turned = detail::turns_more(left_.d, right.p.d, cos_max_);
+        const bool room = right.t - tl_ > min_piece_ && out.used - start_ < kMaxSamples;
+        const int limit = std::min(16, kStack - top_ + 1); // pieces the stack has room for
+        if ((sag2 > tol2_ || turned) && room && limit >= 2) {
+            // k pieces: sag / k^2 <= tol, at least 2.
+            int k = 2;
+            if (sag2 > 4 * tol2_) { // (in float first: the ratio is huge on a corrupt curve)
+                const float pieces = std::ceil(std::sqrt(std::sqrt(sag2 / tol2_)) * 1.05f);
+                k = pieces < float(limit) ? int(pieces) : limit;
+            }
+            k = std::clamp(k, 2, limit);
+            --top_; // the right end goes back on top of the new pieces
+            out.work += uint32_t(k - 1) * eval_;
+            for (int j = k; j >= 1; --j) {
+                const float t = j == k ? right.t : tl_ + (right.t - tl_) * float(j) / float(k);
+                stack_[top_++] = {t, j == k ? right.p : eval_curve3(pack, C, t)};
+            }
+            continue;
+        }
+        --top_;
+        if (!pool.emit(right.t, top_ == 0 ? vertex(pack, E.v1) : right.p.p)) {
+            result_ = Result::fail(Status::Full, "more edge samples than the pool holds", {"edge", edge_});
+            return result_;
+        }
+        tl_ = right.t;
+        left_ = right.p;
+    }
+    finish();
+    return result_;
+}
+
+void EdgeSampler::finish() {
+    EdgeSamples& out = *out_;
+    if (out.used - start_ > 2) thin_out(out, start_, opt_.tolerance / 16);
+    if (out.used - start_ > 0xFFFF) {
+        result_ = Result::fail(Status::Full, "more than 65,535 samples on one edge", {"edge", edge_});
+        return;
+    }
+    out.count[edge_] = uint16_t(out.used - start_);
+    result_ = {};
+}
+
 Result sample_edges(const Pack& pack, const TessOptions& opt, EdgeSamples& out, uint32_t begin, uint32_t end) {
     const auto edges = pack.edges();
     if (begin == 0) out.used = 0;
@@ -183,35 +252,10 @@ Result sample_edges(const Pack& pack, const TessOptions& opt, EdgeSamples& out, 
         return Result::fail(Status::Full, "more edges than the sample index holds", {"edges", uint32_t(edges.size())});
     }
     if (end > edges.size()) end = uint32_t(edges.size());
-    Pool pool{out};
+    EdgeSampler sampler;
     for (uint32_t e = begin; e < end; ++e) {
-        const Edge& E = edges[e];
-        // A thin face's two sides must not cross: its edges' sag stays under their limit.
-        TessOptions edge_opt = opt;
-        if (E.max_sag > 0 && E.max_sag < opt.tolerance) edge_opt.tolerance = E.max_sag;
-        out.first[e] = out.used;
-        const Vec3 a = vertex(pack, E.v0), b = vertex(pack, E.v1);
-        bool room;
-        if (E.curve == kNoIndex) { // degenerate: a single point
-            room = pool.emit(E.t0, a) && pool.emit(E.t1, a);
-        } else if (E.curve == kStraight) {
-            room = pool.emit(E.t0, a) && pool.emit(E.t1, b);
-        } else {
-            const Curve& C = pack.curves3()[E.curve];
-            switch (CurveType(C.type)) {
-            case CurveType::Line: room = pool.emit(E.t0, a) && pool.emit(E.t1, b); break;
-            case CurveType::Circle: room = sample_circle(pack, C, E, edge_opt, pool); break;
-            case CurveType::BSpline:
-                room = straight_bspline(pack, C, a, b, edge_opt.tolerance) ? pool.emit(E.t0, a) && pool.emit(E.t1, b)
-                                                                           : sample_adaptive(pack, C, E, edge_opt, pool);
-                break;
-            default: room = sample_adaptive(pack, C, E, edge_opt, pool); break;
-            }
-        }
-        if (!room) return Result::fail(Status::Full, "more edge samples than the pool holds", {"edge", e});
-        if (out.used - out.first[e] > 2) thin_out(out, out.first[e], opt.tolerance / 16);
-        if (out.used - out.first[e] > 0xFFFF) return Result::fail(Status::Full, "more than 65,535 samples on one edge", {"edge", e});
-        out.count[e] = uint16_t(out.used - out.first[e]);
+        sampler.start(pack, opt, out, e);
+        if (Result r = sampler.run(UINT32_MAX); !r.ok()) return r;
     }
     return {};
 }

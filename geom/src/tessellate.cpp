@@ -160,15 +160,23 @@ bool equal(Vec3 p, Vec3 q) {
 
 // The CDT's inner triangles and their vertices, each vertex once, in the order first used.
 // sc.mesh_of maps CDT vertices to points on the way in and to mesh vertices on the way out.
+// From triangle `next` on, until about `units` are spent (a vertex on a free-form surface
+// costs 6: its normal from the derivatives): Busy, and `next` says where to go on.
 Status emit_triangles(const FaceNormals& normals, const pack::Face& F, const cdt::Cdt<uint16_t>& cdt, FaceScratch& sc,
-                      Mesh& mesh, FaceStats& stats) {
+                      Mesh& mesh, FaceStats& stats, uint32_t& next, uint32_t units, bool freeform) {
     constexpr uint32_t kAssigned = 0x80000000u; // mesh_of[v]: a mesh vertex, not a point
     auto position = [&](uint16_t v) {
         const uint32_t m = sc.mesh_of[v];
         return m & kAssigned ? mesh.vertices[m & ~kAssigned].p : sc.xyz[m];
     };
-    for (uint16_t t = 0; t < cdt.triangle_count(); ++t) {
-        const cdt::Triangle<uint16_t>& T = cdt.triangle(t);
+    uint32_t spent = 0;
+    for (uint32_t t = next; t < cdt.triangle_count(); ++t) {
+        if (spent / 8 >= units) { // in eighths of a unit
+            next = t;
+            return Status::Busy;
+        }
+        spent += 1;
+        const cdt::Triangle<uint16_t>& T = cdt.triangle(uint16_t(t));
         if (!T.inner()) continue;
         // A triangle with two corners at one point (a pole or apex is a segment in (u,v)) has
         // no area: its two other edges are one edge in 3D, which would count twice. Its
@@ -182,11 +190,13 @@ Status emit_triangles(const FaceNormals& normals, const pack::Face& F, const cdt
             if (!(m & kAssigned)) {
                 if (mesh.vertex_count >= mesh.vertices.size()) return Status::Full;
                 m = kAssigned | add_vertex(normals, mesh, sc.xyz[m], sc.uv[m]);
+                spent += freeform ? 48 : 1;
             }
             id[k] = m & ~kAssigned;
         }
         add_triangle(F, mesh, id, stats);
     }
+    next = cdt.triangle_count();
     return Status::Ok;
 }
 
@@ -200,6 +210,7 @@ void FaceJob::start(const Pack& pack, uint32_t face, const EdgeSamples& edges, c
     base_vertex_ = mesh.vertex_count, base_triangle_ = mesh.triangle_count;
     grid_ = {};
     refine_ = {};
+    next_loop_ = next_triangle_ = 0;
     cdt_ = cdt::Cdt<uint16_t>(sc.arena);
     stats_ = {};
     result_ = Result::fail(Status::Busy, "tessellating");
@@ -213,7 +224,7 @@ Result FaceJob::fail(Result r) {
     return result_;
 }
 
-// Steps 1 to 3: the loops into (u,v), the metric, the CDT grid.
+// Steps 2 and 3 (once the loops are in (u,v)): the metric, the CDT grid.
 Result FaceJob::prepare() {
     const Pack& pack = *pack_;
     FaceScratch& sc = *sc_;
@@ -222,9 +233,6 @@ Result FaceJob::prepare() {
     if (!(opt_.tolerance > 0 && opt_.tolerance <= pack::kMaxMagnitude) || !(opt_.max_angle > 0)) {
         return Result::fail(Status::OutOfRange, "the tolerance and the angle must be positive");
     }
-
-    // 1. Loops into (u,v).
-    if (Result r = detail::map_loops(pack, face_, *edges_, sc, np_, nl_); !r.ok()) return r;
 
     // 2. Metric scale at the middle of the face: |Su| and |Sv|, so that distances in the scaled
     //    (u,v) are distances on the surface, then each direction weighted by the square root
@@ -270,6 +278,12 @@ Result FaceJob::run(uint32_t units) {
     const Result busy = Result::fail(Status::Busy, "tessellating");
     uint32_t spent = 0;
     if (stage_ == Stage::Map) {
+        // 1. Loops into (u,v), a few loops at a time (a unit: a point).
+        const uint32_t np0 = np_;
+        const Result m = detail::map_loops(pack, face_, *edges_, sc, np_, nl_, next_loop_, units);
+        spent += np_ - np0;
+        if (m.status == Status::Busy) return busy;
+        if (!m.ok()) return fail(m);
         if (Result r = prepare(); !r.ok()) return fail(r);
         spent += 1 + np_ / 16;
         stats_.points = np_;
@@ -315,9 +329,13 @@ Result FaceJob::run(uint32_t units) {
     }
     // 6. Output: the inner triangles and their vertices (each once, in the order first used).
     //    Loop points keep their edge sample's 3D point, shared with the neighbour.
-    const FaceNormals normals(pack, pack.surfaces()[F.surface], F);
-    if (nl_ > 0 && !ok(emit_triangles(normals, F, cdt_, sc, mesh, stats_))) {
-        return fail(Result::fail(Status::Full, "the mesh is full"));
+    const Surface& S = pack.surfaces()[F.surface];
+    const FaceNormals normals(pack, S, F);
+    if (nl_ > 0) {
+        const Status e = emit_triangles(normals, F, cdt_, sc, mesh, stats_, next_triangle_, units - std::min(units, spent),
+                                        S.type > uint8_t(SurfaceType::Torus));
+        if (e == Status::Busy) return busy;
+        if (!ok(e)) return fail(Result::fail(Status::Full, "the mesh is full"));
     }
     // The slivers of collapsed loop points (their own vertices; none with two equal corners).
     for (uint32_t k = 0; k < stats_.slivers; ++k) {

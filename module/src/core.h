@@ -30,8 +30,10 @@ public:
     bool carved() const { return carved_; }
     Result configure() { return presenter_.configure(config_.display, config_.frame_budget_us); }
 
-    // Pieces of work, in units: a frame's (triangles) and a face's (geom::FaceJob units).
-    static constexpr uint32_t kFrameUnits = 1500;
+    // Pieces of work, in units: a frame's (a triangle's set-up or 64 pixels: about a thousand
+    // instructions on the ARM926) and a face's (geom::FaceJob units: about five thousand).
+    // A piece is then about a million instructions: under 2 ms at 600 MHz.
+    static constexpr uint32_t kFrameUnits = 600;
     static constexpr uint32_t kTessUnits = 200;
 
     module::Controls& controls() { return controls_; }

@@ -119,26 +119,32 @@ void Painter::triangle(const Transform& t, const Projected& a, const Projected& 
     for (int i = 1; i + 1 < n; ++i) refused_ += !ok(raster_.draw(s[0], s[i], s[i + 1], pal, cull));
 }
 
-uint32_t Painter::face(uint32_t f, const Transform& t, Rows rows, bool with_edges) {
+uint32_t Painter::face(uint32_t f, const Transform& t, Rows rows, uint32_t from, uint32_t units, uint32_t& spent) {
     const FaceInfo& F = scene_.face(f);
-    if (F.state != FaceState::Done || !t.visible(F.centre, F.radius, rows)) return 0;
-    const DrawVertex* verts = scene_.vertices() + F.first_vertex;
-    if (F.planar && t.closed && F.vertex_count && t.faces_away(verts[0].p, verts[0].n)) return 0;
     Projected* P = mem_.projected.data();
-    const render::Palette& pal = palette(F.rgb);
-    for (uint32_t v = 0; v < F.vertex_count; ++v) {
-        t.project(verts[v].p, P[v]);
-        P[v].s.shade = t.shade(verts[v].n);
+    const DrawVertex* verts = scene_.vertices() + F.first_vertex;
+    spent = 0;
+    if (from == 0) { // the face's vertices, once
+        if (F.state != FaceState::Done || !t.visible(F.centre, F.radius, rows)) return F.triangle_count;
+        if (F.planar && t.closed && F.vertex_count && t.faces_away(verts[0].p, verts[0].n)) return F.triangle_count;
+        for (uint32_t v = 0; v < F.vertex_count; ++v) {
+            t.project(verts[v].p, P[v]);
+            P[v].s.shade = t.shade(verts[v].n);
+        }
+        spent = 1 + F.vertex_count / 4;
     }
+    const render::Palette& pal = palette(F.rgb);
     const render::Cull cull = t.closed ? render::Cull::Back : render::Cull::None;
-    const uint16_t* id = scene_.indices() + F.first_index;
-    for (uint32_t k = 0; k < F.triangle_count; ++k, id += 3) {
+    const uint16_t* id = scene_.indices() + F.first_index + 3 * from;
+    const uint32_t pixels = raster_.stats.pixels;
+    uint32_t k = from;
+    // A unit: a triangle's set-up, or 64 pixels; one triangle at least, whatever the units.
+    for (; k < F.triangle_count && (k == from || spent + (raster_.stats.pixels - pixels) / 64 < units); ++k, id += 3, ++spent) {
         if (t.mirrored) triangle(t, P[id[0]], P[id[2]], P[id[1]], pal, cull);
         else triangle(t, P[id[0]], P[id[1]], P[id[2]], pal, cull);
     }
-    uint32_t work = F.triangle_count + F.vertex_count / 2;
-    if (with_edges) work += face_edges(f, t, rows, false);
-    return work;
+    spent += (raster_.stats.pixels - pixels) / 64;
+    return k;
 }
 
 uint32_t Painter::face_edges(uint32_t f, const Transform& t, Rows rows, bool once) {
@@ -151,7 +157,7 @@ uint32_t Painter::face_edges(uint32_t f, const Transform& t, Rows rows, bool onc
     }
     const geom::Pack& pack = scene_.pack();
     const pack::Face& F = pack.faces()[f];
-    uint32_t work = 0;
+    uint32_t work = 1;
     for (uint32_t l = F.first_loop; l < F.first_loop + F.loop_count; ++l) {
         const pack::Loop& L = pack.loops()[l];
         for (uint32_t c = L.first_coedge; c < L.first_coedge + L.coedge_count; ++c) {
@@ -180,7 +186,7 @@ uint32_t Painter::edge(uint32_t e, const Transform& t) {
         if (k > 0 && !(prev.out | cur.out)) refused_ += !ok(raster_.line(prev.s, cur.s, kEdgeColour, kLineBias));
         prev = cur;
     }
-    return n / 4;
+    return 1 + n / 8;
 }
 
 } // namespace facet::module

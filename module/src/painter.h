@@ -27,10 +27,12 @@ public:
 
     // The background of the target's rows: light at the top, darker toward the bottom.
     void background();
-    // The face's triangles (and its edges over them), if it may show in `rows`. Returns the
-    // triangles it went through (the work done).
-    uint32_t face(uint32_t f, const Transform& t, Rows rows, bool with_edges);
-    // The edges of the face, each at most once per reset_edges() when `once`.
+    // The face's triangles from triangle `from` on (0: projects its vertices first), if it may
+    // show in `rows`, until about `units` of work are spent (a unit: a triangle's set-up or 64
+    // pixels; `spent` says how many). Returns the next triangle: the face's triangle count
+    // when it is done (at once when it cannot show). The projected vertices stay for the rest.
+    uint32_t face(uint32_t f, const Transform& t, Rows rows, uint32_t from, uint32_t units, uint32_t& spent);
+    // The edges of the face, each at most once per reset_edges() when `once`. Returns the work.
     uint32_t face_edges(uint32_t f, const Transform& t, Rows rows, bool once);
     void reset_edges();
     // The rows of the screen being drawn (the target's band) for culling.

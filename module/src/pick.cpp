@@ -13,6 +13,7 @@ void Core::pick(int16_t x, int16_t y) {
         emit(e);
         return;
     }
+    presenter_.projected_reused(); // a frame under way projects its face again
     const geom::Pack& pack = scene_.pack();
     const int64_t sx = int64_t(x) * 16 + 8, sy = int64_t(y) * 16 + 8;
     float best = 1e30f;

@@ -99,7 +99,15 @@ bool Presenter::full_pieces(uint32_t units) {
         const Transform& t = job_.transform;
         const Rows rows = painter_.rows(t);
         if (job_.stage == Job::Stage::Faces) {
-            for (; job_.face < sh.face_count && spent < units; ++job_.face) spent += 1 + painter_.face(sh.first_face + job_.face, t, rows, false);
+            while (job_.face < sh.face_count && spent < units) {
+                const uint32_t f = sh.first_face + job_.face;
+                uint32_t used;
+                job_.tri = painter_.face(f, t, rows, job_.tri, units - spent, used);
+                spent += used + 1;
+                if (job_.tri < scene_.face(f).triangle_count) return false; // more of this face next time
+                job_.tri = 0;
+                ++job_.face;
+            }
             if (job_.face < sh.face_count) return false;
             // Then each edge once in this instance (an edge has two faces).
             job_.stage = Job::Stage::Edges;
@@ -107,7 +115,7 @@ bool Presenter::full_pieces(uint32_t units) {
             painter_.reset_edges();
             spent += scene_.edge_count() / 256;
         }
-        for (; job_.face < sh.face_count && spent < units; ++job_.face) spent += 1 + painter_.face_edges(sh.first_face + job_.face, t, rows, true);
+        for (; job_.face < sh.face_count && spent < units; ++job_.face) spent += painter_.face_edges(sh.first_face + job_.face, t, rows, true);
         if (job_.face < sh.face_count) return false;
         ++job_.instance;
         job_.face = 0;
@@ -120,7 +128,8 @@ bool Presenter::full_pieces(uint32_t units) {
 bool Presenter::update_pieces(uint32_t units) {
     const geom::Pack& pack = scene_.pack();
     uint32_t spent = 0;
-    // The faces finished since this buffer was last drawn, in every instance of their shell.
+    // The faces finished since this buffer was last drawn, in every instance of their shell:
+    // each face's triangles, then its edges over them.
     while (job_.instance < pack.instances().size()) {
         const pack::Shell& sh = pack.shells()[pack.instances()[job_.instance].shell];
         for (; job_.face < job_.applied_to && spent < units; ++job_.face) {
@@ -130,7 +139,13 @@ bool Presenter::update_pieces(uint32_t units) {
                 job_.transform = camera_.transform(scene_, job_.instance, display_.width, display_.height);
                 job_.have_transform = true;
             }
-            spent += 1 + painter_.face(f, job_.transform, painter_.rows(job_.transform), true);
+            const Rows rows = painter_.rows(job_.transform);
+            uint32_t used;
+            job_.tri = painter_.face(f, job_.transform, rows, job_.tri, units - spent, used);
+            spent += used + 1;
+            if (job_.tri < scene_.face(f).triangle_count) return false;
+            job_.tri = 0;
+            spent += painter_.face_edges(f, job_.transform, rows, false);
         }
         if (job_.face < job_.applied_to) return false;
         ++job_.instance;
@@ -217,6 +232,7 @@ void Presenter::run_piece(uint32_t units, uint32_t pass) {
         job_.stage = Job::Stage::Faces;
         job_.instance = 0;
         job_.face = job_.full ? 0 : buf_[job_.buffer].applied;
+        job_.tri = 0;
         job_.have_transform = false;
         const uint32_t spent = 1 + uint32_t(raster_.target().rows) * display_.width / 2048;
         if (spent >= units) return;

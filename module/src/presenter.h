@@ -45,6 +45,9 @@ public:
     bool drawing() const { return job_.active; }
 
     void flush_done() { done_count_ = done_count_ + 1; } // any context: only interrupts and this write it
+    // Something else projected vertices into the painter's scratch (a pick): the face being
+    // drawn starts over (its pixels drawn so far are drawn again, the same).
+    void projected_reused() { job_.tri = 0; }
     bool waiting() const;                // a frame is due, and only flush_done() can free a buffer
 
 private:
@@ -54,6 +57,7 @@ private:
         uint16_t band = 0;            // full frames: the band being drawn
         enum class Stage : uint8_t { Begin, Faces, Edges, Overlay, Flush } stage = Stage::Begin;
         uint32_t instance = 0, face = 0; // cursor: the instance, and the face within its shell (or done_order index)
+        uint32_t tri = 0;             // and the next triangle of that face
         bool have_transform = false;
         Transform transform{};
         uint32_t version = 0, finished = 0, applied_to = 0;

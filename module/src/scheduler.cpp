@@ -10,6 +10,7 @@ void Scheduler::begin_pass(float tolerance) {
     opt_.tolerance = tolerance;
     stage_ = Stage::Sampling;
     next_edge_ = 0;
+    in_edge_ = false;
     face_ = 0;
     in_face_ = false;
     scene_.samples().used = 0;
@@ -35,16 +36,30 @@ bool Scheduler::run(uint32_t units) {
     return true;
 }
 
-// A few edges: as many as take about `units` (a unit: a few samples).
+// Edges, or a piece of one, until about `units` are spent (a unit: a curve evaluation,
+// weighted by its cost, or an edge).
 void Scheduler::sample(uint32_t units) {
     geom::EdgeSamples& s = scene_.samples();
-    const uint32_t edges = scene_.edge_count(), from = s.used, limit = 8 * units;
+    const uint32_t edges = scene_.edge_count();
+    if (next_edge_ == 0 && !in_edge_) s.work = 0, quantized_ = 0;
+    const uint32_t work0 = s.work;
     Result r;
-    while (next_edge_ < edges && s.used - from < limit && r.ok()) {
-        r = geom::sample_edges(scene_.pack(), opt_, s, next_edge_, next_edge_ + 1);
+    for (uint32_t n = 0; next_edge_ < edges && s.work - work0 + n < units && r.ok(); ++n) {
+        if (!in_edge_) {
+            sampler_.start(scene_.pack(), opt_, s, next_edge_);
+            in_edge_ = true;
+        }
+        const uint32_t used = s.work - work0 + n; // (start() evaluates the curve's ends)
+        r = sampler_.run(used < units ? units - used : 0);
+        if (r.status == Status::Busy) break; // this edge goes on next time
+        in_edge_ = false;
         ++next_edge_;
     }
-    scene_.quantize_samples(from, s.used);
+    // The finished edges' samples, quantized for drawing (an edge under way may still thin its own).
+    const uint32_t final_to = in_edge_ ? sampler_.first() : s.used;
+    scene_.quantize_samples(quantized_, final_to);
+    quantized_ = final_to;
+    if (r.status == Status::Busy) return;
     if (!r.ok()) {
         // No room for the model's edges at this tolerance. Later passes go back to the previous
         // one's samples (the same bits: its mesh stays valid); at load nothing can be shown.
@@ -54,6 +69,7 @@ void Scheduler::sample(uint32_t units) {
         e.why = r;
         emit_(e);
         stage_ = Stage::Idle;
+        in_edge_ = false;
         if (pass_ > 0 && !restoring_) {
             opt_.tolerance = previous_;
             restoring_ = true;

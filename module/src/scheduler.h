@@ -58,6 +58,9 @@ private:
     bool restoring_ = false;   // sampling the previous pass again after this one failed
     float previous_ = 0;       // the previous pass's tolerance
     uint32_t next_edge_ = 0;
+    bool in_edge_ = false;     // an edge is being sampled (sampler_ holds where)
+    uint32_t quantized_ = 0;   // samples quantized so far
+    geom::EdgeSampler sampler_;
     uint32_t face_ = 0;        // the face being tessellated
     bool in_face_ = false;
     geom::FaceJob job_;

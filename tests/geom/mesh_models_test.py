@@ -11,7 +11,9 @@ Asserted for every model that packs, at both tolerances:
     no non-manifold edge. Edges where two faces of the B-rep itself overlap (a triangle with
     the same three points in two faces) are counted apart and printed;
 and at the default tolerance, the exact triangle counts of a few small models (GOLDEN): a
-change to the tessellation shows up here and must be looked at, then re-pinned.
+change to the tessellation shows up here and must be looked at, then re-pinned; and that
+tessellating each face in pieces of one unit (as the device does, a piece per step) gives
+the very same mesh, byte for byte.
 Prints one line per model and writes WORK/mesh-models.json.
 """
 import argparse
@@ -31,8 +33,8 @@ GOLDEN = {
 }
 
 
-def mesh(args, fpk, rep, tolerance=None):
-    cmd = [args.mesher, fpk, '--json', rep]
+def mesh(args, fpk, rep, tolerance=None, extra=()):
+    cmd = [args.mesher, fpk, '--json', rep] + list(extra)
     if tolerance:
         cmd += ['--tolerance', repr(tolerance)]
     m = subprocess.run(cmd, capture_output=True, text=True, timeout=600)
@@ -68,7 +70,10 @@ def main():
         if p.returncode != 0:
             print(f'skip    {f}: not packed ({p.stderr.strip().splitlines()[-1] if p.stderr.strip() else p.returncode})')
             continue
-        r, messages = mesh(args, base + '.fpk', base + '.json')
+        r, messages = mesh(args, base + '.fpk', base + '.json', extra=['--stl', base + '.stl'])
+        pieces, _ = mesh(args, base + '.fpk', base + '-pieces.json', extra=['--stl', base + '-pieces.stl', '--pieces', '1'])
+        if pieces is None or open(base + '.stl', 'rb').read() != open(base + '-pieces.stl', 'rb').read():
+            bad.append(f'{f}: tessellated in pieces of one unit, the mesh differs from the one made at once')
         if r is None:
             bad.append(f'{f}: {messages}')
             continue

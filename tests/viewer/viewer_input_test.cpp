@@ -301,7 +301,13 @@ TEST(Viewer, WithoutAClockEachStepIsOnePieceOfWork) {
         ASSERT_EQ(begun, 1) << "step " << steps;
     }
     EXPECT_GT(steps, 5) << "sampling, the faces in pieces, frames";
-    EXPECT_EQ(app.v->stats().done, 2u);
+    EXPECT_EQ(app.v->stats().done, 2u) << steps << " steps (" << [&] {
+        int k[5] = {};
+        for (const Event& e : app.events)
+            if (e.kind == Event::Kind::WorkBegin) ++k[int(e.work.what)];
+        return std::to_string(k[0]) + " unpack, " + std::to_string(k[1]) + " sampling, " + std::to_string(k[2]) + " face, " +
+               std::to_string(k[3]) + " frame, " + std::to_string(k[4]) + " update pieces); ";
+    }() << (app.last(Event::Kind::FaceFailed) ? text(app.last(Event::Kind::FaceFailed)->why) : "no face failed");
 }
 
 TEST(Viewer, AStepStopsWhenItsBudgetIsSpent) {

@@ -3,6 +3,9 @@
 // surfaces, free and non-manifold edges, the share of thin triangles, time.
 //
 //   facet-mesh MODEL.fpk [--stl|--obj|--ply FILE] [--json REPORT] [--tolerance MM] [--angle RAD] [--faces]
+//              [--pieces UNITS]
+// --pieces: each face tessellated in pieces of UNITS (geom::FaceJob), as the device does; the
+// mesh must be the very one made at once.
 //
 // Measured once per shell (a part placed several times is one mesh): the deviation on a
 // barycentric grid in every triangle and along its edges (geom/deviation.h); the topology
@@ -98,7 +101,8 @@ int main(int argc, char** argv) {
     std::string out, format, json;
     float tolerance = 0, angle = 0;
     bool quiet = false, per_face = false;
-    const char* usage = "usage: facet-mesh MODEL.fpk [--stl|--obj|--ply FILE] [--json REPORT] [--tolerance MM] [--angle RAD] [--faces] [--quiet]";
+    uint32_t pieces = 0; // units per piece; 0: each face at once
+    const char* usage = "usage: facet-mesh MODEL.fpk [--stl|--obj|--ply FILE] [--json REPORT] [--tolerance MM] [--angle RAD] [--faces] [--pieces UNITS] [--quiet]";
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         if ((a == "--stl" || a == "--obj" || a == "--ply") && i + 1 < argc) format = a.substr(2), out = argv[++i];
@@ -106,6 +110,7 @@ int main(int argc, char** argv) {
         else if (a == "--tolerance" && i + 1 < argc) tolerance = std::strtof(argv[++i], nullptr);
         else if (a == "--angle" && i + 1 < argc) angle = std::strtof(argv[++i], nullptr);
         else if (a == "--quiet") quiet = true;
+        else if (a == "--pieces" && i + 1 < argc) pieces = uint32_t(std::strtoul(argv[++i], nullptr, 10));
         else if (a == "--faces") per_face = true;
         else if (a[0] != '-' && !in) in = argv[i];
         else return die(usage);
@@ -172,7 +177,16 @@ int main(int argc, char** argv) {
         for (uint32_t fi = sh.first_face; fi < sh.first_face + sh.face_count; ++fi) {
             const uint32_t before = mesh.triangle_count;
             FaceStats st;
-            const Result r = tessellate_face(pack, fi, samples, opt, sc, mesh, st);
+            Result r;
+            if (pieces) { // as the device: a piece at a time
+                FaceJob job;
+                job.start(pack, fi, samples, opt, sc, mesh);
+                while ((r = job.run(pieces)).status == Status::Busy) {
+                }
+                st = job.stats();
+            } else {
+                r = tessellate_face(pack, fi, samples, opt, sc, mesh, st);
+            }
             ++faces;
             if (!r.ok()) {
                 ++failed;

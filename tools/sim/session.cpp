@@ -250,6 +250,15 @@ void Session::key(uint8_t c) {
         quit_ = true;
         return;
     }
+    if (c == 'h' || c == '?') {
+        const facet::KeyBindings keys = facet::key_bindings();
+        for (uint32_t i = 0; i < keys.count; ++i) {
+            if (keys.table[i].key < 0x80) std::printf("  %c  %s\n", char(keys.table[i].key), keys.table[i].help);
+        }
+        std::printf("  arrows turn and tilt, PageUp/PageDown zoom, Home fits; left drag orbits, right drag pans,\n"
+                    "  wheel zooms, a click picks; two fingers pinch and pan; q or Esc quits\n");
+        return;
+    }
     viewer_->key(c);
 }
 

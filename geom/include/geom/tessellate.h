@@ -46,6 +46,7 @@ struct EdgeSamples {
     std::span<float> t;         // pool: parameters
     std::span<Vec3> p;          // pool: 3D points
     uint32_t used = 0;
+    uint32_t work = 0;          // curve evaluations so far (what a piece of sampling costs)
 };
 
 // How far one triangle strays from its surface, and where a point would help most.
@@ -89,6 +90,37 @@ Result sample_edges(const Pack& pack, const TessOptions& opt, EdgeSamples& out);
 // The same a few edges at a time: edges [begin, end) appended to the pool (begin 0 empties it
 // first), so a caller can do other work between pieces.
 Result sample_edges(const Pack& pack, const TessOptions& opt, EdgeSamples& out, uint32_t begin, uint32_t end);
+
+// One edge sampled a bounded amount at a time (a long free-form edge takes thousands of
+// evaluations): start() begins it at the end of the pool, run(units) goes on for about
+// `units` of work (a curve evaluation, weighted by its cost) and returns Busy while the edge
+// is unfinished, Ok once its samples are in (EdgeSamples::count set), Full when the pool is.
+// The caller checked the options and the index's size (sample_edges does).
+class EdgeSampler {
+public:
+    void start(const Pack& pack, const TessOptions& opt, EdgeSamples& out, uint32_t edge);
+    Result run(uint32_t units);
+    uint32_t first() const { return start_; } // the edge's first sample in the pool
+
+private:
+    void finish();
+    struct Piece {
+        float t;
+        Curve3Point p;
+    };
+    static constexpr int kStack = 96;
+    const Pack* pack_ = nullptr;
+    EdgeSamples* out_ = nullptr;
+    const pack::Curve* curve_ = nullptr;
+    TessOptions opt_;
+    uint32_t edge_ = 0, start_ = 0, eval_ = 1;
+    bool adaptive_ = false;
+    Piece stack_[kStack]; // right ends of the pieces still to check, the next one on top
+    int top_ = 0;
+    Curve3Point left_{};
+    float tl_ = 0, min_piece_ = 0, tol2_ = 0, cos_max_ = 1;
+    Result result_ = Result::fail(Status::Busy, "not started");
+};
 
 namespace detail {
 // How a face's (u,v) maps to the CDT's integer grid: u and v scaled by the surface's metric
@@ -152,6 +184,7 @@ private:
     uint32_t face_ = 0;
     Stage stage_ = Stage::Failed;
     uint32_t np_ = 0, nl_ = 0;
+    uint32_t next_loop_ = 0, next_triangle_ = 0; // where mapping and emission go on
     uint32_t base_vertex_ = 0, base_triangle_ = 0;
     detail::Grid grid_;
     detail::RefineState refine_;

@@ -1,0 +1,70 @@
+// The minimal example's port (minimal/port.h) for the QEMU boards: the board's display with a
+// frame in RAM it scans out, the UART's keys, the board's clock, the pack its runner loaded.
+// At idle it takes the screenshot the test compares ("minimal") and ends the example.
+#include "facet_board_config.h"
+#include "hal/board.h"
+#include "hal/print.h"
+#include "qemu/capture.h"
+
+extern "C" {
+#include "port.h"
+int app_main(void);
+}
+
+namespace {
+
+using namespace facet;
+constexpr uint16_t kW = board_config::kDisplayWidth, kH = board_config::kDisplayHeight;
+alignas(64) __attribute__((section(".framebuffers"))) hal::Rgb565 frame[uint32_t(kW) * kH];
+hal::Board* board;
+
+} // namespace
+
+extern "C" uint16_t port_width(void) { return kW; }
+extern "C" uint16_t port_height(void) { return kH; }
+
+extern "C" void port_display_write(const facet_area* a, const facet_rgb565* pixels) {
+    if (Status s = board->display.write({a->x, a->y, a->width, a->height}, pixels); !ok(s)) {
+        print(board->console, "minimal: the display refused an area ({})\n", s);
+    }
+}
+
+extern "C" const void* port_pack(uint32_t* bytes, void** memory, uint32_t* memory_bytes) {
+    // The runner loads the file at the start of the pack region; it is inflated in place there.
+    void* region = reinterpret_cast<void*>(board_config::kPackAddress);
+    *bytes = board_config::kPackBytes;
+    *memory = region;
+    *memory_bytes = board_config::kPackBytes;
+    return region;
+}
+
+extern "C" int port_poll(uint32_t* key, int16_t*, int16_t*, int*, int* is_touch) {
+    hal::InputEvent e;
+    while (board->input.poll(e)) {
+        if (e.kind != hal::InputEvent::Kind::Key) continue; // the mouse: not in this example
+        *key = e.key;
+        *is_touch = 0;
+        return 1;
+    }
+    return 0;
+}
+
+extern "C" uint32_t port_now_us(void*) {
+    return uint32_t(board->clock.ticks() * 1'000'000 / board->clock.ticks_per_second());
+}
+
+extern "C" void port_log(const char* line) { print(board->console, "minimal: {}\n", line); }
+
+extern "C" int port_idle(void) {
+    print(board->console, "minimal: idle\n");
+    return ok(qemu::capture("minimal")) ? 1 : 1;
+}
+
+int facet_main(hal::Board& b) {
+    board = &b;
+    if (Status s = b.display.show(frame); !ok(s)) {
+        print(b.console, "minimal: the display refused the frame ({})\n", s);
+        return 1;
+    }
+    return app_main();
+}

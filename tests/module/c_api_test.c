@@ -1,0 +1,141 @@
+/* The C API (facet/facet.h) from C99 (built with -std=c99 -pedantic -Wall -Wextra -Werror):
+ * every call, with a pack file given on the command line, in bands of 10 lines with two band
+ * buffers and a late flush_done (as a DMA's). Exits 0 when every check holds.
+ *
+ *   c_api_test MODEL.fpk */
+#include "facet/facet.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define W 200
+#define H 150
+#define LINES 10
+
+static uint8_t workspace[FACET_WORKSPACE_BYTES_DEFAULT] __attribute__((aligned(8)));
+static facet_rgb565 bands[2][W * LINES];
+static uint16_t depth[W * LINES];
+static facet_rgb565 screen[W * H];
+static int events[FACET_EVENT_WORK_END + 1];
+static int pending, failures;
+static facet_viewer *viewer;
+
+#define CHECK(cond)                                                                                 \
+    do {                                                                                            \
+        if (!(cond)) {                                                                              \
+            fprintf(stderr, "c_api_test: %s:%d: %s\n", __FILE__, __LINE__, #cond);                 \
+            ++failures;                                                                             \
+        }                                                                                           \
+    } while (0)
+
+static void flush(void *user, const facet_area *a, const facet_rgb565 *pixels) {
+    int y;
+    CHECK(user == (void *)screen);
+    CHECK(a->x == 0 && a->width == W && a->height <= LINES && a->y + a->height <= H);
+    for (y = 0; y < a->height; ++y) memcpy(&screen[(a->y + y) * W], pixels + y * W, W * 2);
+    ++pending; /* done later, as a DMA would */
+}
+
+static void on_event(void *user, const facet_event *e) {
+    (void)user;
+    CHECK((int)e->kind >= 0 && e->kind <= FACET_EVENT_WORK_END);
+    ++events[e->kind];
+    if (e->kind == FACET_EVENT_FRAME_DONE) CHECK(e->u.frame.faces_total > 0);
+}
+
+static uint32_t clock_us(void *user) {
+    static uint32_t now;
+    (void)user;
+    return now += 100;
+}
+
+int main(int argc, char **argv) {
+    facet_config cfg;
+    facet_result why;
+    facet_stats s;
+    char text[160];
+    FILE *f;
+    long size;
+    uint32_t *file, *memory, need;
+    int i;
+
+    if (argc != 2) return 2;
+    facet_config_init(&cfg);
+    CHECK(cfg.capacity.faces == FACET_DEFAULT_FACES && cfg.step_slack_us > 0);
+    CHECK(facet_workspace_bytes(&cfg.capacity) == FACET_WORKSPACE_BYTES_DEFAULT);
+    cfg.display.width = W;
+    cfg.display.height = H;
+    cfg.display.band_lines = LINES;
+    cfg.display.buffers[0] = bands[0];
+    cfg.display.buffers[1] = bands[1];
+    cfg.display.depth[0] = depth;
+    cfg.display.mode = FACET_FLUSH_COPY;
+    cfg.display.flush = flush;
+    cfg.display.user = screen;
+    cfg.on_event = on_event;
+    cfg.now_us = clock_us;
+
+    /* Refused: a workspace too small, a scan-out display in bands. */
+    CHECK(facet_create(&cfg, workspace, 1024, &why) == NULL && why.status == FACET_FULL);
+    cfg.display.mode = FACET_FLUSH_SCANOUT;
+    CHECK(facet_create(&cfg, workspace, sizeof workspace, &why) == NULL && why.status == FACET_OUT_OF_RANGE);
+    facet_describe(&why, text, sizeof text);
+    CHECK(strstr(text, "display") != NULL);
+    cfg.display.mode = FACET_FLUSH_COPY;
+    viewer = facet_create(&cfg, workspace, sizeof workspace, &why);
+    CHECK(viewer != NULL && why.status == FACET_OK);
+    if (!viewer) return 1;
+
+    /* A bad pack: refused with its reason. */
+    memset(screen, 0, sizeof screen);
+    why = facet_load(viewer, screen, 64, NULL, 0);
+    CHECK(why.status == FACET_CORRUPT);
+    CHECK(facet_describe(&why, text, sizeof text) > 0 && strstr(text, "no pack here") != NULL);
+
+    f = fopen(argv[1], "rb");
+    if (!f) return 2;
+    fseek(f, 0, SEEK_END);
+    size = ftell(f);
+    fseek(f, 0, SEEK_SET);
+    file = malloc((size_t)size + 4);
+    if (!file || fread(file, 1, (size_t)size, f) != (size_t)size) return 2;
+    fclose(f);
+    need = facet_pack_memory_bytes(file, (uint32_t)size);
+    memory = malloc(need + 4);
+    why = facet_load(viewer, file, (uint32_t)size, memory, need);
+    CHECK(why.status == FACET_OK);
+
+    for (i = 0; i < 200000; ++i) {
+        const facet_activity a = facet_step(viewer, 2000);
+        if (a == FACET_ACTIVITY_IDLE && !pending) break;
+        for (; pending; --pending) facet_flush_done(viewer);
+    }
+    s = facet_get_stats(viewer);
+    CHECK(s.faces > 0 && s.done == s.faces && s.failed == 0 && s.triangles > 0);
+    CHECK(events[FACET_EVENT_LOADED] == 1 && events[FACET_EVENT_TESSELLATED] == 1);
+    CHECK(events[FACET_EVENT_FRAME_DONE] > 0 && events[FACET_EVENT_WORK_BEGIN] == events[FACET_EVENT_WORK_END]);
+
+    /* Input: keys, a drag, the wheel, a tap (a pick). */
+    facet_key(viewer, 'd');
+    facet_key(viewer, FACET_KEY_LEFT);
+    facet_pointer(viewer, 0, 0, 2);
+    facet_pointer(viewer, 10, 5, 2);
+    facet_pointer(viewer, 0, 0, 0);
+    facet_wheel(viewer, 1);
+    CHECK(events[FACET_EVENT_VIEW_CHANGED] == 4);
+    facet_touch(viewer, 0, W / 2, H / 2, 1);
+    facet_touch(viewer, 0, W / 2, H / 2, 0);
+    CHECK(events[FACET_EVENT_PICKED] == 1);
+    for (i = 0; i < 200000; ++i) {
+        const facet_activity a = facet_step(viewer, 2000);
+        if (a == FACET_ACTIVITY_IDLE && !pending) break;
+        for (; pending; --pending) facet_flush_done(viewer);
+    }
+    free(file);
+    free(memory);
+    if (failures) return 1;
+    printf("c_api_test: %u faces, %u triangles, %d frames, %d pieces of work, every C call checked\n", s.faces,
+           s.triangles, events[FACET_EVENT_FRAME_DONE], events[FACET_EVENT_WORK_BEGIN]);
+    return 0;
+}

@@ -1,0 +1,131 @@
+// The camera on its own: the fitted view, the one transform path (projection, culling of
+// spheres against the screen and against bands, facing), dolly limits and pixel pans.
+#include "camera.h"
+#include "pack_writer.h"
+#include "scene.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <vector>
+
+using namespace facet;
+using namespace facet::module;
+
+namespace {
+
+// A 100 mm square in z = 0 around (10, 20, 0): the model's box centre and radius are known.
+struct Model {
+    std::vector<uint8_t> bytes;
+    std::vector<uint32_t> words;
+    geom::Pack pack;
+    std::vector<FaceInfo> faces = std::vector<FaceInfo>(4);
+    std::vector<uint32_t> done = std::vector<uint32_t>(4), first = std::vector<uint32_t>(8);
+    std::vector<uint16_t> count = std::vector<uint16_t>(8);
+    Scene scene;
+    Model() {
+        geom::PackWriter w;
+        const uint32_t plane = w.add_surface(pack::SurfaceType::Plane, {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1});
+        const float x0 = -40, x1 = 60, y0 = -30, y1 = 70;
+        const uint32_t v[4] = {w.add_vertex(x0, y0, 0), w.add_vertex(x1, y0, 0), w.add_vertex(x1, y1, 0), w.add_vertex(x0, y1, 0)};
+        const uint32_t first_coedge = w.coedge_count();
+        for (int i = 0; i < 4; ++i) {
+            const uint32_t e = w.add_edge({pack::kStraight, 0, 100, v[i], v[(i + 1) % 4], 1e-7f, 0});
+            w.add_coedge(pack::Coedge::make(e, false, pack::Seam::None));
+        }
+        const uint32_t loop = w.add_loop({first_coedge, 4});
+        w.add_face({plane, loop, 1, pack::kNoIndex, pack::kNoIndex, 0, {0, 0, 0}, {x0, y0}, {x1, y1}});
+        const uint32_t shell = w.add_shell({0, 1, pack::kNoIndex, 0});
+        w.add_instance({shell, {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0}});
+        bytes = w.finish();
+        words.assign(bytes.size() / 4 + 1, 0);
+        std::memcpy(words.data(), bytes.data(), bytes.size());
+        EXPECT_TRUE(pack.open(words.data(), uint32_t(bytes.size())).ok());
+        scene.init({geom::EdgeSamples{first, count, {}, {}}, {}, {}, {}, faces, done});
+        EXPECT_TRUE(scene.open(pack).ok());
+    }
+};
+
+// A point in mm of the model as mesh units (diag / 2^20).
+void quantize(const Scene& s, float x, float y, float z, int32_t p[3]) {
+    const float q[3] = {x / s.unit(), y / s.unit(), z / s.unit()};
+    for (int k = 0; k < 3; ++k) p[k] = int32_t(std::lround(q[k]));
+}
+
+} // namespace
+
+TEST(Camera, TheFittedViewCentresTheModelAndHoldsItsSphere) {
+    Model m;
+    EXPECT_NEAR(m.scene.centre()[0], 10, 1e-4);
+    EXPECT_NEAR(m.scene.centre()[1], 20, 1e-4);
+    EXPECT_NEAR(m.scene.radius(), 50 * std::sqrt(2.0f), 1e-3);
+    Camera cam;
+    for (const auto& [w, h] : {std::pair<uint16_t, uint16_t>{640, 480}, {480, 272}}) {
+        const Transform t = cam.transform(m.scene, 0, w, h);
+        int32_t c[3];
+        quantize(m.scene, 10, 20, 0, c);
+        Projected p;
+        t.project(c, p);
+        ASSERT_EQ(p.out, 0);
+        EXPECT_NEAR(p.s.x / 16.0, w / 2.0, 0.5) << w << "x" << h;
+        EXPECT_NEAR(p.s.y / 16.0, h / 2.0, 0.5);
+        // The corners of the square are on the bounding sphere: on the screen, within its short side.
+        for (const auto& [x, y] : {std::pair<float, float>{-40, -30}, {60, -30}, {60, 70}, {-40, 70}}) {
+            int32_t q[3];
+            quantize(m.scene, x, y, 0, q);
+            t.project(q, p);
+            ASSERT_EQ(p.out, 0);
+            EXPECT_LT(std::abs(p.s.x / 16.0 - w / 2.0), std::min(w, h) / 2.0);
+            EXPECT_LT(std::abs(p.s.y / 16.0 - h / 2.0), std::min(w, h) / 2.0);
+        }
+    }
+}
+
+TEST(Camera, SpheresOffTheScreenOrOutOfABandAreCulled) {
+    Model m;
+    Camera cam;
+    const Transform t = cam.transform(m.scene, 0, 640, 480);
+    const Rows whole{t.cy16, t.cy16};
+    int32_t c[3];
+    quantize(m.scene, 10, 20, 0, c);
+    const int32_t r = int32_t(5 / m.scene.unit()); // 5 mm
+    EXPECT_TRUE(t.visible(c, r, whole));
+    int32_t far[3];
+    quantize(m.scene, 10 + 5000, 20, 0, far);
+    EXPECT_FALSE(t.visible(far, r, whole)) << "far to the side";
+    // A small sphere at the centre: in the band through the middle, not in the top rows.
+    const Rows middle{t.cy16 - 230 * 16, 250 * 16 - t.cy16}, top{t.cy16, 16 * 16 - t.cy16};
+    EXPECT_TRUE(t.visible(c, r, middle));
+    EXPECT_FALSE(t.visible(c, r, top));
+    EXPECT_TRUE(t.visible(c, 0, top)) << "no radius known: never culled";
+}
+
+TEST(Camera, ThePlaneFacesTheEyeFromAboveAndAwayFromBelow) {
+    Model m;
+    Camera cam;
+    int32_t p[3];
+    quantize(m.scene, 10, 20, 0, p);
+    const int16_t up[3] = {0, 0, 16384}, down[3] = {0, 0, -16384};
+    const Transform t = cam.transform(m.scene, 0, 640, 480); // the default view looks down on z
+    EXPECT_FALSE(t.faces_away(p, up));
+    EXPECT_TRUE(t.faces_away(p, down));
+}
+
+TEST(Camera, DollyIsBoundedAndPixelPansFollowThePointer) {
+    Model m;
+    Camera cam;
+    for (int i = 0; i < 100; ++i) cam.dolly(0.5f);
+    EXPECT_FLOAT_EQ(cam.view().zoom, 0.05f);
+    for (int i = 0; i < 100; ++i) cam.dolly(2.0f);
+    EXPECT_FLOAT_EQ(cam.view().zoom, 20.0f);
+    cam.fit();
+    int32_t c[3];
+    quantize(m.scene, 10, 20, 0, c);
+    Projected before, after;
+    cam.transform(m.scene, 0, 640, 480).project(c, before);
+    cam.pan_pixels(40, -25, m.scene.radius(), 640, 480);
+    cam.transform(m.scene, 0, 640, 480).project(c, after);
+    EXPECT_NEAR((after.s.x - before.s.x) / 16.0, 40, 1.5);
+    EXPECT_NEAR((after.s.y - before.s.y) / 16.0, -25, 1.5);
+}

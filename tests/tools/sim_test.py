@@ -1,0 +1,108 @@
+#!/usr/bin/env python3
+"""facet-sim, the desktop simulator: one scripted session (keys, left/right/middle drags, the
+wheel, a one-finger drag, a pinch, taps and a click that pick, a finer level of detail) played
+three ways on the sample part, at both screen sizes:
+
+  * headless: the entries go to the module's API directly (the reference; the QEMU viewer
+    tests compare the boards' screenshots with this same program's);
+  * in an SDL window (SDL's dummy video driver, no display needed): every entry becomes the SDL
+    events a user's hands would make and goes through the simulator's event handling;
+  * headless in bands of 16 lines (partial rendering, one band-sized depth buffer).
+
+Every screenshot must be pixel-identical across the three (bands: every full redraw; the
+"half" screenshot is taken at a different moment when bands refresh progress every sixteenth
+of the faces), the picks must name the same faces, and the session must change the picture.
+
+  sim_test.py --sim facet-sim --packer facet-pack --sample facet-sample-model --work DIR
+"""
+import argparse
+import hashlib
+import os
+import re
+import subprocess
+import sys
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+sys.path.insert(0, os.path.join(ROOT, 'tools'))
+import img  # noqa: E402
+
+SESSION = ['keys dd!shot turned\\n', 'mouse 60 -30', 'keys !shot dragged\\n', 'mouse 30 20 right',
+           'keys !shot panned\\n', 'mouse 0 -25 middle', 'keys !shot dollied\\n', 'wheel 2', 'keys !shot wheeled\\n',
+           'drag 200 150 40 10', 'keys !shot fingerdrag\\n', 'pinch 240 130 100 160', 'keys !shot pinched\\n',
+           'tap 240 130', 'tap 5 5', 'click', 'keys f]', 'keys !shot lod\\n']
+SHOTS = ['wireframe', 'half', 'done', 'turned', 'dragged', 'panned', 'dollied', 'wheeled', 'fingerdrag', 'pinched', 'lod']
+
+
+def run(sim, fpk, out, size, mode):
+    os.makedirs(out, exist_ok=True)
+    cmd = [sim, '--pack', fpk, '--out', out, '--size', size]
+    env = dict(os.environ)
+    if mode == 'window':
+        env['SDL_VIDEODRIVER'] = 'dummy'
+        env.pop('DISPLAY', None)
+    else:
+        cmd.append('--headless')
+    if mode == 'bands':
+        cmd += ['--bands', '16']
+    for s in SESSION:
+        cmd += ['--send', s]
+    r = subprocess.run(cmd, capture_output=True, text=True, env=env, timeout=300)
+    picks = re.findall(r'^@pick .*$', r.stdout, re.M)
+    return r, picks
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    for a in ('--sim', '--packer', '--sample', '--work'):
+        ap.add_argument(a, required=True)
+    args = ap.parse_args()
+    os.makedirs(args.work, exist_ok=True)
+    step = os.path.join(args.work, 'sample.step')
+    fpk = os.path.join(args.work, 'sample.fpk')
+    occt = dict(os.environ, ASAN_OPTIONS='detect_leaks=0')  # Open CASCADE's allocations are not ours to check
+    subprocess.run([args.sample, step], check=True, capture_output=True, env=occt)
+    subprocess.run([args.packer, step, '-o', fpk, '--quiet'], check=True, capture_output=True, env=occt)
+    failed = False
+    for size in ('640x480', '480x272'):
+        outs, problems = {}, []
+        picks = {}
+        for mode in ('headless', 'window', 'bands'):
+            outs[mode] = os.path.join(args.work, f'{size}-{mode}')
+            r, picks[mode] = run(args.sim, fpk, outs[mode], size, mode)
+            if r.returncode != 0:
+                problems.append(f'{mode}: exit {r.returncode}: {r.stderr.strip()[-300:]}')
+        if len(picks['headless']) != 3 or not picks['headless'][0].startswith('@pick face') or \
+                not picks['headless'][1].startswith('@pick none'):
+            problems.append(f'the picks: {picks["headless"]} (the tap in the middle hits a face, the corner one nothing)')
+        if picks['window'] != picks['headless']:
+            problems.append(f'window picks {picks["window"]} vs headless {picks["headless"]}')
+        digests = set()
+        for shot in SHOTS:
+            ref = os.path.join(outs['headless'], shot + '.f565')
+            if not os.path.exists(ref):
+                problems.append(f'{shot} missing (headless)')
+                continue
+            digests.add(hashlib.sha1(open(ref, 'rb').read()).hexdigest())
+            for mode in ('window', 'bands'):
+                if mode == 'bands' and shot == 'half':
+                    continue
+                got = os.path.join(outs[mode], shot + '.f565')
+                if not os.path.exists(got):
+                    problems.append(f'{shot} missing ({mode})')
+                    continue
+                n, msg = img.compare(ref, got, os.path.join(outs[mode], shot + '-diff.png'))
+                if n:
+                    problems.append(f'{shot}, {mode} vs headless: {msg}')
+        if len(digests) < len(SHOTS) - 1:
+            problems.append(f'only {len(digests)} different pictures in {len(SHOTS)} screenshots: the session did not move')
+        if problems:
+            failed = True
+            print(f'FAIL facet-sim {size}: ' + '; '.join(problems))
+        else:
+            print(f'facet-sim {size}: {len(SHOTS)} screenshots identical headless, in an SDL window (dummy driver) '
+                  f'and in bands of 16 lines; picks {picks["headless"]}')
+    return 1 if failed else 0
+
+
+if __name__ == '__main__':
+    sys.exit(main())
