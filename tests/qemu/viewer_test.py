@@ -6,7 +6,7 @@ drag with the PS/2 mouse on versatilepb, zoom, fit, finer level of detail, quit)
   * the device validated the pack, reported every face (none failed for these models), and
     printed its report: faces, triangles, arena high-water, mesh bytes;
   * every screenshot (wireframe, half, done, turned, dragged, zoomed, lod) is pixel-identical
-    to the one facet-viewer-ref renders on the host with the same code and the same session;
+    to the one facet-sim --headless renders on the host with the same code and the same session;
     the session changed the picture (done, turned, zoomed and lod all differ);
   * exact instruction counts: tessellation = every 'edges' and 'face' region (pieces of work) of
     the first pass; a frame = the 'frame' pieces of one full redraw (up to its '@frame' line). Budgets: tessellation <= 600 M

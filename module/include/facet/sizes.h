@@ -10,12 +10,12 @@
  *   pack memory       a deflated pack, inflated (plain packs are      facet_pack_memory_bytes()
  *                     read in place from flash or RAM)
  *
- * The two shipped configurations (the workspace at the default capacities):
+ * The shipped configurations (the workspace at the default capacities, 6,978,848 bytes):
  *
- *   configuration                          draw buffers       depth buffers      workspace
- *   qemu-versatilepb 640x480, full frames  2 x 614,400        2 x 614,400        FACET_WORKSPACE_BYTES_DEFAULT
- *   480x272 (mps2-an500, the EVKB panel)   2 x 261,120        2 x 261,120        (9.4 MiB at the defaults)
- *   480x272 in bands of 16 lines           2 x 15,360         1 x 15,360
+ *   configuration                                 draw buffers    depth buffers   workspace
+ *   qemu-versatilepb: 640x480, full frames        2 x 614,400     2 x 614,400     6,978,848
+ *   qemu-mps2-an500 (the EVKB panel): 480x272     2 x 261,120     2 x 261,120     6,978,848
+ *   examples/minimal: 480x272 in bands of 16      2 x 15,360      1 x 15,360      6,978,848
  */
 #ifndef FACET_SIZES_H
 #define FACET_SIZES_H
