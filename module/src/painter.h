@@ -3,15 +3,13 @@
 // a face's triangles (clipped against the near plane and the guard band where they cross
 // them), its B-rep edges over it, and the palettes that colour them.
 #include "camera.h"
+#include "overlay.h"
 #include "render/raster.h"
 #include "scene.h"
 
 #include <span>
 
 namespace facet::module {
-
-// n pixels of one colour from p (word stores).
-void fill(hal::Rgb565* p, uint32_t n, hal::Rgb565 colour);
 
 class Painter {
 public:

@@ -155,19 +155,6 @@ bool Presenter::update_pieces(uint32_t units) {
     return true;
 }
 
-void Presenter::progress_bar() {
-    const uint32_t total = scene_.totals().faces;
-    if (job_.finished >= total) return;
-    const render::Target& t = raster_.target();
-    const uint32_t w = t.width * job_.finished / (total ? total : 1);
-    const hal::Rgb565 done = hal::rgb565(40, 110, 220), left = hal::rgb565(70, 74, 84);
-    for (int32_t y = t.height - 4; y < t.height; ++y) {
-        if (y < t.y0 || y >= t.y0 + t.rows) continue;
-        fill(t.row(y), w, done);
-        fill(t.row(y) + w, t.width - w, left);
-    }
-}
-
 void Presenter::flush(uint32_t pass) {
     const render::Target& t = raster_.target();
     const uint8_t b = job_.buffer;
@@ -243,7 +230,7 @@ void Presenter::run_piece(uint32_t units, uint32_t pass) {
         job_.stage = Job::Stage::Overlay;
     }
     if (job_.stage == Job::Stage::Overlay) {
-        progress_bar();
+        overlay_.progress(raster_.target(), job_.finished, scene_.totals().faces);
         job_.stage = Job::Stage::Flush;
     }
     take_done();

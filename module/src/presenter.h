@@ -9,6 +9,7 @@
 // band with partial rendering (then progress is shown every sixteenth of the faces).
 #include "camera.h"
 #include "facet/viewer.h"
+#include "overlay.h"
 #include "painter.h"
 #include "scene.h"
 #include "scheduler.h"
@@ -71,7 +72,6 @@ private:
     bool buffer_free(uint8_t b) const;
     bool full_pieces(uint32_t units);   // faces then edges, instance by instance; true when done
     bool update_pieces(uint32_t units); // the faces since the buffer was last drawn
-    void progress_bar();
     void flush(uint32_t pass);
 
     const Scene& scene_;
@@ -101,6 +101,7 @@ private:
     uint32_t piece_start_ = 0;  // the clock when the current piece began
     uint32_t budget_us_ = 0;    // Config::frame_budget_us
     Job job_;
+    Overlay overlay_;
 };
 
 } // namespace facet::module

@@ -79,6 +79,8 @@ struct App {
     uint32_t clock_us = 0, tick_us = 0; // a fake clock: each read advances it
     bool use_clock = false;
 
+    Capacity capacity;
+
     Result create(bool depth_per_buffer = true) {
         for (int b = 0; b < 2; ++b) {
             buf[b].assign(size_t(w) * lines, 0);
@@ -103,6 +105,7 @@ struct App {
             };
             cfg.clock_user = this;
         }
+        cfg.capacity = capacity;
         workspace.assign(workspace_bytes() / 8 + 1, 0);
         Result why;
         v = Viewer::create(cfg, workspace.data(), workspace.size() * 8, &why);
@@ -456,4 +459,56 @@ TEST(Viewer, LevelsOfDetailRetessellateWithinTheirLimits) {
     for (int i = 0; i < 10; ++i) app.v->key(']');
     app.run();
     EXPECT_NEAR(app.v->stats().tolerance_mm, t0 / 8, t0 * 1e-6f) << "no finer than an eighth";
+}
+
+// A disc of radius 100 in z = 0 bounded by four quarter circles.
+Bytes disc() {
+    PackWriter w;
+    const uint32_t plane = w.add_surface(pack::SurfaceType::Plane, {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1});
+    const uint32_t circle = w.add_curve(pack::CurveType::Circle, 3, {0, 0, 0, 1, 0, 0, 0, 1, 0, 100});
+    const uint32_t v[4] = {w.add_vertex(100, 0, 0), w.add_vertex(0, 100, 0), w.add_vertex(-100, 0, 0), w.add_vertex(0, -100, 0)};
+    const uint32_t first = w.coedge_count();
+    for (int i = 0; i < 4; ++i) {
+        const uint32_t e = w.add_edge({circle, float(M_PI / 2 * i), float(M_PI / 2 * (i + 1)), v[i], v[(i + 1) % 4], 1e-7f, 0});
+        w.add_coedge(pack::Coedge::make(e, false, pack::Seam::None));
+    }
+    const uint32_t loop = w.add_loop({first, 4});
+    w.add_face({plane, loop, 1, pack::kNoIndex, pack::kNoIndex, 0, {0, 0, 0}, {-100, -100}, {100, 100}});
+    const uint32_t shell = w.add_shell({0, 1, pack::kNoIndex, 0});
+    w.add_instance({shell, {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0}});
+    return w.finish();
+}
+
+TEST(Viewer, ALevelOfDetailWhoseEdgesDoNotFitGoesBackToThePreviousOne) {
+    // The pool of edge samples holds the disc's circle at the default level of detail (48
+    // samples) but not at a finer one (64): that pass fails and says why, the previous level's
+    // samples come back, and the picture stays the previous level's; a coarser one then works.
+    App app;
+    app.capacity.samples = 60;
+    ASSERT_TRUE(app.create().ok());
+    ASSERT_TRUE(app.load(disc()).ok());
+    app.run();
+    ASSERT_EQ(app.v->stats().done, 1u) << (app.last(Event::Kind::FaceFailed) ? text(app.last(Event::Kind::FaceFailed)->why) : "")
+                                       << (app.last(Event::Kind::PassFailed) ? text(app.last(Event::Kind::PassFailed)->why) : "");
+    ASSERT_EQ(app.count(Event::Kind::PassFailed), 0);
+    const std::vector<Rgb565> before = app.screen();
+    const float t0 = app.v->stats().tolerance_mm;
+    app.v->key(']');
+    app.run();
+    ASSERT_EQ(app.count(Event::Kind::PassFailed), 1);
+    EXPECT_EQ(app.last(Event::Kind::PassFailed)->why.status, Status::Full);
+    EXPECT_NE(text(app.last(Event::Kind::PassFailed)->why).find("edge "), std::string::npos);
+    EXPECT_FLOAT_EQ(app.v->stats().tolerance_mm, t0) << "back to the previous level";
+    EXPECT_EQ(app.v->stats().done, 1u);
+    EXPECT_EQ(app.screen(), before);
+    app.v->key('d');
+    app.run();
+    app.v->key('a');
+    app.run();
+    EXPECT_EQ(app.screen(), before) << "the previous level's samples and mesh, intact";
+    app.v->key('[');
+    app.run();
+    EXPECT_EQ(app.count(Event::Kind::PassFailed), 1);
+    EXPECT_FLOAT_EQ(app.v->stats().tolerance_mm, t0 * 2);
+    EXPECT_EQ(app.v->stats().done, 1u);
 }
