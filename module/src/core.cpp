@@ -350,7 +350,7 @@ Stats Core::stats() const {
         uint64_t(t.triangles_peak) * 3 * sizeof(uint16_t) + faces * (sizeof(module::FaceInfo) + sizeof(uint32_t)) +
         kPalettes * (sizeof(render::Palette) + sizeof(uint32_t));
     return {t.faces, t.done, t.failed, t.triangles, t.vertices, scheduler_.pass(), t.mesh_bytes, t.arena_peak_bytes,
-            pack_bytes_, pack_file_bytes_, uint32_t(peak), scheduler_.tolerance()};
+            pack_bytes_, pack_file_bytes_, uint32_t(peak), scheduler_.tolerance(), painter_.refused()};
 }
 
 // The viewer's public face: each call goes to the Core the workspace holds.

@@ -64,8 +64,6 @@ bool Presenter::can_draw() {
     return true;
 }
 
-bool Presenter::waiting() const { return job_.active || shown_version_ != version_; }
-
 void Presenter::start(uint32_t finished) {
     const uint8_t b = buffers_ == 2 ? uint8_t(next_ & 1) : 0;
     job_ = {};
@@ -160,7 +158,6 @@ void Presenter::flush(uint32_t pass) {
     const uint8_t b = job_.buffer;
     pending_ = int8_t(b);
     buf_[b].busy = true;
-    ++flushes_;
     if (buffers_ == 2) ++next_;
     const bool last = job_.band + 1 >= bands_;
     if (last) {

@@ -49,7 +49,6 @@ public:
     // Something else projected vertices into the painter's scratch (a pick): the face being
     // drawn starts over (its pixels drawn so far are drawn again, the same).
     void projected_reused() { job_.tri = 0; }
-    bool waiting() const;                // a frame is due, and only flush_done() can free a buffer
 
 private:
     struct Job {
@@ -94,7 +93,6 @@ private:
     int8_t shown_ = -1;         // Scanout: the buffer on the screen
     int8_t pending_ = -1;       // the buffer of the flush in flight
     uint32_t shown_version_ = 0, shown_finished_ = 0; // what the screen shows
-    uint32_t flushes_ = 0;      // flushes issued
     uint32_t next_ = 0;         // with two buffers: the next one to draw into (its low bit)
     volatile uint32_t done_count_ = 0; // flush_done() calls (written by interrupts too)
     uint32_t taken_ = 0;        // flush_done() calls handled

@@ -151,6 +151,8 @@ def main():
             problems.append(f'facet-sim exit {h.returncode}: {h.stderr.strip()[-300:]}')
         m = re.search(r'^@tessellation faces (\d+) failed (\d+) triangles (\d+) vertices (\d+) mesh_bytes (\d+) '
                       r'arena_peak (\d+)', uart, re.M)
+        if 'the rasterizer refused' in uart:
+            problems.append('the rasterizer refused triangles or lines')
         if not m:
             problems.append('no tessellation report')
         elif int(m.group(2)) != 0:

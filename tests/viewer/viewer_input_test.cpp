@@ -134,6 +134,7 @@ struct App {
     }
     void run() {
         for (int i = 0; i < 100000 && v->step(100000) != Activity::Idle; ++i) done();
+        EXPECT_EQ(v->stats().refused, 0u) << "everything drawn was clipped into the rasterizer's range first";
     }
     int count(Event::Kind k) const {
         int n = 0;

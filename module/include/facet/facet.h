@@ -110,6 +110,7 @@ typedef struct {
     uint32_t faces, done, failed, triangles, vertices, pass;
     uint32_t mesh_bytes, arena_peak_bytes, pack_bytes, pack_file_bytes, workspace_peak_bytes;
     float tolerance_mm;
+    uint32_t refused;
 } facet_stats;
 
 /* Defaults: the default capacities, no callbacks, a step slack of 2 ms. */

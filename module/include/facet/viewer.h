@@ -150,6 +150,7 @@ struct Stats {
     uint32_t mesh_bytes, arena_peak_bytes, pack_bytes, pack_file_bytes;
     uint32_t workspace_peak_bytes; // the workspace this model needed at its peak (the rest is room)
     float tolerance_mm;
+    uint32_t refused;              // triangles and lines the rasterizer refused: 0 (all are clipped first)
 };
 
 class Viewer {
