@@ -33,7 +33,35 @@ macro(facet_read_board board)
         string(JSON _f GET "${_json}" cpu_flags ${_i})
         list(APPEND FACET_CPU_FLAGS ${_f})
     endforeach()
-    string(JSON FACET_QEMU_MACHINE GET "${_json}" qemu machine)
+    # Optional keys: "qemu" (QEMU boards), "linker" (a script shared with another board: the
+    # EVKB's stand-in links with the EVKB's), pack "writable" (false: the pack sits in flash and
+    # a deflated one is inflated into "memory" bytes of RAM; true: inflated in place).
+    string(JSON FACET_QEMU_MACHINE ERROR_VARIABLE _noqemu GET "${_json}" qemu machine)
+    string(JSON _linker ERROR_VARIABLE _nolinker GET "${_json}" linker)
+    if(_nolinker)
+        set(_linker ${board})
+    endif()
+    string(JSON _pack_writable ERROR_VARIABLE _nowritable GET "${_json}" pack writable)
+    if(_nowritable)
+        set(_pack_writable ON)
+    endif()
+    string(JSON _flash_origin ERROR_VARIABLE _noflash GET "${_json}" flash origin)
+    string(JSON _flash_bytes ERROR_VARIABLE _noflash GET "${_json}" flash bytes)
+    set(_flash_ld "")
+    if(NOT _noflash)
+        set(_flash_ld "/* The whole flash device (firmware and pack regions): the MPU's read-only region. */
+__flash_device_start = ${_flash_origin};
+__flash_device_end = ${_flash_origin} + ${_flash_bytes};
+")
+    endif()
+    string(JSON _fault_probe ERROR_VARIABLE _noprobe GET "${_json}" fault_probe)
+    if(_noprobe)
+        set(_fault_probe ${_budget})
+    endif()
+    string(JSON _pack_memory ERROR_VARIABLE _nomemory GET "${_json}" pack memory)
+    if(_nomemory)
+        set(_pack_memory 0)
+    endif()
     string(JSON _w GET "${_json}" display width)
     string(JSON _h GET "${_json}" display height)
     string(JSON _budget GET "${_json}" ram_budget)
@@ -43,6 +71,13 @@ macro(facet_read_board board)
     facet_board_bytes(${_budget} _budget_bytes)
     facet_board_bytes(${_pack} _pack_address)
     facet_board_bytes(${_pack_size} _pack_bytes)
+    facet_board_bytes(${_pack_memory} _pack_memory_bytes)
+    facet_board_bytes(${_fault_probe} _fault_probe_address)
+    if(_pack_writable)
+        set(_pack_writable_cpp true)
+    else()
+        set(_pack_writable_cpp false)
+    endif()
     set(FACET_BOARD_GENERATED ${CMAKE_BINARY_DIR}/board)
     set(_mem "")
     string(JSON _regions LENGTH "${_json}" memory)
@@ -64,8 +99,9 @@ STACK_SIZE = ${_stack};
    range, not a section, so the ELF has no load segment there to collide with it. */
 __pack_start = ${_pack};
 __pack_end = __pack_start + ${_pack_size};
+PACK_MEMORY_SIZE = ${_pack_memory_bytes};
 __ram_budget = ${_budget};
-")
+${_flash_ld}")
     configure_file(${FACET_BOARD_GENERATED}/board_memory.ld.in ${FACET_BOARD_GENERATED}/board_memory.ld COPYONLY)
     file(WRITE ${FACET_BOARD_GENERATED}/facet_board_config.h.in
 "#pragma once
@@ -80,16 +116,28 @@ constexpr uint16_t kDisplayHeight = ${_h};
 constexpr uint32_t kRamBytes = ${_budget_bytes}u;  // the RAM budget (${_budget})
 constexpr uintptr_t kPackAddress = ${_pack_address}u; // ${_pack}: where the pack file is loaded
 constexpr uint32_t kPackBytes = ${_pack_bytes}u;   // its room (${_pack_size})
+// false: the pack region is read-only (flash); a deflated pack is inflated into kPackMemoryBytes
+// of RAM the firmware reserves. true: it is inflated in place, in the pack region.
+constexpr bool kPackWritable = ${_pack_writable_cpp};
+constexpr uint32_t kPackMemoryBytes = ${_pack_memory_bytes}u;
+// Where facet-fault-test stores: the first address past the RAM the board grants.
+constexpr uintptr_t kFaultProbe = ${_fault_probe_address}u;
 } // namespace facet::board_config
 ")
     configure_file(${FACET_BOARD_GENERATED}/facet_board_config.h.in ${FACET_BOARD_GENERATED}/facet_board_config.h COPYONLY)
-    set(FACET_LINKER_SCRIPT ${CMAKE_SOURCE_DIR}/linker/${board}.ld)
+    set(FACET_LINKER_SCRIPT ${CMAKE_SOURCE_DIR}/linker/${_linker}.ld)
+    # A board that boots from flash and is not QEMU's: its firmware gets .bin and .hex images.
+    if(NOT _noflash AND _noqemu)
+        set(FACET_BOARD_FLASH_IMAGE ON)
+    else()
+        set(FACET_BOARD_FLASH_IMAGE OFF)
+    endif()
 endmacro()
 
 if(CMAKE_CROSSCOMPILING)
     set(FACET_TARGET_BUILD ON)
     if(NOT FACET_BOARD)
-        message(FATAL_ERROR "FACET_BOARD is required for an ARM build (qemu-versatilepb, qemu-mps2-an500)")
+        message(FATAL_ERROR "FACET_BOARD is required for an ARM build (a folder of boards/ with a board.json)")
     endif()
     facet_read_board(${FACET_BOARD})
 
@@ -130,7 +178,9 @@ else()
     endif()
 endif()
 
-# facet_firmware(<name> SOURCES ...): a firmware ELF for the configured board.
+# facet_firmware(<name> SOURCES ...): a firmware ELF for the configured board. A board that
+# boots from flash (board.json "flash") also gets <name>.bin (the flash image from its first
+# byte) and <name>.hex, and the link prints the image size against the firmware's flash room.
 function(facet_firmware name)
     cmake_parse_arguments(FW "" "" "SOURCES;LIBS" ${ARGN})
     add_executable(${name} ${FW_SOURCES})
@@ -139,6 +189,18 @@ function(facet_firmware name)
     if(TARGET facet_qemu)
         target_link_libraries(${name} PRIVATE facet_qemu)
     endif()
-    target_link_options(${name} PRIVATE -L${FACET_BOARD_GENERATED} -T${FACET_LINKER_SCRIPT} -Wl,-Map=$<TARGET_FILE:${name}>.map)
-    set_target_properties(${name} PROPERTIES LINK_DEPENDS "${FACET_LINKER_SCRIPT};${FACET_BOARD_GENERATED}/board_memory.ld")
+    target_link_options(${name} PRIVATE -L${FACET_BOARD_GENERATED} -L${CMAKE_SOURCE_DIR}/linker -T${FACET_LINKER_SCRIPT}
+                        -Wl,-Map=$<TARGET_FILE:${name}>.map)
+    file(GLOB _fragments ${CMAKE_SOURCE_DIR}/linker/*-itcm.ld)
+    set_target_properties(${name} PROPERTIES LINK_DEPENDS
+        "${FACET_LINKER_SCRIPT};${FACET_BOARD_GENERATED}/board_memory.ld;${_fragments}")
+    if(FACET_BOARD_FLASH_IMAGE)
+        add_custom_command(TARGET ${name} POST_BUILD
+            COMMAND ${CMAKE_OBJCOPY} -O binary -j .boot_hdr -j .vectors -j .itcm_text -j .text -j .ARM.exidx
+                    -j .init_array -j .data $<TARGET_FILE:${name}> $<TARGET_FILE_DIR:${name}>/${name}.bin
+            COMMAND ${CMAKE_OBJCOPY} -O ihex -j .boot_hdr -j .vectors -j .itcm_text -j .text -j .ARM.exidx
+                    -j .init_array -j .data $<TARGET_FILE:${name}> $<TARGET_FILE_DIR:${name}>/${name}.hex
+            COMMAND ${CMAKE_COMMAND} -E echo "${name}: flash image ${name}.bin / .hex written"
+            VERBATIM)
+    endif()
 endfunction()

@@ -1,10 +1,12 @@
-// facet-viewer: the module (facet/viewer.h) on a QEMU board. The pack file comes from the
-// board's pack address (run.py --load FILE@ADDR); the viewer shows its wireframe, fills in the
-// faces, and then follows the keys on the UART and the mouse (versatilepb's PL050) until 'q'.
+// facet-viewer: the module (facet/viewer.h) on a board. The pack file comes from the board's
+// pack address (QEMU: run.py --load FILE@ADDR; the EVKB: flashed there, ./facet flash); the
+// viewer shows its wireframe, fills in the faces, and then follows the keys on the UART, the
+// mouse (versatilepb's PL050) and the touch panel (the EVKB) until 'q'.
 //
 // This program is one user of the module's events: it turns them into the UART test protocol
-// the host runner and the tests read, and it owns the buffers (two full frames shown by the
-// display's scan-out, a depth buffer each, the workspace, the pack region).
+// the host runner and the tests read (and a person with a board watches), and it owns the
+// buffers (two full frames shown by the display's scan-out, a depth buffer each, the
+// workspace, the pack region or, when that is flash, the RAM a deflated pack is inflated into).
 //
 //   from the firmware   @model, @pass, @lod, @progress, @face N failed, @tessellation /
 //                       @retessellation, @frame, @view, @pick, @budget, @memory; "@begin NAME" /
@@ -20,8 +22,11 @@
 #include "hal/board.h"
 #include "hal/measure.h"
 #include "hal/print.h"
-#include "qemu/capture.h"
 #include "report.h"
+#if __has_include("qemu/capture.h")
+#include "qemu/capture.h"
+#define FACET_CAPTURE 1
+#endif
 
 namespace {
 
@@ -34,6 +39,9 @@ constexpr uint8_t kEnq = 0x05, kEsc = 0x1B;
 alignas(64) __attribute__((section(".framebuffers"))) Rgb565 frames[2][kPixels];
 alignas(64) __attribute__((section(".zbuffer"))) uint16_t depth[2][kPixels];
 alignas(8) __attribute__((section(".arena"))) uint8_t workspace[FACET_WORKSPACE_BYTES_DEFAULT];
+// A pack in flash is read in place when plain; a deflated one is inflated here.
+constexpr uint32_t kPackMemory = board_config::kPackWritable ? 8 : board_config::kPackMemoryBytes;
+alignas(8) __attribute__((section(".pack_memory"))) uint8_t pack_memory[kPackMemory];
 
 struct Session {
     hal::Board* board = nullptr;
@@ -46,6 +54,7 @@ struct Session {
     uint32_t line_len = 0;
     bool in_line = false;
     char shot[48] = {};  // a screenshot asked for: taken once the viewer has caught up (idle)
+    bool flush_pending = false;
 } session;
 
 const char* work_name(Work w) {
@@ -62,7 +71,11 @@ const char* work_name(Work w) {
 uint32_t um(float mm) { return uint32_t(mm * 1000 + 0.5f); }
 
 void capture(const char* name) {
+#if FACET_CAPTURE
     if (Status s = qemu::capture(name); !ok(s)) print(session.board->console, "viewer: capture {} failed ({})\n", name, s);
+#else
+    print(session.board->console, "viewer: no screenshot '{}' on this board (QEMU only)\n", name);
+#endif
 }
 
 void on_event(void*, const Event& e) {
@@ -125,12 +138,16 @@ void on_event(void*, const Event& e) {
     }
 }
 
-// Scan-out: the display shows the finished frame from now on (QEMU has no refresh to wait for).
+// Scan-out: the display shows the finished frame from its next refresh on. A controller that
+// switches at vertical blank (the EVKB's eLCDIF) is busy until then: flush_done() waits for it
+// (the main loop), so the viewer never draws into the frame still on the glass. QEMU's
+// displays switch at once.
 void flush(void*, const Area&, const Rgb565* pixels) {
     if (Status s = session.board->display.show(const_cast<Rgb565*>(pixels)); !ok(s)) {
         print(session.board->console, "viewer: the display refused a frame ({})\n", s);
     }
-    session.viewer->flush_done();
+    session.flush_pending = true;
+    if (!session.board->display.busy()) session.flush_pending = false, session.viewer->flush_done();
 }
 
 // Microseconds from the board's clock, without a 64-bit division per call (a library call
@@ -256,11 +273,17 @@ int facet_main(hal::Board& board) {
     }
     Viewer& v = *session.viewer;
     auto* region = reinterpret_cast<uint8_t*>(board_config::kPackAddress);
-    // The file was loaded at the start of the pack region: a deflated one is inflated there.
-    if (Result r = v.load(region, board_config::kPackBytes, region, board_config::kPackBytes); !r.ok()) {
+    // The file is at the start of the pack region: a deflated one is inflated there, or (the
+    // region being flash) into pack_memory.
+    uint8_t* memory = board_config::kPackWritable ? region : pack_memory;
+    const uint32_t memory_bytes = board_config::kPackWritable ? board_config::kPackBytes : sizeof pack_memory;
+    if (Result r = v.load(region, board_config::kPackBytes, memory, memory_bytes); !r.ok()) {
         print(con, "viewer: no valid pack: {} ({})\n", r, r.status);
-        if (region[0] == 0 && region[1] == 0 && region[2] == 0 && region[3] == 0) {
-            print(con, "viewer: nothing was loaded (run.py --load MODEL.fpk@{})\n", hex(board_config::kPackAddress));
+        const bool blank = (region[0] == 0 && region[1] == 0 && region[2] == 0 && region[3] == 0) ||
+                           (region[0] == 0xFF && region[1] == 0xFF && region[2] == 0xFF && region[3] == 0xFF);
+        if (blank) {
+            print(con, "viewer: nothing was loaded at {} ({})\n", hex(board_config::kPackAddress),
+                  board_config::kPackWritable ? "run.py --load MODEL.fpk@ADDRESS" : "./facet flash MODEL.step writes one there");
         }
         return 1;
     }
@@ -273,8 +296,10 @@ int facet_main(hal::Board& board) {
             case hal::InputEvent::Kind::PointerDown:
             case hal::InputEvent::Kind::PointerUp: v.pointer(0, 0, e.buttons); break;
             case hal::InputEvent::Kind::PointerMove: v.pointer(e.dx, e.dy, e.buttons); break;
+            case hal::InputEvent::Kind::Touch: v.touch(e.finger, e.x, e.y, e.down); break;
             }
         }
+        if (session.flush_pending && !board.display.busy()) session.flush_pending = false, v.flush_done();
         if (session.quit) break;
         if (session.step_regions) hal::measure_begin(con, "step");
         const Activity a = v.step(session.step_us);

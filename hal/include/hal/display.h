@@ -33,6 +33,10 @@ public:
     virtual Status write(const Rect& area, const Rgb565* pixels) = 0;
     // The frame on the screen (for captures); null when there is none in RAM.
     virtual const Rgb565* frame() const = 0;
+    // True while the frame last passed to show() is not on the screen yet: a controller that
+    // switches frames at vertical blank still scans the previous one out, which must not be
+    // drawn into until then. Displays that switch at once never are.
+    virtual bool busy() const { return false; }
 
 protected:
     ~Display() = default;

@@ -1,14 +1,15 @@
-// Fault reports for the Cortex-M7: print the fault status registers and the faulting pc, then
-// exit non-zero through semihosting.
+// Fault reports for the Cortex-M7 boards: the fault status registers (CFSR, HFSR), the fault
+// addresses when valid (MMFAR for the MPU, BFAR for the bus) and the stacked pc and lr, on the
+// console; then hal::exit (QEMU: a non-zero exit code; a board: it halts, reset restarts it).
+#include "cortex_m.h"
 #include "hal/board.h"
 #include "hal/print.h"
-#include "memory_map.h"
 
 #include <cstdint>
 
 extern "C" [[noreturn]] void board_fault(const uint32_t* frame, uint32_t exc_return) {
     using namespace facet;
-    using namespace facet::mps2;
+    using namespace facet::cortex_m;
     uint32_t ipsr;
     asm volatile("mrs %0, ipsr" : "=r"(ipsr));
     hal::Console& con = hal::board().console;

@@ -1,0 +1,20 @@
+#pragma once
+// The EVKB's memory as its linker script lays it out (linker/mimxrt1060-evkb.ld), shared with
+// the QEMU stand-in that links with the same script: loading the ITCM, the MPU plan, the report.
+#include "mpu.h"
+
+namespace facet::evkb {
+
+// Copies the hot code from flash to ITCM. First thing at reset: nothing before it may call a
+// function placed in ITCM.
+void load_itcm();
+
+// The MPU plan of this layout: peripherals, ITCM (with a 32-byte null-pointer guard), DTCM,
+// OCRAM, the flash device (firmware and pack), SDRAM and the frames' write-through region.
+// Returns how many ranges (at most 8: the Cortex-M7 in QEMU has 8 MPU regions).
+uint32_t memory_ranges(cortex_m::Range* out, uint32_t max);
+
+// Plans and loads the MPU, enables the caches. False when the MPU could not take the plan.
+bool protect_memory();
+
+} // namespace facet::evkb
