@@ -4,8 +4,10 @@
 QEMU counts the instructions each function executes (tools/qemu/icount, run.py --profile); it
 cannot tell cycles: flash wait states, cache hits and misses are the board's. So the choice is
 what QEMU can support: the functions that execute the most instructions per byte of code, until
-the ITCM budget is full. Functions called before the ITCM is loaded (memset, memcpy: start-up
-code uses them) are never chosen.
+the ITCM budget is full. Only facet's portable code and the firmware's callbacks are candidates:
+not a board's drivers (the profiled stand-in's differ from the EVKB's), not library routines
+(memset and memcpy run before the ITCM is loaded, and libc/libgcc objects have one .text
+section each), not the instruction-count markers.
 
   hot_code.py pick ELF PROFILE.raw... [--budget BYTES] [--out FILE]
         writes the linker fragment (linker/mimxrt1060-evkb-itcm.ld) and prints the coverage
@@ -19,7 +21,13 @@ import re
 import subprocess
 import sys
 
-NEVER = re.compile(r'^(mem(set|cpy|move|cmp)|__aeabi_mem.*|_?_?(start|Reset_Handler|board_reset).*)$')
+# Candidates: the portable code (namespace facet, but not a board's drivers, which differ from
+# the profiled stand-in to the EVKB) and the firmware's own callbacks (anonymous namespace).
+# Library routines (libc, libgcc) share one .text section per object: they stay in flash. The
+# instruction-count markers stay in flash too (a call through a veneer would change the counts).
+CANDIDATE = re.compile(r'^(_ZN5facet|_ZNK5facet|_ZN12_GLOBAL__N_1|_ZNK12_GLOBAL__N_1)')
+BOARDS = re.compile(r'^_ZN?K?5facet(4mps2|4evkb|11versatilepb|8cortex_m|6boards|7runtime|5stack)')
+NEVER = re.compile(r'^(facet_mark_.*|facet_known_loop)$')
 
 
 def symbols(elf):
@@ -55,11 +63,12 @@ def profile(elf, paths):
 
 def pick(args):
     counts, sizes, total = profile(args.elf, args.profiles)
-    ranked = sorted((n / max(sizes[f], 1), f) for f, n in counts.items() if sizes.get(f) and not NEVER.match(f))
+    ranked = sorted((n / max(sizes[f], 1), f) for f, n in counts.items()
+                    if sizes.get(f) and CANDIDATE.match(f) and not BOARDS.match(f) and not NEVER.match(f))
     chosen, used, covered = [], 0, 0
     for _, f in reversed(ranked):
-        if used + sizes[f] + 8 > args.budget:
-            continue
+        if used + sizes[f] + 8 > args.budget or counts[f] * 10000 < total:
+            continue  # no room, or under 0.01 % of the instructions: not worth the ITCM
         chosen.append(f)
         used += sizes[f] + 8  # alignment slack
         covered += counts[f]

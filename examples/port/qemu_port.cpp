@@ -16,6 +16,10 @@ namespace {
 using namespace facet;
 constexpr uint16_t kW = board_config::kDisplayWidth, kH = board_config::kDisplayHeight;
 alignas(64) __attribute__((section(".framebuffers"))) hal::Rgb565 frame[uint32_t(kW) * kH];
+// A board whose pack region is flash (the EVKB's configuration) inflates a deflated pack into
+// RAM of its own; the others inflate it in place.
+constexpr uint32_t kPackMemory = board_config::kPackWritable ? 8 : board_config::kPackMemoryBytes;
+alignas(8) __attribute__((section(".pack_memory"))) uint8_t pack_memory[kPackMemory];
 hal::Board* board;
 
 } // namespace
@@ -30,11 +34,12 @@ extern "C" void port_display_write(const facet_area* a, const facet_rgb565* pixe
 }
 
 extern "C" const void* port_pack(uint32_t* bytes, void** memory, uint32_t* memory_bytes) {
-    // The runner loads the file at the start of the pack region; it is inflated in place there.
+    // The runner loads the file at the start of the pack region; it is inflated in place there,
+    // or into pack_memory when the region is flash.
     void* region = reinterpret_cast<void*>(board_config::kPackAddress);
     *bytes = board_config::kPackBytes;
-    *memory = region;
-    *memory_bytes = board_config::kPackBytes;
+    *memory = board_config::kPackWritable ? region : static_cast<void*>(pack_memory);
+    *memory_bytes = board_config::kPackWritable ? board_config::kPackBytes : uint32_t(sizeof pack_memory);
     return region;
 }
 

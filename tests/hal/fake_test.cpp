@@ -41,7 +41,10 @@ TEST(FakeConsoleInput, RecordsAndReplays) {
     hal::fake::Input in;
     hal::InputEvent e{};
     EXPECT_FALSE(in.poll(e));
-    in.queue.push_back({hal::InputEvent::Kind::Key, 'r', 0, 0, 0});
+    hal::InputEvent key{};
+    key.kind = hal::InputEvent::Kind::Key;
+    key.key = 'r';
+    in.queue.push_back(key);
     ASSERT_TRUE(in.poll(e));
     EXPECT_EQ(e.key, 'r');
 }
