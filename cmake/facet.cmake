@@ -127,6 +127,13 @@ constexpr uintptr_t kFaultProbe = ${_fault_probe_address}u;
     configure_file(${FACET_BOARD_GENERATED}/facet_board_config.h.in ${FACET_BOARD_GENERATED}/facet_board_config.h COPYONLY)
     set(FACET_LINKER_SCRIPT ${CMAKE_SOURCE_DIR}/linker/${_linker}.ld)
     # A board that boots from flash and is not QEMU's: its firmware gets .bin and .hex images.
+    foreach(_i RANGE ${_last})
+        string(JSON _rn GET "${_json}" memory ${_i} name)
+        if(_rn STREQUAL "FLASH")
+            string(JSON _rb GET "${_json}" memory ${_i} bytes)
+            facet_board_bytes(${_rb} FACET_FLASH_FIRMWARE_BYTES)
+        endif()
+    endforeach()
     if(NOT _noflash AND _noqemu)
         set(FACET_BOARD_FLASH_IMAGE ON)
     else()
@@ -200,7 +207,8 @@ function(facet_firmware name)
                     -j .init_array -j .data $<TARGET_FILE:${name}> $<TARGET_FILE_DIR:${name}>/${name}.bin
             COMMAND ${CMAKE_OBJCOPY} -O ihex -j .boot_hdr -j .vectors -j .itcm_text -j .text -j .ARM.exidx
                     -j .init_array -j .data $<TARGET_FILE:${name}> $<TARGET_FILE_DIR:${name}>/${name}.hex
-            COMMAND ${CMAKE_COMMAND} -E echo "${name}: flash image ${name}.bin / .hex written"
+            COMMAND ${CMAKE_COMMAND} -DIMAGE=$<TARGET_FILE_DIR:${name}>/${name}.bin -DROOM=${FACET_FLASH_FIRMWARE_BYTES}
+                    -P ${CMAKE_SOURCE_DIR}/cmake/image_size.cmake
             VERBATIM)
     endif()
 endfunction()

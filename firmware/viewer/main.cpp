@@ -169,8 +169,10 @@ uint32_t now_us(void*) {
 void help(hal::Console& con) {
     print(con, "keys:");
     const KeyBindings keys = key_bindings();
-    for (uint32_t i = 0; i < keys.count; ++i)
-        if (keys.table[i].key < 0x80) print(con, " {}", char(keys.table[i].key));
+    for (uint32_t i = 0; i < keys.count; ++i) {
+        const char key[2] = {char(keys.table[i].key), 0};
+        if (keys.table[i].key < 0x80) print(con, " {}", key);
+    }
     print(con, " (turn, tilt, zoom, pan, fit, coarser/finer detail), h help, q quit;\n"
                "      !shot NAME<enter> takes a screenshot; mouse: left drag turns, right drag pans, middle drag zooms\n");
 }
