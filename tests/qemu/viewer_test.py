@@ -14,7 +14,7 @@ drag with the PS/2 mouse on versatilepb, zoom, fit, finer level of detail, quit)
     views under 10k triangles get the full 20 M). Printed for every run; asserted with
     --assert-budgets (the ctest runs on the ARM926 do).
 
-  viewer_test.py --board B --elf ELF --packer facet-pack --ref facet-sim --work DIR
+  viewer_test.py --board B --elf ELF --packer facet-pack --ref facet-sim --work DIR [--plain]
                  [--sample facet-sample-model] [--markdown FILE] MODEL.step...
 """
 import argparse
@@ -105,6 +105,8 @@ def main():
     ap.add_argument('--board', required=True)
     ap.add_argument('--elf', required=True)
     ap.add_argument('--packer', required=True)
+    ap.add_argument('--plain', action='store_true',
+                    help='plain packs, read in place (what ./facet flash puts on the EVKB); default deflated')
     ap.add_argument('--ref', required=True)
     ap.add_argument('--sample')
     ap.add_argument('--work', required=True)
@@ -125,7 +127,8 @@ def main():
     for model in models:
         name = os.path.splitext(os.path.basename(model))[0]
         fpk = os.path.join(args.work, name + '.fpk')
-        subprocess.run([args.packer, model, '-o', fpk, '--quiet'], check=True, capture_output=True)
+        subprocess.run([args.packer, model, '-o', fpk, '--quiet'] + (['--plain'] if args.plain else []),
+                       check=True, capture_output=True)
         out = os.path.join(args.work, name)
         ref = os.path.join(args.work, name + '-ref')
         os.makedirs(ref, exist_ok=True)
