@@ -54,6 +54,7 @@ def main():
     ap.add_argument('--image', required=True)
     ap.add_argument('--pack', required=True)
     ap.add_argument('--work', required=True)
+    ap.add_argument('--facet', help='also run ./facet flash itself (this script path) with no board and onto a fake drive')
     args = ap.parse_args()
     work = os.path.abspath(args.work)
     os.makedirs(work, exist_ok=True)
@@ -132,6 +133,19 @@ def main():
     r = subprocess.run([sys.executable, os.path.join(ROOT, 'tools', 'flash.py'), '--image', args.pack, '--pack', args.pack,
                         '--out', os.path.join(work, 'out-bad'), '--drive', drive], capture_output=True, text=True)
     check(r.returncode == 2 and 'no EVKB flash image' in r.stderr, f'an image that is no EVKB image: exit 2 ({r.returncode})')
+
+    # 6. ./facet flash itself (it builds, packs the sample part plain, calls the tool).
+    if args.facet:
+        env = dict(os.environ, FACET_FLASH_MOUNTS=empty_mounts)
+        r = subprocess.run([args.facet, 'flash'], capture_output=True, text=True, env=env)
+        check(r.returncode == 3 and 'To flash the MIMXRT1060-EVKB' in r.stderr, f'./facet flash, no board: exit 3 and the steps ({r.returncode})')
+        drive = fake_drive(os.path.join(work, 'FACET_FLASH'))
+        r = subprocess.run([args.facet, 'flash', '--drive', drive, '--wait', '0.5'], capture_output=True, text=True, env=env)
+        mem = read_hex(os.path.join(drive, 'FACET.HEX')) if os.path.exists(os.path.join(drive, 'FACET.HEX')) else {}
+        packed = os.path.join(ROOT, 'out', 'flash', 'model.fpk')
+        plain = open(packed, 'rb').read() if os.path.exists(packed) else b''
+        check(r.returncode == 0 and plain[:4] == b'FPK1' and holds(mem, b['pack_address'], plain) and holds(mem, flash_base, image),
+              f'./facet flash --drive: the firmware and the sample part\'s plain pack on the drive ({r.returncode}) {r.stderr[-300:]}')
 
     print(f'flash: {len(bad)} problem(s)')
     return 1 if bad else 0
