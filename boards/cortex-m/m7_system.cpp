@@ -39,8 +39,10 @@ void clean_dcache(const void* start, uint32_t bytes) {
     isb();
 }
 
+uint32_t mpu_regions() { return (reg(kMpuType) >> 8) & 0xFF; }
+
 bool program(const MpuRegion* regions, uint32_t count) {
-    const uint32_t available = (reg(kMpuType) >> 8) & 0xFF;
+    const uint32_t available = mpu_regions();
     if (count > available) return false;
     dsb();
     reg(kMpuCtrl) = 0;

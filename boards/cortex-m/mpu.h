@@ -46,5 +46,7 @@ uint32_t region_size(const MpuRegion& r);
 // Loads the regions and enables the MPU (and the MemManage, BusFault and UsageFault handlers).
 // False, with nothing changed, when the core has fewer regions than `count`.
 bool program(const MpuRegion* regions, uint32_t count);
+// How many data regions the core's MPU has (MPU_TYPE.DREGION).
+uint32_t mpu_regions();
 
 } // namespace facet::cortex_m

@@ -87,13 +87,14 @@ extern "C" [[noreturn]] void board_reset() {
     load_itcm();
     cortex_m::reg(cortex_m::kVtor) = uint32_t(reinterpret_cast<uintptr_t>(__vectors_start));
     runtime::init_memory();
-    const bool protected_ = protect_memory();
+    const uint32_t regions = protect_memory();
     clocks_init();
     pins_init();
     console.init(uart_hz(kClocks), 115200);
     clock.init();
     print(console, "\n@boot {} core {} MHz\n", board_config::kName, core_hz(kClocks) / 1'000'000);
-    if (!protected_) print(console, "board: the MPU has fewer regions than the memory plan; running unprotected\n");
+    if (regions) print(console, "@mpu {} regions of {}, caches on\n", regions, cortex_m::mpu_regions());
+    else print(console, "board: the MPU has fewer regions than the memory plan; running unprotected\n");
 
     panel_reset();
     i2c.init(kI2c100kHzAt10MHz);

@@ -50,13 +50,13 @@ uint32_t memory_ranges(cortex_m::Range* out, uint32_t max) {
     return n;
 }
 
-bool protect_memory() {
+uint32_t protect_memory() {
     cortex_m::Range ranges[8];
     cortex_m::MpuRegion regions[8];
     const uint32_t n = cortex_m::plan(ranges, memory_ranges(ranges, 8), regions, 8);
-    if (n == 0 || !cortex_m::program(regions, n)) return false;
+    if (n == 0 || !cortex_m::program(regions, n)) return 0;
     cortex_m::enable_caches();
-    return true;
+    return n;
 }
 
 } // namespace facet::evkb

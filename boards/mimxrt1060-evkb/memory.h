@@ -14,7 +14,8 @@ void load_itcm();
 // Returns how many ranges (at most 8: the Cortex-M7 in QEMU has 8 MPU regions).
 uint32_t memory_ranges(cortex_m::Range* out, uint32_t max);
 
-// Plans and loads the MPU, enables the caches. False when the MPU could not take the plan.
-bool protect_memory();
+// Plans and loads the MPU, enables the caches. Returns how many regions the plan took, 0 when
+// the MPU could not take it (fewer regions than the plan).
+uint32_t protect_memory();
 
 } // namespace facet::evkb

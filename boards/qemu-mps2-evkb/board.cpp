@@ -27,11 +27,12 @@ extern "C" [[noreturn]] void board_reset() {
     evkb::load_itcm();
     cortex_m::reg(cortex_m::kVtor) = uint32_t(reinterpret_cast<uintptr_t>(__vectors_start));
     runtime::init_memory();
-    const bool protected_ = evkb::protect_memory();
+    const uint32_t regions = evkb::protect_memory();
     mps2::start_peripherals();
-    if (!protected_) {
+    if (!regions) {
         print(hal::board().console, "board: the MPU has fewer regions than the memory plan\n");
         hal::exit(70);
     }
+    print(hal::board().console, "@mpu {} regions of {}, caches on\n", regions, cortex_m::mpu_regions());
     runtime::run_main();
 }
