@@ -1,5 +1,7 @@
 #include "pack_io.h"
 
+#include "file_io.h"
+
 #include "hal/print.h"
 
 #include "geom/pack_file.h"
@@ -8,8 +10,6 @@
 #include <zlib.h>
 
 #include <cstring>
-#include <fstream>
-#include <iterator>
 
 namespace facet::geom {
 
@@ -43,6 +43,7 @@ bool load_pack_bytes(const std::vector<uint8_t>& file, LoadedPack& out, std::str
         error = "not a facet pack (neither FPK1 nor FPZ1)";
         return false;
     case PackFileKind::Pack:
+        // Pack::open checks the size against the header and says so.
         out.words.resize((file.size() + 3) / 4);
         if (!file.empty()) std::memcpy(out.words.data(), file.data(), file.size());
         out.bytes = uint32_t(file.size());
@@ -51,6 +52,11 @@ bool load_pack_bytes(const std::vector<uint8_t>& file, LoadedPack& out, std::str
     }
     pack::DeflatedHead h{};
     if (file.size() >= sizeof h) std::memcpy(&h, file.data(), sizeof h);
+    if (file.size() >= sizeof h && uint64_t(sizeof h) + h.stream_bytes < file.size()) {
+        error = std::to_string(file.size() - sizeof h - h.stream_bytes) +
+                " bytes follow the deflated pack (appended or not one pack)";
+        return false;
+    }
     if (h.pack_bytes > pack::kMaxBytes) {
         error = "the pack would be larger than the 64 MiB limit";
         return false;
@@ -68,13 +74,14 @@ bool load_pack_bytes(const std::vector<uint8_t>& file, LoadedPack& out, std::str
 }
 
 bool load_pack_file(const std::string& path, LoadedPack& out, std::string& error) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        error = "cannot open " + path;
+    std::vector<uint8_t> file;
+    // A pack is at most kMaxBytes; a deflated one is smaller (or barely larger: a header).
+    if (!host::read_file(path, uint64_t(pack::kMaxBytes) + 4096, file, error)) return false;
+    if (!load_pack_bytes(file, out, error)) {
+        error = path + ": " + error;
         return false;
     }
-    const std::vector<uint8_t> file((std::istreambuf_iterator<char>(in)), {});
-    return load_pack_bytes(file, out, error);
+    return true;
 }
 
 } // namespace facet::geom

@@ -9,6 +9,12 @@ namespace facet::geom::detail {
 constexpr float kTwoPi = 6.28318530717958647692f;
 constexpr int32_t kGridHalf = 16384; // the face's (scaled) extent spans 2 * kGridHalf grid units
 
+// Edge sampling and refinement aim this far under the tolerance, where their bounds are exact
+// (a circle's sag, a cylinder's arc): the pack's float32 geometry leaves points a little off
+// their surfaces (up to about 1e-6 of the coordinates' size, 1e-4 mm on a 150 mm part), and
+// a mesh measured against the exact surfaces must stay within the tolerance all the same.
+constexpr float kAim = 0.98f;
+
 // Whether directions a and b turn by more than the angle whose cosine is cos_max, without
 // square roots or acos (long library calls on a soft-float core). A zero vector turns by nothing.
 inline bool turns_more(Vec3 a, Vec3 b, float cos_max) {
@@ -29,6 +35,12 @@ float max_arc_angle(float r, float tol);
 // next_loop says where to go on (np, nl 0 and next_loop 0 start a face).
 Result map_loops(const Pack& pack, uint32_t face, const EdgeSamples& edges, FaceScratch& sc, uint32_t& np,
                  uint32_t& nl, uint32_t& next_loop, uint32_t max_points);
+
+// Whether every loop of the face (as mapped) runs between at most two distinct 3D points:
+// a lens of two edges whose samples are their chords alone, a loop shrunk to a point. The
+// face then has no area at this tolerance, and its neighbours meet along those chords
+// directly: it needs no triangle for the mesh to stay closed.
+bool retraces(const FaceScratch& sc, uint32_t np, uint32_t nl);
 
 // Step 3b: after quantization (sc.loop_points), drop the points that fall on their
 // predecessor's grid point and the tips of collinear U-turns (two pcurves ending a hair apart

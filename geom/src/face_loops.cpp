@@ -181,6 +181,26 @@ Result map_loops(const Pack& pack, uint32_t fi, const EdgeSamples& edges, FaceSc
     return {};
 }
 
+bool retraces(const FaceScratch& sc, uint32_t np, uint32_t nl) {
+    auto same = [](Vec3 a, Vec3 b) { return a.x == b.x && a.y == b.y && a.z == b.z; };
+    uint32_t start = 0;
+    for (uint32_t l = 0; l < nl; ++l) {
+        const uint32_t n = sc.loop_sizes[l];
+        if (start + n > np) return false;
+        const Vec3 a = sc.xyz[start];
+        Vec3 b = a;
+        bool two = false;
+        for (uint32_t i = start + 1; i < start + n; ++i) {
+            const Vec3 p = sc.xyz[i];
+            if (same(p, a) || (two && same(p, b))) continue;
+            if (two) return false; // a third point
+            b = p, two = true;
+        }
+        start += n;
+    }
+    return true;
+}
+
 namespace {
 
 bool uturn(cdt::Point A, cdt::Point B, cdt::Point C) { // A -> B -> C folds straight back

@@ -243,6 +243,10 @@ Result inflate(std::span<const uint8_t> in, std::span<uint8_t> out, uint32_t& wr
         }
         if (!st.ok()) return st;
     }
+    if (bits.p != bits.end) {
+        // The last block ended inside the stream: what follows is not DEFLATE (appended bytes).
+        return Result::fail(Status::Corrupt, "bytes follow the DEFLATE stream's last block");
+    }
     written = o.at;
     return {};
 }

@@ -117,6 +117,10 @@ Result Pack::open(const void* data, uint32_t size) {
     if (std::memcmp(h->magic, kMagic, 4) != 0) return fail("not a facet pack (bad magic)", 0, 0);
     if (h->version != kVersion) return fail("unsupported version", 0, 0);
     if (h->header_bytes != sizeof(Header)) return fail("unexpected header size", 0, 0);
+    // Not covered by the CRC: a later version may give them a meaning, this one requires 0.
+    if (h->flags != 0 || h->reserved[0] != 0 || h->reserved[1] != 0 || h->reserved[2] != 0) {
+        return fail("the header's flags or reserved fields are not 0", 0, 0);
+    }
     if (h->total_bytes != size) return fail("size does not match the header (truncated or padded)", 0, 0);
     if (size > kMaxBytes) return fail("larger than the 64 MiB limit", 0, 0);
     if (h->section_count > kMaxSections) return fail("too many sections", 0, 0);

@@ -54,6 +54,9 @@ Result inflate_pack_file(std::span<const uint8_t> file, std::span<uint8_t> out, 
     if (h.pack_bytes > kMaxBytes) {
         return Result::fail(Status::Corrupt, "the pack would be larger than the 64 MiB limit", kFile);
     }
+    if (h.reserved != 0) {
+        return Result::fail(Status::Corrupt, "the deflated head's reserved field is not 0", kFile);
+    }
     if (h.pack_bytes > out.size()) {
         return Result::fail(Status::Full, "the inflated pack does not fit its memory", kFile);
     }

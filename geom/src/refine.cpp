@@ -35,7 +35,7 @@ using Tri = cdt::Triangle<uint16_t>;
 
 namespace {
 
-constexpr int kMaxRounds = 40;
+constexpr int kMaxRounds = 1000; // a safety net: a round that adds no point ends refinement
 
 // The deviation over a triangle, zero at its corners, is modelled as a cubic in the
 // barycentric coordinates l0, l1, l2 (exact for cubic deviations, which bend one way more than
@@ -249,7 +249,7 @@ Result refine(const Pack& pack, uint32_t fi, const TessOptions& opt, const Grid&
     const Surface& S = pack.surfaces()[F.surface];
     spent = 0;
     if (S.type == uint8_t(SurfaceType::Plane)) return {}; // flat: nothing to add
-    const Context ctx(pack, F, S, opt.tolerance, sc, cdt);
+    const Context ctx(pack, F, S, opt.tolerance * kAim, sc, cdt);
     if (sc.measured.size() < cdt::triangles_for(cdt.vertex_capacity())) {
         return Result::fail(Status::Full, "the refinement's triangle measures are fewer than the arena's triangles");
     }

@@ -115,6 +115,7 @@ void EdgeSampler::start(const Pack& pack, const TessOptions& opt, EdgeSamples& o
     // A thin face's two sides must not cross: its edges' sag stays under their limit.
     opt_ = opt;
     if (E.max_sag > 0 && E.max_sag < opt.tolerance) opt_.tolerance = E.max_sag;
+    opt_.tolerance *= detail::kAim;
     start_ = out.used;
     out.first[e] = out.used;
     adaptive_ = false;

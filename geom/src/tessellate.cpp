@@ -284,10 +284,18 @@ Result FaceJob::run(uint32_t units) {
         spent += np_ - np0;
         if (m.status == Status::Busy) return busy;
         if (!m.ok()) return fail(m);
-        if (Result r = prepare(); !r.ok()) return fail(r);
+        if (detail::retraces(sc, np_, nl_)) { // no area at this tolerance: no triangle
+            np_ = nl_ = 0;
+            stage_ = Stage::Emit;
+            stats_ = {};
+        } else if (Result r = prepare(); !r.ok()) {
+            return fail(r);
+        }
         spent += 1 + np_ / 16;
         stats_.points = np_;
-        if (nl_ == 0) {
+        if (stage_ == Stage::Emit) {
+            // no area (above)
+        } else if (nl_ == 0) {
             stage_ = Stage::Emit; // slivers alone
         } else {
             // 4. Triangulate the loops.

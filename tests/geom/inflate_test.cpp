@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 #include <zlib.h>
 
+#include <cstddef>
 #include <cstring>
 #include <random>
 #include <string>
@@ -231,4 +232,50 @@ TEST(PackFile, PlainPacksPassAndOtherBytesAreRefused) {
     std::string error;
     EXPECT_FALSE(load_pack_bytes(file, loaded, error));
     EXPECT_NE(error.find("truncated"), std::string::npos) << error;
+}
+
+// Reliability finding: bytes appended to a deflated pack, and non-zero reserved fields (which the
+// CRC does not cover), were accepted. Each is refused with its reason.
+TEST(PackFile, TrailingBytesAndReservedFieldsAreRefused) {
+    const Bytes plain = triangle_pack();
+    LoadedPack loaded;
+    std::string error;
+
+    Bytes file = deflate_pack(plain);
+    ASSERT_TRUE(load_pack_bytes(file, loaded, error)) << error;
+    Bytes longer = file;
+    longer.insert(longer.end(), {'j', 'u', 'n', 'k'});
+    EXPECT_FALSE(load_pack_bytes(longer, loaded, error));
+    EXPECT_EQ(error, "4 bytes follow the deflated pack (appended or not one pack)");
+
+    // The head made to cover the junk too: the decoder sees bytes after the last block.
+    pack::DeflatedHead h;
+    std::memcpy(&h, longer.data(), sizeof h);
+    h.stream_bytes += 4;
+    std::memcpy(longer.data(), &h, sizeof h);
+    EXPECT_FALSE(load_pack_bytes(longer, loaded, error));
+    EXPECT_NE(error.find("bytes follow the DEFLATE stream's last block"), std::string::npos) << error;
+
+    Bytes reserved = file;
+    reserved[12] = 1; // DeflatedHead::reserved
+    EXPECT_FALSE(load_pack_bytes(reserved, loaded, error));
+    EXPECT_NE(error.find("reserved field is not 0"), std::string::npos) << error;
+
+    // A plain pack: appended bytes and non-zero flags or reserved words.
+    Bytes padded = plain;
+    padded.insert(padded.end(), 4, 0);
+    std::vector<uint32_t> words(padded.size() / 4 + 1);
+    std::memcpy(words.data(), padded.data(), padded.size());
+    Pack p;
+    Result r = p.open(words.data(), uint32_t(padded.size()));
+    EXPECT_EQ(r.status, Status::Corrupt);
+    EXPECT_STREQ(r.what, "size does not match the header (truncated or padded)");
+    for (const size_t offset : {offsetof(pack::Header, flags), offsetof(pack::Header, reserved) + 8}) {
+        Bytes changed = plain;
+        changed[offset] = 0x80;
+        std::memcpy(words.data(), changed.data(), changed.size());
+        r = p.open(words.data(), uint32_t(changed.size()));
+        EXPECT_EQ(r.status, Status::Corrupt) << offset;
+        EXPECT_STREQ(r.what, "the header's flags or reserved fields are not 0");
+    }
 }

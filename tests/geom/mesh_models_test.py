@@ -6,7 +6,9 @@ Asserted for every model that packs, at both tolerances:
   * every face yields triangles (a face that cannot be triangulated is a failure, with the
     reason facet-mesh gives for it);
   * the measured deviation (facet-mesh samples every triangle inside and along its edges and
-    measures the distance to the exact surface) is within the tolerance;
+    measures the distance to the exact surface) is within the tolerance (plus, on a face whose
+    B-rep edges stray from its surface, that gap: bench/sweep.py explains);
+  * facet-mesh's exit code says the same (0; 5 incomplete; 6 over the tolerance);
   * every closed shell (a solid whose faces share all their edges) is watertight: no free and
     no non-manifold edge. Edges where two faces of the B-rep itself overlap (a triangle with
     the same three points in two faces) are counted apart and printed;
@@ -27,9 +29,9 @@ GOLDEN = {
     'ndr_pivot_pin.stp': 212,
     'screw.step': 328,
     'mic6_bed.step': 316,
-    'sg1_c5_214.stp': 520,
-    'io1_cm_214.stp': 1316,
-    'anc101.stp': 1582,
+    'sg1_c5_214.stp': 544,
+    'io1_cm_214.stp': 1320,
+    'anc101.stp': 1592,
 }
 
 
@@ -37,21 +39,31 @@ def mesh(args, fpk, rep, tolerance=None, extra=()):
     cmd = [args.mesher, fpk, '--json', rep] + list(extra)
     if tolerance:
         cmd += ['--tolerance', repr(tolerance)]
+    if os.path.exists(rep):
+        os.unlink(rep)
     m = subprocess.run(cmd, capture_output=True, text=True, timeout=600)
-    if m.returncode != 0 or not os.path.exists(rep):
+    # 5: incomplete mesh, 6: over the tolerance -- the report is written, check() says what.
+    if m.returncode not in (0, 5, 6) or not os.path.exists(rep):
         return None, f'facet-mesh exit {m.returncode}: {m.stderr.strip()[-300:]}'
-    return json.load(open(rep)), m.stderr.strip()
+    r = json.load(open(rep))
+    r['exit'] = m.returncode
+    return r, m.stderr.strip()
 
 
 def check(name, r, messages, bad, label):
     if r['faces_failed']:
         detail = '; '.join(l for l in messages.splitlines() if ': face ' in l or 'face' in l)[:400]
         bad.append(f"{name} ({label}): {r['faces_failed']} of {r['faces']} faces not triangulated: {detail}")
-    if r['max_deviation'] > r['tolerance']:
-        bad.append(f"{name} ({label}): deviation {r['max_deviation']:.4f} over the tolerance {r['tolerance']:.4f}")
+    if r['faces_over']:
+        bad.append(f"{name} ({label}): deviation {r['max_deviation']:.4f} over the tolerance {r['tolerance']:.4f} "
+                   f"(and the B-rep's own gap) on {r['faces_over']} faces")
     if r['watertight_closed_shells'] != r['closed_shells']:
         bad.append(f"{name} ({label}): {r['closed_shells'] - r['watertight_closed_shells']} of {r['closed_shells']} "
                    f"closed shells not watertight ({r['free_edges']} free, {r['nonmanifold_edges']} non-manifold edges)")
+    incomplete = r['faces_failed'] or r['watertight_closed_shells'] != r['closed_shells']
+    expected = 5 if incomplete else 6 if r['faces_over'] else 0
+    if r['exit'] != expected:
+        bad.append(f"{name} ({label}): facet-mesh exit {r['exit']}, expected {expected}")
 
 
 def main():
@@ -97,7 +109,7 @@ def main():
     closed = sum(r['closed_shells'] for r in rows)
     tight = sum(r['watertight_closed_shells'] for r in rows)
     print(f'{len(rows)} models meshed: {faces - failed} of {faces} faces triangulated; {tight} of {closed} closed '
-          f'shells watertight; {sum(1 for r in rows if r["max_deviation"] <= r["tolerance"])} of {len(rows)} within tolerance')
+          f'shells watertight; {sum(1 for r in rows if not r["faces_over"])} of {len(rows)} within tolerance')
     for b in bad:
         print('FAIL', b)
     return 1 if bad else 0

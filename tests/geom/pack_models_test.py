@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
-"""Every STEP file in ../shared/models packs, or fails with a clear reason.
+"""Every STEP file in ../shared/models packs.
 
-For each model: facet-pack must either exit 0 and write a pack that the device's reader
-(facet-pack --check) validates, or exit 1 with a 'facet-pack: error: ...' line. A crash, a
-signal, a timeout, or a pack the reader refuses fails the test. Prints one line per model
+For each model: facet-pack must exit 0 and write a pack that the device's reader (facet-pack
+--check) validates, with every face of the file's shells (ndr_part01 too: no product structure,
+no unit, read as metres). A refusal (exit 1 with its 'facet-pack: error: ...' line, printed), a
+crash, a signal, a timeout, or a pack the reader refuses fails the test. Prints one line per model
 (faces by surface type, pack file size as % of the STEP file) and the counts, and writes them to
 WORK/pack-models.json.
 """
@@ -50,6 +51,7 @@ def main():
             reason = r.stderr.strip().splitlines()[-1]
             rows.append({'model': f, 'status': 'refused', 'reason': reason})
             print(f'refused {f}: {reason}')
+            bad.append(f'{f}: refused: {reason}')
         else:
             bad.append(f'{f}: exit {r.returncode} without a clear message: {r.stderr.strip()[-300:]}')
     packed = sum(r['status'] == 'packed' for r in rows)

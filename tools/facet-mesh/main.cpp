@@ -3,9 +3,15 @@
 // surfaces, free and non-manifold edges, the share of thin triangles, time.
 //
 //   facet-mesh MODEL.fpk [--stl|--obj|--ply FILE] [--json REPORT] [--tolerance MM] [--angle RAD] [--faces]
-//              [--pieces UNITS]
+//              [--pieces UNITS] [--face-points N] [--quiet]
 // --pieces: each face tessellated in pieces of UNITS (geom::FaceJob), as the device does; the
-// mesh must be the very one made at once.
+// mesh must be the very one made at once. --face-points: the CDT arena's capacity in points
+// (default and most: 32,760, the 16-bit arena), to try a device's smaller one.
+//
+// Exit codes: 0 a complete mesh within the tolerance; 1 error (bad input, a failed write);
+// 2 usage; 5 incomplete mesh (a face failed or a closed shell is not watertight); 6 a face
+// strays further from its surface than the tolerance plus the B-rep's own gap there (its
+// edges' tolerance: a file whose curves miss its surfaces). With 5 or 6 the outputs are written.
 //
 // Measured once per shell (a part placed several times is one mesh): the deviation on a
 // barycentric grid in every triangle and along its edges (geom/deviation.h); the topology
@@ -16,17 +22,20 @@
 #include "hal/print.h"
 #include "geom/pack.h"
 #include "geom/tessellate.h"
+#include "file_io.h"
 #include "mesh_topology.h"
 #include "pack_io.h"
 
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
 #include <map>
+#include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -55,43 +64,56 @@ Vec3 turn(const float* m, Vec3 n) {
                        m[8] * n.x + m[9] * n.y + m[10] * n.z});
 }
 
-bool write_stl(const std::string& path, const Output& o) {
-    std::ofstream f(path, std::ios::binary);
-    char header[80] = "facet-mesh";
-    f.write(header, 80);
+// The mesh as a binary STL, an OBJ or a PLY, in memory (the write is then checked as a whole).
+std::string stl(const Output& o) {
+    std::string f(80, '\0');
+    std::memcpy(f.data(), "facet-mesh", 10);
     const uint32_t n = uint32_t(o.tri.size() / 3);
-    f.write(reinterpret_cast<const char*>(&n), 4);
+    f.append(reinterpret_cast<const char*>(&n), 4);
     for (uint32_t t = 0; t < n; ++t) {
         const Vec3 a = o.p[o.tri[3 * t]], b = o.p[o.tri[3 * t + 1]], c = o.p[o.tri[3 * t + 2]];
         const Vec3 nn = normalized(cross(b - a, c - a));
         const float rec[12] = {nn.x, nn.y, nn.z, a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z};
-        f.write(reinterpret_cast<const char*>(rec), 48);
-        const uint16_t attr = 0;
-        f.write(reinterpret_cast<const char*>(&attr), 2);
+        f.append(reinterpret_cast<const char*>(rec), 48);
+        f.append(2, '\0'); // attribute bytes
     }
-    return bool(f);
+    return f;
 }
 
-bool write_obj(const std::string& path, const Output& o) {
-    std::ofstream f(path);
+std::string obj(const Output& o) {
+    std::ostringstream f;
     f << "# facet-mesh\n";
     for (size_t i = 0; i < o.p.size(); ++i) f << "v " << o.p[i].x << ' ' << o.p[i].y << ' ' << o.p[i].z << '\n';
     for (size_t i = 0; i < o.n.size(); ++i) f << "vn " << o.n[i].x << ' ' << o.n[i].y << ' ' << o.n[i].z << '\n';
     for (size_t t = 0; t + 2 < o.tri.size(); t += 3)
         f << "f " << o.tri[t] + 1 << "//" << o.tri[t] + 1 << ' ' << o.tri[t + 1] + 1 << "//" << o.tri[t + 1] + 1 << ' '
           << o.tri[t + 2] + 1 << "//" << o.tri[t + 2] + 1 << '\n';
-    return bool(f);
+    return f.str();
 }
 
-bool write_ply(const std::string& path, const Output& o) {
-    std::ofstream f(path);
+std::string ply(const Output& o) {
+    std::ostringstream f;
     f << "ply\nformat ascii 1.0\nelement vertex " << o.p.size()
       << "\nproperty float x\nproperty float y\nproperty float z\nproperty float nx\nproperty float ny\nproperty float nz\n"
       << "element face " << o.tri.size() / 3 << "\nproperty list uchar int vertex_indices\nend_header\n";
     for (size_t i = 0; i < o.p.size(); ++i)
         f << o.p[i].x << ' ' << o.p[i].y << ' ' << o.p[i].z << ' ' << o.n[i].x << ' ' << o.n[i].y << ' ' << o.n[i].z << '\n';
     for (size_t t = 0; t + 2 < o.tri.size(); t += 3) f << "3 " << o.tri[t] << ' ' << o.tri[t + 1] << ' ' << o.tri[t + 2] << '\n';
-    return bool(f);
+    return f.str();
+}
+
+// A number for an option, all of the text, finite and within [lo, hi]; else a message.
+bool number(const char* option, const char* text, double lo, double hi, double& out, std::string& error) {
+    char* end = nullptr;
+    errno = 0;
+    out = std::strtod(text, &end);
+    if (end == text || *end != '\0' || errno == ERANGE || !std::isfinite(out) || out < lo || out > hi) {
+        std::ostringstream m;
+        m << option << " " << text << ": a number from " << lo << " to " << hi << " is needed";
+        error = m.str();
+        return false;
+    }
+    return true;
 }
 
 } // namespace
@@ -99,26 +121,40 @@ bool write_ply(const std::string& path, const Output& o) {
 int main(int argc, char** argv) {
     const char* in = nullptr;
     std::string out, format, json;
-    float tolerance = 0, angle = 0;
+    double tolerance = 0, angle = 0, face_points = 32760, pieces = 0; // pieces: units per piece; 0: each face at once
     bool quiet = false, per_face = false;
-    uint32_t pieces = 0; // units per piece; 0: each face at once
-    const char* usage = "usage: facet-mesh MODEL.fpk [--stl|--obj|--ply FILE] [--json REPORT] [--tolerance MM] [--angle RAD] [--faces] [--pieces UNITS] [--quiet]";
+    const char* usage = "usage: facet-mesh MODEL.fpk [--stl|--obj|--ply FILE] [--json REPORT] [--tolerance MM] [--angle RAD] [--faces] "
+                        "[--pieces UNITS] [--face-points N] [--quiet]";
+    std::string error;
+    auto bad = [&](const std::string& m) {
+        std::fprintf(stderr, "facet-mesh: error: %s\n", m.c_str());
+        return 2;
+    };
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
-        if ((a == "--stl" || a == "--obj" || a == "--ply") && i + 1 < argc) format = a.substr(2), out = argv[++i];
-        else if (a == "--json" && i + 1 < argc) json = argv[++i];
-        else if (a == "--tolerance" && i + 1 < argc) tolerance = std::strtof(argv[++i], nullptr);
-        else if (a == "--angle" && i + 1 < argc) angle = std::strtof(argv[++i], nullptr);
-        else if (a == "--quiet") quiet = true;
-        else if (a == "--pieces" && i + 1 < argc) pieces = uint32_t(std::strtoul(argv[++i], nullptr, 10));
+        const bool has_value = i + 1 < argc;
+        if ((a == "--stl" || a == "--obj" || a == "--ply") && has_value && out.empty()) format = a.substr(2), out = argv[++i];
+        else if (a == "--json" && has_value && json.empty()) json = argv[++i];
+        else if (a == "--tolerance" && has_value) {
+            if (!number("--tolerance", argv[++i], 1e-9, 1e9, tolerance, error)) return bad(error + " (millimetres, more than 0)");
+        } else if (a == "--angle" && has_value) {
+            if (!number("--angle", argv[++i], 1e-3, 3.14159, angle, error)) return bad(error + " (radians)");
+        } else if (a == "--pieces" && has_value) {
+            if (!number("--pieces", argv[++i], 1, 1e9, pieces, error)) return bad(error);
+        } else if (a == "--face-points" && has_value) {
+            if (!number("--face-points", argv[++i], 16, 32760, face_points, error)) return bad(error);
+        } else if (a == "--quiet") quiet = true;
         else if (a == "--faces") per_face = true;
-        else if (a[0] != '-' && !in) in = argv[i];
-        else return die(usage);
+        else if (!a.empty() && a[0] != '-' && !in) in = argv[i];
+        else return bad(usage);
     }
-    if (!in) return die(usage);
+    if (!in) return bad(usage);
+    for (const std::string* o : {&out, &json}) {
+        if (!o->empty() && host::same_file(in, *o)) return bad("the output " + *o + " is the pack itself: it would be overwritten");
+    }
+    if (!out.empty() && !json.empty() && (out == json || host::same_file(out, json))) return bad("the mesh and the report would be one file");
     LoadedPack file;
-    std::string error;
-    if (!load_pack_file(in, file, error)) return die(std::string(in) + ": " + error);
+    if (!load_pack_file(in, file, error)) return die(error);
     Pack pack;
     char text[200];
     if (const Result r = pack.open(file.data(), file.bytes); !r.ok()) {
@@ -127,23 +163,50 @@ int main(int argc, char** argv) {
     }
 
     TessOptions opt;
-    opt.tolerance = tolerance > 0 ? tolerance : default_tolerance(pack);
-    if (angle > 0) opt.max_angle = angle;
+    opt.tolerance = tolerance > 0 ? float(tolerance) : default_tolerance(pack);
+    if (angle > 0) opt.max_angle = float(angle);
 
-    // Buffers: edge samples (once per edge, shared by every face and instance), the device's
-    // 16-bit CDT arena at its largest, one shell's mesh.
+    // Buffers: edge samples (once per edge, shared by every face and instance; the pool grows
+    // until it holds them), the device's 16-bit CDT arena, one shell's mesh.
     const size_t ne = pack.edges().size();
     std::vector<uint32_t> ef(ne);
     std::vector<uint16_t> ec(ne);
-    std::vector<float> et(ne * 64 + 1024);
-    std::vector<Vec3> ep(ne * 64 + 1024);
-    constexpr size_t kV = 32000;
+    std::vector<float> et;
+    std::vector<Vec3> ep;
+    EdgeSamples samples{};
+    const auto t_start = std::chrono::steady_clock::now();
+    for (size_t pool = ne * 64 + 1024;; pool *= 4) {
+        et.assign(pool, 0.0f);
+        ep.assign(pool, Vec3{});
+        samples = EdgeSamples{ef, ec, et, ep};
+        const Result r = sample_edges(pack, opt, samples);
+        if (r.ok()) break;
+        describe(r, text, sizeof text);
+        if (r.status != Status::Full || pool > (size_t(1) << 26)) {
+            // Say which tolerance does work: the first of 4x, 16x, ... coarser that samples.
+            std::string hint;
+            for (float t = opt.tolerance * 4; r.status == Status::Full && t < 1e9f; t *= 4) {
+                TessOptions o = opt;
+                o.tolerance = t;
+                EdgeSamples trial{ef, ec, et, ep};
+                if (sample_edges(pack, o, trial).ok()) {
+                    char h[120];
+                    std::snprintf(h, sizeof h, "; --tolerance %.4g mm samples every edge (the default is %.4g mm)", t,
+                                  default_tolerance(pack));
+                    hint = h;
+                    break;
+                }
+            }
+            return die(std::string("edge sampling at --tolerance ") + std::to_string(opt.tolerance) + " mm: " + text + hint);
+        }
+    }
+    const size_t kV = size_t(face_points);
     std::vector<cdt::Vertex<uint16_t>> av(kV);
     std::vector<cdt::Triangle<uint16_t>> at(cdt::triangles_for(kV));
     std::vector<uint16_t> aw(cdt::work_for(kV)), ao(kV), am(kV), ai(kV);
     std::vector<uint32_t> ak(kV);
     std::vector<cdt::Point> lp(kV);
-    std::vector<uint32_t> ls(4096), mesh_of(kV);
+    std::vector<uint32_t> ls(kV), mesh_of(kV); // loops: each has points
     std::vector<Vec2> uvs(kV);
     std::vector<Vec3> xyz(kV);
     std::vector<uint8_t> pinned(kV);
@@ -163,13 +226,8 @@ int main(int argc, char** argv) {
     std::vector<ShellMesh> shells(pack.shells().size());
     uint32_t faces = 0, failed = 0;
     std::map<std::string, uint32_t> reasons;
+    std::set<uint32_t> failed_face;
     std::vector<std::string> failures;
-    const auto t_start = std::chrono::steady_clock::now();
-    EdgeSamples samples{ef, ec, et, ep};
-    if (const Result r = sample_edges(pack, opt, samples); !r.ok()) {
-        describe(r, text, sizeof text);
-        return die(std::string("edge sampling: ") + text);
-    }
     for (uint32_t s = 0; s < pack.shells().size(); ++s) {
         const pack::Shell& sh = pack.shells()[s];
         Mesh mesh{mv, mi, muv};
@@ -181,7 +239,7 @@ int main(int argc, char** argv) {
             if (pieces) { // as the device: a piece at a time
                 FaceJob job;
                 job.start(pack, fi, samples, opt, sc, mesh);
-                while ((r = job.run(pieces)).status == Status::Busy) {
+                while ((r = job.run(uint32_t(pieces))).status == Status::Busy) {
                 }
                 st = job.stats();
             } else {
@@ -190,6 +248,7 @@ int main(int argc, char** argv) {
             ++faces;
             if (!r.ok()) {
                 ++failed;
+                failed_face.insert(fi);
                 ++reasons[r.what];
                 describe(r, text, sizeof text);
                 failures.push_back(std::string(text) + " (" + status_name(r.status) + ")");
@@ -254,9 +313,9 @@ int main(int argc, char** argv) {
         if (pack.shells()[s].closed) {
             ++closed;
             const pack::Shell& sh = pack.shells()[s];
+            // (A face may rightly have no triangle: one with no area at this tolerance.)
             bool all_faces = true;
-            for (uint32_t fi = sh.first_face; fi < sh.first_face + sh.face_count; ++fi)
-                all_faces = all_faces && std::find(m.face.begin(), m.face.end(), fi) != m.face.end();
+            for (uint32_t fi = sh.first_face; fi < sh.first_face + sh.face_count; ++fi) all_faces = all_faces && !failed_face.count(fi);
             if (!fr && !nm && all_faces) ++watertight;
             else if (!quiet) std::fprintf(stderr, "facet-mesh: closed shell %u is not watertight: %u free, %u non-manifold edges%s\n", s, fr, nm, all_faces ? "" : ", a face failed");
             if (overlap > overlap_before && !quiet) {
@@ -281,11 +340,31 @@ int main(int argc, char** argv) {
     float max_edge_tolerance = 0; // the B-rep's loosest edge
     for (const pack::Edge& e : pack.edges()) max_edge_tolerance = std::max(max_edge_tolerance, e.tolerance);
     const double thin_share = shell_triangles ? double(thin) / shell_triangles : 0;
-    if (!out.empty()) {
-        const bool okw = format == "stl" ? write_stl(out, o) : format == "obj" ? write_obj(out, o) : write_ply(out, o);
-        if (!okw) return die("cannot write " + out);
+    // A face's allowance: the tolerance, plus how far the B-rep's own edges stray from its
+    // surface (their tolerance: a file whose curves and surfaces disagree; the edges' samples
+    // lie on the curves). Within it everywhere, the mesh is as close as the B-rep allows.
+    auto looseness = [&](uint32_t fi) {
+        const pack::Face& F = pack.faces()[fi];
+        float loose = 0;
+        for (uint32_t l = F.first_loop; l < F.first_loop + F.loop_count; ++l)
+            for (uint32_t c = pack.loops()[l].first_coedge; c < pack.loops()[l].first_coedge + pack.loops()[l].coedge_count; ++c)
+                loose = std::max(loose, pack.edges()[pack.coedges()[c].edge()].tolerance);
+        return loose;
+    };
+    double worst_ratio = 0; // deviation / allowance, over the faces
+    uint32_t loose_faces = 0, over_faces = 0;
+    for (auto& [fi, d] : face_dev) {
+        const float loose = looseness(fi);
+        loose_faces += loose > opt.tolerance;
+        const double ratio = d / (opt.tolerance + loose);
+        worst_ratio = std::max(worst_ratio, ratio);
+        over_faces += ratio > 1;
     }
-    std::printf("%s: %u faces, %u failed, %u triangles (%u per distinct part), max deviation %.4f mm (tolerance %.4f), "
+    if (!out.empty()) {
+        const std::string bytes = format == "stl" ? stl(o) : format == "obj" ? obj(o) : ply(o);
+        if (!host::write_file(out, bytes, error)) return die(error);
+    }
+    std::printf("%s: %u faces, %u failed, %u triangles (%u per distinct part), max deviation %.4g mm (tolerance %.4g), "
                 "free edges %u, non-manifold edges %u (+%u where faces overlap), closed shells watertight %u of %u, thin (<5 deg) %.1f%%, %.1f ms\n",
                 in, faces, failed, ntri, shell_triangles, max_dev, opt.tolerance, free_edges, nonmanifold, overlap, watertight, closed,
                 100 * thin_share, ms);
@@ -294,26 +373,34 @@ int main(int argc, char** argv) {
         for (const std::string& f : failures) std::fprintf(stderr, "facet-mesh: %s\n", f.c_str());
         for (auto& [fi, d] : face_dev) {
             if (d > opt.tolerance) {
-                // Where the B-rep itself is loose (its edges' own tolerance over the mesh's), the
-                // edges' samples can be that far from the surface.
-                const pack::Face& F = pack.faces()[fi];
-                float loose = 0;
-                for (uint32_t l = F.first_loop; l < F.first_loop + F.loop_count; ++l)
-                    for (uint32_t c = pack.loops()[l].first_coedge; c < pack.loops()[l].first_coedge + pack.loops()[l].coedge_count; ++c)
-                        loose = std::max(loose, pack.edges()[pack.coedges()[c].edge()].tolerance);
-                std::printf("  face %u (surface type %u): deviation %.4f mm over the tolerance; its edges' B-rep tolerance %.4g mm\n", fi,
-                            pack.surfaces()[F.surface].type, d, loose);
+                const float loose = looseness(fi);
+                std::printf("  face %u (surface type %u): deviation %.4g mm over the tolerance; its edges' B-rep tolerance %.4g mm: %s\n", fi,
+                            pack.surfaces()[pack.faces()[fi].surface].type, d, loose,
+                            d <= opt.tolerance + loose ? "within the two together (the B-rep's own gap)" : "OVER both together");
             }
         }
     }
     if (!json.empty()) {
-        std::ofstream j(json);
+        std::ostringstream j;
         j << "{\"faces\": " << faces << ", \"faces_failed\": " << failed << ", \"triangles\": " << ntri
           << ", \"part_triangles\": " << shell_triangles << ", \"max_deviation\": " << max_dev
           << ", \"tolerance\": " << opt.tolerance << ", \"free_edges\": " << free_edges
           << ", \"nonmanifold_edges\": " << nonmanifold << ", \"overlap_edges\": " << overlap << ", \"closed_shells\": " << closed
           << ", \"watertight_closed_shells\": " << watertight << ", \"small_angle_share\": " << thin_share
-          << ", \"max_edge_tolerance\": " << max_edge_tolerance << ", \"ms\": " << ms << "}\n";
+          << ", \"max_edge_tolerance\": " << max_edge_tolerance << ", \"deviation_ratio\": " << worst_ratio
+          << ", \"loose_faces\": " << loose_faces << ", \"faces_over\": " << over_faces << ", \"ms\": " << ms << "}\n";
+        if (!host::write_file(json, j.str(), error)) return die(error);
+    }
+    if (failed || watertight < closed) {
+        if (!quiet) std::fprintf(stderr, "facet-mesh: incomplete mesh: %u of %u faces failed, %u of %u closed shells not watertight (exit 5)\n", failed, faces, closed - watertight, closed);
+        return 5;
+    }
+    if (over_faces) {
+        if (!quiet) {
+            std::fprintf(stderr, "facet-mesh: %u faces stray from their surfaces by more than the tolerance %.4g mm (and their B-rep's own gap): "
+                         "up to %.4gx (exit 6)\n", over_faces, opt.tolerance, worst_ratio);
+        }
+        return 6;
     }
     return 0;
 }

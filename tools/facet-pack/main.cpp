@@ -1,14 +1,19 @@
 // facet-pack: STEP (AP203/AP214/AP242) -> facet pack, with Open CASCADE.
 //
-//   facet-pack model.step -o model.fpk [--plain]   pack (deflated unless --plain), print a summary
+//   facet-pack model.step -o model.fpk [--plain] [--unit U] [--partial] [--quiet]
+//                                                  pack (deflated unless --plain), print a summary
 //   facet-pack --check model.fpk                   validate a pack file with the device's code
 //
 // Reads with the XCAF reader (units converted to mm, assemblies, colours from styled items),
 // heals each solid and shell with ShapeFix, and writes every face's exact surface, its loops
 // of edges with their 3D curves and pcurves, and the colours. Exits non-zero with a clear
-// message on unreadable or empty input.
+// message on unreadable or empty input, and when a face of the file is lost on the way
+// (a reference to nothing, a face Open CASCADE cannot make) unless --partial says to pack the
+// rest. --unit: the length unit of a file that gives none (default: guessed from its size).
+// Exit codes: 0 packed (or valid), 1 error (the reason on stderr; no file left behind), 2 usage.
 #include "geom/pack.h"
 #include "hal/print.h"
+#include "file_io.h"
 #include "occt_to_pack.h"
 #include "pack_io.h"
 #include "pack_writer.h"
@@ -33,9 +38,10 @@
 #include <XCAFDoc_ShapeTool.hxx>
 #include <XSControl_WorkSession.hxx>
 
+#include <algorithm>
+#include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
 #include <string>
 #include <sys/stat.h>
 #include <vector>
@@ -45,7 +51,8 @@ using namespace facet;
 namespace {
 
 int usage() {
-    std::fprintf(stderr, "usage: facet-pack MODEL.step -o MODEL.fpk [--plain] [--quiet]\n       facet-pack --check MODEL.fpk\n");
+    std::fprintf(stderr, "usage: facet-pack MODEL.step -o MODEL.fpk [--plain] [--unit mm|cm|m|in|ft] [--partial] [--quiet]\n"
+                         "       facet-pack --check MODEL.fpk\n");
     return 2;
 }
 
@@ -57,7 +64,7 @@ int die(const std::string& msg) {
 int check(const char* path) {
     geom::LoadedPack file;
     std::string error;
-    if (!geom::load_pack_file(path, file, error)) return die(std::string(path) + ": " + error);
+    if (!geom::load_pack_file(path, file, error)) return die(error);
     geom::Pack pack;
     if (const Result r = pack.open(file.data(), file.bytes); !r.ok()) {
         char text[160];
@@ -75,24 +82,42 @@ int check(const char* path) {
 
 int main(int argc, char** argv) {
     const char *in = nullptr, *out = nullptr;
-    bool quiet = false, plain = false;
+    bool quiet = false, plain = false, partial = false;
+    packer::UnitGuess unit = packer::UnitGuess::BySize;
     for (int i = 1; i < argc; ++i) {
-        if (!std::strcmp(argv[i], "--check") && i + 1 < argc) return check(argv[i + 1]);
-        if (!std::strcmp(argv[i], "-o") && i + 1 < argc) out = argv[++i];
+        if (!std::strcmp(argv[i], "--check") && i + 1 < argc) return argc == 3 ? check(argv[i + 1]) : usage();
+        if (!std::strcmp(argv[i], "-o") && i + 1 < argc && !out) out = argv[++i];
         else if (!std::strcmp(argv[i], "--quiet")) quiet = true;
         else if (!std::strcmp(argv[i], "--plain")) plain = true;
-        else if (argv[i][0] == '-') return usage();
+        else if (!std::strcmp(argv[i], "--partial")) partial = true;
+        else if (!std::strcmp(argv[i], "--unit") && i + 1 < argc) {
+            if (!packer::parse_unit(argv[++i], unit)) {
+                std::fprintf(stderr, "facet-pack: error: --unit %s: one of mm, cm, m, in, ft\n", argv[i]);
+                return 2;
+            }
+        } else if (argv[i][0] == '-' || in) return usage();
         else in = argv[i];
     }
     if (!in || !out) return usage();
     struct stat st {};
-    if (stat(in, &st) != 0) return die(std::string("cannot read ") + in);
+    if (stat(in, &st) != 0) return die(std::string("cannot read ") + in + ": " + std::strerror(errno));
+    if (S_ISDIR(st.st_mode)) return die(std::string(in) + " is a directory, not a STEP file");
+    if (!S_ISREG(st.st_mode)) return die(std::string(in) + " is not a regular file");
+    if (host::same_file(in, out)) return die(std::string("-o ") + out + " is the STEP file itself: it would be overwritten");
     // OCCT's own trace messages are noise for a command-line user; keep warnings and worse.
     for (auto& p : Message::DefaultMessenger()->Printers()) p->SetTraceLevel(Message_Fail);
 
     packer::StepModel model;
     std::string error;
-    if (!packer::read_step(in, model, error, quiet)) return die(error);
+    if (!packer::read_step(in, model, error, quiet, unit)) return die(error);
+    if (!model.lost.empty()) {
+        std::string why = std::to_string(model.lost.size()) + " of " + std::to_string(model.face_entities) +
+                          " faces in the STEP file could not be read";
+        for (size_t k = 0; k < model.lost.size() && k < 3; ++k) why += "\n  " + model.lost[k];
+        if (model.lost.size() > 3) why += "\n  (and " + std::to_string(model.lost.size() - 3) + " more)";
+        if (!partial) return die(std::string(in) + ": " + why + "\n  --partial packs the faces that could be read");
+        std::fprintf(stderr, "facet-pack: warning: %s: %s\n", in, why.c_str());
+    }
     geom::PackWriter writer;
     writer.set_source_unit_mm(model.unit_mm);
     packer::Stats stats;
@@ -104,19 +129,20 @@ int main(int argc, char** argv) {
         } catch (const Standard_Failure& f) {
             return die(std::string(in) + ": Open CASCADE failed on a part: " + f.GetMessageString());
         }
-        if (!quiet && ++count % 50 == 0) std::fprintf(stderr, "facet-pack: %u parts\n", count);
+        if (!quiet && (++count % 50 == 0 || count == model.parts.size())) {
+            packer::progress(("packed " + std::to_string(count) + " of " + std::to_string(model.parts.size()) + " parts (" +
+                      std::to_string(stats.faces) + " faces)").c_str());
+        }
     }
     if (stats.faces == 0) {
         return die(std::string(in) + ": no face could be packed" +
                    (stats.first_problem.empty() ? "" : " (" + stats.first_problem + ")"));
     }
+    if (!quiet) packer::progress(plain ? "writing" : "deflating");
     const std::vector<uint8_t> pack = writer.finish();
     const std::vector<uint8_t> bytes = plain ? pack : geom::deflate_pack(pack);
     if (bytes.empty()) return die("zlib could not deflate the pack");
-    std::ofstream o(out, std::ios::binary);
-    if (!o.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()))) {
-        return die(std::string("cannot write ") + out);
-    }
+    if (!host::write_file(out, bytes.data(), bytes.size(), error)) return die(error);
     std::string types;
     for (auto& [k, v] : stats.surface_types) types += (types.empty() ? "" : ", ") + std::to_string(v) + " " + k;
     std::printf("%s: %u solids, %u open shells, %u instances, %u faces (%s), %u edges", in, stats.solids, stats.shells,
@@ -127,6 +153,11 @@ int main(int argc, char** argv) {
     if (!plain) std::printf("; %zu bytes inflated", pack.size());
     std::printf("\n");
     for (auto& [k, v] : stats.converted) std::printf("  converted: %u %s\n", v, k.c_str());
+    for (size_t a = 0, b; a < model.notes.size(); a = b + 1) {
+        b = model.notes.find('\n', a);
+        if (b == std::string::npos) b = model.notes.size();
+        std::printf("  %s\n", model.notes.substr(a, b - a).c_str());
+    }
     if (model.open_solids) {
         std::printf("  %u solids have gaps between their faces that healing could not close: packed as open shells\n",
                     model.open_solids);

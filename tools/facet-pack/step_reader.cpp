@@ -2,12 +2,31 @@
 
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_Sewing.hxx>
+#include <BRepBuilderAPI_Transform.hxx>
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
 #include <IFSelect_ReturnStatus.hxx>
 #include <STEPCAFControl_Reader.hxx>
 #include <STEPControl_Reader.hxx>
 #include <ShapeFix_Shape.hxx>
+#include <StepData_StepModel.hxx>
+#include <StepShape_AdvancedFace.hxx>
+#include <StepShape_FaceSurface.hxx>
+#include <StepShape_ManifoldSolidBrep.hxx>
+#include <StepShape_ShellBasedSurfaceModel.hxx>
+#include <Interface_Check.hxx>
+#include <Interface_EntityIterator.hxx>
+#include <Interface_Graph.hxx>
+#include <TransferBRep.hxx>
+#include <Transfer_TransientProcess.hxx>
+#include <XSControl_TransferReader.hxx>
+#include <Interface_Static.hxx>
+#include <ShapeFix_Face.hxx>
+#include <ShapeFix_Wire.hxx>
+#include <ShapeProcess_ShapeContext.hxx>
+#include <TopoDS_Iterator.hxx>
+#include <XSAlgo.hxx>
+#include <XSAlgo_AlgoContainer.hxx>
 #include <Standard_Failure.hxx>
 #include <TColStd_SequenceOfAsciiString.hxx>
 #include <TDF_LabelSequence.hxx>
@@ -22,16 +41,20 @@
 #include <XCAFDoc_ShapeTool.hxx>
 #include <XSControl_WorkSession.hxx>
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <unordered_set>
 
 namespace facet::packer {
 namespace {
 
+// The file's length unit in mm; 0 when the file gives none.
 float unit_mm(STEPCAFControl_Reader& reader) {
     TColStd_SequenceOfAsciiString lengths, angles, solids;
     reader.ChangeReader().FileUnits(lengths, angles, solids);
-    if (lengths.IsEmpty()) return 1.0f;
+    if (lengths.IsEmpty()) return 0.0f;
     const std::string u = lengths.First().ToCString();
     if (u.find("MILLI") != std::string::npos) return 1.0f;
     if (u.find("CENTI") != std::string::npos) return 10.0f;
@@ -41,6 +64,60 @@ float unit_mm(STEPCAFControl_Reader& reader) {
     return 1.0f;
 }
 
+
+// A face with this many loops or more skips two of Open CASCADE's healing checks, each of which
+// rebuilds the whole face once per loop: a plate with 5,625 holes spent five minutes in them.
+// Loops that cross are still refused, by facet-pack's own check of every face's loops
+// (clearance.h) and by the triangulation.
+constexpr int kManyWires = 64;
+
+int most_wires(const TopoDS_Shape& shape) {
+    int most = 0;
+    for (TopExp_Explorer x(shape, TopAbs_FACE); x.More(); x.Next()) {
+        int n = 0;
+        for (TopoDS_Iterator w(x.Current()); w.More(); w.Next()) ++n;
+        most = std::max(most, n);
+    }
+    return most;
+}
+
+void skip_quadratic_fixes(ShapeFix_Shape& fix) {
+    fix.FixFaceTool()->FixIntersectingWiresMode() = 0;
+    fix.FixWireTool()->FixSelfIntersectionMode() = 0;
+}
+
+// The STEP reader's own healing, with the two checks switched off for the faces of many loops.
+// (Debian's Open CASCADE finds no STEP resource file, so the reader heals with a default
+// ShapeFix_Shape; this is that default, less the two checks.)
+class Processing : public XSAlgo_AlgoContainer {
+public:
+    TopoDS_Shape ProcessShape(const TopoDS_Shape& shape, const Standard_Real prec, const Standard_Real max_tol,
+                              const Standard_CString rscfile, const Standard_CString seq, Handle(Standard_Transient)& info,
+                              const Message_ProgressRange& progress, const Standard_Boolean non_manifold) const override {
+        if (!info.IsNull() || most_wires(shape) < kManyWires) {
+            return XSAlgo_AlgoContainer::ProcessShape(shape, prec, max_tol, rscfile, seq, info, progress, non_manifold);
+        }
+        const char* file = Interface_Static::CVal(rscfile);
+        Handle(ShapeProcess_ShapeContext) context = new ShapeProcess_ShapeContext(shape, file ? file : rscfile);
+        context->SetDetalisation(TopAbs_EDGE);
+        context->SetNonManifold(non_manifold);
+        info = context;
+        try {
+            Handle(ShapeFix_Shape) fix = new ShapeFix_Shape(shape);
+            fix->SetPrecision(prec);
+            fix->SetMaxTolerance(max_tol);
+            fix->FixWireTool()->FixSameParameterMode() = false;
+            fix->FixSolidTool()->CreateOpenSolidMode() = false;
+            skip_quadratic_fixes(*fix);
+            fix->Perform(progress);
+            context->RecordModification(fix->Context());
+            context->SetResult(fix->Shape());
+            return fix->Shape();
+        } catch (const Standard_Failure&) {
+            return shape;
+        }
+    }
+};
 
 // Edges of the shape used by one face only (a seam, used twice by its face, and a degenerate
 // edge at a pole count as closed): where a solid's B-rep has gaps.
@@ -71,6 +148,7 @@ void close_gaps(Part& part) {
         TopoDS_Shape sewn = sew.SewedShape();
         if (!sewn.IsNull() && free_edges(sewn) < free_edges(part.shape)) {
             ShapeFix_Shape fix(sewn);
+            if (most_wires(sewn) >= kManyWires) skip_quadratic_fixes(fix);
             fix.Perform();
             sewn = fix.Shape();
             sewn.Location(part.shape.Location());
@@ -81,13 +159,111 @@ void close_gaps(Part& part) {
     part.closed = free_edges(part.shape) == 0;
 }
 
+// What the file says is wrong with entity i: its own check and the file-wide one naming it.
+std::string entity_problem(const Handle(StepData_StepModel)& m, int i) {
+    std::string why;
+    const Handle(Standard_Transient)& e = m->Value(i);
+    const Handle(Interface_Check)& check = m->Check(i, true);
+    for (int k = 1; !check.IsNull() && k <= check->NbFails() && k <= 2; ++k) why += std::string(why.empty() ? "" : "; ") + check->CFail(k);
+    const std::string mark = "Ent.Id.#" + std::to_string(m->IdentLabel(e)) + " ";
+    const Handle(Interface_Check)& global = m->GlobalCheck();
+    for (int k = 1; !global.IsNull() && k <= global->NbFails(); ++k)
+        if (std::string(global->CFail(k)).find(mark) != std::string::npos) why += std::string(why.empty() ? "" : "; ") + global->CFail(k);
+    return why;
+}
+
+// The faces of the file Open CASCADE lost: a face entity of a shell that was transferred, with
+// no face among the transferred shapes. A face of a shell nothing transferred (construction
+// geometry beside the part) is not lost, only left out.
+void account_faces(XSControl_Reader& reader, const std::vector<TopoDS_Shape>& top, StepModel& model) {
+    const Handle(XSControl_WorkSession) ws = reader.WS();
+    const Handle(StepData_StepModel) m = Handle(StepData_StepModel)::DownCast(reader.Model());
+    if (m.IsNull() || ws.IsNull() || ws->TransferReader().IsNull()) return;
+    const Handle(Transfer_TransientProcess) tp = ws->TransferReader()->TransientProcess();
+    if (tp.IsNull()) return;
+    const Interface_Graph& graph = ws->Graph();
+    std::unordered_set<const void*> made;
+    for (const TopoDS_Shape& s : top)
+        for (TopExp_Explorer x(s, TopAbs_FACE); x.More(); x.Next()) made.insert(x.Current().TShape().get());
+    for (int i = 1; i <= m->NbEntities(); ++i) {
+        const Handle(Standard_Transient)& e = m->Value(i);
+        if (!e->IsKind(STANDARD_TYPE(StepShape_FaceSurface))) continue;
+        bool shell_read = false;
+        for (Interface_EntityIterator it = graph.Sharings(e); it.More(); it.Next()) shell_read = shell_read || tp->IsBound(it.Value());
+        if (!shell_read) {
+            ++model.faces_outside;
+            continue;
+        }
+        ++model.face_entities;
+        bool found = false;
+        const TopoDS_Shape result = TransferBRep::ShapeResult(tp, e);
+        for (TopExp_Explorer x(result, TopAbs_FACE); x.More() && !found; x.Next()) found = made.count(x.Current().TShape().get()) > 0;
+        if (found) continue;
+        std::string why = entity_problem(m, i);
+        model.lost.push_back("#" + std::to_string(m->IdentLabel(e)) + " " +
+                             (e->IsKind(STANDARD_TYPE(StepShape_AdvancedFace)) ? "ADVANCED_FACE" : "FACE_SURFACE") + ": " +
+                             (why.empty() ? "Open CASCADE made no face of it" : why));
+    }
+}
+
+// A file with no PRODUCT and no shape representation Open CASCADE knows (early AP203 writers)
+// still holds solids and shells: transferred one by one, where they are.
+void transfer_bodies(STEPControl_Reader& reader, std::vector<TopoDS_Shape>& top) {
+    const Handle(StepData_StepModel) m = reader.StepModel();
+    for (int i = 1; i <= m->NbEntities(); ++i) {
+        const Handle(Standard_Transient)& e = m->Value(i);
+        if (!e->IsKind(STANDARD_TYPE(StepShape_ManifoldSolidBrep)) && !e->IsKind(STANDARD_TYPE(StepShape_ShellBasedSurfaceModel))) continue;
+        try {
+            const int before = reader.NbShapes();
+            if (reader.TransferEntity(e) && reader.NbShapes() > before) top.push_back(reader.Shape(reader.NbShapes()));
+        } catch (const Standard_Failure&) {
+        }
+    }
+}
+
+float guessed_unit_mm(UnitGuess g, double diagonal) {
+    switch (g) {
+    case UnitGuess::Millimetre: return 1.0f;
+    case UnitGuess::Centimetre: return 10.0f;
+    case UnitGuess::Metre: return 1000.0f;
+    case UnitGuess::Inch: return 25.4f;
+    case UnitGuess::Foot: return 304.8f;
+    case UnitGuess::BySize: break;
+    }
+    // Under one unit across: a part in millimetres that small is rarer than one in metres.
+    return diagonal < 1.0 ? 1000.0f : 1.0f;
+}
+
 } // namespace
 
-bool read_step(const std::string& in, StepModel& model, std::string& error, bool quiet) {
-    auto progress = [&](const char* what) {
-        if (!quiet) std::fprintf(stderr, "facet-pack: %s\n", what);
+void progress(const char* what) {
+    static const auto start = std::chrono::steady_clock::now();
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::fprintf(stderr, "facet-pack: %5.1f s: %s\n", s, what);
+}
+
+bool parse_unit(const std::string& t, UnitGuess& unit) {
+    if (t == "mm") unit = UnitGuess::Millimetre;
+    else if (t == "cm") unit = UnitGuess::Centimetre;
+    else if (t == "m") unit = UnitGuess::Metre;
+    else if (t == "in") unit = UnitGuess::Inch;
+    else if (t == "ft") unit = UnitGuess::Foot;
+    else if (t == "size") unit = UnitGuess::BySize;
+    else return false;
+    return true;
+}
+
+bool read_step(const std::string& in, StepModel& model, std::string& error, bool quiet, UnitGuess no_unit) {
+    auto say = [&](const char* what) {
+        if (!quiet) progress(what);
     };
-    progress("reading STEP");
+    say("reading STEP");
+    static const bool processing = [] {
+        XSAlgo::Init();
+        XSAlgo::SetAlgoContainer(new Processing);
+        return true;
+    }();
+    (void)processing;
     Handle(XCAFApp_Application) app = XCAFApp_Application::GetApplication();
     Handle(TDocStd_Document) doc;
     app->NewDocument("MDTV-XCAF", doc);
@@ -107,15 +283,24 @@ bool read_step(const std::string& in, StepModel& model, std::string& error, bool
         TDF_LabelSequence roots;
         shapes->GetFreeShapes(roots);
         for (int r = 1; r <= roots.Length(); ++r) top.push_back(shapes->GetShape(roots.Value(r)));
+        account_faces(reader.ChangeReader(), top, model);
     }
     if (top.empty()) {
         // Files without PRODUCT structure (early AP203 writers) give the assembly-aware reader
         // nothing; the plain reader can still transfer their shape representations.
-        progress("no product structure: reading shape representations directly");
+        say("no product structure: reading shape representations directly");
         STEPControl_Reader plain;
-        if (plain.ReadFile(in.c_str()) == IFSelect_RetDone && plain.TransferRoots() > 0) {
-            const TopoDS_Shape shape = plain.OneShape();
-            if (!shape.IsNull()) top.push_back(shape);
+        if (plain.ReadFile(in.c_str()) == IFSelect_RetDone) {
+            if (plain.TransferRoots() > 0) {
+                const TopoDS_Shape shape = plain.OneShape();
+                if (!shape.IsNull()) top.push_back(shape);
+            }
+            if (top.empty()) {
+                say("no shape representation Open CASCADE knows: reading the solids and shells themselves");
+                transfer_bodies(plain, top);
+                if (!top.empty()) model.notes += "read without a shape representation: its solids and shells one by one\n";
+            }
+            account_faces(plain, top, model);
         }
         model.colours.Nullify();
     }
@@ -123,7 +308,34 @@ bool read_step(const std::string& in, StepModel& model, std::string& error, bool
         error = in + ": the STEP file holds no shape Open CASCADE can transfer";
         return false;
     }
-    progress("healing");
+    if (model.faces_outside) {
+        model.notes += std::to_string(model.faces_outside) + " faces of shells no shape uses (construction geometry) left out\n";
+    }
+    if (model.unit_mm == 0) {
+        // No unit context: Open CASCADE takes the numbers as they are (as millimetres).
+        Bnd_Box box;
+        for (const TopoDS_Shape& s : top) BRepBndLib::Add(s, box);
+        const double diag = box.IsVoid() ? 0.0 : std::sqrt(box.SquareExtent());
+        model.unit_mm = guessed_unit_mm(no_unit, diag);
+        char note[200];
+        std::snprintf(note, sizeof note, "the file gives no length unit; its parts measure %.4g units across: read as %s%s\n", diag,
+                      model.unit_mm == 1000.0f ? "metres" : model.unit_mm == 1.0f ? "millimetres" : "the unit given",
+                      no_unit == UnitGuess::BySize ? " (--unit mm|cm|m|in|ft says otherwise)" : " (--unit)");
+        model.notes += note;
+        if (model.unit_mm != 1.0f) {
+            gp_Trsf scale;
+            scale.SetScale(gp_Pnt(0, 0, 0), model.unit_mm);
+            for (TopoDS_Shape& s : top) {
+                try {
+                    s = BRepBuilderAPI_Transform(s, scale, true).Shape();
+                } catch (const Standard_Failure& f) {
+                    error = in + ": cannot scale the parts to millimetres: " + f.GetMessageString();
+                    return false;
+                }
+            }
+        }
+    }
+    say("healing");
     for (const TopoDS_Shape& root : top) {
         std::vector<Part> raw;
         for (TopExp_Explorer x(root, TopAbs_SOLID); x.More(); x.Next()) raw.push_back({x.Current(), true});
@@ -132,6 +344,7 @@ bool read_step(const std::string& in, StepModel& model, std::string& error, bool
         for (Part& p : raw) {
             try {
                 ShapeFix_Shape fix(p.shape);
+                if (most_wires(p.shape) >= kManyWires) skip_quadratic_fixes(fix);
                 fix.Perform();
                 TopoDS_Shape healed = fix.Shape();
                 healed.Location(p.shape.Location()); // keep the occurrence's placement
