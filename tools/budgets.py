@@ -5,8 +5,10 @@ Budgets of the handheld: all RAM <= 32 MiB (33,554,432 bytes); CPU time in exact
 instructions at 600 MHz, one instruction per cycle; tessellating a model <= 600 M instructions
 (1 s); one frame <= 20 M instructions per 10,000 triangles in view, at least 20 M (30 frames/s).
 Tessellation = every 'edges' and 'face' region (the pieces of work) of the viewer's first pass
-(uart.log beside the report). Prints a table, writes --json and --markdown; with --strict, exits non-zero
-if a budget is exceeded; otherwise it reports.
+(uart.log beside the report). Prints a table, writes --json and --markdown (always, also when
+over budget); with --strict, the exit code says what went wrong: 1 the run itself failed (its
+exit code or the runner's failures), 4 over budget (RAM, tessellation or a frame), 5 incomplete
+mesh (faces failed on the device: they stay wireframe). 0 otherwise, and without --strict.
 """
 import argparse
 import json
@@ -71,7 +73,9 @@ def main():
         'tessellation_budget_instructions': TESSELLATION_BUDGET,
         'exit_code': rep['exit_code'],
     }
+    run_failed = bool(rep['failures']) or rep['exit_code'] != 0
     fails = list(rep['failures'])
+    over_before = len(fails)
     if total > RAM_BUDGET:
         fails.append(f'RAM {total} bytes > {RAM_BUDGET}')
     for f in out['frames']:
@@ -80,7 +84,10 @@ def main():
                          f'{frame_budget(f["triangles"]):,.0f}')
     if tess is not None and tess > TESSELLATION_BUDGET:
         fails.append(f'tessellation: {tess:,} instructions > {TESSELLATION_BUDGET:,}')
+    over = len(fails) > over_before
+    incomplete = bool(out['faces_failed'])
     out['within_budget'] = not fails and rep['exit_code'] == 0
+    out['incomplete_mesh'] = incomplete
     with open(args.json, 'w') as fh:
         json.dump(out, fh, indent=2)
     if args.markdown:
@@ -136,7 +143,11 @@ def main():
     for msg in fails:
         print(f'  OVER BUDGET / FAILED: {msg}')
     print(f'  within budget: {"yes" if out["within_budget"] else "NO"}')
-    return 0 if out['within_budget'] or not args.strict else 1
+    if incomplete:
+        print(f'  INCOMPLETE MESH: {out["faces_failed"]} of {out["faces"]} faces failed on the device (uart.log says why)')
+    if not args.strict:
+        return 0
+    return 1 if run_failed else 4 if over else 5 if incomplete else 0
 
 
 if __name__ == '__main__':

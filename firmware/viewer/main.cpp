@@ -217,22 +217,47 @@ void command(const char* text) {
     print(con, "viewer: unknown command '{}'\n", text);
 }
 
+// Whether `text` (n bytes) can still become a command: a prefix of a command's word, or the
+// word and its space followed by anything.
+bool command_prefix(const char* text, uint32_t n) {
+    static constexpr const char* kWords[] = {"shot ", "budget "};
+    for (const char* word : kWords) {
+        uint32_t i = 0;
+        while (i < n && word[i] && text[i] == word[i]) ++i;
+        if (i == n || !word[i]) return true;
+    }
+    return false;
+}
+
 // A byte from the UART: the protocol's own bytes and commands, or a key for the viewer.
 void key(uint8_t k) {
     Session& s = session;
     if (s.in_line) {
+        hal::Console& con = s.board->console;
         if (k == '\n' || k == '\r') {
             s.line[s.line_len] = 0;
             s.in_line = false;
             command(s.line);
-        } else if (k == kEsc || k == kEnq || k < 0x20 || k >= 0x7F) {
-            s.in_line = false; // not command text: the command is dropped
-            print(s.board->console, "viewer: command dropped\n");
-            if (k == kEnq) s.prompt = true;
-        } else if (s.line_len + 1 < sizeof s.line) {
-            s.line[s.line_len++] = char(k);
+            return;
         }
-        return;
+        if (k == kEsc || k == kEnq || k < 0x20 || k >= 0x7F) {
+            s.in_line = false; // not command text: the command is dropped
+            print(con, "viewer: command dropped\n");
+            if (k == kEnq) s.prompt = true;
+            return;
+        }
+        if (s.line_len + 1 >= sizeof s.line) {
+            s.in_line = false;
+            print(con, "viewer: command dropped: longer than {} bytes\n", uint32_t(sizeof s.line - 1));
+            return;
+        }
+        s.line[s.line_len++] = char(k);
+        if (command_prefix(s.line, s.line_len)) return;
+        // No command starts so: '!' was a key press, and so is this byte (a stream of keys
+        // with no newline never stays stuck in command mode).
+        s.in_line = false;
+        s.line[s.line_len] = 0;
+        print(con, "viewer: '!{}' is not a command (shot, budget): '!' and '{}' are keys\n", s.line, char(k));
     }
     switch (k) {
     case kEnq: s.prompt = true; return;

@@ -227,6 +227,7 @@ int main(int argc, char** argv) {
     uint32_t faces = 0, failed = 0;
     std::map<std::string, uint32_t> reasons;
     std::set<uint32_t> failed_face;
+    uint32_t full_faces = 0; // failed for want of room
     std::vector<std::string> failures;
     for (uint32_t s = 0; s < pack.shells().size(); ++s) {
         const pack::Shell& sh = pack.shells()[s];
@@ -249,6 +250,7 @@ int main(int argc, char** argv) {
             if (!r.ok()) {
                 ++failed;
                 failed_face.insert(fi);
+                full_faces += r.status == Status::Full;
                 ++reasons[r.what];
                 describe(r, text, sizeof text);
                 failures.push_back(std::string(text) + " (" + status_name(r.status) + ")");
@@ -369,6 +371,10 @@ int main(int argc, char** argv) {
                 in, faces, failed, ntri, shell_triangles, max_dev, opt.tolerance, free_edges, nonmanifold, overlap, watertight, closed,
                 100 * thin_share, ms);
     for (auto& [r, n] : reasons) std::printf("  %u faces: %s\n", n, r.c_str());
+    if (full_faces) {
+        std::printf("  %u faces need more than one face's capacity (%zu points) at %.4g mm: a coarser --tolerance "
+                    "meshes them (the default is %.4g mm)\n", full_faces, kV, opt.tolerance, default_tolerance(pack));
+    }
     if (!quiet) {
         for (const std::string& f : failures) std::fprintf(stderr, "facet-mesh: %s\n", f.c_str());
         for (auto& [fi, d] : face_dev) {

@@ -29,6 +29,7 @@ Exit status: the firmware's exit code, or non-zero for a timeout, a budget or a 
 import argparse
 import json
 import os
+import re
 import queue
 import socket
 import subprocess
@@ -44,6 +45,11 @@ import img  # noqa: E402
 
 MHZ = 600
 
+
+
+def safe_name(name):
+    """A screenshot's or dump's name from the firmware: letters, digits, - and _ (no path)."""
+    return re.fullmatch(r'[A-Za-z0-9_-]{1,64}', name) is not None
 
 def qemu_board(name):
     """The machine and its options, from the board's description (boards/<board>/board.json)."""
@@ -265,7 +271,13 @@ def main():
                 if enq:
                     send(enq)
             continue
-        if words[0] == '@shot' and len(words) == 2:
+        if words[0] in ('@shot', '@dump') and len(words) >= 2 and not all(
+                safe_name(w.removesuffix('.f565')) for w in words[1:3]):
+            # The name becomes a file in OUT: never a path (a firmware could print anything).
+            report['failures'].append(f'{" ".join(words[:3])!r}: not a file name (letters, digits, - and _ only); ignored')
+            if words[0] == '@shot':
+                send(b'\x06')
+        elif words[0] == '@shot' and len(words) == 2:
             name = words[1]
             try:
                 if qmp is None:

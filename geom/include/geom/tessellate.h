@@ -142,6 +142,7 @@ struct RefineState {
     uint32_t triangles = 0; // the triangles at the round's start
     bool inserting = false; // measuring the changed triangles, or inserting points
     float worst = 0, threshold = 0;
+    float last_worst = 0;   // the previous round's worst
     uint32_t added = 0;     // points this round
     uint32_t total = 0;     // points of the face so far
 };

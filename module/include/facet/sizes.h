@@ -10,12 +10,12 @@
  *   pack memory       a deflated pack, inflated (plain packs are      facet_pack_memory_bytes()
  *                     read in place from flash or RAM)
  *
- * The shipped configurations (the workspace at the default capacities, 6,978,848 bytes):
+ * The shipped configurations (the workspace at the default capacities, 6,984,992 bytes):
  *
  *   configuration                                 draw buffers    depth buffers   workspace
- *   qemu-versatilepb: 640x480, full frames        2 x 614,400     2 x 614,400     6,978,848
- *   qemu-mps2-an500 (the EVKB panel): 480x272     2 x 261,120     2 x 261,120     6,978,848
- *   examples/minimal: 480x272 in bands of 16      2 x 15,360      1 x 15,360      6,978,848
+ *   qemu-versatilepb: 640x480, full frames        2 x 614,400     2 x 614,400     6,984,992
+ *   qemu-mps2-an500 (the EVKB panel): 480x272     2 x 261,120     2 x 261,120     6,984,992
+ *   examples/minimal: 480x272 in bands of 16      2 x 15,360      1 x 15,360      6,984,992
  */
 #ifndef FACET_SIZES_H
 #define FACET_SIZES_H
@@ -28,7 +28,7 @@
 #define FACET_DEFAULT_EDGES 16384u         /* edges of the pack */
 #define FACET_DEFAULT_SAMPLES 65536u       /* edge samples of the whole model */
 #define FACET_DEFAULT_FACE_POINTS 12000u   /* points of one face in its CDT (at most 32,760) */
-#define FACET_DEFAULT_LOOPS 512u           /* loops of one face */
+#define FACET_DEFAULT_LOOPS 2048u          /* loops of one face (a plate of 1,600 holes: 1,601) */
 #define FACET_DEFAULT_SLIVERS 1024u        /* loop points of one face closer than its CDT grid */
 #define FACET_DEFAULT_MESH_VERTICES 65536u /* the mesh of the whole model */
 #define FACET_DEFAULT_MESH_TRIANGLES 98304u

@@ -1,0 +1,286 @@
+#!/usr/bin/env python3
+"""Regression tests for the reliability findings (issue 12), one per finding, named after it.
+Each runs the host tools as a user would and asserts what they must do: a clear reason and
+the documented exit code, no file written where it must not be, nothing left half-written.
+
+  reliability_test.py NAME --packer P --mesher M --stress S --models DIR --work DIR [--budgets B]
+
+NAME is one of the functions below (ctest runs each as reliability.NAME); 'all' runs them all.
+"""
+import argparse
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+
+ARGS = None
+
+
+def run(cmd, timeout=300):
+    return subprocess.run([str(c) for c in cmd], capture_output=True, text=True, timeout=timeout)
+
+
+def expect(cond, what):
+    if not cond:
+        raise AssertionError(what)
+
+
+def expect_exit(r, code, needle, what):
+    out = r.stdout + r.stderr
+    expect(r.returncode == code, f'{what}: exit {r.returncode}, expected {code}\n{out[-800:]}')
+    if needle:
+        expect(re.search(needle, out), f'{what}: no {needle!r} in the output\n{out[-800:]}')
+
+
+def work(name):
+    d = os.path.join(ARGS.work, name)
+    shutil.rmtree(d, ignore_errors=True)
+    os.makedirs(d)
+    return d
+
+
+def packed(name, d, *extra):
+    out = os.path.join(d, os.path.splitext(name)[0] + '.fpk')
+    r = run([ARGS.packer, os.path.join(ARGS.models, name), '-o', out, '--quiet', *extra])
+    expect_exit(r, 0, None, f'packing {name}')
+    return out
+
+
+# -- 2. crashes ---------------------------------------------------------------------------
+
+def mesh_of_a_directory():
+    """facet-mesh DIR aborted on an uncaught std::ios_base::failure."""
+    expect_exit(run([ARGS.mesher, ARGS.work]), 1, 'is a directory, not a file', 'facet-mesh DIR')
+
+
+def check_of_a_directory_or_a_device():
+    """facet-pack --check DIR aborted; --check read /dev/zero without a limit (bad_alloc)."""
+    expect_exit(run([ARGS.packer, '--check', ARGS.work]), 1, 'is a directory, not a file', '--check DIR')
+    expect_exit(run([ARGS.packer, '--check', '/dev/zero'], timeout=20), 1, 'not a regular file', '--check /dev/zero')
+    d = work('check-device')
+    os.mkfifo(os.path.join(d, 'fifo'))  # a reader that blocked on it would hang here
+    expect_exit(run([ARGS.packer, '--check', os.path.join(d, 'fifo')], timeout=20), 1, 'not a regular file', '--check FIFO')
+
+
+# -- 3. silent failures -------------------------------------------------------------------
+
+def writes_onto_a_full_disk():
+    """Output under 1 KiB was written at close, unchecked: exit 0 and an empty file."""
+    d = work('full-disk')
+    fpk = packed('screw.step', d)
+    expect_exit(run([ARGS.packer, os.path.join(ARGS.models, 'screw.step'), '-o', '/dev/full', '--quiet'], timeout=120),
+                1, 'cannot write /dev/full: No space left on device', 'facet-pack -o /dev/full')
+    for opt in ('--stl', '--obj', '--ply', '--json'):
+        expect_exit(run([ARGS.mesher, fpk, opt, '/dev/full', '--quiet']), 1, 'No space left on device', f'facet-mesh {opt} /dev/full')
+
+
+def face_with_a_missing_surface():
+    """A face whose surface is not in the file packed with exit 0 and one face fewer."""
+    d = work('missing-surface')
+    text = open(os.path.join(ARGS.models, 'anc101.stp')).read()
+    face = re.search(r'^#(\d+) ?= ?ADVANCED_FACE\(\'[^\']*\',\(#\d+\),#(\d+),', text, re.M)
+    surface = face.group(2)
+    broken = re.sub(rf'^#{surface} ?=.*\n', '', text, count=1, flags=re.M)
+    step = os.path.join(d, 'missing_surface.stp')
+    open(step, 'w').write(broken)
+    out = os.path.join(d, 'out.fpk')
+    r = run([ARGS.packer, step, '-o', out, '--quiet'])
+    expect_exit(r, 1, r'1 of 87 faces in the STEP file could not be read', 'facet-pack on a face without its surface')
+    expect_exit(r, 1, rf'#{face.group(1)} ADVANCED_FACE: .*Unresolved Reference', 'the face and why')
+    expect(not os.path.exists(out), 'a pack was written although the packer refused the file')
+    r = run([ARGS.packer, step, '-o', out, '--quiet', '--partial'])
+    expect_exit(r, 0, r'86 faces', '--partial packs the rest')
+    expect_exit(r, 0, r'warning: .*1 of 87 faces', '--partial still says what is missing')
+
+
+def tolerance_must_be_a_positive_number():
+    """--tolerance 0, negative, NaN or text fell back to the default without a word."""
+    d = work('tolerance-text')
+    fpk = packed('screw.step', d)
+    for t in ('0', '-1', 'nan', 'inf', 'abc', '1mm', ''):
+        expect_exit(run([ARGS.mesher, fpk, '--tolerance', t]), 2, r'--tolerance .*a number', f'--tolerance {t!r}')
+    for a in ('0', '4', 'x'):
+        expect_exit(run([ARGS.mesher, fpk, '--angle', a]), 2, r'--angle .*a number', f'--angle {a!r}')
+    expect_exit(run([ARGS.mesher, fpk, '--face-points', '99999']), 2, r'--face-points', '--face-points over the 16-bit arena')
+
+
+def output_is_the_input():
+    """-o equal to the input overwrote the STEP file."""
+    d = work('output-is-input')
+    step = os.path.join(d, 'screw.step')
+    shutil.copy(os.path.join(ARGS.models, 'screw.step'), step)
+    before = open(step, 'rb').read()
+    expect_exit(run([ARGS.packer, step, '-o', step]), 1, r'is the STEP file itself', 'facet-pack X -o X')
+    link = os.path.join(d, 'link.fpk')
+    os.link(step, link)
+    expect_exit(run([ARGS.packer, step, '-o', link]), 1, r'is the STEP file itself', 'facet-pack X -o a hard link of X')
+    expect(open(step, 'rb').read() == before, 'the STEP file changed')
+    fpk = packed('screw.step', d)
+    pack_before = open(fpk, 'rb').read()
+    expect_exit(run([ARGS.mesher, fpk, '--stl', fpk]), 2, r'is the pack itself', 'facet-mesh P --stl P')
+    expect_exit(run([ARGS.mesher, fpk, '--json', fpk]), 2, r'is the pack itself', 'facet-mesh P --json P')
+    expect(open(fpk, 'rb').read() == pack_before, 'the pack changed')
+
+
+def trailing_bytes_and_reserved_fields():
+    """Garbage after a deflated pack and a non-zero reserved field were accepted."""
+    d = work('trailing')
+    fpk = packed('screw.step', d)
+    os.makedirs(d + '/plain')
+    plain = packed('screw.step', d + '/plain', '--plain')
+    data, flat = open(fpk, 'rb').read(), open(plain, 'rb').read()
+    cases = {
+        'appended.fpk': (data + b'junk', r'4 bytes follow the deflated pack'),
+        'reserved.fpk': (data[:12] + b'\x01' + data[13:], r"reserved field is not 0"),
+        'plain-appended.fpk': (flat + b'\0\0\0\0', r'size does not match the header'),
+        'plain-flags.fpk': (flat[:20] + b'\x01' + flat[21:], r'flags or reserved fields are not 0'),
+        'plain-reserved.fpk': (flat[:60] + b'\x01' + flat[61:], r'flags or reserved fields are not 0'),
+    }
+    for name, (payload, why) in cases.items():
+        path = os.path.join(d, name)
+        open(path, 'wb').write(payload)
+        expect_exit(run([ARGS.packer, '--check', path]), 1, why, f'--check {name}')
+        expect_exit(run([ARGS.mesher, path]), 1, why, f'facet-mesh {name}')
+
+
+# -- 1. levels of detail ------------------------------------------------------------------
+
+def coarse_and_fine_tolerances():
+    """anc101 at 1000 mm failed 15 of 87 faces; at 1e-4 mm the sample pool overflowed with no
+    hint; at 0.01 mm the deviation was 0.035 mm."""
+    d = work('coarse-fine')
+    fpk = packed('anc101.stp', d)
+    rep = os.path.join(d, 'r.json')
+    r = run([ARGS.mesher, fpk, '--tolerance', '1000', '--json', rep, '--quiet'])
+    expect_exit(r, 0, r'87 faces, 0 failed', 'anc101 at 1000 mm')
+    expect(json.load(open(rep))['watertight_closed_shells'] == 1, 'anc101 at 1000 mm: the solid is open')
+    r = run([ARGS.mesher, fpk, '--tolerance', '0.01', '--json', rep, '--quiet'])
+    expect_exit(r, 0, r'87 faces, 0 failed', 'anc101 at 0.01 mm')
+    j = json.load(open(rep))
+    expect(j['max_deviation'] <= 0.01, f'anc101 at 0.01 mm: deviation {j["max_deviation"]}')
+    r = run([ARGS.mesher, fpk, '--tolerance', '1e-4', '--quiet'], timeout=600)
+    expect_exit(r, 5, r'a coarser --tolerance meshes them \(the default is 0\.504 mm\)', 'anc101 at 1e-4 mm')
+    expect('more samples than the pool holds' not in r.stdout + r.stderr, 'the sample pool still overflows')
+
+
+def lens_faces_at_coarse_tolerances():
+    """Faces bounded by two arcs failed 'no loop with any area in (u,v) (Degenerate)' at any
+    tolerance from 0.2% of the diagonal on, and the solid was then open (exit 0)."""
+    d = work('lenses')
+    step = os.path.join(d, 'lenses.step')
+    expect_exit(run([ARGS.stress, 'lenses', step]), 0, None, 'making the lens part')
+    fpk = os.path.join(d, 'lenses.fpk')
+    expect_exit(run([ARGS.packer, step, '-o', fpk, '--quiet']), 0, None, 'packing the lens part')
+    for tol in ('0.566', '1.415', '14.15'):  # 0.2, 0.5 and 5% of its diagonal
+        r = run([ARGS.mesher, fpk, '--tolerance', tol, '--quiet'])
+        expect_exit(r, 0, r'24 faces, 0 failed.*closed shells watertight 1 of 1', f'the lens part at {tol} mm')
+
+
+def incomplete_mesh_exits_5():
+    """facet-mesh exited 0 when faces failed or closed shells were open."""
+    d = work('incomplete')
+    fpk = packed('anc101.stp', d)
+    stl = os.path.join(d, 'out.stl')
+    r = run([ARGS.mesher, fpk, '--tolerance', '1e-4', '--face-points', '2000', '--stl', stl, '--quiet'], timeout=600)
+    expect_exit(r, 5, r'87 faces, [1-9][0-9]* failed', 'faces over a small arena')
+    expect(os.path.getsize(stl) > 84, 'the mesh was not written although the run was incomplete')
+
+
+def ndr_part01_reads():
+    """ndr_part01.step (1995: no PRODUCT, FACE_SURFACE, no unit) was refused."""
+    d = work('ndr')
+    out = os.path.join(d, 'ndr.fpk')
+    r = run([ARGS.packer, os.path.join(ARGS.models, 'ndr_part01.step'), '-o', out])
+    expect_exit(r, 0, r'1 solids, 0 open shells, 1 instances, 29 faces', 'ndr_part01')
+    expect_exit(r, 0, r'no length unit.*read as metres', 'ndr_part01: the unit it assumed')
+    r = run([ARGS.mesher, out, '--quiet'])
+    expect_exit(r, 0, r'29 faces, 0 failed.*watertight 1 of 1', 'ndr_part01 meshed')
+    r = run([ARGS.packer, os.path.join(ARGS.models, 'ndr_part01.step'), '-o', out, '--unit', 'mm'])
+    expect_exit(r, 0, r'read as millimetres \(--unit\)', 'ndr_part01 --unit mm')
+    expect_exit(run([ARGS.packer, os.path.join(ARGS.models, 'ndr_part01.step'), '-o', out, '--unit', 'parsec']), 2,
+                r'--unit parsec: one of mm, cm, m, in, ft', 'a unit facet-pack does not know')
+
+
+def plate_of_many_holes_packs_with_progress():
+    """A face of 1,600 holes took 208 s to pack (5,625: over 600 s) with no sign of life."""
+    d = work('holes')
+    step = os.path.join(d, 'holes.step')
+    expect_exit(run([ARGS.stress, 'holes', '1600', step]), 0, None, 'making the 1,600-hole plate')
+    fpk = os.path.join(d, 'holes.fpk')
+    r = run([ARGS.packer, step, '-o', fpk], timeout=600)
+    expect_exit(r, 0, r'1606 faces', 'packing the 1,600-hole plate')
+    for stage in ('reading STEP', 'healing', r'packed 1 of 1 parts \(1606 faces\)', 'deflating'):
+        expect(re.search(rf'facet-pack: +[\d.]+ s: {stage}', r.stderr), f'no progress line for {stage!r}:\n{r.stderr}')
+    # The device's capacities (FACET_DEFAULT_FACE_POINTS, _LOOPS): the big faces fit.
+    r = run([ARGS.mesher, fpk, '--face-points', '12000', '--quiet'])
+    expect_exit(r, 0, r'1606 faces, 0 failed.*watertight 1 of 1', 'the 1,600-hole plate at the device capacity')
+
+
+# -- 5. budgets enforced by the exit code ------------------------------------------------
+
+def budget_report_exit_codes():
+    """./facet run printed 'within budget: NO' and exited 0."""
+    d = work('budgets')
+    base = {'board': 'qemu-versatilepb', 'exit_code': 0, 'failures': [], 'regions': [], 'shots': [],
+            'ram': {'arena': 1000, 'total': 1000}}
+    uart = '@tessellation faces 10 failed {f} triangles 100 vertices 60 mesh_bytes 2000 arena_peak 300 tolerance_um 100\n'
+    cases = [('fine', {}, 0, 0), ('over-ram', {'ram': {'arena': 40 << 20, 'total': 40 << 20}}, 0, 4),
+             ('faces-failed', {}, 2, 5), ('run-failed', {'exit_code': 1}, 0, 1)]
+    for name, change, failed, code in cases:
+        sub = os.path.join(d, name)
+        os.makedirs(sub)
+        rep = dict(base, **change)
+        json.dump(rep, open(os.path.join(sub, 'report.json'), 'w'))
+        open(os.path.join(sub, 'uart.log'), 'w').write(uart.format(f=failed))
+        r = run([sys.executable, ARGS.budgets, os.path.join(sub, 'report.json'), '--json', os.path.join(sub, 'b.json'),
+                 '--markdown', os.path.join(sub, 'b.md'), '--strict'])
+        expect(r.returncode == code, f'budgets.py --strict on {name}: exit {r.returncode}, expected {code}\n{r.stdout[-600:]}')
+        expect(os.path.exists(os.path.join(sub, 'b.json')) and os.path.exists(os.path.join(sub, 'b.md')),
+               f'{name}: the report was not written')
+
+
+def screenshot_names_stay_in_the_folder():
+    """run.py joined the name the firmware printed onto --out ('@shot ../../name')."""
+    sys.path.insert(0, os.path.dirname(ARGS.budgets) + '/qemu')
+    import run as runner  # noqa: E402  tools/qemu/run.py
+    for good in ('done', 'turned-2', 'a_b'):
+        expect(runner.safe_name(good), f'{good!r} refused')
+    for bad in ('../x', '../../etc/passwd', '/tmp/x', 'a/b', '.', '..', '', 'a b', 'x' * 65, 'a\\b'):
+        expect(not runner.safe_name(bad), f'{bad!r} accepted')
+
+
+TESTS = [mesh_of_a_directory, check_of_a_directory_or_a_device, writes_onto_a_full_disk, face_with_a_missing_surface,
+         tolerance_must_be_a_positive_number, output_is_the_input, trailing_bytes_and_reserved_fields,
+         coarse_and_fine_tolerances, lens_faces_at_coarse_tolerances, incomplete_mesh_exits_5, ndr_part01_reads,
+         plate_of_many_holes_packs_with_progress, budget_report_exit_codes, screenshot_names_stay_in_the_folder]
+
+
+def main():
+    global ARGS
+    ap = argparse.ArgumentParser()
+    ap.add_argument('name', choices=[t.__name__ for t in TESTS] + ['all'])
+    ap.add_argument('--packer', required=True)
+    ap.add_argument('--mesher', required=True)
+    ap.add_argument('--stress', required=True)
+    ap.add_argument('--models', required=True)
+    ap.add_argument('--work', required=True)
+    ap.add_argument('--budgets', required=True, help='tools/budgets.py')
+    ARGS = ap.parse_args()
+    os.makedirs(ARGS.work, exist_ok=True)
+    failed = 0
+    for t in TESTS:
+        if ARGS.name not in ('all', t.__name__):
+            continue
+        try:
+            t()
+            print(f'ok   {t.__name__}')
+        except (AssertionError, subprocess.TimeoutExpired) as e:
+            failed += 1
+            print(f'FAIL {t.__name__}: {e}')
+    return 1 if failed else 0
+
+
+if __name__ == '__main__':
+    sys.exit(main())
