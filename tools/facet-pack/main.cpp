@@ -104,6 +104,16 @@ int main(int argc, char** argv) {
     if (S_ISDIR(st.st_mode)) return die(std::string(in) + " is a directory, not a STEP file");
     if (!S_ISREG(st.st_mode)) return die(std::string(in) + " is not a regular file");
     if (host::same_file(in, out)) return die(std::string("-o ") + out + " is the STEP file itself: it would be overwritten");
+    {
+        // Say so now, not after minutes of reading: the folder the pack goes in must exist.
+        std::string dir = out;
+        const size_t slash = dir.find_last_of('/');
+        dir = slash == std::string::npos ? "." : slash == 0 ? "/" : dir.substr(0, slash);
+        struct stat ds {};
+        if (stat(dir.c_str(), &ds) != 0 || !S_ISDIR(ds.st_mode)) return die(std::string("cannot write ") + out + ": no folder " + dir);
+        struct stat os {};
+        if (stat(out, &os) == 0 && S_ISDIR(os.st_mode)) return die(std::string("cannot write ") + out + ": it is a folder");
+    }
     // OCCT's own trace messages are noise for a command-line user; keep warnings and worse.
     for (auto& p : Message::DefaultMessenger()->Printers()) p->SetTraceLevel(Message_Fail);
 
