@@ -182,6 +182,13 @@ else()
         # Coverage feedback from the libraries too (cdt/, geom/), not just the fuzz targets:
         # without it libFuzzer mutates blind past the harness.
         add_compile_options(-fsanitize=fuzzer-no-link)
+        # Comparison tracing finds magic bytes (the pack's tags and sizes); the geometry's
+        # comparisons are against computed floats, where it only costs time: off, the
+        # tessellate target runs ~4x the executions (docs/reliability.md, long runs).
+        option(FACET_FUZZ_TRACE_CMP "libFuzzer comparison tracing in every library" ON)
+        if(NOT FACET_FUZZ_TRACE_CMP)
+            add_compile_options(-fno-sanitize-coverage=trace-cmp)
+        endif()
     endif()
 endif()
 

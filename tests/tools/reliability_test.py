@@ -117,6 +117,11 @@ def output_is_the_input():
     os.link(step, link)
     expect_exit(run([ARGS.packer, step, '-o', link]), 1, r'is the STEP file itself', 'facet-pack X -o a hard link of X')
     expect(open(step, 'rb').read() == before, 'the STEP file changed')
+    # An output nowhere to be written is refused before the STEP file is read, not after.
+    expect_exit(run([ARGS.packer, step, '-o', os.path.join(d, 'no-such-folder', 'x.fpk')]), 1,
+                r'no folder .*no-such-folder', 'facet-pack -o into a missing folder')
+    expect_exit(run([ARGS.packer, step, '-o', d]), 1, r'it is a folder', 'facet-pack -o onto a folder')
+    expect(not os.path.exists(os.path.join(d, 'no-such-folder')), 'a folder was made for -o')
     fpk = packed('screw.step', d)
     pack_before = open(fpk, 'rb').read()
     expect_exit(run([ARGS.mesher, fpk, '--stl', fpk]), 2, r'is the pack itself', 'facet-mesh P --stl P')
@@ -163,6 +168,9 @@ def coarse_and_fine_tolerances():
     r = run([ARGS.mesher, fpk, '--tolerance', '1e-4', '--quiet'], timeout=600)
     expect_exit(r, 5, r'a coarser --tolerance meshes them \(the default is 0\.504 mm\)', 'anc101 at 1e-4 mm')
     expect('more samples than the pool holds' not in r.stdout + r.stderr, 'the sample pool still overflows')
+    # Between the two: over the tolerance by a little (the (u,v) grid), said with exit 6 and why.
+    r = run([ARGS.mesher, fpk, '--tolerance', '0.005'])
+    expect_exit(r, 6, r'0\.005 mm is finer than the tested range \(from 0\.02% of the model.s diagonal', 'anc101 at 0.005 mm')
 
 
 def lens_faces_at_coarse_tolerances():
