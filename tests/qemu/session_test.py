@@ -4,6 +4,8 @@ QEMU board, one check per finding:
 
   * bang_then_quit: after '!', a byte no command starts with is a key again: '!q' quits (the
     session used to wait in command mode for a newline until the runner's timeout);
+  * odd_bytes_and_an_overlong_command: NUL, bytes over 0x7F, '!' then a control byte and a
+    command longer than the line are dropped with their reasons; the session goes on;
   * shot_name_with_a_path: '!shot ../../name' is refused by the firmware with its reason, and
     nothing is written outside the run's folder (run.py checks the names it is given too:
     tests/tools/reliability_test.py screenshot_names_stay_in_the_folder);
@@ -62,6 +64,12 @@ def main():
     code, uart, _ = session('bang-q', sample, 'keys !q', timeout=120)
     if code != 0 or "'!q' is not a command" not in uart or 'bye' not in uart:
         problems.append(f'bang_then_quit: exit {code}; the viewer did not take q as a key after !: {uart[-400:]}')
+
+    # Odd bytes (NUL, bytes over 0x7F, a lone '!'-then-control) and a command longer than the
+    # line buffer: each dropped with its reason, and the session still takes its keys.
+    code, uart, _ = session('odd-bytes', sample, 'keys \\x00\\xff\\x80!\\x01', 'keys !shot ' + 'a' * 200, 'keys q', timeout=120)
+    if code != 0 or 'command dropped: longer than 47 bytes' not in uart or 'viewer: command dropped' not in uart or 'bye' not in uart:
+        problems.append(f'odd_bytes_and_an_overlong_command: exit {code}: {uart[-600:]}')
 
     code, uart, out = session('shot-path', sample, 'keys !shot ../../escaped\n', 'keys q', timeout=120)
     escaped = [p for p in (os.path.join(args.work, 'escaped.png'), os.path.join(os.path.dirname(args.work), 'escaped.png'))

@@ -50,6 +50,28 @@ def packed(name, d, *extra):
 
 # -- 2. crashes ---------------------------------------------------------------------------
 
+def broken_step_files():
+    """Not STEP, cut short, empty, missing, a device, a FIFO: each refused with its reason (exit
+    1), nothing written, in bounded time."""
+    d = work('broken-step')
+    good = open(os.path.join(ARGS.models, 'screw.step'), 'rb').read()
+    cases = {'not-step.step': b'hello, not a STEP file\n', 'cut.step': good[:3000], 'empty.step': b'',
+             'binary.step': bytes(range(256)) * 16}
+    for name, data in cases.items():
+        open(os.path.join(d, name), 'wb').write(data)
+    os.mkfifo(os.path.join(d, 'fifo.step'))
+    out = os.path.join(d, 'out.fpk')
+    for name in cases:
+        expect_exit(run([ARGS.packer, os.path.join(d, name), '-o', out], timeout=60), 1, r'not a readable STEP file', name)
+    expect_exit(run([ARGS.packer, os.path.join(d, 'missing.step'), '-o', out]), 1, r'cannot read .*No such file', 'a missing file')
+    expect_exit(run([ARGS.packer, os.path.join(d, 'fifo.step'), '-o', out], timeout=20), 1, 'not a regular file', 'a FIFO')
+    expect_exit(run([ARGS.packer, '/dev/zero', '-o', out], timeout=20), 1, 'not a regular file', '/dev/zero')
+    expect_exit(run([ARGS.packer, d, '-o', out]), 1, 'is a directory', 'a folder')
+    expect(not os.path.exists(out), 'a pack was written from a broken STEP file')
+    expect_exit(run([ARGS.mesher, os.path.join(d, 'missing.fpk')]), 1, r'cannot read .*No such file', 'facet-mesh of a missing pack')
+    expect_exit(run([ARGS.mesher, os.path.join(d, 'cut.step')]), 1, r'cut\.step: ', 'facet-mesh of a STEP file')
+
+
 def mesh_of_a_directory():
     """facet-mesh DIR aborted on an uncaught std::ios_base::failure."""
     expect_exit(run([ARGS.mesher, ARGS.work]), 1, 'is a directory, not a file', 'facet-mesh DIR')
@@ -259,7 +281,7 @@ def screenshot_names_stay_in_the_folder():
         expect(not runner.safe_name(bad), f'{bad!r} accepted')
 
 
-TESTS = [mesh_of_a_directory, check_of_a_directory_or_a_device, writes_onto_a_full_disk, face_with_a_missing_surface,
+TESTS = [broken_step_files, mesh_of_a_directory, check_of_a_directory_or_a_device, writes_onto_a_full_disk, face_with_a_missing_surface,
          tolerance_must_be_a_positive_number, output_is_the_input, trailing_bytes_and_reserved_fields,
          coarse_and_fine_tolerances, lens_faces_at_coarse_tolerances, incomplete_mesh_exits_5, ndr_part01_reads,
          plate_of_many_holes_packs_with_progress, budget_report_exit_codes, screenshot_names_stay_in_the_folder]
