@@ -64,6 +64,7 @@ const char* work_name(Work w) {
     case Work::Face: return "face";
     case Work::Frame: return "frame";
     case Work::Update: return "update";
+    case Work::Fit: return "fit";
     }
     return "work";
 }

@@ -53,8 +53,12 @@ Transform Camera::transform(const Scene& scene, uint32_t index, uint16_t width, 
     const float v_per_mm = kViewPerDiagonal / (2 * radius);
     const float t[3] = {m[3] - centre[0], m[7] - centre[1], m[11] - centre[2]};
     const float pan[3] = {view_.pan_x, view_.pan_y, 0};
+    // View units per mesh unit: 1/16 when the placed model is its shells' own box (the view's
+    // diagonal is 2^16 units, the mesh's 2^20); at most 1 (Scene::fit_bounds keeps it so).
+    const float k = scene.unit() * v_per_mm;
+    in.k16 = round_to_int(k * 65536.0f) + 1;
     for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j) in.a[3 * i + j] = round_to_int(A[3 * i + j] * 67108864.0f); // 2^30 / 16
+        for (int j = 0; j < 3; ++j) in.a[3 * i + j] = round_to_int(A[3 * i + j] * k * 1073741824.0f); // 2^30
         in.b[i] = round_to_int((R[3 * i] * t[0] + R[3 * i + 1] * t[1] + R[3 * i + 2] * t[2] + pan[i]) * v_per_mm);
     }
     // The light, fixed in view space (upper left, toward the viewer), into shell coordinates.
@@ -82,9 +86,10 @@ bool Transform::visible(const int32_t centre[3], int32_t radius, Rows rows) cons
     if (radius <= 0) return true;
     int32_t cx, cy, d;
     to_view(centre, cx, cy, d);
-    // Mesh units are 16 view units (2^20 / 2^16); an eighth more for the rounding of the
-    // fixed-point rotation.
-    const int64_t r = radius / 16 + radius / 128 + 2;
+    // Mesh units to view units (k16 / 2^16, rounded up); an eighth more for the rounding of
+    // the fixed-point rotation.
+    const int64_t rv = (int64_t(radius) * k16) >> 16;
+    const int64_t r = rv + rv / 8 + 2;
     if (d + r < near) return false;
     const int64_t f = f16, w = cx16, X = cx, Y = cy, D = d;
     if (X * f - w * D > r * (f + w) || -X * f - w * D > r * (f + w)) return false;

@@ -27,10 +27,12 @@ struct Rows {
     int32_t top16, bottom16;
 };
 
-// One instance under the camera: view = (a P >> 30) + b (a: rotation x scale, 2^26 = 1).
+// One instance under the camera: view = (a P >> 30) + b (a: rotation x scale; 2^26 when the
+// placed model is as big as its shells' own box: a mesh unit is then 1/16 of a view unit).
 struct Transform {
     int32_t a[9];
     int32_t b[3];
+    int32_t k16; // view units per mesh unit, 2^16 = 1, rounded up (sizes of spheres)
     int32_t light[3]; // Q14, in shell coordinates
     bool mirrored;
     bool closed;
@@ -92,8 +94,11 @@ class Camera {
 public:
     static constexpr float kTurn = 0.2617993878f; // a key turns by 15 degrees
 
-    void fit() { view_ = View{}; } // the whole model, from the default direction
+    void fit() { view_ = View{}; } // the whole model's sphere, from the default direction
+    // The sphere framed again from the current direction (before Framing adjusts it).
+    void reframe() { view_.zoom = 1, view_.pan_x = 0, view_.pan_y = 0; }
     const View& view() const { return view_; }
+    void set_view(const View& v) { view_ = v; }
     // Orbit by angles (rad), dolly by a factor (< 1: closer; kept within 0.05 and 20), pan by
     // millimetres, or by screen pixels (the model's centre follows the pointer).
     void orbit(float d_yaw, float d_pitch);

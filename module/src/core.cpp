@@ -155,8 +155,18 @@ Viewer* Viewer::create(const Config& config, void* workspace, size_t bytes, Resu
 void Core::relay(void* self, const Event& e) {
     Core& c = *static_cast<Core*>(self);
     switch (e.kind) {
-    case Event::Kind::Sampled: c.presenter_.invalidate(); break;     // the new level's wireframe
-    case Event::Kind::Tessellated: c.presenter_.invalidate(); break; // the progress bar goes
+    case Event::Kind::Sampled: // the new level's wireframe; the first one frames the placed model
+        if (e.pass.pass == 0) {
+            c.scene_.fit_bounds(true);
+            c.fit_view(false);
+        }
+        c.presenter_.invalidate();
+        break;
+    case Event::Kind::Tessellated: // the progress bar goes; the first pass's outline is final
+        // (a cylinder's silhouette is no edge): framed again unless the user has moved the view
+        if (e.tessellated.pass == 0 && !c.user_moved_) c.fit_view(true);
+        c.presenter_.invalidate();
+        break;
     default: break;
     }
     if (!c.config_.on_event) return;
@@ -184,6 +194,7 @@ void Core::work(Event::Kind kind, Work what, uint32_t item) {
 
 Result Core::load(const void* file, uint32_t file_bytes, void* memory, uint32_t memory_bytes) {
     scheduler_.stop();
+    framer_.stop();
     presenter_.reset();
     scene_.close();
     pack_bytes_ = pack_file_bytes_ = 0;
@@ -232,6 +243,7 @@ Result Core::load(const void* file, uint32_t file_bytes, void* memory, uint32_t 
     pack_bytes_ = bytes;
     default_tolerance_ = geom::default_tolerance(p);
     camera_.fit();
+    user_moved_ = false;
     Event e{};
     e.kind = Event::Kind::Loaded;
     e.loaded = {uint32_t(p.faces().size()), uint32_t(p.edges().size()), uint32_t(p.shells().size()),
@@ -242,7 +254,7 @@ Result Core::load(const void* file, uint32_t file_bytes, void* memory, uint32_t 
 }
 
 bool Core::frame_wanted() const {
-    if (!scene_.loaded() || scheduler_.sampling()) return false;
+    if (!scene_.loaded() || scheduler_.sampling() || framer_.busy()) return false;
     const module::Totals& t = scene_.totals();
     return presenter_.wanted(t.done + t.failed, t.faces);
 }
@@ -255,7 +267,11 @@ Activity Core::step(uint32_t budget_us) {
         // not between the bands of one frame (they show one state of the model).
         const bool frame = frame_wanted() && presenter_.can_draw();
         const bool mid_bands = presenter_.drawing() && config_.display.band_lines < config_.display.height;
-        if (frame) {
+        if (framer_.busy() && !mid_bands) { // the view being framed: no frame until it sits
+            work(Event::Kind::WorkBegin, Work::Fit, 0);
+            if (framer_.run(scene_, camera_, kFrameUnits)) presenter_.invalidate();
+            work(Event::Kind::WorkEnd, Work::Fit, 0);
+        } else if (frame) {
             const Work w = presenter_.work();
             work(Event::Kind::WorkBegin, w, 0);
             presenter_.run(kFrameUnits, scheduler_.pass());
@@ -280,7 +296,7 @@ Activity Core::step(uint32_t budget_us) {
     }
     // What is left: work that can go on, or only a flush_done() that can free a buffer.
     const bool mid_bands = presenter_.drawing() && config_.display.band_lines < config_.display.height;
-    if ((frame_wanted() && presenter_.can_draw()) || (scheduler_.busy() && !mid_bands)) return Activity::Busy;
+    if ((frame_wanted() && presenter_.can_draw()) || ((scheduler_.busy() || framer_.busy()) && !mid_bands)) return Activity::Busy;
     if (frame_wanted()) return Activity::Waiting;
     return Activity::Idle;
 }
@@ -299,7 +315,19 @@ void Core::command(const module::Command& c) {
     view_changed();
 }
 
+void Core::fit_view(bool keep_direction) {
+    const bool sampled = !scheduler_.sampling();
+    scene_.fit_bounds(sampled);
+    if (keep_direction) {
+        camera_.reframe();
+    } else {
+        camera_.fit();
+    }
+    if (sampled) framer_.start(config_.display.width, config_.display.height, {});
+}
+
 void Core::view_changed() {
+    user_moved_ = true;
     presenter_.invalidate();
     Event e{};
     e.kind = Event::Kind::ViewChanged;
@@ -323,7 +351,11 @@ void Core::act(Action a) {
     case Action::PanRight: camera_.pan(pan, 0); break;
     case Action::PanUp: camera_.pan(0, pan); break;
     case Action::PanDown: camera_.pan(0, -pan); break;
-    case Action::Fit: camera_.fit(); break;
+    case Action::Fit:
+        fit_view(true);
+        view_changed();
+        user_moved_ = false; // framed again once the faces are in
+        return;
     case Action::Coarser:
     case Action::Finer: {
         const float t = a == Action::Coarser ? scheduler_.tolerance() * 2 : scheduler_.tolerance() * 0.5f;

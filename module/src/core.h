@@ -2,6 +2,7 @@
 // The viewer behind facet::Viewer: its parts, in the workspace, and the loop of step().
 #include "camera.h"
 #include "controls.h"
+#include "fit.h"
 #include "facet/viewer.h"
 #include "painter.h"
 #include "presenter.h"
@@ -37,6 +38,9 @@ public:
     static constexpr uint32_t kTessUnits = 200;
 
     module::Controls& controls() { return controls_; }
+    // For tests of the parts behind the public API (the fitted view of every model).
+    const module::Camera& camera() const { return camera_; }
+    const module::Scene& scene() const { return scene_; }
 
 private:
     static void relay(void* self, const Event& e); // the parts' events: act on some, pass all on
@@ -47,6 +51,7 @@ private:
     bool frame_wanted() const;
     void pick(int16_t x, int16_t y);
     void view_changed();
+    void fit_view(bool keep_direction); // frame the placed model (from the default direction, or this one)
 
     Config config_;
     module::Emitter emitter_;
@@ -57,10 +62,12 @@ private:
     module::Painter painter_;
     module::Scheduler scheduler_;
     module::Presenter presenter_;
+    module::Framer framer_;
     std::span<module::Projected> projected_;
     float default_tolerance_ = 0;
     uint32_t pack_bytes_ = 0, pack_file_bytes_ = 0;
     bool carved_ = false;
+    bool user_moved_ = false; // the view was moved since load (no framing again when the faces are in)
     // Events of a piece of work are handed on after it (so a profiler's region around the
     // piece measures the work, not what the application does with its events).
     static constexpr uint32_t kHeld = 8;

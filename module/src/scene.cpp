@@ -32,11 +32,91 @@ Result Scene::open(const geom::Pack& pack) {
         const float e = 0.5f * (h.bbox_max[k] - h.bbox_min[k]);
         r2 += e * e;
     }
-    radius_ = r2 > 0 ? std::sqrt(r2) : 1.0f;
+    radius_ = own_radius_ = r2 > 0 ? std::sqrt(r2) : 1.0f;
     unit_ = 2 * radius_ / kUnitsPerDiagonal;
     totals_ = {};
     loaded_ = true;
+    fit_bounds(false);
     return {};
+}
+
+namespace {
+
+struct Box {
+    int64_t lo[3] = {INT64_MAX, INT64_MAX, INT64_MAX}, hi[3] = {INT64_MIN, INT64_MIN, INT64_MIN};
+    bool empty() const { return lo[0] > hi[0]; }
+    void add(const int32_t p[3]) {
+        for (int k = 0; k < 3; ++k) {
+            lo[k] = p[k] < lo[k] ? p[k] : lo[k];
+            hi[k] = p[k] > hi[k] ? p[k] : hi[k];
+        }
+    }
+};
+
+} // namespace
+
+void Scene::fit_bounds(bool sampled) {
+    const auto shells = pack_.shells();
+    const auto instances = pack_.instances();
+    const auto faces = pack_.faces();
+    const auto loops = pack_.loops();
+    const auto coedges = pack_.coedges();
+    const auto edges = pack_.edges();
+    const float inv = 1.0f / unit_;
+    float lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (uint32_t s = 0; s < shells.size(); ++s) {
+        Box box;
+        for (uint32_t f = shells[s].first_face; f < shells[s].first_face + shells[s].face_count && f < faces.size(); ++f) {
+            const FaceInfo& info = mem_.faces[f];
+            if (sampled && info.state == FaceState::Done) {
+                for (uint32_t v = 0; v < info.vertex_count; ++v) box.add(mem_.vertices[info.first_vertex + v].p);
+            }
+            const pack::Face& F = faces[f];
+            for (uint32_t l = F.first_loop; l < F.first_loop + F.loop_count; ++l) {
+                for (uint32_t c = loops[l].first_coedge; c < loops[l].first_coedge + loops[l].coedge_count; ++c) {
+                    const uint32_t e = coedges[c].edge();
+                    const uint32_t n = !sampled || mem_.samples.count.empty() ? 0 : mem_.samples.count[e];
+                    if (n && !mem_.sample_q.empty()) {
+                        const uint32_t first = mem_.samples.first[e];
+                        for (uint32_t i = first; i < first + n; ++i) box.add(&mem_.sample_q[3 * i]);
+                    } else { // not sampled yet: the edge's ends
+                        for (const uint32_t vi : {edges[e].v0, edges[e].v1}) {
+                            const float* q = pack_.vertices()[vi].p;
+                            const float f[3] = {q[0] * inv, q[1] * inv, q[2] * inv};
+                            if (!(std::fabs(f[0]) < 1e9f && std::fabs(f[1]) < 1e9f && std::fabs(f[2]) < 1e9f)) continue;
+                            const int32_t p[3] = {int32_t(f[0]), int32_t(f[1]), int32_t(f[2])};
+                            box.add(p);
+                        }
+                    }
+                }
+            }
+        }
+        if (box.empty()) continue;
+        for (const pack::Instance& inst : instances) {
+            if (inst.shell != s) continue;
+            for (int corner = 0; corner < 8; ++corner) {
+                const float c[3] = {float(corner & 1 ? box.hi[0] : box.lo[0]) * unit_, float(corner & 2 ? box.hi[1] : box.lo[1]) * unit_,
+                                    float(corner & 4 ? box.hi[2] : box.lo[2]) * unit_};
+                for (int k = 0; k < 3; ++k) {
+                    const float w = inst.m[4 * k] * c[0] + inst.m[4 * k + 1] * c[1] + inst.m[4 * k + 2] * c[2] + inst.m[4 * k + 3];
+                    lo[k] = w < lo[k] ? w : lo[k];
+                    hi[k] = w > hi[k] ? w : hi[k];
+                }
+            }
+        }
+    }
+    if (!(lo[0] <= hi[0])) return; // nothing placed: the pack's own box stays
+    float r2 = 0;
+    for (int k = 0; k < 3; ++k) {
+        centre_[k] = 0.5f * (lo[k] + hi[k]);
+        const float e = 0.5f * (hi[k] - lo[k]);
+        r2 += e * e;
+    }
+    // The camera's scale from mesh units to view units must stay under one (camera.cpp): a
+    // placed model far smaller than its shells' own spread is framed at 1/16 of that spread.
+    const float floor = own_radius_ / 16;
+    radius_ = std::sqrt(r2);
+    if (!(radius_ > floor)) radius_ = floor;
 }
 
 uint32_t Scene::shell_of(uint32_t f) const {

@@ -59,10 +59,17 @@ public:
     const geom::Pack& pack() const { return pack_; }
     uint32_t face_count() const { return uint32_t(pack_.faces().size()); }
     uint32_t edge_count() const { return uint32_t(pack_.edges().size()); }
-    // The bounding box's centre and half its diagonal (mm), and the mesh quantum (mm).
+    // The placed model (every instance's shell where the instance puts it): its bounding
+    // box's centre and half its diagonal (mm), what the camera frames. The mesh quantum (mm)
+    // comes from the shells' own coordinates (the pack's box), which the mesh is stored in.
     const float* centre() const { return centre_; }
     float radius() const { return radius_; }
     float unit() const { return unit_; }
+    // The placed box again from the best the scene has: each shell's edge samples and its
+    // tessellated faces (`sampled` false: the edges' end vertices only, as at open(), before
+    // the pass's samples exist), through every instance's placement. About ten instructions a
+    // sample and a vertex (integer compares), then 8 corners an instance.
+    void fit_bounds(bool sampled);
     uint32_t shell_of(uint32_t face) const;
     uint32_t colour_of(uint32_t face) const; // rgb of the face (or of its shell, or the default)
 
@@ -89,7 +96,7 @@ private:
     Memory mem_{};
     geom::Pack pack_;
     bool loaded_ = false;
-    float unit_ = 1, centre_[3] = {0, 0, 0}, radius_ = 1;
+    float unit_ = 1, centre_[3] = {0, 0, 0}, radius_ = 1, own_radius_ = 1;
     Totals totals_;
 };
 

@@ -26,10 +26,12 @@ ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)
 sys.path.insert(0, os.path.join(ROOT, 'tools'))
 import img  # noqa: E402
 
+# The taps come after a fit (f: framed again from the direction the session turned to): the
+# one in the middle of the screen lands on the part, the one in the corner on nothing.
 SESSION = ['keys dd!shot turned\\n', 'mouse 60 -30', 'keys !shot dragged\\n', 'mouse 30 20 right',
            'keys !shot panned\\n', 'mouse 0 -25 middle', 'keys !shot dollied\\n', 'wheel 2', 'keys !shot wheeled\\n',
            'drag 200 150 40 10', 'keys !shot fingerdrag\\n', 'pinch 240 130 100 160', 'keys !shot pinched\\n',
-           'tap 240 130', 'tap 5 5', 'click', 'keys f]', 'keys !shot lod\\n']
+           'keys f', 'tap {mx} {my}', 'tap 5 5', 'click', 'keys ]', 'keys !shot lod\\n']
 SHOTS = ['wireframe', 'half', 'done', 'turned', 'dragged', 'panned', 'dollied', 'wheeled', 'fingerdrag', 'pinched', 'lod']
 
 
@@ -44,8 +46,9 @@ def run(sim, fpk, out, size, mode):
         cmd.append('--headless')
     if mode == 'bands':
         cmd += ['--bands', '16']
+    w, h = (int(v) for v in size.split('x'))
     for s in SESSION:
-        cmd += ['--send', s]
+        cmd += ['--send', s.format(mx=w // 2, my=h // 2)]
     r = subprocess.run(cmd, capture_output=True, text=True, env=env, timeout=300)
     picks = re.findall(r'^@pick .*$', r.stdout, re.M)
     return r, picks

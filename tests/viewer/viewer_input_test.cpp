@@ -1,6 +1,7 @@
 // The module through its public API (facet/viewer.h), as an application uses it: bad packs,
 // faces over capacity, the display contract (full frames and bands, copy and scan-out, a DMA's
 // late flush_done), time slicing, input and the events out.
+#include "core.h"
 #include "facet/viewer.h"
 #include "geom/pack.h"
 #include "hal/print.h"
@@ -393,6 +394,52 @@ TEST(Viewer, ADmaDisplayGetsNoDrawingIntoABufferInFlight) {
     }
 }
 
+// Parts placed far from their own origins (an assembly's instances): the view frames the
+// placed model, centred and filling the screen, not the parts where their files put them.
+TEST(Viewer, AnAssemblyIsFramedWhereItsInstancesPlaceItsParts) {
+    PackWriter w;
+    const uint32_t plane = w.add_surface(pack::SurfaceType::Plane, {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1});
+    const uint32_t v[4] = {w.add_vertex(0, 0, 0), w.add_vertex(40, 0, 0), w.add_vertex(40, 10, 0), w.add_vertex(0, 10, 0)};
+    const uint32_t first = w.coedge_count();
+    for (int i = 0; i < 4; ++i) {
+        const uint32_t e = w.add_edge({pack::kStraight, 0, i % 2 ? 10.0f : 40.0f, v[i], v[(i + 1) % 4], 1e-7f, 0});
+        w.add_coedge(pack::Coedge::make(e, false, pack::Seam::None));
+    }
+    const uint32_t loop = w.add_loop({first, 4});
+    w.add_face({plane, loop, 1, pack::kNoIndex, pack::kNoIndex, 0, {0, 0, 0}, {0, 0}, {40, 10}});
+    const uint32_t shell = w.add_shell({0, 1, pack::kNoIndex, 0});
+    // Three copies 5 m away from the part's origin, one turned a quarter about z.
+    w.add_instance({shell, {1, 0, 0, 5000, 0, 1, 0, 3000, 0, 0, 1, 0}});
+    w.add_instance({shell, {1, 0, 0, 5000, 0, 1, 0, 3020, 0, 0, 1, 0}});
+    w.add_instance({shell, {0, -1, 0, 5060, 1, 0, 0, 3000, 0, 0, 1, 0}});
+    App app;
+    ASSERT_TRUE(app.create().ok());
+    ASSERT_TRUE(app.load(w.finish()).ok());
+    app.run();
+    const Core& core = *static_cast<const Core*>(app.v);
+    int32_t l = INT32_MAX, t = INT32_MAX, r = INT32_MIN, b = INT32_MIN;
+    for (uint32_t i = 0; i < 3; ++i) {
+        const module::Transform tr = core.camera().transform(core.scene(), i, app.w, app.h);
+        const module::FaceInfo& F = core.scene().face(0);
+        ASSERT_EQ(F.state, module::FaceState::Done);
+        for (uint32_t k = 0; k < F.vertex_count; ++k) {
+            module::Projected p;
+            tr.project(core.scene().vertices()[F.first_vertex + k].p, p);
+            ASSERT_EQ(p.out, 0) << "instance " << i << " vertex " << k;
+            l = std::min(l, p.s.x), r = std::max(r, p.s.x), t = std::min(t, p.s.y), b = std::max(b, p.s.y);
+        }
+    }
+    // In pixels: centred within a pixel and a half, the larger side filling 85% (within 2%).
+    EXPECT_NEAR((l + r) / 32.0, app.w / 2.0, 1.5);
+    EXPECT_NEAR((t + b) / 32.0, app.h / 2.0, 1.5);
+    const double fill = std::max((r - l) / 16.0 / app.w, (b - t) / 16.0 / app.h);
+    EXPECT_NEAR(fill, 0.85, 0.02);
+    // A tap in the middle lands on the model.
+    app.v->touch(0, int16_t(app.w / 2), int16_t(app.h / 2), true);
+    app.v->touch(0, int16_t(app.w / 2), int16_t(app.h / 2), false);
+    ASSERT_NE(app.last(Event::Kind::Picked), nullptr);
+}
+
 TEST(Viewer, KeysGesturesAndPicks) {
     App app;
     ASSERT_TRUE(app.create().ok());
@@ -401,13 +448,13 @@ TEST(Viewer, KeysGesturesAndPicks) {
     auto view = [&]() { return app.last(Event::Kind::ViewChanged)->view; };
     app.v->key('d');
     ASSERT_NE(app.last(Event::Kind::ViewChanged), nullptr);
-    const float yaw = view().yaw_deg;
+    const float yaw = view().yaw_deg, fitted = view().zoom; // the dolly the framing chose
     app.v->key(KeyLeft);
     EXPECT_NEAR(view().yaw_deg, yaw - 15, 0.01f);
     app.v->key('+');
-    EXPECT_NEAR(view().zoom, 0.8f, 1e-5f);
+    EXPECT_NEAR(view().zoom, 0.8f * fitted, 1e-5f);
     app.v->wheel(-1);
-    EXPECT_NEAR(view().zoom, 1.0f, 1e-5f);
+    EXPECT_NEAR(view().zoom, fitted, 1e-5f);
     const int changes = app.count(Event::Kind::ViewChanged);
     app.v->key('%'); // no key of the table
     EXPECT_EQ(app.count(Event::Kind::ViewChanged), changes);

@@ -74,7 +74,7 @@ struct Display {
     void* user = nullptr;
 };
 
-enum class Work : uint8_t { Unpack, Sampling, Face, Frame, Update }; // pieces of work (for profiling)
+enum class Work : uint8_t { Unpack, Sampling, Face, Frame, Update, Fit }; // pieces of work (for profiling)
 
 struct Event {
     enum class Kind : uint8_t {

@@ -1,0 +1,123 @@
+#include "fit.h"
+
+namespace facet::module {
+
+void Outline::add(const Projected& p) {
+    if (p.out) {
+        ++hidden;
+        return;
+    }
+    left = p.s.x < left ? p.s.x : left;
+    right = p.s.x > right ? p.s.x : right;
+    top = p.s.y < top ? p.s.y : top;
+    bottom = p.s.y > bottom ? p.s.y : bottom;
+    ++points;
+}
+
+void Framer::start(uint16_t width, uint16_t height, FreeArea taken, uint32_t instance, uint32_t face) {
+    busy_ = true;
+    width_ = width, height_ = height, taken_ = taken;
+    only_instance_ = instance, only_face_ = face;
+    round_ = 0;
+    instance_ = face_ = loop_ = coedge_ = k_ = 0, phase_ = 0;
+    have_transform_ = false;
+    o_ = {};
+}
+
+bool Framer::run(const Scene& scene, Camera& camera, uint32_t units) {
+    if (!busy_) return true;
+    const geom::Pack& pack = scene.pack();
+    const auto instances = pack.instances();
+    const auto loops = pack.loops();
+    const auto coedges = pack.coedges();
+    const geom::EdgeSamples& samples = scene.samples();
+    uint32_t budget = units * kPointsPerUnit;
+    Projected p;
+    while (budget > 0) {
+        if (instance_ >= instances.size()) { // a round is complete
+            if (adjust(scene, camera) || ++round_ >= kRounds) {
+                busy_ = false;
+                return true;
+            }
+            instance_ = face_ = loop_ = coedge_ = k_ = 0, phase_ = 0;
+            have_transform_ = false;
+            o_ = {};
+            budget = budget > 64 ? budget - 64 : 0; // the adjustment's own cost
+            continue;
+        }
+        if (only_instance_ != ~0u && instance_ != only_instance_) {
+            ++instance_;
+            continue;
+        }
+        const pack::Shell& sh = pack.shells()[instances[instance_].shell];
+        if (!have_transform_) {
+            t_ = camera.transform(scene, instance_, width_, height_);
+            have_transform_ = true;
+            face_ = sh.first_face, phase_ = 0, k_ = 0;
+            budget = budget > 32 ? budget - 32 : 0;
+        }
+        if (face_ >= sh.first_face + sh.face_count || face_ >= pack.faces().size()) {
+            ++instance_;
+            have_transform_ = false;
+            continue;
+        }
+        if (only_face_ != ~0u && face_ != only_face_) {
+            ++face_;
+            continue;
+        }
+        const FaceInfo& F = scene.face(face_);
+        const pack::Face& PF = pack.faces()[face_];
+        if (phase_ == 0) { // the face's mesh
+            if (F.state == FaceState::Done) {
+                for (; k_ < F.vertex_count && budget > 0; ++k_, --budget) {
+                    t_.project(scene.vertices()[F.first_vertex + k_].p, p);
+                    o_.add(p);
+                }
+                if (k_ < F.vertex_count) continue;
+            }
+            phase_ = 1, loop_ = PF.first_loop, coedge_ = loop_ < loops.size() ? loops[loop_].first_coedge : 0, k_ = 0;
+        }
+        // The face's edges, as sampled (all there is of a face not yet tessellated).
+        if (samples.count.empty() || loop_ >= PF.first_loop + PF.loop_count) {
+            ++face_, phase_ = 0, k_ = 0;
+            continue;
+        }
+        if (coedge_ >= loops[loop_].first_coedge + loops[loop_].coedge_count) {
+            ++loop_;
+            if (loop_ < PF.first_loop + PF.loop_count) coedge_ = loops[loop_].first_coedge;
+            continue;
+        }
+        const uint32_t e = coedges[coedge_].edge(), n = samples.count[e];
+        for (; k_ < n && budget > 0; ++k_, --budget) {
+            t_.project(scene.sample_q(samples.first[e] + k_), p);
+            o_.add(p);
+        }
+        if (k_ < n) continue;
+        ++coedge_, k_ = 0;
+    }
+    return false;
+}
+
+bool Framer::adjust(const Scene& scene, Camera& camera) {
+    const int32_t aw = int32_t(width_) - taken_.left - taken_.right, ah = int32_t(height_) - taken_.top - taken_.bottom;
+    if (o_.points == 0 || aw < 8 || ah < 8) return true; // nothing to frame
+    // The area's centre and the outline's offset from it, in 16ths of a pixel.
+    const int32_t ax16 = (taken_.left * 2 + aw) * 8, ay16 = (taken_.top * 2 + ah) * 8;
+    const int32_t dx = ax16 - int32_t((int64_t(o_.left) + o_.right) / 2), dy = ay16 - int32_t((int64_t(o_.top) + o_.bottom) / 2);
+    const float w = float(o_.right - o_.left) / (16.0f * float(aw)), h = float(o_.bottom - o_.top) / (16.0f * float(ah));
+    const float now = w > h ? w : h;
+    const bool centred = dx >= -16 && dx <= 16 && dy >= -16 && dy <= 16;
+    if (!o_.hidden && centred && now <= kFill * 1.02f && now >= kFill * 0.98f) return true;
+    // Centre: pan by the offset (pan_pixels moves the model's centre with the pointer). Size:
+    // the dolly scales the outline about inversely (exactly for a flat model at the centre's
+    // depth); a point behind the eye means: back off.
+    camera.pan_pixels(dx / 16, dy / 16, scene.radius(), width_, height_);
+    if (o_.hidden) {
+        camera.dolly(2.0f);
+    } else if (now > 0) {
+        camera.dolly(now / kFill);
+    }
+    return false;
+}
+
+} // namespace facet::module

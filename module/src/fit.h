@@ -1,0 +1,58 @@
+#pragma once
+// Framing: the placed model's outline as the camera sees it, and the pan and dolly that centre
+// it and make it fill the screen's free area. The outline is what is drawn: every instance's
+// tessellated faces and sampled edges, projected exactly as a frame projects them. A round
+// projects every point once; rounds repeat until the outline sits (perspective makes neither
+// step exact when the camera ends close). The work is cut into pieces of about a million
+// instructions on the ARM926, like a frame's, so a big model's fit never stalls a step.
+#include "camera.h"
+#include "scene.h"
+
+#include <cstdint>
+
+namespace facet::module {
+
+// A rectangle of the screen, in 16ths of a pixel.
+struct Outline {
+    int32_t left = INT32_MAX, top = INT32_MAX, right = INT32_MIN, bottom = INT32_MIN;
+    uint32_t points = 0; // projected; 0: nothing to frame
+    uint32_t hidden = 0; // behind the eye or past the guard band (not in the box)
+    void add(const Projected& p);
+};
+
+// Pixels the overlay takes at each side of the screen: the model is framed in the rest.
+struct FreeArea {
+    int16_t left = 0, top = 0, right = 0, bottom = 0;
+};
+
+class Framer {
+public:
+    static constexpr uint32_t kPointsPerUnit = 8; // a unit: about 8 projected points
+    static constexpr int kRounds = 8;
+    static constexpr float kFill = 0.85f;
+
+    // Frame the whole model (face = ~0u) or one face of one instance, on a width x height screen.
+    void start(uint16_t width, uint16_t height, FreeArea taken, uint32_t instance = ~0u, uint32_t face = ~0u);
+    void stop() { busy_ = false; }
+    bool busy() const { return busy_; }
+    // Up to `units` of work on `camera`; true when the framing is done (or there was nothing to frame).
+    bool run(const Scene& scene, Camera& camera, uint32_t units);
+    uint32_t rounds() const { return round_; }
+
+private:
+    bool adjust(const Scene& scene, Camera& camera); // a round's outline seen: true if it sits
+    bool busy_ = false;
+    uint16_t width_ = 0, height_ = 0;
+    FreeArea taken_;
+    uint32_t only_instance_ = ~0u, only_face_ = ~0u;
+    int round_ = 0;
+    // Where the round's scan stands: instance, face, then the face's vertices (phase 0) and its
+    // loops' coedges' samples (phase 1).
+    uint32_t instance_ = 0, face_ = 0, loop_ = 0, coedge_ = 0, k_ = 0;
+    uint8_t phase_ = 0;
+    bool have_transform_ = false;
+    Transform t_{};
+    Outline o_;
+};
+
+} // namespace facet::module
