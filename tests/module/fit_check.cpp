@@ -29,8 +29,10 @@ struct Fit {
     std::string why;
 };
 
-constexpr double kCentreSlack = 0.10; // box centre within 10% of the short side of the screen centre
-constexpr double kMinFill = 0.45;     // the box's larger extent over the screen's, at least
+// The viewer frames the outline to fill 85% (module/src/fit.h, within 2% once it sits; faces
+// that bulge past their edges can add a little) and centres it within a pixel.
+constexpr double kCentreSlack = 0.02; // box centre within 2% of the short side of the screen centre
+constexpr double kMinFill = 0.80, kMaxFill = 0.92; // the box's larger extent over the screen's
 
 void flush(void*, const Area&, const Rgb565*) {}
 
@@ -86,8 +88,8 @@ Fit check(const std::vector<uint8_t>& file, Screen s) {
     } else if (std::abs(cx) > kCentreSlack * shorter || std::abs(cy) > kCentreSlack * shorter) {
         std::snprintf(buf, sizeof buf, "off-centre by (%.0f, %.0f) pixels", cx, cy);
         fit.ok = false, fit.why = buf;
-    } else if (fill < kMinFill) {
-        std::snprintf(buf, sizeof buf, "fills only %.0f%% of the screen", 100 * fill);
+    } else if (fill < kMinFill || fill > kMaxFill) {
+        std::snprintf(buf, sizeof buf, "fills %.0f%% of the screen (framed: 85%%)", 100 * fill);
         fit.ok = false, fit.why = buf;
     }
     return fit;

@@ -15,6 +15,7 @@
 #include "hal/print.h"
 #include "file_io.h"
 #include "occt_to_pack.h"
+#include "reference.h"
 #include "pack_io.h"
 #include "pack_writer.h"
 #include "step_reader.h"
@@ -51,7 +52,7 @@ using namespace facet;
 namespace {
 
 int usage() {
-    std::fprintf(stderr, "usage: facet-pack MODEL.step -o MODEL.fpk [--plain] [--unit mm|cm|m|in|ft] [--partial] [--quiet]\n"
+    std::fprintf(stderr, "usage: facet-pack MODEL.step -o MODEL.fpk [--plain] [--unit mm|cm|m|in|ft] [--partial] [--reference FACES.json] [--quiet]\n"
                          "       facet-pack --check MODEL.fpk\n");
     return 2;
 }
@@ -81,7 +82,7 @@ int check(const char* path) {
 } // namespace
 
 int main(int argc, char** argv) {
-    const char *in = nullptr, *out = nullptr;
+    const char *in = nullptr, *out = nullptr, *reference = nullptr;
     bool quiet = false, plain = false, partial = false;
     packer::UnitGuess unit = packer::UnitGuess::BySize;
     for (int i = 1; i < argc; ++i) {
@@ -90,6 +91,7 @@ int main(int argc, char** argv) {
         else if (!std::strcmp(argv[i], "--quiet")) quiet = true;
         else if (!std::strcmp(argv[i], "--plain")) plain = true;
         else if (!std::strcmp(argv[i], "--partial")) partial = true;
+        else if (!std::strcmp(argv[i], "--reference") && i + 1 < argc && !reference) reference = argv[++i];
         else if (!std::strcmp(argv[i], "--unit") && i + 1 < argc) {
             if (!packer::parse_unit(argv[++i], unit)) {
                 std::fprintf(stderr, "facet-pack: error: --unit %s: one of mm, cm, m, in, ft\n", argv[i]);
@@ -153,6 +155,7 @@ int main(int argc, char** argv) {
     const std::vector<uint8_t> bytes = plain ? pack : geom::deflate_pack(pack);
     if (bytes.empty()) return die("zlib could not deflate the pack");
     if (!host::write_file(out, bytes.data(), bytes.size(), error)) return die(error);
+    if (reference && !host::write_file(reference, packer::reference_json(packer.packed_faces, model.unit_mm), error)) return die(error);
     std::string types;
     for (auto& [k, v] : stats.surface_types) types += (types.empty() ? "" : ", ") + std::to_string(v) + " " + k;
     std::printf("%s: %u solids, %u open shells, %u instances, %u faces (%s), %u edges", in, stats.solids, stats.shells,

@@ -487,7 +487,7 @@ uint32_t Packer::add_prototype(const TopoDS_Shape& shape, bool closed) {
                      uint8_t(original.Orientation() == TopAbs_REVERSED), {0, 0, 0}, {float(u0), float(v0)}, {float(u1), float(v1)}});
         ++faces;
         ++stats_.faces;
-        packed_faces.push_back(face);
+        packed_faces.push_back(original); // its orientation kept (the reference values need it)
     } catch (const Standard_Failure& f) {
         ++stats_.faces_skipped;
         if (stats_.first_problem.empty()) stats_.first_problem = std::string("a face failed: ") + f.GetMessageString();

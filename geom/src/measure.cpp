@@ -1,0 +1,161 @@
+#include "geom/measure.h"
+
+#include <cmath>
+
+namespace facet::geom {
+namespace {
+
+D3 operator-(D3 a, D3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+D3 operator*(D3 a, double s) { return {a.x * s, a.y * s, a.z * s}; }
+double dot(D3 a, D3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+D3 cross(D3 a, D3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
+double length(D3 a) { return std::sqrt(dot(a, a)); }
+D3 unit(D3 a) {
+    const double l = length(a);
+    return l > 0 ? a * (1 / l) : a;
+}
+
+constexpr double kHalfPi = 1.57079632679489661923;
+
+D3 d3(const float* q) { return {q[0], q[1], q[2]}; }
+
+// A point and a direction through the placement (rows: x, y, z; column 3: translation).
+D3 place_point(const float* m, D3 p) {
+    if (!m) return p;
+    return {m[0] * p.x + m[1] * p.y + m[2] * p.z + m[3], m[4] * p.x + m[5] * p.y + m[6] * p.z + m[7],
+            m[8] * p.x + m[9] * p.y + m[10] * p.z + m[11]};
+}
+D3 place_direction(const float* m, D3 d) {
+    if (!m) return d;
+    return {m[0] * d.x + m[1] * d.y + m[2] * d.z, m[4] * d.x + m[5] * d.y + m[6] * d.z, m[8] * d.x + m[9] * d.y + m[10] * d.z};
+}
+
+// The angle between two lines (or planes' normals), 0 to pi/2, whichever way they point.
+double line_angle(D3 a, D3 b) {
+    const double s = length(cross(a, b)), c = std::fabs(dot(a, b));
+    return std::atan2(s, c);
+}
+
+double point_to_axis(D3 p, D3 origin, D3 dir) { return length(cross(p - origin, dir)); }
+
+} // namespace
+
+bool FaceGeometry::has_axis() const {
+    return type == pack::SurfaceType::Cylinder || type == pack::SurfaceType::Cone || type == pack::SurfaceType::Torus ||
+           type == pack::SurfaceType::Revolution;
+}
+bool FaceGeometry::has_point() const { return type == pack::SurfaceType::Sphere || type == pack::SurfaceType::Torus; }
+
+const char* surface_name(pack::SurfaceType t) {
+    switch (t) {
+    case pack::SurfaceType::Plane: return "plane";
+    case pack::SurfaceType::Cylinder: return "cylinder";
+    case pack::SurfaceType::Cone: return "cone";
+    case pack::SurfaceType::Sphere: return "sphere";
+    case pack::SurfaceType::Torus: return "torus";
+    case pack::SurfaceType::BSpline: return "B-spline";
+    case pack::SurfaceType::Revolution: return "revolution";
+    case pack::SurfaceType::Extrusion: return "extrusion";
+    }
+    return "surface";
+}
+
+Result describe_face(const Pack& pack, uint32_t face, const float* m, FaceGeometry& g) {
+    if (face >= pack.faces().size()) return Result::fail(Status::OutOfRange, "no such face", {"face", face});
+    const pack::Face& F = pack.faces()[face];
+    const pack::Surface& S = pack.surfaces()[F.surface];
+    const float* q = pack.floats().data() + S.params;
+    g = {};
+    g.type = pack::SurfaceType(S.type);
+    g.reversed = F.reversed != 0;
+    const double sense = g.reversed ? -1 : 1;
+    switch (g.type) {
+    case pack::SurfaceType::Plane:
+    case pack::SurfaceType::Cylinder:
+    case pack::SurfaceType::Cone:
+    case pack::SurfaceType::Sphere:
+    case pack::SurfaceType::Torus: {
+        const D3 O = d3(q), X = d3(q + 3), Y = d3(q + 6), Z = d3(q + 9);
+        // The surfaces' natural normal is outward (away from the axis, for a cylinder) on a
+        // right-handed frame; a left-handed one turns it in.
+        const double handed = dot(cross(X, Y), Z) < 0 ? -1 : 1;
+        g.origin = place_point(m, O);
+        if (g.type == pack::SurfaceType::Plane) {
+            g.axis = unit(place_direction(m, cross(X, Y) * sense));
+            g.offset = dot(g.axis, g.origin);
+            break;
+        }
+        g.axis = unit(place_direction(m, Z));
+        g.radius = q[12];
+        if (g.type == pack::SurfaceType::Cone) g.half_angle = q[13];
+        if (g.type == pack::SurfaceType::Torus) g.minor = q[13];
+        g.hole = sense * handed < 0;
+        break;
+    }
+    case pack::SurfaceType::BSpline:
+        g.u_degree = int(q[0]), g.v_degree = int(q[1]), g.u_poles = int(q[2]), g.v_poles = int(q[3]);
+        g.rational = q[6] != 0;
+        g.u_periodic = q[7] != 0, g.v_periodic = q[8] != 0;
+        break;
+    case pack::SurfaceType::Revolution:
+        g.origin = place_point(m, d3(q));
+        g.axis = unit(place_direction(m, d3(q + 3)));
+        break;
+    case pack::SurfaceType::Extrusion: g.axis = unit(place_direction(m, d3(q))); break;
+    }
+    return {};
+}
+
+Relation relate(const FaceGeometry& a, const FaceGeometry& b) {
+    using T = pack::SurfaceType;
+    Relation r;
+    const bool pa = a.type == T::Plane, pb = b.type == T::Plane;
+    if (pa && pb) {
+        r.kind = Relation::Kind::Planes;
+        r.angle = line_angle(a.axis, b.axis);
+        r.parallel = r.angle < kParallel;
+        if (r.parallel) r.distance = std::fabs(dot(a.axis, b.origin - a.origin)), r.has_distance = true;
+        return r;
+    }
+    if (pa || pb) {
+        const FaceGeometry& plane = pa ? a : b;
+        const FaceGeometry& other = pa ? b : a;
+        if (other.has_axis()) {
+            r.kind = Relation::Kind::PlaneAxis;
+            // The axis against the plane: 0 when it lies along it, pi/2 along the normal.
+            r.angle = kHalfPi - line_angle(plane.axis, other.axis);
+            r.parallel = r.angle < kParallel;
+            if (r.parallel) r.distance = std::fabs(dot(plane.axis, other.origin - plane.origin)), r.has_distance = true;
+            return r;
+        }
+        if (other.has_point()) {
+            r.kind = Relation::Kind::PlanePoint;
+            r.distance = std::fabs(dot(plane.axis, other.origin - plane.origin)), r.has_distance = true;
+            return r;
+        }
+        return r;
+    }
+    if (a.has_axis() && b.has_axis()) {
+        r.kind = Relation::Kind::Axes;
+        r.angle = line_angle(a.axis, b.axis);
+        r.parallel = r.angle < kParallel;
+        const D3 n = cross(a.axis, b.axis);
+        r.distance = r.parallel ? point_to_axis(b.origin, a.origin, a.axis) : std::fabs(dot(b.origin - a.origin, n)) / length(n);
+        r.has_distance = true;
+        return r;
+    }
+    if ((a.has_axis() && b.has_point()) || (a.has_point() && b.has_axis())) {
+        const FaceGeometry& axis = a.has_axis() ? a : b;
+        const FaceGeometry& point = a.has_axis() ? b : a;
+        r.kind = Relation::Kind::AxisPoint;
+        r.distance = point_to_axis(point.origin, axis.origin, axis.axis), r.has_distance = true;
+        return r;
+    }
+    if (a.has_point() && b.has_point()) {
+        r.kind = Relation::Kind::Points;
+        r.distance = length(b.origin - a.origin), r.has_distance = true;
+    }
+    return r;
+}
+
+} // namespace facet::geom
