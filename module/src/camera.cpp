@@ -13,6 +13,21 @@ inline int32_t round_to_int(float v) { return int32_t(v + (v >= 0 ? 0.5f : -0.5f
 
 } // namespace
 
+View standard_view(Standard s, const View& from) {
+    constexpr float kPi = 3.14159265358979f, kHalf = kPi / 2;
+    View v = from;
+    switch (s) {
+    case Standard::Front: v.yaw = 0, v.pitch = -kHalf; break;
+    case Standard::Back: v.yaw = kPi, v.pitch = -kHalf; break;
+    case Standard::Right: v.yaw = -kHalf, v.pitch = -kHalf; break;
+    case Standard::Left: v.yaw = kHalf, v.pitch = -kHalf; break;
+    case Standard::Top: v.yaw = 0, v.pitch = 0; break;
+    case Standard::Bottom: v.yaw = 0, v.pitch = -kPi; break;
+    case Standard::Iso: v.yaw = -kPi / 4, v.pitch = -0.9553166181f; break; // atan(sqrt 2)
+    }
+    return v;
+}
+
 void Camera::orbit(float d_yaw, float d_pitch) {
     view_.yaw += d_yaw;
     view_.pitch += d_pitch;
@@ -77,6 +92,8 @@ Transform Camera::transform(const Scene& scene, uint32_t index, uint16_t width, 
     in.guard = render::kGuardBand - (in.cx16 > in.cy16 ? in.cx16 : in.cy16) - 64;
     const int32_t far = in.dist + kRadiusV;
     in.zk = (int64_t(65535) << 16) / (far - in.near > 1 ? far - in.near : 1);
+    in.ortho = view_.ortho;
+    if (in.ortho) in.ortho_r = render::reciprocal(uint32_t(in.dist));
     return in;
 }
 
@@ -91,7 +108,7 @@ bool Transform::visible(const int32_t centre[3], int32_t radius, Rows rows) cons
     const int64_t rv = (int64_t(radius) * k16) >> 16;
     const int64_t r = rv + rv / 8 + 2;
     if (d + r < near) return false;
-    const int64_t f = f16, w = cx16, X = cx, Y = cy, D = d;
+    const int64_t f = f16, w = cx16, X = cx, Y = cy, D = ortho ? dist : d; // parallel sides: the centre's depth
     if (X * f - w * D > r * (f + w) || -X * f - w * D > r * (f + w)) return false;
     const int64_t top = rows.top16, bottom = rows.bottom16;
     const int64_t top_n = top < 0 ? -top : top, bottom_n = bottom < 0 ? -bottom : bottom;
@@ -108,6 +125,7 @@ bool Transform::faces_away(const int32_t p[3], const int16_t n[3]) const {
     // The eye sits at (0, 0, dist) in view space (depth d = dist - z); the face looks at it
     // when n . (eye - p) > 0.
     const int64_t nx = m[0] >> 14, ny = m[1] >> 14, nz = m[2] >> 14;
+    if (ortho) return nz < 0; // the eye far along +z: every ray parallel
     const int64_t to_eye_x = -((q[0] >> 30) + b[0]), to_eye_y = -((q[1] >> 30) + b[1]), to_eye_z = dist - ((q[2] >> 30) + b[2]);
     return nx * to_eye_x + ny * to_eye_y + nz * to_eye_z < 0;
 }

@@ -36,8 +36,10 @@ struct Transform {
     int32_t light[3]; // Q14, in shell coordinates
     bool mirrored;
     bool closed;
+    bool ortho; // parallel projection: x and y over the centre's depth (dist), not each point's
     int32_t dist, near, f16, cx16, cy16, guard;
     int64_t zk; // depth scale: z16 = (d - near) * zk >> 16
+    render::Reciprocal ortho_r; // of dist (ortho)
 
     // The rotation part applied to v, before the shift (the one place the 3x3 product is written).
     void rotate(const int32_t v[3], int64_t out[3]) const {
@@ -60,12 +62,13 @@ struct Transform {
             o.out = kOutNear;
             return;
         }
-        const int64_t X = int64_t(o.x) * f16, Y = int64_t(o.y) * f16, G = int64_t(guard) * o.d;
+        const int32_t over = ortho ? dist : o.d; // what x and y are divided by
+        const int64_t X = int64_t(o.x) * f16, Y = int64_t(o.y) * f16, G = int64_t(guard) * over;
         if (X > G || -X > G || Y > G || -Y > G) {
             o.out = kOutGuard;
             return;
         }
-        const render::Reciprocal r = render::reciprocal(uint32_t(o.d)); // x and y over one depth
+        const render::Reciprocal r = ortho ? ortho_r : render::reciprocal(uint32_t(over)); // x and y over one depth
         o.s.x = cx16 + render::divide(X, r);
         o.s.y = cy16 - render::divide(Y, r);
         const int64_t zz = (int64_t(o.d - near) * zk) >> 16;
@@ -85,10 +88,17 @@ struct Transform {
     }
 };
 
-// The view: orbit angles (rad), dolly factor (1 = fitted), pan (mm, in view x/y).
+// The view: orbit angles (rad), dolly factor (1 = the sphere fitted), pan (mm, in view x/y),
+// and the projection (perspective, or parallel: the sizes at the model's centre everywhere).
 struct View {
     float yaw = 0.6f, pitch = -0.95f, zoom = 1, pan_x = 0, pan_y = 0;
+    bool ortho = false;
 };
+
+// The standard views of a z-up model (yaw, pitch): front looks along +y, right along -x, top
+// down -z; isometric from (+1, -1, +1).
+enum class Standard : uint8_t { Front, Back, Right, Left, Top, Bottom, Iso };
+View standard_view(Standard s, const View& from); // the angles of s, the rest of `from`
 
 class Camera {
 public:
@@ -99,6 +109,7 @@ public:
     void reframe() { view_.zoom = 1, view_.pan_x = 0, view_.pan_y = 0; }
     const View& view() const { return view_; }
     void set_view(const View& v) { view_ = v; }
+    void toggle_projection() { view_.ortho = !view_.ortho; }
     // Orbit by angles (rad), dolly by a factor (< 1: closer; kept within 0.05 and 20), pan by
     // millimetres, or by screen pixels (the model's centre follows the pointer).
     void orbit(float d_yaw, float d_pitch);

@@ -17,6 +17,10 @@ constexpr KeyBinding kKeys[] = {
     {KeyUp, Action::TiltUp, "tilt up"},      {KeyDown, Action::TiltDown, "tilt down"},
     {KeyPageUp, Action::ZoomIn, "zoom in"},  {KeyPageDown, Action::ZoomOut, "zoom out"},
     {KeyHome, Action::Fit, "fit the model"},
+    {'1', Action::ViewFront, "front view"},  {'2', Action::ViewBack, "back view"},
+    {'3', Action::ViewRight, "right view"},  {'4', Action::ViewLeft, "left view"},
+    {'7', Action::ViewTop, "top view"},      {'8', Action::ViewBottom, "bottom view"},
+    {'0', Action::ViewIso, "isometric view"}, {'5', Action::Projection, "perspective / parallel"},
 };
 
 int32_t distance(int32_t dx, int32_t dy) { return int32_t(std::sqrt(float(dx * dx + dy * dy)) + 0.5f); }

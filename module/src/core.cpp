@@ -195,6 +195,7 @@ void Core::work(Event::Kind kind, Work what, uint32_t item) {
 Result Core::load(const void* file, uint32_t file_bytes, void* memory, uint32_t memory_bytes) {
     scheduler_.stop();
     framer_.stop();
+    glide_.phase = Glide::Phase::None;
     presenter_.reset();
     scene_.close();
     pack_bytes_ = pack_file_bytes_ = 0;
@@ -254,7 +255,7 @@ Result Core::load(const void* file, uint32_t file_bytes, void* memory, uint32_t 
 }
 
 bool Core::frame_wanted() const {
-    if (!scene_.loaded() || scheduler_.sampling() || framer_.busy()) return false;
+    if (!scene_.loaded() || scheduler_.sampling() || framer_.busy() || glide_.phase == Glide::Phase::Framing) return false;
     const module::Totals& t = scene_.totals();
     return presenter_.wanted(t.done + t.failed, t.faces);
 }
@@ -267,10 +268,21 @@ Activity Core::step(uint32_t budget_us) {
         // not between the bands of one frame (they show one state of the model).
         const bool frame = frame_wanted() && presenter_.can_draw();
         const bool mid_bands = presenter_.drawing() && config_.display.band_lines < config_.display.height;
-        if (framer_.busy() && !mid_bands) { // the view being framed: no frame until it sits
+        const bool gliding = glide_.phase == Glide::Phase::Framing;
+        if ((framer_.busy() || gliding) && !mid_bands) { // the view being framed: no frame until it sits
             work(Event::Kind::WorkBegin, Work::Fit, 0);
-            if (framer_.run(scene_, camera_, kFrameUnits)) presenter_.invalidate();
+            if (gliding) {
+                if (framer_.run(scene_, glide_.target, kFrameUnits)) {
+                    glide_.phase = Glide::Phase::Moving;
+                    glide_.from = camera_.view();
+                    glide_.t0 = now(), glide_.frames = 0;
+                }
+            } else if (framer_.run(scene_, camera_, kFrameUnits)) {
+                presenter_.invalidate();
+            }
             work(Event::Kind::WorkEnd, Work::Fit, 0);
+        } else if (glide_.phase == Glide::Phase::Moving && !frame_wanted() && !mid_bands) {
+            glide_step(); // the last frame is out: the next step of the glide
         } else if (frame) {
             const Work w = presenter_.work();
             work(Event::Kind::WorkBegin, w, 0);
@@ -296,7 +308,10 @@ Activity Core::step(uint32_t budget_us) {
     }
     // What is left: work that can go on, or only a flush_done() that can free a buffer.
     const bool mid_bands = presenter_.drawing() && config_.display.band_lines < config_.display.height;
-    if ((frame_wanted() && presenter_.can_draw()) || ((scheduler_.busy() || framer_.busy()) && !mid_bands)) return Activity::Busy;
+    if ((frame_wanted() && presenter_.can_draw()) ||
+        ((scheduler_.busy() || framer_.busy() || glide_.phase != Glide::Phase::None) && !mid_bands)) {
+        return Activity::Busy;
+    }
     if (frame_wanted()) return Activity::Waiting;
     return Activity::Idle;
 }
@@ -313,6 +328,45 @@ void Core::command(const module::Command& c) {
     case Kind::Pick: pick(c.x, c.y); return;
     }
     view_changed();
+}
+
+void Core::glide_to(const module::View& v, uint32_t instance, uint32_t face) {
+    if (!scene_.loaded()) return;
+    framer_.stop(); // a glide frames its own end view
+    glide_.target.set_view(v);
+    glide_.target.reframe();
+    const bool sampled = !scheduler_.sampling();
+    scene_.fit_bounds(sampled);
+    glide_.phase = Glide::Phase::Framing;
+    if (sampled) {
+        // A face is framed to fill less: it is seen among its neighbours.
+        framer_.start(config_.display.width, config_.display.height, {}, instance, face, face == ~0u ? module::Framer::kFill : 0.6f);
+    }
+}
+
+bool Core::glide_step() {
+    const module::View &a = glide_.from, &b = glide_.target.view();
+    float s = config_.now_us ? float(now() - glide_.t0) / float(kGlideUs) : float(++glide_.frames) / float(kGlideFrames);
+    if (s >= 1) {
+        camera_.set_view(b);
+        glide_.phase = Glide::Phase::None;
+        view_changed();
+        return true;
+    }
+    s = s * s * (3 - 2 * s); // eased in and out
+    constexpr float kPi = 3.14159265358979f;
+    float dyaw = b.yaw - a.yaw; // the short way round
+    while (dyaw > kPi) dyaw -= 2 * kPi;
+    while (dyaw < -kPi) dyaw += 2 * kPi;
+    module::View v = b;
+    v.yaw = a.yaw + dyaw * s;
+    v.pitch = a.pitch + (b.pitch - a.pitch) * s;
+    v.zoom = a.zoom + (b.zoom - a.zoom) * s;
+    v.pan_x = a.pan_x + (b.pan_x - a.pan_x) * s;
+    v.pan_y = a.pan_y + (b.pan_y - a.pan_y) * s;
+    camera_.set_view(v);
+    view_changed();
+    return true;
 }
 
 void Core::fit_view(bool keep_direction) {
@@ -356,6 +410,19 @@ void Core::act(Action a) {
         view_changed();
         user_moved_ = false; // framed again once the faces are in
         return;
+    case Action::ViewFront: glide_to(module::standard_view(module::Standard::Front, camera_.view())); return;
+    case Action::ViewBack: glide_to(module::standard_view(module::Standard::Back, camera_.view())); return;
+    case Action::ViewRight: glide_to(module::standard_view(module::Standard::Right, camera_.view())); return;
+    case Action::ViewLeft: glide_to(module::standard_view(module::Standard::Left, camera_.view())); return;
+    case Action::ViewTop: glide_to(module::standard_view(module::Standard::Top, camera_.view())); return;
+    case Action::ViewBottom: glide_to(module::standard_view(module::Standard::Bottom, camera_.view())); return;
+    case Action::ViewIso: glide_to(module::standard_view(module::Standard::Iso, camera_.view())); return;
+    case Action::Projection: {
+        module::View v = camera_.view();
+        v.ortho = !v.ortho;
+        glide_to(v); // framed again: a parallel view of the same zoom is not the same size
+        return;
+    }
     case Action::Coarser:
     case Action::Finer: {
         const float t = a == Action::Coarser ? scheduler_.tolerance() * 2 : scheduler_.tolerance() * 0.5f;

@@ -50,6 +50,7 @@ private:
     uint32_t now() const { return config_.now_us ? config_.now_us(config_.clock_user) : 0; }
     bool frame_wanted() const;
     void pick(int16_t x, int16_t y);
+    Event pick_at(int16_t x, int16_t y); // the Picked event of the face under (x, y)
     void view_changed();
     void fit_view(bool keep_direction); // frame the placed model (from the default direction, or this one)
 
@@ -68,6 +69,22 @@ private:
     uint32_t pack_bytes_ = 0, pack_file_bytes_ = 0;
     bool carved_ = false;
     bool user_moved_ = false; // the view was moved since load (no framing again when the faces are in)
+    // A glide to a new view: the end view framed first (on its own camera), then the camera
+    // moved there over kGlideUs (or kGlideFrames frames without a clock), a frame at each step.
+    struct Glide {
+        enum class Phase : uint8_t { None, Framing, Moving } phase = Phase::None;
+        module::Camera target;
+        module::View from;
+        uint32_t t0 = 0, frames = 0;
+    } glide_;
+    static constexpr uint32_t kGlideUs = 400000, kGlideFrames = 10;
+    static constexpr uint32_t kDoubleTapUs = 400000;
+    static constexpr int kDoubleTapSlop = 12; // pixels
+    void glide_to(const module::View& v, uint32_t instance = ~0u, uint32_t face = ~0u);
+    bool glide_step(); // Moving: the camera advanced (a frame is wanted); false when it has arrived
+    // Double tap: the last tap's place and time (without a clock: a second tap on the same spot).
+    int16_t tap_x_ = -1000, tap_y_ = -1000;
+    uint32_t tap_t_ = 0;
     // Events of a piece of work are handed on after it (so a profiler's region around the
     // piece measures the work, not what the application does with its events).
     static constexpr uint32_t kHeld = 8;

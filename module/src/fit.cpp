@@ -14,8 +14,9 @@ void Outline::add(const Projected& p) {
     ++points;
 }
 
-void Framer::start(uint16_t width, uint16_t height, FreeArea taken, uint32_t instance, uint32_t face) {
+void Framer::start(uint16_t width, uint16_t height, FreeArea taken, uint32_t instance, uint32_t face, float fill) {
     busy_ = true;
+    fill_ = fill;
     width_ = width, height_ = height, taken_ = taken;
     only_instance_ = instance, only_face_ = face;
     round_ = 0;
@@ -107,7 +108,7 @@ bool Framer::adjust(const Scene& scene, Camera& camera) {
     const float w = float(o_.right - o_.left) / (16.0f * float(aw)), h = float(o_.bottom - o_.top) / (16.0f * float(ah));
     const float now = w > h ? w : h;
     const bool centred = dx >= -16 && dx <= 16 && dy >= -16 && dy <= 16;
-    if (!o_.hidden && centred && now <= kFill * 1.02f && now >= kFill * 0.98f) return true;
+    if (!o_.hidden && centred && now <= fill_ * 1.02f && now >= fill_ * 0.98f) return true;
     // Centre: pan by the offset (pan_pixels moves the model's centre with the pointer). Size:
     // the dolly scales the outline about inversely (exactly for a flat model at the centre's
     // depth); a point behind the eye means: back off.
@@ -115,7 +116,7 @@ bool Framer::adjust(const Scene& scene, Camera& camera) {
     if (o_.hidden) {
         camera.dolly(2.0f);
     } else if (now > 0) {
-        camera.dolly(now / kFill);
+        camera.dolly(now / fill_);
     }
     return false;
 }

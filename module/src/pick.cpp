@@ -2,17 +2,31 @@
 // projection as the frame; the nearest triangle that covers the pixel's centre).
 #include "core.h"
 
+#include <cstdlib>
+
 namespace facet {
 
 void Core::pick(int16_t x, int16_t y) {
+    const Event e = pick_at(x, y);
+    // A second tap where the first one was, soon after (or, without a clock, right after):
+    // frame the tapped face.
+    const uint32_t t = now();
+    const bool again = std::abs(x - tap_x_) <= kDoubleTapSlop && std::abs(y - tap_y_) <= kDoubleTapSlop &&
+                       (!config_.now_us || t - tap_t_ <= kDoubleTapUs);
+    tap_x_ = x, tap_y_ = y, tap_t_ = t;
+    emit(e);
+    if (again && e.pick.hit) {
+        tap_x_ = tap_y_ = -1000; // a third tap starts again
+        glide_to(camera_.view(), e.pick.instance, e.pick.face);
+    }
+}
+
+Event Core::pick_at(int16_t x, int16_t y) {
     Event e{};
     e.kind = Event::Kind::Picked;
     e.pick = {false, 0, 0, 0, 0, x, y};
     const Display& d = config_.display;
-    if (!scene_.loaded() || x < 0 || y < 0 || x >= d.width || y >= d.height) {
-        emit(e);
-        return;
-    }
+    if (!scene_.loaded() || x < 0 || y < 0 || x >= d.width || y >= d.height) return e;
     presenter_.projected_reused(); // a frame under way projects its face again
     const geom::Pack& pack = scene_.pack();
     const int64_t sx = int64_t(x) * 16 + 8, sy = int64_t(y) * 16 + 8;
@@ -51,7 +65,7 @@ void Core::pick(int16_t x, int16_t y) {
             }
         }
     }
-    emit(e);
+    return e;
 }
 
 } // namespace facet

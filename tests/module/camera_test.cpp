@@ -129,3 +129,88 @@ TEST(Camera, DollyIsBoundedAndPixelPansFollowThePointer) {
     EXPECT_NEAR((after.s.x - before.s.x) / 16.0, 40, 1.5);
     EXPECT_NEAR((after.s.y - before.s.y) / 16.0, -25, 1.5);
 }
+
+// The standard views of a z-up model: where +x, +y and +z of the model go on the screen, and
+// which way the eye looks (a face toward it is not culled).
+TEST(Camera, StandardViewsPutTheModelsAxesWhereCadUsersExpectThem) {
+    Model m;
+    struct Case {
+        Standard s;
+        int right[3], up[3], toward[3]; // model axes to screen right, screen up, toward the eye
+    };
+    const Case cases[] = {
+        {Standard::Front, {1, 0, 0}, {0, 0, 1}, {0, -1, 0}}, {Standard::Back, {-1, 0, 0}, {0, 0, 1}, {0, 1, 0}},
+        {Standard::Right, {0, 1, 0}, {0, 0, 1}, {1, 0, 0}},  {Standard::Left, {0, -1, 0}, {0, 0, 1}, {-1, 0, 0}},
+        {Standard::Top, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}},    {Standard::Bottom, {1, 0, 0}, {0, -1, 0}, {0, 0, -1}},
+    };
+    for (const Case& c : cases) {
+        Camera cam;
+        cam.set_view(standard_view(c.s, View{}));
+        const Transform t = cam.transform(m.scene, 0, 640, 480);
+        int32_t o[3], r[3], u[3];
+        quantize(m.scene, 10, 20, 0, o);
+        quantize(m.scene, 10 + 10 * c.right[0], 20 + 10 * c.right[1], 10 * c.right[2], r);
+        quantize(m.scene, 10 + 10 * c.up[0], 20 + 10 * c.up[1], 10 * c.up[2], u);
+        Projected po, pr, pu;
+        t.project(o, po), t.project(r, pr), t.project(u, pu);
+        ASSERT_EQ(po.out | pr.out | pu.out, 0) << int(c.s);
+        EXPECT_GT(pr.s.x - po.s.x, 16 * 20) << "view " << int(c.s) << ": the model's right axis goes right";
+        EXPECT_NEAR(pr.s.y, po.s.y, 16) << int(c.s);
+        EXPECT_LT(pu.s.y - po.s.y, -16 * 20) << "view " << int(c.s) << ": the model's up axis goes up";
+        EXPECT_NEAR(pu.s.x, po.s.x, 16) << int(c.s);
+        const int16_t n[3] = {int16_t(16384 * c.toward[0]), int16_t(16384 * c.toward[1]), int16_t(16384 * c.toward[2])};
+        const int16_t away[3] = {int16_t(-n[0]), int16_t(-n[1]), int16_t(-n[2])};
+        EXPECT_FALSE(t.faces_away(o, n)) << int(c.s);
+        EXPECT_TRUE(t.faces_away(o, away)) << int(c.s);
+    }
+    // Isometric: the three axes equally foreshortened (in a parallel view: perspective would
+    // shorten the one pointing away).
+    Camera iso;
+    View v = standard_view(Standard::Iso, View{});
+    v.ortho = true;
+    iso.set_view(v);
+    const Transform t = iso.transform(m.scene, 0, 640, 480);
+    int32_t o[3];
+    quantize(m.scene, 10, 20, 0, o);
+    Projected po;
+    t.project(o, po);
+    double len[3];
+    for (int k = 0; k < 3; ++k) {
+        int32_t a[3];
+        quantize(m.scene, 10 + (k == 0) * 20.0f, 20 + (k == 1) * 20.0f, (k == 2) * 20.0f, a);
+        Projected pa;
+        t.project(a, pa);
+        len[k] = std::hypot(pa.s.x - po.s.x, pa.s.y - po.s.y);
+    }
+    EXPECT_NEAR(len[0], len[1], 0.005 * len[0]);
+    EXPECT_NEAR(len[0], len[2], 0.005 * len[0]);
+}
+
+// Parallel projection: the same length at two depths has the same size on the screen; with
+// perspective the nearer one is bigger.
+TEST(Camera, AParallelViewDoesNotShrinkWhatIsFarther) {
+    Model m;
+    for (const bool ortho : {false, true}) {
+        Camera cam;
+        View v = standard_view(Standard::Front, View{});
+        v.ortho = ortho;
+        cam.set_view(v);
+        const Transform t = cam.transform(m.scene, 0, 640, 480);
+        double size[2];
+        for (int k = 0; k < 2; ++k) {
+            const float y = k == 0 ? -40.0f : 60.0f; // near the eye (front: the eye is at -y), then far
+            int32_t a[3], b[3];
+            quantize(m.scene, 0, y, 0, a);
+            quantize(m.scene, 20, y, 0, b);
+            Projected pa, pb;
+            t.project(a, pa), t.project(b, pb);
+            ASSERT_EQ(pa.out | pb.out, 0);
+            size[k] = (pb.s.x - pa.s.x) / 16.0;
+        }
+        if (ortho) {
+            EXPECT_NEAR(size[0], size[1], 0.05);
+        } else {
+            EXPECT_GT(size[0], size[1] * 1.1);
+        }
+    }
+}

@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <algorithm>
+#include <array>
 #include <cstring>
 #include <memory>
 #include <string>
@@ -438,6 +439,60 @@ TEST(Viewer, AnAssemblyIsFramedWhereItsInstancesPlaceItsParts) {
     app.v->touch(0, int16_t(app.w / 2), int16_t(app.h / 2), true);
     app.v->touch(0, int16_t(app.w / 2), int16_t(app.h / 2), false);
     ASSERT_NE(app.last(Event::Kind::Picked), nullptr);
+}
+
+// A standard view glides there (several frames, the angles in between) and ends framed; the
+// projection key turns a parallel view on; a double tap frames the tapped face.
+TEST(Viewer, StandardViewsGlideAndADoubleTapFramesAFace) {
+    App app;
+    ASSERT_TRUE(app.create().ok());
+    ASSERT_TRUE(app.load(polygon_and_triangle(40)).ok());
+    app.run();
+    const Core& core = *static_cast<const Core*>(app.v);
+    auto outline = [&](uint32_t face) {
+        const module::Transform t = core.camera().transform(core.scene(), 0, app.w, app.h);
+        const module::FaceInfo& F = core.scene().face(face);
+        int32_t l = INT32_MAX, r = INT32_MIN, top = INT32_MAX, b = INT32_MIN;
+        for (uint32_t k = 0; k < F.vertex_count; ++k) {
+            module::Projected p;
+            t.project(core.scene().vertices()[F.first_vertex + k].p, p);
+            l = std::min(l, p.s.x), r = std::max(r, p.s.x), top = std::min(top, p.s.y), b = std::max(b, p.s.y);
+        }
+        return std::array<double, 4>{l / 16.0, top / 16.0, r / 16.0, b / 16.0};
+    };
+    const int frames0 = app.count(Event::Kind::FrameDone), views0 = app.count(Event::Kind::ViewChanged);
+    app.v->key('7'); // top: the polygon and the triangle lie in z = 0, seen face on
+    app.run();
+    EXPECT_GE(app.count(Event::Kind::ViewChanged) - views0, 9) << "a glide: the camera moved in steps";
+    EXPECT_GE(app.count(Event::Kind::FrameDone) - frames0, 9) << "a frame at each step";
+    const auto end = app.last(Event::Kind::ViewChanged)->view;
+    EXPECT_NEAR(end.yaw_deg, 0, 0.01);
+    EXPECT_NEAR(end.pitch_deg, 0, 0.01);
+    // Framed from the top: the polygon (radius 100) and the triangle (to x = 140) fill 85% of
+    // the screen's height (240 x 200 mm on a 160 x 120 screen: the height is the tighter).
+    const auto a = outline(0), t = outline(1);
+    EXPECT_NEAR((std::max(a[3], t[3]) - std::min(a[1], t[1])) / app.h, 0.85, 0.02);
+    // From the top the polygon is a circle on the screen (width = height).
+    EXPECT_NEAR(a[2] - a[0], a[3] - a[1], 1.0);
+    // Parallel projection on: the view is framed again, the circle stays round.
+    app.v->key('5');
+    app.run();
+    const auto o = outline(0);
+    EXPECT_NEAR(o[2] - o[0], o[3] - o[1], 1.0);
+    // A double tap on the triangle frames it (60% of the screen's width or height).
+    const int16_t tx = int16_t((t[0] + t[2]) / 2 - 2), ty = int16_t((t[1] + t[3]) / 2 + 2);
+    for (int i = 0; i < 2; ++i) {
+        app.v->touch(0, tx, ty, true);
+        app.v->touch(0, tx, ty, false);
+    }
+    ASSERT_TRUE(app.last(Event::Kind::Picked)->pick.hit);
+    EXPECT_EQ(app.last(Event::Kind::Picked)->pick.face, 1u);
+    app.run();
+    const auto f = outline(1);
+    const double fill = std::max((f[2] - f[0]) / app.w, (f[3] - f[1]) / app.h);
+    EXPECT_NEAR(fill, 0.6, 0.02);
+    EXPECT_NEAR((f[0] + f[2]) / 2, app.w / 2.0, 1.5);
+    EXPECT_NEAR((f[1] + f[3]) / 2, app.h / 2.0, 1.5);
 }
 
 TEST(Viewer, KeysGesturesAndPicks) {

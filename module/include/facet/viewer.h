@@ -133,6 +133,9 @@ enum Key : uint32_t { KeyLeft = 0x100, KeyRight, KeyUp, KeyDown, KeyPageUp, KeyP
 enum class Action : uint8_t {
     None, TurnLeft, TurnRight, TiltUp, TiltDown, ZoomIn, ZoomOut, PanLeft, PanRight, PanUp, PanDown, Fit,
     Coarser, Finer,
+    // Standard views (a z-up model: front looks along +y), each framed, with a short glide.
+    ViewFront, ViewBack, ViewRight, ViewLeft, ViewTop, ViewBottom, ViewIso,
+    Projection, // perspective <-> parallel (orthographic)
 };
 struct KeyBinding {
     uint32_t key;
