@@ -21,6 +21,7 @@ constexpr KeyBinding kKeys[] = {
     {'3', Action::ViewRight, "right view"},  {'4', Action::ViewLeft, "left view"},
     {'7', Action::ViewTop, "top view"},      {'8', Action::ViewBottom, "bottom view"},
     {'0', Action::ViewIso, "isometric view"}, {'5', Action::Projection, "perspective / parallel"},
+    {'m', Action::NextDisplayMode, "display mode: shaded + edges, shaded, wireframe, hidden line"},
 };
 
 int32_t distance(int32_t dx, int32_t dy) { return int32_t(std::sqrt(float(dx * dx + dy * dy)) + 0.5f); }

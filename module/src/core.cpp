@@ -380,6 +380,12 @@ void Core::fit_view(bool keep_direction) {
     if (sampled) framer_.start(config_.display.width, config_.display.height, {});
 }
 
+void Core::set_mode(DisplayMode m) {
+    if (m == painter_.mode()) return;
+    painter_.set_mode(m);
+    presenter_.invalidate(); // a whole frame in the new style
+}
+
 void Core::view_changed() {
     user_moved_ = true;
     presenter_.invalidate();
@@ -417,6 +423,7 @@ void Core::act(Action a) {
     case Action::ViewTop: glide_to(module::standard_view(module::Standard::Top, camera_.view())); return;
     case Action::ViewBottom: glide_to(module::standard_view(module::Standard::Bottom, camera_.view())); return;
     case Action::ViewIso: glide_to(module::standard_view(module::Standard::Iso, camera_.view())); return;
+    case Action::NextDisplayMode: set_mode(DisplayMode((uint8_t(painter_.mode()) + 1) % 4)); return;
     case Action::Projection: {
         module::View v = camera_.view();
         v.ortho = !v.ortho;
@@ -478,5 +485,7 @@ void Viewer::touch(uint8_t id, int16_t x, int16_t y, bool down) {
 }
 void Viewer::act(Action a) { static_cast<Core*>(this)->act(a); }
 Stats Viewer::stats() const { return static_cast<const Core*>(this)->stats(); }
+DisplayMode Viewer::display_mode() const { return static_cast<const Core*>(this)->mode(); }
+void Viewer::set_display_mode(DisplayMode m) { static_cast<Core*>(this)->set_mode(m); }
 
 } // namespace facet

@@ -27,6 +27,8 @@ public:
     void flush_done() { presenter_.flush_done(); }
     void command(const module::Command& c);
     void act(Action a);
+    DisplayMode mode() const { return painter_.mode(); }
+    void set_mode(DisplayMode m);
     Stats stats() const;
     bool carved() const { return carved_; }
     Result configure() { return presenter_.configure(config_.display, config_.frame_budget_us); }

@@ -8,6 +8,7 @@ namespace {
 constexpr uint16_t kLineBias = 384; // depth units edges are pulled toward the eye
 constexpr hal::Rgb565 kEdgeColour = hal::rgb565(28, 30, 38);
 constexpr uint32_t kNoColour = 0xFF000000u; // no palette in the slot (colours are 24-bit)
+constexpr uint32_t kPaper = 0x00FFFFFFu;    // hidden-line faces: white
 
 // X / d for d >= 1, to about 2^-15 relative, without dividing (render/fixed.h).
 inline int32_t divide(int64_t x, int32_t d) { return render::divide(x, render::reciprocal(uint32_t(d))); }
@@ -70,13 +71,15 @@ void Painter::triangle(const Transform& t, const Projected& a, const Projected& 
     int n = 3;
     const Projected* src[3] = {&a, &b, &c};
     for (int i = 0; i < 3; ++i) poly[i] = {float(src[i]->x), float(src[i]->y), float(src[i]->d), float(src[i]->s.shade)};
+    const float dist = float(t.dist);
     auto plane = [&](const V& v, int k) {
+        const float over = t.ortho ? dist : v.d; // the guard band's sides: parallel in a parallel view
         switch (k) {
         case 0: return v.d - near * 1.01f;
-        case 1: return G * v.d - f16 * v.x;
-        case 2: return G * v.d + f16 * v.x;
-        case 3: return G * v.d - f16 * v.y;
-        default: return G * v.d + f16 * v.y;
+        case 1: return G * over - f16 * v.x;
+        case 2: return G * over + f16 * v.x;
+        case 3: return G * over - f16 * v.y;
+        default: return G * over + f16 * v.y;
         }
     };
     for (int k = 0; k < 5 && n >= 3; ++k) {
@@ -98,8 +101,9 @@ void Painter::triangle(const Transform& t, const Projected& a, const Projected& 
     render::ScreenVertex s[9];
     for (int i = 0; i < n; ++i) {
         const int32_t d = round_to_int(poly[i].d) > t.near ? round_to_int(poly[i].d) : t.near;
-        s[i].x = t.cx16 + divide(int64_t(round_to_int(poly[i].x)) * t.f16, d);
-        s[i].y = t.cy16 - divide(int64_t(round_to_int(poly[i].y)) * t.f16, d);
+        const int32_t over = t.ortho ? t.dist : d; // parallel: x and y over the centre's depth
+        s[i].x = t.cx16 + divide(int64_t(round_to_int(poly[i].x)) * t.f16, over);
+        s[i].y = t.cy16 - divide(int64_t(round_to_int(poly[i].y)) * t.f16, over);
         const int64_t zz = (int64_t(d - t.near) * t.zk) >> 16;
         s[i].z = uint16_t(zz > 65535 ? 65535 : zz);
         s[i].shade = uint8_t(poly[i].shade);
@@ -112,16 +116,18 @@ uint32_t Painter::face(uint32_t f, const Transform& t, Rows rows, uint32_t from,
     Projected* P = mem_.projected.data();
     const DrawVertex* verts = scene_.vertices() + F.first_vertex;
     spent = 0;
+    if (mode_ == DisplayMode::Wireframe) return F.triangle_count; // edges only
+    const bool white = mode_ == DisplayMode::HiddenLine; // faces only hide what is behind them
     if (from == 0) { // the face's vertices, once
         if (F.state != FaceState::Done || !t.visible(F.centre, F.radius, rows)) return F.triangle_count;
         if (F.planar && t.closed && F.vertex_count && t.faces_away(verts[0].p, verts[0].n)) return F.triangle_count;
         for (uint32_t v = 0; v < F.vertex_count; ++v) {
             t.project(verts[v].p, P[v]);
-            P[v].s.shade = t.shade(verts[v].n);
+            P[v].s.shade = white ? 255 : t.shade(verts[v].n);
         }
         spent = 1 + F.vertex_count / 4;
     }
-    const render::Palette& pal = palette(F.rgb);
+    const render::Palette& pal = palette(white ? kPaper : F.rgb);
     const render::Cull cull = t.closed ? render::Cull::Back : render::Cull::None;
     const uint16_t* id = scene_.indices() + F.first_index + 3 * from;
     const uint32_t pixels = raster_.stats.pixels;
@@ -138,8 +144,9 @@ uint32_t Painter::face(uint32_t f, const Transform& t, Rows rows, uint32_t from,
 uint32_t Painter::face_edges(uint32_t f, const Transform& t, Rows rows, bool once) {
     // Its edges lie in its sphere; a plane facing away hides them unless a neighbour shows them.
     const FaceInfo& info = scene_.face(f);
+    if (mode_ == DisplayMode::Shaded && info.state == FaceState::Done) return 0; // a face not in yet shows its edges
     if (!t.visible(info.centre, info.radius, rows)) return 0;
-    if (info.planar && t.closed && info.vertex_count) {
+    if (mode_ != DisplayMode::Wireframe && info.planar && t.closed && info.vertex_count) {
         const DrawVertex& v = scene_.vertices()[info.first_vertex];
         if (t.faces_away(v.p, v.n)) return 0;
     }

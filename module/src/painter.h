@@ -3,6 +3,7 @@
 // a face's triangles (clipped against the near plane and the guard band where they cross
 // them), its B-rep edges over it, and the palettes that colour them.
 #include "camera.h"
+#include "facet/viewer.h"
 #include "overlay.h"
 #include "render/raster.h"
 #include "scene.h"
@@ -22,6 +23,8 @@ public:
 
     Painter(const Scene& scene, render::Rasterizer& raster) : scene_(scene), raster_(raster) {}
     void init(const Memory& memory);
+    void set_mode(DisplayMode m) { mode_ = m; }
+    DisplayMode mode() const { return mode_; }
 
     // The background of the target's rows: light at the top, darker toward the bottom.
     void background();
@@ -49,6 +52,7 @@ private:
     render::Rasterizer& raster_;
     Memory mem_{};
     uint32_t next_palette_ = 0; // the palette slot to reuse next
+    DisplayMode mode_ = DisplayMode::ShadedEdges;
     uint32_t refused_ = 0;
 };
 

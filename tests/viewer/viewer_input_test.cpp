@@ -495,6 +495,53 @@ TEST(Viewer, StandardViewsGlideAndADoubleTapFramesAFace) {
     EXPECT_NEAR((f[1] + f[3]) / 2, app.h / 2.0, 1.5);
 }
 
+// The display modes, told apart by their pixels: the B-rep edges' colour, the faces' shading,
+// the white of hidden-line faces, the background through a wireframe.
+TEST(Viewer, DisplayModesDrawFacesAndEdgesAsNamed) {
+    App app;
+    ASSERT_TRUE(app.create().ok());
+    ASSERT_TRUE(app.load(polygon_and_triangle(40)).ok());
+    app.run();
+    const Rgb565 edge = hal::rgb565(28, 30, 38), white = hal::rgb565(255, 255, 255);
+    auto look = [&]() {
+        const std::vector<Rgb565> s = app.screen();
+        struct {
+            int edges = 0, white = 0;
+            Rgb565 centre, row_start;
+        } r;
+        for (Rgb565 p : s) r.edges += p == edge, r.white += p == white;
+        // The polygon's middle (a tap there picks it), and the same row at the screen's left edge (background).
+        r.centre = s[size_t(app.h / 2) * app.w + app.w / 2 - 10];
+        r.row_start = s[size_t(app.h / 2) * app.w];
+        return r;
+    };
+    EXPECT_EQ(app.v->display_mode(), DisplayMode::ShadedEdges);
+    const auto shaded_edges = look();
+    EXPECT_GT(shaded_edges.edges, 100);
+    EXPECT_NE(shaded_edges.centre, shaded_edges.row_start) << "a face over the background";
+    app.v->key('m');
+    app.run();
+    EXPECT_EQ(app.v->display_mode(), DisplayMode::Shaded);
+    const auto shaded = look();
+    EXPECT_EQ(shaded.edges, 0);
+    EXPECT_EQ(shaded.centre, shaded_edges.centre) << "the same shaded face";
+    app.v->key('m');
+    app.run();
+    EXPECT_EQ(app.v->display_mode(), DisplayMode::Wireframe);
+    const auto wire = look();
+    EXPECT_GT(wire.edges, 100);
+    EXPECT_EQ(wire.centre, wire.row_start) << "no face: the background through the polygon";
+    app.v->key('m');
+    app.run();
+    EXPECT_EQ(app.v->display_mode(), DisplayMode::HiddenLine);
+    const auto hidden = look();
+    EXPECT_GT(hidden.edges, 100);
+    EXPECT_EQ(hidden.centre, white) << "white faces";
+    app.v->set_display_mode(DisplayMode::ShadedEdges);
+    app.run();
+    EXPECT_EQ(app.screen()[size_t(app.h / 2) * app.w + app.w / 2 - 10], shaded_edges.centre);
+}
+
 TEST(Viewer, KeysGesturesAndPicks) {
     App app;
     ASSERT_TRUE(app.create().ok());

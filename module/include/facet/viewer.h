@@ -136,6 +136,15 @@ enum class Action : uint8_t {
     // Standard views (a z-up model: front looks along +y), each framed, with a short glide.
     ViewFront, ViewBack, ViewRight, ViewLeft, ViewTop, ViewBottom, ViewIso,
     Projection, // perspective <-> parallel (orthographic)
+    NextDisplayMode, // shaded with edges -> shaded -> wireframe -> hidden line -> ...
+};
+
+// How the model is drawn.
+enum class DisplayMode : uint8_t {
+    ShadedEdges, // shaded faces and their B-rep edges over them
+    Shaded,      // shaded faces only
+    Wireframe,   // every B-rep edge, hidden ones too; no faces
+    HiddenLine,  // the edges a viewer sees, on white faces (a drawing's look)
 };
 struct KeyBinding {
     uint32_t key;
@@ -184,6 +193,8 @@ public:
     void act(Action action);                             // as if its key were pressed
 
     Stats stats() const;
+    DisplayMode display_mode() const;
+    void set_display_mode(DisplayMode mode);
 
 private:
     Viewer() = default; // lives in the workspace (create())
