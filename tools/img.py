@@ -110,13 +110,30 @@ def f565_to_png(src, dst):
     write_png(dst, w, h, rows)
 
 
-def compare(a, b, diff=None):
-    """Returns (different_pixels, message)."""
+def frame_time_field(w, h):
+    """The status bar's frame-time field of facet's on-screen interface at w x h, as (x0, y0,
+    x1, y1): the one place a board's frame and the host's differ (each shows its own clock).
+    Mirrors module/src/overlay.cpp (layout, time_field); Overlay.TheFrameTimeFieldIsWhereImgPySaysItIs
+    checks the two agree."""
+    if w < 160 or h < 96:
+        return None
+    toolbar_x = w - (56 if w >= 600 else 44)
+    x1 = toolbar_x - 3
+    return (x1 - (9 * 6 - 1), 0, x1, 12)
+
+
+def compare(a, b, diff=None, ignore=None):
+    """Returns (different_pixels, message). ignore: rectangles (x0, y0, x1, y1) not compared."""
     wa, ha, pa = load_565(a)
     wb, hb, pb = load_565(b)
     if (wa, ha) != (wb, hb):
         return -1, f'size differs: {a} is {wa}x{ha}, {b} is {wb}x{hb}'
-    bad = [i for i in range(len(pa)) if pa[i] != pb[i]]
+    skip = set()
+    for r in ignore or []:
+        if r:
+            x0, y0, x1, y1 = r
+            skip.update(y * wa + x for y in range(max(y0, 0), min(y1, ha)) for x in range(max(x0, 0), min(x1, wa)))
+    bad = [i for i in range(len(pa)) if pa[i] != pb[i] and i not in skip]
     if diff and bad:
         badset = set(bad)
         rows = []

@@ -96,6 +96,7 @@ void facet_config_init(facet_config* c) {
     const Capacity d;
     c->capacity = {d.faces, d.edges, d.samples, d.face_points, d.loops, d.slivers, d.mesh_vertices, d.mesh_triangles};
     c->step_slack_us = Config{}.step_slack_us;
+    c->interface = 1;
 }
 
 // The formula's slack (facet/sizes.h) holds the bridge as well.
@@ -129,6 +130,7 @@ facet_viewer* facet_create(const facet_config* c, void* workspace, size_t bytes,
     cfg.clock_user = c->clock_user;
     cfg.frame_budget_us = c->frame_budget_us;
     cfg.step_slack_us = c->step_slack_us;
+    cfg.interface = c->interface != 0;
     Result r;
     Viewer* v = Viewer::create(cfg, workspace, viewer_bytes, &r);
     if (why) *why = to_c(r);

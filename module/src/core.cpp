@@ -155,6 +155,8 @@ Viewer* Viewer::create(const Config& config, void* workspace, size_t bytes, Resu
 void Core::relay(void* self, const Event& e) {
     Core& c = *static_cast<Core*>(self);
     switch (e.kind) {
+    case Event::Kind::Pass: c.presenter_.set_tolerance(e.pass.tolerance_mm); break;
+    case Event::Kind::PassFailed: c.presenter_.set_tolerance(c.scheduler_.tolerance()); break; // back to the previous level
     case Event::Kind::Sampled: // the new level's wireframe; the first one frames the placed model
         if (e.pass.pass == 0) {
             c.scene_.fit_bounds(true);
@@ -245,6 +247,9 @@ Result Core::load(const void* file, uint32_t file_bytes, void* memory, uint32_t 
     default_tolerance_ = geom::default_tolerance(p);
     camera_.fit();
     user_moved_ = false;
+    picked_count_ = 0;
+    painter_.set_highlight(~0u, ~0u, ~0u, ~0u);
+    presenter_.overlay().set_lines(nullptr, 0);
     Event e{};
     e.kind = Event::Kind::Loaded;
     e.loaded = {uint32_t(p.faces().size()), uint32_t(p.edges().size()), uint32_t(p.shells().size()),
@@ -330,62 +335,6 @@ void Core::command(const module::Command& c) {
     view_changed();
 }
 
-void Core::glide_to(const module::View& v, uint32_t instance, uint32_t face) {
-    if (!scene_.loaded()) return;
-    framer_.stop(); // a glide frames its own end view
-    glide_.target.set_view(v);
-    glide_.target.reframe();
-    const bool sampled = !scheduler_.sampling();
-    scene_.fit_bounds(sampled);
-    glide_.phase = Glide::Phase::Framing;
-    if (sampled) {
-        // A face is framed to fill less: it is seen among its neighbours.
-        framer_.start(config_.display.width, config_.display.height, {}, instance, face, face == ~0u ? module::Framer::kFill : 0.6f);
-    }
-}
-
-bool Core::glide_step() {
-    const module::View &a = glide_.from, &b = glide_.target.view();
-    float s = config_.now_us ? float(now() - glide_.t0) / float(kGlideUs) : float(++glide_.frames) / float(kGlideFrames);
-    if (s >= 1) {
-        camera_.set_view(b);
-        glide_.phase = Glide::Phase::None;
-        view_changed();
-        return true;
-    }
-    s = s * s * (3 - 2 * s); // eased in and out
-    constexpr float kPi = 3.14159265358979f;
-    float dyaw = b.yaw - a.yaw; // the short way round
-    while (dyaw > kPi) dyaw -= 2 * kPi;
-    while (dyaw < -kPi) dyaw += 2 * kPi;
-    module::View v = b;
-    v.yaw = a.yaw + dyaw * s;
-    v.pitch = a.pitch + (b.pitch - a.pitch) * s;
-    v.zoom = a.zoom + (b.zoom - a.zoom) * s;
-    v.pan_x = a.pan_x + (b.pan_x - a.pan_x) * s;
-    v.pan_y = a.pan_y + (b.pan_y - a.pan_y) * s;
-    camera_.set_view(v);
-    view_changed();
-    return true;
-}
-
-void Core::fit_view(bool keep_direction) {
-    const bool sampled = !scheduler_.sampling();
-    scene_.fit_bounds(sampled);
-    if (keep_direction) {
-        camera_.reframe();
-    } else {
-        camera_.fit();
-    }
-    if (sampled) framer_.start(config_.display.width, config_.display.height, {});
-}
-
-void Core::set_mode(DisplayMode m) {
-    if (m == painter_.mode()) return;
-    painter_.set_mode(m);
-    presenter_.invalidate(); // a whole frame in the new style
-}
-
 void Core::view_changed() {
     user_moved_ = true;
     presenter_.invalidate();
@@ -424,6 +373,25 @@ void Core::act(Action a) {
     case Action::ViewBottom: glide_to(module::standard_view(module::Standard::Bottom, camera_.view())); return;
     case Action::ViewIso: glide_to(module::standard_view(module::Standard::Iso, camera_.view())); return;
     case Action::NextDisplayMode: set_mode(DisplayMode((uint8_t(painter_.mode()) + 1) % 4)); return;
+    case Action::NextView: {
+        static constexpr module::Standard kOrder[] = {module::Standard::Iso,  module::Standard::Front, module::Standard::Right,
+                                                      module::Standard::Top,  module::Standard::Back,  module::Standard::Left,
+                                                      module::Standard::Bottom};
+        glide_to(module::standard_view(kOrder[next_view_], camera_.view()));
+        next_view_ = uint8_t((next_view_ + 1) % 7);
+        return;
+    }
+    case Action::Measure:
+        presenter_.overlay().set_measuring(!presenter_.overlay().measuring());
+        if (picked_count_ > 1) picked_count_ = 1; // measuring starts from the face picked, if any
+        show_measurement();
+        painter_.set_highlight(picked_count_ ? picked_[0].face : ~0u, picked_count_ ? picked_[0].instance : ~0u, ~0u, ~0u);
+        presenter_.invalidate();
+        return;
+    case Action::Help:
+        presenter_.overlay().toggle_help();
+        presenter_.invalidate();
+        return;
     case Action::Projection: {
         module::View v = camera_.view();
         v.ortho = !v.ortho;

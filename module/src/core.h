@@ -31,7 +31,7 @@ public:
     void set_mode(DisplayMode m);
     Stats stats() const;
     bool carved() const { return carved_; }
-    Result configure() { return presenter_.configure(config_.display, config_.frame_budget_us); }
+    Result configure() { return presenter_.configure(config_.display, config_.frame_budget_us, config_.interface); }
 
     // Pieces of work, in units: a frame's (a triangle's set-up or 64 pixels: about a thousand
     // instructions on the ARM926) and a face's (geom::FaceJob units: about five thousand).
@@ -43,6 +43,7 @@ public:
     // For tests of the parts behind the public API (the fitted view of every model).
     const module::Camera& camera() const { return camera_; }
     const module::Scene& scene() const { return scene_; }
+    const module::Overlay& overlay() const { return presenter_.overlay(); }
 
 private:
     static void relay(void* self, const Event& e); // the parts' events: act on some, pass all on
@@ -84,6 +85,15 @@ private:
     static constexpr int kDoubleTapSlop = 12; // pixels
     void glide_to(const module::View& v, uint32_t instance = ~0u, uint32_t face = ~0u);
     bool glide_step(); // Moving: the camera advanced (a frame is wanted); false when it has arrived
+    // Picked faces (measuring: the last two), their exact surfaces, and the panel's text.
+    struct Picked {
+        uint32_t face, instance;
+    };
+    Picked picked_[2] = {};
+    uint32_t picked_count_ = 0;
+    uint8_t next_view_ = 0; // the toolbar's VIEW button: the next standard view
+    void picked(const Event& e); // a pick: highlight, measure, the panel
+    void show_measurement();
     // Double tap: the last tap's place and time (without a clock: a second tap on the same spot).
     int16_t tap_x_ = -1000, tap_y_ = -1000;
     uint32_t tap_t_ = 0;

@@ -6,6 +6,7 @@
 // step exact when the camera ends close). The work is cut into pieces of about a million
 // instructions on the ARM926, like a frame's, so a big model's fit never stalls a step.
 #include "camera.h"
+#include "overlay.h"
 #include "scene.h"
 
 #include <cstdint>
@@ -20,10 +21,6 @@ struct Outline {
     void add(const Projected& p);
 };
 
-// Pixels the overlay takes at each side of the screen: the model is framed in the rest.
-struct FreeArea {
-    int16_t left = 0, top = 0, right = 0, bottom = 0;
-};
 
 class Framer {
 public:

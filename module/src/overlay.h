@@ -1,6 +1,11 @@
 #pragma once
-// What the viewer draws over the model: today the progress bar along the bottom while the
-// faces fill in. Drawn into the target's rows only (a band gets its part).
+// What the viewer draws over the model, for the person holding the handheld: a status bar
+// along the top (faces done of all, triangles, the last frame's cost, the level of detail,
+// the display mode), a toolbar of touch targets down the right side, the measurement panel
+// along the bottom (the picked faces' exact values), the help panel, and the progress bar
+// while the faces fill in. Text in facet's own bitmap font (render/text.h). Everything is
+// opaque (an incremental frame draws over the last one) and clipped to the target's band.
+#include "facet/viewer.h"
 #include "render/raster.h"
 
 #include <cstdint>
@@ -10,14 +15,74 @@ namespace facet::module {
 // n pixels of one colour from p (word stores).
 void fill(hal::Rgb565* p, uint32_t n, hal::Rgb565 colour);
 
+// Pixels the overlay takes at each side of the screen (the model is framed in the rest).
+struct FreeArea {
+    int16_t left = 0, top = 0, right = 0, bottom = 0;
+};
+
+struct StatusInfo {
+    uint32_t finished = 0, total = 0, triangles = 0;
+    uint32_t frame_us = 0; // the last full frame's cost (0: no clock)
+    float tolerance_mm = 0;
+    DisplayMode mode = DisplayMode::ShadedEdges;
+    bool ortho = false;
+};
+
 class Overlay {
 public:
     static constexpr uint16_t kBarRows = 4;
     static constexpr hal::Rgb565 kDone = hal::rgb565(40, 110, 220), kLeft = hal::rgb565(70, 74, 84);
+    static constexpr uint32_t kButtons = 8;
+    static constexpr uint32_t kLines = 3, kLineChars = 80; // the measurement panel
 
+    // The screen's size: where the bars and the buttons go (480 x 272 and larger; a screen
+    // under 160 x 96 gets no toolbar, only the progress bar).
+    void layout(uint16_t width, uint16_t height);
+    FreeArea taken() const;
+    // The status bar's frame-time field: pixels [x0, x1) of rows [0, rows) (tools/img.py's
+    // frame_time_field() says the same, for comparing a board's screenshots with the host's).
+    static constexpr int32_t kTimeChars = 9; // "1234.5 ms"
+    struct TimeField {
+        int16_t x0, x1, rows;
+    };
+    TimeField time_field() const;
+    // The toolbar button under a screen pixel, or None.
+    Action button_at(int16_t x, int16_t y) const;
+
+    void set_help(bool on) { help_ = on; }
+    bool help() const { return help_; }
+    void toggle_help() { help_ = !help_; }
+    void set_measuring(bool on) { measuring_ = on; }
+    bool measuring() const { return measuring_; }
+    // The measurement panel's lines (copied; empty: no panel).
+    void set_lines(const char* const* lines, uint32_t count);
+    uint32_t line_count() const { return line_count_; }
+    const char* line(uint32_t i) const { return i < line_count_ ? lines_[i] : ""; }
+
+    // Everything, into the target's rows.
+    void draw(const render::Target& target, const StatusInfo& info) const;
     // The bottom kBarRows rows: `finished` of `total` faces in blue, the rest grey; nothing
     // once every face is in.
     void progress(const render::Target& target, uint32_t finished, uint32_t total) const;
+
+private:
+    struct Button {
+        int16_t x, y, w, h;
+        Action action;
+        const char* label;
+    };
+    void status(const render::Target& t, const StatusInfo& info) const;
+    void toolbar(const render::Target& t) const;
+    void panel(const render::Target& t) const;
+    void help_panel(const render::Target& t) const;
+
+    uint16_t width_ = 0, height_ = 0;
+    int16_t status_rows_ = 0, toolbar_x_ = 0;
+    Button buttons_[kButtons] = {};
+    uint32_t button_count_ = 0;
+    bool help_ = false, measuring_ = false;
+    char lines_[kLines][kLineChars] = {};
+    uint32_t line_count_ = 0;
 };
 
 } // namespace facet::module

@@ -9,6 +9,8 @@ constexpr uint16_t kLineBias = 384; // depth units edges are pulled toward the e
 constexpr hal::Rgb565 kEdgeColour = hal::rgb565(28, 30, 38);
 constexpr uint32_t kNoColour = 0xFF000000u; // no palette in the slot (colours are 24-bit)
 constexpr uint32_t kPaper = 0x00FFFFFFu;    // hidden-line faces: white
+constexpr uint32_t kPicked = 0x0030A0FFu;   // the picked face (B, G, R bytes: orange)
+constexpr uint32_t kPicked2 = 0x00F0B040u;  // the second one (measuring: light blue)
 
 // X / d for d >= 1, to about 2^-15 relative, without dividing (render/fixed.h).
 inline int32_t divide(int64_t x, int32_t d) { return render::divide(x, render::reciprocal(uint32_t(d))); }
@@ -127,7 +129,8 @@ uint32_t Painter::face(uint32_t f, const Transform& t, Rows rows, uint32_t from,
         }
         spent = 1 + F.vertex_count / 4;
     }
-    const render::Palette& pal = palette(white ? kPaper : F.rgb);
+    const bool lit = (hl_[0].face == f && hl_[0].instance == instance_) || (hl_[1].face == f && hl_[1].instance == instance_);
+    const render::Palette& pal = palette(lit ? (hl_[1].face == f && hl_[1].instance == instance_ ? kPicked2 : kPicked) : white ? kPaper : F.rgb);
     const render::Cull cull = t.closed ? render::Cull::Back : render::Cull::None;
     const uint16_t* id = scene_.indices() + F.first_index + 3 * from;
     const uint32_t pixels = raster_.stats.pixels;

@@ -24,6 +24,11 @@ public:
     Painter(const Scene& scene, render::Rasterizer& raster) : scene_(scene), raster_(raster) {}
     void init(const Memory& memory);
     void set_mode(DisplayMode m) { mode_ = m; }
+    // Picked faces drawn in the highlight colour (face ~0u: none), and the instance being drawn.
+    void set_highlight(uint32_t face0, uint32_t instance0, uint32_t face1, uint32_t instance1) {
+        hl_[0] = {face0, instance0}, hl_[1] = {face1, instance1};
+    }
+    void set_instance(uint32_t i) { instance_ = i; }
     DisplayMode mode() const { return mode_; }
 
     // The background of the target's rows: light at the top, darker toward the bottom.
@@ -53,6 +58,10 @@ private:
     Memory mem_{};
     uint32_t next_palette_ = 0; // the palette slot to reuse next
     DisplayMode mode_ = DisplayMode::ShadedEdges;
+    struct Highlight {
+        uint32_t face = ~0u, instance = ~0u;
+    } hl_[2];
+    uint32_t instance_ = 0;
     uint32_t refused_ = 0;
 };
 

@@ -1,13 +1,22 @@
 // Picking: the face under a screen pixel, as drawn (the same transforms, culling and
 // projection as the frame; the nearest triangle that covers the pixel's centre).
 #include "core.h"
+#include "describe.h"
+#include "geom/measure.h"
+#include "hal/print.h"
 
 #include <cstdlib>
 
 namespace facet {
 
 void Core::pick(int16_t x, int16_t y) {
+    // A tap on a toolbar button is the button's.
+    if (const Action a = presenter_.overlay().button_at(x, y); a != Action::None) {
+        act(a);
+        return;
+    }
     const Event e = pick_at(x, y);
+    picked(e);
     // A second tap where the first one was, soon after (or, without a clock, right after):
     // frame the tapped face.
     const uint32_t t = now();
@@ -19,6 +28,43 @@ void Core::pick(int16_t x, int16_t y) {
         tap_x_ = tap_y_ = -1000; // a third tap starts again
         glide_to(camera_.view(), e.pick.instance, e.pick.face);
     }
+}
+
+void Core::picked(const Event& e) {
+    if (!e.pick.hit) {
+        picked_count_ = 0; // a tap on nothing clears the selection
+    } else if (presenter_.overlay().measuring() && picked_count_ == 1) {
+        picked_[1] = {e.pick.face, e.pick.instance};
+        picked_count_ = 2;
+    } else {
+        picked_[0] = {e.pick.face, e.pick.instance};
+        picked_count_ = 1;
+    }
+    painter_.set_highlight(picked_count_ > 0 ? picked_[0].face : ~0u, picked_count_ > 0 ? picked_[0].instance : ~0u,
+                           picked_count_ > 1 ? picked_[1].face : ~0u, picked_count_ > 1 ? picked_[1].instance : ~0u);
+    show_measurement();
+    presenter_.invalidate();
+}
+
+void Core::show_measurement() {
+    if (!config_.interface || picked_count_ == 0) {
+        presenter_.overlay().set_lines(nullptr, 0);
+        return;
+    }
+    const geom::Pack& pack = scene_.pack();
+    const float unit = pack.header().source_unit_mm > 0 ? pack.header().source_unit_mm : 1.0f;
+    char lines[3][module::Overlay::kLineChars];
+    const char* ptrs[3] = {lines[0], lines[1], lines[2]};
+    geom::FaceGeometry g[2];
+    for (uint32_t i = 0; i < picked_count_; ++i) {
+        const Picked& p = picked_[i];
+        if (!geom::describe_face(pack, p.face, pack.instances()[p.instance].m, g[i]).ok()) return;
+        module::describe(g[i], p.face, unit, lines[i], sizeof lines[i]);
+    }
+    uint32_t n = picked_count_;
+    if (picked_count_ == 2) module::describe(geom::relate(g[0], g[1]), unit, lines[n++], sizeof lines[0]);
+    else if (presenter_.overlay().measuring()) format(lines[n++], sizeof lines[0], "MEAS: tap a second face");
+    presenter_.overlay().set_lines(ptrs, n);
 }
 
 Event Core::pick_at(int16_t x, int16_t y) {

@@ -2,7 +2,7 @@
 
 namespace facet::module {
 
-Result Presenter::configure(const Display& d, uint32_t frame_budget_us) {
+Result Presenter::configure(const Display& d, uint32_t frame_budget_us, bool interface) {
     auto bad = [](const char* what) { return Result::fail(Status::OutOfRange, what, {"display"}); };
     if (d.width == 0 || d.height == 0 || d.width > 4096 || d.height > 4096) return bad("width and height must be 1 to 4096");
     if (d.band_lines == 0 || d.band_lines > d.height) return bad("band_lines must be 1 to the height (the height: full frames)");
@@ -12,6 +12,7 @@ Result Presenter::configure(const Display& d, uint32_t frame_budget_us) {
     if (d.mode == Flush::Scanout && d.band_lines != d.height) return bad("scan-out displays take full frames (band_lines = height)");
     display_ = d;
     budget_us_ = frame_budget_us;
+    overlay_.layout(interface ? d.width : 0, interface ? d.height : 0);
     buffers_ = d.buffers[1] ? 2 : 1;
     const bool full = d.band_lines == d.height;
     incremental_ = full && (buffers_ == 1 || d.depth[1] != nullptr);
@@ -93,6 +94,7 @@ bool Presenter::full_pieces(uint32_t units) {
         if (!job_.have_transform) {
             job_.transform = camera_.transform(scene_, job_.instance, display_.width, display_.height);
             job_.have_transform = true;
+            painter_.set_instance(job_.instance);
         }
         const Transform& t = job_.transform;
         const Rows rows = painter_.rows(t);
@@ -136,6 +138,7 @@ bool Presenter::update_pieces(uint32_t units) {
             if (!job_.have_transform) {
                 job_.transform = camera_.transform(scene_, job_.instance, display_.width, display_.height);
                 job_.have_transform = true;
+                painter_.set_instance(job_.instance);
             }
             const Rows rows = painter_.rows(job_.transform);
             uint32_t used;
@@ -178,6 +181,7 @@ void Presenter::flush(uint32_t pass) {
     e.kind = Event::Kind::FrameDone;
     const render::RasterStats& s = raster_.stats;
     const uint32_t cost = job_.cost_us + (clock_() - piece_start_);
+    if (job_.full) last_frame_us_ = cost;
     e.frame = {s.triangles, s.culled, s.pixels, cost, job_.pieces, job_.finished, scene_.totals().faces, pass, job_.full};
     emit_(e);
     if (budget_us_ && cost > budget_us_) {
@@ -227,7 +231,10 @@ void Presenter::run_piece(uint32_t units, uint32_t pass) {
         job_.stage = Job::Stage::Overlay;
     }
     if (job_.stage == Job::Stage::Overlay) {
-        overlay_.progress(raster_.target(), job_.finished, scene_.totals().faces);
+        StatusInfo s;
+        s.finished = job_.finished, s.total = scene_.totals().faces, s.triangles = scene_.totals().triangles;
+        s.frame_us = last_frame_us_, s.tolerance_mm = tolerance_mm_, s.mode = painter_.mode(), s.ortho = camera_.view().ortho;
+        overlay_.draw(raster_.target(), s);
         job_.stage = Job::Stage::Flush;
     }
     take_done();

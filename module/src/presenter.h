@@ -30,7 +30,11 @@ public:
         : scene_(scene), camera_(camera), painter_(painter), raster_(raster), emit_(emit), clock_(clock) {}
 
     // Checks the display's buffers; nothing is drawn before a model is loaded.
-    Result configure(const Display& display, uint32_t frame_budget_us);
+    Result configure(const Display& display, uint32_t frame_budget_us, bool interface);
+    Overlay& overlay() { return overlay_; }
+    const Overlay& overlay() const { return overlay_; }
+    // What the status bar shows that the presenter does not know (the level of detail).
+    void set_tolerance(float mm) { tolerance_mm_ = mm; }
     void reset();        // a new model: nothing shown, nothing drawn
     void invalidate();   // every buffer must be drawn whole again (view, level of detail)
 
@@ -100,6 +104,8 @@ private:
     uint32_t budget_us_ = 0;    // Config::frame_budget_us
     Job job_;
     Overlay overlay_;
+    float tolerance_mm_ = 0;
+    uint32_t last_frame_us_ = 0; // the last whole frame's cost
 };
 
 } // namespace facet::module

@@ -26,6 +26,7 @@ struct Fit {
     bool ok = true;
     double left = 1e9, right = -1e9, top = 1e9, bottom = -1e9; // pixels
     uint32_t hidden = 0;                                      // vertices behind the eye or past the guard band
+    double area_w = 0, area_h = 0;                            // the free area (the screen less the interface)
     std::string why;
 };
 
@@ -42,13 +43,19 @@ Fit check(const std::vector<uint8_t>& file, Screen s) {
     std::vector<Rgb565> frame(size_t(s.w) * s.h);
     std::vector<uint16_t> depth(size_t(s.w) * s.h);
     cfg.display = {s.w, s.h, s.h, {frame.data(), nullptr}, {depth.data(), nullptr}, Flush::Copy, flush, nullptr};
+    cfg.interface = true; // framed in the screen less the status bar and the toolbar, as a user sees it
     std::vector<uint64_t> workspace(workspace_bytes() / 8 + 1);
     Result why;
     Viewer* v = Viewer::create(cfg, workspace.data(), workspace.size() * 8, &why);
-    if (!v) return {false, 0, 0, 0, 0, 0, "create: " + std::string(why.what)};
+    if (!v) {
+        fit.ok = false, fit.why = "create: " + std::string(why.what);
+        return fit;
+    }
     std::vector<uint32_t> memory(pack_memory_bytes(file.data(), uint32_t(file.size())) / 4 + 1);
-    if (Result r = v->load(file.data(), uint32_t(file.size()), memory.data(), uint32_t(memory.size() * 4)); !r.ok())
-        return {false, 0, 0, 0, 0, 0, "load: " + std::string(r.what)};
+    if (Result r = v->load(file.data(), uint32_t(file.size()), memory.data(), uint32_t(memory.size() * 4)); !r.ok()) {
+        fit.ok = false, fit.why = "load: " + std::string(r.what);
+        return fit;
+    }
     for (int guard = 0; guard < 10000000; ++guard) {
         const Activity a = v->step(0);
         if (a == Activity::Waiting) v->flush_done();
@@ -77,14 +84,18 @@ Fit check(const std::vector<uint8_t>& file, Screen s) {
         }
     }
     char buf[256];
-    const double cx = 0.5 * (fit.left + fit.right) - 0.5 * s.w, cy = 0.5 * (fit.top + fit.bottom) - 0.5 * s.h;
-    const double shorter = std::min(s.w, s.h);
-    const double fill = std::max((fit.right - fit.left) / s.w, (fit.bottom - fit.top) / s.h);
+    // The free area: the screen less what the interface takes.
+    const module::FreeArea taken = core.overlay().taken();
+    const double x0 = taken.left, y0 = taken.top, x1 = s.w - taken.right, y1 = s.h - taken.bottom;
+    fit.area_w = x1 - x0, fit.area_h = y1 - y0;
+    const double cx = 0.5 * (fit.left + fit.right) - 0.5 * (x0 + x1), cy = 0.5 * (fit.top + fit.bottom) - 0.5 * (y0 + y1);
+    const double shorter = std::min(x1 - x0, y1 - y0);
+    const double fill = std::max((fit.right - fit.left) / (x1 - x0), (fit.bottom - fit.top) / (y1 - y0));
     if (fit.hidden) {
         std::snprintf(buf, sizeof buf, "%u vertices behind the eye or far off the screen", fit.hidden);
         fit.ok = false, fit.why = buf;
-    } else if (fit.left < 0 || fit.top < 0 || fit.right > s.w || fit.bottom > s.h) {
-        fit.ok = false, fit.why = "off the screen";
+    } else if (fit.left < x0 || fit.top < y0 || fit.right > x1 || fit.bottom > y1) {
+        fit.ok = false, fit.why = "under the interface or off the screen";
     } else if (std::abs(cx) > kCentreSlack * shorter || std::abs(cy) > kCentreSlack * shorter) {
         std::snprintf(buf, sizeof buf, "off-centre by (%.0f, %.0f) pixels", cx, cy);
         fit.ok = false, fit.why = buf;
@@ -130,7 +141,7 @@ int main(int argc, char** argv) {
         return 1;
     }
     int bad = 0;
-    std::printf("%-28s %-9s %28s %8s %6s\n", "model", "screen", "projected box (l t r b)", "centre", "fill");
+    std::printf("%-28s %-9s %28s %8s\n", "model", "screen", "projected box (l t r b)", "fill");
     for (const auto& path : packs) {
         std::vector<uint8_t> file;
         std::string error;
@@ -143,9 +154,8 @@ int main(int argc, char** argv) {
             const Fit f = check(file, s);
             char size[16];
             std::snprintf(size, sizeof size, "%ux%u", s.w, s.h);
-            std::printf("%-28s %-9s %6.0f %6.0f %6.0f %6.0f  %+4.0f,%+4.0f %5.0f%% %s\n", path.filename().c_str(), size, f.left, f.top,
-                        f.right, f.bottom, 0.5 * (f.left + f.right) - 0.5 * s.w, 0.5 * (f.top + f.bottom) - 0.5 * s.h,
-                        100 * std::max((f.right - f.left) / s.w, (f.bottom - f.top) / s.h), f.ok ? "ok" : ("FAIL: " + f.why).c_str());
+            std::printf("%-28s %-9s %6.0f %6.0f %6.0f %6.0f %7.0f%% %s\n", path.filename().c_str(), size, f.left, f.top, f.right, f.bottom,
+                        100 * std::max((f.right - f.left) / f.area_w, (f.bottom - f.top) / f.area_h), f.ok ? "ok" : ("FAIL: " + f.why).c_str());
             bad += !f.ok;
         }
     }

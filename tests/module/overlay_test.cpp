@@ -1,8 +1,10 @@
 // The overlay on its own: the progress bar, whole or in bands.
 #include "overlay.h"
+#include "render/text.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <vector>
 
 using namespace facet;
@@ -41,5 +43,133 @@ TEST(Overlay, BandsGetTheirRowsOfTheBar) {
             std::copy(px.begin(), px.end(), screen.begin() + W * y0);
         }
         EXPECT_EQ(screen, whole) << "bands of " << band;
+    }
+}
+
+namespace {
+
+// The whole overlay into a screen, whole or band by band.
+std::vector<hal::Rgb565> draw(const Overlay& o, uint16_t w, uint16_t h, uint16_t band, const StatusInfo& s) {
+    std::vector<hal::Rgb565> screen(size_t(w) * h, 0x1234);
+    for (uint16_t y0 = 0; y0 < h; y0 += band) {
+        const uint16_t rows = uint16_t(std::min<int>(band, h - y0));
+        std::vector<hal::Rgb565> px(size_t(w) * rows, 0x1234);
+        std::vector<uint16_t> z(size_t(w) * rows);
+        o.draw({px.data(), z.data(), w, h, y0, rows}, s);
+        std::copy(px.begin(), px.end(), screen.begin() + ptrdiff_t(w) * y0);
+    }
+    return screen;
+}
+
+} // namespace
+
+// The toolbar on the two shipped screens: every button a finger's size, inside the screen,
+// below the status bar, none overlapping; a tap finds its button; the model is framed in the rest.
+TEST(Overlay, TheToolbarFitsBothScreensAndATapFindsItsButton) {
+    for (const auto& [w, h] : {std::pair<uint16_t, uint16_t>{480, 272}, {640, 480}}) {
+        Overlay o;
+        o.layout(w, h);
+        const FreeArea a = o.taken();
+        EXPECT_GE(a.top, 10) << "a status bar";
+        EXPECT_GE(a.right, 40) << "a toolbar";
+        EXPECT_EQ(a.left, 0);
+        EXPECT_EQ(a.bottom, 0) << "no measurement yet";
+        const Action all[] = {Action::Fit,     Action::NextView, Action::NextDisplayMode, Action::Projection,
+                              Action::Measure, Action::Finer,    Action::Coarser,         Action::Help};
+        int y = a.top;
+        for (Action act : all) {
+            // Walk down the toolbar's middle column: each button in turn, at least 28 pixels tall.
+            const int x = w - a.right / 2;
+            ASSERT_EQ(o.button_at(int16_t(x), int16_t(y + 1)), act) << w << "x" << h << " at " << y;
+            int end = y + 1;
+            while (end < h && o.button_at(int16_t(x), int16_t(end)) == act) ++end;
+            EXPECT_GE(end - y, 28) << "a finger's height";
+            y = end;
+        }
+        EXPECT_EQ(o.button_at(int16_t(w / 2), int16_t(h / 2)), Action::None) << "the model's area";
+        EXPECT_EQ(o.button_at(int16_t(w - a.right - 1), int16_t(h / 2)), Action::None);
+        // A measurement panel takes rows at the bottom.
+        const char* lines[2] = {"#3 plane", "#4 cylinder hole  D 6.350 mm"};
+        o.set_lines(lines, 2);
+        EXPECT_GE(o.taken().bottom, 2 * render::kLineHeight);
+    }
+    Overlay tiny;
+    tiny.layout(120, 80);
+    EXPECT_EQ(tiny.taken().right, 0) << "no toolbar on a screen too small for one";
+    EXPECT_EQ(tiny.button_at(110, 40), Action::None);
+}
+
+// Everything the overlay draws, band by band, is the same as drawn whole; and what it draws is
+// there: the status text in the top rows, the panel's text at the bottom, the help panel.
+TEST(Overlay, StatusToolbarPanelAndHelpDrawTheSameInBands) {
+    constexpr uint16_t W = 480, H = 272;
+    Overlay o;
+    o.layout(W, H);
+    const char* lines[3] = {"#60 cylinder hole  D 15.360 mm  axis (0.000, 0.000, 1.000)", "#2 plane", "axis at 90.000 deg to the plane"};
+    o.set_lines(lines, 3);
+    o.set_help(true);
+    o.set_measuring(true);
+    StatusInfo s;
+    s.finished = 40, s.total = 87, s.triangles = 1594, s.frame_us = 13100, s.tolerance_mm = 0.504f;
+    const std::vector<hal::Rgb565> whole = draw(o, W, H, H, s);
+    for (uint16_t band : {1, 16, 100}) EXPECT_EQ(draw(o, W, H, band, s), whole) << "bands of " << band;
+    auto touched = [&](int x0, int y0, int x1, int y1) {
+        int n = 0;
+        for (int y = y0; y < y1; ++y)
+            for (int x = x0; x < x1; ++x) n += whole[size_t(y) * W + x] != 0x1234;
+        return n;
+    };
+    EXPECT_EQ(touched(0, 0, W, 12), W * 12) << "the status bar is opaque";
+    EXPECT_EQ(touched(436, 12, W, H), (W - 436) * (H - 12)) << "the toolbar is opaque";
+    EXPECT_GT(touched(0, H - 34, 200, H), 200 * 30) << "the measurement panel";
+    EXPECT_EQ(touched(40, 40, 300, 50), 260 * 10) << "the help panel covers the upper middle";
+}
+
+// The font: a glyph drawn is its pixel art (tools/font/make_font.py), scaled; unknown bytes are '?'.
+TEST(Overlay, TextIsTheFontsPixelArt) {
+    constexpr uint16_t W = 40, H = 20;
+    std::vector<hal::Rgb565> px(W * H, 0);
+    std::vector<uint16_t> z(W * H);
+    const render::Target t{px.data(), z.data(), W, H, 0, H};
+    EXPECT_EQ(render::draw_text(t, 1, 1, "T", 0xFFFF), 1 + render::kCellWidth);
+    // 'T': "##### ..#.. ..#.. ..#.. ..#.. ..#.. ..#.. ....."
+    for (int x = 0; x < 5; ++x) EXPECT_EQ(px[1 * W + 1 + x], 0xFFFF) << x;
+    for (int y = 2; y < 8; ++y) {
+        for (int x = 0; x < 5; ++x) EXPECT_EQ(px[size_t(1 + y - 1) * W + 1 + x], x == 2 ? 0xFFFF : 0) << x << "," << y;
+    }
+    EXPECT_EQ(render::text_width("T"), 5);
+    EXPECT_EQ(render::text_width("TT", 2), 22);
+    std::vector<hal::Rgb565> a(W * H, 0), b(W * H, 0);
+    render::draw_text({a.data(), z.data(), W, H, 0, H}, 0, 0, "\x01", 1);
+    render::draw_text({b.data(), z.data(), W, H, 0, H}, 0, 0, "?", 1);
+    EXPECT_EQ(a, b);
+}
+
+// The frame-time field is where tools/img.py's frame_time_field() says (the screenshot
+// comparisons between a board and the host leave it out: each shows its own clock).
+TEST(Overlay, TheFrameTimeFieldIsWhereImgPySaysItIs) {
+    struct Case {
+        uint16_t w, h;
+        int16_t x0, x1;
+    };
+    // frame_time_field(480, 272) = (380, 0, 433, 12); (640, 480) = (528, 0, 581, 12)
+    for (const Case c : {Case{480, 272, 380, 433}, Case{640, 480, 528, 581}}) {
+        Overlay o;
+        o.layout(c.w, c.h);
+        const Overlay::TimeField f = o.time_field();
+        EXPECT_EQ(f.x0, c.x0) << c.w;
+        EXPECT_EQ(f.x1, c.x1) << c.w;
+        EXPECT_EQ(f.rows, 12);
+        // The time is drawn inside it only.
+        StatusInfo s;
+        s.finished = s.total = 5, s.frame_us = 1234567;
+        const std::vector<hal::Rgb565> with = draw(o, c.w, c.h, c.h, s);
+        s.frame_us = 0;
+        const std::vector<hal::Rgb565> without = draw(o, c.w, c.h, c.h, s);
+        for (int y = 0; y < c.h; ++y)
+            for (int x = 0; x < c.w; ++x)
+                if (with[size_t(y) * c.w + x] != without[size_t(y) * c.w + x]) {
+                    ASSERT_TRUE(x >= f.x0 && x < f.x1 && y < f.rows) << x << "," << y;
+                }
     }
 }

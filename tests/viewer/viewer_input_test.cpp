@@ -80,6 +80,7 @@ struct App {
     uint32_t flushes = 0, pending = 0;
     uint32_t clock_us = 0, tick_us = 0; // a fake clock: each read advances it
     bool use_clock = false;
+    bool interface = false; // the model alone (the on-screen interface has tests of its own)
 
     Capacity capacity;
 
@@ -108,6 +109,7 @@ struct App {
             cfg.clock_user = this;
         }
         cfg.capacity = capacity;
+        cfg.interface = interface;
         workspace.assign(workspace_bytes() / 8 + 1, 0);
         Result why;
         v = Viewer::create(cfg, workspace.data(), workspace.size() * 8, &why);
@@ -540,6 +542,65 @@ TEST(Viewer, DisplayModesDrawFacesAndEdgesAsNamed) {
     app.v->set_display_mode(DisplayMode::ShadedEdges);
     app.run();
     EXPECT_EQ(app.screen()[size_t(app.h / 2) * app.w + app.w / 2 - 10], shaded_edges.centre);
+}
+
+// The on-screen interface through touch: toolbar buttons act (and pick nothing), a tapped face
+// is described with its exact values, and with MEAS on a second one gives the relation.
+TEST(Viewer, TheToolbarAndTheMeasurementPanelWorkByTouch) {
+    App app;
+    app.w = 480, app.h = 272, app.lines = 272, app.interface = true;
+    ASSERT_TRUE(app.create().ok());
+    ASSERT_TRUE(app.load(polygon_and_triangle(40)).ok());
+    app.run();
+    const Core& core = *static_cast<const Core*>(app.v);
+    const module::Overlay& o = core.overlay();
+    auto tap = [&](int x, int y) {
+        app.v->touch(0, int16_t(x), int16_t(y), true);
+        app.v->touch(0, int16_t(x), int16_t(y), false);
+        app.run();
+    };
+    auto button = [&](Action a) {
+        for (int y = 0; y < app.h; ++y)
+            if (o.button_at(int16_t(app.w - 5), int16_t(y)) == a) return y + 5;
+        return -1;
+    };
+    // MODE: the display mode changes, nothing is picked.
+    const int picks = app.count(Event::Kind::Picked);
+    tap(app.w - 20, button(Action::NextDisplayMode));
+    EXPECT_EQ(app.v->display_mode(), DisplayMode::Shaded);
+    EXPECT_EQ(app.count(Event::Kind::Picked), picks);
+    // The polygon (a plane face) from the top view: described exactly.
+    app.v->key('7');
+    app.run();
+    const module::Transform t = core.camera().transform(core.scene(), 0, app.w, app.h);
+    auto screen_of = [&](float x, float y) {
+        int32_t p[3] = {int32_t(std::lround(x / core.scene().unit())), int32_t(std::lround(y / core.scene().unit())), 0};
+        module::Projected q;
+        t.project(p, q);
+        return std::pair<int, int>{q.s.x / 16, q.s.y / 16};
+    };
+    const auto [px, py] = screen_of(-50, 0);
+    tap(px, py);
+    ASSERT_EQ(app.last(Event::Kind::Picked)->pick.face, 0u);
+    ASSERT_EQ(o.line_count(), 1u);
+    EXPECT_STREQ(o.line(0), "#0 plane  normal (0.000, 0.000, 1.000)  offset 0.000 mm");
+    // MEAS on, then the triangle: the two faces' relation (one plane: parallel, 0 apart).
+    tap(app.w - 20, button(Action::Measure));
+    EXPECT_TRUE(o.measuring());
+    EXPECT_STREQ(o.line(1), "MEAS: tap a second face");
+    const auto [tx, ty] = screen_of(125, 5);
+    tap(tx, ty);
+    ASSERT_EQ(app.last(Event::Kind::Picked)->pick.face, 1u);
+    ASSERT_EQ(o.line_count(), 3u);
+    EXPECT_STREQ(o.line(2), "parallel planes: distance 0.000 mm");
+    // HELP on and off; a tap on nothing clears the selection.
+    tap(app.w - 20, button(Action::Help));
+    EXPECT_TRUE(o.help());
+    tap(app.w - 20, button(Action::Help));
+    EXPECT_FALSE(o.help());
+    tap(5, app.h - 5);
+    EXPECT_FALSE(app.last(Event::Kind::Picked)->pick.hit);
+    EXPECT_EQ(o.line_count(), 0u);
 }
 
 TEST(Viewer, KeysGesturesAndPicks) {

@@ -27,7 +27,7 @@ namespace {
 constexpr uint32_t kStepUs = 8000;
 
 int usage() {
-    std::fprintf(stderr, "usage: facet-sim --pack MODEL.fpk [--size WxH] [--bands N] [--out DIR] [--headless] [--quiet] "
+    std::fprintf(stderr, "usage: facet-sim --pack MODEL.fpk [--size WxH] [--bands N] [--out DIR] [--headless] [--no-clock] [--verbose] [--quiet] "
                          "[--scale K] [--send ENTRY]...\n");
     return 2;
 }
@@ -285,6 +285,10 @@ int main(int argc, char** argv) {
             scale = std::atoi(argv[++i]);
         } else if (a == "--headless") {
             headless = true;
+        } else if (a == "--verbose") {
+            opt.verbose = true;
+        } else if (a == "--no-clock") {
+            opt.clock = false; // the same pixels whatever the machine's speed (tests)
         } else if (a == "--quiet") {
             opt.quiet = true;
         } else {

@@ -124,7 +124,7 @@ bool Session::open(const Options& o, std::string& error) {
     cfg.display.user = this;
     cfg.on_event = event;
     cfg.event_user = this;
-    cfg.now_us = now_us;
+    cfg.now_us = o.clock ? now_us : nullptr;
     workspace_storage_.assign(facet::workspace_bytes() + 8, 0);
     void* ws = workspace_storage_.data() + ((8 - reinterpret_cast<uintptr_t>(workspace_storage_.data()) % 8) % 8);
     facet::Result why;
@@ -196,6 +196,9 @@ void Session::event(void* self, const facet::Event& e) {
             std::printf("@%s faces %u failed %u triangles %u\n", e.tessellated.pass ? "retessellation" : "tessellation",
                         e.tessellated.faces, e.tessellated.failed, e.tessellated.triangles);
         }
+        break;
+    case Kind::ViewChanged:
+        if (s.opt_.verbose) std::printf("@view yaw %.2f pitch %.2f zoom %.4f\n", e.view.yaw_deg, e.view.pitch_deg, e.view.zoom);
         break;
     case Kind::Picked:
         if (!s.opt_.quiet) {

@@ -34,6 +34,8 @@ struct Options {
     uint16_t band_lines = 0; // 0: full frames, double-buffered, a depth buffer each
     std::string pack, out;   // the pack file; the screenshots' folder
     bool quiet = false;
+    bool verbose = false; // every view change too (@view)
+    bool clock = true; // false: no clock (each step one piece of work; no frame times on the status bar)
 };
 
 class Session {

@@ -96,6 +96,7 @@ typedef struct {
     uint32_t (*now_us)(void *user);
     void *clock_user;
     uint32_t frame_budget_us, step_slack_us;
+    int interface; /* facet's own on-screen interface (facet_config_init: 1) */
 } facet_config;
 
 /* What step() left: more work (call again), a frame waiting for facet_flush_done(), nothing. */

@@ -118,6 +118,8 @@ struct Config {
     void* clock_user = nullptr;               // without one, step() does one piece of work per call
     uint32_t frame_budget_us = 0;             // BudgetExceeded past these (0: never)
     uint32_t step_slack_us = 2000;
+    bool interface = true; // facet's own on-screen interface (status bar, toolbar, panels); false:
+                           // the application draws its own and drives the viewer with act()
 };
 
 enum class Activity : uint8_t {
@@ -137,6 +139,9 @@ enum class Action : uint8_t {
     ViewFront, ViewBack, ViewRight, ViewLeft, ViewTop, ViewBottom, ViewIso,
     Projection, // perspective <-> parallel (orthographic)
     NextDisplayMode, // shaded with edges -> shaded -> wireframe -> hidden line -> ...
+    NextView,        // isometric -> front -> right -> top -> back -> left -> bottom -> ...
+    Measure,         // measuring on/off: taps then pick two faces for their distance and angle
+    Help,            // the help panel on/off
 };
 
 // How the model is drawn.

@@ -1,0 +1,15 @@
+#pragma once
+// A picked face's exact surface and two faces' relation as one line of the measurement panel,
+// in the file's unit (geom/measure.h computes them; this only words them). facet-measure says
+// the same on the host, at more length.
+#include "geom/measure.h"
+
+#include <cstddef>
+#include <cstdint>
+
+namespace facet::module {
+
+void describe(const geom::FaceGeometry& g, uint32_t face, float unit_mm, char* out, size_t size);
+void describe(const geom::Relation& r, float unit_mm, char* out, size_t size);
+
+} // namespace facet::module

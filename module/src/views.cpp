@@ -1,0 +1,64 @@
+// The viewer's views: framing the model (or a face), the standard views and the glide to them,
+// the display mode.
+#include "core.h"
+
+namespace facet {
+
+void Core::glide_to(const module::View& v, uint32_t instance, uint32_t face) {
+    if (!scene_.loaded()) return;
+    framer_.stop(); // a glide frames its own end view
+    glide_.target.set_view(v);
+    glide_.target.reframe();
+    const bool sampled = !scheduler_.sampling();
+    scene_.fit_bounds(sampled);
+    glide_.phase = Glide::Phase::Framing;
+    if (sampled) {
+        // A face is framed to fill less: it is seen among its neighbours.
+        framer_.start(config_.display.width, config_.display.height, presenter_.overlay().taken(), instance, face,
+                      face == ~0u ? module::Framer::kFill : 0.6f);
+    }
+}
+
+bool Core::glide_step() {
+    const module::View &a = glide_.from, &b = glide_.target.view();
+    float s = config_.now_us ? float(now() - glide_.t0) / float(kGlideUs) : float(++glide_.frames) / float(kGlideFrames);
+    if (s >= 1) {
+        camera_.set_view(b);
+        glide_.phase = Glide::Phase::None;
+        view_changed();
+        return true;
+    }
+    s = s * s * (3 - 2 * s); // eased in and out
+    constexpr float kPi = 3.14159265358979f;
+    float dyaw = b.yaw - a.yaw; // the short way round
+    while (dyaw > kPi) dyaw -= 2 * kPi;
+    while (dyaw < -kPi) dyaw += 2 * kPi;
+    module::View v = b;
+    v.yaw = a.yaw + dyaw * s;
+    v.pitch = a.pitch + (b.pitch - a.pitch) * s;
+    v.zoom = a.zoom + (b.zoom - a.zoom) * s;
+    v.pan_x = a.pan_x + (b.pan_x - a.pan_x) * s;
+    v.pan_y = a.pan_y + (b.pan_y - a.pan_y) * s;
+    camera_.set_view(v);
+    view_changed();
+    return true;
+}
+
+void Core::fit_view(bool keep_direction) {
+    const bool sampled = !scheduler_.sampling();
+    scene_.fit_bounds(sampled);
+    if (keep_direction) {
+        camera_.reframe();
+    } else {
+        camera_.fit();
+    }
+    if (sampled) framer_.start(config_.display.width, config_.display.height, presenter_.overlay().taken());
+}
+
+void Core::set_mode(DisplayMode m) {
+    if (m == painter_.mode()) return;
+    painter_.set_mode(m);
+    presenter_.invalidate(); // a whole frame in the new style
+}
+
+} // namespace facet

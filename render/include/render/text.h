@@ -1,0 +1,25 @@
+#pragma once
+// Text and panels over the picture: facet's own 5 x 8 bitmap font (printable ASCII; drawn in
+// tools/font/make_font.py, compiled in: no font file at run time), filled and dimmed
+// rectangles. Everything is clipped to the target's band, so an overlay is drawn band by band
+// like the model.
+#include "render/raster.h"
+
+#include <cstdint>
+
+namespace facet::render {
+
+constexpr int32_t kGlyphWidth = 5, kGlyphHeight = 8; // pixels of a glyph (row 7: descenders)
+constexpr int32_t kCellWidth = 6, kLineHeight = 10;  // a character's advance, a line's
+
+// The text's width in pixels at `scale` (1 or more: each font pixel scale x scale).
+int32_t text_width(const char* text, int32_t scale = 1);
+// Draws `text` with its top-left corner at (x, y) in `colour`; characters outside 32-126 are
+// drawn as '?'. Returns the x after the last character.
+int32_t draw_text(const Target& t, int32_t x, int32_t y, const char* text, hal::Rgb565 colour, int32_t scale = 1);
+// A rectangle filled with one colour, or the picture under it halved toward `colour` (a
+// translucent panel: each channel (picture + colour) / 2).
+void fill_rect(const Target& t, int32_t x, int32_t y, int32_t w, int32_t h, hal::Rgb565 colour);
+void dim_rect(const Target& t, int32_t x, int32_t y, int32_t w, int32_t h, hal::Rgb565 colour);
+
+} // namespace facet::render

@@ -1,0 +1,70 @@
+#include "render/text.h"
+
+namespace facet::render {
+namespace {
+
+constexpr uint8_t kFont[95][8] = {
+#include "font_5x8.inc"
+};
+
+// The rectangle's part within the target's band and screen.
+bool clip(const Target& t, int32_t& x, int32_t& y, int32_t& w, int32_t& h) {
+    if (x < 0) w += x, x = 0;
+    if (y < t.y0) h -= t.y0 - y, y = t.y0;
+    if (x + w > t.width) w = t.width - x;
+    if (y + h > t.y0 + t.rows) h = t.y0 + t.rows - y;
+    return w > 0 && h > 0;
+}
+
+} // namespace
+
+int32_t text_width(const char* text, int32_t scale) {
+    int32_t n = 0;
+    while (text[n]) ++n;
+    return n ? (n * kCellWidth - 1) * scale : 0;
+}
+
+int32_t draw_text(const Target& t, int32_t x, int32_t y, const char* text, hal::Rgb565 colour, int32_t scale) {
+    const int32_t top = t.y0, bottom = t.y0 + t.rows;
+    for (; *text; ++text, x += kCellWidth * scale) {
+        if (x >= t.width) { // the rest is off the screen: only the advance counts
+            while (*text) ++text, x += kCellWidth * scale;
+            break;
+        }
+        if (y >= bottom || y + kGlyphHeight * scale <= top || x + kGlyphWidth * scale <= 0) continue;
+        const unsigned char c = static_cast<unsigned char>(*text);
+        const uint8_t* glyph = kFont[(c >= 32 && c < 127 ? c : '?') - 32];
+        for (int32_t r = 0; r < kGlyphHeight * scale; ++r) {
+            const int32_t py = y + r;
+            if (py < top || py >= bottom) continue;
+            const uint8_t bits = glyph[r / scale];
+            if (!bits) continue;
+            hal::Rgb565* row = t.row(py);
+            for (int32_t c5 = 0; c5 < kGlyphWidth * scale; ++c5) {
+                const int32_t px = x + c5;
+                if (px >= 0 && px < t.width && (bits >> (4 - c5 / scale)) & 1) row[px] = colour;
+            }
+        }
+    }
+    return x;
+}
+
+void fill_rect(const Target& t, int32_t x, int32_t y, int32_t w, int32_t h, hal::Rgb565 colour) {
+    if (!clip(t, x, y, w, h)) return;
+    for (int32_t r = y; r < y + h; ++r) {
+        hal::Rgb565* p = t.row(r) + x;
+        for (int32_t i = 0; i < w; ++i) p[i] = colour;
+    }
+}
+
+void dim_rect(const Target& t, int32_t x, int32_t y, int32_t w, int32_t h, hal::Rgb565 colour) {
+    if (!clip(t, x, y, w, h)) return;
+    // Halve both and add: the low bit of each channel dropped first (no carry between them).
+    const uint32_t half = (uint32_t(colour) & 0xF7DEu) >> 1;
+    for (int32_t r = y; r < y + h; ++r) {
+        hal::Rgb565* p = t.row(r) + x;
+        for (int32_t i = 0; i < w; ++i) p[i] = hal::Rgb565(((uint32_t(p[i]) & 0xF7DEu) >> 1) + half);
+    }
+}
+
+} // namespace facet::render
