@@ -65,6 +65,7 @@ const char* work_name(Work w) {
     case Work::Frame: return "frame";
     case Work::Update: return "update";
     case Work::Fit: return "fit";
+    case Work::Overlay: return "overlay";
     }
     return "work";
 }

@@ -15,6 +15,7 @@ static_assert(int(Event::Kind::WorkEnd) == FACET_EVENT_WORK_END && int(Event::Ki
               "the C event kinds are facet::Event::Kind");
 static_assert(int(Work::Update) == FACET_WORK_UPDATE, "the C work kinds are facet::Work");
 static_assert(int(Work::Fit) == FACET_WORK_FIT, "the C work kinds are facet::Work");
+static_assert(int(Work::Overlay) == FACET_WORK_OVERLAY, "the C work kinds are facet::Work");
 static_assert(int(Activity::Idle) == FACET_ACTIVITY_IDLE && int(Flush::Scanout) == FACET_FLUSH_SCANOUT,
               "the C enums are the C++ ones");
 static_assert(uint32_t(KeyHome) == uint32_t(FACET_KEY_HOME), "the C keys are facet::Key");

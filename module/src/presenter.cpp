@@ -193,7 +193,10 @@ void Presenter::flush(uint32_t pass) {
 }
 
 Work Presenter::work() const {
-    if (job_.active && job_.version == version_) return job_.full ? Work::Frame : Work::Update;
+    if (job_.active && job_.version == version_) {
+        if (job_.stage == Job::Stage::Overlay) return Work::Overlay;
+        return job_.full ? Work::Frame : Work::Update;
+    }
     const uint8_t b = buffers_ == 2 ? uint8_t(next_ & 1) : 0;
     return incremental_ && buf_[b].version == version_ ? Work::Update : Work::Frame;
 }
@@ -229,6 +232,7 @@ void Presenter::run_piece(uint32_t units, uint32_t pass) {
     if (job_.stage == Job::Stage::Faces || job_.stage == Job::Stage::Edges) {
         if (!(job_.full ? full_pieces(units) : update_pieces(units))) return;
         job_.stage = Job::Stage::Overlay;
+        return; // the overlay is a piece of its own (Work::Overlay: its cost is measured apart)
     }
     if (job_.stage == Job::Stage::Overlay) {
         StatusInfo s;

@@ -63,17 +63,21 @@ def unpack_instructions(regions):
     return counts[0] if counts else None
 
 
+OVERLAY_BUDGET = 500_000  # instructions a frame for the on-screen interface (issue 11)
+
+
 def frame_budget(triangles):
     return FRAME_BUDGET_PER_10K * max(1.0, triangles / 10_000)
 
 
 def analyse(uart, regions):
     """Per pass: tessellation instructions (its pieces of sampling and faces); per full frame:
-    its pieces' instructions (the last 'pieces' frame regions before its '@frame' line: a frame
-    the view outdated while it was drawn is not one) and the mesh's triangles then."""
+    its pieces' instructions (the last 'pieces' frame and overlay regions before its '@frame'
+    line: a frame the view outdated while it was drawn is not one), the overlay's part of them
+    and the mesh's triangles then."""
     names = [r['name'] for r in regions]
     counts = [r['instructions'] for r in regions]
-    tess, frames, tri_now, pass_no, i, pieces = {}, [], 0, -1, 0, []
+    tess, frames, tri_now, pass_no, i, pieces, overlay = {}, [], 0, -1, 0, [], []
     for line in uart.splitlines():
         w = line.split()
         if not w:
@@ -87,15 +91,18 @@ def analyse(uart, regions):
             kv = dict(zip(w[1::2], w[2::2]))
             n = int(kv.get('pieces', 1))
             mine = pieces[-n:] if len(pieces) >= n else [None]
-            frames.append({'instructions': None if None in mine else sum(mine), 'triangles': tri_now, 'pass': pass_no})
-            pieces = []
+            frames.append({'instructions': None if None in mine else sum(mine), 'triangles': tri_now, 'pass': pass_no,
+                           'overlay': overlay[-1] if overlay else 0})
+            pieces, overlay = [], []
         elif w[0] == '@begin' and len(w) == 2:
             if i < len(names) and names[i] == w[1]:
                 n = counts[i]
                 if w[1] in ('edges', 'face'):
                     tess[pass_no] = tess.get(pass_no, 0) + (n or 0)
-                elif w[1] == 'frame':
-                    pieces.append(n)
+                elif w[1] in ('frame', 'overlay'):
+                    pieces.append(n)  # a frame's cost: its pieces, the overlay's included
+                if w[1] == 'overlay':
+                    overlay.append(n or 0)
             i += 1
     return tess, frames
 
@@ -191,6 +198,11 @@ def main():
             if f['instructions'] and f['instructions'] > frame_budget(f['triangles']):
                 budget_notes.append(f'frame of {f["triangles"]:,} triangles: {f["instructions"]:,} > '
                                     f'{frame_budget(f["triangles"]):,.0f}')
+        # The on-screen interface: at most 0.5 M instructions a frame.
+        overlay_max = max((f.get('overlay', 0) for f in frames), default=0)
+        if overlay_max > OVERLAY_BUDGET:
+            budget_notes.append(f'the overlay took {overlay_max:,} instructions in a frame > {OVERLAY_BUDGET:,}')
+        print(f'{args.board} {name}: overlay at most {overlay_max:,} instructions a frame')
         if args.assert_budgets:
             problems += budget_notes
         if problems:

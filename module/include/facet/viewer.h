@@ -74,7 +74,8 @@ struct Display {
     void* user = nullptr;
 };
 
-enum class Work : uint8_t { Unpack, Sampling, Face, Frame, Update, Fit }; // pieces of work (for profiling)
+// Pieces of work (for profiling). Overlay: the on-screen interface over a frame, a piece of its own.
+enum class Work : uint8_t { Unpack, Sampling, Face, Frame, Update, Fit, Overlay };
 
 struct Event {
     enum class Kind : uint8_t {
