@@ -55,6 +55,7 @@ struct Session {
     bool in_line = false;
     char shot[48] = {};  // a screenshot asked for: taken once the viewer has caught up (idle)
     bool flush_pending = false;
+    bool measured = false; // a pick: print the measurement panel's lines once input is handled
 } session;
 
 const char* work_name(Work w) {
@@ -130,6 +131,7 @@ void on_event(void*, const Event& e) {
         if (e.pick.hit) {
             print(con, "@pick face {} instance {} shell {} surface_type {} at {} {}\n", e.pick.face, e.pick.instance,
                   e.pick.shell, e.pick.surface_type, e.pick.x, e.pick.y);
+            session.measured = true; // its exact values once the event is handled (the panel is set after it)
         } else {
             print(con, "@pick none at {} {}\n", e.pick.x, e.pick.y);
         }
@@ -329,6 +331,12 @@ int facet_main(hal::Board& board) {
             }
         }
         if (session.flush_pending && !board.display.busy()) session.flush_pending = false, v.flush_done();
+        if (session.measured) { // the picked faces' exact values, for the host (report.json)
+            session.measured = false;
+            const char* lines[3];
+            const uint32_t n = v.measurement(lines);
+            for (uint32_t i = 0; i < n; ++i) print(con, "@measure {}\n", lines[i]);
+        }
         if (session.quit) break;
         if (session.step_regions) hal::measure_begin(con, "step");
         const Activity a = v.step(session.step_us);

@@ -453,6 +453,11 @@ void Viewer::touch(uint8_t id, int16_t x, int16_t y, bool down) {
 }
 void Viewer::act(Action a) { static_cast<Core*>(this)->act(a); }
 Stats Viewer::stats() const { return static_cast<const Core*>(this)->stats(); }
+uint32_t Viewer::measurement(const char* lines[3]) const {
+    const module::Overlay& o = static_cast<const Core*>(this)->overlay();
+    for (uint32_t i = 0; i < o.line_count(); ++i) lines[i] = o.line(i);
+    return o.line_count();
+}
 DisplayMode Viewer::display_mode() const { return static_cast<const Core*>(this)->mode(); }
 void Viewer::set_display_mode(DisplayMode m) { static_cast<Core*>(this)->set_mode(m); }
 

@@ -9,8 +9,8 @@ constexpr uint16_t kLineBias = 384; // depth units edges are pulled toward the e
 constexpr hal::Rgb565 kEdgeColour = hal::rgb565(28, 30, 38);
 constexpr uint32_t kNoColour = 0xFF000000u; // no palette in the slot (colours are 24-bit)
 constexpr uint32_t kPaper = 0x00FFFFFFu;    // hidden-line faces: white
-constexpr uint32_t kPicked = 0x0030A0FFu;   // the picked face (B, G, R bytes: orange)
-constexpr uint32_t kPicked2 = 0x00F0B040u;  // the second one (measuring: light blue)
+constexpr uint32_t kPicked = 0x0040E060u;   // the picked face (B, G, R bytes: green)
+constexpr uint32_t kPicked2 = 0x00F060C0u;  // the second one (measuring: violet)
 
 // X / d for d >= 1, to about 2^-15 relative, without dividing (render/fixed.h).
 inline int32_t divide(int64_t x, int32_t d) { return render::divide(x, render::reciprocal(uint32_t(d))); }
@@ -119,13 +119,15 @@ uint32_t Painter::face(uint32_t f, const Transform& t, Rows rows, uint32_t from,
     const DrawVertex* verts = scene_.vertices() + F.first_vertex;
     spent = 0;
     if (mode_ == DisplayMode::Wireframe) return F.triangle_count; // edges only
-    const bool white = mode_ == DisplayMode::HiddenLine; // faces only hide what is behind them
+    const bool white = mode_ == DisplayMode::HiddenLine; // faces mostly hide what is behind them
     if (from == 0) { // the face's vertices, once
         if (F.state != FaceState::Done || !t.visible(F.centre, F.radius, rows)) return F.triangle_count;
         if (F.planar && t.closed && F.vertex_count && t.faces_away(verts[0].p, verts[0].n)) return F.triangle_count;
         for (uint32_t v = 0; v < F.vertex_count; ++v) {
             t.project(verts[v].p, P[v]);
-            P[v].s.shade = white ? 255 : t.shade(verts[v].n);
+            // Hidden line: paper faces, lit just enough (200-255) that curved outlines (no B-rep
+            // edge: a cylinder's silhouette) still read against each other.
+            P[v].s.shade = white ? uint8_t(200 + ((t.shade(verts[v].n) * 55) >> 8)) : t.shade(verts[v].n);
         }
         spent = 1 + F.vertex_count / 4;
     }

@@ -306,6 +306,12 @@ def main():
             kv = dict(zip(words[1::2], words[2::2]))
             report['model'] = {'faces': int(kv['faces']), 'faces_failed': int(kv['failed']),
                                'triangles': int(kv['triangles']), 'mesh_bytes': int(kv['mesh_bytes'])}
+        elif words[0] == '@pick' and len(words) >= 3:
+            if words[1] == 'face':
+                kv = dict(zip(words[1::2], words[2::2]))
+                report.setdefault('picks', []).append({'face': int(kv['face']), 'instance': int(kv['instance']), 'lines': []})
+        elif words[0] == '@measure' and report.get('picks'):
+            report['picks'][-1]['lines'].append(line.split(' ', 1)[1].strip())  # the picked faces' exact values
         elif words[0] == '@memory' and len(words) >= 3:
             report['memory'] = {k: int(v) for k, v in zip(words[1::2], words[2::2])}
         elif words[0] == '@expect' and len(words) == 3:

@@ -200,6 +200,9 @@ public:
 
     Stats stats() const;
     DisplayMode display_mode() const;
+    // The measurement panel's lines (the picked faces' exact values; measuring, their distance
+    // and angle): how many, up to 3, into lines[] (valid until the next input or load).
+    uint32_t measurement(const char* lines[3]) const;
     void set_display_mode(DisplayMode mode);
 
 private:
