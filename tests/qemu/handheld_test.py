@@ -1,0 +1,96 @@
+#!/usr/bin/env python3
+"""The handheld's features in a scripted QEMU session on versatilepb (640x480), against the
+desktop simulator running the same script (the module's own host build): the isometric view,
+hidden-line mode and a picked face, each screenshot pixel-identical but for the status bar's
+frame time (each shows its own clock); the picked face's exact values as facet-measure gives
+them; every frame of the session within the frame budget (the viewer's budget rule).
+
+  handheld_test.py --elf facet-viewer.elf --sim facet-sim --packer P --measure M --sample S --work DIR
+"""
+import argparse
+import json
+import os
+import re
+import subprocess
+import sys
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+sys.path.insert(0, os.path.join(ROOT, 'tools'))
+sys.path.insert(0, os.path.join(ROOT, 'tests', 'qemu'))
+import board as boards  # noqa: E402
+import img  # noqa: E402
+from viewer_test import analyse, frame_budget  # noqa: E402
+
+SESSION = ['keys 0', 'keys !shot views\\n', 'keys mmm', 'keys !shot hidden-line\\n', 'keys m',
+           'mouse 0 0 left', 'keys !shot measure\\n', 'keys q']
+SHOTS = ['views', 'hidden-line', 'measure']
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    for a in ('--elf', '--sim', '--packer', '--measure', '--sample', '--work'):
+        ap.add_argument(a, required=True)
+    args = ap.parse_args()
+    os.makedirs(args.work, exist_ok=True)
+    env = dict(os.environ, ASAN_OPTIONS='detect_leaks=0')
+    step, fpk = os.path.join(args.work, 'sample.step'), os.path.join(args.work, 'sample.fpk')
+    subprocess.run([args.sample, step], check=True, capture_output=True, env=env)
+    subprocess.run([args.packer, step, '-o', fpk, '--quiet'], check=True, capture_output=True, env=env)
+    board = boards.load('qemu-versatilepb')
+    dev = os.path.join(args.work, 'board')
+    cmd = [sys.executable, os.path.join(ROOT, 'tools', 'qemu', 'run.py'), '--board', 'qemu-versatilepb', '--elf', args.elf,
+           '--out', dev, '--load', f'{fpk}@{board["pack"]["address"]}', '--icount', '--timeout', '600', '--quiet']
+    for s in SESSION:
+        cmd += ['--send', s]
+    r = subprocess.run(cmd, capture_output=True, text=True)
+    problems = []
+    if r.returncode != 0:
+        problems.append(f'the board session: exit {r.returncode}: {r.stderr.strip()[-300:]}')
+    host = os.path.join(args.work, 'sim')
+    os.makedirs(host, exist_ok=True)
+    hcmd = [args.sim, '--pack', fpk, '--out', host, '--size', '640x480', '--headless', '--no-clock']
+    for s in SESSION:
+        hcmd += ['--send', s]
+    h = subprocess.run(hcmd, capture_output=True, text=True, env=env, timeout=300)
+    if h.returncode != 0:
+        problems.append(f'the simulator: exit {h.returncode}: {h.stderr.strip()[-300:]}')
+    for s in SHOTS:
+        a, b = os.path.join(host, s + '.f565'), os.path.join(dev, s + '.png')
+        if not (os.path.exists(a) and os.path.exists(b)):
+            problems.append(f'screenshot {s} missing')
+            continue
+        n, msg = img.compare(a, b, os.path.join(args.work, s + '-diff.png'), ignore=[img.frame_time_field(640, 480)])
+        if n:
+            problems.append(f'{s}: board and host differ: {msg}')
+    # The picked face's values, as the host's facet-measure states them.
+    rep = json.load(open(os.path.join(dev, 'report.json'))) if os.path.exists(os.path.join(dev, 'report.json')) else {}
+    picks = rep.get('picks', [])
+    if len(picks) != 1 or not picks[0]['lines']:
+        problems.append(f'one pick with its values expected, got {picks}')
+    else:
+        p = picks[0]
+        m = subprocess.run([args.measure, fpk, '--face', str(p['face']), '--json'], capture_output=True, text=True)
+        g = json.loads(m.stdout)['faces'][0]
+        line = p['lines'][0]
+        want = {'plane': f'offset {g["offset"]:.3f}', 'cylinder': f'D {2 * g["radius"]:.3f}', 'cone': f'R {g["radius"]:.3f}',
+                'sphere': f'R {g["radius"]:.3f}', 'torus': f'R {g["radius"]:.3f}',
+                'B-spline': f'degree {g["u_degree"]} x {g["v_degree"]}  {g["u_poles"]} x {g["v_poles"]} poles'}.get(g['type'])
+        if not line.startswith(f'#{p["face"]} ') or (want and want not in line):
+            problems.append(f'the board says {line!r}; facet-measure: {g["type"]} ({want})')
+        else:
+            print(f'picked face {p["face"]}: {line!r} (facet-measure agrees)')
+    # Every frame of the session within the frame budget.
+    uart = open(os.path.join(dev, 'uart.log')).read() if os.path.exists(os.path.join(dev, 'uart.log')) else ''
+    _, frames = analyse(uart, rep.get('regions', []))
+    over = [f for f in frames if f['instructions'] and f['instructions'] > frame_budget(f['triangles'])]
+    if not frames or over:
+        problems.append(f'{len(frames)} frames, {len(over)} over the frame budget')
+    else:
+        print(f'{len(frames)} frames, the largest {max(f["instructions"] for f in frames):,} instructions, all within budget')
+    for p in problems:
+        print('FAIL', p)
+    return 1 if problems else 0
+
+
+if __name__ == '__main__':
+    sys.exit(main())
