@@ -297,11 +297,16 @@ Result refine(const Pack& pack, uint32_t fi, const TessOptions& opt, const Grid&
             st.inserting = true;
             continue;
         }
-        // Then a point into every triangle (of those at the round's start) above the threshold.
-        for (; st.next < st.triangles && spent < units; ++st.next) {
+        // Then a point into every triangle (of those at the round's start) above the threshold;
+        // the ones looked at and passed over count too (a unit per 16, as in the round above).
+        uint32_t passed = 0;
+        for (; st.next < st.triangles && spent + passed / 16 < units; ++st.next) {
             const Tri& T = cdt.triangle(uint16_t(st.next));
             TriangleMeasure& m = sc.measured[st.next];
-            if (!T.inner() || m.key != key_of(T) || m.error2 <= st.threshold) continue; // changed since measured
+            if (!T.inner() || m.key != key_of(T) || m.error2 <= st.threshold) { // changed since measured
+                ++passed;
+                continue;
+            }
             spent += insert_cost;
             const uint16_t from = T.v[0];
             // Never onto a vertex or a constrained edge (that would split a loop's edge in this
@@ -341,6 +346,7 @@ Result refine(const Pack& pack, uint32_t fi, const TessOptions& opt, const Grid&
             sc.mesh_of[v] = st.total++;
             ++st.added;
         }
+        spent += passed / 16;
         if (st.next < st.triangles) return busy;
         if (!st.added) return {};
         if (!ok(cdt.mark_inner())) return Result::fail(Status::Degenerate, "refinement broke the loops");

@@ -248,7 +248,7 @@ Result Core::load(const void* file, uint32_t file_bytes, void* memory, uint32_t 
     camera_.fit();
     user_moved_ = false;
     picked_count_ = 0;
-    painter_.set_highlight(~0u, ~0u, ~0u, ~0u);
+    highlight();
     presenter_.overlay().set_lines(nullptr, 0);
     Event e{};
     e.kind = Event::Kind::Loaded;
@@ -385,7 +385,7 @@ void Core::act(Action a) {
         presenter_.overlay().set_measuring(!presenter_.overlay().measuring());
         if (picked_count_ > 1) picked_count_ = 1; // measuring starts from the face picked, if any
         show_measurement();
-        painter_.set_highlight(picked_count_ ? picked_[0].face : ~0u, picked_count_ ? picked_[0].instance : ~0u, ~0u, ~0u);
+        highlight();
         presenter_.invalidate();
         return;
     case Action::Help:

@@ -37,7 +37,7 @@ public:
     // instructions on the ARM926) and a face's (geom::FaceJob units: about five thousand).
     // A piece is then about a million instructions: under 2 ms at 600 MHz.
     static constexpr uint32_t kFrameUnits = 600;
-    static constexpr uint32_t kTessUnits = 200;
+    static constexpr uint32_t kTessUnits = 160;
 
     module::Controls& controls() { return controls_; }
     // For tests of the parts behind the public API (the fitted view of every model).
@@ -93,6 +93,7 @@ private:
     uint32_t picked_count_ = 0;
     uint8_t next_view_ = 0; // the toolbar's VIEW button: the next standard view
     void picked(const Event& e); // a pick: highlight, measure, the panel
+    void highlight();            // the painter's highlight from picked_
     void show_measurement();
     // Double tap: the last tap's place and time (without a clock: a second tap on the same spot).
     int16_t tap_x_ = -1000, tap_y_ = -1000;

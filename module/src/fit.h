@@ -24,9 +24,9 @@ struct Outline {
 
 class Framer {
 public:
-    static constexpr uint32_t kPointsPerUnit = 8; // a unit: about 8 projected points
+    static constexpr uint32_t kPointsPerUnit = 4; // a unit: about 4 projected points (~250 instructions each on the ARM926)
     static constexpr int kRounds = 8;
-    static constexpr float kFill = 0.85f;
+    static constexpr float kFill = 0.85f; // of the free area
 
     // Frame the whole model (face = ~0u) or one face of one instance, on a width x height screen.
     void start(uint16_t width, uint16_t height, FreeArea taken, uint32_t instance = ~0u, uint32_t face = ~0u, float fill = kFill);

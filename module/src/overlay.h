@@ -12,9 +12,6 @@
 
 namespace facet::module {
 
-// n pixels of one colour from p (word stores).
-void fill(hal::Rgb565* p, uint32_t n, hal::Rgb565 colour);
-
 // Pixels the overlay takes at each side of the screen (the model is framed in the rest).
 struct FreeArea {
     int16_t left = 0, top = 0, right = 0, bottom = 0;

@@ -1,6 +1,7 @@
 #include "painter.h"
 
 #include "render/fixed.h"
+#include "render/text.h"
 
 namespace facet::module {
 namespace {
@@ -9,8 +10,8 @@ constexpr uint16_t kLineBias = 384; // depth units edges are pulled toward the e
 constexpr hal::Rgb565 kEdgeColour = hal::rgb565(28, 30, 38);
 constexpr uint32_t kNoColour = 0xFF000000u; // no palette in the slot (colours are 24-bit)
 constexpr uint32_t kPaper = 0x00FFFFFFu;    // hidden-line faces: white
-constexpr uint32_t kPicked = 0x0040E060u;   // the picked face (B, G, R bytes: green)
-constexpr uint32_t kPicked2 = 0x00F060C0u;  // the second one (measuring: violet)
+constexpr uint32_t kPicked = 0x00C830FFu;   // the picked face (B, G, R bytes: magenta, rare in CAD colours)
+constexpr uint32_t kPicked2 = 0x00FFD020u;  // the second one (measuring: cyan)
 
 // X / d for d >= 1, to about 2^-15 relative, without dividing (render/fixed.h).
 inline int32_t divide(int64_t x, int32_t d) { return render::divide(x, render::reciprocal(uint32_t(d))); }
@@ -48,7 +49,7 @@ void Painter::background() {
     const int32_t dr = (80 << 16) / rows, dg = (78 << 16) / rows, db = (64 << 16) / rows;
     int32_t r = (214 << 16) - int32_t(t.y0) * dr, g = (222 << 16) - int32_t(t.y0) * dg, b = (234 << 16) - int32_t(t.y0) * db;
     for (int32_t y = t.y0; y < t.y0 + t.rows; ++y, r -= dr, g -= dg, b -= db) {
-        fill(t.row(y), t.width, hal::rgb565(uint8_t(r >> 16), uint8_t(g >> 16), uint8_t(b >> 16)));
+        render::fill_pixels(t.row(y), t.width, hal::rgb565(uint8_t(r >> 16), uint8_t(g >> 16), uint8_t(b >> 16)));
     }
 }
 

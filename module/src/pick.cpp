@@ -40,10 +40,14 @@ void Core::picked(const Event& e) {
         picked_[0] = {e.pick.face, e.pick.instance};
         picked_count_ = 1;
     }
-    painter_.set_highlight(picked_count_ > 0 ? picked_[0].face : ~0u, picked_count_ > 0 ? picked_[0].instance : ~0u,
-                           picked_count_ > 1 ? picked_[1].face : ~0u, picked_count_ > 1 ? picked_[1].instance : ~0u);
+    highlight();
     show_measurement();
     presenter_.invalidate();
+}
+
+void Core::highlight() {
+    painter_.set_highlight(picked_count_ > 0 ? picked_[0].face : ~0u, picked_count_ > 0 ? picked_[0].instance : ~0u,
+                           picked_count_ > 1 ? picked_[1].face : ~0u, picked_count_ > 1 ? picked_[1].instance : ~0u);
 }
 
 void Core::show_measurement() {

@@ -225,8 +225,10 @@ void Presenter::run_piece(uint32_t units, uint32_t pass) {
         job_.face = job_.full ? 0 : buf_[job_.buffer].applied;
         job_.tri = 0;
         job_.have_transform = false;
-        const uint32_t spent = 1 + uint32_t(raster_.target().rows) * display_.width / 2048;
-        if (spent >= units) return;
+        // Clearing a band costs about an instruction a pixel (colour and depth): a whole
+        // 640x480 frame is 0.4 M on the ARM926, a piece of its own (a piece stays near 1 M).
+        const uint32_t spent = 1 + uint32_t(raster_.target().rows) * display_.width / 1024;
+        if (spent * 2 >= units) return;
         units -= spent;
     }
     if (job_.stage == Job::Stage::Faces || job_.stage == Job::Stage::Edges) {

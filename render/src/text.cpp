@@ -18,6 +18,18 @@ bool clip(const Target& t, int32_t& x, int32_t& y, int32_t& w, int32_t& h) {
 
 } // namespace
 
+void fill_pixels(hal::Rgb565* p, uint32_t n, hal::Rgb565 c) {
+    // Two pixels per word store, eight words per round: the odd pixel at each end on its own.
+    using Pair = uint32_t __attribute__((may_alias, aligned(4)));
+    if ((reinterpret_cast<uintptr_t>(p) & 2) && n) *p++ = c, --n;
+    Pair* w = reinterpret_cast<Pair*>(p);
+    const uint32_t pair = uint32_t(c) * 0x00010001u;
+    uint32_t words = n / 2;
+    for (; words >= 8; words -= 8, w += 8) w[0] = w[1] = w[2] = w[3] = w[4] = w[5] = w[6] = w[7] = pair;
+    while (words--) *w++ = pair;
+    if (n & 1) *reinterpret_cast<hal::Rgb565*>(w) = c;
+}
+
 int32_t text_width(const char* text, int32_t scale) {
     int32_t n = 0;
     while (text[n]) ++n;
@@ -51,10 +63,7 @@ int32_t draw_text(const Target& t, int32_t x, int32_t y, const char* text, hal::
 
 void fill_rect(const Target& t, int32_t x, int32_t y, int32_t w, int32_t h, hal::Rgb565 colour) {
     if (!clip(t, x, y, w, h)) return;
-    for (int32_t r = y; r < y + h; ++r) {
-        hal::Rgb565* p = t.row(r) + x;
-        for (int32_t i = 0; i < w; ++i) p[i] = colour;
-    }
+    for (int32_t r = y; r < y + h; ++r) fill_pixels(t.row(r) + x, uint32_t(w), colour);
 }
 
 void dim_rect(const Target& t, int32_t x, int32_t y, int32_t w, int32_t h, hal::Rgb565 colour) {

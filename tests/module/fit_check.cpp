@@ -30,10 +30,10 @@ struct Fit {
     std::string why;
 };
 
-// The viewer frames the outline to fill 85% (module/src/fit.h, within 2% once it sits; faces
+// The viewer frames the outline to fill Framer::kFill (module/src/fit.h, within 2% once it sits; faces
 // that bulge past their edges can add a little) and centres it within a pixel.
 constexpr double kCentreSlack = 0.02; // box centre within 2% of the short side of the screen centre
-constexpr double kMinFill = 0.80, kMaxFill = 0.92; // the box's larger extent over the screen's
+constexpr double kMinFill = module::Framer::kFill - 0.05, kMaxFill = module::Framer::kFill + 0.07; // the box's larger extent over the area's
 
 void flush(void*, const Area&, const Rgb565*) {}
 
@@ -100,7 +100,7 @@ Fit check(const std::vector<uint8_t>& file, Screen s) {
         std::snprintf(buf, sizeof buf, "off-centre by (%.0f, %.0f) pixels", cx, cy);
         fit.ok = false, fit.why = buf;
     } else if (fill < kMinFill || fill > kMaxFill) {
-        std::snprintf(buf, sizeof buf, "fills %.0f%% of the screen (framed: 85%%)", 100 * fill);
+        std::snprintf(buf, sizeof buf, "fills %.0f%% of the area (framed: %.0f%%)", 100 * fill, 100.0 * module::Framer::kFill);
         fit.ok = false, fit.why = buf;
     }
     return fit;

@@ -432,11 +432,11 @@ TEST(Viewer, AnAssemblyIsFramedWhereItsInstancesPlaceItsParts) {
             l = std::min(l, p.s.x), r = std::max(r, p.s.x), t = std::min(t, p.s.y), b = std::max(b, p.s.y);
         }
     }
-    // In pixels: centred within a pixel and a half, the larger side filling 85% (within 2%).
+    // In pixels: centred within a pixel and a half, the larger side filling Framer::kFill (within 2%).
     EXPECT_NEAR((l + r) / 32.0, app.w / 2.0, 1.5);
     EXPECT_NEAR((t + b) / 32.0, app.h / 2.0, 1.5);
     const double fill = std::max((r - l) / 16.0 / app.w, (b - t) / 16.0 / app.h);
-    EXPECT_NEAR(fill, 0.85, 0.02);
+    EXPECT_NEAR(fill, module::Framer::kFill, 0.02);
     // A tap in the middle lands on the model.
     app.v->touch(0, int16_t(app.w / 2), int16_t(app.h / 2), true);
     app.v->touch(0, int16_t(app.w / 2), int16_t(app.h / 2), false);
@@ -470,10 +470,10 @@ TEST(Viewer, StandardViewsGlideAndADoubleTapFramesAFace) {
     const auto end = app.last(Event::Kind::ViewChanged)->view;
     EXPECT_NEAR(end.yaw_deg, 0, 0.01);
     EXPECT_NEAR(end.pitch_deg, 0, 0.01);
-    // Framed from the top: the polygon (radius 100) and the triangle (to x = 140) fill 85% of
+    // Framed from the top: the polygon (radius 100) and the triangle (to x = 140) fill Framer::kFill of
     // the screen's height (240 x 200 mm on a 160 x 120 screen: the height is the tighter).
     const auto a = outline(0), t = outline(1);
-    EXPECT_NEAR((std::max(a[3], t[3]) - std::min(a[1], t[1])) / app.h, 0.85, 0.02);
+    EXPECT_NEAR((std::max(a[3], t[3]) - std::min(a[1], t[1])) / app.h, module::Framer::kFill, 0.02);
     // From the top the polygon is a circle on the screen (width = height).
     EXPECT_NEAR(a[2] - a[0], a[3] - a[1], 1.0);
     // Parallel projection on: the view is framed again, the circle stays round.

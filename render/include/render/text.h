@@ -12,6 +12,9 @@ namespace facet::render {
 constexpr int32_t kGlyphWidth = 5, kGlyphHeight = 8; // pixels of a glyph (row 7: descenders)
 constexpr int32_t kCellWidth = 6, kLineHeight = 10;  // a character's advance, a line's
 
+// n pixels of one colour from p (two a word store).
+void fill_pixels(hal::Rgb565* p, uint32_t n, hal::Rgb565 colour);
+
 // The text's width in pixels at `scale` (1 or more: each font pixel scale x scale).
 int32_t text_width(const char* text, int32_t scale = 1);
 // Draws `text` with its top-left corner at (x, y) in `colour`; characters outside 32-126 are
