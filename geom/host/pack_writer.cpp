@@ -40,6 +40,38 @@ uint32_t PackWriter::add_instance(const Instance& i) { instances_.push_back(i); 
 uint32_t PackWriter::add_colour(Colour c) { colours_.push_back(c); return uint32_t(colours_.size() - 1); }
 
 namespace {
+std::string cut_name(const std::string& name) {
+    if (name.size() <= kMaxNameBytes) return name;
+    size_t n = kMaxNameBytes;
+    while (n > 0 && (uint8_t(name[n]) & 0xC0) == 0x80) --n; // not inside a UTF-8 character
+    return name.substr(0, n);
+}
+} // namespace
+
+uint32_t PackWriter::add_name(const std::string& name) {
+    const std::string s = cut_name(name);
+    if (s.empty()) return kNoIndex;
+    const auto [it, added] = name_at_.try_emplace(s, uint32_t(names_.size()));
+    if (added) {
+        names_.insert(names_.end(), s.begin(), s.end());
+        names_.push_back(0);
+    }
+    return it->second;
+}
+
+void PackWriter::set_model_name(const std::string& name) { model_name_ = cut_name(name); }
+
+void PackWriter::name_shell(uint32_t shell, const std::string& name) {
+    if (shell_names_.size() <= shell) shell_names_.resize(shell + 1, kNoIndex);
+    shell_names_[shell] = add_name(name);
+}
+
+void PackWriter::name_instance(uint32_t instance, const std::string& name) {
+    if (instance_names_.size() <= instance) instance_names_.resize(instance + 1, kNoIndex);
+    instance_names_[instance] = add_name(name);
+}
+
+namespace {
 template <typename T>
 void append_section(std::vector<uint8_t>& out, std::vector<SectionEntry>& table, SectionId id,
                     const std::vector<T>& records) {
@@ -52,7 +84,8 @@ void append_section(std::vector<uint8_t>& out, std::vector<SectionEntry>& table,
 } // namespace
 
 std::vector<uint8_t> PackWriter::finish() const {
-    constexpr uint32_t kSections = 12;
+    const bool named = !names_.empty() || !model_name_.empty();
+    const uint32_t kSections = named ? 15 : 12;
     std::vector<uint8_t> out(sizeof(Header) + kSections * sizeof(SectionEntry));
     std::vector<SectionEntry> table;
     append_section(out, table, SectionId::Floats, floats_);
@@ -67,6 +100,23 @@ std::vector<uint8_t> PackWriter::finish() const {
     append_section(out, table, SectionId::Shells, shells_);
     append_section(out, table, SectionId::Instances, instances_);
     append_section(out, table, SectionId::Colours, colours_);
+    if (named) {
+        // The pool: the model's name first, then the others (their offsets move behind it).
+        const uint32_t shift = uint32_t(model_name_.size() + 1);
+        std::vector<uint32_t> shells = shell_names_, instances = instance_names_;
+        shells.resize(shells_.size(), kNoIndex);
+        instances.resize(instances_.size(), kNoIndex);
+        for (auto* t : {&shells, &instances})
+            for (uint32_t& v : *t)
+                if (v != kNoIndex) v += shift;
+        append_section(out, table, SectionId::ShellNames, shells);
+        append_section(out, table, SectionId::InstanceNames, instances);
+        std::vector<char> pool(model_name_.begin(), model_name_.end());
+        pool.push_back(0);
+        pool.insert(pool.end(), names_.begin(), names_.end());
+        pool.resize((pool.size() + 3) & ~size_t(3), 0);
+        append_section(out, table, SectionId::Names, pool);
+    }
     std::memcpy(out.data() + sizeof(Header), table.data(), table.size() * sizeof(SectionEntry));
 
     Header h{};

@@ -26,6 +26,11 @@ public:
     uint32_t add_shell(const pack::Shell& s);
     uint32_t add_instance(const pack::Instance& i);
     uint32_t add_colour(pack::Colour c);
+    // Names (UTF-8; "" leaves the record unnamed; cut at pack::kMaxNameBytes on a character
+    // boundary). The Names sections are written only when something is named.
+    void set_model_name(const std::string& name);
+    void name_shell(uint32_t shell, const std::string& name);
+    void name_instance(uint32_t instance, const std::string& name);
 
     uint32_t coedge_count() const { return uint32_t(coedges_.size()); }
     uint32_t curve2_count() const { return uint32_t(curves2_.size()); }
@@ -51,6 +56,11 @@ private:
     std::vector<pack::Shell> shells_;
     std::vector<pack::Instance> instances_;
     std::vector<pack::Colour> colours_;
+    uint32_t add_name(const std::string& name);
+    std::string model_name_;
+    std::vector<char> names_; // the other names (the pool puts the model's first)
+    std::map<std::string, uint32_t> name_at_;
+    std::vector<uint32_t> shell_names_, instance_names_;
     float unit_mm_ = 1.0f;
 };
 

@@ -89,7 +89,8 @@ uint32_t surface_param_count(uint8_t type, const float* p, uint32_t avail) {
 
 const char* section_name(uint32_t id) {
     static const char* const names[] = {"header", "Floats", "Surfaces", "Curves3", "Curves2", "Vertices", "Edges",
-                                        "Coedges", "Loops", "Faces", "Shells", "Instances", "Colours"};
+                                        "Coedges", "Loops", "Faces", "Shells", "Instances", "Colours",
+                                        "Names", "ShellNames", "InstanceNames"};
     return id < sizeof names / sizeof names[0] ? names[id] : "unknown";
 }
 
@@ -98,7 +99,8 @@ Place section_place(uint32_t id, uint32_t index) {
                                         "section Curves3 record", "section Curves2 record", "section Vertices record",
                                         "section Edges record", "section Coedges record", "section Loops record",
                                         "section Faces record", "section Shells record", "section Instances record",
-                                        "section Colours record"};
+                                        "section Colours record", "section Names byte", "section ShellNames record",
+                                        "section InstanceNames record"};
     if (id == 0) return {kinds[0]};
     return {id < sizeof kinds / sizeof kinds[0] ? kinds[id] : "section record", index};
 }
@@ -139,11 +141,12 @@ Result Pack::open(const void* data, uint32_t size) {
     for (uint32_t i = 0; i < h->section_count; ++i) {
         const SectionEntry& s = table[i];
         const uint32_t id = s.id;
-        if (id < 1 || id > uint32_t(SectionId::Colours)) continue; // unknown sections are skipped
+        if (id < 1 || id > uint32_t(SectionId::InstanceNames)) continue; // unknown sections are skipped
         if (seen & (1u << id)) return fail("section appears twice", id, 0);
         seen |= 1u << id;
         static const uint32_t sizes[] = {0, 4, sizeof(Surface), sizeof(Curve), sizeof(Curve), sizeof(Vertex), sizeof(Edge),
-                                         sizeof(Coedge), sizeof(Loop), sizeof(pack::Face), sizeof(Shell), sizeof(Instance), sizeof(Colour)};
+                                         sizeof(Coedge), sizeof(Loop), sizeof(pack::Face), sizeof(Shell), sizeof(Instance), sizeof(Colour),
+                                         1, 4, 4};
         if (s.record_bytes != sizes[id]) return fail("record size does not match this reader", id, 0);
         if (s.offset & 3) return fail("section offset is not 4-byte aligned", id, 0);
         if (s.offset < table_end || uint64_t(s.offset) + uint64_t(s.count) * s.record_bytes > size) {
@@ -163,10 +166,35 @@ Result Pack::open(const void* data, uint32_t size) {
         case SectionId::Shells: shells_ = {reinterpret_cast<const Shell*>(at), s.count}; break;
         case SectionId::Instances: instances_ = {reinterpret_cast<const Instance*>(at), s.count}; break;
         case SectionId::Colours: colours_ = {reinterpret_cast<const Colour*>(at), s.count}; break;
+        case SectionId::Names: names_ = {reinterpret_cast<const char*>(at), s.count}; break;
+        case SectionId::ShellNames: shell_names_ = {reinterpret_cast<const uint32_t*>(at), s.count}; break;
+        case SectionId::InstanceNames: instance_names_ = {reinterpret_cast<const uint32_t*>(at), s.count}; break;
         }
     }
     header_ = h;
-    return check_records();
+    if (Result r = check_records(); !r.ok()) return r;
+    return check_names();
+}
+
+Result Pack::check_names() {
+    constexpr uint32_t N = uint32_t(SectionId::Names);
+    if (!names_.empty() && names_.back() != 0) return fail("the last name is not ended by a 0 byte", N, uint32_t(names_.size() - 1));
+    if (names_.size() & 3) return fail("not padded to a multiple of 4 bytes", N, 0);
+    // Every name starts at the pool's start or after a 0 byte, so it ends within the pool.
+    auto bad = [&](uint32_t at) { return at != kNoIndex && (at >= names_.size() || (at > 0 && names_[at - 1] != 0)); };
+    const struct {
+        std::span<const uint32_t> table;
+        size_t count;
+        SectionId id;
+    } tables[] = {{shell_names_, shells_.size(), SectionId::ShellNames}, {instance_names_, instances_.size(), SectionId::InstanceNames}};
+    for (const auto& t : tables) {
+        if (t.table.empty()) continue;
+        if (t.table.size() != t.count) return fail("one name per record of its section is needed", uint32_t(t.id), 0);
+        for (uint32_t i = 0; i < t.table.size(); ++i) {
+            if (bad(t.table[i])) return fail("the name does not start a string of Names", uint32_t(t.id), i);
+        }
+    }
+    return {};
 }
 
 Result Pack::check_records() {

@@ -94,6 +94,19 @@ Transform Camera::transform(const Scene& scene, uint32_t index, uint16_t width, 
     in.zk = (int64_t(65535) << 16) / (far - in.near > 1 ? far - in.near : 1);
     in.ortho = view_.ortho;
     if (in.ortho) in.ortho_r = render::reciprocal(uint32_t(in.dist));
+    if (section_.on) {
+        // View space is v = v_per_mm (R (W - centre) + pan), depth d = dist - v_z; the plane
+        // n . W = offset in it: (R n) . v / v_per_mm - (R n) . pan + n . centre - offset.
+        const float* n = section_.n;
+        float r[3];
+        for (int i = 0; i < 3; ++i) r[i] = R[3 * i] * n[0] + R[3 * i + 1] * n[1] + R[3 * i + 2] * n[2];
+        constexpr float Q = 16384.0f;
+        const float at = n[0] * centre[0] + n[1] * centre[1] + n[2] * centre[2] - section_.offset - r[0] * pan[0] - r[1] * pan[1];
+        in.cut.on = true;
+        in.cut.nx = round_to_int(Q * r[0]), in.cut.ny = round_to_int(Q * r[1]), in.cut.nd = round_to_int(-Q * r[2]);
+        const double c = double(Q) * (double(r[2]) * in.dist + double(v_per_mm) * at);
+        in.cut.c = int64_t(c + (c >= 0 ? 0.5 : -0.5));
+    }
     return in;
 }
 

@@ -19,12 +19,28 @@ struct Projected {
     render::ScreenVertex s;
     uint8_t out; // bit 0: behind the near plane; bit 1: beyond the guard band
 };
-constexpr uint8_t kOutNear = 1, kOutGuard = 2;
+constexpr uint8_t kOutNear = 1, kOutGuard = 2, kOutCut = 4; // kOutCut: on the side a section cuts away (drawing only)
 
 // Rows of the screen being drawn, as distances from the screen's centre (28.4 sub-pixels):
 // the view volume's top and bottom sides for culling. The whole screen: both cy16.
 struct Rows {
     int32_t top16, bottom16;
+};
+
+// The section plane in camera space: side() > 0 on the side cut away. Q14 normal, values in
+// units of a view unit / 2^14 (exact integers per vertex; the same plane for every instance).
+struct CutPlane {
+    bool on = false;
+    int32_t nx = 0, ny = 0, nd = 0;
+    int64_t c = 0;
+    int64_t side(int32_t x, int32_t y, int32_t d) const { return int64_t(nx) * x + int64_t(ny) * y + int64_t(nd) * d + c; }
+};
+
+// A section: the plane n . p = offset (mm, placed model), the side n points to cut away.
+struct Section {
+    bool on = false;
+    float n[3] = {1, 0, 0};
+    float offset = 0;
 };
 
 // One instance under the camera: view = (a P >> 30) + b (a: rotation x scale; 2^26 when the
@@ -40,6 +56,7 @@ struct Transform {
     int32_t dist, near, f16, cx16, cy16, guard;
     int64_t zk; // depth scale: z16 = (d - near) * zk >> 16
     render::Reciprocal ortho_r; // of dist (ortho)
+    CutPlane cut;
 
     // The rotation part applied to v, before the shift (the one place the 3x3 product is written).
     void rotate(const int32_t v[3], int64_t out[3]) const {
@@ -110,6 +127,8 @@ public:
     const View& view() const { return view_; }
     void set_view(const View& v) { view_ = v; }
     void toggle_projection() { view_.ortho = !view_.ortho; }
+    const Section& section() const { return section_; }
+    void set_section(const Section& s) { section_ = s; }
     // Orbit by angles (rad), dolly by a factor (< 1: closer; kept within 0.05 and 20), pan by
     // millimetres, or by screen pixels (the model's centre follows the pointer).
     void orbit(float d_yaw, float d_pitch);
@@ -122,6 +141,7 @@ public:
 
 private:
     View view_;
+    Section section_;
 };
 
 } // namespace facet::module

@@ -21,7 +21,12 @@ constexpr KeyBinding kKeys[] = {
     {'3', Action::ViewRight, "right view"},  {'4', Action::ViewLeft, "left view"},
     {'7', Action::ViewTop, "top view"},      {'8', Action::ViewBottom, "bottom view"},
     {'0', Action::ViewIso, "isometric view"}, {'5', Action::Projection, "perspective / parallel"},
-    {'m', Action::NextDisplayMode, "display mode: shaded + edges, shaded, wireframe, hidden line"},
+    {'m', Action::NextDisplayMode, "display mode: shaded + edges, shaded, wireframe, hidden line, see-through"},
+    {'c', Action::Section, "section: picked plane, x, y, z, off"},
+    {',', Action::SectionIn, "move the section back"}, {'.', Action::SectionOut, "move the section forward"},
+    {'p', Action::Parts, "the parts list"},  {'n', Action::NextPart, "choose the next part"},
+    {'h', Action::HidePart, "hide the chosen part"}, {'o', Action::IsolatePart, "show the chosen part alone"},
+    {'u', Action::ShowAllParts, "show every part"}, {'g', Action::NextDetail, "level of detail: finer, finest, coarser"},
 };
 
 int32_t distance(int32_t dx, int32_t dy) { return int32_t(std::sqrt(float(dx * dx + dy * dy)) + 0.5f); }
@@ -57,6 +62,15 @@ Command Controls::pointer(int16_t dx, int16_t dy, uint8_t buttons) {
     travel_ += (dx < 0 ? -dx : dx) + (dy < 0 ? -dy : dy);
     const uint8_t held = buttons & buttons_; // motion counts for the buttons held throughout
     buttons_ = buttons;
+    if ((pressed & 1) && on_slider(cursor_x_, cursor_y_)) sliding_ = true;
+    if (sliding_) { // the left button went down on the section slider: the plane follows
+        if (!(buttons & 1)) sliding_ = false;
+        if ((pressed & 1) || ((held & 1) && dy)) {
+            c.kind = Command::Kind::Slide;
+            c.y = int16_t(cursor_y_);
+        }
+        return c;
+    }
     if ((released & 1) && travel_ <= kTapSlop && !(dx | dy)) {
         c.kind = Command::Kind::Pick;
         c.x = int16_t(cursor_x_), c.y = int16_t(cursor_y_);
@@ -93,7 +107,23 @@ uint32_t Controls::touch(uint8_t id, int16_t x, int16_t y, bool down, Command ou
         f = {true, x, y, x, y, false};
         if (other.down) pinched_ = true;
         else pinched_ = false;
+        if (!other.down && on_slider(x, y)) { // on the section slider: the plane follows the finger
+            sliding_ = true;
+            out[n].kind = Command::Kind::Slide;
+            out[n].y = y;
+            return ++n;
+        }
         return 0;
+    }
+    if (sliding_) {
+        if (!down) sliding_ = false, f.down = false;
+        else if (y != f.y) {
+            f.x = x, f.y = y;
+            out[n].kind = Command::Kind::Slide;
+            out[n].y = y;
+            ++n;
+        }
+        return n;
     }
     if (!down) { // lifted
         const bool tap = f.down && !f.moved && !pinched_ && !other.down;

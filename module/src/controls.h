@@ -3,19 +3,21 @@
 // fingers decided here, so every application gets the same handling:
 //   left drag / one finger: orbit     right drag / two fingers moving together: pan
 //   middle drag, wheel / pinch: dolly click / tap (no motion between down and up): pick
+//   a drag that starts on the section slider: slide (the plane follows the finger)
 #include "facet/viewer.h"
+#include "overlay.h"
 
 #include <cstdint>
 
 namespace facet::module {
 
 struct Command {
-    enum class Kind : uint8_t { None, Act, Orbit, Pan, Dolly, Pick } kind = Kind::None;
+    enum class Kind : uint8_t { None, Act, Orbit, Pan, Dolly, Pick, Slide } kind = Kind::None;
     Action action = Action::None; // Act
     float yaw = 0, pitch = 0;     // Orbit: rad
     int16_t dx = 0, dy = 0;       // Pan: screen pixels
     float factor = 1;             // Dolly: < 1 closer
-    int16_t x = 0, y = 0;         // Pick: the screen pixel
+    int16_t x = 0, y = 0;         // Pick: the screen pixel; Slide: the row
 };
 
 class Controls {
@@ -24,6 +26,7 @@ public:
     static constexpr int32_t kTapSlop = 6;             // pixels a tap may wander
 
     void set_screen(uint16_t width, uint16_t height);
+    void set_overlay(const Overlay* overlay) { overlay_ = overlay; } // where the slider is
     Command key(uint32_t key) const;
     Command pointer(int16_t dx, int16_t dy, uint8_t buttons);
     Command wheel(int16_t clicks) const;
@@ -43,6 +46,9 @@ private:
     int32_t travel_ = 0;                  // pixels moved since a button went down
     Finger fingers_[2];
     bool pinched_ = false;                // two fingers were down in this touch (no tap then)
+    const Overlay* overlay_ = nullptr;
+    bool sliding_ = false;                // the left button or finger 0 went down on the slider
+    bool on_slider(int32_t x, int32_t y) const { return overlay_ && overlay_->slider().contains(x, y); }
 };
 
 } // namespace facet::module

@@ -127,6 +127,8 @@ Core::Core(const Config& config, Carver& k)
     painter_.init({a.projected, a.edge_drawn, a.palettes, a.palette_rgb});
     projected_ = a.projected;
     controls_.set_screen(config.display.width, config.display.height);
+    controls_.set_overlay(&presenter_.overlay());
+    presenter_.overlay().set_scene(&scene_);
 }
 
 Viewer* Viewer::create(const Config& config, void* workspace, size_t bytes, Result* why) {
@@ -248,6 +250,11 @@ Result Core::load(const void* file, uint32_t file_bytes, void* memory, uint32_t 
     camera_.fit();
     user_moved_ = false;
     picked_count_ = 0;
+    chosen_part_ = ~0u;
+    camera_.set_section({});
+    section_kind_ = 0;
+    presenter_.overlay().set_slider(false, 0.5f);
+    presenter_.overlay().set_chosen(~0u);
     highlight();
     presenter_.overlay().set_lines(nullptr, 0);
     Event e{};
@@ -331,6 +338,7 @@ void Core::command(const module::Command& c) {
     case Kind::Pan: camera_.pan_pixels(c.dx, c.dy, scene_.radius(), d.width, d.height); break;
     case Kind::Dolly: camera_.dolly(c.factor); break;
     case Kind::Pick: pick(c.x, c.y); return;
+    case Kind::Slide: section_slide(c.y); return;
     }
     view_changed();
 }
@@ -372,7 +380,15 @@ void Core::act(Action a) {
     case Action::ViewTop: glide_to(module::standard_view(module::Standard::Top, camera_.view())); return;
     case Action::ViewBottom: glide_to(module::standard_view(module::Standard::Bottom, camera_.view())); return;
     case Action::ViewIso: glide_to(module::standard_view(module::Standard::Iso, camera_.view())); return;
-    case Action::NextDisplayMode: set_mode(DisplayMode((uint8_t(painter_.mode()) + 1) % 4)); return;
+    case Action::NextDisplayMode: set_mode(DisplayMode((uint8_t(painter_.mode()) + 1) % 5)); return;
+    case Action::Section:
+    case Action::SectionIn:
+    case Action::SectionOut:
+    case Action::Parts:
+    case Action::NextPart:
+    case Action::HidePart:
+    case Action::IsolatePart:
+    case Action::ShowAllParts: tool(a); return;
     case Action::NextView: {
         static constexpr module::Standard kOrder[] = {module::Standard::Iso,  module::Standard::Front, module::Standard::Right,
                                                       module::Standard::Top,  module::Standard::Back,  module::Standard::Left,
@@ -399,8 +415,13 @@ void Core::act(Action a) {
         return;
     }
     case Action::Coarser:
-    case Action::Finer: {
-        const float t = a == Action::Coarser ? scheduler_.tolerance() * 2 : scheduler_.tolerance() * 0.5f;
+    case Action::Finer:
+    case Action::NextDetail: {
+        float t = a == Action::Coarser ? scheduler_.tolerance() * 2 : scheduler_.tolerance() * 0.5f;
+        if (a == Action::NextDetail) { // x1 -> x1/2 -> x1/4 -> x2 -> x1
+            const float r = scheduler_.tolerance() / default_tolerance_;
+            t = default_tolerance_ * (r > 0.99f && r < 1.01f ? 0.5f : r > 0.49f && r < 0.51f ? 0.25f : r > 0.24f && r < 0.26f ? 2.0f : 1.0f);
+        }
         if (t > default_tolerance_ * 16.01f || t < default_tolerance_ / 8.01f) return; // at its limit
         scheduler_.begin_pass(t);
         return;

@@ -45,6 +45,17 @@ public:
     const module::Scene& scene() const { return scene_; }
     const module::Overlay& overlay() const { return presenter_.overlay(); }
 
+    // Tools (tools.cpp): the section plane and the parts.
+    void tool(Action a);
+    Result show(uint32_t part, bool shown);
+    void choose(uint32_t part);
+    uint32_t chosen_part() const { return chosen_part_; }
+    void set_section(const module::Section& s) {
+        camera_.set_section(s);
+        section_kind_ = s.on ? 4 : 0; // the cycle goes on from here to off
+        section_changed();
+    }
+
 private:
     static void relay(void* self, const Event& e); // the parts' events: act on some, pass all on
     void emit(const Event& e) const { if (config_.on_event) config_.on_event(config_.event_user, e); }
@@ -95,6 +106,15 @@ private:
     void picked(const Event& e); // a pick: highlight, measure, the panel
     void highlight();            // the painter's highlight from picked_
     void show_measurement();
+    void focus(); // the painter's chosen part and see-through focus
+    void section_next();
+    void section_move(float fraction);
+    void section_slide(int16_t y);
+    void section_changed();
+    void section_range(const module::Section& s, float& lo, float& hi) const;
+    bool tap_parts(int16_t x, int16_t y); // a tap on the parts list (true: it was the list's)
+    uint32_t chosen_part_ = ~0u;
+    uint8_t section_kind_ = 0; // 0 off, 1 the picked plane, 2 x, 3 y, 4 z (or the application's)
     // Double tap: the last tap's place and time (without a clock: a second tap on the same spot).
     int16_t tap_x_ = -1000, tap_y_ = -1000;
     uint32_t tap_t_ = 0;

@@ -8,6 +8,8 @@ namespace {
 
 constexpr hal::Rgb565 kBar = hal::rgb565(36, 40, 48), kText = hal::rgb565(236, 238, 242), kDim = hal::rgb565(150, 156, 168);
 constexpr hal::Rgb565 kButton = hal::rgb565(58, 64, 76), kButtonOn = hal::rgb565(40, 110, 220), kEdge = hal::rgb565(20, 22, 28);
+constexpr int32_t kKnob = 10;    // half the section slider's knob
+constexpr int32_t kScrollW = 28; // the parts list's scroll buttons
 
 const char* mode_name(DisplayMode m) {
     switch (m) {
@@ -15,6 +17,7 @@ const char* mode_name(DisplayMode m) {
     case DisplayMode::Shaded: return "shaded";
     case DisplayMode::Wireframe: return "wireframe";
     case DisplayMode::HiddenLine: return "hidden line";
+    case DisplayMode::SeeThrough: return "see-through";
     }
     return "";
 }
@@ -33,14 +36,17 @@ void Overlay::layout(uint16_t width, uint16_t height) {
     static constexpr struct {
         Action action;
         const char* label;
-    } kAll[kButtons] = {{Action::Fit, "FIT"},        {Action::NextView, "VIEW"}, {Action::NextDisplayMode, "MODE"},
-                        {Action::Projection, "PROJ"}, {Action::Measure, "MEAS"},  {Action::Finer, "LOD+"},
-                        {Action::Coarser, "LOD-"},    {Action::Help, "HELP"}};
+    } kAll[kButtons] = {{Action::Fit, "FIT"},        {Action::NextView, "VIEW"},    {Action::NextDisplayMode, "MODE"},
+                        {Action::Projection, "PROJ"}, {Action::Section, "SECT"},  {Action::Measure, "MEAS"},
+                        {Action::Parts, "PART"},      {Action::NextDetail, "LOD"}, {Action::Help, "HELP"}};
     const int16_t room = int16_t(height - status_rows_);
     uint32_t n = kButtons;
     while (n > 1 && room / int16_t(n) < 28) --n; // a short screen keeps the first ones
     const int16_t h = int16_t(room / int16_t(n));
-    for (uint32_t i = 0; i < n; ++i) buttons_[i] = {toolbar_x_, int16_t(status_rows_ + int16_t(i) * h), w, h, kAll[i].action, kAll[i].label};
+    for (uint32_t i = 0; i < n; ++i) {
+        const int16_t bh = i + 1 < n ? h : int16_t(room - int16_t(n - 1) * h); // the last one takes the rest
+        buttons_[i] = {toolbar_x_, int16_t(status_rows_ + int16_t(i) * h), w, bh, kAll[i].action, kAll[i].label};
+    }
     button_count_ = n;
 }
 
@@ -52,7 +58,8 @@ Overlay::TimeField Overlay::time_field() const {
 FreeArea Overlay::taken() const {
     FreeArea a;
     a.top = status_rows_;
-    a.right = int16_t(width_ - toolbar_x_);
+    a.right = int16_t(width_ - toolbar_x_ + (slider_on_ && button_count_ ? kSliderWidth : 0));
+    a.left = parts_open() ? parts_panel().w : 0;
     a.bottom = int16_t(line_count_ ? line_count_ * render::kLineHeight + 4 : 0);
     return a;
 }
@@ -74,11 +81,78 @@ void Overlay::set_lines(const char* const* lines, uint32_t count) {
     }
 }
 
+Overlay::Rect Overlay::slider() const {
+    if (!slider_on_ || !button_count_) return {0, 0, 0, 0};
+    const int16_t bottom = int16_t(height_ - (line_count_ ? line_count_ * render::kLineHeight + 4 : 0) - kBarRows);
+    return {int16_t(toolbar_x_ - kSliderWidth), status_rows_, kSliderWidth, int16_t(bottom - status_rows_)};
+}
+
+float Overlay::slider_at(int16_t y) const {
+    const Rect r = slider();
+    const int32_t track = r.h - 2 * kKnob; // the knob's centre runs from kKnob to h - kKnob
+    if (track <= 0) return 0.5f;
+    const float v = float(r.y + r.h - kKnob - y) / float(track);
+    return v < 0 ? 0 : v > 1 ? 1 : v;
+}
+
+Overlay::Rect Overlay::parts_panel() const {
+    const int16_t w = int16_t(toolbar_x_ / 2 < 200 ? toolbar_x_ / 2 : 200);
+    const int16_t bottom = int16_t(height_ - (line_count_ ? line_count_ * render::kLineHeight + 4 : 0));
+    return {0, status_rows_, w, int16_t(bottom - status_rows_)};
+}
+
+uint32_t Overlay::part_rows() const {
+    const int32_t rows = (parts_panel().h - kRow - kPartsFooter) / kRow;
+    return rows > 0 ? uint32_t(rows) : 0;
+}
+
+void Overlay::set_chosen(uint32_t part) {
+    chosen_ = part;
+    const uint32_t rows = part_rows();
+    if (part == ~0u || rows == 0) return;
+    if (part < first_row_) first_row_ = part;
+    if (part >= first_row_ + rows) first_row_ = part - rows + 1;
+}
+
+void Overlay::scroll(int32_t rows) {
+    const uint32_t count = scene_ && scene_->loaded() ? uint32_t(scene_->pack().instances().size()) : 0;
+    const uint32_t shown = part_rows();
+    const int64_t last = count > shown ? int64_t(count - shown) : 0;
+    int64_t first = int64_t(first_row_) + rows;
+    first_row_ = uint32_t(first < 0 ? 0 : first > last ? last : first);
+}
+
+Overlay::PartsHit Overlay::parts_at(int16_t x, int16_t y) const {
+    PartsHit h;
+    if (!parts_open()) return h;
+    const Rect p = parts_panel();
+    if (!p.contains(x, y)) return h;
+    h.kind = PartsHit::Kind::Panel;
+    const int32_t dy = y - p.y;
+    if (dy < kRow) { // the header: the scroll buttons at its right end
+        if (x >= p.w - 2 * kScrollW) h.kind = x >= p.w - kScrollW ? PartsHit::Kind::Down : PartsHit::Kind::Up;
+        return h;
+    }
+    if (y >= p.y + p.h - kPartsFooter) { // HIDE, ISOL, ALL
+        const int32_t third = p.w / 3;
+        h.kind = x < third ? PartsHit::Kind::Hide : x < 2 * third ? PartsHit::Kind::Isolate : PartsHit::Kind::All;
+        return h;
+    }
+    const uint32_t row = uint32_t(dy - kRow) / uint32_t(kRow);
+    const uint32_t count = scene_ && scene_->loaded() ? uint32_t(scene_->pack().instances().size()) : 0;
+    if (row >= part_rows() || first_row_ + row >= count) return h;
+    h.part = first_row_ + row;
+    h.kind = x < 22 ? PartsHit::Kind::Box : PartsHit::Kind::Row;
+    return h;
+}
+
 void Overlay::draw(const render::Target& t, const StatusInfo& info) const {
     if (button_count_) {
         status(t, info);
         toolbar(t);
         if (line_count_) panel(t);
+        if (slider_on_) slider_bar(t);
+        if (parts_open()) parts_list(t);
         if (help_) help_panel(t);
     }
     progress(t, info.finished, info.total);
@@ -90,8 +164,16 @@ void Overlay::status(const render::Target& t, const StatusInfo& s) const {
     // "faces 87/87  1594 tri  lod 0.504 mm  shaded+edges  persp", and the frame's cost in its
     // own field at the right end (the one value that differs between a board and the host).
     const int64_t tol = int64_t(s.tolerance_mm * 1000 + 0.5f);
-    format(text, sizeof text, "faces {}/{}  {} tri  lod {} mm  {}  {}", s.finished, s.total, s.triangles, fixed(tol, 3),
-           mode_name(s.mode), s.ortho ? "parallel" : "persp");
+    // The model's name first (its first 16 characters; ASCII: the font has no others).
+    char name[17];
+    uint32_t k = 0;
+    for (const char* c = s.name; *c && k < 16; ++c) {
+        if ((uint8_t(*c) & 0xC0) == 0x80) continue; // the rest of a UTF-8 character
+        name[k++] = uint8_t(*c) >= 32 && uint8_t(*c) < 127 ? *c : '?';
+    }
+    name[k] = 0;
+    format(text, sizeof text, "{}{}faces {}/{}  {} tri  lod {} mm  {}  {}", name, k ? "  " : "", s.finished, s.total, s.triangles,
+           fixed(tol, 3), mode_name(s.mode), s.ortho ? "parallel" : "persp");
     const TimeField f = time_field();
     const int32_t room = (f.x0 - 6 - 3) / render::kCellWidth; // characters before the field
     if (room < int32_t(sizeof text)) text[room > 0 ? room : 0] = 0;
@@ -105,7 +187,8 @@ void Overlay::status(const render::Target& t, const StatusInfo& s) const {
 void Overlay::toolbar(const render::Target& t) const {
     for (uint32_t i = 0; i < button_count_; ++i) {
         const Button& b = buttons_[i];
-        const bool on = (b.action == Action::Measure && measuring_) || (b.action == Action::Help && help_);
+        const bool on = (b.action == Action::Measure && measuring_) || (b.action == Action::Help && help_) ||
+                        (b.action == Action::Section && slider_on_) || (b.action == Action::Parts && parts_open_);
         render::fill_rect(t, b.x, b.y, b.w, b.h, kEdge);
         render::fill_rect(t, b.x + 1, b.y + 1, b.w - 2, b.h - 2, on ? kButtonOn : kButton);
         const int32_t tw = render::text_width(b.label);
@@ -125,15 +208,70 @@ void Overlay::help_panel(const render::Target& t) const {
         "tap: pick a face (MEAS: two faces, distance and angle)",
         "double tap: frame the face   FIT: the whole model",
         "VIEW: front, right, top, iso...   PROJ: perspective/parallel",
-        "MODE: shaded+edges, shaded, wireframe, hidden line",
-        "LOD+ / LOD-: finer / coarser triangles",
+        "MODE: shaded+edges, shaded, wireframe, hidden line, see-through",
+        "SECT: a section (picked plane, x, y, z); drag its slider",
+        "PART: the parts: tap a name, its box hides it; ISOL, ALL",
+        "LOD: finer, finest, coarser triangles, and back",
         "keys: 1 2 3 4 7 8 0 views, 5 projection, m mode, f fit",
+        "c section , . move it  p parts n next h hide o isolate u all",
     };
     constexpr int32_t n = sizeof kHelp / sizeof kHelp[0];
     const int32_t w = toolbar_x_ - 16, h = n * render::kLineHeight + 8, x = 8, y = status_rows_ + 8;
     render::fill_rect(t, x, y, w, h, kEdge);
     render::fill_rect(t, x + 1, y + 1, w - 2, h - 2, kBar);
     for (int32_t i = 0; i < n; ++i) render::draw_text(t, x + 5, y + 5 + i * render::kLineHeight, kHelp[i], kText);
+}
+
+void Overlay::slider_bar(const render::Target& t) const {
+    const Rect r = slider();
+    if (r.w <= 0 || r.h <= 2 * kKnob) return;
+    render::fill_rect(t, r.x, r.y, r.w, r.h, kBar);
+    render::fill_rect(t, r.x + r.w / 2 - 1, r.y + kKnob, 3, r.h - 2 * kKnob, kDim); // the track
+    const int32_t y = r.y + r.h - kKnob - int32_t(slider_value_ * float(r.h - 2 * kKnob) + 0.5f);
+    render::fill_rect(t, r.x + 2, y - kKnob + 2, r.w - 4, 2 * kKnob - 4, kEdge);
+    render::fill_rect(t, r.x + 3, y - kKnob + 3, r.w - 6, 2 * kKnob - 6, kButtonOn);
+}
+
+void Overlay::parts_list(const render::Target& t) const {
+    const Rect p = parts_panel();
+    if (!scene_ || !scene_->loaded() || p.h < kRow + kPartsFooter) return;
+    const geom::Pack& pack = scene_->pack();
+    const uint32_t count = uint32_t(pack.instances().size());
+    render::fill_rect(t, p.x, p.y, p.w, p.h, kEdge);
+    render::fill_rect(t, p.x, p.y, p.w - 1, p.h, kBar);
+    char text[48];
+    format(text, sizeof text, "PARTS {}", count);
+    render::draw_text(t, p.x + 4, p.y + (kRow - render::kGlyphHeight) / 2, text, kText);
+    for (int i = 0; i < 2; ++i) { // scroll up, down
+        const int32_t x = p.w - (2 - i) * kScrollW;
+        render::fill_rect(t, x + 1, p.y + 1, kScrollW - 2, kRow - 2, kButton);
+        render::draw_text(t, x + (kScrollW - render::kCellWidth) / 2, p.y + (kRow - render::kGlyphHeight) / 2, i ? "v" : "^", kText);
+    }
+    const uint32_t rows = part_rows();
+    for (uint32_t r = 0; r < rows && first_row_ + r < count; ++r) {
+        const uint32_t part = first_row_ + r;
+        const int32_t y = p.y + kRow + int32_t(r) * kRow;
+        const bool shown = scene_->shown(part);
+        if (part == chosen_) render::fill_rect(t, p.x, y, p.w - 1, kRow, kButtonOn);
+        // The box: filled when the part is shown.
+        render::fill_rect(t, p.x + 5, y + 4, 12, 12, shown ? kText : kDim);
+        if (!shown) render::fill_rect(t, p.x + 7, y + 6, 8, 8, part == chosen_ ? kButtonOn : kBar);
+        const char* name = pack.shell_name(pack.instances()[part].shell);
+        format(text, sizeof text, "{} {}", part + 1, *name ? name : "(unnamed)");
+        const int32_t room = (p.w - 26) / render::kCellWidth;
+        if (room < int32_t(sizeof text)) text[room > 0 ? room : 0] = 0;
+        for (char* c = text; *c; ++c)
+            if (uint8_t(*c) < 32 || uint8_t(*c) >= 127) *c = '?';
+        render::draw_text(t, p.x + 22, y + (kRow - render::kGlyphHeight) / 2, text, shown ? kText : kDim);
+    }
+    static constexpr const char* kLabels[3] = {"HIDE", "ISOL", "ALL"};
+    const int32_t third = p.w / 3, y = p.y + p.h - kPartsFooter;
+    for (int i = 0; i < 3; ++i) {
+        const int32_t x = p.x + i * third, w = i == 2 ? p.w - 2 * third : third;
+        render::fill_rect(t, x + 1, y + 1, w - 2, kPartsFooter - 2, chosen_ == ~0u && i < 2 ? kBar : kButton);
+        render::draw_text(t, x + (w - render::text_width(kLabels[i])) / 2, y + (kPartsFooter - render::kGlyphHeight) / 2, kLabels[i],
+                          chosen_ == ~0u && i < 2 ? kDim : kText);
+    }
 }
 
 void Overlay::progress(const render::Target& t, uint32_t finished, uint32_t total) const {

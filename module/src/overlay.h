@@ -7,6 +7,7 @@
 // opaque (an incremental frame draws over the last one) and clipped to the target's band.
 #include "facet/viewer.h"
 #include "render/raster.h"
+#include "scene.h"
 
 #include <cstdint>
 
@@ -18,6 +19,7 @@ struct FreeArea {
 };
 
 struct StatusInfo {
+    const char* name = ""; // the model's
     uint32_t finished = 0, total = 0, triangles = 0;
     uint32_t frame_us = 0; // the last full frame's cost (0: no clock)
     float tolerance_mm = 0;
@@ -29,7 +31,9 @@ class Overlay {
 public:
     static constexpr uint16_t kBarRows = 4;
     static constexpr hal::Rgb565 kDone = hal::rgb565(40, 110, 220), kLeft = hal::rgb565(70, 74, 84);
-    static constexpr uint32_t kButtons = 8;
+    static constexpr uint32_t kButtons = 9;
+    static constexpr int16_t kSliderWidth = 28; // the section slider, left of the toolbar
+    static constexpr int16_t kRow = 20, kPartsFooter = 26; // the parts list's rows and buttons
     static constexpr uint32_t kLines = 3, kLineChars = 80; // the measurement panel
 
     // The screen's size: where the bars and the buttons go (480 x 272 and larger; a screen
@@ -45,6 +49,31 @@ public:
     TimeField time_field() const;
     // The toolbar button under a screen pixel, or None.
     Action button_at(int16_t x, int16_t y) const;
+
+    // The section slider: shown or not, and where its knob is (0: the bottom, 1: the top).
+    void set_slider(bool on, float value) { slider_on_ = on, slider_value_ = value; }
+    bool slider_on() const { return slider_on_; }
+    struct Rect {
+        int16_t x, y, w, h;
+        bool contains(int32_t px, int32_t py) const { return px >= x && px < x + w && py >= y && py < y + h; }
+    };
+    Rect slider() const; // the track (w 0: none)
+    float slider_at(int16_t y) const; // the value at a row of the track, 0..1
+
+    // The parts list: a panel down the left side, a row per part (instance) with its box
+    // (shown or hidden) and name, scroll buttons, and HIDE, ISOL and ALL for the chosen part.
+    void set_scene(const Scene* scene) { scene_ = scene; }
+    void set_parts(bool open) { parts_open_ = open, first_row_ = 0; }
+    bool parts_open() const { return parts_open_ && button_count_ > 0; }
+    void set_chosen(uint32_t part); // highlighted row (scrolled into the list); ~0u: none
+    struct PartsHit {
+        enum class Kind : uint8_t { None, Panel, Row, Box, Up, Down, Hide, Isolate, All } kind = Kind::None;
+        uint32_t part = 0;
+    };
+    PartsHit parts_at(int16_t x, int16_t y) const;
+    void scroll(int32_t rows);
+    Rect parts_panel() const;
+    uint32_t part_rows() const; // rows the list shows at once
 
     void set_help(bool on) { help_ = on; }
     bool help() const { return help_; }
@@ -72,6 +101,8 @@ private:
     void toolbar(const render::Target& t) const;
     void panel(const render::Target& t) const;
     void help_panel(const render::Target& t) const;
+    void slider_bar(const render::Target& t) const;
+    void parts_list(const render::Target& t) const;
 
     uint16_t width_ = 0, height_ = 0;
     int16_t status_rows_ = 0, toolbar_x_ = 0;
@@ -80,6 +111,11 @@ private:
     bool help_ = false, measuring_ = false;
     char lines_[kLines][kLineChars] = {};
     uint32_t line_count_ = 0;
+    bool slider_on_ = false;
+    float slider_value_ = 0.5f;
+    const Scene* scene_ = nullptr;
+    bool parts_open_ = false;
+    uint32_t first_row_ = 0, chosen_ = ~0u;
 };
 
 } // namespace facet::module

@@ -12,6 +12,8 @@ constexpr uint32_t kNoColour = 0xFF000000u; // no palette in the slot (colours a
 constexpr uint32_t kPaper = 0x00FFFFFFu;    // hidden-line faces: white
 constexpr uint32_t kPicked = 0x00C830FFu;   // the picked face (B, G, R bytes: magenta, rare in CAD colours)
 constexpr uint32_t kPicked2 = 0x00FFD020u;  // the second one (measuring: cyan)
+constexpr uint32_t kCap = 0x003C46CDu;      // the inside of a cut solid (a section): brick red
+constexpr uint8_t kCapShade = 255;          // drawn flat, in that colour
 
 // X / d for d >= 1, to about 2^-15 relative, without dividing (render/fixed.h).
 inline int32_t divide(int64_t x, int32_t d) { return render::divide(x, render::reciprocal(uint32_t(d))); }
@@ -19,6 +21,28 @@ inline int32_t divide(int64_t x, int32_t d) { return render::divide(x, render::r
 inline int32_t round_to_int(float v) { return int32_t(v + (v >= 0 ? 0.5f : -0.5f)); }
 
 } // namespace
+
+// Whether the face's sphere lies wholly on the side the section cuts away.
+bool Painter::cut_away(const Transform& t, const FaceInfo& F) {
+    if (F.radius <= 0) return false;
+    int32_t x, y, d;
+    t.to_view(F.centre, x, y, d);
+    const int64_t rv = (int64_t(F.radius) * t.k16) >> 16;
+    return t.cut.side(x, y, d) > (rv + rv / 8 + 2) * 16384;
+}
+
+// A point in camera space onto the screen (false: behind the near plane or beyond the guard band).
+bool Painter::to_screen(const Transform& t, Projected& p) {
+    const int32_t over = t.ortho ? t.dist : p.d;
+    if (p.d < t.near) return false;
+    const int64_t X = int64_t(p.x) * t.f16, Y = int64_t(p.y) * t.f16, G = int64_t(t.guard) * over;
+    if (X > G || -X > G || Y > G || -Y > G) return false;
+    p.s.x = t.cx16 + divide(X, over);
+    p.s.y = t.cy16 - divide(Y, over);
+    const int64_t zz = (int64_t(p.d - t.near) * t.zk) >> 16;
+    p.s.z = uint16_t(zz > 65535 ? 65535 : zz);
+    return true;
+}
 
 void Painter::init(const Memory& memory) {
     mem_ = memory;
@@ -58,23 +82,32 @@ void Painter::reset_edges() {
 }
 
 void Painter::triangle(const Transform& t, const Projected& a, const Projected& b, const Projected& c,
-                       const render::Palette& pal, render::Cull cull) {
+                       const render::Palette& pal, render::Cull cull, const render::Palette* cap) {
     if (!(a.out | b.out | c.out)) {
+        if (cap && int64_t(b.s.x - a.s.x) * (c.s.y - a.s.y) - int64_t(b.s.y - a.s.y) * (c.s.x - a.s.x) > 0) {
+            // A back face seen through the cut: the solid's inside, flat in the cap colour.
+            render::ScreenVertex s[3] = {a.s, b.s, c.s};
+            for (render::ScreenVertex& v : s) v.shade = kCapShade;
+            refused_ += !ok(raster_.draw(s[0], s[1], s[2], *cap, render::Cull::None));
+            return;
+        }
         refused_ += !ok(raster_.draw(a.s, b.s, c.s, pal, cull)); // inside the guard band: never refused
         return;
     }
-    if (a.out & b.out & c.out & kOutNear) return;
+    if (a.out & b.out & c.out & (kOutNear | kOutCut)) return;
     // Clip against the near plane and the guard band (camera space, float: this path is rare).
     struct V {
         float x, y, d, shade;
     };
     const float near = float(t.near), f16 = float(t.f16);
     const float G = float(t.guard) * 0.98f; // inside the band after rounding
-    V poly[9], tmp[9];
+    V poly[10], tmp[10];
     int n = 3;
     const Projected* src[3] = {&a, &b, &c};
     for (int i = 0; i < 3; ++i) poly[i] = {float(src[i]->x), float(src[i]->y), float(src[i]->d), float(src[i]->s.shade)};
     const float dist = float(t.dist);
+    // The section's side (a plane in camera space; positive: cut away), scaled to view units.
+    const float cx = float(t.cut.nx), cy = float(t.cut.ny), cd = float(t.cut.nd), cc = float(t.cut.c);
     auto plane = [&](const V& v, int k) {
         const float over = t.ortho ? dist : v.d; // the guard band's sides: parallel in a parallel view
         switch (k) {
@@ -82,10 +115,11 @@ void Painter::triangle(const Transform& t, const Projected& a, const Projected& 
         case 1: return G * over - f16 * v.x;
         case 2: return G * over + f16 * v.x;
         case 3: return G * over - f16 * v.y;
-        default: return G * over + f16 * v.y;
+        case 4: return G * over + f16 * v.y;
+        default: return -(cx * v.x + cy * v.y + cd * v.d + cc);
         }
     };
-    for (int k = 0; k < 5 && n >= 3; ++k) {
+    for (int k = 0; k < (t.cut.on ? 6 : 5) && n >= 3; ++k) {
         int m = 0;
         for (int i = 0; i < n; ++i) {
             const V& p = poly[i];
@@ -101,7 +135,7 @@ void Painter::triangle(const Transform& t, const Projected& a, const Projected& 
         for (int i = 0; i < n; ++i) poly[i] = tmp[i];
     }
     if (n < 3) return;
-    render::ScreenVertex s[9];
+    render::ScreenVertex s[10];
     for (int i = 0; i < n; ++i) {
         const int32_t d = round_to_int(poly[i].d) > t.near ? round_to_int(poly[i].d) : t.near;
         const int32_t over = t.ortho ? t.dist : d; // parallel: x and y over the centre's depth
@@ -110,6 +144,17 @@ void Painter::triangle(const Transform& t, const Projected& a, const Projected& 
         const int64_t zz = (int64_t(d - t.near) * t.zk) >> 16;
         s[i].z = uint16_t(zz > 65535 ? 65535 : zz);
         s[i].shade = uint8_t(poly[i].shade);
+    }
+    if (cap) { // the polygon's orientation: a back face through the cut takes the cap colour
+        int64_t area2 = 0;
+        for (int i = 1; i + 1 < n; ++i) {
+            area2 += int64_t(s[i].x - s[0].x) * (s[i + 1].y - s[0].y) - int64_t(s[i].y - s[0].y) * (s[i + 1].x - s[0].x);
+        }
+        if (area2 > 0) {
+            for (int i = 0; i < n; ++i) s[i].shade = kCapShade;
+            for (int i = 1; i + 1 < n; ++i) refused_ += !ok(raster_.draw(s[0], s[i], s[i + 1], *cap, render::Cull::None));
+            return;
+        }
     }
     for (int i = 1; i + 1 < n; ++i) refused_ += !ok(raster_.draw(s[0], s[i], s[i + 1], pal, cull));
 }
@@ -123,26 +168,33 @@ uint32_t Painter::face(uint32_t f, const Transform& t, Rows rows, uint32_t from,
     const bool white = mode_ == DisplayMode::HiddenLine; // faces mostly hide what is behind them
     if (from == 0) { // the face's vertices, once
         if (F.state != FaceState::Done || !t.visible(F.centre, F.radius, rows)) return F.triangle_count;
-        if (F.planar && t.closed && F.vertex_count && t.faces_away(verts[0].p, verts[0].n)) return F.triangle_count;
+        if (t.cut.on && cut_away(t, F)) return F.triangle_count;
+        // (With a section, the back of a plane may show through the cut.)
+        if (F.planar && t.closed && !t.cut.on && F.vertex_count && t.faces_away(verts[0].p, verts[0].n)) return F.triangle_count;
         for (uint32_t v = 0; v < F.vertex_count; ++v) {
             t.project(verts[v].p, P[v]);
+            if (t.cut.on && t.cut.side(P[v].x, P[v].y, P[v].d) > 0) P[v].out |= kOutCut;
             // Hidden line: paper faces, lit just enough (200-255) that curved outlines (no B-rep
             // edge: a cylinder's silhouette) still read against each other.
             P[v].s.shade = white ? uint8_t(200 + ((t.shade(verts[v].n) * 55) >> 8)) : t.shade(verts[v].n);
         }
         spent = 1 + F.vertex_count / 4;
     }
-    const bool lit = (hl_[0].face == f && hl_[0].instance == instance_) || (hl_[1].face == f && hl_[1].instance == instance_);
+    const bool lit = (hl_[0].face == f && hl_[0].instance == instance_) || (hl_[1].face == f && hl_[1].instance == instance_) ||
+                     part_ == instance_;
     const render::Palette& pal = palette(lit ? (hl_[1].face == f && hl_[1].instance == instance_ ? kPicked2 : kPicked) : white ? kPaper : F.rgb);
-    const render::Cull cull = t.closed ? render::Cull::Back : render::Cull::None;
+    const render::Cull cull = t.closed && !t.cut.on ? render::Cull::Back : render::Cull::None;
+    const render::Palette* cap = t.closed && t.cut.on ? &palette(kCap) : nullptr;
+    raster_.set_stipple(mode_ == DisplayMode::SeeThrough && instance_ != focus_);
     const uint16_t* id = scene_.indices() + F.first_index + 3 * from;
     const uint32_t pixels = raster_.stats.pixels;
     uint32_t k = from;
     // A unit: a triangle's set-up, or 64 pixels; one triangle at least, whatever the units.
     for (; k < F.triangle_count && (k == from || spent + (raster_.stats.pixels - pixels) / 64 < units); ++k, id += 3, ++spent) {
-        if (t.mirrored) triangle(t, P[id[0]], P[id[2]], P[id[1]], pal, cull);
-        else triangle(t, P[id[0]], P[id[1]], P[id[2]], pal, cull);
+        if (t.mirrored) triangle(t, P[id[0]], P[id[2]], P[id[1]], pal, cull, cap);
+        else triangle(t, P[id[0]], P[id[1]], P[id[2]], pal, cull, cap);
     }
+    raster_.set_stipple(false);
     spent += (raster_.stats.pixels - pixels) / 64;
     return k;
 }
@@ -152,7 +204,8 @@ uint32_t Painter::face_edges(uint32_t f, const Transform& t, Rows rows, bool onc
     const FaceInfo& info = scene_.face(f);
     if (mode_ == DisplayMode::Shaded && info.state == FaceState::Done) return 0; // a face not in yet shows its edges
     if (!t.visible(info.centre, info.radius, rows)) return 0;
-    if (mode_ != DisplayMode::Wireframe && info.planar && t.closed && info.vertex_count) {
+    if (t.cut.on && cut_away(t, info)) return 0;
+    if (mode_ != DisplayMode::Wireframe && info.planar && t.closed && !t.cut.on && info.vertex_count) {
         const DrawVertex& v = scene_.vertices()[info.first_vertex];
         if (t.faces_away(v.p, v.n)) return 0;
     }
@@ -181,11 +234,26 @@ uint32_t Painter::edge(uint32_t e, const Transform& t) {
     const geom::EdgeSamples& samples = scene_.samples();
     const uint32_t first = samples.first[e], n = samples.count[e];
     Projected prev{}, cur{};
+    int64_t prev_side = 0, side = 0;
     for (uint32_t k = 0; k < n; ++k) {
         t.project(scene_.sample_q(first + k), cur);
-        // Segments that leave the view volume are left out (edges are not clipped).
-        if (k > 0 && !(prev.out | cur.out)) refused_ += !ok(raster_.line(prev.s, cur.s, kEdgeColour, kLineBias));
-        prev = cur;
+        if (t.cut.on) side = t.cut.side(cur.x, cur.y, cur.d);
+        // Segments that leave the view volume are left out (edges are not clipped); a section
+        // keeps the part of a segment on its side.
+        if (k > 0 && !(prev.out | cur.out)) {
+            if (!t.cut.on || (prev_side <= 0 && side <= 0)) {
+                refused_ += !ok(raster_.line(prev.s, cur.s, kEdgeColour, kLineBias));
+            } else if (prev_side <= 0 || side <= 0) {
+                const float u = float(prev_side) / float(prev_side - side); // where the segment meets the plane
+                const Projected& in = prev_side <= 0 ? prev : cur;
+                Projected at{};
+                at.x = round_to_int(float(prev.x) + float(cur.x - prev.x) * u);
+                at.y = round_to_int(float(prev.y) + float(cur.y - prev.y) * u);
+                at.d = round_to_int(float(prev.d) + float(cur.d - prev.d) * u);
+                if (to_screen(t, at)) refused_ += !ok(raster_.line(in.s, at.s, kEdgeColour, kLineBias));
+            }
+        }
+        prev = cur, prev_side = side;
     }
     return 1 + n / 8;
 }

@@ -29,6 +29,10 @@ public:
         hl_[0] = {face0, instance0}, hl_[1] = {face1, instance1};
     }
     void set_instance(uint32_t i) { instance_ = i; }
+    // The part chosen in the parts list (every face in the highlight colour; ~0u: none), and
+    // the part see-through mode draws solid (~0u: every part see-through).
+    void set_part(uint32_t instance) { part_ = instance; }
+    void set_focus(uint32_t instance) { focus_ = instance; }
     DisplayMode mode() const { return mode_; }
 
     // The background of the target's rows: light at the top, darker toward the bottom.
@@ -48,9 +52,12 @@ public:
     uint32_t refused() const { return refused_; }
 
 private:
+    // `cap`: the palette of back faces seen through a section's cut (null: none).
     void triangle(const Transform& t, const Projected& a, const Projected& b, const Projected& c, const render::Palette& pal,
-                  render::Cull cull);
+                  render::Cull cull, const render::Palette* cap);
     uint32_t edge(uint32_t e, const Transform& t);
+    static bool cut_away(const Transform& t, const FaceInfo& F);
+    static bool to_screen(const Transform& t, Projected& p);
     const render::Palette& palette(uint32_t rgb);
 
     const Scene& scene_;
@@ -62,6 +69,7 @@ private:
         uint32_t face = ~0u, instance = ~0u;
     } hl_[2];
     uint32_t instance_ = 0;
+    uint32_t part_ = ~0u, focus_ = ~0u;
     uint32_t refused_ = 0;
 };
 

@@ -15,6 +15,7 @@ void Core::pick(int16_t x, int16_t y) {
         act(a);
         return;
     }
+    if (tap_parts(x, y)) return; // the parts list's
     const Event e = pick_at(x, y);
     picked(e);
     // A second tap where the first one was, soon after (or, without a clock, right after):
@@ -46,6 +47,7 @@ void Core::picked(const Event& e) {
 }
 
 void Core::highlight() {
+    focus();
     painter_.set_highlight(picked_count_ > 0 ? picked_[0].face : ~0u, picked_count_ > 0 ? picked_[0].instance : ~0u,
                            picked_count_ > 1 ? picked_[1].face : ~0u, picked_count_ > 1 ? picked_[1].instance : ~0u);
 }
@@ -82,6 +84,7 @@ Event Core::pick_at(int16_t x, int16_t y) {
     const int64_t sx = int64_t(x) * 16 + 8, sy = int64_t(y) * 16 + 8;
     float best = 1e30f;
     for (uint32_t i = 0; i < pack.instances().size(); ++i) {
+        if (!scene_.shown(i)) continue;
         const module::Transform t = camera_.transform(scene_, i, d.width, d.height);
         const module::Rows row{t.cy16 - int32_t(y) * 16, (int32_t(y) + 1) * 16 - t.cy16};
         const pack::Shell& sh = pack.shells()[pack.instances()[i].shell];
@@ -89,7 +92,7 @@ Event Core::pick_at(int16_t x, int16_t y) {
             const module::FaceInfo& F = scene_.face(f);
             if (F.state != module::FaceState::Done || !t.visible(F.centre, F.radius, row)) continue;
             const module::DrawVertex* v = scene_.vertices() + F.first_vertex;
-            if (F.planar && t.closed && F.vertex_count && t.faces_away(v[0].p, v[0].n)) continue;
+            if (F.planar && t.closed && !t.cut.on && F.vertex_count && t.faces_away(v[0].p, v[0].n)) continue;
             module::Projected* P = projected_.data();
             for (uint32_t k = 0; k < F.vertex_count; ++k) t.project(v[k].p, P[k]);
             const uint16_t* id = scene_.indices() + F.first_index;
@@ -107,6 +110,11 @@ Event Core::pick_at(int16_t x, int16_t y) {
                 const bool inside = area2 > 0 ? (wa >= 0 && wb >= 0 && wc >= 0) : (wa <= 0 && wb <= 0 && wc <= 0);
                 if (!inside) continue;
                 const float z = (float(wa) * a.s.z + float(wb) * b.s.z + float(wc) * c.s.z) / float(area2);
+                if (t.cut.on) { // a point the section cuts away is not there to pick
+                    const float side = (float(wa) * float(t.cut.side(a.x, a.y, a.d)) + float(wb) * float(t.cut.side(b.x, b.y, b.d)) +
+                                        float(wc) * float(t.cut.side(c.x, c.y, c.d))) / float(area2);
+                    if (side > 0) continue;
+                }
                 if (z < best) {
                     best = z;
                     const uint8_t type = pack.surfaces()[pack.faces()[f].surface].type;

@@ -90,6 +90,10 @@ bool Presenter::full_pieces(uint32_t units) {
     const geom::Pack& pack = scene_.pack();
     uint32_t spent = 0;
     while (job_.instance < pack.instances().size()) {
+        if (!scene_.shown(job_.instance)) { // a hidden part
+            ++job_.instance;
+            continue;
+        }
         const pack::Shell& sh = pack.shells()[pack.instances()[job_.instance].shell];
         if (!job_.have_transform) {
             job_.transform = camera_.transform(scene_, job_.instance, display_.width, display_.height);
@@ -132,6 +136,7 @@ bool Presenter::update_pieces(uint32_t units) {
     // each face's triangles, then its edges over them.
     while (job_.instance < pack.instances().size()) {
         const pack::Shell& sh = pack.shells()[pack.instances()[job_.instance].shell];
+        if (!scene_.shown(job_.instance)) job_.face = job_.applied_to; // a hidden part: none of its faces
         for (; job_.face < job_.applied_to && spent < units; ++job_.face) {
             const uint32_t f = scene_.done_face(job_.face);
             if (f < sh.first_face || f >= sh.first_face + sh.face_count) continue;
@@ -238,6 +243,7 @@ void Presenter::run_piece(uint32_t units, uint32_t pass) {
     }
     if (job_.stage == Job::Stage::Overlay) {
         StatusInfo s;
+        s.name = scene_.pack().model_name();
         s.finished = job_.finished, s.total = scene_.totals().faces, s.triangles = scene_.totals().triangles;
         s.frame_us = last_frame_us_, s.tolerance_mm = tolerance_mm_, s.mode = painter_.mode(), s.ortho = camera_.view().ortho;
         overlay_.draw(raster_.target(), s);

@@ -36,6 +36,7 @@ Result Scene::open(const geom::Pack& pack) {
     unit_ = 2 * radius_ / kUnitsPerDiagonal;
     totals_ = {};
     loaded_ = true;
+    show_all();
     fit_bounds(false);
     return {};
 }
@@ -92,8 +93,9 @@ void Scene::fit_bounds(bool sampled) {
             }
         }
         if (box.empty()) continue;
-        for (const pack::Instance& inst : instances) {
-            if (inst.shell != s) continue;
+        for (uint32_t i = 0; i < instances.size(); ++i) {
+            const pack::Instance& inst = instances[i];
+            if (inst.shell != s || !shown(i)) continue; // a hidden part is not framed
             for (int corner = 0; corner < 8; ++corner) {
                 const float c[3] = {float(corner & 1 ? box.hi[0] : box.lo[0]) * unit_, float(corner & 2 ? box.hi[1] : box.lo[1]) * unit_,
                                     float(corner & 4 ? box.hi[2] : box.lo[2]) * unit_};
@@ -117,6 +119,16 @@ void Scene::fit_bounds(bool sampled) {
     const float floor = own_radius_ / 16;
     radius_ = std::sqrt(r2);
     if (!(radius_ > floor)) radius_ = floor;
+}
+
+void Scene::set_shown(uint32_t i, bool on) {
+    if (i >= kMaxHideable) return;
+    if (on) hidden_[i >> 5] &= ~(1u << (i & 31));
+    else hidden_[i >> 5] |= 1u << (i & 31);
+}
+
+void Scene::show_all() {
+    for (uint32_t& w : hidden_) w = 0;
 }
 
 uint32_t Scene::shell_of(uint32_t f) const {

@@ -71,6 +71,12 @@ public:
     // sample and a vertex (integer compares), then 8 corners an instance.
     void fit_bounds(bool sampled);
     uint32_t shell_of(uint32_t face) const;
+    // Parts (instances) shown or hidden; the first kMaxHideable can be hidden (Viewer::show_part
+    // refuses the rest, which stay shown). All shown at open().
+    static constexpr uint32_t kMaxHideable = 4096;
+    bool shown(uint32_t instance) const { return instance >= kMaxHideable || !((hidden_[instance >> 5] >> (instance & 31)) & 1u); }
+    void set_shown(uint32_t instance, bool on);
+    void show_all();
     uint32_t colour_of(uint32_t face) const; // rgb of the face (or of its shell, or the default)
 
     geom::EdgeSamples& samples() { return mem_.samples; }
@@ -98,6 +104,7 @@ private:
     bool loaded_ = false;
     float unit_ = 1, centre_[3] = {0, 0, 0}, radius_ = 1, own_radius_ = 1;
     Totals totals_;
+    uint32_t hidden_[kMaxHideable / 32] = {};
 };
 
 } // namespace facet::module

@@ -264,7 +264,8 @@ Status Rasterizer::scan(const ScreenVertex& v0, const ScreenVertex& v1, const Sc
         scan_small(v0, v1, v2, area2, int32_t(row0), int32_t(row1), int32_t(col0), int32_t(col1));
         return Status::Ok;
     }
-    const bool clamp = needs_clamp(v0, v1, v2, int32_t(std::max(xmax - xmin, ymax - ymin) >> 4));
+    // (A stippled triangle takes the per-pixel path, which leaves out every other pixel.)
+    const bool clamp = stipple_ || needs_clamp(v0, v1, v2, int32_t(std::max(xmax - xmin, ymax - ymin) >> 4));
     constexpr int32_t kNear = 16 * 1024; // sub-pixels: 32-bit edge walks within this of the origin
     const bool near = xmin >= -kNear && xmax <= kNear && ymin >= -kNear && ymax <= kNear;
     if (near) scan_rows<int32_t>(v0, v1, v2, area2, int32_t(row0), int32_t(row1), int32_t(col0), int32_t(col1), clamp);
@@ -394,7 +395,7 @@ void Rasterizer::scan_rows(const ScreenVertex& v0, const ScreenVertex& v1, const
 void Rasterizer::scan_small(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2,
                             int64_t area2, int32_t row0, int32_t row1, int32_t col0, int32_t col1) {
     const int32_t ox = col0 * 16 + 8, oy = row0 * 16 + 8; // the first pixel's centre
-    const bool clamp = needs_clamp(v0, v1, v2, kSmall);
+    const bool clamp = stipple_ || needs_clamp(v0, v1, v2, kSmall);
     struct Edge {
         int32_t e, sx, sy; // value at the current pixel; steps per pixel in x and y
     } ed[3];
@@ -447,6 +448,7 @@ void Rasterizer::shade(int32_t y, int32_t lo, int32_t hi, const Interp* at, bool
     }
     uint32_t written = 0;
     for (int32_t x = lo; x <= hi; ++x, z += zs, s += ss) {
+        if (stipple_ && ((x ^ y) & 1)) continue;
         const uint16_t zv = uint16_t(at[0].value(z));
         if (zv < drow[x]) {
             drow[x] = zv;

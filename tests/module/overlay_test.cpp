@@ -74,8 +74,8 @@ TEST(Overlay, TheToolbarFitsBothScreensAndATapFindsItsButton) {
         EXPECT_GE(a.right, 40) << "a toolbar";
         EXPECT_EQ(a.left, 0);
         EXPECT_EQ(a.bottom, 0) << "no measurement yet";
-        const Action all[] = {Action::Fit,     Action::NextView, Action::NextDisplayMode, Action::Projection,
-                              Action::Measure, Action::Finer,    Action::Coarser,         Action::Help};
+        const Action all[] = {Action::Fit,     Action::NextView, Action::NextDisplayMode, Action::Projection, Action::Section,
+                              Action::Measure, Action::Parts,    Action::NextDetail,      Action::Help};
         int y = a.top;
         for (Action act : all) {
             // Walk down the toolbar's middle column: each button in turn, at least 28 pixels tall.

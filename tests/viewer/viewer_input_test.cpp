@@ -14,7 +14,9 @@
 #include <algorithm>
 #include <array>
 #include <cstring>
+#include <map>
 #include <memory>
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -723,4 +725,266 @@ TEST(Viewer, ALevelOfDetailWhoseEdgesDoNotFitGoesBackToThePreviousOne) {
     EXPECT_EQ(app.count(Event::Kind::PassFailed), 1);
     EXPECT_FLOAT_EQ(app.v->stats().tolerance_mm, t0 * 2);
     EXPECT_EQ(app.v->stats().done, 1u);
+}
+
+namespace {
+
+// Two closed blocks (100 mm cubes, one solid placed twice: at the origin and 150 mm along x),
+// named as a STEP file would name them.
+Bytes two_blocks() {
+    PackWriter w;
+    auto corner = [](int i) { return std::array<float, 3>{float(i & 1) * 100, float((i >> 1) & 1) * 100, float((i >> 2) & 1) * 100}; };
+    uint32_t v[8];
+    for (int i = 0; i < 8; ++i) v[i] = w.add_vertex(corner(i)[0], corner(i)[1], corner(i)[2]);
+    std::map<std::pair<int, int>, uint32_t> edges;
+    const uint32_t first_face = w.face_count();
+    for (int axis = 0; axis < 3; ++axis) {
+        for (int side = 0; side < 2; ++side) {
+            float n[3] = {0, 0, 0}, x[3] = {0, 0, 0}, y[3];
+            n[axis] = side ? 1.0f : -1.0f;
+            x[(axis + 1) % 3] = 1;
+            y[0] = n[1] * x[2] - n[2] * x[1], y[1] = n[2] * x[0] - n[0] * x[2], y[2] = n[0] * x[1] - n[1] * x[0];
+            float o[3] = {0, 0, 0};
+            o[axis] = side ? 100.0f : 0.0f;
+            const uint32_t plane = w.add_surface(pack::SurfaceType::Plane, {o[0], o[1], o[2], x[0], x[1], x[2], y[0], y[1], y[2], n[0], n[1], n[2]});
+            // The face's corners counter-clockwise about its outward normal.
+            std::vector<std::pair<double, int>> around;
+            for (int i = 0; i < 8; ++i) {
+                if (((i >> axis) & 1) != side) continue;
+                const auto c = corner(i);
+                const double u = (c[0] - 50) * x[0] + (c[1] - 50) * x[1] + (c[2] - 50) * x[2];
+                const double t = (c[0] - 50) * y[0] + (c[1] - 50) * y[1] + (c[2] - 50) * y[2];
+                around.push_back({std::atan2(t, u), i});
+            }
+            std::sort(around.begin(), around.end());
+            const uint32_t first = w.coedge_count();
+            float lo[2] = {1e9f, 1e9f}, hi[2] = {-1e9f, -1e9f};
+            for (int k = 0; k < 4; ++k) {
+                const int a = around[k].second, b = around[(k + 1) % 4].second;
+                const auto key = std::make_pair(std::min(a, b), std::max(a, b));
+                if (!edges.count(key)) edges[key] = w.add_edge({pack::kStraight, 0, 100, v[key.first], v[key.second], 1e-7f, 0});
+                w.add_coedge(pack::Coedge::make(edges[key], a != key.first, pack::Seam::None));
+                const auto c = corner(a);
+                const float uv[2] = {(c[0] - o[0]) * x[0] + (c[1] - o[1]) * x[1] + (c[2] - o[2]) * x[2],
+                                     (c[0] - o[0]) * y[0] + (c[1] - o[1]) * y[1] + (c[2] - o[2]) * y[2]};
+                for (int j = 0; j < 2; ++j) lo[j] = std::min(lo[j], uv[j]), hi[j] = std::max(hi[j], uv[j]);
+            }
+            const uint32_t loop = w.add_loop({first, 4});
+            w.add_face({plane, loop, 1, pack::kNoIndex, pack::kNoIndex, 0, {0, 0, 0}, {lo[0], lo[1]}, {hi[0], hi[1]}});
+        }
+    }
+    const uint32_t shell = w.add_shell({first_face, 6, pack::kNoIndex, 1});
+    w.name_shell(shell, "block");
+    w.name_instance(w.add_instance({shell, {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0}}), "block_a");
+    w.name_instance(w.add_instance({shell, {1, 0, 0, 150, 0, 1, 0, 0, 0, 0, 1, 0}}), "");
+    w.set_model_name("two blocks");
+    return w.finish();
+}
+
+// The screen box of one instance's faces (pixels), from the camera; face: one of them only.
+std::array<int, 4> box_of(const Core& core, uint32_t instance, uint16_t w, uint16_t h, uint32_t face = ~0u) {
+    const module::Transform t = core.camera().transform(core.scene(), instance, w, h);
+    int l = INT32_MAX, top = INT32_MAX, r = INT32_MIN, b = INT32_MIN;
+    for (uint32_t f = 0; f < 6; ++f) {
+        if (face != ~0u && f != face) continue;
+        const module::FaceInfo& F = core.scene().face(f);
+        for (uint32_t k = 0; k < F.vertex_count; ++k) {
+            module::Projected p;
+            t.project(core.scene().vertices()[F.first_vertex + k].p, p);
+            l = std::min(l, p.s.x / 16), r = std::max(r, p.s.x / 16), top = std::min(top, p.s.y / 16), b = std::max(b, p.s.y / 16);
+        }
+    }
+    return {l, top, r, b};
+}
+
+} // namespace
+
+// Names from the STEP file travel in the pack: the model's, each part's and occurrence's; a pack
+// whose name tables point into the middle of a name is refused.
+TEST(Viewer, PartsCarryTheirNamesFromThePack) {
+    const Bytes bytes = two_blocks();
+    Pack p;
+    ASSERT_TRUE(p.open(bytes.data(), uint32_t(bytes.size())).ok());
+    EXPECT_STREQ(p.model_name(), "two blocks");
+    EXPECT_STREQ(p.shell_name(0), "block");
+    EXPECT_STREQ(p.instance_name(0), "block_a");
+    EXPECT_STREQ(p.instance_name(1), "");
+    // A name table entry moved into the middle of a name (the CRC made right again): refused.
+    Bytes bad = bytes;
+    const auto* h = reinterpret_cast<const pack::Header*>(bad.data());
+    const auto* table = reinterpret_cast<const pack::SectionEntry*>(bad.data() + sizeof(pack::Header));
+    for (uint32_t i = 0; i < h->section_count; ++i) {
+        if (table[i].id != uint32_t(pack::SectionId::ShellNames)) continue;
+        uint32_t at;
+        std::memcpy(&at, bad.data() + table[i].offset, 4);
+        ++at;
+        std::memcpy(bad.data() + table[i].offset, &at, 4);
+    }
+    const uint32_t crc = pack::crc32(bad.data() + sizeof(pack::Header), uint32_t(bad.size() - sizeof(pack::Header)));
+    std::memcpy(bad.data() + offsetof(pack::Header, crc32), &crc, 4);
+    Pack q;
+    const Result r = q.open(bad.data(), uint32_t(bad.size()));
+    EXPECT_EQ(text(r), "section ShellNames record 0: the name does not start a string of Names");
+
+    App app;
+    ASSERT_TRUE(app.create().ok());
+    ASSERT_TRUE(app.load(bytes).ok());
+    EXPECT_STREQ(app.v->model_name(), "two blocks");
+    ASSERT_EQ(app.v->part_count(), 2u);
+    EXPECT_STREQ(app.v->part(1).name, "block");
+    EXPECT_STREQ(app.v->part(0).instance, "block_a");
+    EXPECT_EQ(app.v->part(1).faces, 6u);
+    EXPECT_TRUE(app.v->part(1).shown);
+    EXPECT_EQ(app.v->show_part(2, false).status, Status::OutOfRange);
+}
+
+// The parts list by touch: PART opens it, a tap on a name chooses the part (highlighted), a tap
+// on its box hides it (gone from the screen, not pickable), ISOL shows it alone, ALL shows all.
+TEST(Viewer, ThePartsListHidesShowsAndIsolatesByTouch) {
+    App app;
+    app.w = 480, app.h = 272, app.lines = 272, app.interface = true;
+    ASSERT_TRUE(app.create().ok());
+    ASSERT_TRUE(app.load(two_blocks()).ok());
+    app.run();
+    app.v->key('7'); // from the top: the blocks side by side
+    app.run();
+    const Core& core = *static_cast<const Core*>(app.v);
+    const module::Overlay& o = core.overlay();
+    auto tap = [&](int x, int y) {
+        app.v->touch(0, int16_t(x), int16_t(y), true);
+        app.v->touch(0, int16_t(x), int16_t(y), false);
+        app.run();
+    };
+    auto button = [&](Action a) {
+        for (int y = 0; y < app.h; ++y)
+            if (o.button_at(int16_t(app.w - 5), int16_t(y)) == a) return y + 5;
+        return -1;
+    };
+    const std::vector<Rgb565> both = app.screen();
+    const auto second = box_of(core, 1, app.w, app.h);
+    const int cx = (second[0] + second[2]) / 2, cy = (second[1] + second[3]) / 2;
+    tap(app.w - 20, button(Action::Parts));
+    ASSERT_TRUE(o.parts_open());
+    const module::Overlay::Rect panel = o.parts_panel();
+    EXPECT_LT(panel.x + panel.w, second[0]) << "the list leaves the second block in view";
+    const int row1 = panel.y + module::Overlay::kRow + module::Overlay::kRow + module::Overlay::kRow / 2; // the second row
+    tap(60, row1);
+    EXPECT_EQ(app.v->chosen_part(), 1u);
+    const Rgb565 magenta = app.screen()[size_t(cy) * app.w + cx];
+    EXPECT_NE(magenta, both[size_t(cy) * app.w + cx]) << "the chosen part is highlighted";
+    tap(10, row1); // its box: hidden
+    EXPECT_FALSE(app.v->part(1).shown);
+    const std::vector<Rgb565> hidden = app.screen();
+    EXPECT_NE(hidden[size_t(cy) * app.w + cx], magenta);
+    app.v->touch(0, int16_t(cx), int16_t(cy), true);
+    app.v->touch(0, int16_t(cx), int16_t(cy), false);
+    EXPECT_FALSE(app.last(Event::Kind::Picked)->pick.hit) << "a hidden part is not picked";
+    // ISOL with the first part chosen: the second stays hidden, ALL brings it back.
+    tap(60, row1 - module::Overlay::kRow);
+    EXPECT_EQ(app.v->chosen_part(), 0u);
+    tap(panel.w / 2, panel.y + panel.h - 5);
+    EXPECT_TRUE(app.v->part(0).shown);
+    EXPECT_FALSE(app.v->part(1).shown);
+    tap(panel.w - 5, panel.y + panel.h - 5);
+    EXPECT_TRUE(app.v->part(1).shown);
+    tap(60, row1 - module::Overlay::kRow); // a second tap on the chosen name lets it go
+    EXPECT_EQ(app.v->chosen_part(), ~0u);
+    tap(app.w - 20, button(Action::Parts));
+    EXPECT_FALSE(o.parts_open());
+    EXPECT_EQ(app.screen(), both) << "everything as it was";
+}
+
+// A section: across x through the middle cuts the second block away; moved into the first, the
+// inside of the cut solid shows in the cap colour; the slider moves the plane; the cut part is
+// not picked.
+TEST(Viewer, ASectionCutsTheModelAndShowsTheSolidsInside) {
+    App app;
+    app.w = 480, app.h = 272, app.lines = 272, app.interface = true;
+    ASSERT_TRUE(app.create().ok());
+    ASSERT_TRUE(app.load(two_blocks()).ok());
+    app.run();
+    app.v->key('7');
+    app.run();
+    const Core& core = *static_cast<const Core*>(app.v);
+    const std::vector<Rgb565> whole = app.screen();
+    const auto second = box_of(core, 1, app.w, app.h);
+    const int cx = (second[0] + second[2]) / 2, cy = (second[1] + second[3]) / 2;
+    app.v->key('c'); // no face picked: across x, through the model's middle (x = 125)
+    app.run();
+    ASSERT_TRUE(app.v->section().on);
+    EXPECT_FLOAT_EQ(app.v->section().normal[0], 1.0f);
+    EXPECT_NEAR(app.v->section().offset_mm, 125.0f, 0.01f);
+    const std::vector<Rgb565> cut = app.screen();
+    EXPECT_NE(cut[size_t(cy) * app.w + cx], whole[size_t(cy) * app.w + cx]) << "the second block is cut away";
+    app.v->touch(0, int16_t(cx), int16_t(cy), true);
+    app.v->touch(0, int16_t(cx), int16_t(cy), false);
+    EXPECT_FALSE(app.last(Event::Kind::Picked)->pick.hit) << "what is cut away is not picked";
+    // Into the first block, seen from the isometric view: its inside in the cap colour.
+    app.v->set_section({true, {1, 0, 0}, 50});
+    app.v->key('0');
+    app.run();
+    const Rgb565 cap = hal::rgb565(205, 70, 60); // painter.cpp's kCap, flat
+    const std::vector<Rgb565> iso = app.screen();
+    const long caps = std::count(iso.begin(), iso.end(), cap);
+    EXPECT_GT(caps, 500) << "the inside of the cut block";
+    // The slider: a finger on it at the top puts the plane at the model's far end, dragged to
+    // the bottom at its near end.
+    const module::Overlay::Rect s = core.overlay().slider();
+    ASSERT_GT(s.w, 0);
+    app.v->touch(0, int16_t(s.x + s.w / 2), int16_t(s.y + 2), true);
+    const float hi = app.v->section().offset_mm;
+    app.v->touch(0, int16_t(s.x + s.w / 2), int16_t(s.y + s.h - 2), true);
+    app.v->touch(0, int16_t(s.x + s.w / 2), int16_t(s.y + s.h - 2), false);
+    const float lo = app.v->section().offset_mm;
+    const float radius = 0.5f * std::sqrt(250.0f * 250 + 100 * 100 + 100 * 100);
+    EXPECT_NEAR(hi, 125 + radius, 0.5f);
+    EXPECT_NEAR(lo, 125 - radius, 0.5f);
+    EXPECT_EQ(app.count(Event::Kind::Picked), 1) << "a slide is no tap";
+    // Off again (after a plane of the application's, c turns it off).
+    app.v->key('c');
+    app.run();
+    EXPECT_FALSE(app.v->section().on);
+    app.v->key('7');
+    app.run();
+    EXPECT_EQ(app.screen(), whole);
+}
+
+// See-through: the chosen part solid, the others screen-door (every other pixel shows what is
+// behind them).
+TEST(Viewer, SeeThroughDrawsTheOtherPartsAsAScreenDoor) {
+    App app;
+    app.w = 480, app.h = 272, app.lines = 272;
+    ASSERT_TRUE(app.create().ok());
+    ASSERT_TRUE(app.load(two_blocks()).ok());
+    app.run();
+    app.v->key('7');
+    app.run();
+    const Core& core = *static_cast<const Core*>(app.v);
+    const std::vector<Rgb565> solid = app.screen();
+    ASSERT_TRUE(app.v->show_part(1, false).ok());
+    app.run();
+    const std::vector<Rgb565> without = app.screen();
+    ASSERT_TRUE(app.v->show_part(1, true).ok());
+    app.v->choose_part(0);
+    app.v->set_display_mode(DisplayMode::SeeThrough);
+    app.run();
+    const std::vector<Rgb565> door = app.screen();
+    // Inside the top face and inside the bottom face's outline seen through it (the edges, lines,
+    // are drawn whole).
+    const auto top = box_of(core, 1, app.w, app.h, 5), bottom = box_of(core, 1, app.w, app.h, 4);
+    const std::array<int, 4> b = {std::max(top[0], bottom[0]), std::max(top[1], bottom[1]), std::min(top[2], bottom[2]),
+                                  std::min(top[3], bottom[3])};
+    int face = 0, behind = 0, n = 0;
+    for (int y = b[1] + 3; y < b[3] - 3; ++y) {
+        for (int x = b[0] + 3; x < b[2] - 3; ++x, ++n) {
+            const size_t i = size_t(y) * app.w + x;
+            face += door[i] == solid[i];
+            behind += door[i] == without[i];
+            EXPECT_EQ(door[i], ((x ^ y) & 1) ? without[i] : solid[i]) << x << "," << y;
+            if (HasFailure()) return;
+        }
+    }
+    EXPECT_GT(n, 1000);
+    EXPECT_NEAR(double(face) / n, 0.5, 0.02);
+    EXPECT_NEAR(double(behind) / n, 0.5, 0.02);
 }

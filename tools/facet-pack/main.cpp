@@ -75,7 +75,14 @@ int check(const char* path) {
     std::printf("%s: valid pack, %zu faces, %zu edges, %zu shells, %zu instances, %u bytes", path, pack.faces().size(),
                 pack.edges().size(), pack.shells().size(), pack.instances().size(), file.bytes);
     if (file.deflated) std::printf(" (deflated file: %u bytes)", file.file_bytes);
-    std::printf("\n");
+    std::printf("\n  model \"%s\"\n", pack.model_name());
+    // The parts list the viewer shows: each instance, its part's name and its own.
+    for (uint32_t i = 0; i < pack.instances().size(); ++i) {
+        const uint32_t s = pack.instances()[i].shell;
+        std::printf("  instance %u: shell %u \"%s\"", i, s, pack.shell_name(s));
+        if (*pack.instance_name(i)) std::printf(" as \"%s\"", pack.instance_name(i));
+        std::printf("\n");
+    }
     return 0;
 }
 
@@ -132,12 +139,13 @@ int main(int argc, char** argv) {
     }
     geom::PackWriter writer;
     writer.set_source_unit_mm(model.unit_mm);
+    writer.set_model_name(model.name);
     packer::Stats stats;
     packer::Packer packer(writer, model.colours, stats);
     uint32_t count = 0;
     for (const packer::Part& part : model.parts) {
         try {
-            packer.add_occurrence(part.shape, part.closed);
+            packer.add_occurrence(part.shape, part.closed, part.name, part.instance);
         } catch (const Standard_Failure& f) {
             return die(std::string(in) + ": Open CASCADE failed on a part: " + f.GetMessageString());
         }

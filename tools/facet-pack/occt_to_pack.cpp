@@ -495,7 +495,7 @@ uint32_t Packer::add_prototype(const TopoDS_Shape& shape, bool closed) {
     return w_.add_shell({first_face, faces, colour_of(shape), closed ? 1u : 0u});
 }
 
-void Packer::add_occurrence(const TopoDS_Shape& shape, bool closed) {
+void Packer::add_occurrence(const TopoDS_Shape& shape, bool closed, const std::string& name, const std::string& instance) {
     const void* key = shape.TShape().get();
     uint32_t shell;
     auto it = prototypes_.find(key);
@@ -503,6 +503,7 @@ void Packer::add_occurrence(const TopoDS_Shape& shape, bool closed) {
         shell = it->second;
     } else {
         shell = add_prototype(shape.Located(TopLoc_Location()), closed);
+        w_.name_shell(shell, name);
         prototypes_[key] = shell;
         prototypes.push_back(shape.Located(TopLoc_Location()));
         if (closed) ++stats_.solids;
@@ -512,7 +513,7 @@ void Packer::add_occurrence(const TopoDS_Shape& shape, bool closed) {
     pack::Instance inst{shell, {}};
     for (int r = 1; r <= 3; ++r)
         for (int c = 1; c <= 4; ++c) inst.m[(r - 1) * 4 + (c - 1)] = float(t.Value(r, c));
-    w_.add_instance(inst);
+    w_.name_instance(w_.add_instance(inst), instance);
     ++stats_.instances;
 }
 

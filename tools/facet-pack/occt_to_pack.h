@@ -25,7 +25,10 @@ public:
 
     // Adds one shell (a solid's, or a surface model's) placed by its location, sharing the
     // geometry of earlier occurrences of the same shell.
-    void add_occurrence(const TopoDS_Shape& shell_or_solid, bool closed);
+    // The shell is named after its part (the first occurrence's name), the instance after the
+    // occurrence (names from the file; "" for none).
+    void add_occurrence(const TopoDS_Shape& shell_or_solid, bool closed, const std::string& name = "",
+                        const std::string& instance = "");
 
     // Every packed face, in pack order (prototype coordinates): for measuring a mesh against
     // the exact surfaces.

@@ -40,11 +40,14 @@
 #include <XCAFDoc_DocumentTool.hxx>
 #include <XCAFDoc_ShapeTool.hxx>
 #include <XSControl_WorkSession.hxx>
+#include <TDataStd_Name.hxx>
+#include <TopLoc_Location.hxx>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <unordered_set>
 
 namespace facet::packer {
@@ -234,6 +237,72 @@ float guessed_unit_mm(UnitGuess g, double diagonal) {
     return diagonal < 1.0 ? 1000.0f : 1.0f;
 }
 
+// A label's name as UTF-8 ("" for none, and for the "=>[0:1:1:2]" Open CASCADE gives
+// occurrences the file leaves unnamed).
+std::string label_name(const TDF_Label& label) {
+    Handle(TDataStd_Name) attr;
+    if (!label.FindAttribute(TDataStd_Name::GetID(), attr)) return "";
+    const TCollection_ExtendedString& text = attr->Get();
+    std::string utf8(size_t(text.LengthOfCString()) + 1, '\0');
+    Standard_PCharacter out = utf8.data();
+    utf8.resize(size_t(text.ToUTF8CString(out)));
+    while (!utf8.empty() && (utf8.back() == ' ' || utf8.back() == '\0')) utf8.pop_back();
+    if (utf8.rfind("=>", 0) == 0) return "";
+    return utf8;
+}
+
+// Where each solid, shell and face of the assembly sits and whose it is: the XCAF tree walked
+// from the free shapes, placements composed on the way down.
+struct Named {
+    gp_Trsf placement;
+    std::string name, instance;
+};
+using NameMap = std::multimap<const void*, Named>; // by TShape
+
+void walk(const Handle(XCAFDoc_ShapeTool)& shapes, const TDF_Label& label, const TopLoc_Location& at,
+          const std::string& instance, NameMap& names, int depth) {
+    if (depth > 32) return; // a malformed file's cycle
+    if (XCAFDoc_ShapeTool::IsAssembly(label)) {
+        TDF_LabelSequence components;
+        XCAFDoc_ShapeTool::GetComponents(label, components);
+        for (int i = 1; i <= components.Length(); ++i) {
+            TDF_Label part;
+            if (!XCAFDoc_ShapeTool::GetReferredShape(components.Value(i), part)) continue;
+            walk(shapes, part, at * XCAFDoc_ShapeTool::GetLocation(components.Value(i)), label_name(components.Value(i)), names,
+                 depth + 1);
+        }
+        return;
+    }
+    const TopoDS_Shape shape = XCAFDoc_ShapeTool::GetShape(label);
+    if (shape.IsNull()) return;
+    const TopoDS_Shape placed = shape.Moved(at);
+    const std::string name = label_name(label);
+    for (TopAbs_ShapeEnum kind : {TopAbs_SOLID, TopAbs_SHELL, TopAbs_FACE}) {
+        for (TopExp_Explorer x(placed, kind); x.More(); x.Next()) {
+            names.insert({x.Current().TShape().get(), {x.Current().Location().Transformation(), name, instance}});
+        }
+    }
+}
+
+// The names of a part found where the walk put it (its TShape at the same placement), or of
+// any occurrence of its TShape.
+void name_part(const NameMap& names, Part& p) {
+    const auto [lo, hi] = names.equal_range(p.shape.TShape().get());
+    if (lo == hi) return;
+    const gp_Trsf t = p.shape.Location().Transformation();
+    auto best = lo;
+    double best_d = 1e300;
+    for (auto it = lo; it != hi; ++it) {
+        double d = 0;
+        for (int r = 1; r <= 3; ++r)
+            for (int c = 1; c <= 4; ++c) d += std::abs(it->second.placement.Value(r, c) - t.Value(r, c));
+        if (d < best_d) best_d = d, best = it;
+    }
+    p.name = best->second.name;
+    p.instance = best->second.instance;
+}
+
+
 } // namespace
 
 void progress(const char* what) {
@@ -279,11 +348,21 @@ bool read_step(const std::string& in, StepModel& model, std::string& error, bool
     model.colours = XCAFDoc_DocumentTool::ColorTool(doc->Main());
     model.unit_mm = unit_mm(reader);
     std::vector<TopoDS_Shape> top;
+    NameMap names;
     if (reader.Transfer(doc)) {
         TDF_LabelSequence roots;
         shapes->GetFreeShapes(roots);
-        for (int r = 1; r <= roots.Length(); ++r) top.push_back(shapes->GetShape(roots.Value(r)));
+        for (int r = 1; r <= roots.Length(); ++r) {
+            top.push_back(shapes->GetShape(roots.Value(r)));
+            walk(shapes, roots.Value(r), XCAFDoc_ShapeTool::GetLocation(roots.Value(r)), "", names, 0);
+        }
+        if (roots.Length() == 1) model.name = label_name(roots.Value(1));
         account_faces(reader.ChangeReader(), top, model);
+    }
+    if (model.name.empty()) { // the file's stem
+        const size_t slash = in.find_last_of('/'), start = slash == std::string::npos ? 0 : slash + 1;
+        const size_t dot = in.find_last_of('.');
+        model.name = in.substr(start, dot == std::string::npos || dot < start ? std::string::npos : dot - start);
     }
     if (top.empty()) {
         // Files without PRODUCT structure (early AP203 writers) give the assembly-aware reader
@@ -338,10 +417,11 @@ bool read_step(const std::string& in, StepModel& model, std::string& error, bool
     say("healing");
     for (const TopoDS_Shape& root : top) {
         std::vector<Part> raw;
-        for (TopExp_Explorer x(root, TopAbs_SOLID); x.More(); x.Next()) raw.push_back({x.Current(), true});
-        for (TopExp_Explorer x(root, TopAbs_SHELL, TopAbs_SOLID); x.More(); x.Next()) raw.push_back({x.Current(), false});
-        for (TopExp_Explorer x(root, TopAbs_FACE, TopAbs_SHELL); x.More(); x.Next()) raw.push_back({x.Current(), false});
+        for (TopExp_Explorer x(root, TopAbs_SOLID); x.More(); x.Next()) raw.push_back({x.Current(), true, {}, {}});
+        for (TopExp_Explorer x(root, TopAbs_SHELL, TopAbs_SOLID); x.More(); x.Next()) raw.push_back({x.Current(), false, {}, {}});
+        for (TopExp_Explorer x(root, TopAbs_FACE, TopAbs_SHELL); x.More(); x.Next()) raw.push_back({x.Current(), false, {}, {}});
         for (Part& p : raw) {
+            name_part(names, p); // before healing: the healed shape is a new one
             try {
                 ShapeFix_Shape fix(p.shape);
                 if (most_wires(p.shape) >= kManyWires) skip_quadratic_fixes(fix);

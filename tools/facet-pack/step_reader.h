@@ -11,6 +11,8 @@ namespace facet::packer {
 struct Part {
     TopoDS_Shape shape; // a solid, an open shell or a lone face, healed, with its placement
     bool closed;        // a solid whose faces share every edge (after healing and sewing)
+    std::string name;     // the part (product) that holds it, from the file ("" if unnamed)
+    std::string instance; // its occurrence in the assembly, when the file names it
 };
 
 struct StepModel {
@@ -24,6 +26,7 @@ struct StepModel {
     uint32_t face_entities = 0;
     std::vector<std::string> lost;
     uint32_t faces_outside = 0; // faces of shells no shape uses (construction planes): left out
+    std::string name;                    // the model's: its top product's (or the file's stem)
     std::string notes;                   // how the file was read when it was out of the ordinary (no product, no unit)
 };
 

@@ -35,6 +35,10 @@ public:
     std::span<const pack::Shell> shells() const { return shells_; }
     std::span<const pack::Instance> instances() const { return instances_; }
     std::span<const pack::Colour> colours() const { return colours_; }
+    // Names from the STEP file (pack_format.h): "" when the pack has none.
+    const char* model_name() const { return names_.empty() ? "" : names_.data(); }
+    const char* shell_name(uint32_t s) const { return name_at(shell_names_, s); }
+    const char* instance_name(uint32_t i) const { return name_at(instance_names_, i); }
 
     // The pcurve of coedge c (one of face F's) on F's surface; kNoIndex if F has none.
     uint32_t pcurve_of(const pack::Face& F, uint32_t c) const {
@@ -49,6 +53,10 @@ public:
 private:
     Result fail(const char* what, uint32_t section, uint32_t index);
     Result check_records();
+    Result check_names();
+    const char* name_at(std::span<const uint32_t> table, uint32_t i) const {
+        return i < table.size() && table[i] != pack::kNoIndex ? names_.data() + table[i] : "";
+    }
 
     const pack::Header* header_ = nullptr;
     std::span<const float> floats_;
@@ -62,6 +70,8 @@ private:
     std::span<const pack::Shell> shells_;
     std::span<const pack::Instance> instances_;
     std::span<const pack::Colour> colours_;
+    std::span<const char> names_;
+    std::span<const uint32_t> shell_names_, instance_names_;
 };
 
 // Expected parameter count of a surface or curve from its head (B-splines) or type; 0 if the

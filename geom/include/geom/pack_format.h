@@ -48,7 +48,17 @@ enum class SectionId : uint32_t {
     Shells = 10,   // a solid's (or a surface model's) faces
     Instances = 11,
     Colours = 12,  // RGBA8
+    // Names (optional: a pack without them reads as before; a reader that does not know them
+    // skips them). Names holds UTF-8 strings, each ended by a 0 byte, padded with 0 bytes to a
+    // multiple of 4; the first is the model's own name (the STEP file's top product), possibly
+    // empty. ShellNames and InstanceNames give, per shell and per instance, the byte in Names
+    // where its name starts, or kNoIndex: a shell is named after the part (product) that holds
+    // it, an instance after its occurrence in the assembly (when the file names it).
+    Names = 13,
+    ShellNames = 14,
+    InstanceNames = 15,
 };
+constexpr uint32_t kMaxNameBytes = 255; // a longer name is cut (on a UTF-8 boundary) by the packer
 
 struct SectionEntry {
     uint32_t id;           // SectionId

@@ -136,6 +136,7 @@ enum Key : uint32_t { KeyLeft = 0x100, KeyRight, KeyUp, KeyDown, KeyPageUp, KeyP
 enum class Action : uint8_t {
     None, TurnLeft, TurnRight, TiltUp, TiltDown, ZoomIn, ZoomOut, PanLeft, PanRight, PanUp, PanDown, Fit,
     Coarser, Finer,
+    NextDetail, // the level of detail: default -> finer -> finest -> coarser -> default
     // Standard views (a z-up model: front looks along +y), each framed, with a short glide.
     ViewFront, ViewBack, ViewRight, ViewLeft, ViewTop, ViewBottom, ViewIso,
     Projection, // perspective <-> parallel (orthographic)
@@ -143,6 +144,14 @@ enum class Action : uint8_t {
     NextView,        // isometric -> front -> right -> top -> back -> left -> bottom -> ...
     Measure,         // measuring on/off: taps then pick two faces for their distance and angle
     Help,            // the help panel on/off
+    Section,         // the section plane: off -> through the picked planar face (when one is
+                     // picked) -> across x -> y -> z -> off; the side its normal points to is cut away
+    SectionIn, SectionOut, // move the plane along its normal by 1/32 of the model, back / forward
+    Parts,           // the parts list on/off (tap a name to choose it, its box to hide or show it)
+    NextPart,        // choose the next part of the list (highlighted)
+    HidePart,        // hide the chosen part
+    IsolatePart,     // show the chosen part alone
+    ShowAllParts,
 };
 
 // How the model is drawn.
@@ -151,6 +160,8 @@ enum class DisplayMode : uint8_t {
     Shaded,      // shaded faces only
     Wireframe,   // every B-rep edge, hidden ones too; no faces
     HiddenLine,  // the edges a viewer sees, on white faces (a drawing's look)
+    SeeThrough,  // the chosen part (or the picked face's) solid, the others screen-door (every
+                 // other pixel), so what they hide shows through
 };
 struct KeyBinding {
     uint32_t key;
@@ -204,6 +215,31 @@ public:
     // and angle): how many, up to 3, into lines[] (valid until the next input or load).
     uint32_t measurement(const char* lines[3]) const;
     void set_display_mode(DisplayMode mode);
+
+    // The parts: the pack's instances, each a part of the assembly placed once, in pack order,
+    // named after the STEP file's product (and occurrence, when the file names it).
+    struct Part {
+        const char *name, *instance; // the part's and the occurrence's own ("" when the file names none)
+        uint32_t faces;
+        bool shown;
+    };
+    uint32_t part_count() const;
+    Part part(uint32_t index) const;
+    // Hide or show a part (OutOfRange past the parts, or past the first kMaxHideableParts).
+    Result show_part(uint32_t index, bool shown);
+    static constexpr uint32_t kMaxHideableParts = 4096;
+    void choose_part(uint32_t index); // highlighted (see-through mode: drawn solid); ~0u: none
+    uint32_t chosen_part() const;
+    const char* model_name() const; // the STEP file's top product (or the file's name)
+
+    // The section plane: normal . p = offset_mm (the placed model's coordinates, mm); the side
+    // the normal points to is cut away, and a solid's inside shows in a colour of its own.
+    struct SectionPlane {
+        bool on;
+        float normal[3], offset_mm; // normal: unit length
+    };
+    SectionPlane section() const;
+    void set_section(const SectionPlane& plane);
 
 private:
     Viewer() = default; // lives in the workspace (create())

@@ -70,6 +70,9 @@ public:
     const Target& target() const { return t_; }
 
     void clear_depth(); // the band's depth: all far
+    // Screen-door transparency: triangles then cover every other pixel (a checkerboard, the
+    // same on every band), so what lies behind shows through the rest. Lines are not affected.
+    void set_stipple(bool on) { stipple_ = on; }
     // Draws one triangle coloured from `palette`. Front faces are counter-clockwise as seen
     // on the screen. OutOfRange (nothing drawn) if a vertex is outside the guard band.
     Status draw(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, const Palette& palette,
@@ -98,6 +101,7 @@ private:
     static constexpr int kAttributes = 2; // depth, shade
 
     const Palette* palette_ = nullptr; // the triangle being drawn's
+    bool stipple_ = false;
     Target t_;
 };
 
