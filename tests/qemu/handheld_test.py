@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The handheld's features in a scripted QEMU session on versatilepb (640x480), against the
 desktop simulator running the same script (the module's own host build): the isometric view,
-hidden-line mode and a picked face, each screenshot pixel-identical but for the status bar's
+hidden-line mode, a section moved by its slider, the parts list and a picked face, each screenshot pixel-identical but for the status bar's
 frame time (each shows its own clock); the picked face's exact values as facet-measure gives
 them; every frame of the session within the frame budget (the viewer's budget rule).
 
@@ -21,9 +21,24 @@ import board as boards  # noqa: E402
 import img  # noqa: E402
 from viewer_test import analyse, frame_budget  # noqa: E402
 
-SESSION = ['keys 0', 'keys !shot views\\n', 'keys mmm', 'keys !shot hidden-line\\n', 'keys m',
-           'mouse 0 0 left', 'keys !shot measure\\n', 'keys q']
-SHOTS = ['views', 'hidden-line', 'measure']
+# The isometric view; hidden line; a section across x, its slider dragged with the mouse; the
+# parts list with the part chosen; a picked face (versatilepb: 640x480, the slider at x 556-583,
+# the list's first row at y 32-51). The pointer is put somewhere from the top left corner, in
+# moves of at most 250 (QEMU's PS/2 mouse holds a few packets of at most 255 each).
+def to(x, y):
+    entries = ['move -250 -250'] * 3
+    while x or y:
+        dx, dy = min(x, 250), min(y, 250)
+        entries.append(f'move {dx} {dy}')
+        x, y = x - dx, y - dy
+    return entries
+
+
+SESSION = (['keys 0', 'keys !shot views\\n', 'keys mmm', 'keys !shot hidden-line\\n', 'keys mm', 'keys c'] + to(570, 240) +
+           ['mouse 0 -60', 'keys !shot section\\n', 'keys ccc', 'keys p'] + to(100, 42) +
+           ['mouse 0 0 left', 'keys !shot parts\\n', 'mouse 0 0 left', 'keys p'] + to(380, 210) +
+           ['mouse 0 0 left', 'keys !shot measure\\n', 'keys q'])
+SHOTS = ['views', 'hidden-line', 'section', 'parts', 'measure']
 
 
 def main():

@@ -15,7 +15,8 @@ What it does:
   * --type TEXT: types TEXT into the UART at boot (C-style escapes allowed, e.g. 'r\\n');
   * --send ENTRY (repeatable): a scripted session; each time the firmware prints '@idle' the
     next entry is sent: 'keys TEXT' types TEXT (escapes allowed), 'mouse DX DY [BUTTON]' drags
-    the PS/2 mouse over QMP (button left/right/middle held during the move);
+    the PS/2 mouse over QMP (button left/right/middle held during the move), 'move DX DY' moves
+    it with no button held;
   * --virtual-clock: QEMU's -icount shift=0: the guest's timers count executed instructions
     (1 ns each), so a firmware's clock is deterministic (its time-sliced steps repeatable);
   * --icount: loads the facet-icount TCG plugin and names its numbered regions from the
@@ -116,7 +117,7 @@ def main():
     ap.add_argument('--load', action='append', default=[], metavar='FILE@ADDR')
     ap.add_argument('--type', default='', help='text typed into the UART at boot')
     ap.add_argument('--send', action='append', default=[], metavar='ENTRY',
-                    help="sent at each '@idle': 'keys TEXT' or 'mouse DX DY [left|right|middle]'")
+                    help="sent at each '@idle': 'keys TEXT', 'mouse DX DY [left|right|middle]' or 'move DX DY'")
     ap.add_argument('--timeout', type=float, default=120)
     ap.add_argument('--icount', action='store_true', help='count instructions between markers')
     ap.add_argument('--virtual-clock', action='store_true',
@@ -266,6 +267,16 @@ def main():
                         qmp.command('input-send-event', events=[press(False)])
                     except (OSError, RuntimeError, IndexError, ValueError) as e:
                         report['failures'].append(f'mouse {rest}: {e}')
+                elif kind == 'move':  # the pointer alone, no button held
+                    p = rest.split()
+                    try:
+                        if qmp is None:
+                            qmp = Qmp(qmp_path)
+                        qmp.command('input-send-event', events=[
+                            {'type': 'rel', 'data': {'axis': 'x', 'value': int(p[0])}},
+                            {'type': 'rel', 'data': {'axis': 'y', 'value': int(p[1])}}])
+                    except (OSError, RuntimeError, IndexError, ValueError) as e:
+                        report['failures'].append(f'move {rest}: {e}')
                 else:
                     report['failures'].append(f'unknown script entry: {entry}')
                 if enq:

@@ -20,6 +20,7 @@
 #include <Message_Printer.hxx>
 #include <Quantity_Color.hxx>
 #include <STEPCAFControl_Writer.hxx>
+#include <TDataStd_Name.hxx>
 #include <TDF_Label.hxx>
 #include <TDocStd_Document.hxx>
 #include <XCAFApp_Application.hxx>
@@ -95,6 +96,7 @@ int main(int argc, char** argv) {
     Handle(XCAFDoc_ShapeTool) shapes = XCAFDoc_DocumentTool::ShapeTool(doc->Main());
     Handle(XCAFDoc_ColorTool) colours = XCAFDoc_DocumentTool::ColorTool(doc->Main());
     const TDF_Label label = shapes->AddShape(part, false);
+    TDataStd_Name::Set(label, "facet sample block"); // the product's name: the pack's model and part name
     colours->SetColor(label, Quantity_Color(0.72, 0.74, 0.78, Quantity_TOC_sRGB), XCAFDoc_ColorSurf);
     for (TopExp_Explorer x(part, TopAbs_FACE); x.More(); x.Next()) {
         const TopoDS_Face face = TopoDS::Face(x.Current());
@@ -109,6 +111,7 @@ int main(int argc, char** argv) {
     }
     STEPCAFControl_Writer writer;
     writer.SetColorMode(true);
+    writer.SetNameMode(true);
     if (!writer.Transfer(doc, STEPControl_AsIs) || writer.Write(argv[1]) != IFSelect_RetDone) {
         std::fprintf(stderr, "facet-sample-model: cannot write %s\n", argv[1]);
         return 1;

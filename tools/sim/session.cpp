@@ -69,6 +69,10 @@ bool parse_entry(const std::string& entry, std::vector<Input>& out) {
         out.push_back(pointer(0, 0, 0));
         return true;
     }
+    if (std::sscanf(entry.c_str(), "move %d %d", &a, &b) == 2) { // the pointer, no button held
+        out.push_back(pointer(int16_t(a), int16_t(b), 0));
+        return true;
+    }
     if (entry == "click") {
         out.push_back(pointer(0, 0, 1));
         out.push_back(pointer(0, 0, 0));

@@ -13,6 +13,7 @@ namespace sim {
 // One step of a scripted session (tools/qemu/run.py's entries, and touch ones):
 //   keys TEXT            text (C escapes \n \r \\); "!shot NAME\n" takes a screenshot
 //   mouse DX DY [BUTTON] a drag with the button held (left, right, middle)
+//   move DX DY           the pointer moved, no button held
 //   click                a left click where the pointer is
 //   wheel N              N wheel clicks (> 0: zoom in)
 //   tap X Y              a finger down and up at (X, Y)
