@@ -338,7 +338,7 @@ void Core::command(const module::Command& c) {
     case Kind::Pan: camera_.pan_pixels(c.dx, c.dy, scene_.radius(), d.width, d.height); break;
     case Kind::Dolly: camera_.dolly(c.factor); break;
     case Kind::Pick: pick(c.x, c.y); return;
-    case Kind::Slide: section_slide(c.y); return;
+    case Kind::Slide: section_at(presenter_.overlay().slider_at(c.y), false); return;
     }
     view_changed();
 }

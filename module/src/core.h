@@ -108,8 +108,7 @@ private:
     void show_measurement();
     void focus(); // the painter's chosen part and see-through focus
     void section_next();
-    void section_move(float fraction);
-    void section_slide(int16_t y);
+    void section_at(float at, bool relative);
     void section_changed();
     void section_range(const module::Section& s, float& lo, float& hi) const;
     bool tap_parts(int16_t x, int16_t y); // a tap on the parts list (true: it was the list's)

@@ -164,13 +164,11 @@ void Overlay::status(const render::Target& t, const StatusInfo& s) const {
     // "faces 87/87  1594 tri  lod 0.504 mm  shaded+edges  persp", and the frame's cost in its
     // own field at the right end (the one value that differs between a board and the host).
     const int64_t tol = int64_t(s.tolerance_mm * 1000 + 0.5f);
-    // The model's name first (its first 16 characters; ASCII: the font has no others).
+    // The model's name first (its first 16 characters; the font draws any but ASCII as '?').
     char name[17];
     uint32_t k = 0;
-    for (const char* c = s.name; *c && k < 16; ++c) {
-        if ((uint8_t(*c) & 0xC0) == 0x80) continue; // the rest of a UTF-8 character
-        name[k++] = uint8_t(*c) >= 32 && uint8_t(*c) < 127 ? *c : '?';
-    }
+    for (const char* c = s.name; *c && k < 16; ++c)
+        if ((uint8_t(*c) & 0xC0) != 0x80) name[k++] = *c; // a UTF-8 character's first byte only
     name[k] = 0;
     format(text, sizeof text, "{}{}faces {}/{}  {} tri  lod {} mm  {}  {}", name, k ? "  " : "", s.finished, s.total, s.triangles,
            fixed(tol, 3), mode_name(s.mode), s.ortho ? "parallel" : "persp");
@@ -260,8 +258,6 @@ void Overlay::parts_list(const render::Target& t) const {
         format(text, sizeof text, "{} {}", part + 1, *name ? name : "(unnamed)");
         const int32_t room = (p.w - 26) / render::kCellWidth;
         if (room < int32_t(sizeof text)) text[room > 0 ? room : 0] = 0;
-        for (char* c = text; *c; ++c)
-            if (uint8_t(*c) < 32 || uint8_t(*c) >= 127) *c = '?';
         render::draw_text(t, p.x + 22, y + (kRow - render::kGlyphHeight) / 2, text, shown ? kText : kDim);
     }
     static constexpr const char* kLabels[3] = {"HIDE", "ISOL", "ALL"};

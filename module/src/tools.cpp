@@ -55,23 +55,15 @@ void Core::section_next() {
     section_changed();
 }
 
-void Core::section_move(float fraction) {
+// The plane moved to `at` of its range (0: the near end, 1: the far end; clamped), or by
+// `by` of it from where it is.
+void Core::section_at(float at, bool relative) {
     module::Section s = camera_.section();
     if (!s.on) return;
     float lo, hi;
     section_range(s, lo, hi);
-    s.offset += fraction * (hi - lo);
-    s.offset = s.offset < lo ? lo : s.offset > hi ? hi : s.offset;
-    camera_.set_section(s);
-    section_changed();
-}
-
-void Core::section_slide(int16_t y) {
-    module::Section s = camera_.section();
-    if (!s.on) return;
-    float lo, hi;
-    section_range(s, lo, hi);
-    s.offset = lo + presenter_.overlay().slider_at(y) * (hi - lo);
+    if (relative && hi > lo) at += (s.offset - lo) / (hi - lo);
+    s.offset = lo + (at < 0 ? 0 : at > 1 ? 1 : at) * (hi - lo);
     camera_.set_section(s);
     section_changed();
 }
@@ -111,8 +103,8 @@ void Core::tool(Action a) {
     const uint32_t parts = uint32_t(scene_.pack().instances().size());
     switch (a) {
     case Action::Section: section_next(); return;
-    case Action::SectionIn: section_move(-kStep); return;
-    case Action::SectionOut: section_move(kStep); return;
+    case Action::SectionIn: section_at(-kStep, true); return;
+    case Action::SectionOut: section_at(kStep, true); return;
     case Action::Parts:
         presenter_.overlay().set_parts(!presenter_.overlay().parts_open());
         presenter_.overlay().set_chosen(chosen_part_);

@@ -131,6 +131,18 @@ struct App {
     void done() {
         for (; pending; --pending) v->flush_done();
     }
+    // A finger down and up at (x, y), and what follows.
+    void tap(int x, int y) {
+        v->touch(0, int16_t(x), int16_t(y), true);
+        v->touch(0, int16_t(x), int16_t(y), false);
+        run();
+    }
+    // A row inside the toolbar button of `a` (-1: none).
+    int button_row(const module::Overlay& o, Action a) const {
+        for (int y = 0; y < h; ++y)
+            if (o.button_at(int16_t(w - 5), int16_t(y)) == a) return y + 5;
+        return -1;
+    }
     std::vector<Rgb565> screen() const { return mode == Flush::Scanout ? std::vector<Rgb565>(shown, shown + size_t(w) * h) : panel; }
     Result load(const Bytes& pack_file) {
         file.assign(pack_file.size() / 4 + 1, 0);
@@ -557,16 +569,8 @@ TEST(Viewer, TheToolbarAndTheMeasurementPanelWorkByTouch) {
     app.run();
     const Core& core = *static_cast<const Core*>(app.v);
     const module::Overlay& o = core.overlay();
-    auto tap = [&](int x, int y) {
-        app.v->touch(0, int16_t(x), int16_t(y), true);
-        app.v->touch(0, int16_t(x), int16_t(y), false);
-        app.run();
-    };
-    auto button = [&](Action a) {
-        for (int y = 0; y < app.h; ++y)
-            if (o.button_at(int16_t(app.w - 5), int16_t(y)) == a) return y + 5;
-        return -1;
-    };
+    auto tap = [&](int x, int y) { app.tap(x, y); };
+    auto button = [&](Action a) { return app.button_row(o, a); };
     // MODE: the display mode changes, nothing is picked.
     const int picks = app.count(Event::Kind::Picked);
     tap(app.w - 20, button(Action::NextDisplayMode));
@@ -850,16 +854,8 @@ TEST(Viewer, ThePartsListHidesShowsAndIsolatesByTouch) {
     app.run();
     const Core& core = *static_cast<const Core*>(app.v);
     const module::Overlay& o = core.overlay();
-    auto tap = [&](int x, int y) {
-        app.v->touch(0, int16_t(x), int16_t(y), true);
-        app.v->touch(0, int16_t(x), int16_t(y), false);
-        app.run();
-    };
-    auto button = [&](Action a) {
-        for (int y = 0; y < app.h; ++y)
-            if (o.button_at(int16_t(app.w - 5), int16_t(y)) == a) return y + 5;
-        return -1;
-    };
+    auto tap = [&](int x, int y) { app.tap(x, y); };
+    auto button = [&](Action a) { return app.button_row(o, a); };
     const std::vector<Rgb565> both = app.screen();
     const auto second = box_of(core, 1, app.w, app.h);
     const int cx = (second[0] + second[2]) / 2, cy = (second[1] + second[3]) / 2;
