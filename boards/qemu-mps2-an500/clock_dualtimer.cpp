@@ -1,6 +1,7 @@
 #include "clock_dualtimer.h"
 
 #include "memory_map.h"
+#include "qemu/virtual_clock.h"
 
 namespace facet::mps2 {
 namespace {
@@ -23,6 +24,6 @@ uint64_t DualTimerClock::ticks() {
     return total_;
 }
 
-uint32_t DualTimerClock::ticks_per_second() const { return kSysClockHz; }
+uint32_t DualTimerClock::ticks_per_second() const { return qemu::target_ticks_per_second(kSysClockHz); }
 
 } // namespace facet::mps2

@@ -1,5 +1,6 @@
 #pragma once
-// CMSDK dual timer 1 as a free-running 32-bit down-counter at 25 MHz, polled.
+// CMSDK dual timer 1 as a free-running 32-bit down-counter at 25 MHz of QEMU's virtual
+// clock, polled; its ticks are reported in the 600 MHz target's time (qemu/virtual_clock.h).
 #include "hal/clock.h"
 
 namespace facet::mps2 {

@@ -82,7 +82,7 @@ Status capture(const char* name) {
     // Without a runner (no ACK within 2 s) the firmware carries on.
     versatilepb::Pl011Console& con = versatilepb::console;
     print(con, "@shot {}\n", name);
-    const uint64_t deadline = versatilepb::clock.ticks() + 2'000'000;
+    const uint64_t deadline = versatilepb::clock.ticks() + 2 * uint64_t(versatilepb::clock.ticks_per_second());
     while (versatilepb::clock.ticks() < deadline) {
         const int c = con.read_hardware();
         if (c == 0x06) return Status::Ok;

@@ -73,8 +73,8 @@ def frame_budget(triangles):
 def analyse(uart, regions):
     """Per pass: tessellation instructions (its pieces of sampling and faces); per full frame:
     its pieces' instructions (the last 'pieces' frame and overlay regions before its '@frame'
-    line: a frame the view outdated while it was drawn is not one), the overlay's part of them
-    and the mesh's triangles then."""
+    line: a frame the view outdated while it was drawn is not one), the overlay's part of them,
+    the mesh's triangles then and the cost the firmware's own clock gave it (us at 600 MHz)."""
     names = [r['name'] for r in regions]
     counts = [r['instructions'] for r in regions]
     tess, frames, tri_now, pass_no, i, pieces, overlay = {}, [], 0, -1, 0, [], []
@@ -92,7 +92,7 @@ def analyse(uart, regions):
             n = int(kv.get('pieces', 1))
             mine = pieces[-n:] if len(pieces) >= n else [None]
             frames.append({'instructions': None if None in mine else sum(mine), 'triangles': tri_now, 'pass': pass_no,
-                           'overlay': overlay[-1] if overlay else 0})
+                           'overlay': overlay[-1] if overlay else 0, 'cost_us': int(kv.get('cost_us', 0))})
             pieces, overlay = [], []
         elif w[0] == '@begin' and len(w) == 2:
             if i < len(names) and names[i] == w[1]:

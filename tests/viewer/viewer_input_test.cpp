@@ -511,6 +511,36 @@ TEST(Viewer, StandardViewsGlideAndADoubleTapFramesAFace) {
     EXPECT_NEAR((f[1] + f[3]) / 2, app.h / 2.0, 1.5);
 }
 
+// A standard view asked for while the model is still coming in (before its edges are sampled,
+// or between its faces) is where the view ends, framed: the framing at load and when the
+// faces are in keeps the direction the user chose.
+TEST(Viewer, AStandardViewAskedForDuringLoadingSticks) {
+    for (int steps : {0, 1, 3}) {
+        App app;
+        ASSERT_TRUE(app.create().ok());
+        ASSERT_TRUE(app.load(polygon_and_triangle(40)).ok());
+        for (int i = 0; i < steps; ++i) (void)app.v->step(0);
+        app.v->key('7'); // top
+        app.run();
+        const Core& core = *static_cast<const Core*>(app.v);
+        const module::View& v = core.camera().view();
+        EXPECT_NEAR(v.yaw * 57.29578f, 0, 0.01) << "after " << steps << " steps";
+        EXPECT_NEAR(v.pitch * 57.29578f, 0, 0.01) << "after " << steps << " steps";
+        // Framed: the model fills Framer::kFill of the screen's height, as a top view does.
+        const module::Transform t = core.camera().transform(core.scene(), 0, app.w, app.h);
+        int32_t top = INT32_MAX, b = INT32_MIN;
+        for (uint32_t face : {0u, 1u}) {
+            const module::FaceInfo& F = core.scene().face(face);
+            for (uint32_t k = 0; k < F.vertex_count; ++k) {
+                module::Projected p;
+                t.project(core.scene().vertices()[F.first_vertex + k].p, p);
+                top = std::min(top, p.s.y), b = std::max(b, p.s.y);
+            }
+        }
+        EXPECT_NEAR((b - top) / 16.0 / app.h, module::Framer::kFill, 0.02) << "after " << steps << " steps";
+    }
+}
+
 // The display modes, told apart by their pixels: the B-rep edges' colour, the faces' shading,
 // the white of hidden-line faces, the background through a wireframe.
 TEST(Viewer, DisplayModesDrawFacesAndEdgesAsNamed) {

@@ -17,8 +17,10 @@ What it does:
     next entry is sent: 'keys TEXT' types TEXT (escapes allowed), 'mouse DX DY [BUTTON]' drags
     the PS/2 mouse over QMP (button left/right/middle held during the move), 'move DX DY' moves
     it with no button held;
-  * --virtual-clock: QEMU's -icount shift=0: the guest's timers count executed instructions
-    (1 ns each), so a firmware's clock is deterministic (its time-sliced steps repeatable);
+  * runs the guest on a virtual clock, the board description's qemu.clock (-icount shift=0:
+    the guest's timers count executed instructions, 1 ns each), so a firmware's clock is
+    deterministic: its time-sliced steps repeatable, its frame times those of the 600 MHz
+    target (boards/qemu-common/include/qemu/virtual_clock.h); --real-clock runs on the host's;
   * --icount: loads the facet-icount TCG plugin and names its numbered regions from the
     firmware's '@begin NAME' lines; --limit N stops any region over N instructions;
     --budget NAME=N fails the run if region NAME used more than N instructions;
@@ -120,8 +122,8 @@ def main():
                     help="sent at each '@idle': 'keys TEXT', 'mouse DX DY [left|right|middle]' or 'move DX DY'")
     ap.add_argument('--timeout', type=float, default=120)
     ap.add_argument('--icount', action='store_true', help='count instructions between markers')
-    ap.add_argument('--virtual-clock', action='store_true',
-                    help="QEMU -icount shift=0: the guest's clock advances 1 ns per instruction")
+    ap.add_argument('--real-clock', action='store_true',
+                    help="the guest's timers on the host's clock, not the board's virtual clock")
     ap.add_argument('--limit', type=int, default=0, help='fail any region above N instructions')
     ap.add_argument('--budget', action='append', default=[], metavar='REGION=N')
     ap.add_argument('--profile', action='store_true',
@@ -150,8 +152,8 @@ def main():
     if args.window and not window:
         print('run.py: no display found; running headless', file=sys.stderr)
     cmd += [] if window else ['-display', 'none']
-    if args.virtual_clock:
-        cmd += ['-icount', 'shift=0,sleep=off']
+    if not args.real_clock:
+        cmd += boards.load(args.board)['qemu'].get('clock', [])
     for spec in args.load:
         path, _, addr = spec.rpartition('@')
         if not path or not addr:
