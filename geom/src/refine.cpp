@@ -20,10 +20,12 @@
 //     (never on a constrained edge: that is a chord of a B-rep edge, within the tolerance by
 //     edge sampling).
 #include "face_internal.h"
+#include "geom/patches.h"
 #include "geom/fmath.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #ifdef FACET_DEBUG_REFINE
 #include <cstdio>
 #endif
@@ -40,6 +42,10 @@ namespace {
 // at 0.01 mm: 75 before that rule).
 constexpr int kMaxRounds = 256;
 
+// Work units (about five thousand ARM926 instructions) of making one fixed-point patch of a
+// B-spline span (geom/patches.h): measured on the ARM926 for bicubic to quintic spans.
+constexpr uint32_t kConvertUnits = 40;
+
 // The deviation over a triangle, zero at its corners, is modelled as a cubic in the
 // barycentric coordinates l0, l1, l2 (exact for cubic deviations, which bend one way more than
 // the other along an edge: the peak is then off the middle):
@@ -52,7 +58,8 @@ constexpr int kMaxRounds = 256;
 constexpr int kSamples = 7; // a0 b0 a1 b1 a2 b2 c
 struct GridPoint {
     float l[3];
-    float w[kSamples]; // the model's value here = sum of w[s] * sample s
+    float w[kSamples];   // the model's value here = sum of w[s] * sample s
+    int16_t w32[kSamples]; // 32 w[s], whole numbers at the points (i, j, k) / 6
     uint8_t edges;
 };
 constexpr int kGridSteps = 6;
@@ -81,6 +88,14 @@ constexpr auto make_sixths() {
                 sum += (wa < 0 ? -wa : wa) + (wb < 0 ? -wb : wb);
             }
             g.w[6] = float(27 * cube);
+            // 32 w: 2 i j + i j (i - j) - i j k per edge sample (li = i/6 ...), 4 i j k for the centroid.
+            const int ijk[3] = {i, j, k};
+            for (int e = 0; e < 3; ++e) {
+                const int a = ijk[(e + 1) % 3], b = ijk[(e + 2) % 3];
+                g.w32[2 * e] = int16_t(2 * a * b + a * b * (a - b) - i * j * k);
+                g.w32[2 * e + 1] = int16_t(2 * a * b - a * b * (a - b) - i * j * k);
+            }
+            g.w32[6] = int16_t(4 * i * j * k);
             sum += 27 * cube;
             for (int e = 0; e < 3; ++e) g.l[e] = float(l[e]);
             g.edges = uint8_t((i == 0 ? 1 : 0) | (j == 0 ? 2 : 0) | (k == 0 ? 4 : 0));
@@ -91,6 +106,16 @@ constexpr auto make_sixths() {
     return t;
 }
 constexpr auto kSixths = make_sixths();
+constexpr bool whole_weights_agree() {
+    for (int p = 0; p < kGridPoints; ++p)
+        for (int s = 0; s < kSamples; ++s) {
+            const GridPoint& g = kSixths.p[p];
+            const double d = double(g.w32[s]) - 32.0 * double(g.w[s]);
+            if (d > 1e-4 || d < -1e-4) return false;
+        }
+    return true;
+}
+static_assert(whole_weights_agree(), "the grid's integer weights are 32 times its weights");
 
 uint64_t key_of(const Tri& T) {
     return uint64_t(T.v[0]) | uint64_t(T.v[1]) << 16 | uint64_t(T.v[2]) << 32 | uint64_t(1) << 48;
@@ -108,10 +133,12 @@ struct Context {
     float sin_a = 0, cos_a = 1; // cone
     const FaceScratch& sc;
     const cdt::Cdt<uint16_t>& cdt;
+    mutable PatchCache patches; // a B-spline's points in fixed point (its cache is the scratch's)
 
     Context(const Pack& p, const pack::Face& F, const Surface& s, float tol, const FaceScratch& scratch,
             const cdt::Cdt<uint16_t>& c)
-        : pack(p), S(s), type(SurfaceType(s.type)), q(p.floats().data() + s.params), tol2(tol * tol), sc(scratch), cdt(c) {
+        : pack(p), S(s), type(SurfaceType(s.type)), q(p.floats().data() + s.params), tol2(tol * tol), sc(scratch), cdt(c),
+          patches(p, s, scratch.patches) {
         // On a doubly curved surface the deviation is modelled from samples (exact only for
         // cubic deviations); free-form deviations are estimated along the normal. Aim 5%
         // under the tolerance there.
@@ -157,14 +184,18 @@ struct Context {
         }
     }
 
-    // Signed deviation of x (the triangle's point at parameters uv) from a free-form surface:
-    // from the surface point at uv, along the triangle's unit normal n (near the surface's
-    // where it matters, and no derivatives to evaluate).
-    float freeform_error(Vec3 x, Vec2 uv, Vec3 n) const { return dot(n, x - eval_surface_point(pack, S, uv.x, uv.y)); }
+    // Signed deviation of the triangle's point at parameters uv from a free-form surface: from
+    // the surface point at uv, along the triangle's unit normal n (near the surface's where it
+    // matters, and no derivatives to evaluate); x is any point of the triangle's plane.
+    float freeform_error(Vec3 x, Vec2 uv, Vec3 n) const { return dot(n, x - point(uv)); }
+
+    // A point of the surface: from its fixed-point patch where it has one.
+    Vec3 point(Vec2 uv) const { return patches.usable() ? patches.point(uv.x, uv.y) : eval_surface_point(pack, S, uv.x, uv.y); }
 
     // The measure of T; `cost` gets the work it took in units (FaceJob's: about five thousand
     // ARM926 instructions): none for the quick answers, 3 for seven distances to an
-    // elementary surface, 30 for seven points of a free-form one.
+    // elementary surface or seven points of a fixed-point patch, 30 for seven points of a
+    // free-form surface in float, kConvertUnits for each patch made.
     TriangleMeasure measure(const Tri& T, uint32_t& cost) const {
         TriangleMeasure m{key_of(T), 0, {0, 0}};
         cost = 0;
@@ -199,8 +230,9 @@ struct Context {
         const bool elementary = type <= SurfaceType::Torus;
         const Vec3 normal = elementary ? Vec3{0, 0, 0} : normalized(cross(e1, e2));
         auto error = [&](float w0, float w1, float w2) {
-            const Vec3 x = P[0] * w0 + P[1] * w1 + P[2] * w2;
-            return elementary ? elementary_error(x) : freeform_error(x, UV[0] * w0 + UV[1] * w1 + UV[2] * w2, normal);
+            // Along the triangle's normal every point of the triangle is as far as its corner.
+            if (!elementary) return freeform_error(P[0], UV[0] * w0 + UV[1] * w1 + UV[2] * w2, normal);
+            return elementary_error(P[0] * w0 + P[1] * w1 + P[2] * w2);
         };
         auto grid_at = [&](float w0, float w1, float w2) {
             return cdt::Point{int32_t(std::lround(w0 * float(G[0].x) + w1 * float(G[1].x) + w2 * float(G[2].x))),
@@ -211,7 +243,8 @@ struct Context {
         // is so small that the model cannot reach the target anywhere, that bound will do.
         float e[kSamples];
         float largest = 0;
-        cost = type <= SurfaceType::Torus ? 3 : 30;
+        const uint32_t conversions = patches.conversions();
+        cost = type <= SurfaceType::Torus || patches.usable() ? 3 : 30;
         for (int k = 0; k < 3; ++k) {
             const int i = (k + 1) % 3, j = (k + 2) % 3;
             float wa[3] = {0, 0, 0}, wb[3] = {0, 0, 0};
@@ -220,6 +253,7 @@ struct Context {
             e[2 * k + 1] = error(wb[0], wb[1], wb[2]);
         }
         e[6] = error(1.0f / 3, 1.0f / 3, 1.0f / 3);
+        cost += (patches.conversions() - conversions) * kConvertUnits;
         for (float x : e) largest = std::max(largest, std::fabs(x));
         const float bound = kSixths.lebesgue * largest;
         if (bound * bound <= target2) {
@@ -229,16 +263,33 @@ struct Context {
         // A constrained edge is a chord of a B-rep edge, within the tolerance by edge sampling,
         // and no point inside changes it: its points feed the model, but do not count.
         const uint8_t constrained = uint8_t((T.constrained(0) ? 1 : 0) | (T.constrained(1) ? 2 : 0) | (T.constrained(2) ? 4 : 0));
-        float worst = 0;
+        // The model over the grid in integers (a soft-float core's sums are its costliest part):
+        // the samples scaled so the largest is under 2^20, times the weights' 32 w.
+        if (!(largest <= 1e30f)) { // a surface point gone to infinity: the worst, at the middle
+            m.error2 = largest * largest;
+            m.at = grid_at(1.0f / 3, 1.0f / 3, 1.0f / 3);
+            return m;
+        }
+        // largest < 2^exponent from its bits (it is over the target here: a normal float).
+        uint32_t bits;
+        std::memcpy(&bits, &largest, sizeof bits);
+        const int exponent = std::clamp(int((bits >> 23) & 0xFF) - 126, -100, 100);
+        const uint32_t scale_bits = uint32_t(20 - exponent + 127) << 23;
+        float scale;
+        std::memcpy(&scale, &scale_bits, sizeof scale); // 2^(20 - exponent)
+        int32_t qe[kSamples];
+        for (int s = 0; s < kSamples; ++s) qe[s] = e[s] == e[s] ? int32_t(e[s] * scale) : 0; // a NaN counts for nothing
+        int32_t worst = -1;
         const float* w = kSixths.p[0].l;
         for (const GridPoint& g : kSixths) {
             if (g.edges & constrained) continue;
-            float v = 0;
-            for (int s = 0; s < kSamples; ++s) v += g.w[s] * e[s];
-            v = std::fabs(v);
+            int32_t v = 0;
+            for (int s = 0; s < kSamples; ++s) v += int32_t(g.w32[s]) * qe[s];
+            v = v < 0 ? -v : v;
             if (v > worst) worst = v, w = g.l;
         }
-        m.error2 = worst * worst;
+        const float worst_f = float(worst < 0 ? 0 : worst) / (32 * scale);
+        m.error2 = worst_f * worst_f;
         m.at = grid_at(w[0], w[1], w[2]);
         return m;
     }
@@ -257,7 +308,8 @@ Result refine(const Pack& pack, uint32_t fi, const TessOptions& opt, const Grid&
         return Result::fail(Status::Full, "the refinement's triangle measures are fewer than the arena's triangles");
     }
     const Result busy = Result::fail(Status::Busy, "refining");
-    const uint32_t insert_cost = S.type <= uint8_t(SurfaceType::Torus) ? 1 : 8; // a locate, an insertion, a surface point
+    // A locate, an insertion, a surface point (and a patch made: in the measure that led here).
+    const uint32_t insert_cost = S.type <= uint8_t(SurfaceType::Torus) || ctx.patches.usable() ? 1 : 8;
     while (spent < units) {
         if (!st.inserting) {
             // A round: measure the triangles that changed, and find the worst.
@@ -342,7 +394,7 @@ Result refine(const Pack& pack, uint32_t fi, const TessOptions& opt, const Grid&
             if (!ok(ins) || v < cdt.vertex_count() - 1) continue; // not a new vertex
             const Vec2 uv = grid.to_uv(at);
             sc.uv[st.total] = uv;
-            sc.xyz[st.total] = eval_surface(pack, S, uv.x, uv.y).p;
+            sc.xyz[st.total] = ctx.patches.usable() ? ctx.patches.point(uv.x, uv.y) : eval_surface(pack, S, uv.x, uv.y).p;
             sc.mesh_of[v] = st.total++;
             ++st.added;
         }

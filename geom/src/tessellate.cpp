@@ -1,4 +1,5 @@
 #include "geom/tessellate.h"
+#include "geom/patches.h"
 
 #include "face_internal.h"
 #include "geom/fmath.h"
@@ -33,8 +34,8 @@ namespace {
 // these are the bulk of a vertex's cost), from the surface's derivatives elsewhere.
 class FaceNormals {
 public:
-    FaceNormals(const Pack& pack, const Surface& S, const pack::Face& F)
-        : pack_(pack), S_(S), F_(F), type_(SurfaceType(S.type)), flip_(F.reversed ? -1.0f : 1.0f) {
+    FaceNormals(const Pack& pack, const Surface& S, const pack::Face& F, std::span<uint32_t> patches)
+        : pack_(pack), S_(S), F_(F), type_(SurfaceType(S.type)), flip_(F.reversed ? -1.0f : 1.0f), patches_(pack, S, patches) {
         if (type_ > SurfaceType::Torus) return;
         const float* q = pack.floats().data() + S.params;
         O_ = {q[0], q[1], q[2]};
@@ -53,6 +54,8 @@ public:
         default: break;
         }
     }
+
+    bool fixed_point() const { return patches_.usable(); } // a B-spline's normals from its patches
 
     Vec3 at(Vec3 p, Vec2 uv) const {
         const Vec3 d = p - O_;
@@ -76,11 +79,14 @@ public:
 private:
     // At a pole (du x dv vanishes) it looks a little toward the middle of the face.
     Vec3 from_derivatives(Vec2 uv) const {
-        SurfacePoint sp = eval_surface(pack_, S_, uv.x, uv.y);
+        auto eval = [&](float u, float v) { // a B-spline's from its fixed-point patch
+            return patches_.usable() ? patches_.point_and_derivatives(u, v) : eval_surface(pack_, S_, u, v);
+        };
+        SurfacePoint sp = eval(uv.x, uv.y);
         Vec3 n = cross(sp.du, sp.dv);
         if (length2(n) < 1e-24f) {
             const float um = 0.5f * (F_.uv_min[0] + F_.uv_max[0]), vm = 0.5f * (F_.uv_min[1] + F_.uv_max[1]);
-            sp = eval_surface(pack_, S_, uv.x + 1e-3f * (um - uv.x), uv.y + 1e-3f * (vm - uv.y));
+            sp = eval(uv.x + 1e-3f * (um - uv.x), uv.y + 1e-3f * (vm - uv.y));
             n = cross(sp.du, sp.dv);
         }
         return normalized(n) * flip_;
@@ -93,6 +99,7 @@ private:
     float flip_;
     Vec3 O_{}, Z_{}, plane_{};
     float scale_ = 1, radius_ = 0, sin_a_ = 0, cos_a_ = 1;
+    mutable PatchCache patches_;
 };
 
 // How much the surface bends along u and along v at (u, v): the normal curvatures of the
@@ -212,6 +219,7 @@ void FaceJob::start(const Pack& pack, uint32_t face, const EdgeSamples& edges, c
     refine_ = {};
     next_loop_ = next_triangle_ = 0;
     cdt_ = cdt::Cdt<uint16_t>(sc.arena);
+    PatchCache::forget(sc.patches); // they may be another pack's
     stats_ = {};
     result_ = Result::fail(Status::Busy, "tessellating");
 }
@@ -338,10 +346,10 @@ Result FaceJob::run(uint32_t units) {
     // 6. Output: the inner triangles and their vertices (each once, in the order first used).
     //    Loop points keep their edge sample's 3D point, shared with the neighbour.
     const Surface& S = pack.surfaces()[F.surface];
-    const FaceNormals normals(pack, S, F);
+    const FaceNormals normals(pack, S, F, sc.patches);
     if (nl_ > 0) {
         const Status e = emit_triangles(normals, F, cdt_, sc, mesh, stats_, next_triangle_, units - std::min(units, spent),
-                                        S.type > uint8_t(SurfaceType::Torus));
+                                        S.type > uint8_t(SurfaceType::Torus) && !normals.fixed_point());
         if (e == Status::Busy) return busy;
         if (!ok(e)) return fail(Result::fail(Status::Full, "the mesh is full"));
     }

@@ -37,6 +37,7 @@ struct Arrays {
     std::span<module::Projected> projected;
     std::span<render::Palette> palettes;
     std::span<uint32_t> palette_rgb;
+    std::span<uint32_t> patches;
 };
 
 constexpr uint32_t kPalettes = 16; // face colours shaded at once (more are rebuilt as needed)
@@ -74,9 +75,10 @@ constexpr uint32_t kPalettes = 16; // face colours shaded at once (more are rebu
     auto pr = k.take<module::Projected>(V);
     auto pa = k.take<render::Palette>(kPalettes);
     auto pc = k.take<uint32_t>(kPalettes);
+    auto pt = k.take<uint32_t>(geom::kPatchCacheWords);
     if (out) {
         *out = {e_first, e_count, e_drawn, s_t, s_p, s_q, {a_v, a_t, a_w, a_o, a_m, a_i, a_k}, lp, ls, uv, pin, xyz, mo, ms,
-                sl, fv, fi, mv, mi, fa, dn, pr, pa, pc};
+                sl, fv, fi, mv, mi, fa, dn, pr, pa, pc, pt};
     }
 }
 
@@ -94,8 +96,9 @@ static_assert(sizeof(module::Projected) == 28 && sizeof(geom::TriangleMeasure) =
                   sizeof(cdt::Vertex<uint16_t>) == 12 && sizeof(cdt::Triangle<uint16_t>) == 14,
               "FACET_BYTES_PER_FACE_POINT counts these records' sizes");
 static_assert(sizeof(geom::Sliver) == FACET_BYTES_PER_SLIVER);
-static_assert(core_bytes() + kPalettes * (sizeof(render::Palette) + 4) + 1024 <= FACET_WORKSPACE_FIXED_BYTES,
-              "FACET_WORKSPACE_FIXED_BYTES: the viewer's state, palettes and alignment");
+static_assert(core_bytes() + kPalettes * (sizeof(render::Palette) + 4) + geom::kPatchCacheWords * 4 + 1024 <=
+                  FACET_WORKSPACE_FIXED_BYTES,
+              "FACET_WORKSPACE_FIXED_BYTES: the viewer's state, palettes, free-form patches and alignment");
 
 } // namespace
 
@@ -122,7 +125,8 @@ Core::Core(const Config& config, Carver& k)
     if (!carved_) return;
     scene_.init({geom::EdgeSamples{a.edge_first, a.edge_count, a.sample_t, a.sample_p}, a.sample_q, a.mesh_vertices,
                  a.mesh_indices, a.faces, a.done_order});
-    geom::FaceScratch scratch{a.arena, a.loop_points, a.loop_sizes, a.face_uv, a.pinned, a.face_xyz, a.mesh_of, a.measured, a.slivers};
+    geom::FaceScratch scratch{a.arena,    a.loop_points, a.loop_sizes, a.face_uv, a.pinned,
+                              a.face_xyz, a.mesh_of,     a.measured,   a.slivers, a.patches};
     scheduler_.init({scratch, geom::Mesh{a.face_vertices, a.face_indices, {}}, uint32_t(a.projected.size())});
     painter_.init({a.projected, a.edge_drawn, a.palettes, a.palette_rgb});
     projected_ = a.projected;

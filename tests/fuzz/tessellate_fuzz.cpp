@@ -36,6 +36,7 @@ struct Buffers {
     std::vector<uint8_t> pinned = std::vector<uint8_t>(kV);
     std::vector<TriangleMeasure> measured = std::vector<TriangleMeasure>(cdt::triangles_for(kV));
     std::vector<Sliver> slivers = std::vector<Sliver>(256);
+    std::vector<uint32_t> patches = std::vector<uint32_t>(kPatchCacheWords);
     std::vector<MeshVertex> mv = std::vector<MeshVertex>(kMesh);
     std::vector<uint32_t> mi = std::vector<uint32_t>(3 * kMesh);
     std::vector<Vec2> muv = std::vector<Vec2>(kMesh);
@@ -65,7 +66,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     opt.tolerance = default_tolerance(pack);
     if (!sample_edges(pack, opt, samples).ok()) return 0;
 
-    FaceScratch sc{{b.av, b.at, b.aw, b.ao, b.am, b.ai, b.ak}, b.lp, b.ls, b.uvs, b.pinned, b.xyz, b.mesh_of, b.measured, b.slivers};
+    FaceScratch sc{{b.av, b.at, b.aw, b.ao, b.am, b.ai, b.ak}, b.lp, b.ls, b.uvs, b.pinned, b.xyz, b.mesh_of, b.measured, b.slivers, b.patches};
     Mesh mesh{b.mv, b.mi, b.muv};
     for (uint32_t f = 0; f < pack.faces().size() && f < kFaces; ++f) {
         const uint32_t v0 = mesh.vertex_count, t0 = mesh.triangle_count;

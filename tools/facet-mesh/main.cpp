@@ -212,7 +212,8 @@ int main(int argc, char** argv) {
     std::vector<uint8_t> pinned(kV);
     std::vector<TriangleMeasure> measured(cdt::triangles_for(kV));
     std::vector<Sliver> slivers(4096);
-    FaceScratch sc{{av, at, aw, ao, am, ai, ak}, lp, ls, uvs, pinned, xyz, mesh_of, measured, slivers};
+    std::vector<uint32_t> patches(kPatchCacheWords); // as the device: the same meshes
+    FaceScratch sc{{av, at, aw, ao, am, ai, ak}, lp, ls, uvs, pinned, xyz, mesh_of, measured, slivers, patches};
     std::vector<MeshVertex> mv(1 << 22);
     std::vector<uint32_t> mi(3u << 22);
     std::vector<Vec2> muv(1 << 22);

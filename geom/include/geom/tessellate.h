@@ -76,7 +76,13 @@ struct FaceScratch {
     // round measures only the triangles that changed. At least triangles_for(arena vertices).
     std::span<TriangleMeasure> measured;
     std::span<Sliver> slivers;  // loop points dropped from the grid, as triangles
+    // A free-form face's spans as fixed-point patches (geom/patches.h): kPatchCacheWords
+    // recommended; empty, its points are evaluated in float (slower on a core without an FPU,
+    // and a hair different: give host tools the same as the device).
+    std::span<uint32_t> patches = {};
 };
+
+constexpr uint32_t kPatchCacheWords = 16384; // 64 KB: 113 spans of a bicubic rational surface
 
 // What one face took.
 struct FaceStats {

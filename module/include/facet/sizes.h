@@ -10,12 +10,12 @@
  *   pack memory       a deflated pack, inflated (plain packs are      facet_pack_memory_bytes()
  *                     read in place from flash or RAM)
  *
- * The shipped configurations (the workspace at the default capacities, 6,984,992 bytes):
+ * The shipped configurations (the workspace at the default capacities, 7,050,528 bytes):
  *
  *   configuration                                 draw buffers    depth buffers   workspace
- *   qemu-versatilepb: 640x480, full frames        2 x 614,400     2 x 614,400     6,984,992
- *   qemu-mps2-an500 (the EVKB panel): 480x272     2 x 261,120     2 x 261,120     6,984,992
- *   examples/minimal: 480x272 in bands of 16      2 x 15,360      1 x 15,360      6,984,992
+ *   qemu-versatilepb: 640x480, full frames        2 x 614,400     2 x 614,400     7,050,528
+ *   qemu-mps2-an500 (the EVKB panel): 480x272     2 x 261,120     2 x 261,120     7,050,528
+ *   examples/minimal: 480x272 in bands of 16      2 x 15,360      1 x 15,360      7,050,528
  */
 #ifndef FACET_SIZES_H
 #define FACET_SIZES_H
@@ -34,7 +34,8 @@
 #define FACET_DEFAULT_MESH_TRIANGLES 98304u
 
 /* Bytes per item of each capacity, and the fixed part (the viewer's state, 16 colour palettes,
- * alignment). The module asserts these against its own records when it is built. */
+ * 64 KB of a free-form face's fixed-point patches, alignment). The module asserts these
+ * against its own records when it is built. */
 #define FACET_BYTES_PER_FACE 44ul
 #define FACET_BYTES_PER_EDGE 7ul
 #define FACET_BYTES_PER_SAMPLE 28ul
@@ -43,7 +44,7 @@
 #define FACET_BYTES_PER_SLIVER 60ul
 #define FACET_BYTES_PER_MESH_VERTEX 20ul
 #define FACET_BYTES_PER_MESH_TRIANGLE 6ul
-#define FACET_WORKSPACE_FIXED_BYTES 28672ul
+#define FACET_WORKSPACE_FIXED_BYTES 94208ul
 
 #define FACET_WORKSPACE_BYTES(faces, edges, samples, face_points, loops, slivers, mesh_vertices, mesh_triangles)      \
     (FACET_WORKSPACE_FIXED_BYTES + (unsigned long)(faces)*FACET_BYTES_PER_FACE +                                        \

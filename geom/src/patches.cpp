@@ -1,0 +1,257 @@
+#include "geom/patches.h"
+
+#include "bspline.h"
+
+#include <cstring>
+
+namespace facet::geom {
+namespace {
+
+constexpr int kN = kMaxPatchDegree + 1;
+constexpr uint32_t kEmpty = 0xFFFFFFFFu;
+constexpr float kOne = 1073741824.0f; // 2^30: the local parameters' 1
+constexpr int32_t kOneQ = 1 << 30;
+
+// 2^e as a float, e in [-126, 127], from its bits (no library call).
+float exp2i(int e) {
+    const uint32_t bits = uint32_t(e + 127) << 23;
+    float f;
+    std::memcpy(&f, &bits, sizeof f);
+    return f;
+}
+
+uint32_t bits_of(float f) {
+    uint32_t b;
+    std::memcpy(&b, &f, sizeof b);
+    return b;
+}
+
+float float_of(uint32_t b) {
+    float f;
+    std::memcpy(&f, &b, sizeof f);
+    return f;
+}
+
+// a x t / 2^30 for t in [0, 2^30]: |result| <= |a|.
+inline int32_t mulq(int32_t a, int32_t t) { return int32_t((int64_t(a) * t) >> 30); }
+
+// The p + 1 basis functions that are non-zero on span s, N[s-p+a] for a = 0..p, as polynomials
+// in the span's local parameter t = (u - knots[s]) / (knots[s+1] - knots[s]): M[a][k] is the
+// coefficient of t^k. The Cox-de Boor recursion (The NURBS Book A2.2) on polynomials: each
+// step multiplies by the linear factors (u - k_i) / (k_{i+j} - k_i) and
+// (k_{i+j+1} - u) / (k_{i+j+1} - k_{i+1}), written in t.
+void span_polynomials(const float* knots, int p, int s, float M[kN][kN]) {
+    const float h = knots[s + 1] - knots[s], ks = knots[s];
+    float P[kN][kN] = {}, Q[kN][kN];
+    P[0][0] = 1;
+    for (int j = 1; j <= p; ++j) {
+        for (int r = 0; r <= j; ++r)
+            for (int k = 0; k <= j; ++k) Q[r][k] = 0;
+        for (int r = 0; r <= j; ++r) {
+            const int i = s - j + r;
+            if (r >= 1) { // N[i, j-1] = P[r-1]
+                const float d = knots[i + j] - knots[i];
+                if (d != 0) {
+                    const float a0 = (ks - knots[i]) / d, a1 = h / d;
+                    for (int k = 0; k < j; ++k) Q[r][k] += P[r - 1][k] * a0, Q[r][k + 1] += P[r - 1][k] * a1;
+                }
+            }
+            if (r <= j - 1) { // N[i+1, j-1] = P[r]
+                const float d = knots[i + j + 1] - knots[i + 1];
+                if (d != 0) {
+                    const float b0 = (knots[i + j + 1] - ks) / d, b1 = -h / d;
+                    for (int k = 0; k < j; ++k) Q[r][k] += P[r][k] * b0, Q[r][k + 1] += P[r][k] * b1;
+                }
+            }
+        }
+        for (int r = 0; r <= j; ++r)
+            for (int k = 0; k <= j; ++k) P[r][k] = Q[r][k];
+    }
+    for (int a = 0; a <= p; ++a)
+        for (int k = 0; k <= p; ++k) M[a][k] = P[a][k];
+}
+
+} // namespace
+
+PatchCache::PatchCache(const Pack& pack, const pack::Surface& S, std::span<uint32_t> memory) {
+    if (S.type != uint8_t(pack::SurfaceType::BSpline)) return;
+    q_ = pack.floats().data() + S.params;
+    const detail::BSplineSurfaceView B(q_);
+    if (B.pu > kMaxPatchDegree || B.pv > kMaxPatchDegree || B.pu < 1 || B.pv < 1) return;
+    pu_ = B.pu, pv_ = B.pv, nu_ = B.nu, nv_ = B.nv;
+    rational_ = B.rational, u_periodic_ = B.u_periodic, v_periodic_ = B.v_periodic;
+    uk_ = B.uk, vk_ = B.vk, poles_ = B.poles, weights_ = B.weights;
+    slot_words_ = slot_words(pu_, pv_, rational_);
+    if (memory.size() < 1 + slot_words_) return;
+    memory_ = memory.data();
+    slots_ = uint32_t((memory.size() - 1) / slot_words_);
+    const uint32_t tag = S.params + 1; // the surface the patches belong to
+    if (memory_[0] != tag) {
+        memory_[0] = tag;
+        for (uint32_t i = 0; i < slots_; ++i) memory_[1 + i * slot_words_] = kEmpty;
+    }
+}
+
+void PatchCache::forget(std::span<uint32_t> memory) {
+    if (!memory.empty()) memory[0] = 0;
+}
+
+const uint32_t* PatchCache::patch(int su, int sv) {
+    const uint32_t key = uint32_t(su) << 16 | uint32_t(sv);
+    uint32_t* slot = memory_ + 1 + (uint32_t(su) * 40503u + uint32_t(sv)) % slots_ * slot_words_;
+    if (slot[0] != key) {
+        convert(su, sv, slot);
+        slot[0] = key;
+        ++conversions_;
+    }
+    return slot;
+}
+
+void PatchCache::convert(int su, int sv, uint32_t* slot) {
+    float Mu[kN][kN], Mv[kN][kN];
+    span_polynomials(uk_, pu_, su, Mu);
+    span_polynomials(vk_, pv_, sv, Mv);
+    const int dims = rational_ ? 4 : 3, i0 = su - pu_, j0 = sv - pv_;
+    const float* O = poles_ + 3 * (i0 * nv_ + j0); // the patch's first pole: coordinates stay small
+    // T[d][k][b] = sum over a of Mu[a][k] H[a][b][d], H the homogeneous poles w (P - O), w.
+    float T[4][kN][kN] = {};
+    for (int a = 0; a <= pu_; ++a) {
+        for (int b = 0; b <= pv_; ++b) {
+            const int at = (i0 + a) * nv_ + j0 + b;
+            const float* P = poles_ + 3 * at;
+            const float w = rational_ ? weights_[at] : 1.0f;
+            const float H[4] = {(P[0] - O[0]) * w, (P[1] - O[1]) * w, (P[2] - O[2]) * w, w};
+            for (int k = 0; k <= pu_; ++k) {
+                const float m = Mu[a][k];
+                if (m == 0) continue;
+                for (int d = 0; d < dims; ++d) T[d][k][b] += m * H[d];
+            }
+        }
+    }
+    // C[d][k][l] = sum over b of T[d][k][b] Mv[b][l]; each coordinate in fixed point with the
+    // largest exponent that keeps the sum of its coefficients' magnitudes under 2^29, so that
+    // neither Horner scheme can overflow.
+    int32_t* c = reinterpret_cast<int32_t*>(slot + kHead);
+    uint32_t exps = 0;
+    const int per = (pu_ + 1) * (pv_ + 1);
+    for (int d = 0; d < dims; ++d) {
+        float C[kN][kN], sum = 0;
+        for (int k = 0; k <= pu_; ++k) {
+            for (int l = 0; l <= pv_; ++l) {
+                float x = 0;
+                for (int b = 0; b <= pv_; ++b) x += T[d][k][b] * Mv[b][l];
+                C[k][l] = x;
+                sum += std::fabs(x);
+            }
+        }
+        int e = 0;
+        if (sum > 0) {
+            int x;
+            std::frexp(sum, &x); // sum < 2^x
+            e = 29 - x;
+            if (e > 100) e = 100;
+            if (e < -100) e = -100;
+        }
+        const float scale = exp2i(e);
+        for (int k = 0; k <= pu_; ++k) {
+            for (int l = 0; l <= pv_; ++l) {
+                const float v = C[k][l] * scale;
+                c[d * per + k * (pv_ + 1) + l] = int32_t(v + (v >= 0 ? 0.5f : -0.5f));
+            }
+        }
+        exps |= uint32_t(uint8_t(int8_t(e))) << (8 * d);
+    }
+    slot[1] = exps;
+    slot[2] = bits_of(O[0]), slot[3] = bits_of(O[1]), slot[4] = bits_of(O[2]);
+    slot[5] = bits_of(kOne / (uk_[su + 1] - uk_[su]));
+    slot[6] = bits_of(kOne / (vk_[sv + 1] - vk_[sv]));
+    slot[7] = 0;
+}
+
+const uint32_t* PatchCache::locate(float& u, float& v, int32_t& qs, int32_t& qt) {
+    // The spans: the last point's if u and v are still in them, else found (and wrapped or
+    // clamped as the B-spline's own evaluation does).
+    int su = last_su_, sv = last_sv_;
+    if (su < 0 || !(u >= uk_[su] && u < uk_[su + 1])) su = detail::find_span(uk_, nu_, pu_, u, u_periodic_);
+    if (sv < 0 || !(v >= vk_[sv] && v < vk_[sv + 1])) sv = detail::find_span(vk_, nv_, pv_, v, v_periodic_);
+    if (su != last_su_ || sv != last_sv_ || !last_) {
+        last_ = patch(su, sv);
+        last_su_ = su, last_sv_ = sv;
+    }
+    const uint32_t* slot = last_;
+    // The local parameters in [0, 2^30] (slot[5], slot[6]: 2^30 over the spans' lengths).
+    qs = int32_t((u - uk_[su]) * float_of(slot[5])), qt = int32_t((v - vk_[sv]) * float_of(slot[6]));
+    qs = qs < 0 ? 0 : (qs > kOneQ ? kOneQ : qs);
+    qt = qt < 0 ? 0 : (qt > kOneQ ? kOneQ : qt);
+    return slot;
+}
+
+Vec3 PatchCache::point(float u, float v) {
+    int32_t qs, qt;
+    const uint32_t* slot = locate(u, v, qs, qt);
+    const int32_t* c = reinterpret_cast<const int32_t*>(slot + kHead);
+    const int dims = rational_ ? 4 : 3, row = pv_ + 1;
+    int32_t out[4];
+    for (int d = 0; d < dims; ++d, c += (pu_ + 1) * row) {
+        // Horner in t along each row (a power of s), then in s.
+        int32_t acc = 0;
+        for (int k = pu_; k >= 0; --k) {
+            const int32_t* r = c + k * row;
+            int32_t x = r[pv_];
+            for (int l = pv_ - 1; l >= 0; --l) x = mulq(x, qt) + r[l];
+            acc = k == pu_ ? x : mulq(acc, qs) + x;
+        }
+        out[d] = acc;
+    }
+    const uint32_t exps = slot[1];
+    auto unscale = [&](int d) { return exp2i(-int(int8_t(uint8_t(exps >> (8 * d))))); };
+    const Vec3 O{float_of(slot[2]), float_of(slot[3]), float_of(slot[4])};
+    if (!rational_) return {O.x + float(out[0]) * unscale(0), O.y + float(out[1]) * unscale(1), O.z + float(out[2]) * unscale(2)};
+    float W = float(out[3]) * unscale(3);
+    if (W == 0) W = 1;
+    const float inv = 1 / W;
+    return {O.x + float(out[0]) * (unscale(0) * inv), O.y + float(out[1]) * (unscale(1) * inv),
+            O.z + float(out[2]) * (unscale(2) * inv)};
+}
+
+SurfacePoint PatchCache::point_and_derivatives(float u, float v) {
+    int32_t qs, qt;
+    const uint32_t* slot = locate(u, v, qs, qt);
+    const int32_t* c = reinterpret_cast<const int32_t*>(slot + kHead);
+    const int dims = rational_ ? 4 : 3, row = pv_ + 1;
+    // Per coordinate: the value, and its derivatives in s and t over 8 (a derivative of the
+    // polynomial can reach its degree times the coefficients' sum: 8 keeps it in 32 bits).
+    float f[4], fs[4], ft[4];
+    const uint32_t exps = slot[1];
+    for (int d = 0; d < dims; ++d, c += (pu_ + 1) * row) {
+        int32_t acc = 0, acc_s = 0, acc_t = 0;
+        for (int k = pu_; k >= 0; --k) {
+            const int32_t* r = c + k * row;
+            int32_t x = r[pv_], dx = 0;
+            for (int l = pv_ - 1; l >= 0; --l) dx = mulq(dx, qt) + (x >> 3), x = mulq(x, qt) + r[l];
+            if (k == pu_) {
+                acc = x, acc_t = dx;
+            } else {
+                acc_s = mulq(acc_s, qs) + (acc >> 3);
+                acc = mulq(acc, qs) + x;
+                acc_t = mulq(acc_t, qs) + dx;
+            }
+        }
+        const float unscale = exp2i(-int(int8_t(uint8_t(exps >> (8 * d)))));
+        f[d] = float(acc) * unscale, fs[d] = float(acc_s) * (8 * unscale), ft[d] = float(acc_t) * (8 * unscale);
+    }
+    // d/du = d/ds over the span's length (slot[5] / 2^30).
+    const float hu = float_of(slot[5]) * (1 / kOne), hv = float_of(slot[6]) * (1 / kOne);
+    const Vec3 O{float_of(slot[2]), float_of(slot[3]), float_of(slot[4])};
+    if (!rational_) {
+        return {{O.x + f[0], O.y + f[1], O.z + f[2]}, Vec3{fs[0], fs[1], fs[2]} * hu, Vec3{ft[0], ft[1], ft[2]} * hv};
+    }
+    float W = f[3];
+    if (W == 0) W = 1;
+    const float inv = 1 / W;
+    const Vec3 p{f[0] * inv, f[1] * inv, f[2] * inv}; // from O
+    const Vec3 du = (Vec3{fs[0], fs[1], fs[2]} - p * fs[3]) * (inv * hu), dv = (Vec3{ft[0], ft[1], ft[2]} - p * ft[3]) * (inv * hv);
+    return {O + p, du, dv};
+}
+
+} // namespace facet::geom
