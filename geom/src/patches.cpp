@@ -1,8 +1,10 @@
 #include "geom/patches.h"
 
 #include "bspline.h"
+#include "geom/fmath.h"
 
-#include <cstring>
+#include <algorithm>
+#include <bit>
 
 namespace facet::geom {
 namespace {
@@ -11,26 +13,6 @@ constexpr int kN = kMaxPatchDegree + 1;
 constexpr uint32_t kEmpty = 0xFFFFFFFFu;
 constexpr float kOne = 1073741824.0f; // 2^30: the local parameters' 1
 constexpr int32_t kOneQ = 1 << 30;
-
-// 2^e as a float, e in [-126, 127], from its bits (no library call).
-float exp2i(int e) {
-    const uint32_t bits = uint32_t(e + 127) << 23;
-    float f;
-    std::memcpy(&f, &bits, sizeof f);
-    return f;
-}
-
-uint32_t bits_of(float f) {
-    uint32_t b;
-    std::memcpy(&b, &f, sizeof b);
-    return b;
-}
-
-float float_of(uint32_t b) {
-    float f;
-    std::memcpy(&f, &b, sizeof f);
-    return f;
-}
 
 // a x t / 2^30 for t in [0, 2^30]: |result| <= |a|.
 inline int32_t mulq(int32_t a, int32_t t) { return int32_t((int64_t(a) * t) >> 30); }
@@ -75,8 +57,7 @@ void span_polynomials(const float* knots, int p, int s, float M[kN][kN]) {
 
 PatchCache::PatchCache(const Pack& pack, const pack::Surface& S, std::span<uint32_t> memory) {
     if (S.type != uint8_t(pack::SurfaceType::BSpline)) return;
-    q_ = pack.floats().data() + S.params;
-    const detail::BSplineSurfaceView B(q_);
+    const detail::BSplineSurfaceView B(pack.floats().data() + S.params);
     if (B.pu > kMaxPatchDegree || B.pv > kMaxPatchDegree || B.pu < 1 || B.pv < 1) return;
     pu_ = B.pu, pv_ = B.pv, nu_ = B.nu, nv_ = B.nv;
     rational_ = B.rational, u_periodic_ = B.u_periodic, v_periodic_ = B.v_periodic;
@@ -144,15 +125,9 @@ void PatchCache::convert(int su, int sv, uint32_t* slot) {
                 sum += std::fabs(x);
             }
         }
-        int e = 0;
-        if (sum > 0) {
-            int x;
-            std::frexp(sum, &x); // sum < 2^x
-            e = 29 - x;
-            if (e > 100) e = 100;
-            if (e < -100) e = -100;
-        }
-        const float scale = exp2i(e);
+        // sum < 2^exponent (a sum too small for a normal float: its coefficients are noise)
+        const int e = sum >= 1e-30f ? std::clamp(29 - exponent_f(sum), -100, 100) : 0;
+        const float scale = pow2_f(e);
         for (int k = 0; k <= pu_; ++k) {
             for (int l = 0; l <= pv_; ++l) {
                 const float v = C[k][l] * scale;
@@ -162,10 +137,9 @@ void PatchCache::convert(int su, int sv, uint32_t* slot) {
         exps |= uint32_t(uint8_t(int8_t(e))) << (8 * d);
     }
     slot[1] = exps;
-    slot[2] = bits_of(O[0]), slot[3] = bits_of(O[1]), slot[4] = bits_of(O[2]);
-    slot[5] = bits_of(kOne / (uk_[su + 1] - uk_[su]));
-    slot[6] = bits_of(kOne / (vk_[sv + 1] - vk_[sv]));
-    slot[7] = 0;
+    slot[2] = std::bit_cast<uint32_t>(O[0]), slot[3] = std::bit_cast<uint32_t>(O[1]), slot[4] = std::bit_cast<uint32_t>(O[2]);
+    slot[5] = std::bit_cast<uint32_t>(kOne / (uk_[su + 1] - uk_[su]));
+    slot[6] = std::bit_cast<uint32_t>(kOne / (vk_[sv + 1] - vk_[sv]));
 }
 
 const uint32_t* PatchCache::locate(float& u, float& v, int32_t& qs, int32_t& qt) {
@@ -180,7 +154,7 @@ const uint32_t* PatchCache::locate(float& u, float& v, int32_t& qs, int32_t& qt)
     }
     const uint32_t* slot = last_;
     // The local parameters in [0, 2^30] (slot[5], slot[6]: 2^30 over the spans' lengths).
-    qs = int32_t((u - uk_[su]) * float_of(slot[5])), qt = int32_t((v - vk_[sv]) * float_of(slot[6]));
+    qs = int32_t((u - uk_[su]) * std::bit_cast<float>(slot[5])), qt = int32_t((v - vk_[sv]) * std::bit_cast<float>(slot[6]));
     qs = qs < 0 ? 0 : (qs > kOneQ ? kOneQ : qs);
     qt = qt < 0 ? 0 : (qt > kOneQ ? kOneQ : qt);
     return slot;
@@ -204,8 +178,8 @@ Vec3 PatchCache::point(float u, float v) {
         out[d] = acc;
     }
     const uint32_t exps = slot[1];
-    auto unscale = [&](int d) { return exp2i(-int(int8_t(uint8_t(exps >> (8 * d))))); };
-    const Vec3 O{float_of(slot[2]), float_of(slot[3]), float_of(slot[4])};
+    auto unscale = [&](int d) { return pow2_f(-int(int8_t(uint8_t(exps >> (8 * d))))); };
+    const Vec3 O{std::bit_cast<float>(slot[2]), std::bit_cast<float>(slot[3]), std::bit_cast<float>(slot[4])};
     if (!rational_) return {O.x + float(out[0]) * unscale(0), O.y + float(out[1]) * unscale(1), O.z + float(out[2]) * unscale(2)};
     float W = float(out[3]) * unscale(3);
     if (W == 0) W = 1;
@@ -237,12 +211,12 @@ SurfacePoint PatchCache::point_and_derivatives(float u, float v) {
                 acc_t = mulq(acc_t, qs) + dx;
             }
         }
-        const float unscale = exp2i(-int(int8_t(uint8_t(exps >> (8 * d)))));
+        const float unscale = pow2_f(-int(int8_t(uint8_t(exps >> (8 * d)))));
         f[d] = float(acc) * unscale, fs[d] = float(acc_s) * (8 * unscale), ft[d] = float(acc_t) * (8 * unscale);
     }
     // d/du = d/ds over the span's length (slot[5] / 2^30).
-    const float hu = float_of(slot[5]) * (1 / kOne), hv = float_of(slot[6]) * (1 / kOne);
-    const Vec3 O{float_of(slot[2]), float_of(slot[3]), float_of(slot[4])};
+    const float hu = std::bit_cast<float>(slot[5]) * (1 / kOne), hv = std::bit_cast<float>(slot[6]) * (1 / kOne);
+    const Vec3 O{std::bit_cast<float>(slot[2]), std::bit_cast<float>(slot[3]), std::bit_cast<float>(slot[4])};
     if (!rational_) {
         return {{O.x + f[0], O.y + f[1], O.z + f[2]}, Vec3{fs[0], fs[1], fs[2]} * hu, Vec3{ft[0], ft[1], ft[2]} * hv};
     }

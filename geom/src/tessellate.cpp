@@ -55,7 +55,9 @@ public:
         }
     }
 
-    bool fixed_point() const { return patches_.usable(); } // a B-spline's normals from its patches
+    // What a vertex's normal costs, in eighths of a work unit: closed form, from a B-spline's
+    // fixed-point patch (about four thousand ARM926 instructions), from float derivatives.
+    uint32_t vertex_cost() const { return type_ <= SurfaceType::Torus ? 1 : patches_.usable() ? 6 : 48; }
 
     Vec3 at(Vec3 p, Vec2 uv) const {
         const Vec3 d = p - O_;
@@ -167,10 +169,10 @@ bool equal(Vec3 p, Vec3 q) {
 
 // The CDT's inner triangles and their vertices, each vertex once, in the order first used.
 // sc.mesh_of maps CDT vertices to points on the way in and to mesh vertices on the way out.
-// From triangle `next` on, until about `units` are spent (a vertex on a free-form surface
-// costs 6: its normal from the derivatives): Busy, and `next` says where to go on.
+// From triangle `next` on, until about `units` are spent (a new vertex costs `vertex_cost`
+// eighths of a unit: its normal): Busy, and `next` says where to go on.
 Status emit_triangles(const FaceNormals& normals, const pack::Face& F, const cdt::Cdt<uint16_t>& cdt, FaceScratch& sc,
-                      Mesh& mesh, FaceStats& stats, uint32_t& next, uint32_t units, bool freeform) {
+                      Mesh& mesh, FaceStats& stats, uint32_t& next, uint32_t units, uint32_t vertex_cost) {
     constexpr uint32_t kAssigned = 0x80000000u; // mesh_of[v]: a mesh vertex, not a point
     auto position = [&](uint16_t v) {
         const uint32_t m = sc.mesh_of[v];
@@ -197,7 +199,7 @@ Status emit_triangles(const FaceNormals& normals, const pack::Face& F, const cdt
             if (!(m & kAssigned)) {
                 if (mesh.vertex_count >= mesh.vertices.size()) return Status::Full;
                 m = kAssigned | add_vertex(normals, mesh, sc.xyz[m], sc.uv[m]);
-                spent += freeform ? 48 : 1;
+                spent += vertex_cost;
             }
             id[k] = m & ~kAssigned;
         }
@@ -349,7 +351,7 @@ Result FaceJob::run(uint32_t units) {
     const FaceNormals normals(pack, S, F, sc.patches);
     if (nl_ > 0) {
         const Status e = emit_triangles(normals, F, cdt_, sc, mesh, stats_, next_triangle_, units - std::min(units, spent),
-                                        S.type > uint8_t(SurfaceType::Torus) && !normals.fixed_point());
+                                        normals.vertex_cost());
         if (e == Status::Busy) return busy;
         if (!ok(e)) return fail(Result::fail(Status::Full, "the mesh is full"));
     }

@@ -21,7 +21,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -82,9 +81,6 @@ void check_surface(const Pack& pack, uint32_t s, double diagonal, std::vector<ui
             largest = std::max({largest, distance(db.du, {0, 0, 0}), distance(db.dv, {0, 0, 0})});
             const double d = std::max(distance(da.du, db.du), distance(da.dv, db.dv));
             off = d != d ? d : std::max(off, d);
-            if (std::getenv("FACET_PATCH_DEBUG") && d > 1e-4 * largest)
-                std::printf("  surface %u at %g %g: du %g %g %g vs %g %g %g; dv %g %g %g vs %g %g %g\n", s, u, v, da.du.x, da.du.y,
-                            da.du.z, db.du.x, db.du.y, db.du.z, da.dv.x, da.dv.y, da.dv.z, db.dv.x, db.dv.y, db.dv.z);
         }
     }
     const double rel = largest > 0 ? off / largest : off;

@@ -8,12 +8,19 @@
 // rounded IEEE float operation (the build has -ffp-contract=off), so the results are
 // bit-identical on every target. Accuracy: about 1e-7 absolute for |x| < 1e4 (Cephes-style
 // minimax polynomials after a three-part Cody-Waite reduction), plenty for geometry at 0.1%.
+#include <bit>
 #include <cmath>
 #include <cstdint>
 
 namespace facet::geom {
 
 constexpr float kPi = 3.14159265358979323846f;
+
+// 2^e for e in [-126, 127], from its bits (exact, no library call).
+inline float pow2_f(int e) { return std::bit_cast<float>(uint32_t(e + 127) << 23); }
+
+// The e with 2^(e-1) <= x < 2^e for a positive normal float x (frexp's exponent), from its bits.
+inline int exponent_f(float x) { return int((std::bit_cast<uint32_t>(x) >> 23) & 0xFF) - 126; }
 
 // sin x and cos x, one reduction for both.
 inline void sincos_f(float x, float& s, float& c) {

@@ -44,17 +44,15 @@ public:
     Vec3 point(float u, float v);
     // The point and its partial derivatives (for normals).
     SurfacePoint point_and_derivatives(float u, float v);
-    uint32_t conversions() const { return conversions_; } // patches made by this view (each costs
-                                                          // about as much as 40 points)
+    uint32_t conversions() const { return conversions_; } // patches made by this view
 
 private:
-    static constexpr uint32_t kHead = 8; // key, exponents, origin x y z, span starts u v, spare
+    static constexpr uint32_t kHead = 7; // key, exponents, origin x y z, 2^30 over the spans' lengths
     const uint32_t* patch(int su, int sv);
     // The patch of (u, v) and the local parameters in [0, 2^30]; u and v wrapped or clamped.
     const uint32_t* locate(float& u, float& v, int32_t& qs, int32_t& qt);
     void convert(int su, int sv, uint32_t* slot);
 
-    const float* q_ = nullptr; // the surface's parameters
     uint32_t* memory_ = nullptr;
     uint32_t slots_ = 0, slot_words_ = 0, conversions_ = 0;
     int pu_ = 0, pv_ = 0, nu_ = 0, nv_ = 0;

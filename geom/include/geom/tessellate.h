@@ -82,7 +82,7 @@ struct FaceScratch {
     std::span<uint32_t> patches = {};
 };
 
-constexpr uint32_t kPatchCacheWords = 16384; // 64 KB: 113 spans of a bicubic rational surface
+constexpr uint32_t kPatchCacheWords = 16384; // 64 KB: 230 spans of a bicubic rational surface, 142 of a quintic one
 
 // What one face took.
 struct FaceStats {
