@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <utility>
 
 namespace facet::geom {
 namespace {
@@ -59,6 +60,14 @@ PatchCache::PatchCache(const Pack& pack, const pack::Surface& S, std::span<uint3
     if (S.type != uint8_t(pack::SurfaceType::BSpline)) return;
     const detail::BSplineSurfaceView B(pack.floats().data() + S.params);
     if (B.pu > kMaxPatchDegree || B.pv > kMaxPatchDegree || B.pu < 1 || B.pv < 1) return;
+    // A span so short that 2^30 over its length overflows a float has no local parameter in
+    // fixed point: such a surface (only a corrupt or absurd one) stays in float.
+    for (const auto& [k, n] : {std::pair{B.uk, B.ku}, std::pair{B.vk, B.kv}}) {
+        for (int i = 1; i < n; ++i) {
+            const float h = k[i] - k[i - 1];
+            if (h > 0 && h < 1e-20f) return;
+        }
+    }
     pu_ = B.pu, pv_ = B.pv, nu_ = B.nu, nv_ = B.nv;
     rational_ = B.rational, u_periodic_ = B.u_periodic, v_periodic_ = B.v_periodic;
     uk_ = B.uk, vk_ = B.vk, poles_ = B.poles, weights_ = B.weights;

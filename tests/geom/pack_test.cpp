@@ -286,3 +286,29 @@ TEST(Pack, BSplineHeadsAreChecked) {
     EXPECT_EQ(section_of(pr), uint32_t(SectionId::Curves3));
     EXPECT_EQ(pr.where.index, 1u);
 }
+
+// Knots that decrease or a weight that is not positive: no B-spline, and the span polynomials
+// of the fixed-point patches would divide by a negative knot difference (found by the
+// tessellation fuzzer). Each is refused and named; the same data in order passes.
+TEST(Pack, BSplineKnotsMustNotDecreaseAndWeightsMustBePositive) {
+    // Degree 1 x 1, 2 x 2 poles, 4 knots each way, rational: 9 + 8 + 4*4 floats.
+    const std::vector<float> good = {1, 1, 2, 2, 4, 4, 1, 0, 0,  0, 0, 1, 1,  0, 0, 2, 2,
+                                     0, 0, 0, 0, 1, 0, 1, 0, 0, 1, 1, 0,  1, 1, 0.5f, 2};
+    std::vector<float> knots = good, weight = good;
+    knots[11] = -1; // u knots 0 0 -1 1
+    weight[31] = 0;
+    for (const auto& [floats, ok] : {std::pair{good, true}, std::pair{knots, false}, std::pair{weight, false}}) {
+        PackWriter w;
+        w.add_surface(SurfaceType::BSpline, floats);
+        Buf b(w.finish());
+        Pack p;
+        const Result r = b.open(p);
+        if (ok) {
+            EXPECT_TRUE(r.ok()) << text(r);
+            continue;
+        }
+        EXPECT_EQ(r.status, Status::Corrupt);
+        EXPECT_EQ(section_of(r), uint32_t(SectionId::Surfaces));
+        EXPECT_NE(text(r).find("knots decrease or a weight is not positive"), std::string::npos) << text(r);
+    }
+}
