@@ -1,11 +1,13 @@
 #!/usr/bin/env python3
 """docs/budgets.md from the last QEMU viewer tests of both boards.
 
-  python3 tools/budgets_doc.py build/host/tests > docs/budgets.md
+  python3 tools/budgets_doc.py build/host/tests [out/bench/device.md] > docs/budgets.md
 
 Reads <dir>/<board>-viewer/budgets.{md,json} (written by tests/qemu/viewer_test.py, i.e. by
-./facet test) and adds issue 5's goals as measured.
+./facet test) and adds issue 5's goals as measured; with the table ./facet bench device
+writes, adds it (every shared model on both boards).
 """
+import csv
 import json
 import os
 import sys
@@ -17,13 +19,35 @@ FRAME_GOAL_PER_10K = 10e6
 PEAK_RAM_GOAL = 8 << 20
 
 
+def device_goals(path):
+    """Issue 13's tessellation goals on the ARM926, from bench device's CSV."""
+    if not os.path.exists(path):
+        return []
+    rows = [r for r in csv.DictReader(open(path)) if r['board'] == 'qemu-versatilepb' and r['tessellation_instructions']]
+    m = lambda r, k: int(r[k]) / 1e6
+    over_300 = [f'{r["model"]} {m(r, "tessellation_instructions"):.0f} M' for r in rows
+                if int(r['tessellation_instructions']) > 300e6]
+    over_face = [f'{r["model"]} {m(r, "max_face_instructions"):.1f} M' for r in rows
+                 if r['max_face_instructions'] and int(r['max_face_instructions']) > 30e6]
+    inflate = [f'{r["model"]} {100 * int(r["inflate_instructions"]) / int(r["tessellation_instructions"]):.0f}%'
+               for r in rows if r['inflate_instructions'] and
+               int(r['inflate_instructions']) > 0.05 * int(r['tessellation_instructions'])]
+    return ['Issue 13\'s goals on the ARM926, from these rows:', '',
+            f'- every model tessellated in <= 300 M instructions: {len(rows) - len(over_300)} of {len(rows)}'
+            + (f'; over: {", ".join(over_300)}' if over_300 else ''),
+            f'- no face over 30 M instructions: {len(rows) - len(over_face)} of {len(rows)} models'
+            + (f'; over: {", ".join(over_face)}' if over_face else ''),
+            f'- inflating <= 5% of the tessellation: {len(rows) - len(inflate)} of {len(rows)} models'
+            + (f'; over: {", ".join(inflate)}' if inflate else ''), '']
+
+
 def main():
-    if len(sys.argv) != 2:
+    if len(sys.argv) not in (2, 3):
         print(__doc__)
         return 2
     base = sys.argv[1]
     out = [f'# Budgets (generated {date.today().isoformat()})', '',
-           'Made by `python3 tools/budgets_doc.py build/host/tests` from the `qemu.<board>.viewer` tests of',
+           'Made by `python3 tools/budgets_doc.py build/host/tests out/bench/device.md` from the `qemu.<board>.viewer` tests of',
            '`./facet test` (`tests/qemu/viewer_test.py`, which writes `build/host/tests/<board>-viewer/budgets.md`);',
            '`./facet run` writes `out/run/budgets.{json,md}` for its own model. Exact guest instruction counts',
            'from the QEMU plugin; ms at 600 MHz, one instruction per cycle. Default tolerance (0.1% of the',
@@ -66,6 +90,14 @@ def main():
     for b in BOARDS:
         out.append(open(os.path.join(base, f'{b}-viewer', 'budgets.md')).read().rstrip())
         out.append('')
+    if len(sys.argv) == 3:
+        out += ['## Every shared model (`./facet bench device`)', '',
+                'The viewer firmware on every model of ../shared/models, loaded deflated, tessellated at the '
+                'default tolerance, drawn fitted then zoomed three steps (`./facet bench device`: CSV in '
+                'out/bench/device.csv). "largest face" = the costliest face of the first pass (all its pieces); '
+                '"largest frame" = the costliest full redraw of the finished model.', '',
+                open(sys.argv[2]).read().rstrip(), '']
+        out += device_goals(os.path.splitext(sys.argv[2])[0] + '.csv')
     print('\n'.join(out))
     return 0
 

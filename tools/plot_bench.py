@@ -4,6 +4,8 @@
   plot_bench.py cdt out/bench/cdt.csv     ns per vertex by input, facet vs CGAL (log scale)
   plot_bench.py mesh out/bench/mesh.csv   triangles and time per model, facet vs BRepMesh
   plot_bench.py mesh-table out/bench/mesh.csv   the same as a Markdown table (docs/geom.md)
+  plot_bench.py render out/bench/render.csv   instructions a frame by view, facet vs tgx, per board
+  plot_bench.py render-table out/bench/render.csv   the same as a Markdown table (docs/render.md)
 """
 import csv
 import os
@@ -128,11 +130,68 @@ def mesh_table(path):
               f'median speed-up {speed[len(speed) // 2]:.0f}x (range {speed[0]:.0f}x-{speed[-1]:.0f}x).')
 
 
+def render_views(path):
+    """{(board, model, view, size): {impl: row}} in the CSV's order."""
+    views = {}
+    for r in csv.DictReader(open(path)):
+        views.setdefault((r['board'], r['model'], r['view'], f'{r["width"]}x{r["height"]}'), {})[r['impl']] = r
+    return views
+
+
+def plot_render(path):
+    views = render_views(path)
+    impls = ['facet', 'facet_shaded', 'tgx']
+    png = os.path.splitext(path)[0] + '.png'
+    boards = list(dict.fromkeys(k[0] for k in views))
+    plots = []
+    with tempfile.NamedTemporaryFile('w', suffix='.dat', delete=False) as dat:
+        for b in boards:
+            dat.write('view ' + ' '.join(impls) + '\n')
+            for (board, model, view, size), row in views.items():
+                if board == b:
+                    dat.write(f'"{model} {view} {size}" ' + ' '.join(
+                        str(int(row[i]['instructions']) / 1e6) if i in row else 'NaN' for i in impls) + '\n')
+            dat.write('\n\n')
+    for k, b in enumerate(boards):
+        cols = ', '.join(f"'{dat.name}' index {k} using {j + 2}:xtic(1) title columnheader" for j in range(len(impls)))
+        plots.append(f"set title '{b}: million instructions a frame (lower is better)'\nplot {cols}")
+    script = f"""
+set terminal pngcairo noenhanced size 1400,{420 * len(boards)} font 'sans,10'
+set output '{png}'
+set multiplot layout {len(boards)},1
+set style data histograms
+set style histogram clustered gap 1
+set style fill solid 0.8 border -1
+set logscale y
+set ylabel 'M instructions'
+set xtics rotate by -25
+set key top left
+""" + '\n'.join(plots) + '\nunset multiplot\n'
+    subprocess.run(['gnuplot'], input=script, text=True, check=True)
+    os.unlink(dat.name)
+    print(f'plot: {png}')
+
+
+def render_table(path):
+    print('| board | model | view | screen | triangles drawn | pixels | facet M | facet without edges M | tgx M '
+          '| facet / tgx |')
+    print('|---|---|---|---|---:|---:|---:|---:|---:|---:|')
+    for (board, model, view, size), row in render_views(path).items():
+        f, s, t = row.get('facet'), row.get('facet_shaded'), row.get('tgx')
+        if not (f and s and t):
+            continue
+        fi, si, ti = (int(x['instructions']) for x in (f, s, t))
+        print(f'| {board} | {model} | {view} | {size} | {int(f["triangles"]):,} | {int(t["pixels"]):,} | {fi / 1e6:.2f} '
+              f'| {si / 1e6:.2f} | {ti / 1e6:.2f} | {fi / ti:.2f} |')
+
+
 def main():
-    if len(sys.argv) != 3 or sys.argv[1] not in ('cdt', 'mesh', 'mesh-table'):
+    kinds = {'cdt': plot_cdt, 'mesh': plot_mesh, 'mesh-table': mesh_table, 'render': plot_render,
+             'render-table': render_table}
+    if len(sys.argv) != 3 or sys.argv[1] not in kinds:
         print(__doc__)
         return 2
-    {'cdt': plot_cdt, 'mesh': plot_mesh, 'mesh-table': mesh_table}[sys.argv[1]](sys.argv[2])
+    kinds[sys.argv[1]](sys.argv[2])
     return 0
 
 

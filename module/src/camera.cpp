@@ -11,6 +11,14 @@ constexpr int32_t kRadiusV = 32768;          // the bounding sphere's radius in 
 
 inline int32_t round_to_int(float v) { return int32_t(v + (v >= 0 ? 0.5f : -0.5f)); }
 
+// The eye's distance from the centre in view units, and the focal length in 1/16 pixel: the
+// bounding sphere fills 80% of the short side when fitted.
+int32_t eye_distance(float zoom) { return round_to_int(3.0f * kRadiusV * zoom); }
+int32_t focal16(uint16_t width, uint16_t height) {
+    const float half = 0.5f * float(width < height ? width : height);
+    return round_to_int(16 * 2.5f * half);
+}
+
 } // namespace
 
 View standard_view(Standard s, const View& from) {
@@ -51,14 +59,29 @@ void Camera::pan_pixels(int32_t dx, int32_t dy, float radius, uint16_t width, ui
     view_.pan_y -= float(dy) * px / 2;
 }
 
-Transform Camera::transform(const Scene& scene, uint32_t index, uint16_t width, uint16_t height) const {
-    const pack::Instance& inst = scene.pack().instances()[index];
-    Transform in{};
+void Camera::rotation(float R[9]) const {
     float sy, cy, sp, cp;
     geom::sincos_f(view_.yaw, sy, cy);
     geom::sincos_f(view_.pitch, sp, cp);
     // Rotate about z (yaw), then tilt about x (pitch): CAD models are usually z-up.
-    const float R[9] = {cy, -sy, 0, sy * cp, cy * cp, -sp, sy * sp, cy * sp, cp};
+    const float r[9] = {cy, -sy, 0, sy * cp, cy * cp, -sp, sy * sp, cy * sp, cp};
+    for (int i = 0; i < 9; ++i) R[i] = r[i];
+}
+
+// The transform's dist over its view units per mm (the sphere's radius is kRadiusV units).
+float Camera::distance_mm(const Scene& scene) const {
+    return float(eye_distance(view_.zoom)) * (2 * scene.radius()) / kViewPerDiagonal;
+}
+
+float Camera::focal_px(uint16_t width, uint16_t height) {
+    return float(focal16(width, height)) / 16;
+}
+
+Transform Camera::transform(const Scene& scene, uint32_t index, uint16_t width, uint16_t height) const {
+    const pack::Instance& inst = scene.pack().instances()[index];
+    Transform in{};
+    float R[9];
+    rotation(R);
     const float* m = inst.m;
     float A[9];
     for (int i = 0; i < 3; ++i)
@@ -83,10 +106,9 @@ Transform Camera::transform(const Scene& scene, uint32_t index, uint16_t width, 
     in.mirrored = det < 0;
     in.closed = scene.pack().shells()[inst.shell].closed != 0;
 
-    const float half = 0.5f * float(width < height ? width : height);
-    in.dist = round_to_int(3.0f * kRadiusV * view_.zoom);
+    in.dist = eye_distance(view_.zoom);
     in.near = kRadiusV / 64;
-    in.f16 = round_to_int(16 * 2.5f * half); // the bounding sphere fills 80% of the short side when fitted
+    in.f16 = focal16(width, height);
     in.cx16 = int32_t(width) * 8;
     in.cy16 = int32_t(height) * 8;
     in.guard = render::kGuardBand - (in.cx16 > in.cy16 ? in.cx16 : in.cy16) - 64;

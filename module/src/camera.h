@@ -136,6 +136,12 @@ public:
     void pan(float dx_mm, float dy_mm);
     void pan_pixels(int32_t dx, int32_t dy, float radius, uint16_t width, uint16_t height);
 
+    // The orbit's rotation (row-major): world axes into the camera's (x right, y up, z to the eye).
+    void rotation(float R[9]) const;
+    // The eye's distance from the model's centre (mm) and the focal length (pixels).
+    float distance_mm(const Scene& scene) const;
+    static float focal_px(uint16_t width, uint16_t height);
+
     // Instance `instance` of the scene under this camera on a width x height screen.
     Transform transform(const Scene& scene, uint32_t instance, uint16_t width, uint16_t height) const;
 

@@ -43,6 +43,7 @@ public:
     // For tests of the parts behind the public API (the fitted view of every model).
     const module::Camera& camera() const { return camera_; }
     const module::Scene& scene() const { return scene_; }
+    const Display& display() const { return config_.display; }
     const module::Overlay& overlay() const { return presenter_.overlay(); }
 
     // Tools (tools.cpp): the section plane and the parts.

@@ -185,4 +185,20 @@ void Viewer::set_section(const SectionPlane& p) {
     c.set_section(s);
 }
 
+Viewer::CameraView Viewer::camera() const {
+    const Core& c = *static_cast<const Core*>(this);
+    CameraView v{};
+    if (!c.scene().loaded()) return v;
+    const module::Camera& cam = c.camera();
+    cam.rotation(v.rotation);
+    // The view is R (p - centre) + pan: the target is the centre less the pan turned back.
+    const float* centre = c.scene().centre();
+    const module::View& view = cam.view();
+    for (int k = 0; k < 3; ++k) v.target_mm[k] = centre[k] - (v.rotation[k] * view.pan_x + v.rotation[3 + k] * view.pan_y);
+    v.distance_mm = cam.distance_mm(c.scene());
+    v.focal_px = module::Camera::focal_px(c.display().width, c.display().height);
+    v.parallel = view.ortho;
+    return v;
+}
+
 } // namespace facet

@@ -29,6 +29,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)
 sys.path.insert(0, os.path.join(ROOT, 'tools'))
 import board as boards  # noqa: E402
 import img  # noqa: E402
+import uart_regions  # noqa: E402
 
 TESSELLATION_BUDGET = 600_000_000
 FRAME_BUDGET_PER_10K = 20_000_000
@@ -75,13 +76,8 @@ def analyse(uart, regions):
     its pieces' instructions (the last 'pieces' frame and overlay regions before its '@frame'
     line: a frame the view outdated while it was drawn is not one), the overlay's part of them,
     the mesh's triangles then and the cost the firmware's own clock gave it (us at 600 MHz)."""
-    names = [r['name'] for r in regions]
-    counts = [r['instructions'] for r in regions]
-    tess, frames, tri_now, pass_no, i, pieces, overlay = {}, [], 0, -1, 0, [], []
-    for line in uart.splitlines():
-        w = line.split()
-        if not w:
-            continue
+    tess, frames, tri_now, pass_no, pieces, overlay = {}, [], 0, -1, [], []
+    for w, region in uart_regions.lines(uart, regions):
         if w[0] == '@pass':
             pass_no = int(w[1])
             tri_now = 0
@@ -94,16 +90,14 @@ def analyse(uart, regions):
             frames.append({'instructions': None if None in mine else sum(mine), 'triangles': tri_now, 'pass': pass_no,
                            'overlay': overlay[-1] if overlay else 0, 'cost_us': int(kv.get('cost_us', 0))})
             pieces, overlay = [], []
-        elif w[0] == '@begin' and len(w) == 2:
-            if i < len(names) and names[i] == w[1]:
-                n = counts[i]
-                if w[1] in ('edges', 'face'):
-                    tess[pass_no] = tess.get(pass_no, 0) + (n or 0)
-                elif w[1] in ('frame', 'overlay'):
-                    pieces.append(n)  # a frame's cost: its pieces, the overlay's included
-                if w[1] == 'overlay':
-                    overlay.append(n or 0)
-            i += 1
+        elif region:
+            n = region['instructions']
+            if w[1] in ('edges', 'face'):
+                tess[pass_no] = tess.get(pass_no, 0) + (n or 0)
+            elif w[1] in ('frame', 'overlay'):
+                pieces.append(n)  # a frame's cost: its pieces, the overlay's included
+            if w[1] == 'overlay':
+                overlay.append(n or 0)
     return tess, frames
 
 

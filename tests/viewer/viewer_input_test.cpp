@@ -1014,3 +1014,76 @@ TEST(Viewer, SeeThroughDrawsTheOtherPartsAsAScreenDoor) {
     EXPECT_NEAR(double(face) / n, 0.5, 0.02);
     EXPECT_NEAR(double(behind) / n, 0.5, 0.02);
 }
+
+// Viewer::camera() describes the camera the frames are drawn with: the model's corners,
+// projected by it, bound the pixels the model covers, in perspective and parallel, turned,
+// zoomed and panned.
+TEST(Viewer, TheCameraItDescribesIsTheOneItDraws) {
+    App app;
+    app.buffers = 1; // one draw buffer and its depth: the last frame's coverage stays there
+    app.w = 200, app.h = 150, app.lines = 150;
+    EXPECT_EQ(Viewer::CameraView{}.distance_mm, 0.0f);
+    ASSERT_TRUE(app.create().ok());
+    EXPECT_EQ(app.v->camera().distance_mm, 0.0f) << "no model, no camera";
+    constexpr uint32_t kSides = 40;
+    ASSERT_TRUE(app.load(polygon_and_triangle(kSides)).ok());
+    app.v->set_display_mode(DisplayMode::Shaded); // faces only: their pixels are the model's
+    app.run();
+    std::vector<std::array<float, 3>> corners;
+    for (uint32_t i = 0; i < kSides; ++i) {
+        const double a = 2 * M_PI * i / kSides;
+        corners.push_back({float(100 * std::cos(a)), float(100 * std::sin(a)), 0});
+    }
+    corners.push_back({120, 0, 0}), corners.push_back({140, 0, 0}), corners.push_back({120, 20, 0});
+    auto check = [&](const char* what) {
+        SCOPED_TRACE(what);
+        const Viewer::CameraView c = app.v->camera();
+        ASSERT_GT(c.distance_mm, 0.0f);
+        ASSERT_GT(c.focal_px, 0.0f);
+        float lo[2] = {1e9f, 1e9f}, hi[2] = {-1e9f, -1e9f};
+        auto project = [&](const std::array<float, 3>& p, float& x, float& y) {
+            float q[3];
+            for (int i = 0; i < 3; ++i) {
+                q[i] = 0;
+                for (int j = 0; j < 3; ++j) q[i] += c.rotation[3 * i + j] * (p[j] - c.target_mm[j]);
+            }
+            const float s = c.parallel ? c.distance_mm : c.distance_mm - q[2];
+            x = app.w / 2.0f + c.focal_px * q[0] / s;
+            y = app.h / 2.0f - c.focal_px * q[1] / s;
+        };
+        for (const auto& p : corners) {
+            float x, y;
+            project(p, x, y);
+            lo[0] = std::min(lo[0], x), hi[0] = std::max(hi[0], x), lo[1] = std::min(lo[1], y), hi[1] = std::max(hi[1], y);
+        }
+        int box[4] = {app.w, app.h, -1, -1}; // the covered pixels' bounds
+        for (int y = 0; y < app.h; ++y)
+            for (int x = 0; x < app.w; ++x)
+                if (app.depth[0][size_t(y) * app.w + x] != 0xFFFF)
+                    box[0] = std::min(box[0], x), box[1] = std::min(box[1], y), box[2] = std::max(box[2], x), box[3] = std::max(box[3], y);
+        ASSERT_GE(box[2], box[0]) << "the model covers pixels";
+        // Pixel x is sampled at x + 0.5: every covered pixel's centre lies within the projected
+        // bounds (to the rasterizer's 1/16-pixel rounding), and the bounds are tight (to the
+        // few pixels a sharp corner leaves uncovered); bounds clipped to the screen.
+        const float clo[2] = {std::max(lo[0], 0.5f), std::max(lo[1], 0.5f)};
+        const float chi[2] = {std::min(hi[0], app.w - 0.5f), std::min(hi[1], app.h - 0.5f)};
+        for (int k = 0; k < 2; ++k) {
+            EXPECT_GE(box[k] + 0.5f, clo[k] - 0.125f) << "axis " << k;
+            EXPECT_LE(box[k + 2] + 0.5f, chi[k] + 0.125f) << "axis " << k;
+            EXPECT_NEAR(box[k] + 0.5f, clo[k], 3.0f) << "axis " << k;
+            EXPECT_NEAR(box[k + 2] + 0.5f, chi[k], 3.0f) << "axis " << k;
+        }
+        // The small triangle's middle is on it.
+        float x, y;
+        project({126.7f, 6.7f, 0}, x, y);
+        EXPECT_NE(app.depth[0][size_t(y) * app.w + size_t(x)], 0xFFFF);
+    };
+    check("fitted");
+    app.v->act(Action::TurnLeft), app.v->act(Action::TiltUp), app.v->act(Action::ZoomIn), app.v->act(Action::PanLeft);
+    app.run();
+    check("turned, zoomed and panned");
+    app.v->act(Action::Projection);
+    app.run();
+    EXPECT_TRUE(app.v->camera().parallel);
+    check("parallel");
+}

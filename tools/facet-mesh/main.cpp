@@ -2,7 +2,7 @@
 // PLY, with a report: faces, failed faces (and why), triangles, the deviation from the exact
 // surfaces, free and non-manifold edges, the share of thin triangles, time.
 //
-//   facet-mesh MODEL.fpk [--stl|--obj|--ply FILE] [--json REPORT] [--tolerance MM] [--angle RAD] [--faces]
+//   facet-mesh MODEL.fpk [--stl|--obj|--ply FILE] [--json REPORT] [--tolerance MM | --finer N] [--angle RAD] [--faces]
 //              [--pieces UNITS] [--face-points N] [--quiet]
 // --pieces: each face tessellated in pieces of UNITS (geom::FaceJob), as the device does; the
 // mesh must be the very one made at once. --face-points: the CDT arena's capacity in points
@@ -121,9 +121,9 @@ bool number(const char* option, const char* text, double lo, double hi, double& 
 int main(int argc, char** argv) {
     const char* in = nullptr;
     std::string out, format, json;
-    double tolerance = 0, angle = 0, face_points = 32760, pieces = 0; // pieces: units per piece; 0: each face at once
+    double tolerance = 0, angle = 0, face_points = 32760, pieces = 0, finer = 0; // pieces: units per piece; 0: each face at once
     bool quiet = false, per_face = false;
-    const char* usage = "usage: facet-mesh MODEL.fpk [--stl|--obj|--ply FILE] [--json REPORT] [--tolerance MM] [--angle RAD] [--faces] "
+    const char* usage = "usage: facet-mesh MODEL.fpk [--stl|--obj|--ply FILE] [--json REPORT] [--tolerance MM | --finer N] [--angle RAD] [--faces] "
                         "[--pieces UNITS] [--face-points N] [--quiet]";
     std::string error;
     auto bad = [&](const std::string& m) {
@@ -137,6 +137,9 @@ int main(int argc, char** argv) {
         else if (a == "--json" && has_value && json.empty()) json = argv[++i];
         else if (a == "--tolerance" && has_value) {
             if (!number("--tolerance", argv[++i], 1e-9, 1e9, tolerance, error)) return bad(error + " (millimetres, more than 0)");
+        } else if (a == "--finer" && has_value) { // the viewer's level of detail N steps finer
+            if (!number("--finer", argv[++i], 0, 3, finer, error)) return bad(error);
+            if (finer != std::floor(finer)) return bad("--finer: a whole number of steps, 0 to 3");
         } else if (a == "--angle" && has_value) {
             if (!number("--angle", argv[++i], 1e-3, 3.14159, angle, error)) return bad(error + " (radians)");
         } else if (a == "--pieces" && has_value) {
@@ -164,6 +167,8 @@ int main(int argc, char** argv) {
 
     TessOptions opt;
     opt.tolerance = tolerance > 0 ? float(tolerance) : default_tolerance(pack);
+    // The viewer's Finer key halves the tolerance, down to an eighth (the same float).
+    for (int k = 0; k < int(finer); ++k) opt.tolerance *= 0.5f;
     if (angle > 0) opt.max_angle = float(angle);
 
     // Buffers: edge samples (once per edge, shared by every face and instance; the pool grows

@@ -163,15 +163,8 @@ enum class DisplayMode : uint8_t {
     SeeThrough,  // the chosen part (or the picked face's) solid, the others screen-door (every
                  // other pixel), so what they hide shows through
 };
-struct KeyBinding {
-    uint32_t key;
-    Action action;
-    const char* help;
-};
-struct KeyBindings {
-    const KeyBinding* table;
-    uint32_t count;
-};
+struct KeyBinding { uint32_t key; Action action; const char* help; };
+struct KeyBindings { const KeyBinding* table; uint32_t count; };
 KeyBindings key_bindings(); // for a help screen: what each key does
 
 struct Stats {
@@ -234,12 +227,16 @@ public:
 
     // The section plane: normal . p = offset_mm (the placed model's coordinates, mm); the side
     // the normal points to is cut away, and a solid's inside shows in a colour of its own.
-    struct SectionPlane {
-        bool on;
-        float normal[3], offset_mm; // normal: unit length
-    };
+    struct SectionPlane { bool on; float normal[3], offset_mm; }; // normal: unit length
     SectionPlane section() const;
     void set_section(const SectionPlane& plane);
+
+    // The camera, for an application's own 3D marks over the model: a point p (mm, placed
+    // model) is at c = R (p - target) (x right, y up, z to the eye; R row-major), on the screen
+    // at (width/2 + focal_px c.x / s, height/2 - focal_px c.y / s), s = distance_mm - c.z
+    // (parallel: s = distance_mm). Zero before a model is loaded.
+    struct CameraView { float rotation[9], target_mm[3], distance_mm, focal_px; bool parallel; };
+    CameraView camera() const;
 
 private:
     Viewer() = default; // lives in the workspace (create())
