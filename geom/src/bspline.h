@@ -4,6 +4,7 @@
 #include "geom/eval.h"
 
 #include <cmath>
+#include <type_traits>
 
 namespace facet::geom::detail {
 
@@ -38,19 +39,22 @@ inline int find_span(const float* knots, int n, int p, float& t, bool periodic) 
 // Non-zero B-spline basis functions and their first derivatives at t (The NURBS Book A2.2/A2.3).
 // knots: expanded; n: poles; p: degree. Returns the span index s: functions N[s-p .. s].
 // A periodic B-spline (stored over one period) takes t modulo the period; others clamp t.
-// dN null: the values only.
-inline int basis(const float* knots, int n, int p, float t, bool periodic, float* N, float* dN) {
-    const int s = find_span(knots, n, p, t, periodic);
-    float left[kMaxDegree + 2], right[kMaxDegree + 2];
-    float ndu[kMaxDegree + 1][kMaxDegree + 1];
+// dN null: the values only. Real: float on the device; double for the host's reference checks.
+template <typename Real = float>
+inline int basis(const float* knots, int n, int p, float t_in, bool periodic, Real* N, std::type_identity_t<Real>* dN) {
+    float tf = t_in;
+    const int s = find_span(knots, n, p, tf, periodic);
+    const Real t = tf;
+    Real left[kMaxDegree + 2], right[kMaxDegree + 2];
+    Real ndu[kMaxDegree + 1][kMaxDegree + 1];
     ndu[0][0] = 1;
     for (int j = 1; j <= p; ++j) {
-        left[j] = t - knots[s + 1 - j];
-        right[j] = knots[s + j] - t;
-        float saved = 0;
+        left[j] = t - Real(knots[s + 1 - j]);
+        right[j] = Real(knots[s + j]) - t;
+        Real saved = 0;
         for (int r = 0; r < j; ++r) {
             ndu[j][r] = right[r + 1] + left[j - r];
-            const float tmp = ndu[j][r] != 0 ? ndu[r][j - 1] / ndu[j][r] : 0;
+            const Real tmp = ndu[j][r] != 0 ? ndu[r][j - 1] / ndu[j][r] : 0;
             ndu[r][j] = saved + right[r + 1] * tmp;
             saved = left[j - r] * tmp;
         }
@@ -60,10 +64,10 @@ inline int basis(const float* knots, int n, int p, float t, bool periodic, float
     if (!dN) return s; // values only
     // First derivatives: p * (N_{j,p-1}/(u_{j+p}-u_j) - N_{j+1,p-1}/(u_{j+p+1}-u_{j+1})).
     for (int r = 0; r <= p; ++r) {
-        float d = 0;
+        Real d = 0;
         if (r >= 1 && ndu[p][r - 1] != 0) d += ndu[r - 1][p - 1] / ndu[p][r - 1];
         if (r <= p - 1 && ndu[p][r] != 0) d -= ndu[r][p - 1] / ndu[p][r];
-        dN[r] = p > 0 ? d * p : 0;
+        dN[r] = p > 0 ? d * Real(p) : 0;
     }
     return s;
 }

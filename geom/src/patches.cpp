@@ -54,12 +54,69 @@ void span_polynomials(const float* knots, int p, int s, float M[kN][kN]) {
         for (int k = 0; k <= p; ++k) M[a][k] = P[a][k];
 }
 
+// Bézier extraction of one span, on one row of control points (The NURBS Book A5.1, knot
+// insertion): the span's ends a = knots[s] < b = knots[s+1] are inserted into the local knot
+// vector until each has multiplicity p; the p + 1 points then left over the span are its
+// Bézier control points. Only convex combinations with weights in [0, 1] (the knots are
+// ordered): the points stay within the row's hull and the float rounding stays at its size.
+// row: p + 1 points of `dims` floats, `stride` floats apart, read and overwritten.
+constexpr int kBN = kMaxBezierDegree + 1;
+void extract_span(const float* knots, int p, int s, float* row, int stride, int dims) {
+    float T[4 * kBN], Q[3 * kBN][4];
+    int nt = 2 * p + 2, nq = p + 1;
+    for (int i = 0; i < nt; ++i) T[i] = knots[s - p + i];
+    for (int i = 0; i < nq; ++i)
+        for (int d = 0; d < dims; ++d) Q[i][d] = row[i * stride + d];
+    for (const float x : {T[p], T[p + 1]}) {
+        for (;;) {
+            int k = 0, m = 0; // T[k] <= x < T[k+1]; m: x's multiplicity
+            for (int i = 0; i < nt; ++i) {
+                if (T[i] <= x) k = i;
+                m += T[i] == x;
+            }
+            if (m >= p) break;
+            for (int i = nq; i > k - m; --i)
+                for (int d = 0; d < dims; ++d) Q[i][d] = Q[i - 1][d];
+            for (int i = k - m; i >= k - p + 1; --i) {
+                const float alpha = (x - T[i]) / (T[i + p] - T[i]);
+                for (int d = 0; d < dims; ++d) Q[i][d] = alpha * Q[i][d] + (1 - alpha) * Q[i - 1][d];
+            }
+            for (int i = nt; i > k + 1; --i) T[i] = T[i - 1];
+            T[k + 1] = x;
+            ++nt, ++nq;
+        }
+    }
+    int k = 0; // the span [a, b): its last a
+    for (int i = 0; i < nt; ++i)
+        if (T[i] <= T[p]) k = i;
+    for (int i = 0; i <= p; ++i)
+        for (int d = 0; d < dims; ++d) row[i * stride + d] = Q[k - p + i][d];
+}
+
+// A Bézier curve's point by de Casteljau, in place over c[0..n] (lerps of numbers under 2^29
+// in magnitude: differences under 2^30, never overflowing).
+inline int32_t casteljau(int32_t* c, int n, int32_t t) {
+    for (int r = n; r > 0; --r)
+        for (int i = 0; i < r; ++i) c[i] += mulq(c[i + 1] - c[i], t);
+    return c[0];
+}
+
+// The same, stopping one level short: the point, and the difference of the last two points
+// (the derivative over the degree).
+inline int32_t casteljau_d(int32_t* c, int n, int32_t t, int32_t& diff) {
+    for (int r = n; r > 1; --r)
+        for (int i = 0; i < r; ++i) c[i] += mulq(c[i + 1] - c[i], t);
+    diff = c[1] - c[0];
+    return c[0] + mulq(diff, t);
+}
+
 } // namespace
 
 PatchCache::PatchCache(const Pack& pack, const pack::Surface& S, std::span<uint32_t> memory) {
     if (S.type != uint8_t(pack::SurfaceType::BSpline)) return;
     const detail::BSplineSurfaceView B(pack.floats().data() + S.params);
-    if (B.pu > kMaxPatchDegree || B.pv > kMaxPatchDegree || B.pu < 1 || B.pv < 1) return;
+    if (B.pu > kMaxBezierDegree || B.pv > kMaxBezierDegree || B.pu < 1 || B.pv < 1) return;
+    bezier_ = B.pu > kMaxPatchDegree || B.pv > kMaxPatchDegree;
     // A span so short that 2^30 over its length overflows a float has no local parameter in
     // fixed point: such a surface (only a corrupt or absurd one) stays in float.
     for (const auto& [k, n] : {std::pair{B.uk, B.ku}, std::pair{B.vk, B.kv}}) {
@@ -98,6 +155,7 @@ const uint32_t* PatchCache::patch(int su, int sv) {
 }
 
 void PatchCache::convert(int su, int sv, uint32_t* slot) {
+    if (bezier_) return convert_bezier(su, sv, slot);
     float Mu[kN][kN], Mv[kN][kN];
     span_polynomials(uk_, pu_, su, Mu);
     span_polynomials(vk_, pv_, sv, Mv);
@@ -151,6 +209,50 @@ void PatchCache::convert(int su, int sv, uint32_t* slot) {
     slot[6] = std::bit_cast<uint32_t>(kOne / (vk_[sv + 1] - vk_[sv]));
 }
 
+void PatchCache::convert_bezier(int su, int sv, uint32_t* slot) {
+    // The span's (pu + 1) x (pv + 1) poles in homogeneous coordinates w (P - O), w, as floats
+    // in the slot's coefficient words; extracted along u (each column of the slot), then
+    // along v (each row); then each coordinate to fixed point in place.
+    const int dims = rational_ ? 4 : 3, i0 = su - pu_, j0 = sv - pv_, row = pv_ + 1;
+    const float* O = poles_ + 3 * (i0 * nv_ + j0);
+    float* f = reinterpret_cast<float*>(slot + kHead); // [k][l][d]
+    for (int a = 0; a <= pu_; ++a) {
+        for (int b = 0; b <= pv_; ++b) {
+            const int at = (i0 + a) * nv_ + j0 + b;
+            const float* P = poles_ + 3 * at;
+            const float w = rational_ ? weights_[at] : 1.0f;
+            float* h = f + (a * row + b) * dims;
+            for (int d = 0; d < 3; ++d) h[d] = (P[d] - O[d]) * w;
+            if (rational_) h[3] = w;
+        }
+    }
+    for (int b = 0; b <= pv_; ++b) extract_span(uk_, pu_, su, f + b * dims, row * dims, dims);
+    for (int a = 0; a <= pu_; ++a) extract_span(vk_, pv_, sv, f + a * row * dims, dims, dims);
+    // Each coordinate with the largest exponent that keeps its largest magnitude under 2^29
+    // (de Casteljau's points stay in the net's hull: nothing grows past it).
+    const int per = (pu_ + 1) * row;
+    uint32_t exps = 0;
+    for (int d = 0; d < dims; ++d) {
+        float big = 0;
+        for (int i = 0; i < per; ++i) big = std::max(big, std::fabs(f[i * dims + d]));
+        const int e = big >= 1e-30f ? std::clamp(28 - exponent_f(big), -100, 100) : 0;
+        exps |= uint32_t(uint8_t(int8_t(e))) << (8 * d);
+    }
+    // In place, each pole's coordinates together ([k][l][d]: the order extraction left).
+    int32_t* c = reinterpret_cast<int32_t*>(f);
+    for (int d = 0; d < dims; ++d) {
+        const float scale = pow2_f(int(int8_t(uint8_t(exps >> (8 * d)))));
+        for (int i = d; i < per * dims; i += dims) {
+            const float v = f[i] * scale;
+            c[i] = int32_t(v + (v >= 0 ? 0.5f : -0.5f));
+        }
+    }
+    slot[1] = exps;
+    slot[2] = std::bit_cast<uint32_t>(O[0]), slot[3] = std::bit_cast<uint32_t>(O[1]), slot[4] = std::bit_cast<uint32_t>(O[2]);
+    slot[5] = std::bit_cast<uint32_t>(kOne / (uk_[su + 1] - uk_[su]));
+    slot[6] = std::bit_cast<uint32_t>(kOne / (vk_[sv + 1] - vk_[sv]));
+}
+
 const uint32_t* PatchCache::locate(float& u, float& v, int32_t& qs, int32_t& qt) {
     // The spans: the last point's if u and v are still in them, else found (and wrapped or
     // clamped as the B-spline's own evaluation does).
@@ -169,13 +271,34 @@ const uint32_t* PatchCache::locate(float& u, float& v, int32_t& qs, int32_t& qt)
     return slot;
 }
 
+void PatchCache::bezier(const uint32_t* slot, int32_t qs, int32_t qt, int32_t* out, int32_t* ds, int32_t* dt) const {
+    const int32_t* c = reinterpret_cast<const int32_t*>(slot + kHead);
+    const int dims = rational_ ? 4 : 3, row = pv_ + 1;
+    int32_t V[kBN], Dt[kBN], r[kBN];
+    for (int d = 0; d < dims; ++d) {
+        // Each row's point in t (and its difference in t), then theirs in s.
+        for (int k = 0; k <= pu_; ++k) {
+            const int32_t* src = c + k * row * dims + d;
+            for (int l = 0; l <= pv_; ++l) r[l] = src[l * dims];
+            V[k] = ds ? casteljau_d(r, pv_, qt, Dt[k]) : casteljau(r, pv_, qt);
+        }
+        if (!ds) {
+            out[d] = casteljau(V, pu_, qs);
+            continue;
+        }
+        out[d] = casteljau_d(V, pu_, qs, ds[d]);
+        dt[d] = casteljau(Dt, pu_, qs);
+    }
+}
+
 Vec3 PatchCache::point(float u, float v) {
     int32_t qs, qt;
     const uint32_t* slot = locate(u, v, qs, qt);
     const int32_t* c = reinterpret_cast<const int32_t*>(slot + kHead);
     const int dims = rational_ ? 4 : 3, row = pv_ + 1;
     int32_t out[4];
-    for (int d = 0; d < dims; ++d, c += (pu_ + 1) * row) {
+    if (bezier_) bezier(slot, qs, qt, out, nullptr, nullptr);
+    for (int d = 0; d < dims && !bezier_; ++d, c += (pu_ + 1) * row) {
         // Horner in t along each row (a power of s), then in s.
         int32_t acc = 0;
         for (int k = pu_; k >= 0; --k) {
@@ -206,7 +329,16 @@ SurfacePoint PatchCache::point_and_derivatives(float u, float v) {
     // polynomial can reach its degree times the coefficients' sum: 8 keeps it in 32 bits).
     float f[4], fs[4], ft[4];
     const uint32_t exps = slot[1];
-    for (int d = 0; d < dims; ++d, c += (pu_ + 1) * row) {
+    if (bezier_) {
+        // The Bézier derivatives are the degree times the last differences.
+        int32_t out[4], ds[4], dt[4];
+        bezier(slot, qs, qt, out, ds, dt);
+        for (int d = 0; d < dims; ++d) {
+            const float unscale = pow2_f(-int(int8_t(uint8_t(exps >> (8 * d)))));
+            f[d] = float(out[d]) * unscale, fs[d] = float(ds[d]) * (float(pu_) * unscale), ft[d] = float(dt[d]) * (float(pv_) * unscale);
+        }
+    }
+    for (int d = 0; d < dims && !bezier_; ++d, c += (pu_ + 1) * row) {
         int32_t acc = 0, acc_s = 0, acc_t = 0;
         for (int k = pu_; k >= 0; --k) {
             const int32_t* r = c + k * row;

@@ -24,7 +24,8 @@
 
 namespace facet::geom {
 
-constexpr int kMaxPatchDegree = 7;
+constexpr int kMaxPatchDegree = 7;   // up to this degree: power form, Horner
+constexpr int kMaxBezierDegree = 15; // beyond it up to this one: Bézier form, de Casteljau
 
 class PatchCache {
 public:
@@ -52,11 +53,16 @@ private:
     // The patch of (u, v) and the local parameters in [0, 2^30]; u and v wrapped or clamped.
     const uint32_t* locate(float& u, float& v, int32_t& qs, int32_t& qt);
     void convert(int su, int sv, uint32_t* slot);
+    void convert_bezier(int su, int sv, uint32_t* slot);
+    // The Bézier patch's coordinates at (qs, qt), and (ds, dt not null) their last
+    // differences in s and t (the derivatives over the degrees).
+    void bezier(const uint32_t* slot, int32_t qs, int32_t qt, int32_t* out, int32_t* ds, int32_t* dt) const;
 
     uint32_t* memory_ = nullptr;
     uint32_t slots_ = 0, slot_words_ = 0, conversions_ = 0;
     int pu_ = 0, pv_ = 0, nu_ = 0, nv_ = 0;
     bool rational_ = false, u_periodic_ = false, v_periodic_ = false;
+    bool bezier_ = false; // a degree over kMaxPatchDegree: Bézier form
     const float *uk_ = nullptr, *vk_ = nullptr, *poles_ = nullptr, *weights_ = nullptr;
     int last_su_ = -1, last_sv_ = -1; // the span of the last point (the next is often there too)
     const uint32_t* last_ = nullptr;  // and its patch
