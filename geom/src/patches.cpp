@@ -274,20 +274,28 @@ const uint32_t* PatchCache::locate(float& u, float& v, int32_t& qs, int32_t& qt)
 void PatchCache::bezier(const uint32_t* slot, int32_t qs, int32_t qt, int32_t* out, int32_t* ds, int32_t* dt) const {
     const int32_t* c = reinterpret_cast<const int32_t*>(slot + kHead);
     const int dims = rational_ ? 4 : 3, row = pv_ + 1;
-    int32_t V[kBN], Dt[kBN], r[kBN];
+    // Reduce the higher degree first: each of the other direction's lines costs its own
+    // degree squared over two, and the last reduction is one line of the other degree
+    // (6 x 10: 11 columns in s then a row in t, 286 steps, not 406).
+    const bool s_first = (pv_ + 1) * pu_ * (pu_ + 1) + pv_ * (pv_ + 1) < (pu_ + 1) * pv_ * (pv_ + 1) + pu_ * (pu_ + 1);
+    const int lines = s_first ? pv_ + 1 : pu_ + 1, inner = s_first ? pu_ : pv_, outer = s_first ? pv_ : pu_;
+    const int step_line = s_first ? dims : row * dims, step_in = s_first ? row * dims : dims;
+    const int32_t q_in = s_first ? qs : qt, q_out = s_first ? qt : qs;
+    int32_t V[kBN], Dn[kBN], r[kBN], d_in = 0, d_out = 0;
     for (int d = 0; d < dims; ++d) {
-        // Each row's point in t (and its difference in t), then theirs in s.
-        for (int k = 0; k <= pu_; ++k) {
-            const int32_t* src = c + k * row * dims + d;
-            for (int l = 0; l <= pv_; ++l) r[l] = src[l * dims];
-            V[k] = ds ? casteljau_d(r, pv_, qt, Dt[k]) : casteljau(r, pv_, qt);
+        // Each line's point in the inner parameter (and its difference), then theirs in the outer.
+        for (int k = 0; k < lines; ++k) {
+            const int32_t* src = c + k * step_line + d;
+            for (int l = 0; l <= inner; ++l) r[l] = src[l * step_in];
+            V[k] = ds ? casteljau_d(r, inner, q_in, Dn[k]) : casteljau(r, inner, q_in);
         }
         if (!ds) {
-            out[d] = casteljau(V, pu_, qs);
+            out[d] = casteljau(V, outer, q_out);
             continue;
         }
-        out[d] = casteljau_d(V, pu_, qs, ds[d]);
-        dt[d] = casteljau(Dt, pu_, qs);
+        out[d] = casteljau_d(V, outer, q_out, d_out);
+        d_in = casteljau(Dn, outer, q_out);
+        ds[d] = s_first ? d_in : d_out, dt[d] = s_first ? d_out : d_in;
     }
 }
 

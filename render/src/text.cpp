@@ -46,15 +46,19 @@ int32_t draw_text(const Target& t, int32_t x, int32_t y, const char* text, hal::
         if (y >= bottom || y + kGlyphHeight * scale <= top || x + kGlyphWidth * scale <= 0) continue;
         const unsigned char c = static_cast<unsigned char>(*text);
         const uint8_t* glyph = kFont[(c >= 32 && c < 127 ? c : '?') - 32];
-        for (int32_t r = 0; r < kGlyphHeight * scale; ++r) {
-            const int32_t py = y + r;
-            if (py < top || py >= bottom) continue;
-            const uint8_t bits = glyph[r / scale];
+        // Each glyph row `scale` screen rows high, each set bit `scale` pixels wide (no
+        // division per pixel: the ARM926 has no divide instruction).
+        for (int32_t gr = 0; gr < kGlyphHeight; ++gr) {
+            const uint8_t bits = glyph[gr];
             if (!bits) continue;
-            hal::Rgb565* row = t.row(py);
-            for (int32_t c5 = 0; c5 < kGlyphWidth * scale; ++c5) {
-                const int32_t px = x + c5;
-                if (px >= 0 && px < t.width && (bits >> (4 - c5 / scale)) & 1) row[px] = colour;
+            for (int32_t py = y + gr * scale, end = py + scale; py < end; ++py) {
+                if (py < top || py >= bottom) continue;
+                hal::Rgb565* row = t.row(py);
+                for (int32_t gc = 0; gc < kGlyphWidth; ++gc) {
+                    if (!((bits >> (4 - gc)) & 1)) continue;
+                    for (int32_t px = x + gc * scale, stop = px + scale; px < stop; ++px)
+                        if (px >= 0 && px < t.width) row[px] = colour;
+                }
             }
         }
     }

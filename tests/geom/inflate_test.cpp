@@ -51,7 +51,8 @@ Status unpack(uint8_t* region, uint32_t capacity, uint32_t loaded, uint32_t& byt
 }
 
 // Test inputs: noise (zlib stores it), text-like data with repeats (dynamic codes), a short
-// string (fixed codes), a long run (overlapping copies), and nothing at all.
+// string (fixed codes), a long run (overlapping copies), nothing at all, and skewed bytes
+// (codes longer than the decoder's table).
 std::vector<std::pair<std::string, Bytes>> inputs() {
     std::mt19937 rng(7);
     Bytes noise(70000);
@@ -65,7 +66,15 @@ std::vector<std::pair<std::string, Bytes>> inputs() {
     const std::string hello = "facet: a short string";
     Bytes run(100000, 0xAB);
     run[500] = 1;
-    return {{"noise", noise}, {"text", text}, {"short", Bytes(hello.begin(), hello.end())}, {"run", run}, {"empty", {}}};
+    // Skewed: byte k about twice as rare as byte k - 1, so that the codes run up to 15 bits
+    // (past the decoder's 9-bit table: its bit-by-bit path).
+    Bytes skewed(150000);
+    for (uint8_t& b : skewed) {
+        const uint32_t r = rng() | 1u << 24;
+        b = uint8_t(__builtin_ctz(r) * 7 + (rng() % 3));
+    }
+    return {{"noise", noise}, {"text", text}, {"short", Bytes(hello.begin(), hello.end())}, {"run", run}, {"empty", {}},
+            {"skewed", skewed}};
 }
 
 } // namespace
