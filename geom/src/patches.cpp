@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <bit>
-#include <utility>
 
 namespace facet::geom {
 namespace {
@@ -14,6 +13,13 @@ constexpr int kN = kMaxPatchDegree + 1;
 constexpr uint32_t kEmpty = 0xFFFFFFFFu;
 constexpr float kOne = 1073741824.0f; // 2^30: the local parameters' 1
 constexpr int32_t kOneQ = 1 << 30;
+
+// 2^30 over a span's length, kept finite: a span under 3e-30 long (a corrupt or absurd knot
+// vector) would make it infinite, and the local parameters NaN.
+inline float per_span(float h) {
+    const float r = kOne / h;
+    return r < 1e30f ? r : 1e30f;
+}
 
 // a x t / 2^30 for t in [0, 2^30]: |result| <= |a|.
 inline int32_t mulq(int32_t a, int32_t t) { return int32_t((int64_t(a) * t) >> 30); }
@@ -117,14 +123,6 @@ PatchCache::PatchCache(const Pack& pack, const pack::Surface& S, std::span<uint3
     const detail::BSplineSurfaceView B(pack.floats().data() + S.params);
     if (B.pu > kMaxBezierDegree || B.pv > kMaxBezierDegree || B.pu < 1 || B.pv < 1) return;
     bezier_ = B.pu > kMaxPatchDegree || B.pv > kMaxPatchDegree;
-    // A span so short that 2^30 over its length overflows a float has no local parameter in
-    // fixed point: such a surface (only a corrupt or absurd one) stays in float.
-    for (const auto& [k, n] : {std::pair{B.uk, B.ku}, std::pair{B.vk, B.kv}}) {
-        for (int i = 1; i < n; ++i) {
-            const float h = k[i] - k[i - 1];
-            if (h > 0 && h < 1e-20f) return;
-        }
-    }
     pu_ = B.pu, pv_ = B.pv, nu_ = B.nu, nv_ = B.nv;
     rational_ = B.rational, u_periodic_ = B.u_periodic, v_periodic_ = B.v_periodic;
     uk_ = B.uk, vk_ = B.vk, poles_ = B.poles, weights_ = B.weights;
@@ -205,8 +203,8 @@ void PatchCache::convert(int su, int sv, uint32_t* slot) {
     }
     slot[1] = exps;
     slot[2] = std::bit_cast<uint32_t>(O[0]), slot[3] = std::bit_cast<uint32_t>(O[1]), slot[4] = std::bit_cast<uint32_t>(O[2]);
-    slot[5] = std::bit_cast<uint32_t>(kOne / (uk_[su + 1] - uk_[su]));
-    slot[6] = std::bit_cast<uint32_t>(kOne / (vk_[sv + 1] - vk_[sv]));
+    slot[5] = std::bit_cast<uint32_t>(per_span(uk_[su + 1] - uk_[su]));
+    slot[6] = std::bit_cast<uint32_t>(per_span(vk_[sv + 1] - vk_[sv]));
 }
 
 void PatchCache::convert_bezier(int su, int sv, uint32_t* slot) {
@@ -249,8 +247,8 @@ void PatchCache::convert_bezier(int su, int sv, uint32_t* slot) {
     }
     slot[1] = exps;
     slot[2] = std::bit_cast<uint32_t>(O[0]), slot[3] = std::bit_cast<uint32_t>(O[1]), slot[4] = std::bit_cast<uint32_t>(O[2]);
-    slot[5] = std::bit_cast<uint32_t>(kOne / (uk_[su + 1] - uk_[su]));
-    slot[6] = std::bit_cast<uint32_t>(kOne / (vk_[sv + 1] - vk_[sv]));
+    slot[5] = std::bit_cast<uint32_t>(per_span(uk_[su + 1] - uk_[su]));
+    slot[6] = std::bit_cast<uint32_t>(per_span(vk_[sv + 1] - vk_[sv]));
 }
 
 const uint32_t* PatchCache::locate(float& u, float& v, int32_t& qs, int32_t& qt) {
