@@ -303,17 +303,20 @@ Vec3 PatchCache::point(float u, float v) {
     const int32_t* c = reinterpret_cast<const int32_t*>(slot + kHead);
     const int dims = rational_ ? 4 : 3, row = pv_ + 1;
     int32_t out[4];
-    if (bezier_) bezier(slot, qs, qt, out, nullptr, nullptr);
-    for (int d = 0; d < dims && !bezier_; ++d, c += (pu_ + 1) * row) {
-        // Horner in t along each row (a power of s), then in s.
-        int32_t acc = 0;
-        for (int k = pu_; k >= 0; --k) {
-            const int32_t* r = c + k * row;
-            int32_t x = r[pv_];
-            for (int l = pv_ - 1; l >= 0; --l) x = mulq(x, qt) + r[l];
-            acc = k == pu_ ? x : mulq(acc, qs) + x;
+    if (bezier_) {
+        bezier(slot, qs, qt, out, nullptr, nullptr);
+    } else {
+        for (int d = 0; d < dims; ++d, c += (pu_ + 1) * row) {
+            // Horner in t along each row (a power of s), then in s.
+            int32_t acc = 0;
+            for (int k = pu_; k >= 0; --k) {
+                const int32_t* r = c + k * row;
+                int32_t x = r[pv_];
+                for (int l = pv_ - 1; l >= 0; --l) x = mulq(x, qt) + r[l];
+                acc = k == pu_ ? x : mulq(acc, qs) + x;
+            }
+            out[d] = acc;
         }
-        out[d] = acc;
     }
     const uint32_t exps = slot[1];
     auto unscale = [&](int d) { return pow2_f(-int(int8_t(uint8_t(exps >> (8 * d))))); };
@@ -343,23 +346,24 @@ SurfacePoint PatchCache::point_and_derivatives(float u, float v) {
             const float unscale = pow2_f(-int(int8_t(uint8_t(exps >> (8 * d)))));
             f[d] = float(out[d]) * unscale, fs[d] = float(ds[d]) * (float(pu_) * unscale), ft[d] = float(dt[d]) * (float(pv_) * unscale);
         }
-    }
-    for (int d = 0; d < dims && !bezier_; ++d, c += (pu_ + 1) * row) {
-        int32_t acc = 0, acc_s = 0, acc_t = 0;
-        for (int k = pu_; k >= 0; --k) {
-            const int32_t* r = c + k * row;
-            int32_t x = r[pv_], dx = 0;
-            for (int l = pv_ - 1; l >= 0; --l) dx = mulq(dx, qt) + (x >> 3), x = mulq(x, qt) + r[l];
-            if (k == pu_) {
-                acc = x, acc_t = dx;
-            } else {
-                acc_s = mulq(acc_s, qs) + (acc >> 3);
-                acc = mulq(acc, qs) + x;
-                acc_t = mulq(acc_t, qs) + dx;
+    } else {
+        for (int d = 0; d < dims; ++d, c += (pu_ + 1) * row) {
+            int32_t acc = 0, acc_s = 0, acc_t = 0;
+            for (int k = pu_; k >= 0; --k) {
+                const int32_t* r = c + k * row;
+                int32_t x = r[pv_], dx = 0;
+                for (int l = pv_ - 1; l >= 0; --l) dx = mulq(dx, qt) + (x >> 3), x = mulq(x, qt) + r[l];
+                if (k == pu_) {
+                    acc = x, acc_t = dx;
+                } else {
+                    acc_s = mulq(acc_s, qs) + (acc >> 3);
+                    acc = mulq(acc, qs) + x;
+                    acc_t = mulq(acc_t, qs) + dx;
+                }
             }
+            const float unscale = pow2_f(-int(int8_t(uint8_t(exps >> (8 * d)))));
+            f[d] = float(acc) * unscale, fs[d] = float(acc_s) * (8 * unscale), ft[d] = float(acc_t) * (8 * unscale);
         }
-        const float unscale = pow2_f(-int(int8_t(uint8_t(exps >> (8 * d)))));
-        f[d] = float(acc) * unscale, fs[d] = float(acc_s) * (8 * unscale), ft[d] = float(acc_t) * (8 * unscale);
     }
     // d/du = d/ds over the span's length (slot[5] / 2^30).
     const float hu = std::bit_cast<float>(slot[5]) * (1 / kOne), hv = std::bit_cast<float>(slot[6]) * (1 / kOne);

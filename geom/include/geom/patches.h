@@ -12,9 +12,13 @@
 // patch's own extent, far below any tessellation tolerance.
 //
 // The patches live in memory the caller gives (FaceScratch::patches): a direct-mapped cache
-// of as many spans as fit, so memory bounds what it holds, never what it can evaluate. A
-// surface the cache cannot take (not a B-spline, a degree over kMaxPatchDegree, too little
-// memory for one patch) says so (usable() false) and the caller evaluates it in float.
+// of as many spans as fit, so memory bounds what it holds, never what it can evaluate.
+//
+// Past kMaxPatchDegree the power basis loses too much in fixed point: a surface of degree up
+// to kMaxBezierDegree has its spans extracted to Bézier form instead (knot insertion, in
+// float, once per span) and evaluated by de Casteljau in int32. A surface the cache cannot
+// take (not a B-spline, a degree over kMaxBezierDegree, too little memory for one patch)
+// says so (usable() false) and the caller evaluates it in float.
 #include "geom/eval.h"
 #include "geom/pack.h"
 #include "geom/vec.h"
