@@ -42,9 +42,8 @@ inline int find_span(const float* knots, int n, int p, float& t, bool periodic) 
 // dN null: the values only. Real: float on the device; double for the host's reference checks.
 template <typename Real = float>
 inline int basis(const float* knots, int n, int p, float t_in, bool periodic, Real* N, std::type_identity_t<Real>* dN) {
-    float tf = t_in;
-    const int s = find_span(knots, n, p, tf, periodic);
-    const Real t = tf;
+    const int s = find_span(knots, n, p, t_in, periodic);
+    const Real t = t_in;
     Real left[kMaxDegree + 2], right[kMaxDegree + 2];
     Real ndu[kMaxDegree + 1][kMaxDegree + 1];
     ndu[0][0] = 1;
@@ -71,6 +70,18 @@ inline int basis(const float* knots, int n, int p, float t_in, bool periodic, Re
     }
     return s;
 }
+
+// A B-spline curve's parameters (degree, poles, knots, rational, periodic, then knots, poles
+// of `dim` floats, weights) by name.
+struct BSplineCurveView {
+    int p, n, k;
+    bool rational, periodic;
+    const float *knots, *poles, *weights;
+
+    BSplineCurveView(const float* q, int dim)
+        : p(int(q[0])), n(int(q[1])), k(int(q[2])), rational(q[3] != 0), periodic(q[4] != 0), knots(q + 5),
+          poles(knots + k), weights(poles + n * dim) {}
+};
 
 // A B-spline surface's parameters (BSplineSurfaceHead, then knots, poles, weights) by name.
 struct BSplineSurfaceView {

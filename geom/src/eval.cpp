@@ -14,13 +14,12 @@ Vec3 v3(const float* p) { return {p[0], p[1], p[2]}; }
 
 // A B-spline curve of dimension dim at t: position and derivative (rational by the quotient rule).
 void bspline_curve(const float* prm, int dim, float t, float* pos, float* der) {
-    const int p = int(prm[0]), n = int(prm[1]), k = int(prm[2]);
-    const bool rational = prm[3] != 0, periodic = prm[4] != 0;
-    const float* knots = prm + 5;
-    const float* poles = knots + k;
-    const float* weights = poles + n * dim;
+    const detail::BSplineCurveView C(prm, dim);
+    const int p = C.p;
+    const bool rational = C.rational;
+    const float *poles = C.poles, *weights = C.weights;
     float N[kMaxDegree + 1], dN[kMaxDegree + 1];
-    const int s = basis(knots, n, p, t, periodic, N, dN);
+    const int s = basis(C.knots, C.n, p, t, C.periodic, N, dN);
     float A[3] = {0, 0, 0}, dA[3] = {0, 0, 0}, W = 0, dW = 0;
     for (int j = 0; j <= p; ++j) {
         const int i = s - p + j;

@@ -1,5 +1,7 @@
 #include "geom/pack.h"
 
+#include "bspline.h"
+
 #include "hal/print.h"
 
 #include <cmath>
@@ -36,7 +38,7 @@ bool whole(float f, uint32_t max, uint32_t& out) {
     return float(out) == f;
 }
 
-constexpr uint32_t kMaxDegree = 25, kMaxPoles = 1u << 20;
+constexpr uint32_t kMaxPoles = 1u << 20; // kMaxDegree: geom/eval.h
 
 uint32_t bspline_curve_count(const float* p, uint32_t avail, uint32_t dim) {
     uint32_t deg, poles, knots, rational, periodic;
@@ -51,30 +53,29 @@ uint32_t bspline_curve_count(const float* p, uint32_t avail, uint32_t dim) {
 }
 
 // A B-spline's knots never decrease and its weights are positive: what its evaluation (and the
-// fixed-point patches' span polynomials, which divide by knot differences) relies on. q: the
-// parameters; head: the head's length; knots: the knot vectors' total length; poles, dim:
-// where the weights (if rational) follow.
-bool bspline_data_ok(const float* q, uint32_t head, uint32_t knots_a, uint32_t knots_b, uint32_t poles, uint32_t dim,
-                     bool rational) {
-    const float* k = q + head;
-    for (uint32_t i = 1; i < knots_a; ++i)
+// fixed-point patches, which divide by knot differences) relies on. Read only after the
+// parameter count has been checked.
+bool ordered(const float* k, int n) {
+    for (int i = 1; i < n; ++i)
         if (k[i] < k[i - 1]) return false;
-    for (uint32_t i = knots_a + 1; i < knots_a + knots_b; ++i)
-        if (k[i] < k[i - 1]) return false;
-    if (!rational) return true;
-    const float* w = k + knots_a + knots_b + poles * dim;
-    for (uint32_t i = 0; i < poles; ++i)
+    return true;
+}
+bool positive(const float* w, int n) {
+    for (int i = 0; i < n; ++i)
         if (!(w[i] > 0)) return false;
     return true;
 }
 
-bool bspline_params_ok(uint8_t type, uint8_t dim, bool surface, const float* p) {
-    if (surface) {
-        if (SurfaceType(type) != SurfaceType::BSpline) return true;
-        return bspline_data_ok(p, 9, uint32_t(p[4]), uint32_t(p[5]), uint32_t(p[2]) * uint32_t(p[3]), 3, p[6] != 0);
-    }
+bool surface_data_ok(uint8_t type, const float* p) {
+    if (SurfaceType(type) != SurfaceType::BSpline) return true;
+    const detail::BSplineSurfaceView B(p);
+    return ordered(B.uk, B.ku) && ordered(B.vk, B.kv) && (!B.rational || positive(B.weights, B.nu * B.nv));
+}
+
+bool curve_data_ok(uint8_t type, uint8_t dim, const float* p) {
     if (CurveType(type) != CurveType::BSpline) return true;
-    return bspline_data_ok(p, 5, uint32_t(p[2]), 0, uint32_t(p[1]), dim, p[3] != 0);
+    const detail::BSplineCurveView C(p, dim);
+    return ordered(C.knots, C.k) && (!C.rational || positive(C.weights, C.n));
 }
 
 } // namespace
@@ -239,7 +240,7 @@ Result Pack::check_records() {
         const uint32_t need = surface_param_count(s.type, floats_.data() + s.params, s.count);
         if (need == 0) return fail("unknown surface type or bad B-spline head", S, i);
         if (need != s.count) return fail("parameter count does not match the surface type", S, i);
-        if (!bspline_params_ok(s.type, 3, true, floats_.data() + s.params)) {
+        if (!surface_data_ok(s.type, floats_.data() + s.params)) {
             return fail("B-spline knots decrease or a weight is not positive", S, i);
         }
         const bool swept = s.type == uint8_t(SurfaceType::Revolution) || s.type == uint8_t(SurfaceType::Extrusion);
@@ -255,7 +256,7 @@ Result Pack::check_records() {
             const uint32_t need = curve_param_count(c.type, c.dim, floats_.data() + c.params, c.count);
             if (need == 0) return fail("unknown curve type or bad B-spline head", id, i);
             if (need != c.count) return fail("parameter count does not match the curve type", id, i);
-            if (!bspline_params_ok(c.type, c.dim, false, floats_.data() + c.params)) {
+            if (!curve_data_ok(c.type, c.dim, floats_.data() + c.params)) {
                 return fail("B-spline knots decrease or a weight is not positive", id, i);
             }
         }

@@ -21,6 +21,12 @@ inline float per_span(float h) {
     return r < 1e30f ? r : 1e30f;
 }
 
+// A coordinate's exponent in a slot's exponent word (one signed byte each), in and out.
+inline uint32_t exponent_bits(int e, int d) { return uint32_t(uint8_t(int8_t(e))) << (8 * d); }
+inline int exponent_at(uint32_t exps, int d) { return int8_t(uint8_t(exps >> (8 * d))); }
+
+inline int32_t round_to_int(float v) { return int32_t(v + (v >= 0 ? 0.5f : -0.5f)); }
+
 // a x t / 2^30 for t in [0, 2^30]: |result| <= |a|.
 inline int32_t mulq(int32_t a, int32_t t) { return int32_t((int64_t(a) * t) >> 30); }
 
@@ -152,6 +158,20 @@ const uint32_t* PatchCache::patch(int su, int sv) {
     return slot;
 }
 
+void PatchCache::homogeneous(int at, const float* O, float* h) const {
+    const float* P = poles_ + 3 * at;
+    const float w = rational_ ? weights_[at] : 1.0f;
+    for (int d = 0; d < 3; ++d) h[d] = (P[d] - O[d]) * w;
+    if (rational_) h[3] = w;
+}
+
+void PatchCache::write_head(uint32_t* slot, int su, int sv, const float* O, uint32_t exps) const {
+    slot[1] = exps;
+    slot[2] = std::bit_cast<uint32_t>(O[0]), slot[3] = std::bit_cast<uint32_t>(O[1]), slot[4] = std::bit_cast<uint32_t>(O[2]);
+    slot[5] = std::bit_cast<uint32_t>(per_span(uk_[su + 1] - uk_[su]));
+    slot[6] = std::bit_cast<uint32_t>(per_span(vk_[sv + 1] - vk_[sv]));
+}
+
 void PatchCache::convert(int su, int sv, uint32_t* slot) {
     if (bezier_) return convert_bezier(su, sv, slot);
     float Mu[kN][kN], Mv[kN][kN];
@@ -163,10 +183,8 @@ void PatchCache::convert(int su, int sv, uint32_t* slot) {
     float T[4][kN][kN] = {};
     for (int a = 0; a <= pu_; ++a) {
         for (int b = 0; b <= pv_; ++b) {
-            const int at = (i0 + a) * nv_ + j0 + b;
-            const float* P = poles_ + 3 * at;
-            const float w = rational_ ? weights_[at] : 1.0f;
-            const float H[4] = {(P[0] - O[0]) * w, (P[1] - O[1]) * w, (P[2] - O[2]) * w, w};
+            float H[4];
+            homogeneous((i0 + a) * nv_ + j0 + b, O, H);
             for (int k = 0; k <= pu_; ++k) {
                 const float m = Mu[a][k];
                 if (m == 0) continue;
@@ -196,15 +214,12 @@ void PatchCache::convert(int su, int sv, uint32_t* slot) {
         for (int k = 0; k <= pu_; ++k) {
             for (int l = 0; l <= pv_; ++l) {
                 const float v = C[k][l] * scale;
-                c[d * per + k * (pv_ + 1) + l] = int32_t(v + (v >= 0 ? 0.5f : -0.5f));
+                c[d * per + k * (pv_ + 1) + l] = round_to_int(v);
             }
         }
-        exps |= uint32_t(uint8_t(int8_t(e))) << (8 * d);
+        exps |= exponent_bits(e, d);
     }
-    slot[1] = exps;
-    slot[2] = std::bit_cast<uint32_t>(O[0]), slot[3] = std::bit_cast<uint32_t>(O[1]), slot[4] = std::bit_cast<uint32_t>(O[2]);
-    slot[5] = std::bit_cast<uint32_t>(per_span(uk_[su + 1] - uk_[su]));
-    slot[6] = std::bit_cast<uint32_t>(per_span(vk_[sv + 1] - vk_[sv]));
+    write_head(slot, su, sv, O, exps);
 }
 
 void PatchCache::convert_bezier(int su, int sv, uint32_t* slot) {
@@ -214,19 +229,11 @@ void PatchCache::convert_bezier(int su, int sv, uint32_t* slot) {
     const int dims = rational_ ? 4 : 3, i0 = su - pu_, j0 = sv - pv_, row = pv_ + 1;
     const float* O = poles_ + 3 * (i0 * nv_ + j0);
     float* f = reinterpret_cast<float*>(slot + kHead); // [k][l][d]
-    for (int a = 0; a <= pu_; ++a) {
-        for (int b = 0; b <= pv_; ++b) {
-            const int at = (i0 + a) * nv_ + j0 + b;
-            const float* P = poles_ + 3 * at;
-            const float w = rational_ ? weights_[at] : 1.0f;
-            float* h = f + (a * row + b) * dims;
-            for (int d = 0; d < 3; ++d) h[d] = (P[d] - O[d]) * w;
-            if (rational_) h[3] = w;
-        }
-    }
+    for (int a = 0; a <= pu_; ++a)
+        for (int b = 0; b <= pv_; ++b) homogeneous((i0 + a) * nv_ + j0 + b, O, f + (a * row + b) * dims);
     for (int b = 0; b <= pv_; ++b) extract_span(uk_, pu_, su, f + b * dims, row * dims, dims);
     for (int a = 0; a <= pu_; ++a) extract_span(vk_, pv_, sv, f + a * row * dims, dims, dims);
-    // Each coordinate with the largest exponent that keeps its largest magnitude under 2^29
+    // Each coordinate with the largest exponent that keeps its largest magnitude under 2^28
     // (de Casteljau's points stay in the net's hull: nothing grows past it).
     const int per = (pu_ + 1) * row;
     uint32_t exps = 0;
@@ -234,21 +241,15 @@ void PatchCache::convert_bezier(int su, int sv, uint32_t* slot) {
         float big = 0;
         for (int i = 0; i < per; ++i) big = std::max(big, std::fabs(f[i * dims + d]));
         const int e = big >= 1e-30f ? std::clamp(28 - exponent_f(big), -100, 100) : 0;
-        exps |= uint32_t(uint8_t(int8_t(e))) << (8 * d);
+        exps |= exponent_bits(e, d);
     }
     // In place, each pole's coordinates together ([k][l][d]: the order extraction left).
     int32_t* c = reinterpret_cast<int32_t*>(f);
     for (int d = 0; d < dims; ++d) {
-        const float scale = pow2_f(int(int8_t(uint8_t(exps >> (8 * d)))));
-        for (int i = d; i < per * dims; i += dims) {
-            const float v = f[i] * scale;
-            c[i] = int32_t(v + (v >= 0 ? 0.5f : -0.5f));
-        }
+        const float scale = pow2_f(exponent_at(exps, d));
+        for (int i = d; i < per * dims; i += dims) c[i] = round_to_int(f[i] * scale);
     }
-    slot[1] = exps;
-    slot[2] = std::bit_cast<uint32_t>(O[0]), slot[3] = std::bit_cast<uint32_t>(O[1]), slot[4] = std::bit_cast<uint32_t>(O[2]);
-    slot[5] = std::bit_cast<uint32_t>(per_span(uk_[su + 1] - uk_[su]));
-    slot[6] = std::bit_cast<uint32_t>(per_span(vk_[sv + 1] - vk_[sv]));
+    write_head(slot, su, sv, O, exps);
 }
 
 const uint32_t* PatchCache::locate(float& u, float& v, int32_t& qs, int32_t& qt) {
@@ -319,7 +320,7 @@ Vec3 PatchCache::point(float u, float v) {
         }
     }
     const uint32_t exps = slot[1];
-    auto unscale = [&](int d) { return pow2_f(-int(int8_t(uint8_t(exps >> (8 * d))))); };
+    auto unscale = [&](int d) { return pow2_f(-exponent_at(exps, d)); };
     const Vec3 O{std::bit_cast<float>(slot[2]), std::bit_cast<float>(slot[3]), std::bit_cast<float>(slot[4])};
     if (!rational_) return {O.x + float(out[0]) * unscale(0), O.y + float(out[1]) * unscale(1), O.z + float(out[2]) * unscale(2)};
     float W = float(out[3]) * unscale(3);
@@ -343,7 +344,7 @@ SurfacePoint PatchCache::point_and_derivatives(float u, float v) {
         int32_t out[4], ds[4], dt[4];
         bezier(slot, qs, qt, out, ds, dt);
         for (int d = 0; d < dims; ++d) {
-            const float unscale = pow2_f(-int(int8_t(uint8_t(exps >> (8 * d)))));
+            const float unscale = pow2_f(-exponent_at(exps, d));
             f[d] = float(out[d]) * unscale, fs[d] = float(ds[d]) * (float(pu_) * unscale), ft[d] = float(dt[d]) * (float(pv_) * unscale);
         }
     } else {
@@ -361,7 +362,7 @@ SurfacePoint PatchCache::point_and_derivatives(float u, float v) {
                     acc_t = mulq(acc_t, qs) + dx;
                 }
             }
-            const float unscale = pow2_f(-int(int8_t(uint8_t(exps >> (8 * d)))));
+            const float unscale = pow2_f(-exponent_at(exps, d));
             f[d] = float(acc) * unscale, fs[d] = float(acc_s) * (8 * unscale), ft[d] = float(acc_t) * (8 * unscale);
         }
     }

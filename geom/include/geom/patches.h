@@ -58,6 +58,10 @@ private:
     const uint32_t* locate(float& u, float& v, int32_t& qs, int32_t& qt);
     void convert(int su, int sv, uint32_t* slot);
     void convert_bezier(int su, int sv, uint32_t* slot);
+    // Pole `at` in homogeneous coordinates w (P - O), w (w only if rational) into h.
+    void homogeneous(int at, const float* O, float* h) const;
+    // The slot's header after its coefficients: exponents, origin, 2^30 over the spans' lengths.
+    void write_head(uint32_t* slot, int su, int sv, const float* O, uint32_t exps) const;
     // The Bézier patch's coordinates at (qs, qt), and (ds, dt not null) their last
     // differences in s and t (the derivatives over the degrees).
     void bezier(const uint32_t* slot, int32_t qs, int32_t qt, int32_t* out, int32_t* ds, int32_t* dt) const;
