@@ -91,6 +91,7 @@ Result check(const Cdt<Index>& cdt, std::span<const Segment> cons, bool check_in
             const Triangle<Index>& U = cdt.triangle(u);
             const int j = U.edge_to(Index(t));
             if (j < 0) return fail("neighbours not symmetric (no link back)", {"triangle", t}, {"neighbour", uint32_t(u)});
+            if (T.back_edge(i) != j) return fail("a back-edge index does not name the neighbour's shared edge", {"triangle", t}, {"edge", uint32_t(i)});
             if (U.v[next3(j)] != b || U.v[prev3(j)] != a) return fail("neighbours disagree on their shared edge", {"triangle", t}, {"neighbour", uint32_t(u)});
             const Flag f = T.flag(i), g = U.flag(j);
             if (f != reverse(g)) return fail("the two sides' constraint flags are not consistent", {"edge from vertex", uint32_t(a)}, {"to vertex", uint32_t(b)});

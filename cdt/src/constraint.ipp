@@ -49,17 +49,17 @@ Status Cdt<Index>::trace(Index a, Index b, Index& reached, Visitor& visit) {
     }
     if (T.constrained(k)) return Status::Crossing;
     // Check the whole path before the visitor sees any of it.
-    Index prev = t, u = T.n[k];
+    Index u = T.n[k];
+    int j = T.back_edge(k);
     for (int pass = 0; pass < 2; ++pass) {
         if (pass == 1) {
             visit.first(t, k);
-            prev = t;
             u = T.n[k];
+            j = T.back_edge(k);
         }
         for (;;) {
             FACET_ASSERT("cdt.trace", u != kNone<Index>);
             const Triangle<Index>& U = a_.triangles[u];
-            const int j = U.edge_to(prev);
             const Index w = U.v[j];
             const int64_t ow = orient2d(pa.x, pa.y, pb.x, pb.y, P(w).x, P(w).y);
             if (ow == 0) {
@@ -70,8 +70,8 @@ Status Cdt<Index>::trace(Index a, Index b, Index& reached, Visitor& visit) {
             const int exit = ow > 0 ? next3(j) : prev3(j);
             if (pass == 0 && U.constrained(exit)) return Status::Crossing;
             if (pass == 1) visit.step(u, j, ow > 0 ? 1 : -1);
-            prev = u;
             u = U.n[exit];
+            j = U.back_edge(exit);
         }
     }
     return Status::Ok;
@@ -107,7 +107,7 @@ void Cdt<Index>::apply_piece(Index a, Index b, uint32_t K, Index& reached) {
             const Triangle<Index>& T = c.a_.triangles[t];
             const Index o = T.n[e];
             out[0] = o;
-            out[1] = o == kNone<Index> ? 0 : Index(c.a_.triangles[o].edge_to(t));
+            out[1] = Index(T.back_edge(e));
             out[2] = Index(T.flag(e));
         }
         void edge(Index t, int e) {
@@ -117,7 +117,7 @@ void Cdt<Index>::apply_piece(Index a, Index b, uint32_t K, Index& reached) {
             const Index u = T.n[e];
             FACET_ASSERT("cdt.constraint", u != kNone<Index>);
             Triangle<Index>& U = c.a_.triangles[u];
-            const int j = U.edge_to(t);
+            const int j = T.back_edge(e);
             U.set_flag(j, merge(U.flag(j), Flag::Against));
         }
         void first(Index t, int k) {
@@ -198,8 +198,7 @@ void Cdt<Index>::set_boundary(Index t, int e, const Index* poly, Index* edges, u
     Triangle<Index>& T = a_.triangles[t];
     T.set_flag(e, static_cast<Flag>(rec[2] & 3));
     if (!(rec[2] & kSlit)) {
-        T.n[e] = rec[0];
-        if (rec[0] != kNone<Index>) a_.triangles[rec[0]].n[rec[1]] = t;
+        link(t, e, rec[0], int(rec[1]));
         return;
     }
     for (uint32_t k = 0; k + 1 < count; ++k) {
@@ -244,7 +243,7 @@ Index Cdt<Index>::build_polygon(const Index* poly, Index* edges, uint32_t count,
             if (incircle(pu.x, pu.y, pv.x, pv.y, pc.x, pc.y, pm.x, pm.y) > 0) c = m;
         }
         const Index t = slots[cursor++];
-        a_.triangles[t] = {{poly[lo], poly[hi], poly[c]}, {kNone<Index>, kNone<Index>, kNone<Index>}, 0};
+        a_.triangles[t] = {{poly[lo], poly[hi], poly[c]}, {kNone<Index>, kNone<Index>, kNone<Index>}, 0, 0};
         set_vertex_tri(t);
         if (parent == kNone<Index>) root = t;
         else link(t, 2, parent, pedge);

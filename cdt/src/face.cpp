@@ -3,17 +3,18 @@
 #include "kdtree.h"
 
 #include <algorithm>
+#include <bit>
 
 namespace facet::cdt {
 
 // Hilbert index by a state machine: at each level the curve's orientation (4 states) and the
 // quadrant of (x, y) give the next two digits and the next orientation. Tables from the
 // standard construction (state 0: the curve enters at (0,0) and leaves at (1,0)).
-uint32_t hilbert_index(uint32_t x, uint32_t y) {
+uint32_t hilbert_index(uint32_t x, uint32_t y, int levels) {
     static constexpr uint8_t kDigit[4][4] = {{0, 1, 3, 2}, {0, 3, 1, 2}, {2, 3, 1, 0}, {2, 1, 3, 0}};
     static constexpr uint8_t kNext[4][4] = {{1, 0, 3, 0}, {0, 2, 1, 1}, {2, 1, 2, 3}, {3, 3, 0, 2}};
     uint32_t d = 0, state = 0;
-    for (int level = 15; level >= 0; --level) {
+    for (int level = levels - 1; level >= 0; --level) {
         const uint32_t q = (((x >> level) & 1) << 1) | ((y >> level) & 1);
         d = (d << 2) | kDigit[state][q];
         state = kNext[state][q];
@@ -23,13 +24,13 @@ uint32_t hilbert_index(uint32_t x, uint32_t y) {
 
 namespace {
 
-// Stable LSD radix sort of ins[from, n) by keys[], four 8-bit passes through tmp.
+// Stable LSD radix sort of ins[from, n) by keys[] (below 2^key_bits), 8-bit passes through tmp.
 template <typename Index>
-void radix_sort(Index* ins, Index* tmp, uint32_t from, uint32_t n, const uint32_t* keys) {
+void radix_sort(Index* ins, Index* tmp, uint32_t from, uint32_t n, const uint32_t* keys, int key_bits) {
     Index* src = ins + from;
     Index* dst = tmp;
     const uint32_t count = n - from;
-    for (int shift = 0; shift < 32; shift += 8) {
+    for (int shift = 0; shift < key_bits; shift += 8) {
         uint32_t bucket[257] = {};
         for (uint32_t i = 0; i < count; ++i) ++bucket[((keys[src[i]] >> shift) & 255) + 1];
         for (int b = 0; b < 256; ++b) bucket[b + 1] += bucket[b];
@@ -38,7 +39,7 @@ void radix_sort(Index* ins, Index* tmp, uint32_t from, uint32_t n, const uint32_
         src = dst;
         dst = t;
     }
-    // Four passes: the result is back in ins.
+    if (src != ins + from) std::copy(src, src + count, ins + from); // an odd number of passes
 }
 
 } // namespace
@@ -129,16 +130,19 @@ Result FaceBuilder<Index>::start(const FaceInput& in, LocateMode mode) {
             x0 = std::min(x0, p.x), y0 = std::min(y0, p.y);
             x1 = std::max(x1, p.x), y1 = std::max(y1, p.y);
         }
-        // Scale to the 16-bit Hilbert grid by a shift (no division: 64-bit divides are a
-        // library call on 32-bit cores). The same shift on both axes keeps the curve square.
+        // A grid of 2^levels cells a side, some 4 to 16 cells per point: finer only orders
+        // points within a cell, and each level costs every key a step and the sort a pass per
+        // four. Scaled by a shift (no division: 64-bit divides are a library call on 32-bit
+        // cores); the same shift on both axes keeps the curve square.
+        const int levels = std::clamp((int(std::bit_width(n_ - from)) + 5) / 2, 4, 16);
         const uint32_t extent = uint32_t(std::max(int64_t(x1) - x0, int64_t(y1) - y0));
         uint32_t shift = 0;
-        while ((extent >> shift) > 0xFFFF) ++shift;
+        while ((extent >> shift) >= (1u << levels)) ++shift;
         for (uint32_t i = from; i < n_; ++i) {
             const Point p = point(i);
-            keys[i] = hilbert_index(uint32_t(p.x - x0) >> shift, uint32_t(p.y - y0) >> shift);
+            keys[i] = hilbert_index(uint32_t(p.x - x0) >> shift, uint32_t(p.y - y0) >> shift, levels);
         }
-        radix_sort(ins, a.order.data(), from, n_, keys);
+        radix_sort(ins, a.order.data(), from, n_, keys, 2 * levels);
     }
     for (uint32_t k = 0; k < n_; ++k) keys[ins[k]] = k; // keys: rank of each point
 

@@ -8,15 +8,15 @@ namespace facet::cdt {
 // t = (a, b, c) and new vertex v inside it become (v, a, b), (v, b, c) [reusing t], (v, c, a).
 template <typename Index>
 Status Cdt<Index>::split_triangle(Index t, Index v) {
-    const Triangle<Index> o = a_.triangles[t];
+    const Triangle<Index> o = copy_of(a_.triangles[t]);
     const Index a = o.v[0], b = o.v[1], c = o.v[2];
     const Index t1 = new_triangle(v, a, b), t3 = new_triangle(v, c, a);
     Triangle<Index>& T2 = a_.triangles[t];
-    T2 = {{v, b, c}, {o.n[0], kNone<Index>, kNone<Index>}, 0};
+    T2 = {{v, b, c}, {o.n[0], kNone<Index>, kNone<Index>}, 0, uint8_t(o.back & 3)};
     T2.set_flag(0, o.flag(0));
-    link(t1, 0, o.n[2], o.n[2] == kNone<Index> ? 0 : a_.triangles[o.n[2]].edge_to(t));
+    link(t1, 0, o.n[2], o.back_edge(2));
     a_.triangles[t1].set_flag(0, o.flag(2));
-    link(t3, 0, o.n[1], o.n[1] == kNone<Index> ? 0 : a_.triangles[o.n[1]].edge_to(t));
+    link(t3, 0, o.n[1], o.back_edge(1));
     a_.triangles[t3].set_flag(0, o.flag(1));
     link(t1, 1, t, 2);  // (b, v)
     link(t, 1, t3, 2);  // (c, v)
@@ -36,21 +36,23 @@ Status Cdt<Index>::split_edge(Index t, int i, Index v) {
     rotate(t, i);
     const Index u = a_.triangles[t].n[0];
     FACET_ASSERT("cdt.split_edge", u != kNone<Index>);
-    rotate(u, a_.triangles[u].edge_to(t));
-    const Triangle<Index> ot = a_.triangles[t], ou = a_.triangles[u];
+    rotate(u, a_.triangles[t].back_edge(0));
+    const Triangle<Index> ot = copy_of(a_.triangles[t]), ou = copy_of(a_.triangles[u]);
     const Index a = ot.v[0], b = ot.v[1], c = ot.v[2], d = ou.v[0];
     const Flag ft = ot.flag(0), fu = ou.flag(0);
     const Index t2 = new_triangle(v, a, b), u2 = new_triangle(v, d, c);
 
     Triangle<Index>& T1 = a_.triangles[t];
-    T1 = {{v, c, a}, {ot.n[1], kNone<Index>, kNone<Index>}, 0};
+    T1 = {{v, c, a}, {kNone<Index>, kNone<Index>, kNone<Index>}, 0, 0};
+    link(t, 0, ot.n[1], ot.back_edge(1));
     T1.set_flag(0, ot.flag(1));
     Triangle<Index>& U1 = a_.triangles[u];
-    U1 = {{v, b, d}, {ou.n[1], kNone<Index>, kNone<Index>}, 0};
+    U1 = {{v, b, d}, {kNone<Index>, kNone<Index>, kNone<Index>}, 0, 0};
+    link(u, 0, ou.n[1], ou.back_edge(1));
     U1.set_flag(0, ou.flag(1));
-    link(t2, 0, ot.n[2], ot.n[2] == kNone<Index> ? 0 : a_.triangles[ot.n[2]].edge_to(t));
+    link(t2, 0, ot.n[2], ot.back_edge(2));
     a_.triangles[t2].set_flag(0, ot.flag(2));
-    link(u2, 0, ou.n[2], ou.n[2] == kNone<Index> ? 0 : a_.triangles[ou.n[2]].edge_to(u));
+    link(u2, 0, ou.n[2], ou.back_edge(2));
     a_.triangles[u2].set_flag(0, ou.flag(2));
 
     link(t, 1, t2, 2);  // (a, v)
@@ -69,27 +71,32 @@ Status Cdt<Index>::split_edge(Index t, int i, Index v) {
     return Status::Ok;
 }
 
-// Lawson: every triangle on the stack has v as a vertex; test the edge opposite v.
+// Lawson: every triangle on the stack has v as its vertex 0 (the splits make it so and flip()
+// keeps it); test edge 0, the edge opposite v. The stack holds at most twice v's degree.
 template <typename Index>
 Status Cdt<Index>::legalize(Index v, uint32_t top) {
-    Index* stack = a_.work.data();
-    const Point pv = P(v);
+    Index* const stack = a_.work.data();
+    const uint32_t capacity = uint32_t(a_.work.size());
+    const Triangle<Index>* const tri = a_.triangles.data();
+    const Vertex<Index>* const V = a_.vertices.data();
+    const int32_t vx = V[v].p.x, vy = V[v].p.y;
+    uint32_t peak = top;
     while (top > 0) {
         const Index t = stack[--top];
-        const Triangle<Index>& T = a_.triangles[t];
-        const int k = T.index_of(v);
-        if (k < 0 || T.constrained(k)) continue;
-        const Index u = T.n[k];
-        if (u == kNone<Index>) continue;
-        const Triangle<Index>& U = a_.triangles[u];
-        const Point q = P(U.v[U.edge_to(t)]);
-        const Point pa = P(T.v[next3(k)]), pb = P(T.v[prev3(k)]);
-        if (incircle(pv.x, pv.y, pa.x, pa.y, pb.x, pb.y, q.x, q.y) <= 0) continue;
-        flip(t, k);
-        if (!work_fits(top + 2)) return Status::Full; // cannot happen: stack <= 2 * degree
+        const Triangle<Index>& T = tri[t];
+        const Index u = T.n[0];
+        if ((T.flags & 3) != 0 || u == kNone<Index>) continue; // a constraint, or the box
+        const Point& a = V[T.v[1]].p;
+        const Point& b = V[T.v[2]].p;
+        const Point& q = V[tri[u].v[T.back_edge(0)]].p;
+        if (incircle(vx, vy, a.x, a.y, b.x, b.y, q.x, q.y) <= 0) continue;
+        flip(t);
+        if (top + 2 > capacity) return Status::Full; // cannot happen: see work_for()
         stack[top++] = t;
         stack[top++] = u;
+        if (top > peak) peak = top;
     }
+    if (peak > stats_.work_peak) stats_.work_peak = peak;
     return Status::Ok;
 }
 

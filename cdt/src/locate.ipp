@@ -29,10 +29,12 @@ void Cdt<Index>::wedge(Index s, Point p, Index& t, int& k, int64_t& oa) const {
         const Triangle<Index>& T = a_.triangles[t];
         const int64_t ob = orient(s, T.v[prev3(k)], p);
         if (oa >= 0 && ob < 0) return;
-        t = T.n[next3(k)]; // across edge (s, b): there b is the new a, so ob is the new oa
+        // Across edge (s, b), which runs s -> b there: s is the vertex after that edge's own,
+        // b the new a, so ob is the new oa.
+        const int e = next3(k);
+        t = T.n[e];
         FACET_ASSERT("cdt.wedge", t != kNone<Index>);
-        k = a_.triangles[t].index_of(s);
-        FACET_ASSERT("cdt.wedge", k >= 0);
+        k = next3(T.back_edge(e));
         oa = ob;
     }
 }
@@ -99,13 +101,13 @@ Status Cdt<Index>::walk(Index s, Point p, Location<Index>& out) {
         }
         // Cross triangles along s->p. Entering u across its edge j: v[j+1] lies left of the
         // segment, v[j+2] right, both strictly.
-        Index prev = t, u = T.n[k];
+        Index u = T.n[k];
+        int j = T.back_edge(k);
         bool restarted = false;
         for (;;) {
             FACET_ASSERT("cdt.locate", u != kNone<Index> && ++guard < limit);
             ++stats_.walk_steps;
             const Triangle<Index>& U = a_.triangles[u];
-            const int j = U.edge_to(prev);
             const Index w = U.v[j];
             const int64_t ow = orient2d(ps.x, ps.y, p.x, p.y, P(w).x, P(w).y);
             int exit;
@@ -132,8 +134,8 @@ Status Cdt<Index>::walk(Index s, Point p, Location<Index>& out) {
                 out = {Kind::OnEdge, u, uint8_t(exit), kNone<Index>};
                 return Status::Ok;
             }
-            prev = u;
             u = U.n[exit];
+            j = U.back_edge(exit);
         }
         if (!restarted) break;
     }

@@ -18,26 +18,34 @@ template <typename Index>
 void Cdt<Index>::rotate(Index t, int k) {
     if (k == 0) return;
     Triangle<Index>& T = a_.triangles[t];
-    const Triangle<Index> o = T;
+    const Triangle<Index> o = copy_of(T);
     for (int i = 0; i < 3; ++i) {
         const int s = (i + k) % 3;
         T.v[i] = o.v[s];
         T.n[i] = o.n[s];
         T.set_flag(i, o.flag(s));
+        T.set_back(i, o.back_edge(s));
+        if (T.n[i] != kNone<Index>) a_.triangles[T.n[i]].set_back(T.back_edge(i), i);
     }
 }
 
 template <typename Index>
 void Cdt<Index>::link(Index t, int i, Index u, int j) {
-    a_.triangles[t].n[i] = u;
-    if (u != kNone<Index>) a_.triangles[u].n[j] = t;
+    Triangle<Index>& T = a_.triangles[t];
+    T.n[i] = u;
+    T.set_back(i, j);
+    if (u != kNone<Index>) {
+        Triangle<Index>& U = a_.triangles[u];
+        U.n[j] = t;
+        U.set_back(j, i);
+    }
 }
 
 template <typename Index>
 Index Cdt<Index>::new_triangle(Index v0, Index v1, Index v2) {
     FACET_ASSERT("cdt", nt_ < a_.triangles.size()); // 2V-6 bound: callers checked vertices
     const Index t = nt_++;
-    a_.triangles[t] = {{v0, v1, v2}, {kNone<Index>, kNone<Index>, kNone<Index>}, 0};
+    a_.triangles[t] = {{v0, v1, v2}, {kNone<Index>, kNone<Index>, kNone<Index>}, 0, 0};
     return t;
 }
 
@@ -47,46 +55,52 @@ void Cdt<Index>::set_vertex_tri(Index t) {
     for (int i = 0; i < 3; ++i) a_.vertices[T.v[i]].tri = t;
 }
 
-// Flips the edge opposite v[i] of t, shared with neighbour u:
+// Flips edge 0 of t = (p, a, b), shared with neighbour u (its edge j, opposite q):
 //
 //        b                     b
 //       / \                   /|\ .
 //      / t \                 / | \ .
-//     p-----q     ==>       p t|u q      t' = (p, a, q), u' = (q, b, p)
+//     p-----q     ==>       p t|u q      t' = (p, a, q), u' = (p, q, b)
 //      \ u /                 \ | /
 //       \ /                   \|/
 //        a                     a
-// (t = (p, a, b) with p = t.v[i], u = (q, b, a) read from its shared edge.) The outer four
-// edges keep their neighbours and flags; the new edge p-q is unconstrained.
+// p stays vertex 0 of both (Lawson's stack relies on it). The outer four edges keep their
+// neighbours and flags; the new edge p-q is unconstrained. t keeps its edge 2 (p-a) as it is,
+// and u's edge 1 (b-p) is t's old edge 1, so of the four outer neighbours only a-q and q-b
+// change their back-edge index and only a-q and b-p their neighbour.
 template <typename Index>
-void Cdt<Index>::flip(Index t, int i) {
-    Triangle<Index>& T = a_.triangles[t];
-    const Index u = T.n[i];
-    Triangle<Index>& U = a_.triangles[u];
-    const int j = U.edge_to(t);
-    const int i1 = next3(i), i2 = prev3(i), j1 = next3(j), j2 = prev3(j);
-    const Index p = T.v[i], a = T.v[i1], b = T.v[i2], q = U.v[j];
-    const Index n_bp = T.n[i1], n_pa = T.n[i2], n_aq = U.n[j1], n_qb = U.n[j2];
-    const Flag f_bp = T.flag(i1), f_pa = T.flag(i2), f_aq = U.flag(j1), f_qb = U.flag(j2);
+[[gnu::always_inline]] inline void Cdt<Index>::flip(Index t) {
+    Triangle<Index>* const tri = a_.triangles.data();
+    Triangle<Index>& T = tri[t];
+    const Index u = T.n[0];
+    Triangle<Index>& U = tri[u];
+    const int j = T.back_edge(0), j1 = next3(j), j2 = prev3(j);
+    const Index p = T.v[0], a = T.v[1], b = T.v[2], q = U.v[j];
+    const Index n_bp = T.n[1], n_aq = U.n[j1], n_qb = U.n[j2];
+    const unsigned uf = U.flags, ub = U.back, tf = T.flags, tb = T.back;
+    const unsigned f_aq = (uf >> (2 * j1)) & 3, f_qb = (uf >> (2 * j2)) & 3;
+    const unsigned b_aq = (ub >> (2 * j1)) & 3, b_qb = (ub >> (2 * j2)) & 3;
 
     // Field by field: aggregate assignment of the 14-byte record costs a memcpy on ARMv5.
-    T.v[0] = p, T.v[1] = a, T.v[2] = q;
-    T.n[0] = n_aq, T.n[1] = u, T.n[2] = n_pa;
-    T.flags = uint8_t(uint8_t(f_aq) | uint8_t(f_pa) << 4);
-    U.v[0] = q, U.v[1] = b, U.v[2] = p;
-    U.n[0] = n_bp, U.n[1] = t, U.n[2] = n_qb;
-    U.flags = uint8_t(uint8_t(f_bp) | uint8_t(f_qb) << 4);
+    T.v[2] = q;
+    T.n[0] = n_aq, T.n[1] = u;
+    T.flags = uint8_t(f_aq | (tf & 0x30));
+    T.back = uint8_t(b_aq | 2 << 2 | (tb & 0x30));
+    U.v[0] = p, U.v[1] = q, U.v[2] = b;
+    U.n[0] = n_qb, U.n[1] = n_bp, U.n[2] = t;
+    U.flags = uint8_t(f_qb | (tf & 0x0C));
+    U.back = uint8_t(b_qb | (tb & 0x0C) | 1 << 4);
     if (n_aq != kNone<Index>) {
-        Triangle<Index>& N = a_.triangles[n_aq];
-        N.n[N.edge_to(u)] = t;
+        Triangle<Index>& N = tri[n_aq];
+        N.n[b_aq] = t;
+        N.back = uint8_t(N.back & ~(3u << (2 * b_aq))); // edge 0 of t
     }
-    if (n_bp != kNone<Index>) {
-        Triangle<Index>& N = a_.triangles[n_bp];
-        N.n[N.edge_to(t)] = u;
+    if (n_qb != kNone<Index>) {
+        Triangle<Index>& N = tri[n_qb];
+        N.back = uint8_t(N.back & ~(3u << (2 * b_qb))); // edge 0 of u
     }
-    a_.vertices[p].tri = t;
+    if (n_bp != kNone<Index>) tri[n_bp].n[(tb >> 2) & 3] = u;
     a_.vertices[a].tri = t;
-    a_.vertices[q].tri = u;
     a_.vertices[b].tri = u;
     ++stats_.flips;
 }

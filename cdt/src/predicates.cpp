@@ -13,7 +13,6 @@ void mul_u64(uint64_t a, uint64_t b, uint64_t& lo, uint64_t& hi) {
 }
 
 uint64_t magnitude(int64_t v) { return v < 0 ? ~static_cast<uint64_t>(v) + 1 : uint64_t(v); }
-uint32_t abs32(int32_t v) { return v < 0 ? uint32_t(0) - uint32_t(v) : uint32_t(v); }
 
 // Bit length: 0 for 0, else floor(log2 v) + 1 (two 32-bit CLZs: cheap on ARMv5TE and later).
 int bits(uint64_t v) {
@@ -55,10 +54,6 @@ Int128 Int128::operator-(const Int128& o) const {
     return {l, static_cast<int64_t>(uint64_t(hi) - uint64_t(o.hi) - (lo < o.lo ? 1 : 0))};
 }
 
-int64_t orient2d(int32_t ax, int32_t ay, int32_t bx, int32_t by, int32_t cx, int32_t cy) {
-    return int64_t(bx - ax) * (cy - ay) - int64_t(by - ay) * (cx - ax);
-}
-
 namespace {
 
 // The lifted terms (squared distances to d) and 2x2 minors of the incircle determinant:
@@ -84,20 +79,10 @@ int incircle_exact(int32_t ax, int32_t ay, int32_t bx, int32_t by, int32_t cx, i
         .exact_sign();
 }
 
-int incircle(int32_t ax, int32_t ay, int32_t bx, int32_t by, int32_t cx, int32_t cy, int32_t dx,
-             int32_t dy) {
-    // Four exact tiers, cheapest first. The lifted terms (squared distances to d) and the 2x2
-    // minors are exact in int64 over the whole range (< 2^54); what varies is how their
-    // products are summed.
-    const int32_t sx = ax - dx, sy = ay - dy, tx = bx - dx, ty = by - dy, ux = cx - dx, uy = cy - dy;
-    if ((abs32(sx) | abs32(sy) | abs32(tx) | abs32(ty) | abs32(ux) | abs32(uy)) < 16384) {
-        // 1. Differences below 2^14: lifts and minors below 2^29 fit 32 bits, the products are
-        //    32 x 32 -> 64 and the sum stays below 3 * 2^58.
-        const int32_t alift = sx * sx + sy * sy, blift = tx * tx + ty * ty, clift = ux * ux + uy * uy;
-        const int32_t bc = tx * uy - ux * ty, ca = ux * sy - sx * uy, ab = sx * ty - tx * sy;
-        const int64_t det = int64_t(alift) * bc + int64_t(blift) * ca + int64_t(clift) * ab;
-        return det > 0 ? 1 : (det < 0 ? -1 : 0);
-    }
+int incircle_wide(int32_t sx, int32_t sy, int32_t tx, int32_t ty, int32_t ux, int32_t uy) {
+    // Tiers 2 to 4 (tier 1 is incircle's own, inline). The lifted terms (squared distances to
+    // d) and the 2x2 minors are exact in int64 over the whole range (< 2^54); what varies is
+    // how their products are summed.
     const IncircleTerms t(sx, sy, tx, ty, ux, uy);
     const int64_t alift = t.alift, blift = t.blift, clift = t.clift, bc = t.bc, ca = t.ca, ab = t.ab;
     const int la = bits(uint64_t(alift)), lb = bits(uint64_t(blift)), lc = bits(uint64_t(clift));

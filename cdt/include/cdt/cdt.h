@@ -83,7 +83,7 @@ private:
     // topology (mesh.ipp)
     void rotate(Index t, int k);                 // make v[k] the new v[0], permuting n and flags
     void link(Index t, int i, Index u, int j);   // t's edge i and u's edge j are the same edge
-    void flip(Index t, int i);                   // flip the edge opposite t.v[i]
+    void flip(Index t);                          // flip edge 0 of t; t.v[0] stays v[0] of both
     Index new_triangle(Index v0, Index v1, Index v2);
     void set_vertex_tri(Index t);
 

@@ -2,7 +2,8 @@
 // An independent checker of a finished triangulation, kept apart from the algorithm
 // (cf. CDT's VerifyTopology.h, delaunator's validate()). It re-derives every property from the
 // raw CET arrays with its own code:
-//   - neighbours symmetric; vertices' incident triangles really incident
+//   - neighbours symmetric, each back-edge index naming the shared edge; vertices' incident
+//     triangles really incident
 //   - every triangle counter-clockwise and non-degenerate
 //   - Euler: 2V - 6 triangles, exactly 4 hull edges (the box)
 //   - every input constraint present as a chain of collinear edges with Along on its left and

@@ -71,7 +71,8 @@ Result triangulate_face(Cdt<Index>& cdt, const FaceInput& in, LocateMode mode);
 extern template Result triangulate_face(Cdt<uint16_t>&, const FaceInput&, LocateMode);
 extern template Result triangulate_face(Cdt<uint32_t>&, const FaceInput&, LocateMode);
 
-// Hilbert curve index of (x, y) on a 2^16 x 2^16 grid (exposed for tests).
-uint32_t hilbert_index(uint32_t x, uint32_t y);
+// Hilbert curve index of (x, y) on a 2^levels x 2^levels grid (x, y < 2^levels; exposed for
+// tests).
+uint32_t hilbert_index(uint32_t x, uint32_t y, int levels = 16);
 
 } // namespace facet::cdt

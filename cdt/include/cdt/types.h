@@ -41,11 +41,14 @@ constexpr Flag reverse(Flag f) {
 //             (n[2], f2)
 //
 // Bits 6 and 7 of `flags` hold the inner mark (set by mark_inner) and a scratch mark.
+// `back` (the record's otherwise spare byte) keeps, for each edge i, which edge of n[i] it is
+// (bits 2i, 2i+1), so crossing an edge never searches the neighbour's three indices.
 template <typename Index>
 struct Triangle {
     Index v[3];
     Index n[3];
     uint8_t flags;
+    uint8_t back;
 
     Flag flag(int i) const { return static_cast<Flag>((flags >> (2 * i)) & 3); }
     void set_flag(int i, Flag f) {
@@ -55,11 +58,20 @@ struct Triangle {
     bool constrained(int i) const { return flag(i) != Flag::None; }
     int index_of(Index vertex) const { return v[0] == vertex ? 0 : (v[1] == vertex ? 1 : (v[2] == vertex ? 2 : -1)); }
     int edge_to(Index neighbour) const { return n[0] == neighbour ? 0 : (n[1] == neighbour ? 1 : (n[2] == neighbour ? 2 : -1)); }
+    int back_edge(int i) const { return (back >> (2 * i)) & 3; }
+    void set_back(int i, int j) { back = static_cast<uint8_t>((back & ~(3 << (2 * i))) | (j << (2 * i))); }
 
     static constexpr uint8_t kEdgeFlagMask = 0x3F;
     static constexpr uint8_t kInnerBit = 0x40;
     static constexpr uint8_t kMarkBit = 0x80;
 };
+
+// A copy of a record, field by field (copying the 14-byte record whole is a memcpy call on
+// ARMv5).
+template <typename Index>
+inline Triangle<Index> copy_of(const Triangle<Index>& t) {
+    return {{t.v[0], t.v[1], t.v[2]}, {t.n[0], t.n[1], t.n[2]}, t.flags, t.back};
+}
 
 template <typename Index>
 struct Vertex {
@@ -72,7 +84,7 @@ template <typename Index>
 constexpr Index kNone = std::numeric_limits<Index>::max();
 
 static_assert(sizeof(Triangle<uint16_t>) <= 16, "device CET record must fit 16 bytes");
-static_assert(sizeof(Triangle<uint16_t>) == 14, "device CET: 3+3 16-bit indices and one flag byte");
+static_assert(sizeof(Triangle<uint16_t>) == 14, "device CET: 3+3 16-bit indices, flag and back-edge bytes");
 static_assert(sizeof(Vertex<uint16_t>) == 12, "device vertex: two int32 coordinates and L");
 
 // (a - o) . (b - o), exact in int64 within the predicate range.
