@@ -5,7 +5,7 @@ exact instruction counts (the facet-icount plugin), one CSV row per board and mo
   board,model,faces,triangles,inflate_instructions,tessellation_instructions,
   max_face_instructions,max_frame_instructions,peak_ram_bytes
 
-and a markdown table (for docs/budgets.md). Each model is packed once on the host (deflated,
+and a markdown table (for docs/budgets.md). Each model is packed once on the host (LZMA,
 what ./facet run loads), booted at the board's pack address and shown: the first pass is
 tessellated, the finished model drawn, then zoomed in three times and quit. The counts are the
 ones tests/qemu/viewer_test.py takes (the same analysis): tessellation = edge sampling and every
@@ -114,7 +114,7 @@ def markdown(rows, date):
     for row, notes in rows:
         by_board.setdefault(row['board'], []).append((row, notes))
     m = lambda v: f'{v / 1e6:.1f}' if isinstance(v, int) else '-'
-    lines = [f'Measured {date} by `./facet bench device` (exact QEMU instruction counts; deflated packs, default '
+    lines = [f'Measured {date} by `./facet bench device` (exact QEMU instruction counts; LZMA packs, default '
              'tolerance; M = million instructions, 600 M = 1 s at 600 MHz).', '']
     for board_name, items in by_board.items():
         lines += [f'#### {board_name}', '',

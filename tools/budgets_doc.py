@@ -37,7 +37,7 @@ def device_goals(path):
             + (f'; over: {", ".join(over_300)}' if over_300 else ''),
             f'- no face over 30 M instructions: {len(rows) - len(over_face)} of {len(rows)} models'
             + (f'; over: {", ".join(over_face)}' if over_face else ''),
-            f'- inflating <= 5% of the tessellation: {len(rows) - len(inflate)} of {len(rows)} models'
+            f'- decoding the pack (LZMA; the CSV\'s inflate_instructions) <= 5% of the tessellation: {len(rows) - len(inflate)} of {len(rows)} models'
             + (f'; over: {", ".join(inflate)}' if inflate else ''), '']
 
 
@@ -55,8 +55,8 @@ def main():
            'apart: "inflating"). "frame" = the costliest full redraw of the finished model in the scripted',
            'session (the zoomed view fills the most pixels); "finest view" = the full redraw after one finer',
            'level of detail. Peak RAM = code, data, display and depth buffers, MMU table, stack high-water,',
-           'the pack in place and the viewer storage at its peak (or the deflated file while it is',
-           'inflated). Budgets, asserted on the ARM926 and on the MIMXRT1060-EVKB\'s configuration (qemu-mps2-evkb:',
+           'the pack in place and the viewer storage at its peak (or the compressed file and the LZMA decoder\'s',
+           'state while it is decoded). Budgets, asserted on the ARM926 and on the MIMXRT1060-EVKB\'s configuration (qemu-mps2-evkb:',
            'its memories, linker script and start-up on QEMU\'s Cortex-M7; docs/boards.md) and reported for the',
            'plain mps2 (code in RAM there, counted as RAM; on the EVKB it stays in flash): all RAM <= 32 MiB',
            '(link time and MMU), tessellation <= 600 M, a frame <= 20 M per 10,000 triangles in view.', '']
@@ -92,7 +92,7 @@ def main():
         out.append('')
     if len(sys.argv) == 3:
         out += ['## Every shared model (`./facet bench device`)', '',
-                'The viewer firmware on every model of ../shared/models, loaded deflated, tessellated at the '
+                'The viewer firmware on every model of ../shared/models, loaded as facet-pack writes it (LZMA), tessellated at the '
                 'default tolerance, drawn fitted then zoomed three steps (`./facet bench device`: CSV in '
                 'out/bench/device.csv). "largest face" = the costliest face of the first pass (all its pieces); '
                 '"largest frame" = the costliest full redraw of the finished model.', '',

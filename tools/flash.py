@@ -153,7 +153,7 @@ def main():
         die(BAD_INPUT, f'{args.image} is no EVKB flash image (no FlexSPI configuration block at its start)')
     if len(image) > room:
         die(BAD_INPUT, f'the firmware ({len(image):,} B) exceeds its {room:,} B of flash')
-    if pack[:4] not in (b'FPK1', b'FPZ1'):
+    if pack[:4] not in (b'FPK1', b'FPX1', b'FPZ1'):
         die(BAD_INPUT, f'{args.pack} is no facet pack (facet-pack makes one from a STEP file)')
     if len(pack) > b['pack_bytes']:
         die(BAD_INPUT, f'the pack ({len(pack):,} B) exceeds the {b["pack_bytes"]:,} B pack region')

@@ -7,6 +7,7 @@
 #include "geom/pack_file.h"
 #include "geom/pack_format.h"
 
+#include <lzma.h>
 #include <zlib.h>
 
 #include <cstring>
@@ -35,12 +36,42 @@ std::vector<uint8_t> deflate_pack(const std::vector<uint8_t>& pack) {
     return out;
 }
 
+std::vector<uint8_t> lzma_pack(const std::vector<uint8_t>& pack) {
+    // Raw LZMA1 at xz's best preset, without an end marker. lc 0, lp 2, pb 2: a pack is mostly 4-byte floats and
+    // indices, so a byte's place in its word predicts it better than the byte before it.
+    lzma_options_lzma opt;
+    if (lzma_lzma_preset(&opt, 9 | LZMA_PRESET_EXTREME)) return {};
+    opt.lc = 0;
+    opt.lp = 2;
+    opt.pb = 2;
+    static_assert(kLzmaMaxLcLp >= 2, "the device's decoder holds lc + lp = 2");
+    uint32_t dict = 4096;
+    while (dict < pack.size() && dict < (64u << 20)) dict <<= 1; // the whole pack is the history
+    opt.dict_size = dict;
+    opt.ext_flags = 0; // LZMA1EXT without LZMA_LZMA1EXT_ALLOW_EOPM: no end marker, the head has the size
+    const lzma_filter filters[] = {{LZMA_FILTER_LZMA1EXT, &opt}, {LZMA_VLI_UNKNOWN, nullptr}};
+    std::vector<uint8_t> out(sizeof(pack::LzmaHead) + pack.size() + pack.size() / 2 + 4096);
+    size_t written = 0;
+    if (lzma_raw_buffer_encode(filters, nullptr, pack.data(), pack.size(), out.data() + sizeof(pack::LzmaHead), &written,
+                               out.size() - sizeof(pack::LzmaHead)) != LZMA_OK) {
+        return {};
+    }
+    out.resize(sizeof(pack::LzmaHead) + written);
+    pack::LzmaHead h{};
+    std::memcpy(h.magic, pack::kLzmaMagic, 4);
+    h.pack_bytes = uint32_t(pack.size());
+    h.stream_bytes = uint32_t(written);
+    h.props = uint8_t((opt.pb * 5 + opt.lp) * 9 + opt.lc);
+    std::memcpy(out.data(), &h, sizeof h);
+    return out;
+}
+
 bool load_pack_bytes(const std::vector<uint8_t>& file, LoadedPack& out, std::string& error) {
     out = LoadedPack{};
     out.file_bytes = uint32_t(file.size());
     switch (pack_file_kind(file.data(), uint32_t(file.size()))) {
     case PackFileKind::Unknown:
-        error = "not a facet pack (neither FPK1 nor FPZ1)";
+        error = "not a facet pack (neither FPK1, FPX1 nor FPZ1)";
         return false;
     case PackFileKind::Pack:
         // Pack::open checks the size against the header and says so.
@@ -48,28 +79,30 @@ bool load_pack_bytes(const std::vector<uint8_t>& file, LoadedPack& out, std::str
         if (!file.empty()) std::memcpy(out.words.data(), file.data(), file.size());
         out.bytes = uint32_t(file.size());
         return true;
-    case PackFileKind::Deflated: break;
+    case PackFileKind::Deflated:
+    case PackFileKind::Lzma: break;
     }
-    pack::DeflatedHead h{};
+    pack::DeflatedHead h{}; // an LzmaHead's sizes sit at the same places
     if (file.size() >= sizeof h) std::memcpy(&h, file.data(), sizeof h);
     if (file.size() >= sizeof h && uint64_t(sizeof h) + h.stream_bytes < file.size()) {
         error = std::to_string(file.size() - sizeof h - h.stream_bytes) +
-                " bytes follow the deflated pack (appended or not one pack)";
+                " bytes follow the compressed pack (appended or not one pack)";
         return false;
     }
     if (h.pack_bytes > pack::kMaxBytes) {
         error = "the pack would be larger than the 64 MiB limit";
         return false;
     }
-    out.words.resize((size_t(h.pack_bytes) + 3) / 4);
-    out.deflated = true;
-    const Result r = inflate_pack_file({file.data(), file.size()}, {reinterpret_cast<uint8_t*>(out.words.data()), h.pack_bytes}, out.bytes);
+    out.kind = pack_file_kind(file.data(), uint32_t(file.size()));
+    out.words.resize((size_t(decoded_memory_bytes(file.data(), uint32_t(file.size()))) + 3) / 4);
+    const Result r = decode_pack_file({file.data(), file.size()}, {reinterpret_cast<uint8_t*>(out.words.data()), out.words.size() * 4}, out.bytes);
     if (!r.ok()) {
         char text[160];
         describe(r, text, sizeof text);
-        error = std::string("cannot inflate: ") + text;
+        error = std::string("cannot decode: ") + text;
         return false;
     }
+    out.words.resize((size_t(out.bytes) + 3) / 4); // the LZMA decoder's state after the pack is done with
     return true;
 }
 

@@ -1,6 +1,7 @@
 #include "geom/pack_file.h"
 
 #include "geom/inflate.h"
+#include "geom/unlzma.h"
 
 #include <cstring>
 
@@ -16,7 +17,42 @@ PackFileKind pack_file_kind(const void* data, uint32_t available) {
     if (!data || available < 4) return PackFileKind::Unknown;
     if (std::memcmp(data, kMagic, 4) == 0) return PackFileKind::Pack;
     if (std::memcmp(data, kDeflatedMagic, 4) == 0) return PackFileKind::Deflated;
+    if (std::memcmp(data, kLzmaMagic, 4) == 0) return PackFileKind::Lzma;
     return PackFileKind::Unknown;
+}
+
+namespace {
+
+// A compressed file's head, read the same way for both kinds (their fields line up).
+struct CompressedHead {
+    uint32_t pack_bytes = 0, stream_bytes = 0;
+    uint8_t props = 0;
+    bool reserved_zero = false;
+};
+static_assert(sizeof(DeflatedHead) == sizeof(LzmaHead));
+
+bool read_head(const void* data, uint32_t available, CompressedHead& h) {
+    const PackFileKind k = pack_file_kind(data, available);
+    if (!compressed(k) || available < sizeof(LzmaHead)) return false;
+    if (k == PackFileKind::Deflated) {
+        DeflatedHead d;
+        std::memcpy(&d, data, sizeof d);
+        h = {d.pack_bytes, d.stream_bytes, 0, d.reserved == 0};
+    } else {
+        LzmaHead l;
+        std::memcpy(&l, data, sizeof l);
+        h = {l.pack_bytes, l.stream_bytes, l.props, (l.reserved[0] | l.reserved[1] | l.reserved[2]) == 0};
+    }
+    return true;
+}
+
+} // namespace
+
+uint32_t decoded_memory_bytes(const void* data, uint32_t available) {
+    CompressedHead h;
+    if (!read_head(data, available, h) || h.pack_bytes > kMaxBytes) return 0;
+    const uint32_t extra = pack_file_kind(data, available) == PackFileKind::Lzma ? 3 + kLzmaStateBytes : 0;
+    return h.pack_bytes + extra;
 }
 
 uint32_t pack_file_bytes(const void* data, uint32_t available) {
@@ -29,11 +65,11 @@ uint32_t pack_file_bytes(const void* data, uint32_t available) {
         n = h.total_bytes;
         break;
     }
-    case PackFileKind::Deflated: {
-        if (available < sizeof(DeflatedHead)) return 0;
-        DeflatedHead h;
-        std::memcpy(&h, data, sizeof h);
-        n = uint64_t(sizeof h) + h.stream_bytes;
+    case PackFileKind::Deflated:
+    case PackFileKind::Lzma: {
+        CompressedHead h;
+        if (!read_head(data, available, h)) return 0;
+        n = uint64_t(sizeof(LzmaHead)) + h.stream_bytes;
         break;
     }
     case PackFileKind::Unknown: return 0;
@@ -41,61 +77,79 @@ uint32_t pack_file_bytes(const void* data, uint32_t available) {
     return n <= available ? uint32_t(n) : 0;
 }
 
-Result inflate_pack_file(std::span<const uint8_t> file, std::span<uint8_t> out, uint32_t& bytes) {
-    bytes = 0;
-    if (pack_file_kind(file.data(), uint32_t(file.size())) != PackFileKind::Deflated || file.size() < sizeof(DeflatedHead)) {
-        return Result::fail(Status::Corrupt, "not a deflated pack", kFile);
+namespace {
+
+// Decodes the file (its head read into h) into out[0, h.pack_bytes); an LZMA file's decoder
+// state is `probs`, somewhere outside both.
+Result decode(std::span<const uint8_t> file, const CompressedHead& h, std::span<uint8_t> out, LzmaProbs* probs,
+              uint32_t& bytes) {
+    if (uint64_t(sizeof(LzmaHead)) + h.stream_bytes > file.size()) {
+        return Result::fail(Status::Corrupt, "the compressed pack is shorter than its head says (truncated)", kFile);
     }
-    DeflatedHead h;
-    std::memcpy(&h, file.data(), sizeof h);
-    if (uint64_t(sizeof h) + h.stream_bytes > file.size()) {
-        return Result::fail(Status::Corrupt, "the deflated pack is shorter than its head says (truncated)", kFile);
-    }
-    if (h.pack_bytes > kMaxBytes) {
-        return Result::fail(Status::Corrupt, "the pack would be larger than the 64 MiB limit", kFile);
-    }
-    if (h.reserved != 0) {
-        return Result::fail(Status::Corrupt, "the deflated head's reserved field is not 0", kFile);
-    }
-    if (h.pack_bytes > out.size()) {
-        return Result::fail(Status::Full, "the inflated pack does not fit its memory", kFile);
-    }
+    if (h.pack_bytes > kMaxBytes) return Result::fail(Status::Corrupt, "the pack would be larger than the 64 MiB limit", kFile);
+    if (!h.reserved_zero) return Result::fail(Status::Corrupt, "the compressed head's reserved field is not 0", kFile);
+    if (h.pack_bytes > out.size()) return Result::fail(Status::Full, "the decoded pack does not fit its memory", kFile);
+    const std::span<const uint8_t> stream = file.subspan(sizeof(LzmaHead), h.stream_bytes);
     uint32_t written = 0;
-    if (Result r = inflate(file.subspan(sizeof h, h.stream_bytes), out.first(h.pack_bytes), written); !r.ok()) return r.within(kFile);
-    if (written != h.pack_bytes) {
-        return Result::fail(Status::Corrupt, "the inflated pack is shorter than its head says", kFile);
-    }
+    const Result r = probs ? unlzma(stream, h.props, out.first(h.pack_bytes), *probs, written)
+                           : inflate(stream, out.first(h.pack_bytes), written);
+    if (!r.ok()) return r.within(kFile);
+    if (written != h.pack_bytes) return Result::fail(Status::Corrupt, "the decoded pack is shorter than its head says", kFile);
     bytes = written;
     return {};
+}
+
+} // namespace
+
+Result decode_pack_file(std::span<const uint8_t> file, std::span<uint8_t> out, uint32_t& bytes) {
+    bytes = 0;
+    CompressedHead h;
+    if (!read_head(file.data(), uint32_t(file.size()), h)) return Result::fail(Status::Corrupt, "not a compressed pack", kFile);
+    LzmaProbs* probs = nullptr;
+    if (pack_file_kind(file.data(), uint32_t(file.size())) == PackFileKind::Lzma) {
+        // The decoder's state right after the pack, 4-byte aligned (out's start must be).
+        const uint64_t state_at = (uint64_t(h.pack_bytes) + 3) & ~uint64_t(3);
+        if (state_at + kLzmaStateBytes > out.size() || (reinterpret_cast<uintptr_t>(out.data()) & 3)) {
+            return Result::fail(Status::Full, "the pack and the LZMA decoder's state do not fit its memory", kFile);
+        }
+        probs = reinterpret_cast<LzmaProbs*>(out.data() + state_at);
+    }
+    return decode(file, h, out, probs, bytes);
 }
 
 Result unpack_in_place(uint8_t* region, uint32_t capacity, uint32_t loaded, uint32_t& bytes) {
     bytes = 0;
     if (loaded > capacity) loaded = capacity;
     const uint32_t file = pack_file_bytes(region, loaded);
-    switch (pack_file_kind(region, loaded)) {
+    const PackFileKind kind = pack_file_kind(region, loaded);
+    switch (kind) {
     case PackFileKind::Unknown:
-        return Result::fail(Status::Corrupt, "no pack here (neither FPK1 nor FPZ1)", kFile);
+        return Result::fail(Status::Corrupt, "no pack here (neither FPK1, FPX1 nor FPZ1)", kFile);
     case PackFileKind::Pack:
         if (file == 0) {
             return Result::fail(Status::Corrupt, "the pack is larger than the memory it was loaded into, or truncated", kFile);
         }
         bytes = file;
         return {};
-    case PackFileKind::Deflated: break;
+    case PackFileKind::Deflated:
+    case PackFileKind::Lzma: break;
     }
     if (file == 0) {
-        return Result::fail(Status::Corrupt, "the deflated pack is larger than the memory it was loaded into, or truncated", kFile);
+        return Result::fail(Status::Corrupt, "the compressed pack is larger than the memory it was loaded into, or truncated", kFile);
     }
-    DeflatedHead h;
-    std::memcpy(&h, region, sizeof h);
-    if (uint64_t(h.pack_bytes) + file > capacity) {
-        return Result::fail(Status::Full, "the pack and its deflated form together do not fit the pack memory", kFile);
+    CompressedHead h;
+    (void)read_head(region, loaded, h); // readable: pack_file_bytes() read it
+    const uint32_t state = kind == PackFileKind::Lzma ? kLzmaStateBytes + 3 : 0; // + its alignment
+    if (uint64_t(h.pack_bytes) + file + state > capacity) {
+        return Result::fail(Status::Full, "the pack and its compressed form together do not fit the pack memory", kFile);
     }
-    // The stream to the end of the region, then inflated to the start: the two never overlap.
-    uint8_t* moved = region + (capacity - file);
+    // An LZMA decoder's state at the region's end, the file just before it, decoded to the
+    // start: the three never overlap.
+    const uint32_t state_at = state ? (capacity - kLzmaStateBytes) & ~3u : capacity;
+    uint8_t* moved = region + (state_at - file);
     std::memmove(moved, region, file);
-    return inflate_pack_file({moved, file}, {region, capacity - file}, bytes);
+    LzmaProbs* probs = state ? reinterpret_cast<LzmaProbs*>(region + state_at) : nullptr;
+    return decode({moved, file}, h, {region, state_at - file}, probs, bytes);
 }
 
 } // namespace facet::geom

@@ -106,12 +106,8 @@ uint32_t pack_memory_bytes(const void* file, uint32_t file_bytes) {
     switch (geom::pack_file_kind(file, file_bytes)) {
     case geom::PackFileKind::Unknown: return 0;
     case geom::PackFileKind::Pack: return (reinterpret_cast<uintptr_t>(file) & 3) ? file_bytes : 0;
-    case geom::PackFileKind::Deflated: {
-        if (file_bytes < sizeof(pack::DeflatedHead)) return 0;
-        pack::DeflatedHead h;
-        std::memcpy(&h, file, sizeof h);
-        return h.pack_bytes;
-    }
+    case geom::PackFileKind::Deflated:
+    case geom::PackFileKind::Lzma: return geom::decoded_memory_bytes(file, file_bytes);
     }
     return 0;
 }
@@ -217,7 +213,7 @@ Result Core::load(const void* file, uint32_t file_bytes, void* memory, uint32_t 
     const uint8_t* pack = in;
     uint32_t bytes = 0;
     switch (geom::pack_file_kind(file, file_bytes)) {
-    case geom::PackFileKind::Unknown: return Result::fail(Status::Corrupt, "no pack here (neither FPK1 nor FPZ1)", {"pack file"});
+    case geom::PackFileKind::Unknown: return Result::fail(Status::Corrupt, "no pack here (neither FPK1, FPX1 nor FPZ1)", {"pack file"});
     case geom::PackFileKind::Pack:
         bytes = pack_file_bytes_;
         if (bytes == 0) return Result::fail(Status::Corrupt, "the pack is longer than the bytes given, or truncated", {"pack file"});
@@ -229,17 +225,18 @@ Result Core::load(const void* file, uint32_t file_bytes, void* memory, uint32_t 
             pack = mem;
         }
         break;
-    case geom::PackFileKind::Deflated: {
+    case geom::PackFileKind::Deflated:
+    case geom::PackFileKind::Lzma: {
         work(Event::Kind::WorkBegin, Work::Unpack, 0);
         Result r;
         if (!mem || (reinterpret_cast<uintptr_t>(mem) & 3)) {
-            r = Result::fail(Status::Full, "a deflated pack needs 4-byte aligned pack memory", {"pack file"});
+            r = Result::fail(Status::Full, "a compressed pack needs 4-byte aligned pack memory", {"pack file"});
         } else if (inside) { // the file was loaded into the pack memory: inflated in place
             const uint32_t offset = uint32_t(in - mem);
             if (offset) std::memmove(mem, in, memory_bytes - offset < file_bytes ? memory_bytes - offset : file_bytes);
             r = geom::unpack_in_place(mem, memory_bytes, memory_bytes - offset, bytes);
         } else {
-            r = geom::inflate_pack_file({in, file_bytes}, {mem, memory_bytes}, bytes);
+            r = geom::decode_pack_file({in, file_bytes}, {mem, memory_bytes}, bytes);
         }
         work(Event::Kind::WorkEnd, Work::Unpack, 0);
         if (!r.ok()) return r;

@@ -1,4 +1,4 @@
-// libFuzzer target for the pack file reader: any bytes in, plain or deflated. unpack_in_place()
+// libFuzzer target for the pack file reader: any bytes in, plain, LZMA or deflated. unpack_in_place()
 // and open() must return a status and, when they say Ok, every record the pack exposes must be
 // readable within the buffer.
 #include "geom/pack.h"
@@ -12,13 +12,13 @@
 using namespace facet;
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-    // The region the device would load the file into: the file, then room for what it inflates
-    // to (capped, so a head claiming a huge pack is refused as too big, as on the device).
+    // The region the device would load the file into: the file, then room for what it decodes
+    // to (and an LZMA decoder's state) (capped, so a head claiming a huge pack is refused as too big, as on the device).
     uint32_t room = 0;
-    if (geom::pack_file_kind(data, uint32_t(size)) == geom::PackFileKind::Deflated && size >= sizeof(pack::DeflatedHead)) {
-        pack::DeflatedHead head;
+    if (geom::compressed(geom::pack_file_kind(data, uint32_t(size))) && size >= sizeof(pack::DeflatedHead)) {
+        pack::DeflatedHead head; // an LzmaHead's sizes sit at the same places
         std::memcpy(&head, data, sizeof head);
-        room = std::min<uint32_t>(head.pack_bytes, 1u << 20);
+        room = std::min<uint32_t>(head.pack_bytes, 1u << 20) + geom::kLzmaStateBytes + 3;
     }
     const uint32_t capacity = uint32_t(size) + room;
     std::vector<uint32_t> region(capacity / 4 + 1);

@@ -218,7 +218,7 @@ TEST(PackFile, DeflatedPackUnpacksInPlace) {
     // One byte short of room for both: refused, with the reason.
     std::memcpy(region.data(), file.data(), file.size());
     EXPECT_EQ(unpack(bytes, capacity - 1, capacity - 1, n, why), Status::Full);
-    EXPECT_STREQ(why, "the pack and its deflated form together do not fit the pack memory");
+    EXPECT_STREQ(why, "the pack and its compressed form together do not fit the pack memory");
 }
 
 TEST(PackFile, PlainPacksPassAndOtherBytesAreRefused) {
@@ -232,7 +232,7 @@ TEST(PackFile, PlainPacksPassAndOtherBytesAreRefused) {
 
     Bytes junk(64, 'x');
     EXPECT_EQ(unpack(junk.data(), 64, 64, n, why), Status::Corrupt);
-    EXPECT_STREQ(why, "no pack here (neither FPK1 nor FPZ1)");
+    EXPECT_STREQ(why, "no pack here (neither FPK1, FPX1 nor FPZ1)");
 
     // A deflated file whose stream is cut short: its head promises more than is there.
     Bytes file = deflate_pack(plain);
@@ -255,7 +255,7 @@ TEST(PackFile, TrailingBytesAndReservedFieldsAreRefused) {
     Bytes longer = file;
     longer.insert(longer.end(), {'j', 'u', 'n', 'k'});
     EXPECT_FALSE(load_pack_bytes(longer, loaded, error));
-    EXPECT_EQ(error, "4 bytes follow the deflated pack (appended or not one pack)");
+    EXPECT_EQ(error, "4 bytes follow the compressed pack (appended or not one pack)");
 
     // The head made to cover the junk too: the decoder sees bytes after the last block.
     pack::DeflatedHead h;

@@ -152,15 +152,15 @@ def output_is_the_input():
 
 
 def trailing_bytes_and_reserved_fields():
-    """Garbage after a deflated pack and a non-zero reserved field were accepted."""
+    """Garbage after a compressed pack and a non-zero reserved field were accepted."""
     d = work('trailing')
     fpk = packed('screw.step', d)
     os.makedirs(d + '/plain')
     plain = packed('screw.step', d + '/plain', '--plain')
     data, flat = open(fpk, 'rb').read(), open(plain, 'rb').read()
     cases = {
-        'appended.fpk': (data + b'junk', r'4 bytes follow the deflated pack'),
-        'reserved.fpk': (data[:12] + b'\x01' + data[13:], r"reserved field is not 0"),
+        'appended.fpk': (data + b'junk', r'4 bytes follow the compressed pack'),
+        'reserved.fpk': (data[:13] + b'\x01' + data[14:], r"reserved field is not 0"),
         'plain-appended.fpk': (flat + b'\0\0\0\0', r'size does not match the header'),
         'plain-flags.fpk': (flat[:20] + b'\x01' + flat[21:], r'flags or reserved fields are not 0'),
         'plain-reserved.fpk': (flat[:60] + b'\x01' + flat[61:], r'flags or reserved fields are not 0'),
@@ -241,7 +241,7 @@ def plate_of_many_holes_packs_with_progress():
     fpk = os.path.join(d, 'holes.fpk')
     r = run([ARGS.packer, step, '-o', fpk], timeout=600)
     expect_exit(r, 0, r'1606 faces', 'packing the 1,600-hole plate')
-    for stage in ('reading STEP', 'healing', r'packed 1 of 1 parts \(1606 faces\)', 'deflating'):
+    for stage in ('reading STEP', 'healing', r'packed 1 of 1 parts \(1606 faces\)', 'compressing'):
         expect(re.search(rf'facet-pack: +[\d.]+ s: {stage}', r.stderr), f'no progress line for {stage!r}:\n{r.stderr}')
     # The device's capacities (FACET_DEFAULT_FACE_POINTS, _LOOPS): the big faces fit.
     r = run([ARGS.mesher, fpk, '--face-points', '12000', '--quiet'])

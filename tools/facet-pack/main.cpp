@@ -1,7 +1,7 @@
 // facet-pack: STEP (AP203/AP214/AP242) -> facet pack, with Open CASCADE.
 //
-//   facet-pack model.step -o model.fpk [--plain] [--unit U] [--partial] [--quiet]
-//                                                  pack (deflated unless --plain), print a summary
+//   facet-pack model.step -o model.fpk [--plain|--deflate] [--unit U] [--partial] [--quiet]
+//                                                  pack (LZMA unless --plain or --deflate), print a summary
 //   facet-pack --check model.fpk                   validate a pack file with the device's code
 //
 // Reads with the XCAF reader (units converted to mm, assemblies, colours from styled items),
@@ -52,7 +52,7 @@ using namespace facet;
 namespace {
 
 int usage() {
-    std::fprintf(stderr, "usage: facet-pack MODEL.step -o MODEL.fpk [--plain] [--unit mm|cm|m|in|ft] [--partial] [--reference FACES.json] [--quiet]\n"
+    std::fprintf(stderr, "usage: facet-pack MODEL.step -o MODEL.fpk [--plain|--deflate] [--unit mm|cm|m|in|ft] [--partial] [--reference FACES.json] [--quiet]\n"
                          "       facet-pack --check MODEL.fpk\n");
     return 2;
 }
@@ -74,7 +74,9 @@ int check(const char* path) {
     }
     std::printf("%s: valid pack, %zu faces, %zu edges, %zu shells, %zu instances, %u bytes", path, pack.faces().size(),
                 pack.edges().size(), pack.shells().size(), pack.instances().size(), file.bytes);
-    if (file.deflated) std::printf(" (deflated file: %u bytes)", file.file_bytes);
+    if (geom::compressed(file.kind)) {
+        std::printf(" (%s file: %u bytes)", file.kind == geom::PackFileKind::Lzma ? "LZMA" : "deflated", file.file_bytes);
+    }
     std::printf("\n  model \"%s\"\n", pack.model_name());
     // The parts list the viewer shows: each instance, its part's name and its own.
     for (uint32_t i = 0; i < pack.instances().size(); ++i) {
@@ -90,13 +92,14 @@ int check(const char* path) {
 
 int main(int argc, char** argv) {
     const char *in = nullptr, *out = nullptr, *reference = nullptr;
-    bool quiet = false, plain = false, partial = false;
+    bool quiet = false, plain = false, deflated = false, partial = false;
     packer::UnitGuess unit = packer::UnitGuess::BySize;
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--check") && i + 1 < argc) return argc == 3 ? check(argv[i + 1]) : usage();
         if (!std::strcmp(argv[i], "-o") && i + 1 < argc && !out) out = argv[++i];
         else if (!std::strcmp(argv[i], "--quiet")) quiet = true;
         else if (!std::strcmp(argv[i], "--plain")) plain = true;
+        else if (!std::strcmp(argv[i], "--deflate")) deflated = true;
         else if (!std::strcmp(argv[i], "--partial")) partial = true;
         else if (!std::strcmp(argv[i], "--reference") && i + 1 < argc && !reference) reference = argv[++i];
         else if (!std::strcmp(argv[i], "--unit") && i + 1 < argc) {
@@ -158,10 +161,10 @@ int main(int argc, char** argv) {
         return die(std::string(in) + ": no face could be packed" +
                    (stats.first_problem.empty() ? "" : " (" + stats.first_problem + ")"));
     }
-    if (!quiet) packer::progress(plain ? "writing" : "deflating");
+    if (!quiet) packer::progress(plain ? "writing" : "compressing");
     const std::vector<uint8_t> pack = writer.finish();
-    const std::vector<uint8_t> bytes = plain ? pack : geom::deflate_pack(pack);
-    if (bytes.empty()) return die("zlib could not deflate the pack");
+    const std::vector<uint8_t> bytes = plain ? pack : (deflated ? geom::deflate_pack(pack) : geom::lzma_pack(pack));
+    if (bytes.empty()) return die(deflated ? "zlib could not deflate the pack" : "liblzma could not compress the pack");
     if (!host::write_file(out, bytes.data(), bytes.size(), error)) return die(error);
     if (reference && !host::write_file(reference, packer::reference_json(packer.packed_faces, model.unit_mm), error)) return die(error);
     std::string types;
@@ -171,7 +174,7 @@ int main(int argc, char** argv) {
     if (stats.faces_skipped) std::printf(", %u faces skipped (%s)", stats.faces_skipped, stats.first_problem.c_str());
     std::printf("\n  pack %zu bytes = %.1f%% of the STEP file (%lld bytes)", bytes.size(),
                 100.0 * double(bytes.size()) / double(st.st_size), (long long)st.st_size);
-    if (!plain) std::printf("; %zu bytes inflated", pack.size());
+    if (!plain) std::printf("; %zu bytes decoded", pack.size());
     std::printf("\n");
     for (auto& [k, v] : stats.converted) std::printf("  converted: %u %s\n", v, k.c_str());
     for (size_t a = 0, b; a < model.notes.size(); a = b + 1) {

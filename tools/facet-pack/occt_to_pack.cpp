@@ -43,8 +43,13 @@ namespace {
 using namespace facet::pack;
 using Floats = std::vector<float>;
 
-void put(Floats& f, const gp_XYZ& v) { f.insert(f.end(), {float(v.X()), float(v.Y()), float(v.Z())}); }
-void put(Floats& f, const gp_XY& v) { f.insert(f.end(), {float(v.X()), float(v.Y())}); }
+// Round-off residue (|x| < 1e-9, in mm, radians or a knot's parameter) stored as an exact 0: a
+// direction's 1e-17 or a pole's 2e-15 left by a CAD system's arithmetic costs a compressed pack
+// as many bytes as any other float, a 0 almost none. Moves nothing by more than 1e-9.
+float clean(double x) { return std::fabs(x) < 1e-9 ? 0.0f : float(x); }
+
+void put(Floats& f, const gp_XYZ& v) { f.insert(f.end(), {clean(v.X()), clean(v.Y()), clean(v.Z())}); }
+void put(Floats& f, const gp_XY& v) { f.insert(f.end(), {clean(v.X()), clean(v.Y())}); }
 
 void put_axes(Floats& f, const gp_Ax3& a) {
     put(f, a.Location().XYZ());
@@ -73,7 +78,7 @@ Floats bspline_curve(opencascade::handle<Curve> c) {
     TColStd_Array1OfReal knots(1, c->NbPoles() + c->Degree() + 1);
     c->KnotSequence(knots);
     f.insert(f.end(), {float(c->Degree()), float(n), float(knots.Length()), c->IsRational() ? 1.0f : 0.0f, periodic ? 1.0f : 0.0f});
-    for (int i = knots.Lower(); i <= knots.Upper(); ++i) f.push_back(float(knots(i)));
+    for (int i = knots.Lower(); i <= knots.Upper(); ++i) f.push_back(clean(knots(i)));
     for (int i = 1; i <= n; ++i) put(f, c->Pole(i));
     if (c->IsRational())
         for (int i = 1; i <= n; ++i) f.push_back(float(c->Weight(i)));
@@ -335,8 +340,8 @@ static uint32_t add_surface(geom::PackWriter& w, const Handle(Geom_Surface)& sur
     const bool rational = b->IsURational() || b->IsVRational();
     f.insert(f.end(), {float(b->UDegree()), float(b->VDegree()), float(nu), float(nv), float(uk.Length()),
                        float(vk.Length()), rational ? 1.0f : 0.0f, u_periodic ? 1.0f : 0.0f, v_periodic ? 1.0f : 0.0f});
-    for (int i = uk.Lower(); i <= uk.Upper(); ++i) f.push_back(float(uk(i)));
-    for (int i = vk.Lower(); i <= vk.Upper(); ++i) f.push_back(float(vk(i)));
+    for (int i = uk.Lower(); i <= uk.Upper(); ++i) f.push_back(clean(uk(i)));
+    for (int i = vk.Lower(); i <= vk.Upper(); ++i) f.push_back(clean(vk(i)));
     for (int i = 1; i <= nu; ++i)
         for (int j = 1; j <= nv; ++j) put(f, b->Pole(i, j).XYZ());
     if (rational)

@@ -1,14 +1,16 @@
 #pragma once
-// A pack as stored or sent: the pack itself (magic FPK1), or deflated (FPZ1: a DeflatedHead and
-// a raw DEFLATE stream, a third to a quarter of the size). Either way it ends up as a pack in
-// memory, read in place from there (geom/pack.h).
+// A pack as stored or sent: the pack itself (magic FPK1), LZMA-compressed (FPX1: an LzmaHead
+// and a raw LZMA stream, the default of facet-pack) or deflated (FPZ1: a DeflatedHead and a raw
+// DEFLATE stream). Either way it ends up as a pack in memory, read in place from there
+// (geom/pack.h).
 //
-// On the device the file is loaded at the start of the pack region; unpack_in_place() inflates
-// a deflated one there:
+// On the device the file is loaded at the start of the pack region; unpack_in_place() decodes
+// a compressed one there:
 //
 //   uint32_t bytes;
 //   if (unpack_in_place(region, capacity, loaded, bytes).ok()) r = pack.open(region, bytes);
 #include "geom/pack_format.h"
+#include "geom/unlzma.h"
 #include "hal/status.h"
 
 #include <cstdint>
@@ -17,19 +19,29 @@
 namespace facet::geom {
 
 // What the bytes at `data` hold, from their first bytes alone.
-enum class PackFileKind : uint8_t { Unknown, Pack, Deflated };
+enum class PackFileKind : uint8_t { Unknown, Pack, Deflated, Lzma };
 PackFileKind pack_file_kind(const void* data, uint32_t available);
+constexpr bool compressed(PackFileKind k) { return k == PackFileKind::Deflated || k == PackFileKind::Lzma; }
 
-// The size of the file at `data` (either kind) as its head states it; 0 when unknown or
-// larger than `available`.
+// The size of the file at `data` (any kind) as its head states it; 0 when unknown or larger
+// than `available`.
 uint32_t pack_file_bytes(const void* data, uint32_t available);
 
-// Makes the file loaded at region[0, loaded) a pack at region[0, bytes). A deflated file is
-// moved to the region's end and inflated to its start: it needs the pack's size plus its own
-// within `capacity`. A plain pack is left as it is. The region must be 4-byte aligned.
+// The decoder's state an LZMA file needs next to its output (4-byte aligned), 0 for the others.
+constexpr uint32_t kLzmaStateBytes = (sizeof(LzmaProbs) + 3) & ~3u;
+
+// The memory decode_pack_file() needs for a compressed file: its pack, and after it the LZMA
+// decoder's state; 0 when the head is unreadable.
+uint32_t decoded_memory_bytes(const void* data, uint32_t available);
+
+// Makes the file loaded at region[0, loaded) a pack at region[0, bytes). A compressed file is
+// moved to the region's end and decoded to its start: it needs the pack's size plus its own
+// within `capacity` (an LZMA file kLzmaStateBytes more, for its state at the very end). A plain
+// pack is left as it is. The region must be 4-byte aligned.
 Result unpack_in_place(uint8_t* region, uint32_t capacity, uint32_t loaded, uint32_t& bytes);
 
-// Inflates a deflated file into out (at least its head's pack_bytes long; the host sizes it).
-Result inflate_pack_file(std::span<const uint8_t> file, std::span<uint8_t> out, uint32_t& bytes);
+// Decodes a compressed file into out (at least decoded_memory_bytes() long, 4-byte aligned;
+// an LZMA file's decoder state goes after the pack).
+Result decode_pack_file(std::span<const uint8_t> file, std::span<uint8_t> out, uint32_t& bytes);
 
 } // namespace facet::geom

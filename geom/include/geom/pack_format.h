@@ -6,8 +6,9 @@
 // 4-byte aligned. Little-endian. Geometry is float32 (a 2 m part keeps ~0.1 um steps, far below
 // the 0.1% visual tolerance); indices are uint32 with kNoIndex for "none".
 //
-// Stored or sent, a pack is usually deflated (DeflatedHead below, then a raw DEFLATE stream):
-// geom/pack_file.h turns either form into a pack ready to read in place.
+// Stored or sent, a pack is usually compressed (LzmaHead below and a raw LZMA stream, or
+// DeflatedHead and a raw DEFLATE stream): geom/pack_file.h turns any form into a pack ready to
+// read in place.
 #include <cstdint>
 
 namespace facet::pack {
@@ -207,6 +208,18 @@ struct DeflatedHead {
     uint32_t reserved;     // 0
 };
 static_assert(sizeof(DeflatedHead) == 16);
+
+// An LZMA pack: this head, then the pack as a raw LZMA stream (geom/unlzma.h; about two thirds
+// of the DEFLATE size on B-spline-heavy models). The default of facet-pack.
+constexpr char kLzmaMagic[4] = {'F', 'P', 'X', '1'};
+struct LzmaHead {
+    char magic[4];
+    uint32_t pack_bytes;   // the pack, decoded
+    uint32_t stream_bytes; // the LZMA stream that follows
+    uint8_t props;         // (pb * 5 + lp) * 9 + lc
+    uint8_t reserved[3];   // 0
+};
+static_assert(sizeof(LzmaHead) == 16);
 
 // CRC-32 (IEEE 802.3, reflected, as zlib) for the header's checksum.
 uint32_t crc32(const void* data, uint32_t size, uint32_t crc = 0);
