@@ -45,7 +45,7 @@ public:
     bool finished_cleanly() const { return code_ == 0; }
     uint32_t left() const { return uint32_t(end_ - p_); }
 
-    uint32_t bit(uint16_t* prob) {
+    [[gnu::always_inline]] uint32_t bit(uint16_t* prob) {
         const uint32_t bound = (range_ >> kProbBits) * *prob;
         uint32_t b;
         if (code_ < bound) {
@@ -63,14 +63,14 @@ public:
     }
 
     // numBits bits, most significant first, through the tree at probs[1..2^numBits).
-    uint32_t tree(uint16_t* probs, uint32_t num_bits) {
+    [[gnu::always_inline]] uint32_t tree(uint16_t* probs, uint32_t num_bits) {
         uint32_t m = 1;
         for (uint32_t i = 0; i < num_bits; ++i) m = (m << 1) | bit(probs + m);
         return m - (1u << num_bits);
     }
 
     // The same, least significant bit first.
-    uint32_t reverse_tree(uint16_t* probs, uint32_t num_bits) {
+    [[gnu::always_inline]] uint32_t reverse_tree(uint16_t* probs, uint32_t num_bits) {
         uint32_t m = 1, symbol = 0;
         for (uint32_t i = 0; i < num_bits; ++i) {
             const uint32_t b = bit(probs + m);
@@ -96,12 +96,12 @@ public:
     }
 
 private:
-    uint8_t next() {
+    [[gnu::always_inline]] uint8_t next() {
         if (p_ < end_) return *p_++;
         overrun_ = true; // reads past the end see zeros; the caller reports the stream truncated
         return 0;
     }
-    void normalize() {
+    [[gnu::always_inline]] void normalize() {
         if (range_ < kTop) {
             range_ <<= 8;
             code_ = (code_ << 8) | next();
@@ -115,7 +115,7 @@ private:
     bool overrun_ = false;
 };
 
-uint32_t decode_length(RangeDecoder& rc, uint16_t* coder, uint32_t pos_state) {
+[[gnu::always_inline]] inline uint32_t decode_length(RangeDecoder& rc, uint16_t* coder, uint32_t pos_state) {
     if (rc.bit(coder + kLenChoice) == 0) return rc.tree(coder + kLenLow + (pos_state << 3), 3);
     if (rc.bit(coder + kLenChoice2) == 0) return 8 + rc.tree(coder + kLenMid + (pos_state << 3), 3);
     return 16 + rc.tree(coder + kLenHigh, 8);

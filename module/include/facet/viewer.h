@@ -45,7 +45,7 @@ constexpr size_t draw_bytes(uint16_t width, uint16_t lines) { return FACET_DRAW_
 constexpr size_t depth_bytes(uint16_t width, uint16_t lines) { return FACET_DEPTH_BYTES(width, lines); }
 
 // Bytes of pack memory load() needs for this pack file: 0 for a plain pack it can read in
-// place (4-byte aligned), the pack's size for a deflated one (its head says) or an unaligned
+// place (4-byte aligned), the pack's size for a compressed one (its head says; + LZMA state) or an unaligned
 // plain one; 0 for bytes that are no pack (load() then says why).
 uint32_t pack_memory_bytes(const void* file, uint32_t file_bytes);
 
@@ -181,10 +181,10 @@ public:
     // or null with the reason in *why (a buffer too small or missing, a bad size).
     static Viewer* create(const Config& config, void* workspace, size_t bytes, Result* why = nullptr);
 
-    // Takes a pack file (plain or deflated) and shows its wireframe. A plain, 4-byte aligned pack
-    // is read in place and must stay there; a deflated one is inflated into `memory`
-    // (pack_memory_bytes()); when the file itself lies inside `memory`, it is inflated in place
-    // (memory: the pack's size plus the file's). Corrupt names the bad record; Full: the model
+    // Takes a pack file (plain, LZMA or deflated) and shows its wireframe. A plain, aligned pack
+    // is read in place and must stay there; a compressed one is decoded into `memory`
+    // (pack_memory_bytes()); when the file itself lies inside `memory`, it is decoded in place
+    // (memory: the pack's size plus the file's, plus 9,840 bytes for LZMA). Corrupt names the bad record; Full: the model
     // exceeds the capacities. The previous model, if any, is dropped first.
     Result load(const void* file, uint32_t file_bytes, void* memory = nullptr, uint32_t memory_bytes = 0);
 
