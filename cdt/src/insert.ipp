@@ -85,7 +85,7 @@ Status Cdt<Index>::legalize(Index v, uint32_t top) {
         const Index t = stack[--top];
         const Triangle<Index>& T = tri[t];
         const Index u = T.n[0];
-        if ((T.flags & 3) != 0 || u == kNone<Index>) continue; // a constraint, or the box
+        if (T.constrained(0) || u == kNone<Index>) continue; // a constraint, or the box
         const Point& a = V[T.v[1]].p;
         const Point& b = V[T.v[2]].p;
         const Point& q = V[tri[u].v[T.back_edge(0)]].p;

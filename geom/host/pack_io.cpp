@@ -69,7 +69,8 @@ std::vector<uint8_t> lzma_pack(const std::vector<uint8_t>& pack) {
 bool load_pack_bytes(const std::vector<uint8_t>& file, LoadedPack& out, std::string& error) {
     out = LoadedPack{};
     out.file_bytes = uint32_t(file.size());
-    switch (pack_file_kind(file.data(), uint32_t(file.size()))) {
+    out.kind = pack_file_kind(file.data(), uint32_t(file.size()));
+    switch (out.kind) {
     case PackFileKind::Unknown:
         error = "not a facet pack (neither FPK1, FPX1 nor FPZ1)";
         return false;
@@ -82,19 +83,17 @@ bool load_pack_bytes(const std::vector<uint8_t>& file, LoadedPack& out, std::str
     case PackFileKind::Deflated:
     case PackFileKind::Lzma: break;
     }
-    pack::DeflatedHead h{}; // an LzmaHead's sizes sit at the same places
-    if (file.size() >= sizeof h) std::memcpy(&h, file.data(), sizeof h);
-    if (file.size() >= sizeof h && uint64_t(sizeof h) + h.stream_bytes < file.size()) {
-        error = std::to_string(file.size() - sizeof h - h.stream_bytes) +
-                " bytes follow the compressed pack (appended or not one pack)";
+    const uint32_t stated = pack_file_bytes(file.data(), uint32_t(file.size())); // 0: truncated, the decoder says so
+    if (stated != 0 && stated < file.size()) {
+        error = std::to_string(file.size() - stated) + " bytes follow the compressed pack (appended or not one pack)";
         return false;
     }
-    if (h.pack_bytes > pack::kMaxBytes) {
+    const uint32_t memory = decoded_memory_bytes(file.data(), uint32_t(file.size()));
+    if (memory == 0 && file.size() >= sizeof(pack::LzmaHead)) {
         error = "the pack would be larger than the 64 MiB limit";
         return false;
     }
-    out.kind = pack_file_kind(file.data(), uint32_t(file.size()));
-    out.words.resize((size_t(decoded_memory_bytes(file.data(), uint32_t(file.size()))) + 3) / 4);
+    out.words.resize((size_t(memory) + 3) / 4);
     const Result r = decode_pack_file({file.data(), file.size()}, {reinterpret_cast<uint8_t*>(out.words.data()), out.words.size() * 4}, out.bytes);
     if (!r.ok()) {
         char text[160];
