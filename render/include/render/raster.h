@@ -58,7 +58,7 @@ struct RasterStats {
     uint32_t triangles = 0;   // triangles that reached scan conversion
     uint32_t culled = 0;      // back-facing or zero-area
     uint32_t spans = 0;       // spans pushed to the display (none when pixels go in place)
-    uint32_t pixels = 0;      // pixels that passed the depth test
+    uint32_t pixels = 0;      // pixels depth-tested, drawn or hidden (what the spans cost)
 };
 
 class Rasterizer {
