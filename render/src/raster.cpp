@@ -433,7 +433,6 @@ void Rasterizer::scan_rows(const ScreenVertex& v0, const ScreenVertex& v1, const
 void Rasterizer::scan_small(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2,
                             int64_t area2, int32_t row0, int32_t row1, int32_t col0, int32_t col1) {
     const int32_t ox = col0 * 16 + 8, oy = row0 * 16 + 8; // the first pixel's centre
-    const bool clamp = stipple_ || needs_clamp(v0, v1, v2, kSmall);
     struct Edge {
         int32_t e, sx, sy; // value at the current pixel; steps per pixel in x and y
     } ed[3];
@@ -447,25 +446,41 @@ void Rasterizer::scan_small(const ScreenVertex& v0, const ScreenVertex& v1, cons
         ed[i].sx = -16 * dy;
         ed[i].sy = 16 * dx;
     }
+    // The rows' spans first: a small triangle often covers no pixel centre at all (a sliver
+    // between them), and then needs no gradients.
+    int32_t span[2 * kSmall];
+    bool any = false;
+    {
+        int32_t r0 = ed[0].e, r1 = ed[1].e, r2 = ed[2].e;
+        const int32_t sx0 = ed[0].sx, sx1 = ed[1].sx, sx2 = ed[2].sx;
+        for (int32_t* at = span; at <= span + 2 * (row1 - row0); at += 2) {
+            // The first pixel inside, then on while inside (a triangle is convex).
+            int32_t e0 = r0, e1 = r1, e2 = r2, x = col0;
+            for (; x <= col1 && (e0 | e1 | e2) < 0; ++x) e0 += sx0, e1 += sx1, e2 += sx2;
+            const int32_t lo = x;
+            for (; x <= col1 && (e0 | e1 | e2) >= 0; ++x) e0 += sx0, e1 += sx1, e2 += sx2;
+            at[0] = lo, at[1] = x; // [lo, x)
+            any |= x > lo;
+            r0 += ed[0].sy, r1 += ed[1].sy, r2 += ed[2].sy;
+        }
+    }
+    if (!any) return;
+    const bool clamp = stipple_ || needs_clamp(v0, v1, v2, kSmall);
     Interp at[kAttributes];
     gradients(v0, v1, v2, area2, oy, at);
-    for (int32_t y = row0; y <= row1; ++y) {
-        // The row's span: the first pixel inside, then on while inside (a triangle is convex).
-        int32_t e0 = ed[0].e, e1 = ed[1].e, e2 = ed[2].e, x = col0;
-        for (; x <= col1 && (e0 | e1 | e2) < 0; ++x) e0 += ed[0].sx, e1 += ed[1].sx, e2 += ed[2].sx;
-        const int32_t lo = x;
-        for (; x <= col1 && (e0 | e1 | e2) >= 0; ++x) e0 += ed[0].sx, e1 += ed[1].sx, e2 += ed[2].sx;
-        if (x > lo) {
+    const int32_t* sp = span;
+    for (int32_t y = row0; y <= row1; ++y, sp += 2) {
+        const int32_t lo = sp[0], end = sp[1];
+        if (end > lo) {
             if (!clamp) {
                 const size_t row = size_t(y - t_.y0) * t_.width;
-                stats.pixels += shade_in_place(t_.depth + row + lo, t_.depth + row + x, t_.pixels + row + lo,
+                stats.pixels += shade_in_place(t_.depth + row + lo, t_.depth + row + end, t_.pixels + row + lo,
                                                at[0].row + at[0].sx * uint32_t(lo), at[0].sx, at[1].row + at[1].sx * uint32_t(lo),
                                                at[1].sx, palette_->colour);
             } else {
-                shade(y, lo, x - 1, at, clamp);
+                shade(y, lo, end - 1, at, clamp);
             }
         }
-        ed[0].e += ed[0].sy, ed[1].e += ed[1].sy, ed[2].e += ed[2].sy;
         for (Interp& t : at) t.row += t.sy;
     }
 }
