@@ -259,6 +259,48 @@ void Rasterizer::clear_depth() {
     }
 }
 
+// gradients() for a triangle whose box is under kSmall pixels both ways, the same values in
+// fewer instructions: its coordinate differences (under 2^9 sub-pixels) and value differences
+// (under 2^16) keep the numerators in 32 bits, its area under 2^17 makes the reciprocal's
+// shift a right shift, and the rows' values are kept modulo 2^32 anyway (so are computed
+// so). The clamping range only where `clamp` asks for it.
+[[gnu::always_inline]] inline void Rasterizer::small_gradients(const ScreenVertex& v0, const ScreenVertex& v1,
+                                                               const ScreenVertex& v2, int64_t area2, int32_t oy, bool clamp,
+                                                               Interp at[]) const {
+    const int32_t bw = std::max({v0.x, v1.x, v2.x}) - std::min({v0.x, v1.x, v2.x});
+    const int32_t bh = std::max({v0.y, v1.y, v2.y}) - std::min({v0.y, v1.y, v2.y});
+    const int32_t area = int32_t(area2);
+    const bool exact = bw * bh > 4 * area;
+    int32_t m = 0, shift = 0;
+    if (!exact) {
+        const Reciprocal r = reciprocal(uint32_t(area));
+        m = int32_t(r.m), shift = r.shift - kFrac; // >= 4: the area is under 2^17
+    }
+    const int32_t vals[kAttributes][3] = {{v0.z, v1.z, v2.z}, {v0.shade, v1.shade, v2.shade}};
+    const int32_t y1 = v1.y - v0.y, y2 = v2.y - v0.y, x1 = v1.x - v0.x, x2 = v2.x - v0.x;
+    const uint32_t ox = uint32_t(8 - v0.x), oyy = uint32_t(oy - v0.y);
+    for (int k = 0; k < kAttributes; ++k) {
+        const int32_t A0 = vals[k][0], d1 = vals[k][1] - A0, d2 = vals[k][2] - A0;
+        const int32_t numx = d1 * y2 - d2 * y1, numy = d2 * x1 - d1 * x2;
+        int64_t gx, gy;
+        if (exact) {
+            gx = div_fast(int64_t(numx) * (int64_t(1) << kFrac), area2);
+            gy = div_fast(int64_t(numy) * (int64_t(1) << kFrac), area2);
+        } else {
+            gx = (int64_t(numx) * m) >> shift;
+            gy = (int64_t(numy) * m) >> shift;
+        }
+        Interp& t = at[k];
+        t.row = (uint32_t(A0) << kFrac) + uint32_t(gx) * ox + uint32_t(gy) * oyy;
+        t.sx = uint32_t(gx) * 16, t.sy = uint32_t(gy) * 16;
+        if (clamp) {
+            const int32_t mn = std::min({vals[k][0], vals[k][1], vals[k][2]}), mx = std::max({vals[k][0], vals[k][1], vals[k][2]});
+            t.lo = mn << kFrac;
+            t.hi = (mx << kFrac) | ((1 << kFrac) - 1);
+        }
+    }
+}
+
 Status Rasterizer::draw(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, const Palette& palette,
                         Cull cull) {
     palette_ = &palette;
@@ -292,7 +334,9 @@ Status Rasterizer::scan(const ScreenVertex& v0, const ScreenVertex& v1, const Sc
     col0 = col0 < 0 ? 0 : col0;
     col1 = col1 > t_.width - 1 ? t_.width - 1 : col1;
     if (row0 > row1 || col0 > col1) return Status::Ok;
-    const bool small = col1 - col0 < kSmall && row1 - row0 < kSmall;
+    // Small: the triangle's own box (not the part of it on the screen) under kSmall pixels
+    // both ways, which keeps scan_small's edge functions and small_gradients' products in 32 bits.
+    const bool small = int64_t(xmax) - xmin < 16 * kSmall && int64_t(ymax) - ymin < 16 * kSmall;
     // Then the rows of this band.
     row0 = row0 < t_.y0 ? t_.y0 : row0;
     row1 = row1 > t_.y0 + t_.rows - 1 ? t_.y0 + t_.rows - 1 : row1;
@@ -467,7 +511,7 @@ void Rasterizer::scan_small(const ScreenVertex& v0, const ScreenVertex& v1, cons
     if (!any) return;
     const bool clamp = stipple_ || needs_clamp(v0, v1, v2, kSmall);
     Interp at[kAttributes];
-    gradients(v0, v1, v2, area2, oy, at);
+    small_gradients(v0, v1, v2, area2, oy, clamp, at);
     const int32_t* sp = span;
     for (int32_t y = row0; y <= row1; ++y, sp += 2) {
         const int32_t lo = sp[0], end = sp[1];

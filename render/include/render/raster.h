@@ -98,6 +98,8 @@ private:
     void shade(int32_t y, int32_t lo, int32_t hi, const Interp* at, bool clamp);
     void gradients(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2, int64_t area2, int32_t oy,
                    Interp at[]) const;
+    void small_gradients(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2, int64_t area2, int32_t oy,
+                         bool clamp, Interp at[]) const;
     static constexpr int kAttributes = 2; // depth, shade
 
     const Palette* palette_ = nullptr; // the triangle being drawn's
