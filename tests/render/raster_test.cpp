@@ -220,10 +220,31 @@ TEST(Raster, SamePixelsInBandsAndOnTheWholeScreen) {
     }
 }
 
+// Checks the fixture's coverage of triangle t (drawn alone, without culling) against the rule:
+// the pixels drawn are exactly those whose centre passes all three edge tests, with the
+// top-left rule for centres on an edge (evaluated here pixel by pixel, in 64 bits).
+void expect_top_left_coverage(const Fixture& f, ScreenVertex t[3], int trial) {
+    int64_t area2 = int64_t(t[1].x - t[0].x) * (t[2].y - t[0].y) - int64_t(t[1].y - t[0].y) * (t[2].x - t[0].x);
+    if (area2 == 0) return;
+    if (area2 < 0) std::swap(t[1], t[2]);
+    for (int y = 0; y < f.h; ++y) {
+        for (int x = 0; x < f.w; ++x) {
+            const int64_t sx = 16 * x + 8, sy = 16 * y + 8;
+            bool inside = true;
+            for (int e = 0; e < 3; ++e) {
+                const ScreenVertex& p = t[(e + 1) % 3];
+                const ScreenVertex& q = t[(e + 2) % 3];
+                const int64_t dx = q.x - p.x, dy = q.y - p.y;
+                const int64_t bias = (dy < 0 || (dy == 0 && dx > 0)) ? 0 : 1;
+                inside = inside && dx * (sy - p.y) - dy * (sx - p.x) - bias >= 0;
+            }
+            ASSERT_EQ(f.count[size_t(y) * f.w + x], inside ? 1 : 0) << "trial " << trial << " pixel " << x << "," << y;
+        }
+    }
+}
+
 TEST(Raster, CoverageIsExactlyTheTopLeftRule) {
-    // Random triangles, small and large, on and off the screen: the pixels drawn are exactly
-    // those whose centre passes all three edge tests, with the top-left rule for centres on an
-    // edge (evaluated here pixel by pixel, in 64 bits).
+    // Random triangles, small and large, on and off the screen.
     constexpr uint16_t W = 120, H = 90;
     std::mt19937 rng(11);
     for (int trial = 0; trial < 400; ++trial) {
@@ -238,23 +259,38 @@ TEST(Raster, CoverageIsExactlyTheTopLeftRule) {
             if (trial % 7 == 0) p.y = t[0].y;                                        // flat edges
         }
         ASSERT_EQ(f.draw(t[0], t[1], t[2], ramp(), render::Cull::None), Status::Ok);
-        int64_t area2 = int64_t(t[1].x - t[0].x) * (t[2].y - t[0].y) - int64_t(t[1].y - t[0].y) * (t[2].x - t[0].x);
-        if (area2 == 0) continue;
-        if (area2 < 0) std::swap(t[1], t[2]);
-        for (int y = 0; y < H; ++y) {
-            for (int x = 0; x < W; ++x) {
-                const int64_t sx = 16 * x + 8, sy = 16 * y + 8;
-                bool inside = true;
-                for (int e = 0; e < 3; ++e) {
-                    const ScreenVertex& p = t[(e + 1) % 3];
-                    const ScreenVertex& q = t[(e + 2) % 3];
-                    const int64_t dx = q.x - p.x, dy = q.y - p.y;
-                    const int64_t bias = (dy < 0 || (dy == 0 && dx > 0)) ? 0 : 1;
-                    inside = inside && dx * (sy - p.y) - dy * (sx - p.x) - bias >= 0;
-                }
-                ASSERT_EQ(f.count[size_t(y) * W + x], inside ? 1 : 0)
-                    << "trial " << trial << " pixel " << x << "," << y;
+        expect_top_left_coverage(f, t, trial);
+        if (HasFatalFailure()) return;
+    }
+}
+
+TEST(Raster, ATriangleReachingTheGuardBandIsExactWhereOnlyACornerShows) {
+    // Triangles as large as the guard band allows of which only a few pixels in a corner of
+    // the screen show: what is on the screen is small, the triangle is not (its edge functions
+    // need 64 bits, so it must not take the small triangles' 32-bit path).
+    constexpr uint16_t W = 120, H = 90;
+    constexpr int32_t G = render::kGuardBand;
+    const int32_t cut[] = {16 * 3, 16 * 5 + 8, 16 * 12 + 3, 16 * 19};
+    int trial = 0;
+    for (int32_t c : cut) {
+        // The half-plane x + y < c (a corner of c / 16 pixels) cut by a triangle reaching far
+        // beyond the screen, then the same mirrored into the other three corners.
+        const ScreenVertex tl[3] = {v(c + G / 2, -G / 2), v(-G / 2, c + G / 2), v(16 * W - G, 16 * H - G)};
+        for (int mirror = 0; mirror < 4; ++mirror) {
+            ScreenVertex tri[3];
+            for (int k = 0; k < 3; ++k) {
+                tri[k] = tl[k];
+                if (mirror & 1) tri[k].x = 16 * W - tri[k].x;
+                if (mirror & 2) tri[k].y = 16 * H - tri[k].y;
             }
+            Fixture f(W, H);
+            ScreenVertex t[3] = {tri[0], tri[1], tri[2]};
+            ASSERT_EQ(f.draw(t[0], t[1], t[2], ramp(), render::Cull::None), Status::Ok);
+            int drawn = 0;
+            for (int k : f.count) drawn += k;
+            EXPECT_GT(drawn, 0) << "trial " << trial;
+            expect_top_left_coverage(f, t, trial++);
+            if (HasFatalFailure()) return;
         }
     }
 }
