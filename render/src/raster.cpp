@@ -191,6 +191,9 @@ struct Rasterizer::Interp {
     Interp() = default; // filled by gradients()
     Interp(const int32_t v[3], int64_t gx, int64_t gy, int64_t at_origin)
         : row(uint32_t(at_origin)), sx(uint32_t(gx * 16)), sy(uint32_t(gy * 16)) {
+        set_range(v);
+    }
+    void set_range(const int32_t v[3]) {
         const int32_t mn = std::min({v[0], v[1], v[2]}), mx = std::max({v[0], v[1], v[2]});
         lo = mn << kFrac;
         hi = (mx << kFrac) | ((1 << kFrac) - 1);
@@ -293,11 +296,7 @@ void Rasterizer::clear_depth() {
         Interp& t = at[k];
         t.row = (uint32_t(A0) << kFrac) + uint32_t(gx) * ox + uint32_t(gy) * oyy;
         t.sx = uint32_t(gx) * 16, t.sy = uint32_t(gy) * 16;
-        if (clamp) {
-            const int32_t mn = std::min({vals[k][0], vals[k][1], vals[k][2]}), mx = std::max({vals[k][0], vals[k][1], vals[k][2]});
-            t.lo = mn << kFrac;
-            t.hi = (mx << kFrac) | ((1 << kFrac) - 1);
-        }
+        if (clamp) t.set_range(vals[k]);
     }
 }
 
