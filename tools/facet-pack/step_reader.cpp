@@ -1,7 +1,9 @@
 #include "step_reader.h"
 
 #include <BRepBndLib.hxx>
+#include <BRepBuilderAPI_MakeSolid.hxx>
 #include <BRepBuilderAPI_Sewing.hxx>
+#include <BRepLib.hxx>
 #include <BRepBuilderAPI_Transform.hxx>
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
@@ -36,6 +38,7 @@
 #include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
 #include <TopTools_ListOfShape.hxx>
 #include <TopoDS.hxx>
+#include <TopoDS_Solid.hxx>
 #include <XCAFApp_Application.hxx>
 #include <XCAFDoc_DocumentTool.hxx>
 #include <XCAFDoc_ShapeTool.hxx>
@@ -160,6 +163,52 @@ void close_gaps(Part& part) {
     } catch (const Standard_Failure&) {
     }
     part.closed = free_edges(part.shape) == 0;
+}
+
+// Sheets of one occurrence (a surface model: open shells or lone faces, same name and
+// placement) that together bound a volume: a file that wrote a solid face by face. They are
+// sewn within a ten times larger gap than a solid's (such files come from converters: ANC101
+// as B-splines has gaps up to 1/30,000 of its size); when that leaves no free edge, the
+// shells become one solid oriented outwards, read as closed (its back faces culled, its
+// sections capped, its edges shared and so sampled once). Otherwise they stay as they were.
+// Returns how many sheets went into the solid (0: none).
+constexpr double kSheetGap = 1e-4; // of the sheets' bounding box diagonal
+size_t close_sheets(std::vector<Part>& parts) {
+    std::vector<size_t> open;
+    for (size_t i = 0; i < parts.size(); ++i)
+        if (parts[i].shape.ShapeType() != TopAbs_SOLID) open.push_back(i);
+    if (open.size() < 2) return 0;
+    const Part& first = parts[open[0]];
+    for (size_t i : open)
+        if (parts[i].name != first.name || parts[i].instance != first.instance ||
+            !parts[i].shape.Location().IsEqual(first.shape.Location()))
+            return 0;
+    Bnd_Box box;
+    for (size_t i : open) BRepBndLib::Add(parts[i].shape, box);
+    const double diag = box.IsVoid() ? 1.0 : std::sqrt(box.SquareExtent());
+    try {
+        BRepBuilderAPI_Sewing sew(kSheetGap * diag);
+        for (size_t i : open) sew.Add(parts[i].shape.Located(TopLoc_Location()));
+        sew.Perform();
+        const TopoDS_Shape sewn = sew.SewedShape();
+        if (sewn.IsNull() || free_edges(sewn) != 0) return 0;
+        BRepBuilderAPI_MakeSolid make;
+        int shells = 0;
+        for (TopExp_Explorer x(sewn, TopAbs_SHELL); x.More(); x.Next(), ++shells) make.Add(TopoDS::Shell(x.Current()));
+        if (shells == 0 || !make.IsDone()) return 0;
+        TopoDS_Solid solid = make.Solid();
+        BRepLib::OrientClosedSolid(solid);
+        if (free_edges(solid) != 0) return 0;
+        Part whole{solid.Located(first.shape.Location()), true, first.name, first.instance};
+        std::vector<Part> kept;
+        for (Part& p : parts)
+            if (p.shape.ShapeType() == TopAbs_SOLID) kept.push_back(std::move(p));
+        kept.push_back(std::move(whole));
+        parts = std::move(kept);
+        return open.size();
+    } catch (const Standard_Failure&) {
+        return 0;
+    }
 }
 
 // What the file says is wrong with entity i: its own check and the file-wide one naming it.
@@ -435,8 +484,11 @@ bool read_step(const std::string& in, StepModel& model, std::string& error, bool
                 close_gaps(p);
                 if (!p.closed) ++model.open_solids;
             }
-            model.parts.push_back(p);
         }
+        if (const size_t n = close_sheets(raw))
+            model.notes += std::to_string(n) + " sheets of " + (raw.back().name.empty() ? std::string("one part") : "'" + raw.back().name + "'") +
+                           " bound a volume: sewn into one closed solid\n";
+        for (Part& p : raw) model.parts.push_back(std::move(p));
     }
     return true;
 }
