@@ -3,6 +3,8 @@
 #include "geom/fmath.h"
 #include "scene.h"
 
+#include <algorithm>
+
 namespace facet::module {
 namespace {
 
@@ -116,6 +118,28 @@ Transform Camera::transform(const Scene& scene, uint32_t index, uint16_t width, 
     in.zk = (int64_t(65535) << 16) / (far - in.near > 1 ? far - in.near : 1);
     in.ortho = view_.ortho;
     if (in.ortho) in.ortho_r = render::reciprocal(uint32_t(in.dist));
+    {
+        // The eye (view (0, 0, dist)) and the way to it (view +z) back in shell coordinates:
+        // P = a^-1 (view - b) 2^30, with a's inverse from its cofactors.
+        double m3[9], inv[9];
+        for (int i = 0; i < 9; ++i) m3[i] = double(in.a[i]) / 1073741824.0;
+        inv[0] = m3[4] * m3[8] - m3[5] * m3[7], inv[1] = m3[2] * m3[7] - m3[1] * m3[8], inv[2] = m3[1] * m3[5] - m3[2] * m3[4];
+        inv[3] = m3[5] * m3[6] - m3[3] * m3[8], inv[4] = m3[0] * m3[8] - m3[2] * m3[6], inv[5] = m3[2] * m3[3] - m3[0] * m3[5];
+        inv[6] = m3[3] * m3[7] - m3[4] * m3[6], inv[7] = m3[1] * m3[6] - m3[0] * m3[7], inv[8] = m3[0] * m3[4] - m3[1] * m3[3];
+        const double det3 = m3[0] * inv[0] + m3[1] * inv[3] + m3[2] * inv[6];
+        const double v[3] = {-double(in.b[0]), -double(in.b[1]), double(in.dist) - double(in.b[2])};
+        double most = 0; // the way to the eye: only its direction counts (largest component 2^14)
+        for (int i = 0; i < 3; ++i) {
+            const double e = (inv[3 * i] * v[0] + inv[3 * i + 1] * v[1] + inv[3 * i + 2] * v[2]) / det3;
+            in.eye[i] = int64_t(e + (e >= 0 ? 0.5 : -0.5));
+            most = std::max(most, inv[3 * i + 2] < 0 ? -inv[3 * i + 2] : inv[3 * i + 2]);
+        }
+        const double q = (det3 < 0 ? -16384.0 : 16384.0) / most;
+        for (int i = 0; i < 3; ++i) {
+            const double w = inv[3 * i + 2] * q;
+            in.toward[i] = int32_t(w + (w >= 0 ? 0.5 : -0.5));
+        }
+    }
     if (section_.on) {
         // View space is v = v_per_mm (R (W - centre) + pan), depth d = dist - v_z; the plane
         // n . W = offset in it: (R n) . v / v_per_mm - (R n) . pan + n . centre - offset.
@@ -149,20 +173,6 @@ bool Transform::visible(const int32_t centre[3], int32_t radius, Rows rows) cons
     const int64_t top_n = top < 0 ? -top : top, bottom_n = bottom < 0 ? -bottom : bottom;
     if (Y * f - top * D > r * (f + top_n) || -Y * f - bottom * D > r * (f + bottom_n)) return false;
     return true;
-}
-
-bool Transform::faces_away(const int32_t p[3], const int16_t n[3]) const {
-    int64_t q[3], m[3];
-    rotate(p, q);
-    const int32_t nn[3] = {n[0], n[1], n[2]};
-    rotate(nn, m);
-    // The normal in view space (the rotation, scaled by 2^26, keeps it outward even mirrored).
-    // The eye sits at (0, 0, dist) in view space (depth d = dist - z); the face looks at it
-    // when n . (eye - p) > 0.
-    const int64_t nx = m[0] >> 14, ny = m[1] >> 14, nz = m[2] >> 14;
-    if (ortho) return nz < 0; // the eye far along +z: every ray parallel
-    const int64_t to_eye_x = -((q[0] >> 30) + b[0]), to_eye_y = -((q[1] >> 30) + b[1]), to_eye_z = dist - ((q[2] >> 30) + b[2]);
-    return nx * to_eye_x + ny * to_eye_y + nz * to_eye_z < 0;
 }
 
 } // namespace facet::module

@@ -17,7 +17,8 @@ class Scene;
 struct Projected {
     int32_t x, y, d;
     render::ScreenVertex s;
-    uint8_t out; // bit 0: behind the near plane; bit 1: beyond the guard band
+    uint8_t out;   // bit 0: behind the near plane; bit 1: beyond the guard band
+    uint8_t front; // hidden line, curved faces: the vertex normal looks at the eye (silhouettes)
 };
 constexpr uint8_t kOutNear = 1, kOutGuard = 2, kOutCut = 4; // kOutCut: on the side a section cuts away (drawing only)
 
@@ -50,6 +51,8 @@ struct Transform {
     int32_t b[3];
     int32_t k16; // view units per mesh unit, 2^16 = 1, rounded up (sizes of spheres)
     int32_t light[3]; // Q14, in shell coordinates
+    int64_t eye[3];     // the eye in shell coordinates (mesh units)
+    int32_t toward[3];  // parallel: the way to the eye in shell coordinates (Q14)
     bool mirrored;
     bool closed;
     bool ortho; // parallel projection: x and y over the centre's depth (dist), not each point's
@@ -94,8 +97,17 @@ struct Transform {
     // Whether a sphere (mesh units) may touch the rows: false only when it lies wholly behind
     // the near plane or beyond one side of the view volume (conservative).
     bool visible(const int32_t centre[3], int32_t radius, Rows rows) const;
-    // Whether the plane through p with normal n (Q14) turns its back to the eye.
-    bool faces_away(const int32_t p[3], const int16_t n[3]) const;
+    // n . (eye - p) for a normal n (Q14) at the mesh point p, in shell coordinates: > 0 where
+    // the surface looks at the eye, < 0 where it turns away (parallel: n . the way to the eye).
+    int64_t facing(const int32_t p[3], const int16_t n[3]) const {
+        if (ortho) return int64_t(n[0]) * toward[0] + int64_t(n[1]) * toward[1] + int64_t(n[2]) * toward[2];
+        return n[0] * (eye[0] - p[0]) + n[1] * (eye[1] - p[1]) + n[2] * (eye[2] - p[2]);
+    }
+    bool faces_away(const int32_t p[3], const int16_t n[3]) const { return facing(p, n) < 0; }
+    // Whether a closed solid's inside may show: a section is on and the eye is on the side it
+    // cuts away (the eye at view (0, 0, 0); parallel: far toward -d). From the kept side, a ray
+    // reaches the cut only through the solid's own front faces, which hide every back face.
+    bool inside_shows() const { return cut.on && (ortho ? cut.nd < 0 : cut.c > 0); }
     // The Gouraud shade (palette index) of a unit normal (Q14); open sheets are lit both sides.
     uint8_t shade(const int16_t n[3]) const {
         int32_t lit = (int32_t(n[0]) * light[0] + int32_t(n[1]) * light[1] + int32_t(n[2]) * light[2]) >> 14;

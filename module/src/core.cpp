@@ -411,7 +411,8 @@ void Core::act(Action a) {
         presenter_.invalidate();
         return;
     case Action::Projection: {
-        module::View v = camera_.view();
+        // The view under way if a glide is (a standard view asked for just before stays asked for).
+        module::View v = glide_.phase != Glide::Phase::None ? glide_.target.view() : camera_.view();
         v.ortho = !v.ortho;
         glide_to(v); // framed again: a parallel view of the same zoom is not the same size
         return;

@@ -3,6 +3,8 @@
 #include "render/fixed.h"
 #include "render/text.h"
 
+#include <algorithm>
+
 namespace facet::module {
 namespace {
 
@@ -166,25 +168,27 @@ uint32_t Painter::face(uint32_t f, const Transform& t, Rows rows, uint32_t from,
     spent = 0;
     if (mode_ == DisplayMode::Wireframe) return F.triangle_count; // edges only
     const bool white = mode_ == DisplayMode::HiddenLine; // faces mostly hide what is behind them
+    const bool outlines = white && !F.planar;            // a curved face's silhouette: no B-rep edge draws it
     if (from == 0) { // the face's vertices, once
         if (F.state != FaceState::Done || !t.visible(F.centre, F.radius, rows)) return F.triangle_count;
         if (t.cut.on && cut_away(t, F)) return F.triangle_count;
-        // (With a section, the back of a plane may show through the cut.)
-        if (F.planar && t.closed && !t.cut.on && F.vertex_count && t.faces_away(verts[0].p, verts[0].n)) return F.triangle_count;
+        // (With the eye on the side a section cuts away, the back of a plane may show through the cut.)
+        if (F.planar && t.closed && !t.inside_shows() && F.vertex_count && t.faces_away(verts[0].p, verts[0].n)) return F.triangle_count;
         for (uint32_t v = 0; v < F.vertex_count; ++v) {
             t.project(verts[v].p, P[v]);
             if (t.cut.on && t.cut.side(P[v].x, P[v].y, P[v].d) > 0) P[v].out |= kOutCut;
             // Hidden line: paper faces, lit just enough (200-255) that curved outlines (no B-rep
             // edge: a cylinder's silhouette) still read against each other.
             P[v].s.shade = white ? uint8_t(200 + ((t.shade(verts[v].n) * 55) >> 8)) : t.shade(verts[v].n);
+            if (outlines) P[v].front = t.facing(verts[v].p, verts[v].n) > 0;
         }
-        spent = 1 + F.vertex_count / 4;
+        spent = 1 + F.vertex_count / (outlines ? 2 : 4);
     }
     const bool lit = (hl_[0].face == f && hl_[0].instance == instance_) || (hl_[1].face == f && hl_[1].instance == instance_) ||
                      part_ == instance_;
     const render::Palette& pal = palette(lit ? (hl_[1].face == f && hl_[1].instance == instance_ ? kPicked2 : kPicked) : white ? kPaper : F.rgb);
-    const render::Cull cull = t.closed && !t.cut.on ? render::Cull::Back : render::Cull::None;
-    const render::Palette* cap = t.closed && t.cut.on ? &palette(kCap) : nullptr;
+    const render::Cull cull = t.closed && !t.inside_shows() ? render::Cull::Back : render::Cull::None;
+    const render::Palette* cap = t.closed && t.inside_shows() ? &palette(kCap) : nullptr;
     raster_.set_stipple(mode_ == DisplayMode::SeeThrough && instance_ != focus_);
     const uint16_t* id = scene_.indices() + F.first_index + 3 * from;
     const uint32_t pixels = raster_.stats.pixels;
@@ -195,8 +199,55 @@ uint32_t Painter::face(uint32_t f, const Transform& t, Rows rows, uint32_t from,
         else triangle(t, P[id[0]], P[id[1]], P[id[2]], pal, cull, cap);
     }
     raster_.set_stipple(false);
+    if (outlines && k == F.triangle_count) spent += silhouette(F, t);
     spent += (raster_.stats.pixels - pixels) / 64;
     return k;
+}
+
+// Where a triangle's vertex normals turn from the eye to away from it, the surface's outline
+// crosses it: from the vertex alone on its side, the points of its two edges where n . (eye -
+// p) is zero (interpolated on the screen, as the triangle's depth is), joined by an outline:
+// a line depth-tested one pixel beyond it. Triangles cut away or off the view are left out.
+uint32_t Painter::silhouette(const FaceInfo& F, const Transform& t) {
+    const Projected* P = mem_.projected.data();
+    const DrawVertex* verts = scene_.vertices() + F.first_vertex;
+    const uint16_t* id = scene_.indices() + F.first_index;
+    uint32_t crossed = 0;
+    for (uint32_t k = 0; k < F.triangle_count; ++k, id += 3) {
+        const uint8_t fronts = P[id[0]].front + P[id[1]].front + P[id[2]].front;
+        if (fronts == 0 || fronts == 3 || (P[id[0]].out | P[id[1]].out | P[id[2]].out)) continue;
+        // The lone vertex first: the one whose side the other two do not share.
+        const int lone = P[id[0]].front != P[id[1]].front ? (P[id[0]].front != P[id[2]].front ? 0 : 1) : 2;
+        const uint16_t i0 = id[lone], i1 = id[(lone + 1) % 3], i2 = id[(lone + 2) % 3];
+        const uint16_t v[3] = {i0, i1, i2};
+        int64_t g[3];
+        for (int j = 0; j < 3; ++j) g[j] = t.facing(verts[v[j]].p, verts[v[j]].n);
+        render::ScreenVertex end[2];
+        for (int j = 0; j < 2; ++j) {
+            // u = g0 / (g0 - g), in [0, 1] as the signs differ: both to 16 bits, one reciprocal.
+            uint64_t num = uint64_t(g[0] < 0 ? -g[0] : g[0]), den = num + uint64_t(g[j + 1] < 0 ? -g[j + 1] : g[j + 1]);
+            const int drop = 48 - __builtin_clzll(den); // den >> drop < 2^16
+            if (drop > 0) num >>= drop, den >>= drop;
+            const int32_t u = den ? render::divide(int64_t(num) << 16, render::reciprocal(uint32_t(den))) : 0; // Q16
+            const Projected &a = P[i0], &b = P[v[j + 1]];
+            end[j].x = a.s.x + int32_t((int64_t(b.s.x - a.s.x) * u) >> 16);
+            end[j].y = a.s.y + int32_t((int64_t(b.s.y - a.s.y) * u) >> 16);
+            end[j].z = uint16_t(a.s.z + int32_t((int64_t(int32_t(b.s.z) - a.s.z) * u) >> 16));
+            end[j].shade = 0;
+        }
+        // Beyond the outline: where the surface's normal points there (it lies across the view
+        // there, outward), along the axis across the line (x for a steep one, y for a flat one).
+        const int32_t n[3] = {verts[i0].n[0] + verts[i1].n[0] + verts[i2].n[0], verts[i0].n[1] + verts[i1].n[1] + verts[i2].n[1],
+                              verts[i0].n[2] + verts[i1].n[2] + verts[i2].n[2]};
+        int64_t across[3];
+        t.rotate(n, across); // view x right, y up
+        const int32_t lx = end[1].x - end[0].x, ly = end[1].y - end[0].y;
+        const bool steep = (ly < 0 ? -ly : ly) > (lx < 0 ? -lx : lx);
+        const uint8_t beyond = steep ? (across[0] >= 0 ? 0 : 2) : (across[1] <= 0 ? 1 : 3);
+        refused_ += !ok(raster_.outline(end[0], end[1], kEdgeColour, kLineBias, beyond));
+        ++crossed;
+    }
+    return F.triangle_count / 16 + crossed;
 }
 
 uint32_t Painter::face_edges(uint32_t f, const Transform& t, Rows rows, bool once) {
@@ -205,7 +256,7 @@ uint32_t Painter::face_edges(uint32_t f, const Transform& t, Rows rows, bool onc
     if (mode_ == DisplayMode::Shaded && info.state == FaceState::Done) return 0; // a face not in yet shows its edges
     if (!t.visible(info.centre, info.radius, rows)) return 0;
     if (t.cut.on && cut_away(t, info)) return 0;
-    if (mode_ != DisplayMode::Wireframe && info.planar && t.closed && !t.cut.on && info.vertex_count) {
+    if (mode_ != DisplayMode::Wireframe && info.planar && t.closed && !t.inside_shows() && info.vertex_count) {
         const DrawVertex& v = scene_.vertices()[info.first_vertex];
         if (t.faces_away(v.p, v.n)) return 0;
     }

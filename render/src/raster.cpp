@@ -554,37 +554,64 @@ void Rasterizer::shade(int32_t y, int32_t lo, int32_t hi, const Interp* at, bool
     ++stats.spans;
 }
 
+// The steps of a one-pixel line from a to b (pixel centres nearest the ends, a DDA along the
+// longer axis): 16.16 positions and depth pulled `bias` toward the eye, the three slopes over
+// one reciprocal of the length.
+struct LineSteps {
+    int32_t x, y, z, sx = 0, sy = 0, sz = 0, n;
+    LineSteps(const ScreenVertex& a, const ScreenVertex& b, uint16_t bias) {
+        const int32_t x0 = a.x >> 4, y0 = a.y >> 4, dx = (b.x >> 4) - x0, dy = (b.y >> 4) - y0;
+        n = (dx < 0 ? -dx : dx) > (dy < 0 ? -dy : dy) ? (dx < 0 ? -dx : dx) : (dy < 0 ? -dy : dy);
+        x = (x0 << 16) + 0x8000, y = (y0 << 16) + 0x8000, z = int32_t(a.z) << 8;
+        if (n) {
+            const Reciprocal r = reciprocal(uint32_t(n));
+            sx = divide(int64_t(dx) << 16, r);
+            sy = divide(int64_t(dy) << 16, r);
+            sz = divide((int64_t(b.z) - a.z) << 8, r);
+        }
+        z -= int32_t(bias) << 8;
+    }
+};
+
 Status Rasterizer::line(const ScreenVertex& a, const ScreenVertex& b, hal::Rgb565 colour, uint16_t bias) {
     if (!in_guard(a) || !in_guard(b)) return Status::OutOfRange;
-    const int32_t x0 = a.x >> 4, y0 = a.y >> 4, x1 = b.x >> 4, y1 = b.y >> 4;
-    const int32_t dx = x1 - x0, dy = y1 - y0;
-    const int32_t n = (dx < 0 ? -dx : dx) > (dy < 0 ? -dy : dy) ? (dx < 0 ? -dx : dx) : (dy < 0 ? -dy : dy);
-    // 16.16 positions and depth, stepped once per pixel along the longer axis; the three slopes
-    // share one reciprocal of the length.
-    int32_t x = (x0 << 16) + 0x8000, y = (y0 << 16) + 0x8000;
-    int32_t z = int32_t(a.z) << 8;
-    int32_t sx = 0, sy = 0, sz = 0;
-    if (n) {
-        const Reciprocal r = reciprocal(uint32_t(n));
-        sx = divide(int64_t(dx) << 16, r);
-        sy = divide(int64_t(dy) << 16, r);
-        sz = divide((int64_t(b.z) - a.z) << 8, r);
-    }
-    z -= int32_t(bias) << 8; // pulled toward the eye
+    LineSteps l(a, b, bias);
     uint16_t* const depth = t_.depth;
     hal::Rgb565* const fb = t_.pixels;
     const uint32_t width = t_.width, band0 = t_.y0, rows = t_.rows;
-    for (int32_t i = 0; i <= n; ++i, x += sx, y += sy, z += sz) {
-        const int32_t px = x >> 16, py = y >> 16;
+    for (int32_t i = 0; i <= l.n; ++i, l.x += l.sx, l.y += l.sy, l.z += l.sz) {
+        const int32_t px = l.x >> 16, py = l.y >> 16;
         // Off the screen or the band (negatives too).
         if (uint32_t(px) >= width || uint32_t(py) - band0 >= rows) continue;
-        const int32_t zv = z < 0 ? 0 : z >> 8;
+        const int32_t zv = l.z < 0 ? 0 : l.z >> 8;
         const size_t at = size_t(uint32_t(py) - band0) * width + uint32_t(px);
         if (zv >= depth[at]) continue;
         depth[at] = uint16_t(zv);
         fb[at] = colour;
     }
-    stats.pixels += uint32_t(n + 1);
+    stats.pixels += uint32_t(l.n + 1);
+    return Status::Ok;
+}
+
+Status Rasterizer::outline(const ScreenVertex& a, const ScreenVertex& b, hal::Rgb565 colour, uint16_t bias, uint8_t beyond) {
+    if (!in_guard(a) || !in_guard(b)) return Status::OutOfRange;
+    LineSteps l(a, b, bias);
+    uint16_t* const depth = t_.depth;
+    hal::Rgb565* const fb = t_.pixels;
+    const uint32_t width = t_.width, band0 = t_.y0, rows = t_.rows;
+    const int32_t ox = beyond == 0 ? 1 : beyond == 2 ? -1 : 0, oy = beyond == 1 ? 1 : beyond == 3 ? -1 : 0;
+    for (int32_t i = 0; i <= l.n; ++i, l.x += l.sx, l.y += l.sy, l.z += l.sz) {
+        const int32_t px = l.x >> 16, py = l.y >> 16;
+        if (uint32_t(px) >= width || uint32_t(py) - band0 >= rows) continue;
+        const int32_t zv = l.z < 0 ? 0 : l.z >> 8;
+        const size_t at = size_t(uint32_t(py) - band0) * width + uint32_t(px);
+        const bool near_inside = uint32_t(px + ox) < width && uint32_t(py + oy) - band0 < rows;
+        const size_t test = near_inside ? size_t(uint32_t(py + oy) - band0) * width + uint32_t(px + ox) : at;
+        if (zv >= depth[test]) continue;
+        if (zv < depth[at]) depth[at] = uint16_t(zv);
+        fb[at] = colour;
+    }
+    stats.pixels += uint32_t(l.n + 1);
     return Status::Ok;
 }
 

@@ -953,6 +953,20 @@ TEST(Viewer, ASectionCutsTheModelAndShowsTheSolidsInside) {
     const std::vector<Rgb565> iso = app.screen();
     const long caps = std::count(iso.begin(), iso.end(), cap);
     EXPECT_GT(caps, 500) << "the inside of the cut block";
+    // The other half kept (the plane x = 50 cutting away x < 50): the eye (isometric, at +x) is
+    // on the kept side, where the block's own front faces hide all its back faces: they are
+    // skipped as without a section (a clipped face: a triangle or two more).
+    app.v->set_section({false, {1, 0, 0}, 0});
+    app.run();
+    const uint32_t front_only = app.last(Event::Kind::FrameDone)->frame.triangles;
+    app.v->set_section({true, {-1, 0, 0}, -50});
+    app.run();
+    const std::vector<Rgb565> kept = app.screen();
+    EXPECT_EQ(std::count(kept.begin(), kept.end(), cap), 0) << "no inside shows from the kept side";
+    EXPECT_LE(app.last(Event::Kind::FrameDone)->frame.triangles, front_only + 4);
+    app.v->set_section({true, {1, 0, 0}, 50});
+    app.run();
+    EXPECT_EQ(app.screen(), iso);
     // The slider: a finger on it at the top puts the plane at the model's far end, dragged to
     // the bottom at its near end.
     const module::Overlay::Rect s = core.overlay().slider();
@@ -973,6 +987,95 @@ TEST(Viewer, ASectionCutsTheModelAndShowsTheSolidsInside) {
     app.v->key('7');
     app.run();
     EXPECT_EQ(app.screen(), whole);
+}
+
+namespace {
+
+// An open tube: one cylinder face (radius 50 mm, 100 mm tall about z), its two circles and its
+// seam; no B-rep edge runs along its sides.
+Bytes tube() {
+    PackWriter w;
+    constexpr float kTwoPi = 6.28318530718f;
+    const uint32_t cylinder = w.add_surface(pack::SurfaceType::Cylinder, {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 50});
+    const uint32_t low = w.add_curve(pack::CurveType::Circle, 3, {0, 0, 0, 1, 0, 0, 0, 1, 0, 50});
+    const uint32_t high = w.add_curve(pack::CurveType::Circle, 3, {0, 0, 100, 1, 0, 0, 0, 1, 0, 50});
+    const uint32_t v0 = w.add_vertex(50, 0, 0), v1 = w.add_vertex(50, 0, 100);
+    const uint32_t e_low = w.add_edge({low, 0, kTwoPi, v0, v0, 1e-7f, 0});
+    const uint32_t e_high = w.add_edge({high, 0, kTwoPi, v1, v1, 1e-7f, 0});
+    const uint32_t e_seam = w.add_edge({pack::kStraight, 0, 100, v0, v1, 1e-7f, 0});
+    // Counter-clockwise in (u, v): along the bottom, up the seam at u = 2 pi, back along the
+    // top, down the seam at u = 0.
+    const uint32_t first = w.coedge_count();
+    w.add_coedge(pack::Coedge::make(e_low, false, pack::Seam::None));
+    w.add_coedge(pack::Coedge::make(e_seam, false, pack::Seam::UHigh));
+    w.add_coedge(pack::Coedge::make(e_high, true, pack::Seam::None));
+    w.add_coedge(pack::Coedge::make(e_seam, true, pack::Seam::ULow));
+    const uint32_t loop = w.add_loop({first, 4});
+    const uint32_t face = w.add_face({cylinder, loop, 1, pack::kNoIndex, pack::kNoIndex, 0, {0, 0, 0}, {0, 0}, {kTwoPi, 100}});
+    w.add_instance({w.add_shell({face, 1, pack::kNoIndex, 0}), {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0}});
+    w.set_model_name("tube");
+    return w.finish();
+}
+
+} // namespace
+
+// Hidden line draws a curved face's outline, which no B-rep edge gives: the tube seen from the
+// front in a parallel view has its two sides as lines, at its leftmost and rightmost points,
+// all the way from its bottom to its top; shaded with edges, those columns have none.
+TEST(Viewer, HiddenLineDrawsTheOutlinesOfCurvedFaces) {
+    App app;
+    app.w = 320, app.h = 240, app.lines = 240;
+    ASSERT_TRUE(app.create().ok());
+    ASSERT_TRUE(app.load(tube()).ok());
+    app.run();
+    app.v->key('1'); // the front: looking along +y, z up
+    app.v->key('5'); // parallel (during the glide: the front view stays its end)
+    app.run();
+    const Core& core = *static_cast<const Core*>(app.v);
+    ASSERT_TRUE(core.camera().view().ortho);
+    const module::FaceInfo& F = core.scene().face(0);
+    ASSERT_GT(F.triangle_count, 20u);
+    const module::Transform t = core.camera().transform(core.scene(), 0, app.w, app.h);
+    int l = INT32_MAX, top = INT32_MAX, r = INT32_MIN, b = INT32_MIN;
+    for (uint32_t k = 0; k < F.vertex_count; ++k) {
+        module::Projected p;
+        t.project(core.scene().vertices()[F.first_vertex + k].p, p);
+        ASSERT_EQ(p.out, 0);
+        l = std::min(l, p.s.x / 16), r = std::max(r, p.s.x / 16), top = std::min(top, p.s.y / 16), b = std::max(b, p.s.y / 16);
+    }
+    ASSERT_GT(r - l, 60);
+    ASSERT_GT(b - top, 60);
+    const Rgb565 ink = hal::rgb565(28, 30, 38); // painter.cpp's kEdgeColour
+    // Rows strictly between the circles (seen edge-on: the top and bottom lines): how many have
+    // an outline pixel within two pixels of each side.
+    auto sides = [&](const std::vector<Rgb565>& px) {
+        int left = 0, right = 0;
+        for (int y = top + 3; y <= b - 3; ++y) {
+            bool at_l = false, at_r = false;
+            for (int dx = -2; dx <= 2; ++dx) {
+                at_l |= px[size_t(y) * app.w + size_t(l + dx)] == ink;
+                at_r |= px[size_t(y) * app.w + size_t(r + dx)] == ink;
+            }
+            left += at_l, right += at_r;
+        }
+        return std::array<int, 2>{left, right};
+    };
+    const int rows = b - top - 5;
+    const auto shaded = sides(app.screen());
+    EXPECT_EQ(shaded[0], 0) << "shaded with edges: no outline";
+    EXPECT_EQ(shaded[1], 0);
+    app.v->key('m'), app.v->key('m'), app.v->key('m');
+    app.run();
+    ASSERT_EQ(app.v->display_mode(), DisplayMode::HiddenLine);
+    const std::vector<Rgb565> hidden = app.screen();
+    const auto outlined = sides(hidden);
+    EXPECT_EQ(outlined[0], rows) << "the left side, every row";
+    EXPECT_EQ(outlined[1], rows) << "the right side, every row";
+    // And nowhere else between them: the middle columns hold no ink below the top circle.
+    long inside = 0;
+    for (int y = top + 3; y <= b - 3; ++y)
+        for (int x = l + 4; x <= r - 4; ++x) inside += hidden[size_t(y) * app.w + size_t(x)] == ink;
+    EXPECT_EQ(inside, 0);
 }
 
 // See-through: the chosen part solid, the others screen-door (every other pixel shows what is

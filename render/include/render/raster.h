@@ -84,6 +84,13 @@ public:
     // edges over faces); it writes its depth, so faces drawn later behind it keep it.
     // OutOfRange (nothing drawn) if an end is outside the guard band.
     Status line(const ScreenVertex& a, const ScreenVertex& b, hal::Rgb565 colour, uint16_t bias);
+    // A surface's outline (where it turns from facing the eye to facing away): like line(), but
+    // each pixel is depth-tested against its neighbour one pixel beyond the outline (`beyond`:
+    // the side away from the surface, 0 right, 1 down, 2 left, 3 up), not against itself: there
+    // the surface is edge-on, and the pixel itself is mostly covered by the surface's own nearer
+    // part. Only a pixel whose neighbour is outside the band (or the screen) is tested against
+    // itself. It writes its depth where it is nearer.
+    Status outline(const ScreenVertex& a, const ScreenVertex& b, hal::Rgb565 colour, uint16_t bias, uint8_t beyond);
 
     RasterStats stats;
 
