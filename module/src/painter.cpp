@@ -88,6 +88,8 @@ void Painter::triangle(const Transform& t, const Projected& a, const Projected& 
     if (!(a.out | b.out | c.out)) {
         if (cap && int64_t(b.s.x - a.s.x) * (c.s.y - a.s.y) - int64_t(b.s.y - a.s.y) * (c.s.x - a.s.x) > 0) {
             // A back face seen through the cut: the solid's inside, flat in the cap colour.
+            // Where the front faces drawn before it hide all of it, it is left out.
+            if (raster_.hidden(a.s, b.s, c.s)) return;
             render::ScreenVertex s[3] = {a.s, b.s, c.s};
             for (render::ScreenVertex& v : s) v.shade = kCapShade;
             refused_ += !ok(raster_.draw(s[0], s[1], s[2], *cap, render::Cull::None));
@@ -168,12 +170,13 @@ uint32_t Painter::face(uint32_t f, const Transform& t, Rows rows, uint32_t from,
     spent = 0;
     if (mode_ == DisplayMode::Wireframe) return F.triangle_count; // edges only
     const bool white = mode_ == DisplayMode::HiddenLine; // faces mostly hide what is behind them
+    const bool inside = t.closed && t.inside_shows();    // its back faces may show through a section
     const bool outlines = white && !F.planar;            // a curved face's silhouette: no B-rep edge draws it
     if (from == 0) { // the face's vertices, once
         if (F.state != FaceState::Done || !t.visible(F.centre, F.radius, rows)) return F.triangle_count;
         if (t.cut.on && cut_away(t, F)) return F.triangle_count;
         // (With the eye on the side a section cuts away, the back of a plane may show through the cut.)
-        if (F.planar && t.closed && !t.inside_shows() && F.vertex_count && t.faces_away(verts[0].p, verts[0].n)) return F.triangle_count;
+        if (F.planar && t.closed && !inside && F.vertex_count && t.faces_away(verts[0].p, verts[0].n)) return F.triangle_count;
         for (uint32_t v = 0; v < F.vertex_count; ++v) {
             t.project(verts[v].p, P[v]);
             if (t.cut.on && t.cut.side(P[v].x, P[v].y, P[v].d) > 0) P[v].out |= kOutCut;
@@ -187,8 +190,8 @@ uint32_t Painter::face(uint32_t f, const Transform& t, Rows rows, uint32_t from,
     const bool lit = (hl_[0].face == f && hl_[0].instance == instance_) || (hl_[1].face == f && hl_[1].instance == instance_) ||
                      part_ == instance_;
     const render::Palette& pal = palette(lit ? (hl_[1].face == f && hl_[1].instance == instance_ ? kPicked2 : kPicked) : white ? kPaper : F.rgb);
-    const render::Cull cull = t.closed && !t.inside_shows() ? render::Cull::Back : render::Cull::None;
-    const render::Palette* cap = t.closed && t.inside_shows() ? &palette(kCap) : nullptr;
+    const render::Cull cull = t.closed && !inside ? render::Cull::Back : render::Cull::None;
+    const render::Palette* cap = inside ? &palette(kCap) : nullptr;
     raster_.set_stipple(mode_ == DisplayMode::SeeThrough && instance_ != focus_);
     const uint16_t* id = scene_.indices() + F.first_index + 3 * from;
     const uint32_t pixels = raster_.stats.pixels;

@@ -315,6 +315,38 @@ Status Rasterizer::draw(const ScreenVertex& a, const ScreenVertex& b, const Scre
     return area2 < 0 ? scan(a, c, b, -area2) : scan(a, b, c, area2);
 }
 
+bool Rasterizer::hidden(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) const {
+    constexpr int32_t kMargin = 4; // depth units an interpolated value may fall below its corners'
+    const int32_t z = int32_t(a.z < b.z ? (a.z < c.z ? a.z : c.z) : (b.z < c.z ? b.z : c.z)) - kMargin;
+    if (z <= 0 || !in_guard(a) || !in_guard(b) || !in_guard(c)) return false;
+    const int32_t ymin = a.y < b.y ? (a.y < c.y ? a.y : c.y) : (b.y < c.y ? b.y : c.y);
+    const int32_t ymax = a.y > b.y ? (a.y > c.y ? a.y : c.y) : (b.y > c.y ? b.y : c.y);
+    const int32_t xmin = a.x < b.x ? (a.x < c.x ? a.x : c.x) : (b.x < c.x ? b.x : c.x);
+    const int32_t xmax = a.x > b.x ? (a.x > c.x ? a.x : c.x) : (b.x > c.x ? b.x : c.x);
+    // The rows and columns scan() could draw (centres 16i+8 inside the box), in the band.
+    int32_t row0 = (ymin + 7) >> 4, row1 = (ymax - 8) >> 4, col0 = (xmin + 7) >> 4, col1 = (xmax - 8) >> 4;
+    if (row0 < int32_t(t_.y0)) row0 = t_.y0;
+    if (row1 > int32_t(t_.y0 + t_.rows) - 1) row1 = int32_t(t_.y0 + t_.rows) - 1;
+    if (col0 < 0) col0 = 0;
+    if (col1 > int32_t(t_.width) - 1) col1 = int32_t(t_.width) - 1;
+    if (row0 > row1 || col0 > col1) return true;
+    // Two entries a load (the depth rows are 4-byte aligned when the width is even; else one
+    // at a time): an entry farther than z shows the triangle would draw.
+    const uint32_t zz = uint32_t(z);
+    for (int32_t y = row0; y <= row1; ++y) {
+        const uint16_t* d = t_.depth + size_t(y - t_.y0) * t_.width;
+        int32_t x = col0;
+        if ((reinterpret_cast<uintptr_t>(d + x) & 2) && d[x++] > zz) return false;
+        using Word = uint32_t __attribute__((may_alias, aligned(4)));
+        for (; x < col1; x += 2) {
+            const uint32_t w = *reinterpret_cast<const Word*>(d + x);
+            if ((w & 0xFFFFu) > zz || (w >> 16) > zz) return false;
+        }
+        if (x == col1 && d[x] > zz) return false;
+    }
+    return true;
+}
+
 Status Rasterizer::scan(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2,
                         int64_t area2) {
     int32_t ymin = v0.y, ymax = v0.y, xmin = v0.x, xmax = v0.x;

@@ -294,3 +294,49 @@ TEST(Raster, ATriangleReachingTheGuardBandIsExactWhereOnlyACornerShows) {
         }
     }
 }
+
+// hidden() is exact where it says so: a triangle it calls hidden changes no pixel and no depth
+// when drawn, in whole screens and in bands; and it does not call every triangle hidden (the
+// back faces of a cut solid are skipped with it, so a wrong "hidden" would lose pixels).
+TEST(Raster, ATriangleCalledHiddenDrawsNothing) {
+    constexpr uint16_t W = 96, H = 80;
+    render::Palette pal;
+    render::make_palette(pal, 200, 150, 90);
+    std::mt19937 rng(11);
+    std::uniform_int_distribution<int> coord(-200, 16 * W + 200), z(0, 65535), small(-300, 300), near(0, 20000), shade(0, 255);
+    int said_hidden = 0, said_shown = 0;
+    for (uint16_t band : {H, uint16_t(17)}) {
+        std::vector<hal::Rgb565> px(size_t(W) * band);
+        std::vector<uint16_t> depth(size_t(W) * band);
+        for (uint16_t y0 = 0; y0 < H; y0 += band) {
+            const uint16_t rows = uint16_t(std::min<int>(band, H - y0));
+            Rasterizer r(render::Target{px.data(), depth.data(), W, H, y0, rows});
+            r.clear_depth();
+            std::mt19937 scene(5); // the same occluders in every band: near, large
+            std::uniform_int_distribution<int> big(-400, 16 * W + 400);
+            for (int i = 0; i < 12; ++i) {
+                ScreenVertex t[3];
+                for (ScreenVertex& p : t) p = {big(scene), big(scene) * H / W, uint16_t(near(scene)), 128};
+                ASSERT_EQ(r.draw(t[0], t[1], t[2], pal, render::Cull::None), Status::Ok);
+            }
+            for (int i = 0; i < 300; ++i) {
+                ScreenVertex t[3];
+                t[0] = {coord(rng), coord(rng) * H / W, uint16_t(z(rng)), uint8_t(shade(rng))};
+                for (int k = 1; k < 3; ++k) t[k] = {t[0].x + small(rng), t[0].y + small(rng), uint16_t(z(rng)), uint8_t(shade(rng))};
+                const std::vector<hal::Rgb565> px0 = px;
+                const std::vector<uint16_t> depth0 = depth;
+                const bool hidden = r.hidden(t[0], t[1], t[2]);
+                ASSERT_EQ(r.draw(t[0], t[1], t[2], pal, render::Cull::None), Status::Ok);
+                if (hidden) {
+                    ASSERT_EQ(px, px0) << "triangle " << i << " was called hidden";
+                    ASSERT_EQ(depth, depth0);
+                    ++said_hidden;
+                } else {
+                    ++said_shown;
+                }
+            }
+        }
+    }
+    EXPECT_GT(said_hidden, 50);
+    EXPECT_GT(said_shown, 50);
+}

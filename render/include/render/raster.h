@@ -78,6 +78,12 @@ public:
     Status draw(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, const Palette& palette,
                 Cull cull = Cull::Back);
 
+    // Whether everything the triangle could cover in the band is already nearer than all of it
+    // (its nearest corner, less a margin for rounding): drawing it would change no pixel. It
+    // reads the depth of its box until one entry is farther: for a face likely hidden (a back
+    // face seen through a section), a fraction of what drawing it costs.
+    bool hidden(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) const;
+
     // Draws a one-pixel line from a to b (pixel centres nearest the ends, every pixel on the
     // way: a DDA along the longer axis) in one colour. Depth-tested like triangles, but pulled
     // `bias` units toward the eye first, so an edge of a surface shows on that surface (CAD
