@@ -13,28 +13,28 @@ constexpr float kTwoPi = 6.28318530717958647692f;
 Vec3 v3(const float* p) { return {p[0], p[1], p[2]}; }
 
 // A B-spline curve of dimension dim at t: position and derivative (rational by the quotient rule).
+// der null: the position alone (the same value: the same sums, without the derivative's).
 void bspline_curve(const float* prm, int dim, float t, float* pos, float* der) {
     const detail::BSplineCurveView C(prm, dim);
     const int p = C.p;
     const bool rational = C.rational;
     const float *poles = C.poles, *weights = C.weights;
     float N[kMaxDegree + 1], dN[kMaxDegree + 1];
-    const int s = basis(C.knots, C.n, p, t, C.periodic, N, dN);
+    const int s = basis(C.knots, C.n, p, t, C.periodic, N, der ? dN : nullptr);
     float A[3] = {0, 0, 0}, dA[3] = {0, 0, 0}, W = 0, dW = 0;
     for (int j = 0; j <= p; ++j) {
         const int i = s - p + j;
         const float w = rational ? weights[i] : 1.0f;
-        for (int c = 0; c < dim; ++c) {
-            A[c] += N[j] * w * poles[i * dim + c];
-            dA[c] += dN[j] * w * poles[i * dim + c];
-        }
+        for (int c = 0; c < dim; ++c) A[c] += N[j] * w * poles[i * dim + c];
         W += N[j] * w;
+        if (!der) continue;
+        for (int c = 0; c < dim; ++c) dA[c] += dN[j] * w * poles[i * dim + c];
         dW += dN[j] * w;
     }
     if (W == 0) W = 1;
     for (int c = 0; c < dim; ++c) {
         pos[c] = A[c] / W;
-        der[c] = (dA[c] - pos[c] * dW) / W;
+        if (der) der[c] = (dA[c] - pos[c] * dW) / W;
     }
 }
 
@@ -71,6 +71,13 @@ Curve3Point eval_curve3(const Pack& pack, const Curve& c, float t) {
     }
     }
     return {};
+}
+
+Vec3 eval_curve3_point(const Pack& pack, const Curve& c, float t) {
+    if (CurveType(c.type) != CurveType::BSpline) return eval_curve3(pack, c, t).p;
+    float p[3];
+    bspline_curve(pack.floats().data() + c.params, 3, t, p, nullptr);
+    return v3(p);
 }
 
 Curve2Point eval_curve2(const Pack& pack, const Curve& c, float t) {

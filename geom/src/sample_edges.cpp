@@ -197,7 +197,7 @@ Result EdgeSampler::run(uint32_t units) {
         float sag2 = 0;
         out.work += 3 * eval_;
         for (int q = 1; q <= 3; ++q) {
-            const Vec3 off = eval_curve3(pack, C, tl_ + (right.t - tl_) * 0.25f * float(q)).p - left_.p;
+            const Vec3 off = eval_curve3_point(pack, C, tl_ + (right.t - tl_) * 0.25f * float(q)) - left_.p;
             const float along = len2 > 0 ? dot(off, chord) / len2 : 0;
             sag2 = std::max(sag2, length2(off - chord * along));
         }

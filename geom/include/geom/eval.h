@@ -25,6 +25,9 @@ SurfacePoint eval_surface(const Pack& pack, const pack::Surface& s, float u, flo
 // The position alone (cheaper on B-splines: no derivatives).
 Vec3 eval_surface_point(const Pack& pack, const pack::Surface& s, float u, float v);
 Curve3Point eval_curve3(const Pack& pack, const pack::Curve& c, float t);
+// The position alone (the same value as eval_curve3's; on B-splines without the derivative's
+// divisions and sums: about a fifth less on a high-degree one, in soft float).
+Vec3 eval_curve3_point(const Pack& pack, const pack::Curve& c, float t);
 Curve2Point eval_curve2(const Pack& pack, const pack::Curve& c, float t);
 
 // (u,v) of a point on an elementary surface (plane, cylinder, cone, sphere, torus), choosing
