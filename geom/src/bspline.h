@@ -3,7 +3,9 @@
 // parameters by name.
 #include "geom/eval.h"
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <type_traits>
 
 namespace facet::geom::detail {
@@ -36,6 +38,13 @@ inline int find_span(const float* knots, int n, int p, float& t, bool periodic) 
     return s;
 }
 
+// x != 0 (NaN too); a float by its bits: a soft-float compare is about 30 instructions.
+template <typename Real>
+inline bool nonzero(Real x) {
+    if constexpr (std::is_same_v<Real, float>) return (std::bit_cast<uint32_t>(x) << 1) != 0;
+    else return x != 0;
+}
+
 // Non-zero B-spline basis functions and their first derivatives at t (The NURBS Book A2.2/A2.3).
 // knots: expanded; n: poles; p: degree. Returns the span index s: functions N[s-p .. s].
 // A periodic B-spline (stored over one period) takes t modulo the period; others clamp t.
@@ -53,7 +62,7 @@ inline int basis(const float* knots, int n, int p, float t_in, bool periodic, Re
         Real saved = 0;
         for (int r = 0; r < j; ++r) {
             ndu[j][r] = right[r + 1] + left[j - r];
-            const Real tmp = ndu[j][r] != 0 ? ndu[r][j - 1] / ndu[j][r] : 0;
+            const Real tmp = nonzero(ndu[j][r]) ? ndu[r][j - 1] / ndu[j][r] : 0;
             ndu[r][j] = saved + right[r + 1] * tmp;
             saved = left[j - r] * tmp;
         }
@@ -64,8 +73,8 @@ inline int basis(const float* knots, int n, int p, float t_in, bool periodic, Re
     // First derivatives: p * (N_{j,p-1}/(u_{j+p}-u_j) - N_{j+1,p-1}/(u_{j+p+1}-u_{j+1})).
     for (int r = 0; r <= p; ++r) {
         Real d = 0;
-        if (r >= 1 && ndu[p][r - 1] != 0) d += ndu[r - 1][p - 1] / ndu[p][r - 1];
-        if (r <= p - 1 && ndu[p][r] != 0) d -= ndu[r][p - 1] / ndu[p][r];
+        if (r >= 1 && nonzero(ndu[p][r - 1])) d += ndu[r - 1][p - 1] / ndu[p][r - 1];
+        if (r <= p - 1 && nonzero(ndu[p][r])) d -= ndu[r][p - 1] / ndu[p][r];
         dN[r] = p > 0 ? d * Real(p) : 0;
     }
     return s;
