@@ -187,7 +187,7 @@ void PatchCache::convert(int su, int sv, uint32_t* slot) {
             homogeneous((i0 + a) * nv_ + j0 + b, O, H);
             for (int k = 0; k <= pu_; ++k) {
                 const float m = Mu[a][k];
-                if (!(std::bit_cast<uint32_t>(m) << 1)) continue; // +-0 (by its bits: no float compare)
+                if (!detail::nonzero(m)) continue;
                 for (int d = 0; d < dims; ++d) T[d][k][b] += m * H[d];
             }
         }
@@ -203,8 +203,8 @@ void PatchCache::convert(int su, int sv, uint32_t* slot) {
         for (int k = 0; k <= pu_; ++k) {
             for (int l = 0; l <= pv_; ++l) {
                 float x = 0;
-                for (int b = 0; b <= pv_; ++b) // (a span's matrix is about a third zeros: +-0 by its bits, no float compare)
-                    if (std::bit_cast<uint32_t>(Mv[b][l]) << 1) x += T[d][k][b] * Mv[b][l];
+                for (int b = 0; b <= pv_; ++b) // (a span's matrix is about a third zeros)
+                    if (detail::nonzero(Mv[b][l])) x += T[d][k][b] * Mv[b][l];
                 C[k][l] = x;
                 sum += std::fabs(x);
             }

@@ -108,6 +108,9 @@ struct Transform {
     // cuts away (the eye at view (0, 0, 0); parallel: far toward -d). From the kept side, a ray
     // reaches the cut only through the solid's own front faces, which hide every back face.
     bool inside_shows() const { return cut.on && (ortho ? cut.nd < 0 : cut.c > 0); }
+    // Whether a closed solid's plane through p with normal n cannot show, faces nor edges: it
+    // turns its back to the eye and no inside shows. (One normal: the face is skipped whole.)
+    bool hides_plane(const int32_t p[3], const int16_t n[3]) const { return closed && !inside_shows() && faces_away(p, n); }
     // The Gouraud shade (palette index) of a unit normal (Q14); open sheets are lit both sides.
     uint8_t shade(const int16_t n[3]) const {
         int32_t lit = (int32_t(n[0]) * light[0] + int32_t(n[1]) * light[1] + int32_t(n[2]) * light[2]) >> 14;

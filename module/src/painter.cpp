@@ -175,8 +175,7 @@ uint32_t Painter::face(uint32_t f, const Transform& t, Rows rows, uint32_t from,
     if (from == 0) { // the face's vertices, once
         if (F.state != FaceState::Done || !t.visible(F.centre, F.radius, rows)) return F.triangle_count;
         if (t.cut.on && cut_away(t, F)) return F.triangle_count;
-        // (With the eye on the side a section cuts away, the back of a plane may show through the cut.)
-        if (F.planar && t.closed && !inside && F.vertex_count && t.faces_away(verts[0].p, verts[0].n)) return F.triangle_count;
+        if (F.planar && F.vertex_count && t.hides_plane(verts[0].p, verts[0].n)) return F.triangle_count;
         for (uint32_t v = 0; v < F.vertex_count; ++v) {
             t.project(verts[v].p, P[v]);
             if (t.cut.on && t.cut.side(P[v].x, P[v].y, P[v].d) > 0) P[v].out |= kOutCut;
@@ -221,8 +220,7 @@ uint32_t Painter::silhouette(const FaceInfo& F, const Transform& t) {
         if (fronts == 0 || fronts == 3 || (P[id[0]].out | P[id[1]].out | P[id[2]].out)) continue;
         // The lone vertex first: the one whose side the other two do not share.
         const int lone = P[id[0]].front != P[id[1]].front ? (P[id[0]].front != P[id[2]].front ? 0 : 1) : 2;
-        const uint16_t i0 = id[lone], i1 = id[(lone + 1) % 3], i2 = id[(lone + 2) % 3];
-        const uint16_t v[3] = {i0, i1, i2};
+        const uint16_t v[3] = {id[lone], id[(lone + 1) % 3], id[(lone + 2) % 3]};
         int64_t g[3];
         for (int j = 0; j < 3; ++j) g[j] = t.facing(verts[v[j]].p, verts[v[j]].n);
         render::ScreenVertex end[2];
@@ -232,7 +230,7 @@ uint32_t Painter::silhouette(const FaceInfo& F, const Transform& t) {
             const int drop = 48 - __builtin_clzll(den); // den >> drop < 2^16
             if (drop > 0) num >>= drop, den >>= drop;
             const int32_t u = den ? render::divide(int64_t(num) << 16, render::reciprocal(uint32_t(den))) : 0; // Q16
-            const Projected &a = P[i0], &b = P[v[j + 1]];
+            const Projected &a = P[v[0]], &b = P[v[j + 1]];
             end[j].x = a.s.x + int32_t((int64_t(b.s.x - a.s.x) * u) >> 16);
             end[j].y = a.s.y + int32_t((int64_t(b.s.y - a.s.y) * u) >> 16);
             end[j].z = uint16_t(a.s.z + int32_t((int64_t(int32_t(b.s.z) - a.s.z) * u) >> 16));
@@ -240,8 +238,8 @@ uint32_t Painter::silhouette(const FaceInfo& F, const Transform& t) {
         }
         // Beyond the outline: where the surface's normal points there (it lies across the view
         // there, outward), along the axis across the line (x for a steep one, y for a flat one).
-        const int32_t n[3] = {verts[i0].n[0] + verts[i1].n[0] + verts[i2].n[0], verts[i0].n[1] + verts[i1].n[1] + verts[i2].n[1],
-                              verts[i0].n[2] + verts[i1].n[2] + verts[i2].n[2]};
+        int32_t n[3];
+        for (int c = 0; c < 3; ++c) n[c] = verts[v[0]].n[c] + verts[v[1]].n[c] + verts[v[2]].n[c];
         int64_t across[3];
         t.rotate(n, across); // view x right, y up
         const int32_t lx = end[1].x - end[0].x, ly = end[1].y - end[0].y;
@@ -259,9 +257,9 @@ uint32_t Painter::face_edges(uint32_t f, const Transform& t, Rows rows, bool onc
     if (mode_ == DisplayMode::Shaded && info.state == FaceState::Done) return 0; // a face not in yet shows its edges
     if (!t.visible(info.centre, info.radius, rows)) return 0;
     if (t.cut.on && cut_away(t, info)) return 0;
-    if (mode_ != DisplayMode::Wireframe && info.planar && t.closed && !t.inside_shows() && info.vertex_count) {
+    if (mode_ != DisplayMode::Wireframe && info.planar && info.vertex_count) {
         const DrawVertex& v = scene_.vertices()[info.first_vertex];
-        if (t.faces_away(v.p, v.n)) return 0;
+        if (t.hides_plane(v.p, v.n)) return 0;
     }
     const geom::Pack& pack = scene_.pack();
     const pack::Face& F = pack.faces()[f];

@@ -92,7 +92,7 @@ Event Core::pick_at(int16_t x, int16_t y) {
             const module::FaceInfo& F = scene_.face(f);
             if (F.state != module::FaceState::Done || !t.visible(F.centre, F.radius, row)) continue;
             const module::DrawVertex* v = scene_.vertices() + F.first_vertex;
-            if (F.planar && t.closed && !t.inside_shows() && F.vertex_count && t.faces_away(v[0].p, v[0].n)) continue;
+            if (F.planar && F.vertex_count && t.hides_plane(v[0].p, v[0].n)) continue;
             module::Projected* P = projected_.data();
             for (uint32_t k = 0; k < F.vertex_count; ++k) t.project(v[k].p, P[k]);
             const uint16_t* id = scene_.indices() + F.first_index;

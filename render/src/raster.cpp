@@ -27,6 +27,77 @@ bool in_guard(const ScreenVertex& v) {
     return v.x >= -kGuardBand && v.x <= kGuardBand && v.y >= -kGuardBand && v.y <= kGuardBand;
 }
 
+// A triangle's box (28.4) and the rows and columns whose pixel centres (16i+8) can be inside
+// it, clipped to the screen: the way a triangle is scanned depends on the screen alone, so
+// every band gets the same values. Then band() clips the rows to the target's band. (The
+// vertices inside the guard band: everything fits 32 bits.)
+struct PixelBox {
+    int32_t xmin, ymin, xmax, ymax;
+    int32_t row0, row1, col0, col1;
+    PixelBox(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2, const Target& t) {
+        ymin = ymax = v0.y, xmin = xmax = v0.x;
+        for (const ScreenVertex* v : {&v1, &v2}) {
+            ymin = v->y < ymin ? v->y : ymin;
+            ymax = v->y > ymax ? v->y : ymax;
+            xmin = v->x < xmin ? v->x : xmin;
+            xmax = v->x > xmax ? v->x : xmax;
+        }
+        row0 = (ymin + 7) >> 4, row1 = (ymax - 8) >> 4;
+        col0 = (xmin + 7) >> 4, col1 = (xmax - 8) >> 4;
+        row0 = row0 < 0 ? 0 : row0;
+        row1 = row1 > int32_t(t.height) - 1 ? int32_t(t.height) - 1 : row1;
+        col0 = col0 < 0 ? 0 : col0;
+        col1 = col1 > int32_t(t.width) - 1 ? int32_t(t.width) - 1 : col1;
+    }
+    bool empty() const { return row0 > row1 || col0 > col1; }
+    void band(const Target& t) {
+        row0 = row0 < int32_t(t.y0) ? int32_t(t.y0) : row0;
+        row1 = row1 > int32_t(t.y0 + t.rows) - 1 ? int32_t(t.y0 + t.rows) - 1 : row1;
+    }
+};
+
+// The steps of a one-pixel line from a to b (pixel centres nearest the ends, a DDA along the
+// longer axis): 16.16 positions and depth pulled `bias` toward the eye, the three slopes over
+// one reciprocal of the length. Each pixel on the screen and in the band is depth-tested: a
+// line against itself, an outline (kBeyond) against its neighbour (ox, oy) when that one is
+// in the band. A pixel that passes is drawn, and its depth written where nearer. Returns the
+// pixels stepped.
+template <bool kBeyond>
+uint32_t stroke(const Target& t, const ScreenVertex& a, const ScreenVertex& b, hal::Rgb565 colour, uint16_t bias,
+                int32_t ox = 0, int32_t oy = 0) {
+    const int32_t x0 = a.x >> 4, y0 = a.y >> 4, dx = (b.x >> 4) - x0, dy = (b.y >> 4) - y0;
+    const int32_t n = (dx < 0 ? -dx : dx) > (dy < 0 ? -dy : dy) ? (dx < 0 ? -dx : dx) : (dy < 0 ? -dy : dy);
+    int32_t x = (x0 << 16) + 0x8000, y = (y0 << 16) + 0x8000, z = int32_t(a.z) << 8;
+    int32_t sx = 0, sy = 0, sz = 0;
+    if (n) {
+        const Reciprocal r = reciprocal(uint32_t(n));
+        sx = divide(int64_t(dx) << 16, r);
+        sy = divide(int64_t(dy) << 16, r);
+        sz = divide((int64_t(b.z) - a.z) << 8, r);
+    }
+    z -= int32_t(bias) << 8; // pulled toward the eye
+    uint16_t* const depth = t.depth;
+    hal::Rgb565* const fb = t.pixels;
+    const uint32_t width = t.width, band0 = t.y0, rows = t.rows;
+    for (int32_t i = 0; i <= n; ++i, x += sx, y += sy, z += sz) {
+        const int32_t px = x >> 16, py = y >> 16;
+        // Off the screen or the band (negatives too).
+        if (uint32_t(px) >= width || uint32_t(py) - band0 >= rows) continue;
+        const int32_t zv = z < 0 ? 0 : z >> 8;
+        const size_t at = size_t(uint32_t(py) - band0) * width + uint32_t(px);
+        if constexpr (kBeyond) {
+            const bool in = uint32_t(px + ox) < width && uint32_t(py + oy) - band0 < rows;
+            if (zv >= depth[in ? size_t(uint32_t(py + oy) - band0) * width + uint32_t(px + ox) : at]) continue;
+            if (zv < depth[at]) depth[at] = uint16_t(zv);
+        } else {
+            if (zv >= depth[at]) continue;
+            depth[at] = uint16_t(zv);
+        }
+        fb[at] = colour;
+    }
+    return uint32_t(n + 1);
+}
+
 // One edge p->q of a triangle with positive doubled area, walked row by row.
 //
 // A pixel centre (sx, sy) is inside the edge when dx*(sy - py) - dy*(sx - px) - bias >= 0.
@@ -319,21 +390,14 @@ bool Rasterizer::hidden(const ScreenVertex& a, const ScreenVertex& b, const Scre
     constexpr int32_t kMargin = 4; // depth units an interpolated value may fall below its corners'
     const int32_t z = int32_t(a.z < b.z ? (a.z < c.z ? a.z : c.z) : (b.z < c.z ? b.z : c.z)) - kMargin;
     if (z <= 0 || !in_guard(a) || !in_guard(b) || !in_guard(c)) return false;
-    const int32_t ymin = a.y < b.y ? (a.y < c.y ? a.y : c.y) : (b.y < c.y ? b.y : c.y);
-    const int32_t ymax = a.y > b.y ? (a.y > c.y ? a.y : c.y) : (b.y > c.y ? b.y : c.y);
-    const int32_t xmin = a.x < b.x ? (a.x < c.x ? a.x : c.x) : (b.x < c.x ? b.x : c.x);
-    const int32_t xmax = a.x > b.x ? (a.x > c.x ? a.x : c.x) : (b.x > c.x ? b.x : c.x);
-    // The rows and columns scan() could draw (centres 16i+8 inside the box), in the band.
-    int32_t row0 = (ymin + 7) >> 4, row1 = (ymax - 8) >> 4, col0 = (xmin + 7) >> 4, col1 = (xmax - 8) >> 4;
-    if (row0 < int32_t(t_.y0)) row0 = t_.y0;
-    if (row1 > int32_t(t_.y0 + t_.rows) - 1) row1 = int32_t(t_.y0 + t_.rows) - 1;
-    if (col0 < 0) col0 = 0;
-    if (col1 > int32_t(t_.width) - 1) col1 = int32_t(t_.width) - 1;
-    if (row0 > row1 || col0 > col1) return true;
+    PixelBox box(a, b, c, t_); // what scan() could draw, in the band
+    box.band(t_);
+    if (box.empty()) return true;
     // Two entries a load (the depth rows are 4-byte aligned when the width is even; else one
     // at a time): an entry farther than z shows the triangle would draw.
     const uint32_t zz = uint32_t(z);
-    for (int32_t y = row0; y <= row1; ++y) {
+    const int32_t col0 = box.col0, col1 = box.col1;
+    for (int32_t y = box.row0; y <= box.row1; ++y) {
         const uint16_t* d = t_.depth + size_t(y - t_.y0) * t_.width;
         int32_t x = col0;
         if ((reinterpret_cast<uintptr_t>(d + x) & 2) && d[x++] > zz) return false;
@@ -349,40 +413,27 @@ bool Rasterizer::hidden(const ScreenVertex& a, const ScreenVertex& b, const Scre
 
 Status Rasterizer::scan(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2,
                         int64_t area2) {
-    int32_t ymin = v0.y, ymax = v0.y, xmin = v0.x, xmax = v0.x;
-    for (const ScreenVertex* v : {&v1, &v2}) {
-        ymin = v->y < ymin ? v->y : ymin;
-        ymax = v->y > ymax ? v->y : ymax;
-        xmin = v->x < xmin ? v->x : xmin;
-        xmax = v->x > xmax ? v->x : xmax;
-    }
-    // Rows and columns whose centres (16i+8) can be inside, clipped to the screen: the way a
-    // triangle is scanned depends on the screen alone, so every band gets the same values.
-    int64_t row0 = (int64_t(ymin) + 7) >> 4, row1 = (int64_t(ymax) - 8) >> 4;
-    int64_t col0 = (int64_t(xmin) + 7) >> 4, col1 = (int64_t(xmax) - 8) >> 4;
-    row0 = row0 < 0 ? 0 : row0;
-    row1 = row1 > t_.height - 1 ? t_.height - 1 : row1;
-    col0 = col0 < 0 ? 0 : col0;
-    col1 = col1 > t_.width - 1 ? t_.width - 1 : col1;
-    if (row0 > row1 || col0 > col1) return Status::Ok;
+    PixelBox box(v0, v1, v2, t_);
+    if (box.empty()) return Status::Ok;
+    const int32_t xmin = box.xmin, xmax = box.xmax, ymin = box.ymin, ymax = box.ymax;
     // Small: the triangle's own box (not the part of it on the screen) under kSmall pixels
     // both ways, which keeps scan_small's edge functions and small_gradients' products in 32 bits.
     const bool small = int64_t(xmax) - xmin < 16 * kSmall && int64_t(ymax) - ymin < 16 * kSmall;
     // Then the rows of this band.
-    row0 = row0 < t_.y0 ? t_.y0 : row0;
-    row1 = row1 > t_.y0 + t_.rows - 1 ? t_.y0 + t_.rows - 1 : row1;
+    box.band(t_);
+    const int32_t row0 = box.row0, row1 = box.row1, col0 = box.col0, col1 = box.col1;
     if (row0 > row1) return Status::Ok;
     ++stats.triangles;
     if (small) {
-        scan_small(v0, v1, v2, area2, int32_t(row0), int32_t(row1), int32_t(col0), int32_t(col1));
+        scan_small(v0, v1, v2, area2, row0, row1, col0, col1);
         return Status::Ok;
     }
     // (A stippled triangle takes the per-pixel path, which leaves out every other pixel.)
     const bool clamp = stipple_ || needs_clamp(v0, v1, v2, int32_t(std::max(xmax - xmin, ymax - ymin) >> 4));
     constexpr int32_t kNear = 16 * 1024; // sub-pixels: 32-bit edge walks within this of the origin
     const bool near = xmin >= -kNear && xmax <= kNear && ymin >= -kNear && ymax <= kNear;
-    if (near) scan_rows<int32_t>(v0, v1, v2, area2, int32_t(row0), int32_t(row1), int32_t(col0), int32_t(col1), clamp);
-    else scan_rows<int64_t>(v0, v1, v2, area2, int32_t(row0), int32_t(row1), int32_t(col0), int32_t(col1), clamp);
+    if (near) scan_rows<int32_t>(v0, v1, v2, area2, row0, row1, col0, col1, clamp);
+    else scan_rows<int64_t>(v0, v1, v2, area2, row0, row1, col0, col1, clamp);
     return Status::Ok;
 }
 
@@ -586,64 +637,15 @@ void Rasterizer::shade(int32_t y, int32_t lo, int32_t hi, const Interp* at, bool
     ++stats.spans;
 }
 
-// The steps of a one-pixel line from a to b (pixel centres nearest the ends, a DDA along the
-// longer axis): 16.16 positions and depth pulled `bias` toward the eye, the three slopes over
-// one reciprocal of the length.
-struct LineSteps {
-    int32_t x, y, z, sx = 0, sy = 0, sz = 0, n;
-    LineSteps(const ScreenVertex& a, const ScreenVertex& b, uint16_t bias) {
-        const int32_t x0 = a.x >> 4, y0 = a.y >> 4, dx = (b.x >> 4) - x0, dy = (b.y >> 4) - y0;
-        n = (dx < 0 ? -dx : dx) > (dy < 0 ? -dy : dy) ? (dx < 0 ? -dx : dx) : (dy < 0 ? -dy : dy);
-        x = (x0 << 16) + 0x8000, y = (y0 << 16) + 0x8000, z = int32_t(a.z) << 8;
-        if (n) {
-            const Reciprocal r = reciprocal(uint32_t(n));
-            sx = divide(int64_t(dx) << 16, r);
-            sy = divide(int64_t(dy) << 16, r);
-            sz = divide((int64_t(b.z) - a.z) << 8, r);
-        }
-        z -= int32_t(bias) << 8;
-    }
-};
-
 Status Rasterizer::line(const ScreenVertex& a, const ScreenVertex& b, hal::Rgb565 colour, uint16_t bias) {
     if (!in_guard(a) || !in_guard(b)) return Status::OutOfRange;
-    LineSteps l(a, b, bias);
-    uint16_t* const depth = t_.depth;
-    hal::Rgb565* const fb = t_.pixels;
-    const uint32_t width = t_.width, band0 = t_.y0, rows = t_.rows;
-    for (int32_t i = 0; i <= l.n; ++i, l.x += l.sx, l.y += l.sy, l.z += l.sz) {
-        const int32_t px = l.x >> 16, py = l.y >> 16;
-        // Off the screen or the band (negatives too).
-        if (uint32_t(px) >= width || uint32_t(py) - band0 >= rows) continue;
-        const int32_t zv = l.z < 0 ? 0 : l.z >> 8;
-        const size_t at = size_t(uint32_t(py) - band0) * width + uint32_t(px);
-        if (zv >= depth[at]) continue;
-        depth[at] = uint16_t(zv);
-        fb[at] = colour;
-    }
-    stats.pixels += uint32_t(l.n + 1);
+    stats.pixels += stroke<false>(t_, a, b, colour, bias);
     return Status::Ok;
 }
 
 Status Rasterizer::outline(const ScreenVertex& a, const ScreenVertex& b, hal::Rgb565 colour, uint16_t bias, uint8_t beyond) {
     if (!in_guard(a) || !in_guard(b)) return Status::OutOfRange;
-    LineSteps l(a, b, bias);
-    uint16_t* const depth = t_.depth;
-    hal::Rgb565* const fb = t_.pixels;
-    const uint32_t width = t_.width, band0 = t_.y0, rows = t_.rows;
-    const int32_t ox = beyond == 0 ? 1 : beyond == 2 ? -1 : 0, oy = beyond == 1 ? 1 : beyond == 3 ? -1 : 0;
-    for (int32_t i = 0; i <= l.n; ++i, l.x += l.sx, l.y += l.sy, l.z += l.sz) {
-        const int32_t px = l.x >> 16, py = l.y >> 16;
-        if (uint32_t(px) >= width || uint32_t(py) - band0 >= rows) continue;
-        const int32_t zv = l.z < 0 ? 0 : l.z >> 8;
-        const size_t at = size_t(uint32_t(py) - band0) * width + uint32_t(px);
-        const bool near_inside = uint32_t(px + ox) < width && uint32_t(py + oy) - band0 < rows;
-        const size_t test = near_inside ? size_t(uint32_t(py + oy) - band0) * width + uint32_t(px + ox) : at;
-        if (zv >= depth[test]) continue;
-        if (zv < depth[at]) depth[at] = uint16_t(zv);
-        fb[at] = colour;
-    }
-    stats.pixels += uint32_t(l.n + 1);
+    stats.pixels += stroke<true>(t_, a, b, colour, bias, beyond == 0 ? 1 : beyond == 2 ? -1 : 0, beyond == 1 ? 1 : beyond == 3 ? -1 : 0);
     return Status::Ok;
 }
 

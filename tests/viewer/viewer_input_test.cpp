@@ -1035,14 +1035,8 @@ TEST(Viewer, HiddenLineDrawsTheOutlinesOfCurvedFaces) {
     ASSERT_TRUE(core.camera().view().ortho);
     const module::FaceInfo& F = core.scene().face(0);
     ASSERT_GT(F.triangle_count, 20u);
-    const module::Transform t = core.camera().transform(core.scene(), 0, app.w, app.h);
-    int l = INT32_MAX, top = INT32_MAX, r = INT32_MIN, b = INT32_MIN;
-    for (uint32_t k = 0; k < F.vertex_count; ++k) {
-        module::Projected p;
-        t.project(core.scene().vertices()[F.first_vertex + k].p, p);
-        ASSERT_EQ(p.out, 0);
-        l = std::min(l, p.s.x / 16), r = std::max(r, p.s.x / 16), top = std::min(top, p.s.y / 16), b = std::max(b, p.s.y / 16);
-    }
+    const auto [l, top, r, b] = box_of(core, 0, app.w, app.h, 0);
+    ASSERT_TRUE(l >= 2 && top >= 0 && r < app.w - 2 && b < app.h) << "the tube on the screen";
     ASSERT_GT(r - l, 60);
     ASSERT_GT(b - top, 60);
     const Rgb565 ink = hal::rgb565(28, 30, 38); // painter.cpp's kEdgeColour

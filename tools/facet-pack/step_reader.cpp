@@ -140,6 +140,11 @@ int free_edges(const TopoDS_Shape& shape) {
     return n;
 }
 
+// Sewing tolerances, of the shapes' bounding box diagonal: a solid's gaps, and sheets' (a file
+// that wrote a solid face by face comes from a converter: ANC101 as B-splines has gaps up to
+// 1/30,000 of its size).
+constexpr double kSolidGap = 1e-5, kSheetGap = 10 * kSolidGap;
+
 // A solid whose faces do not share their edges everywhere (an unsewn B-rep) is sewn within a
 // small tolerance; closed says whether every edge then has two faces.
 void close_gaps(Part& part) {
@@ -148,7 +153,7 @@ void close_gaps(Part& part) {
     BRepBndLib::Add(part.shape, box);
     const double diag = box.IsVoid() ? 1.0 : std::sqrt(box.SquareExtent());
     try {
-        BRepBuilderAPI_Sewing sew(1e-5 * diag);
+        BRepBuilderAPI_Sewing sew(kSolidGap * diag);
         sew.Add(part.shape);
         sew.Perform();
         TopoDS_Shape sewn = sew.SewedShape();
@@ -167,12 +172,10 @@ void close_gaps(Part& part) {
 
 // Sheets of one occurrence (a surface model: open shells or lone faces, same name and
 // placement) that together bound a volume: a file that wrote a solid face by face. They are
-// sewn within a ten times larger gap than a solid's (such files come from converters: ANC101
-// as B-splines has gaps up to 1/30,000 of its size); when that leaves no free edge, the
-// shells become one solid oriented outwards, read as closed (its back faces culled, its
-// sections capped, its edges shared and so sampled once). Otherwise they stay as they were.
-// Returns how many sheets went into the solid (0: none).
-constexpr double kSheetGap = 1e-4; // of the sheets' bounding box diagonal
+// sewn within kSheetGap; when that leaves no free edge, the shells become one solid oriented
+// outwards, read as closed (its back faces culled, its inside shown through a section, its
+// edges shared and so sampled once). Otherwise they stay as they were. Returns how many
+// sheets went into the solid (0: none).
 size_t close_sheets(std::vector<Part>& parts) {
     std::vector<size_t> open;
     for (size_t i = 0; i < parts.size(); ++i)
@@ -198,7 +201,6 @@ size_t close_sheets(std::vector<Part>& parts) {
         if (shells == 0 || !make.IsDone()) return 0;
         TopoDS_Solid solid = make.Solid();
         BRepLib::OrientClosedSolid(solid);
-        if (free_edges(solid) != 0) return 0;
         Part whole{solid.Located(first.shape.Location()), true, first.name, first.instance};
         std::vector<Part> kept;
         for (Part& p : parts)
