@@ -79,14 +79,16 @@ void extract_span(const float* knots, int p, int s, float* row, int stride, int 
     for (int i = 0; i < nt; ++i) T[i] = knots[s - p + i];
     for (int i = 0; i < nq; ++i)
         for (int d = 0; d < dims; ++d) Q[i][d] = row[i * stride + d];
-    for (const float x : {T[p], T[p + 1]}) {
-        for (;;) {
-            int k = 0, m = 0; // T[k] <= x < T[k+1]; m: x's multiplicity
-            for (int i = 0; i < nt; ++i) {
-                if (T[i] <= x) k = i;
-                m += T[i] == x;
-            }
-            if (m >= p) break;
+    int span_at = 0; // where the span [a, b) starts once a has multiplicity p: its last a
+    const float ends[2] = {T[p], T[p + 1]};
+    for (int end = 0; end < 2; ++end) {
+        const float x = ends[end];
+        int k = 0, m = 0; // T[k] <= x < T[k+1]; m: x's multiplicity (an insertion adds one to each)
+        for (int i = 0; i < nt; ++i) {
+            if (T[i] <= x) k = i;
+            m += T[i] == x;
+        }
+        for (; m < p; ++m, ++k, ++nt, ++nq) {
             for (int i = nq; i > k - m; --i)
                 for (int d = 0; d < dims; ++d) Q[i][d] = Q[i - 1][d];
             for (int i = k - m; i >= k - p + 1; --i) {
@@ -95,14 +97,11 @@ void extract_span(const float* knots, int p, int s, float* row, int stride, int 
             }
             for (int i = nt; i > k + 1; --i) T[i] = T[i - 1];
             T[k + 1] = x;
-            ++nt, ++nq;
         }
+        if (end == 0) span_at = k; // (b's insertions all come after it)
     }
-    int k = 0; // the span [a, b): its last a
-    for (int i = 0; i < nt; ++i)
-        if (T[i] <= T[p]) k = i;
     for (int i = 0; i <= p; ++i)
-        for (int d = 0; d < dims; ++d) row[i * stride + d] = Q[k - p + i][d];
+        for (int d = 0; d < dims; ++d) row[i * stride + d] = Q[span_at - p + i][d];
 }
 
 // A Bézier curve's point by de Casteljau, in place over c[0..n] (lerps of numbers under 2^29
@@ -122,6 +121,72 @@ inline int32_t casteljau_d(int32_t* c, int n, int32_t t, int32_t& diff) {
     return c[0] + mulq(diff, t);
 }
 
+// The exponent e that puts the largest magnitude `big` under 2^bits: big * 2^e < 2^bits (0 for
+// a zero or noise: nothing to keep).
+inline int fixed_exponent(float big, int bits) {
+    return big >= 1e-30f ? std::clamp(bits - exponent_f(big), -100, 126) : 0;
+}
+
+// The larger of big (>= 0) and |x|, by the floats' bits (a soft-float compare costs ~25
+// instructions; for finite floats the order of the bits is the order of the magnitudes).
+inline float larger_magnitude(float big, float x) {
+    const uint32_t b = std::bit_cast<uint32_t>(x) & 0x7FFFFFFFu;
+    return b > std::bit_cast<uint32_t>(big) ? std::bit_cast<float>(b) : big;
+}
+
+// round(x 2^e) by the float's bits (no soft-float call), for x 2^e under 2^31 in magnitude (the
+// caller's exponent sees to it; larger is clamped). Zeros, subnormals, NaN and infinities give 0.
+inline int32_t to_fixed(float x, int e) {
+    const uint32_t b = std::bit_cast<uint32_t>(x);
+    const int be = int(b >> 23 & 0xFF);
+    if (be == 0 || be == 0xFF) return 0;
+    const uint32_t m = (b & 0x7FFFFFu) | 0x800000u; // x = m 2^(be - 150)
+    const int sh = be - 150 + e;
+    uint32_t v;
+    if (sh >= 0) v = sh <= 7 ? m << sh : 0x7FFFFFFFu;
+    else v = sh > -25 ? (m + (1u << (-sh - 1))) >> -sh : 0;
+    return b >> 31 ? -int32_t(v) : int32_t(v);
+}
+
+inline uint64_t magnitude(int64_t x) { return x < 0 ? uint64_t(0) - uint64_t(x) : uint64_t(x); }
+
+// Bits of x: the e with x < 2^e (0 for 0).
+inline int bit_length(uint64_t x) { return x ? 64 - __builtin_clzll(x) : 0; }
+
+// The smallest s with (top >> s) + 1 < 2^bits: a magnitude under 2^bits after a rounded shift.
+inline int shift_under(uint64_t top, int bits) {
+    int s = std::max(bit_length(top) - bits, 0); // one short at most
+    while ((top >> s) + 1 >= (uint64_t(1) << bits)) ++s;
+    return s;
+}
+
+// x / 2^s rounded (half up); s in [0, 62].
+inline int64_t shift_round(int64_t x, int s) { return s ? (x + (int64_t(1) << (s - 1))) >> s : x; }
+
+// The smallest s for which n coefficients whose magnitudes over 64 sum to sum64 (so sum to at
+// most 64 (sum64 + n)) still sum under 2^29 after each is shifted right by s and rounded (each
+// then at most its share plus 1).
+inline int sum_shift(uint64_t sum64, uint32_t n) {
+    const uint64_t bound = sum64 + n, limit = (uint64_t(1) << 29) - n; // want 64 bound / 2^s < limit
+    for (int s = std::max(bit_length(bound) - 25, 0); s < 62; ++s) // (none below it fits)
+        if (s <= 6 ? bound < (limit >> (6 - s)) : (bound >> (s - 6)) < limit) return s;
+    return 62;
+}
+
+// A span's basis polynomials (span_polynomials) in fixed point under 2^30, I[a * (p + 1) + k];
+// returns the exponent.
+int fixed_span_polynomials(const float* knots, int p, int s, int32_t* I) {
+    float M[kN][kN];
+    span_polynomials(knots, p, s, M);
+    float big = 0;
+    for (int a = 0; a <= p; ++a)
+        for (int k = 0; k <= p; ++k) big = larger_magnitude(big, M[a][k]);
+    const int e = fixed_exponent(big, 30);
+    for (int a = 0; a <= p; ++a)
+        for (int k = 0; k <= p; ++k) I[a * (p + 1) + k] = to_fixed(M[a][k], e);
+    return e;
+}
+
 } // namespace
 
 PatchCache::PatchCache(const Pack& pack, const pack::Surface& S, std::span<uint32_t> memory) {
@@ -134,12 +199,21 @@ PatchCache::PatchCache(const Pack& pack, const pack::Surface& S, std::span<uint3
     uk_ = B.uk, vk_ = B.vk, poles_ = B.poles, weights_ = B.weights;
     slot_words_ = slot_words(pu_, pv_, rational_);
     if (memory.size() < 1 + slot_words_) return;
-    memory_ = memory.data();
-    slots_ = uint32_t((memory.size() - 1) / slot_words_);
+    // The spans' basis matrices first (power form only), if there is room for them and a few
+    // patches; then the patches.
+    uint32_t* m = memory.data() + 1;
+    const uint32_t matrices = bezier_ ? 0 : kMatrixSlots * (matrix_words(pu_) + matrix_words(pv_));
+    if (matrices && memory.size() >= 1 + matrices + 8 * slot_words_) {
+        mu_ = m, mv_ = m + kMatrixSlots * matrix_words(pu_);
+        m += matrices;
+    }
+    memory_ = m;
+    slots_ = uint32_t((memory.data() + memory.size() - m) / slot_words_);
     const uint32_t tag = S.params + 1; // the surface the patches belong to
-    if (memory_[0] != tag) {
-        memory_[0] = tag;
-        for (uint32_t i = 0; i < slots_; ++i) memory_[1 + i * slot_words_] = kEmpty;
+    if (memory[0] != tag) {
+        memory[0] = tag;
+        for (uint32_t i = 0; i < slots_; ++i) memory_[i * slot_words_] = kEmpty;
+        for (uint32_t i = 0; mu_ && i < kMatrixSlots; ++i) mu_[i * matrix_words(pu_)] = mv_[i * matrix_words(pv_)] = kEmpty;
     }
 }
 
@@ -149,7 +223,7 @@ void PatchCache::forget(std::span<uint32_t> memory) {
 
 const uint32_t* PatchCache::patch(int su, int sv) {
     const uint32_t key = uint32_t(su) << 16 | uint32_t(sv);
-    uint32_t* slot = memory_ + 1 + (uint32_t(su) * 40503u + uint32_t(sv)) % slots_ * slot_words_;
+    uint32_t* slot = memory_ + (uint32_t(su) * 40503u + uint32_t(sv)) % slots_ * slot_words_;
     if (slot[0] != key) {
         convert(su, sv, slot);
         slot[0] = key;
@@ -172,52 +246,81 @@ void PatchCache::write_head(uint32_t* slot, int su, int sv, const float* O, uint
     slot[6] = std::bit_cast<uint32_t>(per_span(vk_[sv + 1] - vk_[sv]));
 }
 
+const int32_t* PatchCache::span_matrix(bool v, int span, int& e, int32_t* local) {
+    const int p = v ? pv_ : pu_;
+    const float* knots = v ? vk_ : uk_;
+    uint32_t* cache = v ? mv_ : mu_;
+    if (!cache) {
+        e = fixed_span_polynomials(knots, p, span, local);
+        return local;
+    }
+    uint32_t* slot = cache + uint32_t(span) % kMatrixSlots * matrix_words(p);
+    if (slot[0] != uint32_t(span)) {
+        slot[1] = uint32_t(fixed_span_polynomials(knots, p, span, reinterpret_cast<int32_t*>(slot + 2)));
+        slot[0] = uint32_t(span);
+    }
+    e = int32_t(slot[1]);
+    return reinterpret_cast<const int32_t*>(slot + 2);
+}
+
 void PatchCache::convert(int su, int sv, uint32_t* slot) {
     if (bezier_) return convert_bezier(su, sv, slot);
-    float Mu[kN][kN], Mv[kN][kN];
-    span_polynomials(uk_, pu_, su, Mu);
-    span_polynomials(vk_, pv_, sv, Mv);
-    const int dims = rational_ ? 4 : 3, i0 = su - pu_, j0 = sv - pv_;
+    // The span matrices (kept for the next patch of the same row or column of spans).
+    int32_t u_local[kN * kN], v_local[kN * kN];
+    int mu_e, mv_e;
+    const int32_t* Mu = span_matrix(false, su, mu_e, u_local);
+    const int32_t* Mv = span_matrix(true, sv, mv_e, v_local);
+    const int mrow = pu_ + 1, nrow = pv_ + 1; // the matrices' rows: [a][k] and [b][l]
+    const int dims = rational_ ? 4 : 3, i0 = su - pu_, j0 = sv - pv_, row = pv_ + 1;
+    const int per = (pu_ + 1) * row;
     const float* O = poles_ + 3 * (i0 * nv_ + j0); // the patch's first pole: coordinates stay small
-    // T[d][k][b] = sum over a of Mu[a][k] H[a][b][d], H the homogeneous poles w (P - O), w.
-    float T[4][kN][kN] = {};
+    // The homogeneous poles w (P - O), w in float, then each coordinate in fixed point under 2^29.
+    float H[kN * kN][4];
+    float big[4] = {};
     for (int a = 0; a <= pu_; ++a) {
         for (int b = 0; b <= pv_; ++b) {
-            float H[4];
-            homogeneous((i0 + a) * nv_ + j0 + b, O, H);
-            for (int k = 0; k <= pu_; ++k) {
-                const float m = Mu[a][k];
-                if (!detail::nonzero(m)) continue;
-                for (int d = 0; d < dims; ++d) T[d][k][b] += m * H[d];
-            }
+            float* h = H[a * row + b];
+            homogeneous((i0 + a) * nv_ + j0 + b, O, h);
+            for (int d = 0; d < dims; ++d) big[d] = larger_magnitude(big[d], h[d]);
         }
     }
-    // C[d][k][l] = sum over b of T[d][k][b] Mv[b][l]; each coordinate in fixed point with the
-    // largest exponent that keeps the sum of its coefficients' magnitudes under 2^29, so that
-    // neither Horner scheme can overflow.
     int32_t* c = reinterpret_cast<int32_t*>(slot + kHead);
     uint32_t exps = 0;
-    const int per = (pu_ + 1) * (pv_ + 1);
     for (int d = 0; d < dims; ++d) {
-        float C[kN][kN], sum = 0;
+        // Fixed point all through: the poles (exponent eh), the two matrices (mu_e, mv_e).
+        // C = Mu^T H Mv as T = Mu^T H (int64, back to int32 under 2^29) then T Mv (int64).
+        const int eh = fixed_exponent(big[d], 29);
+        int32_t Hd[kN * kN], T[kN][kN];
+        for (int i = 0; i < per; ++i) Hd[i] = to_fixed(H[i][d], eh);
+        int64_t W[kN][kN];
+        uint64_t top = 0;
         for (int k = 0; k <= pu_; ++k) {
-            for (int l = 0; l <= pv_; ++l) {
-                float x = 0;
-                for (int b = 0; b <= pv_; ++b) // (a span's matrix is about a third zeros)
-                    if (detail::nonzero(Mv[b][l])) x += T[d][k][b] * Mv[b][l];
-                C[k][l] = x;
-                sum += std::fabs(x);
+            for (int b = 0; b <= pv_; ++b) {
+                int64_t x = 0;
+                for (int a = 0; a <= pu_; ++a) x += int64_t(Mu[a * mrow + k]) * Hd[a * row + b];
+                W[k][b] = x;
+                top = std::max(top, magnitude(x));
             }
         }
-        // sum < 2^exponent (a sum too small for a normal float: its coefficients are noise)
-        const int e = sum >= 1e-30f ? std::clamp(29 - exponent_f(sum), -100, 100) : 0;
-        const float scale = pow2_f(e);
+        const int st = shift_under(top, 29);
+        for (int k = 0; k <= pu_; ++k)
+            for (int b = 0; b <= pv_; ++b) T[k][b] = int32_t(shift_round(W[k][b], st));
+        uint64_t sum = 0; // of the magnitudes over 64 (up to 64 terms under 2^62: no overflow)
         for (int k = 0; k <= pu_; ++k) {
             for (int l = 0; l <= pv_; ++l) {
-                const float v = C[k][l] * scale;
-                c[d * per + k * (pv_ + 1) + l] = round_to_int(v);
+                int64_t x = 0;
+                for (int b = 0; b <= pv_; ++b) x += int64_t(T[k][b]) * Mv[b * nrow + l];
+                W[k][l] = x;
+                sum += magnitude(x) >> 6;
             }
         }
+        // The stored coefficients' magnitudes, each rounded, sum under 2^29: neither Horner
+        // scheme can overflow. Their exponent: the poles', the matrices', less the shifts.
+        int sc = sum_shift(sum, uint32_t(per));
+        int e = eh + mu_e + mv_e - st - sc;
+        if (e > 100) sc = std::min(sc + e - 100, 62), e = 100; // (noise: its coefficients are ~0)
+        for (int k = 0; k <= pu_; ++k)
+            for (int l = 0; l <= pv_; ++l) c[d * per + k * row + l] = int32_t(shift_round(W[k][l], sc));
         exps |= exponent_bits(e, d);
     }
     write_head(slot, su, sv, O, exps);
@@ -240,7 +343,7 @@ void PatchCache::convert_bezier(int su, int sv, uint32_t* slot) {
     uint32_t exps = 0;
     for (int d = 0; d < dims; ++d) {
         float big = 0;
-        for (int i = 0; i < per; ++i) big = std::max(big, std::fabs(f[i * dims + d]));
+        for (int i = 0; i < per; ++i) big = larger_magnitude(big, f[i * dims + d]);
         const int e = big >= 1e-30f ? std::clamp(28 - exponent_f(big), -100, 100) : 0;
         exps |= exponent_bits(e, d);
     }
@@ -379,6 +482,98 @@ SurfacePoint PatchCache::point_and_derivatives(float u, float v) {
     const Vec3 p{f[0] * inv, f[1] * inv, f[2] * inv}; // from O
     const Vec3 du = (Vec3{fs[0], fs[1], fs[2]} - p * fs[3]) * (inv * hu), dv = (Vec3{ft[0], ft[1], ft[2]} - p * ft[3]) * (inv * hv);
     return {O + p, du, dv};
+}
+
+void CurveSpans::bind(const Pack& pack, const pack::Curve& c) {
+    usable_ = false, last_ = -1;
+    for (Slot& slot : slots_) slot.span = -1;
+    if (c.type != uint8_t(pack::CurveType::BSpline) || c.dim != 3) return;
+    const detail::BSplineCurveView C(pack.floats().data() + c.params, 3);
+    if (C.p < 1 || C.p > kMaxBezierDegree) return;
+    p_ = C.p, n_ = C.n, rational_ = C.rational, periodic_ = C.periodic;
+    knots_ = C.knots, poles_ = C.poles, weights_ = C.weights;
+    usable_ = true;
+}
+
+void CurveSpans::extract(int span, Slot& slot) const {
+    const int dims = rational_ ? 4 : 3, i0 = span - p_;
+    const float* O = poles_ + 3 * i0;
+    float f[(kMaxBezierDegree + 1) * 4];
+    for (int i = 0; i <= p_; ++i) {
+        const float* P = poles_ + 3 * (i0 + i);
+        const float w = rational_ ? weights_[i0 + i] : 1.0f;
+        for (int d = 0; d < 3; ++d) f[i * dims + d] = (P[d] - O[d]) * w;
+        if (rational_) f[i * dims + 3] = w;
+    }
+    extract_span(knots_, p_, span, f, dims, dims);
+    uint32_t exps = 0;
+    for (int d = 0; d < dims; ++d) {
+        float big = 0;
+        for (int i = 0; i <= p_; ++i) big = larger_magnitude(big, f[i * dims + d]);
+        const int e = std::min(fixed_exponent(big, 28), 100); // de Casteljau stays in the hull
+        exps |= exponent_bits(e, d);
+        for (int i = 0; i <= p_; ++i) slot.c[i * dims + d] = to_fixed(f[i * dims + d], e);
+    }
+    slot.span = span;
+    slot.exps = exps;
+    for (int d = 0; d < 3; ++d) slot.origin[d] = O[d];
+    slot.per_span = per_span(knots_[span + 1] - knots_[span]);
+}
+
+const CurveSpans::Slot& CurveSpans::slot_of(float& t, int32_t& q) {
+    int at = last_;
+    if (at < 0 || !(t >= knots_[slots_[at].span] && t < knots_[slots_[at].span + 1])) {
+        const int span = detail::find_span(knots_, n_, p_, t, periodic_);
+        at = span % kSlots;
+        if (slots_[at].span != span) {
+            extract(span, slots_[at]);
+            ++conversions_;
+        }
+        last_ = at;
+    }
+    const Slot& slot = slots_[at];
+    q = int32_t((t - knots_[slot.span]) * slot.per_span);
+    q = q < 0 ? 0 : (q > kOneQ ? kOneQ : q);
+    return slot;
+}
+
+void CurveSpans::bezier_at(const Slot& slot, int32_t q, int32_t* out, int32_t* diff) const {
+    const int dims = rational_ ? 4 : 3;
+    int32_t r[kBN];
+    for (int d = 0; d < dims; ++d) {
+        for (int i = 0; i <= p_; ++i) r[i] = slot.c[i * dims + d];
+        out[d] = diff ? casteljau_d(r, p_, q, diff[d]) : casteljau(r, p_, q);
+    }
+}
+
+Vec3 CurveSpans::point(float t) {
+    int32_t q, out[4];
+    const Slot& slot = slot_of(t, q);
+    bezier_at(slot, q, out, nullptr);
+    float f[4];
+    for (int d = 0; d < (rational_ ? 4 : 3); ++d) f[d] = float(out[d]) * pow2_f(-exponent_at(slot.exps, d));
+    const Vec3 O{slot.origin[0], slot.origin[1], slot.origin[2]};
+    if (!rational_) return O + Vec3{f[0], f[1], f[2]};
+    const float inv = 1 / (f[3] != 0 ? f[3] : 1.0f);
+    return O + Vec3{f[0], f[1], f[2]} * inv;
+}
+
+Curve3Point CurveSpans::point_and_derivative(float t) {
+    int32_t q, out[4], diff[4];
+    const Slot& slot = slot_of(t, q);
+    bezier_at(slot, q, out, diff);
+    // d/dt = p times the last difference, over the span's length (per_span / 2^30).
+    const float to_t = float(p_) * slot.per_span * (1 / kOne);
+    float f[4], df[4];
+    for (int d = 0; d < (rational_ ? 4 : 3); ++d) {
+        const float unscale = pow2_f(-exponent_at(slot.exps, d));
+        f[d] = float(out[d]) * unscale, df[d] = float(diff[d]) * (unscale * to_t);
+    }
+    const Vec3 O{slot.origin[0], slot.origin[1], slot.origin[2]};
+    if (!rational_) return {O + Vec3{f[0], f[1], f[2]}, Vec3{df[0], df[1], df[2]}};
+    const float inv = 1 / (f[3] != 0 ? f[3] : 1.0f);
+    const Vec3 p = Vec3{f[0], f[1], f[2]} * inv; // from O
+    return {O + p, (Vec3{df[0], df[1], df[2]} - p * df[3]) * inv};
 }
 
 } // namespace facet::geom

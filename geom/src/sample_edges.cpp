@@ -158,10 +158,12 @@ void EdgeSampler::start(const Pack& pack, const TessOptions& opt, EdgeSamples& o
     cos_max_ = cos_f(opt_.max_angle);
     // The work of an evaluation: a B-spline's (its basis and derivative, soft-float on the
     // ARM926) grows with the square of its degree.
+    // In fixed point (de Casteljau on the span's Bézier points) about an eighth of that.
     eval_ = 1;
+    spans_.bind(pack, *curve_);
     if (CurveType(curve_->type) == CurveType::BSpline) {
         const uint32_t degree = uint32_t(pack.floats()[curve_->params]);
-        eval_ = 1 + (degree + 1) * (degree + 1) / 2;
+        eval_ = 1 + (degree + 1) * (degree + 1) / (spans_.usable() ? 16 : 2);
     }
     if (!pool.emit(E.t0, a)) {
         result_ = Result::fail(Status::Full, "more edge samples than the pool holds", {"edge", e});
@@ -170,9 +172,9 @@ void EdgeSampler::start(const Pack& pack, const TessOptions& opt, EdgeSamples& o
     const float t0 = E.t0, t1 = E.t1;
     for (int k = 4; k >= 1; --k) {
         const float t = k == 4 ? t1 : t0 + (t1 - t0) * float(k) / 4;
-        stack_[top_++] = {t, eval_curve3(pack, *curve_, t)};
+        stack_[top_++] = {t, eval(t)};
     }
-    left_ = eval_curve3(pack, *curve_, t0);
+    left_ = eval(t0);
     tl_ = t0;
     min_piece_ = 1e-6f * (std::fabs(t1 - t0) + 1e-6f);
     out.work += 5 * eval_;
@@ -182,7 +184,6 @@ Result EdgeSampler::run(uint32_t units) {
     if (result_.status != Status::Busy) return result_;
     EdgeSamples& out = *out_;
     const Pack& pack = *pack_;
-    const Curve& C = *curve_;
     const Edge& E = pack.edges()[edge_];
     constexpr uint32_t kMaxSamples = 4000;
     Pool pool{out};
@@ -197,7 +198,7 @@ Result EdgeSampler::run(uint32_t units) {
         float sag2 = 0;
         out.work += 3 * eval_;
         for (int q = 1; q <= 3; ++q) {
-            const Vec3 off = eval_curve3_point(pack, C, tl_ + (right.t - tl_) * 0.25f * float(q)) - left_.p;
+            const Vec3 off = eval_point(tl_ + (right.t - tl_) * 0.25f * float(q)) - left_.p;
             const float along = len2 > 0 ? dot(off, chord) / len2 : 0;
             sag2 = std::max(sag2, length2(off - chord * along));
         }
@@ -216,7 +217,7 @@ Result EdgeSampler::run(uint32_t units) {
             out.work += uint32_t(k - 1) * eval_;
             for (int j = k; j >= 1; --j) {
                 const float t = j == k ? right.t : tl_ + (right.t - tl_) * float(j) / float(k);
-                stack_[top_++] = {t, j == k ? right.p : eval_curve3(pack, C, t)};
+                stack_[top_++] = {t, j == k ? right.p : eval(t)};
             }
             continue;
         }
@@ -231,6 +232,9 @@ Result EdgeSampler::run(uint32_t units) {
     finish();
     return result_;
 }
+
+Curve3Point EdgeSampler::eval(float t) { return spans_.usable() ? spans_.point_and_derivative(t) : eval_curve3(*pack_, *curve_, t); }
+Vec3 EdgeSampler::eval_point(float t) { return spans_.usable() ? spans_.point(t) : eval_curve3_point(*pack_, *curve_, t); }
 
 void EdgeSampler::finish() {
     EdgeSamples& out = *out_;

@@ -1,5 +1,6 @@
 // The fixed-point patches (geom/patches.h) against the B-spline surface itself, on every
-// B-spline surface of real packs: points and their derivatives (for normals) over each
+// B-spline surface of real packs (and the fixed-point curve spans against every 3D B-spline
+// curve they take): points and their derivatives (for normals) over each
 // surface's whole parameter range (a
 // grid through every knot, the knots themselves, points just outside), in a cache that holds
 // every span and in one that holds a single patch (every span change converts again).
@@ -137,6 +138,56 @@ void check_surface(const Pack& pack, uint32_t s, double diagonal, std::vector<ui
     if (rel > w.derivative || rel != rel) w.derivative = rel;
 }
 
+// A 3D B-spline curve's point and derivative, in double.
+void curve_reference(const float* q, float t, double p[3], double d[3]) {
+    const detail::BSplineCurveView C(q, 3);
+    double N[kMaxDegree + 1], dN[kMaxDegree + 1];
+    const int s = detail::basis<double>(C.knots, C.n, C.p, t, C.periodic, N, dN);
+    double A[4] = {}, dA[4] = {};
+    for (int j = 0; j <= C.p; ++j) {
+        const int i = s - C.p + j;
+        const double w = C.rational ? C.weights[i] : 1.0;
+        const double H[4] = {C.poles[3 * i] * w, C.poles[3 * i + 1] * w, C.poles[3 * i + 2] * w, w};
+        for (int k = 0; k < 4; ++k) A[k] += N[j] * H[k], dA[k] += dN[j] * H[k];
+    }
+    for (int k = 0; k < 3; ++k) p[k] = A[k] / A[3], d[k] = (dA[k] - p[k] * dA[3]) / A[3];
+}
+
+// The fixed-point curve spans (CurveSpans: the edge sampler's B-splines) against
+// the curve in double, over every knot, quarter points and past the ends; the same bounds.
+void check_curve(const Pack& pack, uint32_t c, double diagonal, Worst& w) {
+    const pack::Curve& C = pack.curves3()[c];
+    CurveSpans spans;
+    spans.bind(pack, C);
+    if (!spans.usable()) return;
+    ++w.surfaces;
+    const float* q = pack.floats().data() + C.params;
+    const detail::BSplineCurveView V(q, 3);
+    double largest = 0, off = 0;
+    for (float t : params(V.knots, V.k)) {
+        double p[3], d[3];
+        curve_reference(q, t, p, d);
+        const Vec3 a = spans.point(t);
+        const Curve3Point b = spans.point_and_derivative(t);
+        ++w.points;
+        for (Vec3 x : {a, b.p}) {
+            const double e = std::sqrt((x.x - p[0]) * (x.x - p[0]) + (x.y - p[1]) * (x.y - p[1]) + (x.z - p[2]) * (x.z - p[2])) / diagonal;
+            if (e > w.error || e != e) w.error = e, w.surface = c, w.u = t;
+        }
+        float tt = t;
+        const int s = detail::find_span(V.knots, V.n, V.p, tt, V.periodic);
+        largest = std::max(largest, std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]));
+        if (!(V.knots[s + 1] - V.knots[s] >= 1e-4f * (V.knots[V.k - 1] - V.knots[0]))) {
+            ++w.unresolved;
+            continue;
+        }
+        const double e = std::sqrt((b.d.x - d[0]) * (b.d.x - d[0]) + (b.d.y - d[1]) * (b.d.y - d[1]) + (b.d.z - d[2]) * (b.d.z - d[2]));
+        off = e != e ? e : std::max(off, e);
+    }
+    const double rel = largest > 0 ? off / largest : off;
+    if (rel > w.derivative || rel != rel) w.derivative = rel;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -185,6 +236,18 @@ int main(int argc, char** argv) {
                     bad ? "FAIL" : "ok", std::filesystem::path(f).filename().c_str(), big.surfaces, big.skipped,
                     kMaxBezierDegree, big.points, worst, w.surface, double(w.u), double(w.v), big.derivative, big.unresolved,
                     big.error != small.error ? "; a one-patch cache differs" : "");
+        Worst curves;
+        for (uint32_t c = 0; c < pack.curves3().size(); ++c) check_curve(pack, c, diagonal, curves);
+        const bool bad_curve = !(curves.error <= kBound) || !(curves.derivative <= kDerivativeBound);
+        failed |= bad_curve;
+        if (curves.surfaces) {
+            std::printf("%s %s: %u B-spline curves in fixed point (degrees up to %d), %u points; largest difference %.2e "
+                        "of the diagonal (curve %u at %g), of the derivatives %.2e of the largest (%u points on "
+                        "unresolved spans)\n",
+                        bad_curve ? "FAIL" : "ok", std::filesystem::path(f).filename().c_str(), curves.surfaces,
+                        kMaxBezierDegree, curves.points, curves.error, curves.surface,
+                        double(curves.u), curves.derivative, curves.unresolved);
+        }
     }
     return failed ? 1 : 0;
 }

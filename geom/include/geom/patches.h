@@ -53,6 +53,11 @@ public:
 
 private:
     static constexpr uint32_t kHead = 7; // key, exponents, origin x y z, 2^30 over the spans' lengths
+    static constexpr uint32_t kMatrixSlots = 32;
+    static constexpr uint32_t matrix_words(int p) { return 2 + uint32_t((p + 1) * (p + 1)); }
+    // Span `span`'s basis matrix in u (v false) or v and its exponent: from the memory's
+    // matrices, made there if missing, or made in `local` when there are none.
+    const int32_t* span_matrix(bool v, int span, int& e, int32_t* local);
     const uint32_t* patch(int su, int sv);
     // The patch of (u, v) and the local parameters in [0, 2^30]; u and v wrapped or clamped.
     const uint32_t* locate(float& u, float& v, int32_t& qs, int32_t& qt);
@@ -73,7 +78,52 @@ private:
     bool bezier_ = false; // a degree over kMaxPatchDegree: Bézier form
     const float *uk_ = nullptr, *vk_ = nullptr, *poles_ = nullptr, *weights_ = nullptr;
     int last_su_ = -1, last_sv_ = -1; // the span of the last point (the next is often there too)
+    // The spans' basis polynomials (power form) in fixed point, kMatrixSlots a direction in the
+    // memory before the patches (a span's is shared by a row or column of patches): key,
+    // exponent, (p + 1)^2 coefficients. Null when the memory has no room for them.
+    uint32_t *mu_ = nullptr, *mv_ = nullptr;
     const uint32_t* last_ = nullptr;  // and its patch
+};
+
+// Points of a B-spline curve in fixed point. In float, the basis functions take p (p + 1) / 2
+// divisions a point (about 100 instructions each in soft float) and the sum as many again; here
+// each knot span a point falls in is extracted to Bézier form once (as PatchCache does for
+// surfaces of high degree, in float) into one of a few slots kept in the object, and a point is
+// de Casteljau in int32, one int-to-float conversion per coordinate and, if rational, one
+// division. An edge's samples walk along it, so most points hit the last span: on the ARM926
+// this pays from the first few points of a span, cubics included.
+class CurveSpans {
+public:
+    static constexpr int kSlots = 4;
+
+    // Takes curve c of the pack (a 3D curve); usable() when it is a B-spline of a degree up to
+    // kMaxBezierDegree. Forgets the last curve's spans.
+    void bind(const Pack& pack, const pack::Curve& c);
+    bool usable() const { return usable_; }
+    // The same values as eval_curve3 (within the fixed point's rounding: ~1e-8 of a span's extent).
+    Vec3 point(float t);
+    Curve3Point point_and_derivative(float t);
+    uint32_t conversions() const { return conversions_; }
+
+private:
+    struct Slot {
+        int32_t span;
+        uint32_t exps;     // a signed byte per coordinate
+        float origin[3];   // the span's first pole
+        float per_span;    // 2^30 over the span's length
+        int32_t c[(kMaxBezierDegree + 1) * 4]; // Bézier points [i][d], homogeneous if rational
+    };
+    const Slot& slot_of(float& t, int32_t& q);
+    void extract(int span, Slot& s) const;
+    // The curve's coordinates (and, if diff, their last differences) at q in [0, 2^30].
+    void bezier_at(const Slot& s, int32_t q, int32_t* out, int32_t* diff) const;
+
+    Slot slots_[kSlots];
+    const float *knots_ = nullptr, *poles_ = nullptr, *weights_ = nullptr;
+    int p_ = 0, n_ = 0;
+    bool rational_ = false, periodic_ = false, usable_ = false;
+    uint32_t conversions_ = 0;
+    int last_ = -1; // the slot of the last point
 };
 
 } // namespace facet::geom

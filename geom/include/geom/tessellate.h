@@ -14,6 +14,7 @@
 #include "cdt/cdt.h"
 #include "geom/eval.h"
 #include "geom/pack.h"
+#include "geom/patches.h"
 
 #include <span>
 
@@ -110,6 +111,9 @@ public:
 
 private:
     void finish();
+    // The curve's point (and derivative) at t: in fixed point where spans_ takes the curve.
+    Curve3Point eval(float t);
+    Vec3 eval_point(float t);
     struct Piece {
         float t;
         Curve3Point p;
@@ -125,6 +129,7 @@ private:
     int top_ = 0;
     Curve3Point left_{};
     float tl_ = 0, min_piece_ = 0, tol2_ = 0, cos_max_ = 1;
+    CurveSpans spans_; // a high-degree B-spline's spans in fixed point
     Result result_ = Result::fail(Status::Busy, "not started");
 };
 
