@@ -484,26 +484,27 @@ SurfacePoint PatchCache::point_and_derivatives(float u, float v) {
     return {O + p, du, dv};
 }
 
-void CurveSpans::bind(const Pack& pack, const pack::Curve& c) {
+void CurveSpans::bind(const Pack& pack, const pack::Curve& c, int min_degree) {
     usable_ = false, last_ = -1;
     for (Slot& slot : slots_) slot.span = -1;
-    if (c.type != uint8_t(pack::CurveType::BSpline) || c.dim != 3) return;
-    const detail::BSplineCurveView C(pack.floats().data() + c.params, 3);
-    if (C.p < 1 || C.p > kMaxBezierDegree) return;
-    p_ = C.p, n_ = C.n, rational_ = C.rational, periodic_ = C.periodic;
+    if (c.type != uint8_t(pack::CurveType::BSpline) || (c.dim != 2 && c.dim != 3)) return;
+    const detail::BSplineCurveView C(pack.floats().data() + c.params, c.dim);
+    if (C.p < std::max(min_degree, 1) || C.p > kMaxBezierDegree) return;
+    p_ = C.p, n_ = C.n, dim_ = c.dim, rational_ = C.rational, periodic_ = C.periodic;
+    dims_ = dim_ + (rational_ ? 1 : 0);
     knots_ = C.knots, poles_ = C.poles, weights_ = C.weights;
     usable_ = true;
 }
 
 void CurveSpans::extract(int span, Slot& slot) const {
-    const int dims = rational_ ? 4 : 3, i0 = span - p_;
-    const float* O = poles_ + 3 * i0;
+    const int dims = dims_, i0 = span - p_;
+    const float* O = poles_ + dim_ * i0;
     float f[(kMaxBezierDegree + 1) * 4];
     for (int i = 0; i <= p_; ++i) {
-        const float* P = poles_ + 3 * (i0 + i);
+        const float* P = poles_ + dim_ * (i0 + i);
         const float w = rational_ ? weights_[i0 + i] : 1.0f;
-        for (int d = 0; d < 3; ++d) f[i * dims + d] = (P[d] - O[d]) * w;
-        if (rational_) f[i * dims + 3] = w;
+        for (int d = 0; d < dim_; ++d) f[i * dims + d] = (P[d] - O[d]) * w;
+        if (rational_) f[i * dims + dim_] = w;
     }
     extract_span(knots_, p_, span, f, dims, dims);
     uint32_t exps = 0;
@@ -516,7 +517,7 @@ void CurveSpans::extract(int span, Slot& slot) const {
     }
     slot.span = span;
     slot.exps = exps;
-    for (int d = 0; d < 3; ++d) slot.origin[d] = O[d];
+    for (int d = 0; d < 3; ++d) slot.origin[d] = d < dim_ ? O[d] : 0.0f;
     slot.per_span = per_span(knots_[span + 1] - knots_[span]);
 }
 
@@ -538,24 +539,35 @@ const CurveSpans::Slot& CurveSpans::slot_of(float& t, int32_t& q) {
 }
 
 void CurveSpans::bezier_at(const Slot& slot, int32_t q, int32_t* out, int32_t* diff) const {
-    const int dims = rational_ ? 4 : 3;
     int32_t r[kBN];
-    for (int d = 0; d < dims; ++d) {
-        for (int i = 0; i <= p_; ++i) r[i] = slot.c[i * dims + d];
+    for (int d = 0; d < dims_; ++d) {
+        for (int i = 0; i <= p_; ++i) r[i] = slot.c[i * dims_ + d];
         out[d] = diff ? casteljau_d(r, p_, q, diff[d]) : casteljau(r, p_, q);
     }
 }
 
-Vec3 CurveSpans::point(float t) {
+const CurveSpans::Slot& CurveSpans::coordinates(float t, float* f) {
     int32_t q, out[4];
     const Slot& slot = slot_of(t, q);
     bezier_at(slot, q, out, nullptr);
+    for (int d = 0; d < dims_; ++d) f[d] = float(out[d]) * pow2_f(-exponent_at(slot.exps, d));
+    if (rational_) { // from homogeneous coordinates
+        const float inv = 1 / (f[dim_] != 0 ? f[dim_] : 1.0f);
+        for (int d = 0; d < dim_; ++d) f[d] *= inv;
+    }
+    return slot;
+}
+
+Vec3 CurveSpans::point(float t) {
     float f[4];
-    for (int d = 0; d < (rational_ ? 4 : 3); ++d) f[d] = float(out[d]) * pow2_f(-exponent_at(slot.exps, d));
-    const Vec3 O{slot.origin[0], slot.origin[1], slot.origin[2]};
-    if (!rational_) return O + Vec3{f[0], f[1], f[2]};
-    const float inv = 1 / (f[3] != 0 ? f[3] : 1.0f);
-    return O + Vec3{f[0], f[1], f[2]} * inv;
+    const Slot& slot = coordinates(t, f);
+    return {slot.origin[0] + f[0], slot.origin[1] + f[1], slot.origin[2] + f[2]};
+}
+
+Vec2 CurveSpans::point2(float t) {
+    float f[4];
+    const Slot& slot = coordinates(t, f);
+    return {slot.origin[0] + f[0], slot.origin[1] + f[1]};
 }
 
 Curve3Point CurveSpans::point_and_derivative(float t) {
@@ -565,7 +577,7 @@ Curve3Point CurveSpans::point_and_derivative(float t) {
     // d/dt = p times the last difference, over the span's length (per_span / 2^30).
     const float to_t = float(p_) * slot.per_span * (1 / kOne);
     float f[4], df[4];
-    for (int d = 0; d < (rational_ ? 4 : 3); ++d) {
+    for (int d = 0; d < dims_; ++d) {
         const float unscale = pow2_f(-exponent_at(slot.exps, d));
         f[d] = float(out[d]) * unscale, df[d] = float(diff[d]) * (unscale * to_t);
     }

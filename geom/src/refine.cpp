@@ -185,11 +185,6 @@ struct Context {
         }
     }
 
-    // Signed deviation of the triangle's point at parameters uv from a free-form surface: from
-    // the surface point at uv, along the triangle's unit normal n (near the surface's where it
-    // matters, and no derivatives to evaluate); x is any point of the triangle's plane.
-    float freeform_error(Vec3 x, Vec2 uv, Vec3 n) const { return dot(n, x - point(uv)); }
-
     // A point of the surface: from its fixed-point patch where it has one.
     Vec3 point(Vec2 uv) const { return patches.usable() ? patches.point(uv.x, uv.y) : eval_surface_point(pack, S, uv.x, uv.y); }
 
@@ -229,12 +224,6 @@ struct Context {
         default: break;
         }
         const bool elementary = type <= SurfaceType::Torus;
-        const Vec3 normal = elementary ? Vec3{0, 0, 0} : normalized(cross(e1, e2));
-        auto error = [&](float w0, float w1, float w2) {
-            // Along the triangle's normal every point of the triangle is as far as its corner.
-            if (!elementary) return freeform_error(P[0], UV[0] * w0 + UV[1] * w1 + UV[2] * w2, normal);
-            return elementary_error(P[0] * w0 + P[1] * w1 + P[2] * w2);
-        };
         auto grid_at = [&](float w0, float w1, float w2) {
             return cdt::Point{int32_t(std::lround(w0 * float(G[0].x) + w1 * float(G[1].x) + w2 * float(G[2].x))),
                               int32_t(std::lround(w0 * float(G[0].y) + w1 * float(G[1].y) + w2 * float(G[2].y)))};
@@ -242,20 +231,39 @@ struct Context {
         // The cubic model of the deviation (above): its seven samples, then its largest value
         // over the grid of sixths as the estimate, and where the point goes. When every sample
         // is so small that the model cannot reach the target anywhere, that bound will do.
+        // The samples: at the thirds of each side (e[2k] nearer corner i, e[2k+1] nearer j) and
+        // at the middle, each from a corner and a third of a side (fewer soft-float operations
+        // than three weighted corners each).
         float e[kSamples];
         float largest = 0;
         const uint32_t conversions = patches.conversions();
         cost = type <= SurfaceType::Torus || patches.usable() ? 3 : 30;
-        for (int k = 0; k < 3; ++k) {
-            const int i = (k + 1) % 3, j = (k + 2) % 3;
-            float wa[3] = {0, 0, 0}, wb[3] = {0, 0, 0};
-            wa[i] = wb[j] = 2.0f / 3, wa[j] = wb[i] = 1.0f / 3;
-            e[2 * k] = error(wa[0], wa[1], wa[2]);
-            e[2 * k + 1] = error(wb[0], wb[1], wb[2]);
+        if (elementary) {
+            for (int k = 0; k < 3; ++k) {
+                const int i = (k + 1) % 3, j = (k + 2) % 3;
+                const Vec3 third = (P[i] - P[j]) * (1.0f / 3);
+                e[2 * k] = elementary_error(P[j] + (third + third));
+                e[2 * k + 1] = elementary_error(P[j] + third);
+            }
+            e[6] = elementary_error((P[0] + P[1] + P[2]) * (1.0f / 3));
+        } else {
+            // Signed deviation from a free-form surface: from the surface point at the sample's
+            // parameters, along the triangle's unit normal (near the surface's where it matters,
+            // and no derivatives to evaluate), along which every point of the triangle is as
+            // far as its corner.
+            const Vec3 normal = normalized(cross(e1, e2));
+            const float level = dot(normal, P[0]);
+            auto error = [&](Vec2 uv) { return level - dot(normal, point(uv)); };
+            for (int k = 0; k < 3; ++k) {
+                const int i = (k + 1) % 3, j = (k + 2) % 3;
+                const Vec2 third = (UV[i] - UV[j]) * (1.0f / 3);
+                e[2 * k] = error(UV[j] + (third + third));
+                e[2 * k + 1] = error(UV[j] + third);
+            }
+            e[6] = error((UV[0] + UV[1] + UV[2]) * (1.0f / 3));
         }
-        e[6] = error(1.0f / 3, 1.0f / 3, 1.0f / 3);
         cost += (patches.conversions() - conversions) * kConvertUnits;
-        for (float x : e) largest = std::max(largest, std::fabs(x));
+        for (float x : e) largest = std::max(largest, std::fabs(x)); // (NaN: not the largest)
         const float bound = kSixths.lebesgue * largest;
         if (bound * bound <= target2) {
             m.error2 = bound * bound;

@@ -106,9 +106,10 @@ private:
 
 // How much the surface bends along u and along v at (u, v): the normal curvatures of the
 // parameter directions (1/mm; magnitudes). Exact on the elementary surfaces; on the others
-// from the turn of the unit normal over a small step each way.
+// from the turn of the unit normal over a small step each way (a B-spline's points from its
+// fixed-point patches).
 void bending(const Pack& pack, const Surface& S, const pack::Face& F, float u, float v, const SurfacePoint& at,
-             float& ku, float& kv) {
+             PatchCache& patches, float& ku, float& kv) {
     const float* q = pack.floats().data() + S.params;
     ku = kv = 0;
     switch (SurfaceType(S.type)) {
@@ -133,7 +134,8 @@ void bending(const Pack& pack, const Surface& S, const pack::Face& F, float u, f
     default: break;
     }
     auto turn = [&](float du, float dv) { // |n(+) - n(-)| / |S(+) - S(-)|
-        const SurfacePoint a = eval_surface(pack, S, u + du, v + dv), b = eval_surface(pack, S, u - du, v - dv);
+        auto eval = [&](float x, float y) { return patches.usable() ? patches.point_and_derivatives(x, y) : eval_surface(pack, S, x, y); };
+        const SurfacePoint a = eval(u + du, v + dv), b = eval(u - du, v - dv);
         const Vec3 na = normalized(cross(a.du, a.dv)), nb = normalized(cross(b.du, b.dv));
         const float d = length(a.p - b.p);
         return d > 0 ? length(na - nb) / d : 0.0f;
@@ -251,12 +253,13 @@ Result FaceJob::prepare() {
     //    fillet's triangles run around its ring), as the deviation allows.
     detail::Grid& grid = grid_;
     const float um = 0.5f * (F.uv_min[0] + F.uv_max[0]), vm = 0.5f * (F.uv_min[1] + F.uv_max[1]);
-    const SurfacePoint mid = eval_surface(pack, S, um, vm);
+    PatchCache patches(pack, S, sc.patches); // (the patches stay for refinement and normals)
+    const SurfacePoint mid = patches.usable() ? patches.point_and_derivatives(um, vm) : eval_surface(pack, S, um, vm);
     grid.su = length(mid.du), grid.sv = length(mid.dv);
     if (!(grid.su > 1e-9f)) grid.su = 1;
     if (!(grid.sv > 1e-9f)) grid.sv = 1;
     float ku, kv;
-    bending(pack, S, F, um, vm, mid, ku, kv);
+    bending(pack, S, F, um, vm, mid, patches, ku, kv);
     const float kmax = std::max(ku, kv);
     if (kmax > 0) {
         constexpr float kMinWeight = 0.125f; // at most 8:1 stretch

@@ -138,42 +138,58 @@ void check_surface(const Pack& pack, uint32_t s, double diagonal, std::vector<ui
     if (rel > w.derivative || rel != rel) w.derivative = rel;
 }
 
-// A 3D B-spline curve's point and derivative, in double.
-void curve_reference(const float* q, float t, double p[3], double d[3]) {
-    const detail::BSplineCurveView C(q, 3);
+// A B-spline curve's point and derivative (dim 2 or 3), in double.
+void curve_reference(const float* q, int dim, float t, double p[3], double d[3]) {
+    const detail::BSplineCurveView C(q, dim);
     double N[kMaxDegree + 1], dN[kMaxDegree + 1];
     const int s = detail::basis<double>(C.knots, C.n, C.p, t, C.periodic, N, dN);
     double A[4] = {}, dA[4] = {};
     for (int j = 0; j <= C.p; ++j) {
         const int i = s - C.p + j;
         const double w = C.rational ? C.weights[i] : 1.0;
-        const double H[4] = {C.poles[3 * i] * w, C.poles[3 * i + 1] * w, C.poles[3 * i + 2] * w, w};
+        double H[4] = {0, 0, 0, w};
+        for (int k = 0; k < dim; ++k) H[k] = C.poles[dim * i + k] * w;
         for (int k = 0; k < 4; ++k) A[k] += N[j] * H[k], dA[k] += dN[j] * H[k];
     }
     for (int k = 0; k < 3; ++k) p[k] = A[k] / A[3], d[k] = (dA[k] - p[k] * dA[3]) / A[3];
 }
 
-// The fixed-point curve spans (CurveSpans: the edge sampler's B-splines) against
-// the curve in double, over every knot, quarter points and past the ends; the same bounds.
-void check_curve(const Pack& pack, uint32_t c, double diagonal, Worst& w) {
-    const pack::Curve& C = pack.curves3()[c];
+// The fixed-point curve spans (CurveSpans: the edge sampler's 3D B-splines and the loops'
+// B-spline pcurves) against the curve in double, over every knot, quarter points and past the
+// ends; the same bounds (a pcurve's over its own size: the larger of its extent and its
+// largest coordinate, since its points come back as floats, rounded relative to their size).
+void check_curve(const Pack& pack, const pack::Curve& C, uint32_t c, double diagonal, Worst& w) {
     CurveSpans spans;
     spans.bind(pack, C);
     if (!spans.usable()) return;
     ++w.surfaces;
+    const int dim = C.dim;
     const float* q = pack.floats().data() + C.params;
-    const detail::BSplineCurveView V(q, 3);
+    const detail::BSplineCurveView V(q, dim);
+    if (dim == 2) { // the pcurve's own size
+        double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300}, big = 0;
+        for (int i = 0; i < V.n; ++i) {
+            for (int k = 0; k < 2; ++k) {
+                const double x = V.poles[2 * i + k];
+                lo[k] = std::min(lo[k], x), hi[k] = std::max(hi[k], x), big = std::max(big, std::fabs(x));
+            }
+        }
+        diagonal = std::max({std::hypot(hi[0] - lo[0], hi[1] - lo[1]), big, 1e-30});
+    }
     double largest = 0, off = 0;
     for (float t : params(V.knots, V.k)) {
         double p[3], d[3];
-        curve_reference(q, t, p, d);
-        const Vec3 a = spans.point(t);
-        const Curve3Point b = spans.point_and_derivative(t);
+        curve_reference(q, dim, t, p, d);
+        std::vector<Vec3> got;
+        if (dim == 3) got = {spans.point(t), spans.point_and_derivative(t).p};
+        else got = {Vec3{spans.point2(t).x, spans.point2(t).y, 0}};
         ++w.points;
-        for (Vec3 x : {a, b.p}) {
+        for (Vec3 x : got) {
             const double e = std::sqrt((x.x - p[0]) * (x.x - p[0]) + (x.y - p[1]) * (x.y - p[1]) + (x.z - p[2]) * (x.z - p[2])) / diagonal;
             if (e > w.error || e != e) w.error = e, w.surface = c, w.u = t;
         }
+        if (dim == 2) continue; // (pcurves: positions only)
+        const Curve3Point b = spans.point_and_derivative(t);
         float tt = t;
         const int s = detail::find_span(V.knots, V.n, V.p, tt, V.periodic);
         largest = std::max(largest, std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]));
@@ -236,17 +252,20 @@ int main(int argc, char** argv) {
                     bad ? "FAIL" : "ok", std::filesystem::path(f).filename().c_str(), big.surfaces, big.skipped,
                     kMaxBezierDegree, big.points, worst, w.surface, double(w.u), double(w.v), big.derivative, big.unresolved,
                     big.error != small.error ? "; a one-patch cache differs" : "");
-        Worst curves;
-        for (uint32_t c = 0; c < pack.curves3().size(); ++c) check_curve(pack, c, diagonal, curves);
-        const bool bad_curve = !(curves.error <= kBound) || !(curves.derivative <= kDerivativeBound);
-        failed |= bad_curve;
-        if (curves.surfaces) {
-            std::printf("%s %s: %u B-spline curves in fixed point (degrees up to %d), %u points; largest difference %.2e "
-                        "of the diagonal (curve %u at %g), of the derivatives %.2e of the largest (%u points on "
+        for (int dim : {3, 2}) {
+            Worst curves;
+            const auto list = dim == 3 ? pack.curves3() : pack.curves2();
+            for (uint32_t c = 0; c < list.size(); ++c) check_curve(pack, list[c], c, diagonal, curves);
+            const bool bad_curve = !(curves.error <= kBound) || !(curves.derivative <= kDerivativeBound);
+            failed |= bad_curve;
+            if (!curves.surfaces) continue;
+            std::printf("%s %s: %u B-spline %s in fixed point (degrees up to %d), %u points; largest difference %.2e "
+                        "of the %s (curve %u at %g), of the derivatives %.2e of the largest (%u points on "
                         "unresolved spans)\n",
                         bad_curve ? "FAIL" : "ok", std::filesystem::path(f).filename().c_str(), curves.surfaces,
-                        kMaxBezierDegree, curves.points, curves.error, curves.surface,
-                        double(curves.u), curves.derivative, curves.unresolved);
+                        dim == 3 ? "curves" : "pcurves", kMaxBezierDegree, curves.points, curves.error,
+                        dim == 3 ? "diagonal" : "pcurve's size", curves.surface, double(curves.u), curves.derivative,
+                        curves.unresolved);
         }
     }
     return failed ? 1 : 0;

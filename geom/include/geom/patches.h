@@ -96,20 +96,22 @@ class CurveSpans {
 public:
     static constexpr int kSlots = 4;
 
-    // Takes curve c of the pack (a 3D curve); usable() when it is a B-spline of a degree up to
-    // kMaxBezierDegree. Forgets the last curve's spans.
-    void bind(const Pack& pack, const pack::Curve& c);
+    // Takes curve c of the pack (a 3D curve or a pcurve); usable() when it is a B-spline of a
+    // degree from min_degree to kMaxBezierDegree. Forgets the last curve's spans.
+    void bind(const Pack& pack, const pack::Curve& c, int min_degree = 1);
     bool usable() const { return usable_; }
-    // The same values as eval_curve3 (within the fixed point's rounding: ~1e-8 of a span's extent).
+    // The same values as eval_curve3 and eval_curve2 (within the fixed point's rounding: ~1e-8
+    // of a span's extent). A 3D curve's, and a pcurve's position.
     Vec3 point(float t);
     Curve3Point point_and_derivative(float t);
+    Vec2 point2(float t);
     uint32_t conversions() const { return conversions_; }
 
 private:
     struct Slot {
         int32_t span;
         uint32_t exps;     // a signed byte per coordinate
-        float origin[3];   // the span's first pole
+        float origin[3];   // the span's first pole (x, y on a pcurve)
         float per_span;    // 2^30 over the span's length
         int32_t c[(kMaxBezierDegree + 1) * 4]; // Bézier points [i][d], homogeneous if rational
     };
@@ -117,10 +119,12 @@ private:
     void extract(int span, Slot& s) const;
     // The curve's coordinates (and, if diff, their last differences) at q in [0, 2^30].
     void bezier_at(const Slot& s, int32_t q, int32_t* out, int32_t* diff) const;
+    // The coordinates at t, unscaled, relative to the span's origin (homogeneous if rational).
+    const Slot& coordinates(float t, float* f);
 
     Slot slots_[kSlots];
     const float *knots_ = nullptr, *poles_ = nullptr, *weights_ = nullptr;
-    int p_ = 0, n_ = 0;
+    int p_ = 0, n_ = 0, dim_ = 3, dims_ = 3; // dims_: dim_, and the weight if rational
     bool rational_ = false, periodic_ = false, usable_ = false;
     uint32_t conversions_ = 0;
     int last_ = -1; // the slot of the last point
