@@ -104,21 +104,39 @@ void extract_span(const float* knots, int p, int s, float* row, int stride, int 
         for (int d = 0; d < dims; ++d) row[i * stride + d] = Q[span_at - p + i][d];
 }
 
-// A Bézier curve's point by de Casteljau, in place over c[0..n] (lerps of numbers under 2^29
-// in magnitude: differences under 2^30, never overflowing).
-inline int32_t casteljau(int32_t* c, int n, int32_t t) {
-    for (int r = n; r > 0; --r)
-        for (int i = 0; i < r; ++i) c[i] += mulq(c[i + 1] - c[i], t);
-    return c[0];
+// The Bernstein basis of degree n at q in [0, 2^30] (B[0..n], 2^30 = 1) and, if Bd is not null,
+// of degree n - 1 (Bd[0..n-1]): the triangle B_i,k = (1 - t) B_i,k-1 + t B_i-1,k-1, convex
+// combinations of numbers in [0, 2^30] that stay there. Computed once for a parameter, it
+// serves every row of coefficients evaluated at it: a point is then one sum of products per
+// row, not de Casteljau's n (n + 1) / 2 steps per row.
+inline void bernstein(int n, int32_t q, int32_t* B, int32_t* Bd) {
+    B[0] = kOneQ;
+    for (int k = 1; k <= n; ++k) {
+        if (k == n && Bd)
+            for (int i = 0; i < n; ++i) Bd[i] = B[i];
+        int32_t carried = 0; // t B_i-1,k-1
+        for (int i = 0; i < k; ++i) {
+            const int32_t b = B[i], tb = mulq(b, q);
+            B[i] = b - tb + carried;
+            carried = tb;
+        }
+        B[k] = carried;
+    }
 }
 
-// The same, stopping one level short: the point, and the difference of the last two points
-// (the derivative over the degree).
-inline int32_t casteljau_d(int32_t* c, int n, int32_t t, int32_t& diff) {
-    for (int r = n; r > 1; --r)
-        for (int i = 0; i < r; ++i) c[i] += mulq(c[i + 1] - c[i], t);
-    diff = c[1] - c[0];
-    return c[0] + mulq(diff, t);
+// sum of B[i] c[i * stride], i = 0..n, rounded back from 2^30 (|c| < 2^29: each product under
+// 2^59, the sum under 2^63).
+inline int32_t combine(const int32_t* B, const int32_t* c, int stride, int n) {
+    int64_t x = int64_t(1) << 29;
+    for (int i = 0; i <= n; ++i) x += int64_t(B[i]) * c[i * stride];
+    return int32_t(x >> 30);
+}
+
+// sum of Bd[i] (c[i+1] - c[i]), i = 0..n-1: the derivative over the degree.
+inline int32_t combine_differences(const int32_t* Bd, const int32_t* c, int stride, int n) {
+    int64_t x = int64_t(1) << 29;
+    for (int i = 0; i < n; ++i) x += int64_t(Bd[i]) * (c[(i + 1) * stride] - c[i * stride]);
+    return int32_t(x >> 30);
 }
 
 // The exponent e that puts the largest magnitude `big` under 2^bits: big * 2^e < 2^bits (0 for
@@ -338,7 +356,8 @@ void PatchCache::convert_bezier(int su, int sv, uint32_t* slot) {
     for (int b = 0; b <= pv_; ++b) extract_span(uk_, pu_, su, f + b * dims, row * dims, dims);
     for (int a = 0; a <= pu_; ++a) extract_span(vk_, pv_, sv, f + a * row * dims, dims, dims);
     // Each coordinate with the largest exponent that keeps its largest magnitude under 2^28
-    // (de Casteljau's points stay in the net's hull: nothing grows past it).
+    // (the Bernstein sums are convex combinations: they stay in the net's hull, and the
+    // differences for derivatives under 2^29).
     const int per = (pu_ + 1) * row;
     uint32_t exps = 0;
     for (int d = 0; d < dims; ++d) {
@@ -377,27 +396,22 @@ const uint32_t* PatchCache::locate(float& u, float& v, int32_t& qs, int32_t& qt)
 void PatchCache::bezier(const uint32_t* slot, int32_t qs, int32_t qt, int32_t* out, int32_t* ds, int32_t* dt) const {
     const int32_t* c = reinterpret_cast<const int32_t*>(slot + kHead);
     const int dims = rational_ ? 4 : 3, row = pv_ + 1;
-    // Reduce the higher degree first: each of the other direction's lines costs its own
-    // degree squared over two, and the last reduction is one line of the other degree
-    // (6 x 10: 11 columns in s then a row in t, 286 steps, not 406).
-    const bool s_first = (pv_ + 1) * pu_ * (pu_ + 1) + pv_ * (pv_ + 1) < (pu_ + 1) * pv_ * (pv_ + 1) + pu_ * (pu_ + 1);
+    // Each line of the higher degree's direction (inner) to a point, then those points (outer).
+    const bool s_first = pu_ >= pv_;
     const int lines = s_first ? pv_ + 1 : pu_ + 1, inner = s_first ? pu_ : pv_, outer = s_first ? pv_ : pu_;
     const int step_line = s_first ? dims : row * dims, step_in = s_first ? row * dims : dims;
-    const int32_t q_in = s_first ? qs : qt, q_out = s_first ? qt : qs;
-    int32_t V[kBN], Dn[kBN], r[kBN], d_in = 0, d_out = 0;
+    int32_t Bi[kBN], Bdi[kBN], Bo[kBN], Bdo[kBN], V[kBN], Dn[kBN];
+    bernstein(inner, s_first ? qs : qt, Bi, ds ? Bdi : nullptr);
+    bernstein(outer, s_first ? qt : qs, Bo, ds ? Bdo : nullptr);
     for (int d = 0; d < dims; ++d) {
-        // Each line's point in the inner parameter (and its difference), then theirs in the outer.
         for (int k = 0; k < lines; ++k) {
-            const int32_t* src = c + k * step_line + d;
-            for (int l = 0; l <= inner; ++l) r[l] = src[l * step_in];
-            V[k] = ds ? casteljau_d(r, inner, q_in, Dn[k]) : casteljau(r, inner, q_in);
+            const int32_t* line = c + k * step_line + d;
+            V[k] = combine(Bi, line, step_in, inner);
+            if (ds) Dn[k] = combine_differences(Bdi, line, step_in, inner);
         }
-        if (!ds) {
-            out[d] = casteljau(V, outer, q_out);
-            continue;
-        }
-        out[d] = casteljau_d(V, outer, q_out, d_out);
-        d_in = casteljau(Dn, outer, q_out);
+        out[d] = combine(Bo, V, 1, outer);
+        if (!ds) continue;
+        const int32_t d_out = combine_differences(Bdo, V, 1, outer), d_in = combine(Bo, Dn, 1, outer);
         ds[d] = s_first ? d_in : d_out, dt[d] = s_first ? d_out : d_in;
     }
 }
@@ -511,7 +525,7 @@ void CurveSpans::extract(int span, Slot& slot) const {
     for (int d = 0; d < dims; ++d) {
         float big = 0;
         for (int i = 0; i <= p_; ++i) big = larger_magnitude(big, f[i * dims + d]);
-        const int e = std::min(fixed_exponent(big, 28), 100); // de Casteljau stays in the hull
+        const int e = std::min(fixed_exponent(big, 28), 100); // (as the patches': convex sums)
         exps |= exponent_bits(e, d);
         for (int i = 0; i <= p_; ++i) slot.c[i * dims + d] = to_fixed(f[i * dims + d], e);
     }
@@ -539,10 +553,11 @@ const CurveSpans::Slot& CurveSpans::slot_of(float& t, int32_t& q) {
 }
 
 void CurveSpans::bezier_at(const Slot& slot, int32_t q, int32_t* out, int32_t* diff) const {
-    int32_t r[kBN];
+    int32_t B[kBN], Bd[kBN];
+    bernstein(p_, q, B, diff ? Bd : nullptr);
     for (int d = 0; d < dims_; ++d) {
-        for (int i = 0; i <= p_; ++i) r[i] = slot.c[i * dims_ + d];
-        out[d] = diff ? casteljau_d(r, p_, q, diff[d]) : casteljau(r, p_, q);
+        out[d] = combine(B, slot.c + d, dims_, p_);
+        if (diff) diff[d] = combine_differences(Bd, slot.c + d, dims_, p_);
     }
 }
 

@@ -16,7 +16,8 @@
 //
 // Past kMaxPatchDegree the power basis loses too much in fixed point: a surface of degree up
 // to kMaxBezierDegree has its spans extracted to Bézier form instead (knot insertion, in
-// float, once per span) and evaluated by de Casteljau in int32. A surface the cache cannot
+// float, once per span) and evaluated in int32 as sums of the Bernstein basis (made once per
+// parameter by its own de Casteljau triangle, then shared by every row). A surface the cache cannot
 // take (not a B-spline, a degree over kMaxBezierDegree, too little memory for one patch)
 // says so (usable() false) and the caller evaluates it in float.
 #include "geom/eval.h"
@@ -29,7 +30,7 @@
 namespace facet::geom {
 
 constexpr int kMaxPatchDegree = 7;   // up to this degree: power form, Horner
-constexpr int kMaxBezierDegree = 15; // beyond it up to this one: Bézier form, de Casteljau
+constexpr int kMaxBezierDegree = 15; // beyond it up to this one: Bézier form, Bernstein sums
 
 class PatchCache {
 public:
@@ -89,8 +90,8 @@ private:
 // divisions a point (about 100 instructions each in soft float) and the sum as many again; here
 // each knot span a point falls in is extracted to Bézier form once (as PatchCache does for
 // surfaces of high degree, in float) into one of a few slots kept in the object, and a point is
-// de Casteljau in int32, one int-to-float conversion per coordinate and, if rational, one
-// division. An edge's samples walk along it, so most points hit the last span: on the ARM926
+// a Bernstein sum per coordinate in int32, one int-to-float conversion per coordinate and, if
+// rational, one division. An edge's samples walk along it, so most points hit the last span: on the ARM926
 // this pays from the first few points of a span, cubics included.
 class CurveSpans {
 public:
