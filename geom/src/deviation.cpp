@@ -52,7 +52,7 @@ float distance_to_surface(const Pack& pack, uint32_t face, Vec3 p, Vec2 uv_guess
     if (is_elementary(S)) {
         const Vec3 d = p - v3(q);
         const float x = dot(d, v3(q + 3)), y = dot(d, v3(q + 6)), z = dot(d, v3(q + 9));
-        const float rho = std::sqrt(x * x + y * y);
+        const float rho = sqrt_f(x * x + y * y);
         switch (SurfaceType(S.type)) {
         case SurfaceType::Plane: return std::fabs(z);
         case SurfaceType::Cylinder: return std::fabs(rho - q[12]);
@@ -65,11 +65,11 @@ float distance_to_surface(const Pack& pack, uint32_t face, Vec3 p, Vec2 uv_guess
             const float far_side = std::fabs((-rho - q[12]) * ca - z * sa);
             return std::min(near_side, far_side);
         }
-        case SurfaceType::Sphere: return std::fabs(std::sqrt(rho * rho + z * z) - q[12]);
+        case SurfaceType::Sphere: return std::fabs(sqrt_f(rho * rho + z * z) - q[12]);
         case SurfaceType::Torus: {
             const float R = q[12], r = q[13];
-            const float a = std::fabs(std::sqrt((rho - R) * (rho - R) + z * z) - r);
-            const float b = std::fabs(std::sqrt((rho + R) * (rho + R) + z * z) - r); // the far side of the axis
+            const float a = std::fabs(sqrt_f((rho - R) * (rho - R) + z * z) - r);
+            const float b = std::fabs(sqrt_f((rho + R) * (rho + R) + z * z) - r); // the far side of the axis
             return std::min(a, b);
         }
         default: break;

@@ -180,10 +180,8 @@ SurfacePoint eval_surface(const Pack& pack, const Surface& s, float u, float v) 
         };
         float su, cu;
         sincos_f(u, su, cu);
-        const Vec3 rel = c.p - O;
-        const Vec3 p = O + rotate(rel, cu, su);
-        const Vec3 pu = cross(D, rotate(rel, cu, su));
-        return {p, pu, rotate(c.d, cu, su)};
+        const Vec3 turned = rotate(c.p - O, cu, su);
+        return {O + turned, cross(D, turned), rotate(c.d, cu, su)};
     }
     case SurfaceType::Extrusion: {
         const Curve3Point c = eval_curve3(pack, pack.curves3()[s.ref], u);
@@ -195,9 +193,21 @@ SurfacePoint eval_surface(const Pack& pack, const Surface& s, float u, float v) 
 }
 
 Vec3 eval_surface_point(const Pack& pack, const Surface& s, float u, float v) {
-    if (SurfaceType(s.type) != SurfaceType::BSpline) return eval_surface(pack, s, u, v).p;
+    const float* q = pack.floats().data() + s.params;
+    switch (SurfaceType(s.type)) {
+    case SurfaceType::Revolution: { // as eval_surface's, without the derivatives (the same value)
+        const Vec3 O = v3(q), D = normalized(v3(q + 3));
+        const Vec3 rel = eval_curve3_point(pack, pack.curves3()[s.ref], v) - O;
+        float su, cu;
+        sincos_f(u, su, cu);
+        return O + (rel * cu + cross(D, rel) * su + D * (dot(D, rel) * (1 - cu)));
+    }
+    case SurfaceType::Extrusion: return eval_curve3_point(pack, pack.curves3()[s.ref], u) + v3(q) * v;
+    case SurfaceType::BSpline: break;
+    default: return eval_surface(pack, s, u, v).p;
+    }
     // The position alone: basis values without derivatives, one weighted sum of the poles.
-    const BSplineSurfaceView B(pack.floats().data() + s.params);
+    const BSplineSurfaceView B(q);
     const int pu = B.pu, pv = B.pv, nv = B.nv;
     const bool rational = B.rational;
     const float *poles = B.poles, *weights = B.weights;
@@ -236,7 +246,7 @@ namespace {
 // R + r cos v = rho) or on the other side (which = 1: R + r cos v = -rho, possible only on a
 // self-intersecting torus, r > R). Angles are placed within pi of the face's middle.
 Vec2 torus_candidate(const float* q, float x, float y, float z, const float uv_min[2], const float uv_max[2], int which) {
-    const float R = q[12], rho = std::sqrt(x * x + y * y), u1 = atan2_f(y, x);
+    const float R = q[12], rho = sqrt_f(x * x + y * y), u1 = atan2_f(y, x);
     const float um = 0.5f * (uv_min[0] + uv_max[0]), vm = 0.5f * (uv_min[1] + uv_max[1]);
     auto near = [](float a, float mid) {
         float r = std::fmod(a - (mid - kTwoPi / 2), kTwoPi);
@@ -292,7 +302,7 @@ bool invert_elementary(const Pack& pack, const Surface& s, Vec3 P, const float u
         return true;
     }
     case SurfaceType::Sphere:
-        uv = {wrap(atan2_f(y, x), uv_min[0]), atan2_f(z, std::sqrt(x * x + y * y))};
+        uv = {wrap(atan2_f(y, x), uv_min[0]), atan2_f(z, sqrt_f(x * x + y * y))};
         return true;
     case SurfaceType::Torus: {
         const Vec2 c[2] = {torus_candidate(q, x, y, z, uv_min, uv_max, 0), torus_candidate(q, x, y, z, uv_min, uv_max, 1)};

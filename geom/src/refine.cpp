@@ -164,21 +164,21 @@ struct Context {
         const float a = dot(d, {q[3], q[4], q[5]}), b = dot(d, {q[6], q[7], q[8]}), z = dot(d, {q[9], q[10], q[11]});
         const float rho2 = a * a + b * b;
         switch (type) {
-        case SurfaceType::Cylinder: return std::sqrt(rho2) - q[12];
+        case SurfaceType::Cylinder: return sqrt_f(rho2) - q[12];
         case SurfaceType::Cone: {
             // In the half-plane through the axis and x, the cone is the line (R + v sin a,
             // v cos a); past the apex its radius is negative: x is then nearer the mirror line.
-            const float rho = std::sqrt(rho2);
+            const float rho = sqrt_f(rho2);
             const float near_side = (rho - q[12]) * cos_a - z * sin_a, far_side = (-rho - q[12]) * cos_a - z * sin_a;
             return std::fabs(near_side) <= std::fabs(far_side) ? near_side : far_side;
         }
-        case SurfaceType::Sphere: return std::sqrt(rho2 + z * z) - q[12];
+        case SurfaceType::Sphere: return sqrt_f(rho2 + z * z) - q[12];
         case SurfaceType::Torus: {
             // The tube on x's side of the axis, or (a self-intersecting torus) the other side's.
-            const float rho = std::sqrt(rho2), w = rho - q[12];
-            const float e = std::sqrt(w * w + z * z) - q[13];
+            const float rho = sqrt_f(rho2), w = rho - q[12];
+            const float e = sqrt_f(w * w + z * z) - q[13];
             if (q[13] <= q[12]) return e;
-            const float w2 = rho + q[12], e2 = std::sqrt(w2 * w2 + z * z) - q[13];
+            const float w2 = rho + q[12], e2 = sqrt_f(w2 * w2 + z * z) - q[13];
             return std::fabs(e) <= std::fabs(e2) ? e : e2;
         }
         default: return z; // plane
@@ -338,8 +338,8 @@ Result refine(const Pack& pack, uint32_t fi, const TessOptions& opt, const Grid&
             spent += visited / 16;
             if (st.next < st.triangles) return busy;
 #ifdef FACET_DEBUG_REFINE
-            std::fprintf(stderr, "face %u round %u worst %g target %g tris %u\n", fi, st.round, std::sqrt(st.worst),
-                         std::sqrt(ctx.target2), st.triangles);
+            std::fprintf(stderr, "face %u round %u worst %g target %g tris %u\n", fi, st.round, sqrt_f(st.worst),
+                         sqrt_f(ctx.target2), st.triangles);
 #endif
             if (st.worst <= ctx.target2) return {};
             // Worst first: a point into every triangle above half the worst deviation; but
@@ -384,7 +384,7 @@ Result refine(const Pack& pack, uint32_t fi, const TessOptions& opt, const Grid&
             }
             if (!placed) {
 #ifdef FACET_DEBUG_REFINE
-                std::fprintf(stderr, "  not placed: tri %u err %g\n", st.next, std::sqrt(m.error2));
+                std::fprintf(stderr, "  not placed: tri %u err %g\n", st.next, sqrt_f(m.error2));
 #endif
                 m.error2 = 0; // nowhere to put a point: leave it as it is
                 continue;

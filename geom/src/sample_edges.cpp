@@ -13,8 +13,8 @@ using namespace facet::pack;
 
 float detail::max_arc_angle(float r, float tol) {
     if (!(r > 0) || tol >= 2 * r) return 4 * kPi;
-    const float s = std::sqrt(tol / (2 * r)); // sin(a/4)
-    return 4 * atan2_f(s, std::sqrt(1 - s * s));
+    const float s = sqrt_f(tol / (2 * r)); // sin(a/4)
+    return 4 * atan2_f(s, sqrt_f(1 - s * s));
 }
 
 namespace {
@@ -209,7 +209,7 @@ Result EdgeSampler::run(uint32_t units) {
             // k pieces: sag / k^2 <= tol, at least 2.
             int k = 2;
             if (sag2 > 4 * tol2_) { // (in float first: the ratio is huge on a corrupt curve)
-                const float pieces = std::ceil(std::sqrt(std::sqrt(sag2 / tol2_)) * 1.05f);
+                const float pieces = std::ceil(sqrt_f(sqrt_f(sag2 / tol2_)) * 1.05f);
                 k = pieces < float(limit) ? int(pieces) : limit;
             }
             k = std::clamp(k, 2, limit);

@@ -263,8 +263,8 @@ Result FaceJob::prepare() {
     const float kmax = std::max(ku, kv);
     if (kmax > 0) {
         constexpr float kMinWeight = 0.125f; // at most 8:1 stretch
-        grid.su *= std::max(std::sqrt(ku / kmax), kMinWeight);
-        grid.sv *= std::max(std::sqrt(kv / kmax), kMinWeight);
+        grid.su *= std::max(sqrt_f(ku / kmax), kMinWeight);
+        grid.sv *= std::max(sqrt_f(kv / kmax), kMinWeight);
     }
 
     // 3. Quantize to the CDT grid: the loops' extent spans 2^15 units, inside the CDT's

@@ -22,6 +22,51 @@ inline float pow2_f(int e) { return std::bit_cast<float>(uint32_t(e + 127) << 23
 // The e with 2^(e-1) <= x < 2^e for a positive normal float x (frexp's exponent), from its bits.
 inline int exponent_f(float x) { return int((std::bit_cast<uint32_t>(x) >> 23) & 0xFF) - 126; }
 
+namespace detail {
+// 1/sqrt(A) at the middle of each sixteenth of [1, 4) (index 16 A), in Q31: sqrt_f's start.
+struct RsqrtTable {
+    uint32_t v[64] = {};
+    constexpr RsqrtTable() {
+        for (int i = 16; i < 64; ++i) {
+            const double A = (i + 0.5) / 16;
+            double r = A; // sqrt A by Newton (in double, at compile time)
+            for (int k = 0; k < 60; ++k) r = 0.5 * (r + A / r);
+            v[i] = uint32_t(2147483648.0 / r + 0.5);
+        }
+    }
+};
+inline constexpr RsqrtTable kRsqrt{};
+} // namespace detail
+
+// sqrt x, correctly rounded (the same bits as IEEE sqrt, checked on every positive normal
+// float) from integer multiplies: newlib's soft-float sqrtf takes about 290 instructions on the
+// ARM926 (a bit at a time), this about 50. 1/sqrt of the mantissa from a table and two Newton
+// steps in Q30/Q31, times the mantissa, then the root made exact by integer squares and
+// rounded (no ties: the radicand is whole). Zeros, subnormals, negatives, infinities and NaN
+// (rare here) go to std::sqrt.
+inline float sqrt_f(float x) {
+    const uint32_t b = std::bit_cast<uint32_t>(x);
+    const int e = int(b >> 23); // sign and biased exponent
+    if (e == 0 || e >= 0xFF) return std::sqrt(x);
+    const int ex = e - 127, odd = ex & 1;
+    // x = M 2^(ex - odd - 23) with M in [2^23, 2^25): sqrt x = sqrt(M 2^23) 2^((ex - odd) / 2 - 23).
+    const uint32_t M = ((b & 0x7FFFFFu) | 0x800000u) << odd;
+    const uint32_t a = M << 7; // A = a / 2^30 in [1, 4)
+    uint32_t y = detail::kRsqrt.v[a >> 26]; // 1/sqrt A in Q31, to 6 bits
+    for (int k = 0; k < 2; ++k) { // y (3 - A y^2) / 2: 6, 12, 24 bits
+        const uint32_t y2 = uint32_t((uint64_t(y) * y) >> 32);   // Q30
+        const uint32_t ay2 = uint32_t((uint64_t(a) * y2) >> 30); // Q30, about 1
+        y = uint32_t((uint64_t(y) * ((3u << 30) - ay2)) >> 31);  // Q31
+    }
+    const uint64_t N = uint64_t(M) << 23; // the root's radicand: r = sqrt N in [2^23, 2^24)
+    uint32_t r = uint32_t((uint64_t(a) * y) >> 38);
+    while (uint64_t(r) * r > N) --r; // (at most a step or two either way)
+    while (uint64_t(r + 1) * (r + 1) <= N) ++r;
+    if (N - uint64_t(r) * r > r) ++r; // N > r^2 + r: nearer r + 1
+    // r carries the leading one (r = 2^24 after rounding carries into the exponent).
+    return std::bit_cast<float>((uint32_t((ex - odd) / 2 + 126) << 23) + r);
+}
+
 // sin x and cos x, one reduction for both.
 inline void sincos_f(float x, float& s, float& c) {
     if (!(std::fabs(x) < 8192.0f)) {

@@ -1,5 +1,7 @@
 #pragma once
 // Small float vectors for the geometry code.
+#include "geom/fmath.h"
+
 #include <cmath>
 
 namespace facet::geom {
@@ -17,7 +19,7 @@ inline Vec3 operator*(Vec3 a, float s) { return {a.x * s, a.y * s, a.z * s}; }
 inline float dot(Vec3 a, Vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 inline Vec3 cross(Vec3 a, Vec3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
 inline float length2(Vec3 a) { return dot(a, a); } // squared: compare against a squared tolerance
-inline float length(Vec3 a) { return std::sqrt(length2(a)); }
+inline float length(Vec3 a) { return sqrt_f(length2(a)); }
 inline Vec3 normalized(Vec3 a) {
     const float l = length(a);
     return l > 0 ? a * (1.0f / l) : Vec3{0, 0, 0};
