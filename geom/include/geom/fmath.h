@@ -44,7 +44,7 @@ inline constexpr RsqrtTable kRsqrt{};
 // steps in Q30/Q31, times the mantissa, then the root made exact by integer squares and
 // rounded (no ties: the radicand is whole). Zeros, subnormals, negatives, infinities and NaN
 // (rare here) go to std::sqrt.
-inline float sqrt_f(float x) {
+inline float sqrt_by_integers(float x) {
     const uint32_t b = std::bit_cast<uint32_t>(x);
     const int e = int(b >> 23); // sign and biased exponent
     if (e == 0 || e >= 0xFF) return std::sqrt(x);
@@ -65,6 +65,16 @@ inline float sqrt_f(float x) {
     if (N - uint64_t(r) * r > r) ++r; // N > r^2 + r: nearer r + 1
     // r carries the leading one (r = 2^24 after rounding carries into the exponent).
     return std::bit_cast<float>((uint32_t((ex - odd) / 2 + 126) << 23) + r);
+}
+
+// sqrt x, correctly rounded: by integers on an ARM core without an FPU, else the FPU's own
+// instruction (the Cortex-M7's vsqrt, the host's): the same bits either way.
+inline float sqrt_f(float x) {
+#if defined(__ARM_ARCH) && !defined(__ARM_FP)
+    return sqrt_by_integers(x);
+#else
+    return std::sqrt(x);
+#endif
 }
 
 // sin x and cos x, one reduction for both.
