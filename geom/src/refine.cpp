@@ -238,14 +238,17 @@ struct Context {
         float largest = 0;
         const uint32_t conversions = patches.conversions();
         cost = type <= SurfaceType::Torus || patches.usable() ? 3 : 30;
-        if (elementary) {
+        auto sample = [&](const auto* X, auto error) { // X: the corners in 3D or in (u,v)
             for (int k = 0; k < 3; ++k) {
                 const int i = (k + 1) % 3, j = (k + 2) % 3;
-                const Vec3 third = (P[i] - P[j]) * (1.0f / 3);
-                e[2 * k] = elementary_error(P[j] + (third + third));
-                e[2 * k + 1] = elementary_error(P[j] + third);
+                const auto third = (X[i] - X[j]) * (1.0f / 3);
+                e[2 * k] = error(X[j] + (third + third));
+                e[2 * k + 1] = error(X[j] + third);
             }
-            e[6] = elementary_error((P[0] + P[1] + P[2]) * (1.0f / 3));
+            e[6] = error((X[0] + X[1] + X[2]) * (1.0f / 3));
+        };
+        if (elementary) {
+            sample(P, [&](Vec3 x) { return elementary_error(x); });
         } else {
             // Signed deviation from a free-form surface: from the surface point at the sample's
             // parameters, along the triangle's unit normal (near the surface's where it matters,
@@ -253,14 +256,7 @@ struct Context {
             // far as its corner.
             const Vec3 normal = normalized(cross(e1, e2));
             const float level = dot(normal, P[0]);
-            auto error = [&](Vec2 uv) { return level - dot(normal, point(uv)); };
-            for (int k = 0; k < 3; ++k) {
-                const int i = (k + 1) % 3, j = (k + 2) % 3;
-                const Vec2 third = (UV[i] - UV[j]) * (1.0f / 3);
-                e[2 * k] = error(UV[j] + (third + third));
-                e[2 * k + 1] = error(UV[j] + third);
-            }
-            e[6] = error((UV[0] + UV[1] + UV[2]) * (1.0f / 3));
+            sample(UV, [&](Vec2 uv) { return level - dot(normal, point(uv)); });
         }
         cost += (patches.conversions() - conversions) * kConvertUnits;
         for (float x : e) largest = std::max(largest, std::fabs(x)); // (NaN: not the largest)
