@@ -12,6 +12,9 @@ constexpr float kTwoPi = 6.28318530717958647692f;
 
 Vec3 v3(const float* p) { return {p[0], p[1], p[2]}; }
 
+// w turned about the unit axis D by the angle whose cosine and sine are cu and su (Rodrigues).
+Vec3 turn(Vec3 D, Vec3 w, float cu, float su) { return w * cu + cross(D, w) * su + D * (dot(D, w) * (1 - cu)); }
+
 // A B-spline curve of dimension dim at t: position and derivative (rational by the quotient rule).
 // der null: the position alone (the same value: the same sums, without the derivative's).
 void bspline_curve(const float* prm, int dim, float t, float* pos, float* der) {
@@ -175,13 +178,10 @@ SurfacePoint eval_surface(const Pack& pack, const Surface& s, float u, float v) 
         // C(v) turned by u about the axis (origin O, unit direction D).
         const Vec3 D = normalized(v3(q + 3));
         const Curve3Point c = eval_curve3(pack, pack.curves3()[s.ref], v);
-        auto rotate = [&](Vec3 w, float cu, float su) { // Rodrigues
-            return w * cu + cross(D, w) * su + D * (dot(D, w) * (1 - cu));
-        };
         float su, cu;
         sincos_f(u, su, cu);
-        const Vec3 turned = rotate(c.p - O, cu, su);
-        return {O + turned, cross(D, turned), rotate(c.d, cu, su)};
+        const Vec3 turned = turn(D, c.p - O, cu, su);
+        return {O + turned, cross(D, turned), turn(D, c.d, cu, su)};
     }
     case SurfaceType::Extrusion: {
         const Curve3Point c = eval_curve3(pack, pack.curves3()[s.ref], u);
@@ -197,10 +197,9 @@ Vec3 eval_surface_point(const Pack& pack, const Surface& s, float u, float v) {
     switch (SurfaceType(s.type)) {
     case SurfaceType::Revolution: { // as eval_surface's, without the derivatives (the same value)
         const Vec3 O = v3(q), D = normalized(v3(q + 3));
-        const Vec3 rel = eval_curve3_point(pack, pack.curves3()[s.ref], v) - O;
         float su, cu;
         sincos_f(u, su, cu);
-        return O + (rel * cu + cross(D, rel) * su + D * (dot(D, rel) * (1 - cu)));
+        return O + turn(D, eval_curve3_point(pack, pack.curves3()[s.ref], v) - O, cu, su);
     }
     case SurfaceType::Extrusion: return eval_curve3_point(pack, pack.curves3()[s.ref], u) + v3(q) * v;
     case SurfaceType::BSpline: break;

@@ -25,8 +25,6 @@ inline float per_span(float h) {
 inline uint32_t exponent_bits(int e, int d) { return uint32_t(uint8_t(int8_t(e))) << (8 * d); }
 inline int exponent_at(uint32_t exps, int d) { return int8_t(uint8_t(exps >> (8 * d))); }
 
-inline int32_t round_to_int(float v) { return int32_t(v + (v >= 0 ? 0.5f : -0.5f)); }
-
 // a x t / 2^30 for t in [0, 2^30]: |result| <= |a|.
 inline int32_t mulq(int32_t a, int32_t t) { return int32_t((int64_t(a) * t) >> 30); }
 
@@ -139,12 +137,6 @@ inline int32_t combine_differences(const int32_t* Bd, const int32_t* c, int stri
     return int32_t(x >> 30);
 }
 
-// The exponent e that puts the largest magnitude `big` under 2^bits: big * 2^e < 2^bits (0 for
-// a zero or noise: nothing to keep).
-inline int fixed_exponent(float big, int bits) {
-    return big >= 1e-30f ? std::clamp(bits - exponent_f(big), -100, 126) : 0;
-}
-
 // The larger of big (>= 0) and |x|, by the floats' bits (a soft-float compare costs ~25
 // instructions; for finite floats the order of the bits is the order of the magnitudes).
 inline float larger_magnitude(float big, float x) {
@@ -164,6 +156,22 @@ inline int32_t to_fixed(float x, int e) {
     if (sh >= 0) v = sh <= 7 ? m << sh : 0x7FFFFFFFu;
     else v = sh > -25 ? (m + (1u << (-sh - 1))) >> -sh : 0;
     return b >> 31 ? -int32_t(v) : int32_t(v);
+}
+
+// Numbers f[i * stride], i < n, in fixed point with one exponent, the largest that keeps their
+// magnitudes under 2^bits (within +-100: a signed byte of a slot's exponent word holds it; 0
+// when all are zero or noise under 1e-30), into
+// out[i * stride] (out may be f itself: each number is read before its word is written).
+// Returns the exponent.
+int to_fixed_under(const float* f, int n, int stride, int bits, int32_t* out) {
+    float big = 0;
+    for (int i = 0; i < n; ++i) big = larger_magnitude(big, f[i * stride]);
+    const int e = big >= 1e-30f ? std::clamp(bits - exponent_f(big), -100, 100) : 0;
+    for (int i = 0; i < n; ++i) {
+        const float x = f[i * stride];
+        out[i * stride] = to_fixed(x, e);
+    }
+    return e;
 }
 
 inline uint64_t magnitude(int64_t x) { return x < 0 ? uint64_t(0) - uint64_t(x) : uint64_t(x); }
@@ -194,15 +202,11 @@ inline int sum_shift(uint64_t sum64, uint32_t n) {
 // A span's basis polynomials (span_polynomials) in fixed point under 2^30, I[a * (p + 1) + k];
 // returns the exponent.
 int fixed_span_polynomials(const float* knots, int p, int s, int32_t* I) {
-    float M[kN][kN];
+    float M[kN][kN], flat[kN * kN];
     span_polynomials(knots, p, s, M);
-    float big = 0;
     for (int a = 0; a <= p; ++a)
-        for (int k = 0; k <= p; ++k) big = larger_magnitude(big, M[a][k]);
-    const int e = fixed_exponent(big, 30);
-    for (int a = 0; a <= p; ++a)
-        for (int k = 0; k <= p; ++k) I[a * (p + 1) + k] = to_fixed(M[a][k], e);
-    return e;
+        for (int k = 0; k <= p; ++k) flat[a * (p + 1) + k] = M[a][k];
+    return to_fixed_under(flat, (p + 1) * (p + 1), 1, 30, I);
 }
 
 } // namespace
@@ -294,28 +298,22 @@ void PatchCache::convert(int su, int sv, uint32_t* slot) {
     const float* O = poles_ + 3 * (i0 * nv_ + j0); // the patch's first pole: coordinates stay small
     // The homogeneous poles w (P - O), w in float, then each coordinate in fixed point under 2^29.
     float H[kN * kN][4];
-    float big[4] = {};
-    for (int a = 0; a <= pu_; ++a) {
-        for (int b = 0; b <= pv_; ++b) {
-            float* h = H[a * row + b];
-            homogeneous((i0 + a) * nv_ + j0 + b, O, h);
-            for (int d = 0; d < dims; ++d) big[d] = larger_magnitude(big[d], h[d]);
-        }
-    }
+    int32_t Hq[kN * kN][4];
+    for (int a = 0; a <= pu_; ++a)
+        for (int b = 0; b <= pv_; ++b) homogeneous((i0 + a) * nv_ + j0 + b, O, H[a * row + b]);
     int32_t* c = reinterpret_cast<int32_t*>(slot + kHead);
     uint32_t exps = 0;
     for (int d = 0; d < dims; ++d) {
         // Fixed point all through: the poles (exponent eh), the two matrices (mu_e, mv_e).
         // C = Mu^T H Mv as T = Mu^T H (int64, back to int32 under 2^29) then T Mv (int64).
-        const int eh = fixed_exponent(big[d], 29);
-        int32_t Hd[kN * kN], T[kN][kN];
-        for (int i = 0; i < per; ++i) Hd[i] = to_fixed(H[i][d], eh);
+        const int eh = to_fixed_under(&H[0][d], per, 4, 29, &Hq[0][d]);
+        int32_t T[kN][kN];
         int64_t W[kN][kN];
         uint64_t top = 0;
         for (int k = 0; k <= pu_; ++k) {
             for (int b = 0; b <= pv_; ++b) {
                 int64_t x = 0;
-                for (int a = 0; a <= pu_; ++a) x += int64_t(Mu[a * mrow + k]) * Hd[a * row + b];
+                for (int a = 0; a <= pu_; ++a) x += int64_t(Mu[a * mrow + k]) * Hq[a * row + b][d];
                 W[k][b] = x;
                 top = std::max(top, magnitude(x));
             }
@@ -357,21 +355,10 @@ void PatchCache::convert_bezier(int su, int sv, uint32_t* slot) {
     for (int a = 0; a <= pu_; ++a) extract_span(vk_, pv_, sv, f + a * row * dims, dims, dims);
     // Each coordinate with the largest exponent that keeps its largest magnitude under 2^28
     // (the Bernstein sums are convex combinations: they stay in the net's hull, and the
-    // differences for derivatives under 2^29).
+    // differences for derivatives under 2^29), in place.
     const int per = (pu_ + 1) * row;
     uint32_t exps = 0;
-    for (int d = 0; d < dims; ++d) {
-        float big = 0;
-        for (int i = 0; i < per; ++i) big = larger_magnitude(big, f[i * dims + d]);
-        const int e = big >= 1e-30f ? std::clamp(28 - exponent_f(big), -100, 100) : 0;
-        exps |= exponent_bits(e, d);
-    }
-    // In place, each pole's coordinates together ([k][l][d]: the order extraction left).
-    int32_t* c = reinterpret_cast<int32_t*>(f);
-    for (int d = 0; d < dims; ++d) {
-        const float scale = pow2_f(exponent_at(exps, d));
-        for (int i = d; i < per * dims; i += dims) c[i] = round_to_int(f[i] * scale);
-    }
+    for (int d = 0; d < dims; ++d) exps |= exponent_bits(to_fixed_under(f + d, per, dims, 28, reinterpret_cast<int32_t*>(f) + d), d);
     write_head(slot, su, sv, O, exps);
 }
 
@@ -521,14 +508,8 @@ void CurveSpans::extract(int span, Slot& slot) const {
         if (rational_) f[i * dims + dim_] = w;
     }
     extract_span(knots_, p_, span, f, dims, dims);
-    uint32_t exps = 0;
-    for (int d = 0; d < dims; ++d) {
-        float big = 0;
-        for (int i = 0; i <= p_; ++i) big = larger_magnitude(big, f[i * dims + d]);
-        const int e = std::min(fixed_exponent(big, 28), 100); // (as the patches': convex sums)
-        exps |= exponent_bits(e, d);
-        for (int i = 0; i <= p_; ++i) slot.c[i * dims + d] = to_fixed(f[i * dims + d], e);
-    }
+    uint32_t exps = 0; // (under 2^28, as the patches': convex sums)
+    for (int d = 0; d < dims; ++d) exps |= exponent_bits(to_fixed_under(f + d, p_ + 1, dims, 28, slot.c + d), d);
     slot.span = span;
     slot.exps = exps;
     for (int d = 0; d < 3; ++d) slot.origin[d] = d < dim_ ? O[d] : 0.0f;
@@ -540,10 +521,7 @@ const CurveSpans::Slot& CurveSpans::slot_of(float& t, int32_t& q) {
     if (at < 0 || !(t >= knots_[slots_[at].span] && t < knots_[slots_[at].span + 1])) {
         const int span = detail::find_span(knots_, n_, p_, t, periodic_);
         at = span % kSlots;
-        if (slots_[at].span != span) {
-            extract(span, slots_[at]);
-            ++conversions_;
-        }
+        if (slots_[at].span != span) extract(span, slots_[at]);
         last_ = at;
     }
     const Slot& slot = slots_[at];

@@ -156,9 +156,8 @@ void EdgeSampler::start(const Pack& pack, const TessOptions& opt, EdgeSamples& o
     curve_ = &pack.curves3()[E.curve];
     tol2_ = 0.9025f * opt_.tolerance * opt_.tolerance;
     cos_max_ = cos_f(opt_.max_angle);
-    // The work of an evaluation: a B-spline's (its basis and derivative, soft-float on the
-    // ARM926) grows with the square of its degree.
-    // In fixed point (de Casteljau on the span's Bézier points) about an eighth of that.
+    // The work of an evaluation: a B-spline's grows with the square of its degree (its basis
+    // and derivative in soft float on the ARM926; in fixed point, CurveSpans, about an eighth).
     eval_ = 1;
     spans_.bind(pack, *curve_);
     if (CurveType(curve_->type) == CurveType::BSpline) {

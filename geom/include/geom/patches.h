@@ -17,8 +17,8 @@
 // Past kMaxPatchDegree the power basis loses too much in fixed point: a surface of degree up
 // to kMaxBezierDegree has its spans extracted to Bézier form instead (knot insertion, in
 // float, once per span) and evaluated in int32 as sums of the Bernstein basis (made once per
-// parameter by its own de Casteljau triangle, then shared by every row). A surface the cache cannot
-// take (not a B-spline, a degree over kMaxBezierDegree, too little memory for one patch)
+// parameter by its own de Casteljau triangle, then shared by every row). A surface the cache
+// cannot take (not a B-spline, a degree over kMaxBezierDegree, too little memory for one patch)
 // says so (usable() false) and the caller evaluates it in float.
 #include "geom/eval.h"
 #include "geom/pack.h"
@@ -91,8 +91,8 @@ private:
 // each knot span a point falls in is extracted to Bézier form once (as PatchCache does for
 // surfaces of high degree, in float) into one of a few slots kept in the object, and a point is
 // a Bernstein sum per coordinate in int32, one int-to-float conversion per coordinate and, if
-// rational, one division. An edge's samples walk along it, so most points hit the last span: on the ARM926
-// this pays from the first few points of a span, cubics included.
+// rational, one division. An edge's samples walk along it, so most points hit the last span:
+// on the ARM926 this pays from the first few points of a span, cubics included.
 class CurveSpans {
 public:
     static constexpr int kSlots = 4;
@@ -106,7 +106,6 @@ public:
     Vec3 point(float t);
     Curve3Point point_and_derivative(float t);
     Vec2 point2(float t);
-    uint32_t conversions() const { return conversions_; }
 
 private:
     struct Slot {
@@ -127,7 +126,6 @@ private:
     const float *knots_ = nullptr, *poles_ = nullptr, *weights_ = nullptr;
     int p_ = 0, n_ = 0, dim_ = 3, dims_ = 3; // dims_: dim_, and the weight if rational
     bool rational_ = false, periodic_ = false, usable_ = false;
-    uint32_t conversions_ = 0;
     int last_ = -1; // the slot of the last point
 };
 

@@ -129,7 +129,7 @@ private:
     int top_ = 0;
     Curve3Point left_{};
     float tl_ = 0, min_piece_ = 0, tol2_ = 0, cos_max_ = 1;
-    CurveSpans spans_; // a high-degree B-spline's spans in fixed point
+    CurveSpans spans_; // a B-spline's spans in fixed point
     Result result_ = Result::fail(Status::Busy, "not started");
 };
 
