@@ -1,7 +1,8 @@
 #pragma once
-// The B-spline pieces that eval.cpp and patches.cpp share: the basis functions and a surface's
-// parameters by name.
+// The B-spline pieces that eval.cpp and patches.cpp share: finding a knot span and the basis
+// functions (the layouts they read: geom/params.h).
 #include "geom/eval.h"
+#include "geom/params.h"
 
 #include <bit>
 #include <cmath>
@@ -80,29 +81,12 @@ inline int basis(const float* knots, int n, int p, float t_in, bool periodic, Re
     return s;
 }
 
-// A B-spline curve's parameters (degree, poles, knots, rational, periodic, then knots, poles
-// of `dim` floats, weights) by name.
-struct BSplineCurveView {
-    int p, n, k;
-    bool rational, periodic;
-    const float *knots, *poles, *weights;
-
-    BSplineCurveView(const float* q, int dim)
-        : p(int(q[0])), n(int(q[1])), k(int(q[2])), rational(q[3] != 0), periodic(q[4] != 0), knots(q + 5),
-          poles(knots + k), weights(poles + n * dim) {}
-};
-
-// A B-spline surface's parameters (BSplineSurfaceHead, then knots, poles, weights) by name.
-struct BSplineSurfaceView {
-    int pu, pv, nu, nv, ku, kv;
-    bool rational, u_periodic, v_periodic;
-    const float *uk, *vk, *poles, *weights;
-
-    explicit BSplineSurfaceView(const float* q)
-        : pu(int(q[0])), pv(int(q[1])), nu(int(q[2])), nv(int(q[3])), ku(int(q[4])), kv(int(q[5])), rational(q[6] != 0),
-          u_periodic(q[7] != 0), v_periodic(q[8] != 0), uk(q + 9), vk(uk + ku), poles(vk + kv), weights(poles + 3 * nu * nv) {}
-    int u_basis(float u, float* N, float* dN) const { return basis(uk, nu, pu, u, u_periodic, N, dN); }
-    int v_basis(float v, float* N, float* dN) const { return basis(vk, nv, pv, v, v_periodic, N, dN); }
-};
+// The basis functions of a surface's u (v) direction at u (v): basis() on its knots.
+inline int u_basis(const BSplineSurfaceView& B, float u, float* N, float* dN) {
+    return basis(B.uk, B.nu, B.pu, u, B.u_periodic, N, dN);
+}
+inline int v_basis(const BSplineSurfaceView& B, float v, float* N, float* dN) {
+    return basis(B.vk, B.nv, B.pv, v, B.v_periodic, N, dN);
+}
 
 } // namespace facet::geom::detail

@@ -1,6 +1,8 @@
 #include "geom/deviation.h"
 
+#include "elementary.h"
 #include "geom/fmath.h"
+#include "geom/params.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,8 +11,6 @@ namespace facet::geom {
 namespace {
 
 using namespace facet::pack;
-
-Vec3 v3(const float* p) { return {p[0], p[1], p[2]}; }
 
 // The parameter box a free-form search stays in: the face's bounds, widened a little (a
 // triangle near the boundary may have its closest point just past it).
@@ -48,42 +48,14 @@ float newton_distance(const Pack& pack, const Surface& S, Vec3 p, Vec2 uv, const
 float distance_to_surface(const Pack& pack, uint32_t face, Vec3 p, Vec2 uv_guess) {
     const pack::Face& F = pack.faces()[face];
     const Surface& S = pack.surfaces()[F.surface];
-    const float* q = pack.floats().data() + S.params;
-    if (is_elementary(S)) {
-        const Vec3 d = p - v3(q);
-        const float x = dot(d, v3(q + 3)), y = dot(d, v3(q + 6)), z = dot(d, v3(q + 9));
-        const float rho = sqrt_f(x * x + y * y);
-        switch (SurfaceType(S.type)) {
-        case SurfaceType::Plane: return std::fabs(z);
-        case SurfaceType::Cylinder: return std::fabs(rho - q[12]);
-        case SurfaceType::Cone: {
-            // In the half-plane through the axis and p the cone is the line
-            // (R + v sin a, v cos a); past the apex the point sits on the other nappe.
-            float sa, ca;
-            sincos_f(q[13], sa, ca);
-            const float near_side = std::fabs((rho - q[12]) * ca - z * sa);
-            const float far_side = std::fabs((-rho - q[12]) * ca - z * sa);
-            return std::min(near_side, far_side);
-        }
-        case SurfaceType::Sphere: return std::fabs(sqrt_f(rho * rho + z * z) - q[12]);
-        case SurfaceType::Torus: {
-            const float R = q[12], r = q[13];
-            const float a = std::fabs(sqrt_f((rho - R) * (rho - R) + z * z) - r);
-            const float b = std::fabs(sqrt_f((rho + R) * (rho + R) + z * z) - r); // the far side of the axis
-            return std::min(a, b);
-        }
-        default: break;
-        }
-    }
+    if (is_elementary(S)) return std::fabs(detail::Elementary(pack, S).signed_distance(p));
     const float wu = 0.05f * (F.uv_max[0] - F.uv_min[0]), wv = 0.05f * (F.uv_max[1] - F.uv_min[1]);
     Box box{{F.uv_min[0] - wu, F.uv_min[1] - wv}, {F.uv_max[0] + wu, F.uv_max[1] + wv}};
     if (S.type == uint8_t(SurfaceType::BSpline)) {
         // A B-spline is not defined past its knots (but for a periodic direction): stay inside.
-        const int pu = int(q[0]), pv = int(q[1]), nu = int(q[2]), nv = int(q[3]), ku = int(q[4]);
-        const float* uk = q + 9;
-        const float* vk = uk + ku;
-        if (q[7] == 0) box.lo[0] = std::max(box.lo[0], uk[pu]), box.hi[0] = std::min(box.hi[0], uk[nu]);
-        if (q[8] == 0) box.lo[1] = std::max(box.lo[1], vk[pv]), box.hi[1] = std::min(box.hi[1], vk[nv]);
+        const BSplineSurfaceView B = bspline(pack, S);
+        if (!B.u_periodic) box.lo[0] = std::max(box.lo[0], B.uk[B.pu]), box.hi[0] = std::min(box.hi[0], B.uk[B.nu]);
+        if (!B.v_periodic) box.lo[1] = std::max(box.lo[1], B.vk[B.pv]), box.hi[1] = std::min(box.hi[1], B.vk[B.nv]);
     }
     uv_guess.x = std::clamp(uv_guess.x, box.lo[0], box.hi[0]);
     uv_guess.y = std::clamp(uv_guess.y, box.lo[1], box.hi[1]);

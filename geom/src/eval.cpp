@@ -1,5 +1,6 @@
 #include "geom/eval.h"
 #include "bspline.h"
+#include "elementary.h"
 #include "geom/fmath.h"
 
 namespace facet::geom {
@@ -7,18 +8,15 @@ namespace {
 
 using namespace facet::pack;
 using detail::basis;
-using detail::BSplineSurfaceView;
-constexpr float kTwoPi = 6.28318530717958647692f;
-
-Vec3 v3(const float* p) { return {p[0], p[1], p[2]}; }
+using detail::Elementary;
 
 // w turned about the unit axis D by the angle whose cosine and sine are cu and su (Rodrigues).
 Vec3 turn(Vec3 D, Vec3 w, float cu, float su) { return w * cu + cross(D, w) * su + D * (dot(D, w) * (1 - cu)); }
 
 // A B-spline curve of dimension dim at t: position and derivative (rational by the quotient rule).
 // der null: the position alone (the same value: the same sums, without the derivative's).
-void bspline_curve(const float* prm, int dim, float t, float* pos, float* der) {
-    const detail::BSplineCurveView C(prm, dim);
+void bspline_curve(const Pack& pack, const Curve& c, int dim, float t, float* pos, float* der) {
+    const BSplineCurveView C = bspline(pack, c);
     const int p = C.p;
     const bool rational = C.rational;
     const float *poles = C.poles, *weights = C.weights;
@@ -43,7 +41,6 @@ void bspline_curve(const float* prm, int dim, float t, float* pos, float* der) {
 
 } // namespace
 
-bool is_elementary(const Surface& s) { return s.type >= uint8_t(SurfaceType::Plane) && s.type <= uint8_t(SurfaceType::Torus); }
 bool u_periodic(const Surface& s) {
     return s.type == uint8_t(SurfaceType::Cylinder) || s.type == uint8_t(SurfaceType::Cone) ||
            s.type == uint8_t(SurfaceType::Sphere) || s.type == uint8_t(SurfaceType::Torus) ||
@@ -52,25 +49,29 @@ bool u_periodic(const Surface& s) {
 bool v_periodic(const Surface& s) { return s.type == uint8_t(SurfaceType::Torus); }
 
 Curve3Point eval_curve3(const Pack& pack, const Curve& c, float t) {
-    const float* q = pack.floats().data() + c.params;
     switch (CurveType(c.type)) {
-    case CurveType::Line: return {v3(q) + v3(q + 3) * t, v3(q + 3)};
+    case CurveType::Line: {
+        const Line3Params& L = params<Line3Params>(pack, c);
+        return {vec3(L.origin) + vec3(L.direction) * t, vec3(L.direction)};
+    }
     case CurveType::Circle: {
-        const float r = q[9];
+        const Circle3Params& C = params<Circle3Params>(pack, c);
+        const float r = C.radius;
         float st, ct;
         sincos_f(t, st, ct);
-        return {v3(q) + (v3(q + 3) * ct + v3(q + 6) * st) * r, (v3(q + 3) * -st + v3(q + 6) * ct) * r};
+        return {vec3(C.origin) + (vec3(C.x) * ct + vec3(C.y) * st) * r, (vec3(C.x) * -st + vec3(C.y) * ct) * r};
     }
     case CurveType::Ellipse: {
-        const float a = q[9], b = q[10];
+        const Ellipse3Params& E = params<Ellipse3Params>(pack, c);
+        const float a = E.major, b = E.minor;
         float st, ct;
         sincos_f(t, st, ct);
-        return {v3(q) + v3(q + 3) * (a * ct) + v3(q + 6) * (b * st), v3(q + 3) * (-a * st) + v3(q + 6) * (b * ct)};
+        return {vec3(E.origin) + vec3(E.x) * (a * ct) + vec3(E.y) * (b * st), vec3(E.x) * (-a * st) + vec3(E.y) * (b * ct)};
     }
     case CurveType::BSpline: {
         float p[3], d[3];
-        bspline_curve(q, 3, t, p, d);
-        return {v3(p), v3(d)};
+        bspline_curve(pack, c, 3, t, p, d);
+        return {{p[0], p[1], p[2]}, {d[0], d[1], d[2]}};
     }
     }
     return {};
@@ -79,31 +80,35 @@ Curve3Point eval_curve3(const Pack& pack, const Curve& c, float t) {
 Vec3 eval_curve3_point(const Pack& pack, const Curve& c, float t) {
     if (CurveType(c.type) != CurveType::BSpline) return eval_curve3(pack, c, t).p;
     float p[3];
-    bspline_curve(pack.floats().data() + c.params, 3, t, p, nullptr);
-    return v3(p);
+    bspline_curve(pack, c, 3, t, p, nullptr);
+    return {p[0], p[1], p[2]};
 }
 
 Curve2Point eval_curve2(const Pack& pack, const Curve& c, float t) {
-    const float* q = pack.floats().data() + c.params;
     switch (CurveType(c.type)) {
-    case CurveType::Line: return {{q[0] + q[2] * t, q[1] + q[3] * t}, {q[2], q[3]}};
+    case CurveType::Line: {
+        const Line2Params& L = params<Line2Params>(pack, c);
+        return {{L.origin[0] + L.direction[0] * t, L.origin[1] + L.direction[1] * t}, {L.direction[0], L.direction[1]}};
+    }
     case CurveType::Circle: {
-        const float r = q[6];
+        const Circle2Params& C = params<Circle2Params>(pack, c);
+        const float r = C.radius;
         float st, ct;
         sincos_f(t, st, ct);
-        return {{q[0] + r * (q[2] * ct + q[4] * st), q[1] + r * (q[3] * ct + q[5] * st)},
-                {r * (-q[2] * st + q[4] * ct), r * (-q[3] * st + q[5] * ct)}};
+        return {{C.origin[0] + r * (C.x[0] * ct + C.y[0] * st), C.origin[1] + r * (C.x[1] * ct + C.y[1] * st)},
+                {r * (-C.x[0] * st + C.y[0] * ct), r * (-C.x[1] * st + C.y[1] * ct)}};
     }
     case CurveType::Ellipse: {
-        const float a = q[6], b = q[7];
+        const Ellipse2Params& E = params<Ellipse2Params>(pack, c);
+        const float a = E.major, b = E.minor;
         float st, ct;
         sincos_f(t, st, ct);
-        return {{q[0] + a * ct * q[2] + b * st * q[4], q[1] + a * ct * q[3] + b * st * q[5]},
-                {-a * st * q[2] + b * ct * q[4], -a * st * q[3] + b * ct * q[5]}};
+        return {{E.origin[0] + a * ct * E.x[0] + b * st * E.y[0], E.origin[1] + a * ct * E.x[1] + b * st * E.y[1]},
+                {-a * st * E.x[0] + b * ct * E.y[0], -a * st * E.x[1] + b * ct * E.y[1]}};
     }
     case CurveType::BSpline: {
         float p[2], d[2];
-        bspline_curve(q, 2, t, p, d);
+        bspline_curve(pack, c, 2, t, p, d);
         return {{p[0], p[1]}, {d[0], d[1]}};
     }
     }
@@ -111,49 +116,19 @@ Curve2Point eval_curve2(const Pack& pack, const Curve& c, float t) {
 }
 
 SurfacePoint eval_surface(const Pack& pack, const Surface& s, float u, float v) {
-    const float* q = pack.floats().data() + s.params;
-    const Vec3 O = v3(q), X = v3(q + 3), Y = v3(q + 6), Z = v3(q + 9);
     switch (SurfaceType(s.type)) {
-    case SurfaceType::Plane: return {O + X * u + Y * v, X, Y};
-    case SurfaceType::Cylinder: {
-        const float r = q[12];
-        float su, cu;
-        sincos_f(u, su, cu);
-        const Vec3 radial = X * cu + Y * su;
-        return {O + radial * r + Z * v, (X * -su + Y * cu) * r, Z};
-    }
-    case SurfaceType::Cone: {
-        const float r0 = q[12], a = q[13];
-        float su, cu, sa, ca;
-        sincos_f(u, su, cu);
-        sincos_f(a, sa, ca);
-        const float r = r0 + v * sa;
-        const Vec3 radial = X * cu + Y * su;
-        return {O + radial * r + Z * (v * ca), (X * -su + Y * cu) * r, radial * sa + Z * ca};
-    }
-    case SurfaceType::Sphere: {
-        const float r = q[12];
-        float su, cu, sv, cv;
-        sincos_f(u, su, cu);
-        sincos_f(v, sv, cv);
-        const Vec3 radial = X * cu + Y * su;
-        return {O + radial * (r * cv) + Z * (r * sv), (X * -su + Y * cu) * (r * cv), radial * (-r * sv) + Z * (r * cv)};
-    }
-    case SurfaceType::Torus: {
-        const float R = q[12], r = q[13];
-        float su, cu, sv, cv;
-        sincos_f(u, su, cu);
-        sincos_f(v, sv, cv);
-        const Vec3 radial = X * cu + Y * su;
-        return {O + radial * (R + r * cv) + Z * (r * sv), (X * -su + Y * cu) * (R + r * cv), radial * (-r * sv) + Z * (r * cv)};
-    }
+    case SurfaceType::Plane:
+    case SurfaceType::Cylinder:
+    case SurfaceType::Cone:
+    case SurfaceType::Sphere:
+    case SurfaceType::Torus: return Elementary(pack, s).at(u, v);
     case SurfaceType::BSpline: {
-        const BSplineSurfaceView B(q);
+        const BSplineSurfaceView B = bspline(pack, s);
         const int pu = B.pu, pv = B.pv, nv = B.nv;
         const bool rational = B.rational;
         const float *poles = B.poles, *weights = B.weights;
         float Nu[kMaxDegree + 1], dNu[kMaxDegree + 1], Nv[kMaxDegree + 1], dNv[kMaxDegree + 1];
-        const int su = B.u_basis(u, Nu, dNu), sv = B.v_basis(v, Nv, dNv);
+        const int su = detail::u_basis(B, u, Nu, dNu), sv = detail::v_basis(B, v, Nv, dNv);
         Vec3 A{0, 0, 0}, Au{0, 0, 0}, Av{0, 0, 0};
         float W = 0, Wu = 0, Wv = 0;
         for (int a = 0; a <= pu; ++a) {
@@ -161,7 +136,8 @@ SurfacePoint eval_surface(const Pack& pack, const Surface& s, float u, float v) 
             for (int b = 0; b <= pv; ++b) {
                 const int j = sv - pv + b;
                 const float w = rational ? weights[i * nv + j] : 1.0f;
-                const Vec3 P = v3(poles + 3 * (i * nv + j)) * w;
+                const float* pole = poles + 3 * (i * nv + j);
+                const Vec3 P = Vec3{pole[0], pole[1], pole[2]} * w;
                 A = A + P * (Nu[a] * Nv[b]);
                 Au = Au + P * (dNu[a] * Nv[b]);
                 Av = Av + P * (Nu[a] * dNv[b]);
@@ -176,7 +152,8 @@ SurfacePoint eval_surface(const Pack& pack, const Surface& s, float u, float v) 
     }
     case SurfaceType::Revolution: {
         // C(v) turned by u about the axis (origin O, unit direction D).
-        const Vec3 D = normalized(v3(q + 3));
+        const RevolutionParams& R = params<RevolutionParams>(pack, s);
+        const Vec3 O = vec3(R.axis_origin), D = normalized(vec3(R.axis_direction));
         const Curve3Point c = eval_curve3(pack, pack.curves3()[s.ref], v);
         float su, cu;
         sincos_f(u, su, cu);
@@ -185,7 +162,7 @@ SurfacePoint eval_surface(const Pack& pack, const Surface& s, float u, float v) 
     }
     case SurfaceType::Extrusion: {
         const Curve3Point c = eval_curve3(pack, pack.curves3()[s.ref], u);
-        const Vec3 D = v3(q);
+        const Vec3 D = vec3(params<ExtrusionParams>(pack, s).direction);
         return {c.p + D * v, c.d, D};
     }
     }
@@ -193,25 +170,26 @@ SurfacePoint eval_surface(const Pack& pack, const Surface& s, float u, float v) 
 }
 
 Vec3 eval_surface_point(const Pack& pack, const Surface& s, float u, float v) {
-    const float* q = pack.floats().data() + s.params;
     switch (SurfaceType(s.type)) {
     case SurfaceType::Revolution: { // as eval_surface's, without the derivatives (the same value)
-        const Vec3 O = v3(q), D = normalized(v3(q + 3));
+        const RevolutionParams& R = params<RevolutionParams>(pack, s);
+        const Vec3 O = vec3(R.axis_origin), D = normalized(vec3(R.axis_direction));
         float su, cu;
         sincos_f(u, su, cu);
         return O + turn(D, eval_curve3_point(pack, pack.curves3()[s.ref], v) - O, cu, su);
     }
-    case SurfaceType::Extrusion: return eval_curve3_point(pack, pack.curves3()[s.ref], u) + v3(q) * v;
+    case SurfaceType::Extrusion:
+        return eval_curve3_point(pack, pack.curves3()[s.ref], u) + vec3(params<ExtrusionParams>(pack, s).direction) * v;
     case SurfaceType::BSpline: break;
     default: return eval_surface(pack, s, u, v).p;
     }
     // The position alone: basis values without derivatives, one weighted sum of the poles.
-    const BSplineSurfaceView B(q);
+    const BSplineSurfaceView B = bspline(pack, s);
     const int pu = B.pu, pv = B.pv, nv = B.nv;
     const bool rational = B.rational;
     const float *poles = B.poles, *weights = B.weights;
     float Nu[kMaxDegree + 1], Nv[kMaxDegree + 1];
-    const int su = B.u_basis(u, Nu, nullptr), sv = B.v_basis(v, Nv, nullptr);
+    const int su = detail::u_basis(B, u, Nu, nullptr), sv = detail::v_basis(B, v, Nv, nullptr);
     float x = 0, y = 0, z = 0;
     if (!rational) { // the basis functions sum to one: no weights, no division
         for (int a = 0; a <= pu; ++a) {
@@ -239,78 +217,15 @@ Vec3 eval_surface_point(const Pack& pack, const Surface& s, float u, float v) {
     return {x * inv, y * inv, z * inv};
 }
 
-namespace {
-
-// One preimage of a torus point: the tube centre on the point's side of the axis (which = 0:
-// R + r cos v = rho) or on the other side (which = 1: R + r cos v = -rho, possible only on a
-// self-intersecting torus, r > R). Angles are placed within pi of the face's middle.
-Vec2 torus_candidate(const float* q, float x, float y, float z, const float uv_min[2], const float uv_max[2], int which) {
-    const float R = q[12], rho = sqrt_f(x * x + y * y), u1 = atan2_f(y, x);
-    const float um = 0.5f * (uv_min[0] + uv_max[0]), vm = 0.5f * (uv_min[1] + uv_max[1]);
-    auto near = [](float a, float mid) {
-        float r = std::fmod(a - (mid - kTwoPi / 2), kTwoPi);
-        if (r < 0) r += kTwoPi;
-        return mid - kTwoPi / 2 + r;
-    };
-    return which == 0 ? Vec2{near(u1, um), near(atan2_f(z, rho - R), vm)}
-                      : Vec2{near(u1 + kTwoPi / 2, um), near(atan2_f(z, -rho - R), vm)};
-}
-
-// How far (u,v) lies outside the bounds (0 inside).
-float outside(Vec2 p, const float lo[2], const float hi[2]) {
-    const float du = p.x < lo[0] ? lo[0] - p.x : (p.x > hi[0] ? p.x - hi[0] : 0);
-    const float dv = p.y < lo[1] ? lo[1] - p.y : (p.y > hi[1] ? p.y - hi[1] : 0);
-    return du + dv;
-}
-
-} // namespace
-
 int invert_candidates(const Pack& pack, const Surface& s, Vec3 P, const float uv_min[2], const float uv_max[2], Vec2 out[2]) {
-    if (s.type != uint8_t(SurfaceType::Torus)) return invert_elementary(pack, s, P, uv_min, uv_max, out[0]) ? 1 : 0;
-    const float* q = pack.floats().data() + s.params;
-    const Vec3 d = P - v3(q);
-    const float x = dot(d, v3(q + 3)), y = dot(d, v3(q + 6)), z = dot(d, v3(q + 9));
-    out[0] = torus_candidate(q, x, y, z, uv_min, uv_max, 0);
-    out[1] = torus_candidate(q, x, y, z, uv_min, uv_max, 1);
-    return q[13] > q[12] ? 2 : 1; // only a self-intersecting torus has a second preimage
+    if (!is_elementary(s)) return 0;
+    return Elementary(pack, s).preimages(P, uv_min, uv_max, out);
 }
 
 bool invert_elementary(const Pack& pack, const Surface& s, Vec3 P, const float uv_min[2], const float uv_max[2], Vec2& uv) {
-    const float* q = pack.floats().data() + s.params;
-    const Vec3 d = P - v3(q);
-    const float x = dot(d, v3(q + 3)), y = dot(d, v3(q + 6)), z = dot(d, v3(q + 9));
-    auto wrap = [](float a, float lo) { // into [lo, lo + 2 pi)
-        if (a < lo) a += kTwoPi; // atan2 is within pi of 0: one turn does it for most faces
-        else if (a >= lo + kTwoPi) a -= kTwoPi;
-        if (a >= lo && a < lo + kTwoPi) return a;
-        float r = std::fmod(a - lo, kTwoPi);
-        if (r < 0) r += kTwoPi;
-        return lo + r;
-    };
-    switch (SurfaceType(s.type)) {
-    case SurfaceType::Plane: uv = {x, y}; return true;
-    case SurfaceType::Cylinder: uv = {wrap(atan2_f(y, x), uv_min[0]), z}; return true;
-    case SurfaceType::Cone: {
-        // v from the height alone; past the apex the radius R + v sin a is negative and the
-        // point lies opposite its direction from the axis.
-        float sa, ca;
-        sincos_f(q[13], sa, ca);
-        const float v = z / ca;
-        const float turn = q[12] + v * sa < 0 ? kTwoPi / 2 : 0;
-        uv = {wrap(atan2_f(y, x) + turn, uv_min[0]), v};
-        return true;
-    }
-    case SurfaceType::Sphere:
-        uv = {wrap(atan2_f(y, x), uv_min[0]), atan2_f(z, sqrt_f(x * x + y * y))};
-        return true;
-    case SurfaceType::Torus: {
-        const Vec2 c[2] = {torus_candidate(q, x, y, z, uv_min, uv_max, 0), torus_candidate(q, x, y, z, uv_min, uv_max, 1)};
-        // The candidate inside the face's bounds (or nearer its middle).
-        uv = outside(c[0], uv_min, uv_max) <= outside(c[1], uv_min, uv_max) ? c[0] : c[1];
-        return true;
-    }
-    default: return false;
-    }
+    if (!is_elementary(s)) return false;
+    uv = Elementary(pack, s).inverse(P, uv_min, uv_max);
+    return true;
 }
 
 } // namespace facet::geom

@@ -1,4 +1,5 @@
 // A face's loops into its (u,v) domain (tessellate_face steps 1 and 3b).
+#include "elementary.h"
 #include "face_internal.h"
 #include "geom/fmath.h"
 
@@ -80,6 +81,7 @@ Result map_loops(const Pack& pack, uint32_t fi, const EdgeSamples& edges, FaceSc
     const pack::Face& F = pack.faces()[fi];
     const Surface& S = pack.surfaces()[F.surface];
     const bool elementary = is_elementary(S);
+    const Elementary shape(pack, S); // (u,v) from the 3D samples where the face has no pcurves
     if (next_loop == 0) np = nl = 0;
     const uint32_t cap = uint32_t(std::min({sc.uv.size(), sc.xyz.size(), sc.loop_points.size(), sc.pinned.size()}));
     const uint32_t np0 = np;
@@ -112,16 +114,16 @@ Result map_loops(const Pack& pack, uint32_t fi, const EdgeSamples& edges, FaceSc
                 if (pcurve != kNoIndex) {
                     uv = pcurve_spans.usable() ? pcurve_spans.point2(edges.t[s]) : eval_curve2(pack, pack.curves2()[pcurve], edges.t[s]).p;
                 } else {
-                    Vec2 cand[2];
-                    const int count = invert_candidates(pack, S, edges.p[s], F.uv_min, F.uv_max, cand);
-                    if (count == 0) {
+                    if (!elementary) {
                         return Result::fail(Status::Corrupt, "no pcurve on a free-form surface", {"loop", l - F.first_loop}, {"coedge", c - L.first_coedge});
                     }
+                    Vec2 cand[2];
+                    const int count = shape.preimages(edges.p[s], F.uv_min, F.uv_max, cand);
                     uv = cand[0];
                     if (count == 2 && np > loop_start) {
                         if (periodic_distance(cand[1], sc.uv[np - 1]) < periodic_distance(cand[0], sc.uv[np - 1])) uv = cand[1];
                     } else if (count == 2) {
-                        invert_elementary(pack, S, edges.p[s], F.uv_min, F.uv_max, uv); // inside the bounds
+                        uv = shape.inverse(edges.p[s], F.uv_min, F.uv_max); // inside the bounds
                     }
                 }
                 switch (seam) {
@@ -154,8 +156,7 @@ Result map_loops(const Pack& pack, uint32_t fi, const EdgeSamples& edges, FaceSc
         // Singular samples (a sphere's or cone's apex: u undefined there) take u from a
         // neighbour along the loop, so the pole becomes a segment along v = pole.
         if (elementary && S.type != uint8_t(SurfaceType::Plane) && n > 2) {
-            const float* q = pack.floats().data() + S.params;
-            const Vec3 O{q[0], q[1], q[2]}, Z{q[9], q[10], q[11]};
+            const Vec3 O = shape.origin(), Z = shape.axis();
             auto singular = [&](uint32_t i) {
                 const Vec3 d = sc.xyz[loop_start + i] - O;
                 const Vec3 radial = d - Z * dot(d, Z);

@@ -1,5 +1,7 @@
 #include "geom/measure.h"
 
+#include "geom/params.h"
+
 #include <cmath>
 
 namespace facet::geom {
@@ -64,7 +66,6 @@ Result describe_face(const Pack& pack, uint32_t face, const float* m, FaceGeomet
     if (face >= pack.faces().size()) return Result::fail(Status::OutOfRange, "no such face", {"face", face});
     const pack::Face& F = pack.faces()[face];
     const pack::Surface& S = pack.surfaces()[F.surface];
-    const float* q = pack.floats().data() + S.params;
     g = {};
     g.type = pack::SurfaceType(S.type);
     g.reversed = F.reversed != 0;
@@ -75,7 +76,8 @@ Result describe_face(const Pack& pack, uint32_t face, const float* m, FaceGeomet
     case pack::SurfaceType::Cone:
     case pack::SurfaceType::Sphere:
     case pack::SurfaceType::Torus: {
-        const D3 O = d3(q), X = d3(q + 3), Y = d3(q + 6), Z = d3(q + 9);
+        const pack::Frame& f = params<pack::PlaneParams>(pack, S).frame; // every elementary record's head
+        const D3 O = d3(f.origin), X = d3(f.x), Y = d3(f.y), Z = d3(f.z);
         // The surfaces' natural normal is outward (away from the axis, for a cylinder) on a
         // right-handed frame; a left-handed one turns it in.
         const double handed = dot(cross(X, Y), Z) < 0 ? -1 : 1;
@@ -86,22 +88,35 @@ Result describe_face(const Pack& pack, uint32_t face, const float* m, FaceGeomet
             break;
         }
         g.axis = unit(place_direction(m, Z));
-        g.radius = q[12];
-        if (g.type == pack::SurfaceType::Cone) g.half_angle = q[13];
-        if (g.type == pack::SurfaceType::Torus) g.minor = q[13];
+        switch (g.type) {
+        case pack::SurfaceType::Cylinder: g.radius = params<pack::CylinderParams>(pack, S).radius; break;
+        case pack::SurfaceType::Sphere: g.radius = params<pack::SphereParams>(pack, S).radius; break;
+        case pack::SurfaceType::Cone:
+            g.radius = params<pack::ConeParams>(pack, S).ref_radius;
+            g.half_angle = params<pack::ConeParams>(pack, S).semi_angle;
+            break;
+        default: // a torus
+            g.radius = params<pack::TorusParams>(pack, S).major_radius;
+            g.minor = params<pack::TorusParams>(pack, S).minor_radius;
+            break;
+        }
         g.hole = sense * handed < 0;
         break;
     }
-    case pack::SurfaceType::BSpline:
-        g.u_degree = int(q[0]), g.v_degree = int(q[1]), g.u_poles = int(q[2]), g.v_poles = int(q[3]);
-        g.rational = q[6] != 0;
-        g.u_periodic = q[7] != 0, g.v_periodic = q[8] != 0;
+    case pack::SurfaceType::BSpline: {
+        const BSplineSurfaceView B = bspline(pack, S);
+        g.u_degree = B.pu, g.v_degree = B.pv, g.u_poles = B.nu, g.v_poles = B.nv;
+        g.rational = B.rational;
+        g.u_periodic = B.u_periodic, g.v_periodic = B.v_periodic;
         break;
-    case pack::SurfaceType::Revolution:
-        g.origin = place_point(m, d3(q));
-        g.axis = unit(place_direction(m, d3(q + 3)));
+    }
+    case pack::SurfaceType::Revolution: {
+        const pack::RevolutionParams& R = params<pack::RevolutionParams>(pack, S);
+        g.origin = place_point(m, d3(R.axis_origin));
+        g.axis = unit(place_direction(m, d3(R.axis_direction)));
         break;
-    case pack::SurfaceType::Extrusion: g.axis = unit(place_direction(m, d3(q))); break;
+    }
+    case pack::SurfaceType::Extrusion: g.axis = unit(place_direction(m, d3(params<pack::ExtrusionParams>(pack, S).direction))); break;
     }
     return {};
 }

@@ -1,6 +1,7 @@
 #include "geom/pack.h"
 
-#include "bspline.h"
+#include "geom/eval.h"
+#include "geom/params.h"
 
 #include "hal/print.h"
 
@@ -41,15 +42,18 @@ bool whole(float f, uint32_t max, uint32_t& out) {
 constexpr uint32_t kMaxPoles = 1u << 20; // kMaxDegree: geom/eval.h
 
 uint32_t bspline_curve_count(const float* p, uint32_t avail, uint32_t dim) {
+    constexpr uint32_t head_floats = float_count<BSplineCurveHead>;
+    if (avail < head_floats) return 0;
+    const BSplineCurveHead& h = *reinterpret_cast<const BSplineCurveHead*>(p);
     uint32_t deg, poles, knots, rational, periodic;
-    if (avail < 5 || !whole(p[0], kMaxDegree, deg) || !whole(p[1], kMaxPoles, poles) ||
-        !whole(p[2], kMaxPoles + kMaxDegree + 1, knots) || !whole(p[3], 1, rational) ||
-        !whole(p[4], 1, periodic)) {
+    if (!whole(h.degree, kMaxDegree, deg) || !whole(h.pole_count, kMaxPoles, poles) ||
+        !whole(h.knot_count, kMaxPoles + kMaxDegree + 1, knots) || !whole(h.rational, 1, rational) ||
+        !whole(h.periodic, 1, periodic)) {
         return 0;
     }
     if (deg < 1 || poles < 2 || poles < (periodic ? 2 : deg + 1)) return 0;
     if (knots != poles + deg + 1) return 0; // knots expanded by multiplicity (unperiodized)
-    return 5 + knots + poles * (dim + rational);
+    return head_floats + knots + poles * (dim + rational);
 }
 
 // A B-spline's knots never decrease and its weights are positive: what its evaluation (and the
@@ -68,13 +72,13 @@ bool positive(const float* w, int n) {
 
 bool surface_data_ok(uint8_t type, const float* p) {
     if (SurfaceType(type) != SurfaceType::BSpline) return true;
-    const detail::BSplineSurfaceView B(p);
+    const BSplineSurfaceView B(*reinterpret_cast<const BSplineSurfaceHead*>(p));
     return ordered(B.uk, B.ku) && ordered(B.vk, B.kv) && (!B.rational || positive(B.weights, B.nu * B.nv));
 }
 
 bool curve_data_ok(uint8_t type, uint8_t dim, const float* p) {
     if (CurveType(type) != CurveType::BSpline) return true;
-    const detail::BSplineCurveView C(p, dim);
+    const BSplineCurveView C(*reinterpret_cast<const BSplineCurveHead*>(p), dim);
     return ordered(C.knots, C.k) && (!C.rational || positive(C.weights, C.n));
 }
 
@@ -82,9 +86,9 @@ bool curve_data_ok(uint8_t type, uint8_t dim, const float* p) {
 
 uint32_t curve_param_count(uint8_t type, uint8_t dim, const float* p, uint32_t avail) {
     switch (CurveType(type)) {
-    case CurveType::Line: return dim == 3 ? 6 : 4;
-    case CurveType::Circle: return dim == 3 ? 10 : 7;
-    case CurveType::Ellipse: return dim == 3 ? 11 : 8;
+    case CurveType::Line: return dim == 3 ? float_count<Line3Params> : float_count<Line2Params>;
+    case CurveType::Circle: return dim == 3 ? float_count<Circle3Params> : float_count<Circle2Params>;
+    case CurveType::Ellipse: return dim == 3 ? float_count<Ellipse3Params> : float_count<Ellipse2Params>;
     case CurveType::BSpline: return bspline_curve_count(p, avail, dim);
     }
     return 0;
@@ -92,24 +96,27 @@ uint32_t curve_param_count(uint8_t type, uint8_t dim, const float* p, uint32_t a
 
 uint32_t surface_param_count(uint8_t type, const float* p, uint32_t avail) {
     switch (SurfaceType(type)) {
-    case SurfaceType::Plane: return 12;
-    case SurfaceType::Cylinder: return 13;
-    case SurfaceType::Cone: return 14;
-    case SurfaceType::Sphere: return 13;
-    case SurfaceType::Torus: return 14;
-    case SurfaceType::Revolution: return 6;
-    case SurfaceType::Extrusion: return 3;
+    case SurfaceType::Plane: return float_count<PlaneParams>;
+    case SurfaceType::Cylinder: return float_count<CylinderParams>;
+    case SurfaceType::Cone: return float_count<ConeParams>;
+    case SurfaceType::Sphere: return float_count<SphereParams>;
+    case SurfaceType::Torus: return float_count<TorusParams>;
+    case SurfaceType::Revolution: return float_count<RevolutionParams>;
+    case SurfaceType::Extrusion: return float_count<ExtrusionParams>;
     case SurfaceType::BSpline: {
+        constexpr uint32_t head_floats = float_count<BSplineSurfaceHead>;
+        if (avail < head_floats) return 0;
+        const BSplineSurfaceHead& h = *reinterpret_cast<const BSplineSurfaceHead*>(p);
         uint32_t ud, vd, up, vp, uk, vk, rational, uper, vper;
-        if (avail < 9 || !whole(p[0], kMaxDegree, ud) || !whole(p[1], kMaxDegree, vd) ||
-            !whole(p[2], kMaxPoles, up) || !whole(p[3], kMaxPoles, vp) ||
-            !whole(p[4], kMaxPoles + kMaxDegree + 1, uk) || !whole(p[5], kMaxPoles + kMaxDegree + 1, vk) ||
-            !whole(p[6], 1, rational) || !whole(p[7], 1, uper) || !whole(p[8], 1, vper)) {
+        if (!whole(h.u_degree, kMaxDegree, ud) || !whole(h.v_degree, kMaxDegree, vd) || !whole(h.u_poles, kMaxPoles, up) ||
+            !whole(h.v_poles, kMaxPoles, vp) || !whole(h.u_knots, kMaxPoles + kMaxDegree + 1, uk) ||
+            !whole(h.v_knots, kMaxPoles + kMaxDegree + 1, vk) || !whole(h.rational, 1, rational) ||
+            !whole(h.u_periodic, 1, uper) || !whole(h.v_periodic, 1, vper)) {
             return 0;
         }
         if (ud < 1 || vd < 1 || up < ud + 1 || vp < vd + 1 || uint64_t(up) * vp > kMaxPoles) return 0;
         if (uk != up + ud + 1 || vk != vp + vd + 1) return 0;
-        return 9 + uk + vk + up * vp * (3 + rational);
+        return head_floats + uk + vk + up * vp * (3 + rational);
     }
     }
     return 0;

@@ -213,7 +213,7 @@ int fixed_span_polynomials(const float* knots, int p, int s, int32_t* I) {
 
 PatchCache::PatchCache(const Pack& pack, const pack::Surface& S, std::span<uint32_t> memory) {
     if (S.type != uint8_t(pack::SurfaceType::BSpline)) return;
-    const detail::BSplineSurfaceView B(pack.floats().data() + S.params);
+    const BSplineSurfaceView B = bspline(pack, S);
     if (B.pu > kMaxBezierDegree || B.pv > kMaxBezierDegree || B.pu < 1 || B.pv < 1) return;
     bezier_ = B.pu > kMaxPatchDegree || B.pv > kMaxPatchDegree;
     pu_ = B.pu, pv_ = B.pv, nu_ = B.nu, nv_ = B.nv;
@@ -234,8 +234,11 @@ PatchCache::PatchCache(const Pack& pack, const pack::Surface& S, std::span<uint3
     const uint32_t tag = S.params + 1; // the surface the patches belong to
     if (memory[0] != tag) {
         memory[0] = tag;
-        for (uint32_t i = 0; i < slots_; ++i) memory_[i * slot_words_] = kEmpty;
-        for (uint32_t i = 0; mu_ && i < kMatrixSlots; ++i) mu_[i * matrix_words(pu_)] = mv_[i * matrix_words(pv_)] = kEmpty;
+        for (uint32_t i = 0; i < slots_; ++i) reinterpret_cast<PatchHead*>(memory_ + i * slot_words_)->key = kEmpty;
+        for (uint32_t i = 0; mu_ && i < kMatrixSlots; ++i) {
+            reinterpret_cast<MatrixHead*>(mu_ + i * matrix_words(pu_))->span = kEmpty;
+            reinterpret_cast<MatrixHead*>(mv_ + i * matrix_words(pv_))->span = kEmpty;
+        }
     }
 }
 
@@ -243,12 +246,12 @@ void PatchCache::forget(std::span<uint32_t> memory) {
     if (!memory.empty()) memory[0] = 0;
 }
 
-const uint32_t* PatchCache::patch(int su, int sv) {
+const PatchCache::PatchHead* PatchCache::patch(int su, int sv) {
     const uint32_t key = uint32_t(su) << 16 | uint32_t(sv);
-    uint32_t* slot = memory_ + (uint32_t(su) * 40503u + uint32_t(sv)) % slots_ * slot_words_;
-    if (slot[0] != key) {
+    PatchHead* slot = reinterpret_cast<PatchHead*>(memory_ + (uint32_t(su) * 40503u + uint32_t(sv)) % slots_ * slot_words_);
+    if (slot->key != key) {
         convert(su, sv, slot);
-        slot[0] = key;
+        slot->key = key;
         ++conversions_;
     }
     return slot;
@@ -261,11 +264,11 @@ void PatchCache::homogeneous(int at, const float* O, float* h) const {
     if (rational_) h[3] = w;
 }
 
-void PatchCache::write_head(uint32_t* slot, int su, int sv, const float* O, uint32_t exps) const {
-    slot[1] = exps;
-    slot[2] = std::bit_cast<uint32_t>(O[0]), slot[3] = std::bit_cast<uint32_t>(O[1]), slot[4] = std::bit_cast<uint32_t>(O[2]);
-    slot[5] = std::bit_cast<uint32_t>(per_span(uk_[su + 1] - uk_[su]));
-    slot[6] = std::bit_cast<uint32_t>(per_span(vk_[sv + 1] - vk_[sv]));
+void PatchCache::write_head(PatchHead* slot, int su, int sv, const float* O, uint32_t exps) const {
+    slot->exponents = exps;
+    slot->origin[0] = O[0], slot->origin[1] = O[1], slot->origin[2] = O[2];
+    slot->per_span[0] = per_span(uk_[su + 1] - uk_[su]);
+    slot->per_span[1] = per_span(vk_[sv + 1] - vk_[sv]);
 }
 
 const int32_t* PatchCache::span_matrix(bool v, int span, int& e, int32_t* local) {
@@ -276,16 +279,17 @@ const int32_t* PatchCache::span_matrix(bool v, int span, int& e, int32_t* local)
         e = fixed_span_polynomials(knots, p, span, local);
         return local;
     }
-    uint32_t* slot = cache + uint32_t(span) % kMatrixSlots * matrix_words(p);
-    if (slot[0] != uint32_t(span)) {
-        slot[1] = uint32_t(fixed_span_polynomials(knots, p, span, reinterpret_cast<int32_t*>(slot + 2)));
-        slot[0] = uint32_t(span);
+    MatrixHead* slot = reinterpret_cast<MatrixHead*>(cache + uint32_t(span) % kMatrixSlots * matrix_words(p));
+    int32_t* matrix = reinterpret_cast<int32_t*>(slot + 1);
+    if (slot->span != uint32_t(span)) {
+        slot->exponent = fixed_span_polynomials(knots, p, span, matrix);
+        slot->span = uint32_t(span);
     }
-    e = int32_t(slot[1]);
-    return reinterpret_cast<const int32_t*>(slot + 2);
+    e = slot->exponent;
+    return matrix;
 }
 
-void PatchCache::convert(int su, int sv, uint32_t* slot) {
+void PatchCache::convert(int su, int sv, PatchHead* slot) {
     if (bezier_) return convert_bezier(su, sv, slot);
     // The span matrices (kept for the next patch of the same row or column of spans).
     int32_t u_local[kN * kN], v_local[kN * kN];
@@ -301,7 +305,7 @@ void PatchCache::convert(int su, int sv, uint32_t* slot) {
     int32_t Hq[kN * kN][4];
     for (int a = 0; a <= pu_; ++a)
         for (int b = 0; b <= pv_; ++b) homogeneous((i0 + a) * nv_ + j0 + b, O, H[a * row + b]);
-    int32_t* c = reinterpret_cast<int32_t*>(slot + kHead);
+    int32_t* c = coefficients(slot);
     uint32_t exps = 0;
     for (int d = 0; d < dims; ++d) {
         // Fixed point all through: the poles (exponent eh), the two matrices (mu_e, mv_e).
@@ -342,13 +346,13 @@ void PatchCache::convert(int su, int sv, uint32_t* slot) {
     write_head(slot, su, sv, O, exps);
 }
 
-void PatchCache::convert_bezier(int su, int sv, uint32_t* slot) {
+void PatchCache::convert_bezier(int su, int sv, PatchHead* slot) {
     // The span's (pu + 1) x (pv + 1) poles in homogeneous coordinates w (P - O), w, as floats
     // in the slot's coefficient words; extracted along u (each column of the slot), then
     // along v (each row); then each coordinate to fixed point in place.
     const int dims = rational_ ? 4 : 3, i0 = su - pu_, j0 = sv - pv_, row = pv_ + 1;
     const float* O = poles_ + 3 * (i0 * nv_ + j0);
-    float* f = reinterpret_cast<float*>(slot + kHead); // [k][l][d]
+    float* f = reinterpret_cast<float*>(coefficients(slot)); // [k][l][d], floats until made fixed point
     for (int a = 0; a <= pu_; ++a)
         for (int b = 0; b <= pv_; ++b) homogeneous((i0 + a) * nv_ + j0 + b, O, f + (a * row + b) * dims);
     for (int b = 0; b <= pv_; ++b) extract_span(uk_, pu_, su, f + b * dims, row * dims, dims);
@@ -362,7 +366,7 @@ void PatchCache::convert_bezier(int su, int sv, uint32_t* slot) {
     write_head(slot, su, sv, O, exps);
 }
 
-const uint32_t* PatchCache::locate(float& u, float& v, int32_t& qs, int32_t& qt) {
+const PatchCache::PatchHead* PatchCache::locate(float& u, float& v, int32_t& qs, int32_t& qt) {
     // The spans: the last point's if u and v are still in them, else found (and wrapped or
     // clamped as the B-spline's own evaluation does).
     int su = last_su_, sv = last_sv_;
@@ -372,16 +376,16 @@ const uint32_t* PatchCache::locate(float& u, float& v, int32_t& qs, int32_t& qt)
         last_ = patch(su, sv);
         last_su_ = su, last_sv_ = sv;
     }
-    const uint32_t* slot = last_;
-    // The local parameters in [0, 2^30] (slot[5], slot[6]: 2^30 over the spans' lengths).
-    qs = int32_t((u - uk_[su]) * std::bit_cast<float>(slot[5])), qt = int32_t((v - vk_[sv]) * std::bit_cast<float>(slot[6]));
+    const PatchHead* slot = last_;
+    // The local parameters in [0, 2^30].
+    qs = int32_t((u - uk_[su]) * slot->per_span[0]), qt = int32_t((v - vk_[sv]) * slot->per_span[1]);
     qs = qs < 0 ? 0 : (qs > kOneQ ? kOneQ : qs);
     qt = qt < 0 ? 0 : (qt > kOneQ ? kOneQ : qt);
     return slot;
 }
 
-void PatchCache::bezier(const uint32_t* slot, int32_t qs, int32_t qt, int32_t* out, int32_t* ds, int32_t* dt) const {
-    const int32_t* c = reinterpret_cast<const int32_t*>(slot + kHead);
+void PatchCache::bezier(const PatchHead* slot, int32_t qs, int32_t qt, int32_t* out, int32_t* ds, int32_t* dt) const {
+    const int32_t* c = coefficients(slot);
     const int dims = rational_ ? 4 : 3, row = pv_ + 1;
     // Each line of the higher degree's direction (inner) to a point, then those points (outer).
     const bool s_first = pu_ >= pv_;
@@ -405,8 +409,8 @@ void PatchCache::bezier(const uint32_t* slot, int32_t qs, int32_t qt, int32_t* o
 
 Vec3 PatchCache::point(float u, float v) {
     int32_t qs, qt;
-    const uint32_t* slot = locate(u, v, qs, qt);
-    const int32_t* c = reinterpret_cast<const int32_t*>(slot + kHead);
+    const PatchHead* slot = locate(u, v, qs, qt);
+    const int32_t* c = coefficients(slot);
     const int dims = rational_ ? 4 : 3, row = pv_ + 1;
     int32_t out[4];
     if (bezier_) {
@@ -424,9 +428,9 @@ Vec3 PatchCache::point(float u, float v) {
             out[d] = acc;
         }
     }
-    const uint32_t exps = slot[1];
+    const uint32_t exps = slot->exponents;
     auto unscale = [&](int d) { return pow2_f(-exponent_at(exps, d)); };
-    const Vec3 O{std::bit_cast<float>(slot[2]), std::bit_cast<float>(slot[3]), std::bit_cast<float>(slot[4])};
+    const Vec3 O{slot->origin[0], slot->origin[1], slot->origin[2]};
     if (!rational_) return {O.x + float(out[0]) * unscale(0), O.y + float(out[1]) * unscale(1), O.z + float(out[2]) * unscale(2)};
     float W = float(out[3]) * unscale(3);
     if (W == 0) W = 1;
@@ -437,13 +441,13 @@ Vec3 PatchCache::point(float u, float v) {
 
 SurfacePoint PatchCache::point_and_derivatives(float u, float v) {
     int32_t qs, qt;
-    const uint32_t* slot = locate(u, v, qs, qt);
-    const int32_t* c = reinterpret_cast<const int32_t*>(slot + kHead);
+    const PatchHead* slot = locate(u, v, qs, qt);
+    const int32_t* c = coefficients(slot);
     const int dims = rational_ ? 4 : 3, row = pv_ + 1;
     // Per coordinate: the value, and its derivatives in s and t over 8 (a derivative of the
     // polynomial can reach its degree times the coefficients' sum: 8 keeps it in 32 bits).
     float f[4], fs[4], ft[4];
-    const uint32_t exps = slot[1];
+    const uint32_t exps = slot->exponents;
     if (bezier_) {
         // The Bézier derivatives are the degree times the last differences.
         int32_t out[4], ds[4], dt[4];
@@ -471,9 +475,9 @@ SurfacePoint PatchCache::point_and_derivatives(float u, float v) {
             f[d] = float(acc) * unscale, fs[d] = float(acc_s) * (8 * unscale), ft[d] = float(acc_t) * (8 * unscale);
         }
     }
-    // d/du = d/ds over the span's length (slot[5] / 2^30).
-    const float hu = std::bit_cast<float>(slot[5]) * (1 / kOne), hv = std::bit_cast<float>(slot[6]) * (1 / kOne);
-    const Vec3 O{std::bit_cast<float>(slot[2]), std::bit_cast<float>(slot[3]), std::bit_cast<float>(slot[4])};
+    // d/du = d/ds over the span's length (per_span / 2^30).
+    const float hu = slot->per_span[0] * (1 / kOne), hv = slot->per_span[1] * (1 / kOne);
+    const Vec3 O{slot->origin[0], slot->origin[1], slot->origin[2]};
     if (!rational_) {
         return {{O.x + f[0], O.y + f[1], O.z + f[2]}, Vec3{fs[0], fs[1], fs[2]} * hu, Vec3{ft[0], ft[1], ft[2]} * hv};
     }
@@ -489,7 +493,7 @@ void CurveSpans::bind(const Pack& pack, const pack::Curve& c, int min_degree) {
     usable_ = false, last_ = -1;
     for (Slot& slot : slots_) slot.span = -1;
     if (c.type != uint8_t(pack::CurveType::BSpline) || (c.dim != 2 && c.dim != 3)) return;
-    const detail::BSplineCurveView C(pack.floats().data() + c.params, c.dim);
+    const BSplineCurveView C = bspline(pack, c);
     if (C.p < std::max(min_degree, 1) || C.p > kMaxBezierDegree) return;
     p_ = C.p, n_ = C.n, dim_ = c.dim, rational_ = C.rational, periodic_ = C.periodic;
     dims_ = dim_ + (rational_ ? 1 : 0);

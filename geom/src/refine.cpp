@@ -19,6 +19,7 @@
 //     and the surface point at the sample's (u,v). The point goes where the model peaks
 //     (never on a constrained edge: that is a chord of a B-rep edge, within the tolerance by
 //     edge sampling).
+#include "elementary.h"
 #include "face_internal.h"
 #include "geom/patches.h"
 #include "geom/fmath.h"
@@ -125,64 +126,25 @@ uint64_t key_of(const Tri& T) {
 struct Context {
     const Pack& pack;
     const Surface& S;
-    SurfaceType type;
-    const float* q;
+    bool elementary;
+    detail::Elementary shape; // its closed forms (none unless elementary)
+    detail::Elementary::FlatBound flat; // what needs no samples (elementary surfaces)
     float tol2;
     float target2; // what refinement aims for: the tolerance, with a margin where it estimates
-    float du_max = 0;   // cylinder, cone: widest u span that is surely within the tolerance
-    float rho2_max = 0; // sphere: largest squared circumradius within the tolerance
-    float sin_a = 0, cos_a = 1; // cone
     const FaceScratch& sc;
     const cdt::Cdt<uint16_t>& cdt;
     mutable PatchCache patches; // a B-spline's points in fixed point (its cache is the scratch's)
 
     Context(const Pack& p, const pack::Face& F, const Surface& s, float tol, const FaceScratch& scratch,
             const cdt::Cdt<uint16_t>& c)
-        : pack(p), S(s), type(SurfaceType(s.type)), q(p.floats().data() + s.params), tol2(tol * tol), sc(scratch), cdt(c),
-          patches(p, s, scratch.patches) {
+        : pack(p), S(s), elementary(is_elementary(s)), shape(p, s),
+          tol2(tol * tol), sc(scratch), cdt(c), patches(p, s, scratch.patches) {
         // On a doubly curved surface the deviation is modelled from samples (exact only for
         // cubic deviations); free-form deviations are estimated along the normal. Aim 5%
         // under the tolerance there.
-        const bool exact = type == SurfaceType::Plane || type == SurfaceType::Cylinder || type == SurfaceType::Cone;
+        const bool exact = elementary && shape.developable();
         target2 = exact ? tol2 : 0.9025f * tol2;
-        switch (type) {
-        case SurfaceType::Cylinder: du_max = max_arc_angle(q[12], tol); break;
-        case SurfaceType::Cone: {
-            sincos_f(q[13], sin_a, cos_a);
-            const float r0 = std::fabs(q[12] + F.uv_min[1] * sin_a), r1 = std::fabs(q[12] + F.uv_max[1] * sin_a);
-            du_max = max_arc_angle(std::max(r0, r1), tol);
-            break;
-        }
-        case SurfaceType::Sphere: rho2_max = std::max(0.0f, 2 * q[12] * tol - tol * tol); break;
-        default: break;
-        }
-    }
-
-    // Signed distance from x to an elementary surface (exact, untrimmed; outward positive).
-    float elementary_error(Vec3 x) const {
-        const Vec3 d = x - Vec3{q[0], q[1], q[2]};
-        const float a = dot(d, {q[3], q[4], q[5]}), b = dot(d, {q[6], q[7], q[8]}), z = dot(d, {q[9], q[10], q[11]});
-        const float rho2 = a * a + b * b;
-        switch (type) {
-        case SurfaceType::Cylinder: return sqrt_f(rho2) - q[12];
-        case SurfaceType::Cone: {
-            // In the half-plane through the axis and x, the cone is the line (R + v sin a,
-            // v cos a); past the apex its radius is negative: x is then nearer the mirror line.
-            const float rho = sqrt_f(rho2);
-            const float near_side = (rho - q[12]) * cos_a - z * sin_a, far_side = (-rho - q[12]) * cos_a - z * sin_a;
-            return std::fabs(near_side) <= std::fabs(far_side) ? near_side : far_side;
-        }
-        case SurfaceType::Sphere: return sqrt_f(rho2 + z * z) - q[12];
-        case SurfaceType::Torus: {
-            // The tube on x's side of the axis, or (a self-intersecting torus) the other side's.
-            const float rho = sqrt_f(rho2), w = rho - q[12];
-            const float e = sqrt_f(w * w + z * z) - q[13];
-            if (q[13] <= q[12]) return e;
-            const float w2 = rho + q[12], e2 = sqrt_f(w2 * w2 + z * z) - q[13];
-            return std::fabs(e) <= std::fabs(e2) ? e : e2;
-        }
-        default: return z; // plane
-        }
+        if (elementary) flat = shape.flat_bound(tol, F.uv_min[1], F.uv_max[1]);
     }
 
     // A point of the surface: from its fixed-point patch where it has one.
@@ -207,23 +169,22 @@ struct Context {
         const Vec3 e0 = P[2] - P[1], e1 = P[0] - P[2], e2 = P[1] - P[0];
         const float l0 = dot(e0, e0), l1 = dot(e1, e1), l2 = dot(e2, e2);
         if (std::max({l0, l1, l2}) <= tol2) return m;
-        switch (type) {
-        case SurfaceType::Plane: return m;
-        case SurfaceType::Cylinder:
-        case SurfaceType::Cone: {
+        using Flat = detail::Elementary::FlatBound::Kind;
+        switch (flat.kind) {
+        case Flat::Everywhere: return m;
+        case Flat::USpan: {
             const float span = std::max({UV[0].x, UV[1].x, UV[2].x}) - std::min({UV[0].x, UV[1].x, UV[2].x});
-            if (span <= du_max) return m;
+            if (span <= flat.limit) return m;
             break;
         }
-        case SurfaceType::Sphere: {
-            // rho^2 = l0 l1 l2 / (4 |e1 x e2|^2) <= rho2_max
+        case Flat::Circumradius: {
+            // rho^2 = l0 l1 l2 / (4 |e1 x e2|^2) <= the limit
             const Vec3 c = cross(e1, e2);
-            if (l0 * l1 * l2 <= 4 * dot(c, c) * rho2_max) return m;
+            if (l0 * l1 * l2 <= 4 * dot(c, c) * flat.limit) return m;
             break;
         }
-        default: break;
+        case Flat::None: break;
         }
-        const bool elementary = type <= SurfaceType::Torus;
         auto grid_at = [&](float w0, float w1, float w2) {
             return cdt::Point{int32_t(std::lround(w0 * float(G[0].x) + w1 * float(G[1].x) + w2 * float(G[2].x))),
                               int32_t(std::lround(w0 * float(G[0].y) + w1 * float(G[1].y) + w2 * float(G[2].y)))};
@@ -237,7 +198,7 @@ struct Context {
         float e[kSamples];
         float largest = 0;
         const uint32_t conversions = patches.conversions();
-        cost = type <= SurfaceType::Torus || patches.usable() ? 3 : 30;
+        cost = elementary || patches.usable() ? 3 : 30;
         auto sample = [&](const auto* X, auto error) { // X: the corners in 3D or in (u,v)
             for (int k = 0; k < 3; ++k) {
                 const int i = (k + 1) % 3, j = (k + 2) % 3;
@@ -248,7 +209,7 @@ struct Context {
             e[6] = error((X[0] + X[1] + X[2]) * (1.0f / 3));
         };
         if (elementary) {
-            sample(P, [&](Vec3 x) { return elementary_error(x); });
+            sample(P, [&](Vec3 x) { return shape.signed_distance(x); });
         } else {
             // Signed deviation from a free-form surface: from the surface point at the sample's
             // parameters, along the triangle's unit normal (near the surface's where it matters,
@@ -309,7 +270,7 @@ Result refine(const Pack& pack, uint32_t fi, const TessOptions& opt, const Grid&
     }
     const Result busy = Result::fail(Status::Busy, "refining");
     // A locate, an insertion, a surface point (and a patch made: in the measure that led here).
-    const uint32_t insert_cost = S.type <= uint8_t(SurfaceType::Torus) || ctx.patches.usable() ? 1 : 8;
+    const uint32_t insert_cost = ctx.elementary || ctx.patches.usable() ? 1 : 8;
     while (spent < units) {
         if (!st.inserting) {
             // A round: measure the triangles that changed, and find the worst.

@@ -1,6 +1,7 @@
 // Edge sampling: every edge once, into a pool both of its faces read (watertight by
 // construction), as few samples as keep every chord within the tolerance of the curve and
 // every turn of the tangent within the angle.
+#include "geom/params.h"
 #include "face_internal.h"
 #include "geom/fmath.h"
 
@@ -39,7 +40,8 @@ Vec3 vertex(const Pack& pack, uint32_t i) {
 // A circular arc: the fewest equal steps that keep both the chord's sag and the turn within
 // bounds. Ends are the exact pack vertices.
 bool sample_circle(const Pack& pack, const Curve& C, const Edge& E, const TessOptions& opt, Pool& pool) {
-    const float r = pack.floats()[C.params + 9];
+    const Circle3Params& circle = params<Circle3Params>(pack, C);
+    const float r = circle.radius;
     const float span = std::fabs(E.t1 - E.t0);
     const float step = std::min(detail::max_arc_angle(r, opt.tolerance), opt.max_angle);
     const float pieces = std::ceil(span / step);
@@ -47,8 +49,7 @@ bool sample_circle(const Pack& pack, const Curve& C, const Edge& E, const TessOp
     pool.out.work += 1 + n / 16; // a rotation per sample
     if (!pool.emit(E.t0, vertex(pack, E.v0))) return false;
     // cos and sin of the angle step by step (a rotation per sample): no trigonometry per point.
-    const float* q = pack.floats().data() + C.params;
-    const Vec3 O{q[0], q[1], q[2]}, X{q[3], q[4], q[5]}, Y{q[6], q[7], q[8]};
+    const Vec3 O = vec3(circle.origin), X = vec3(circle.x), Y = vec3(circle.y);
     const float dt = (E.t1 - E.t0) / float(n);
     float c, s, cd, sd;
     sincos_f(E.t0, s, c);
@@ -67,9 +68,9 @@ bool sample_circle(const Pack& pack, const Curve& C, const Edge& E, const TessOp
 // distance of the line through the edge's ends, and their positions along it are monotonic
 // (variation diminishing: the curve then never turns back), the chord is the edge.
 bool straight_bspline(const Pack& pack, const Curve& C, Vec3 a, Vec3 b, float tol) {
-    const float* q = pack.floats().data() + C.params;
-    const int n = int(q[1]), knots = int(q[2]);
-    const float* poles = q + 5 + knots;
+    const BSplineCurveView B = bspline(pack, C);
+    const int n = B.n;
+    const float* poles = B.poles;
     const Vec3 d = b - a;
     const float len2 = dot(d, d);
     if (!(len2 > 0)) return false;
@@ -161,7 +162,7 @@ void EdgeSampler::start(const Pack& pack, const TessOptions& opt, EdgeSamples& o
     eval_ = 1;
     spans_.bind(pack, *curve_);
     if (CurveType(curve_->type) == CurveType::BSpline) {
-        const uint32_t degree = uint32_t(pack.floats()[curve_->params]);
+        const uint32_t degree = uint32_t(bspline(pack, *curve_).p);
         eval_ = 1 + (degree + 1) * (degree + 1) / (spans_.usable() ? 16 : 2);
     }
     if (!pool.emit(E.t0, a)) {

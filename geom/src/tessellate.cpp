@@ -1,6 +1,7 @@
 #include "geom/tessellate.h"
 #include "geom/patches.h"
 
+#include "elementary.h"
 #include "face_internal.h"
 #include "geom/fmath.h"
 
@@ -30,52 +31,23 @@ float default_tolerance(const Pack& pack) {
 namespace {
 
 // Unit normals of one face, flipped on a reversed face: in closed form from the 3D point on
-// planes, cylinders, cones and spheres (no trigonometry, no square root: on a soft-float core
-// these are the bulk of a vertex's cost), from the surface's derivatives elsewhere.
+// planes, cylinders, cones and spheres (elementary.h: no trigonometry, no square root: on a
+// soft-float core these are the bulk of a vertex's cost), from the surface's derivatives
+// elsewhere.
 class FaceNormals {
 public:
     FaceNormals(const Pack& pack, const Surface& S, const pack::Face& F, std::span<uint32_t> patches)
-        : pack_(pack), S_(S), F_(F), type_(SurfaceType(S.type)), flip_(F.reversed ? -1.0f : 1.0f), patches_(pack, S, patches) {
-        if (type_ > SurfaceType::Torus) return;
-        const float* q = pack.floats().data() + S.params;
-        O_ = {q[0], q[1], q[2]};
-        Z_ = {q[9], q[10], q[11]};
-        // du x dv is +-(X x Y)-oriented: the sign of a left-handed placement goes with it.
-        const float hand = dot(cross(Vec3{q[3], q[4], q[5]}, Vec3{q[6], q[7], q[8]}), Z_) < 0 ? -flip_ : flip_;
-        switch (type_) {
-        case SurfaceType::Plane: plane_ = Z_ * hand; break;
-        case SurfaceType::Cylinder:
-        case SurfaceType::Sphere: scale_ = hand / q[12]; break;
-        case SurfaceType::Cone:
-            sincos_f(q[13], sin_a_, cos_a_);
-            radius_ = q[12];
-            scale_ = hand;
-            break;
-        default: break;
-        }
+        : pack_(pack), S_(S), F_(F), elementary_(is_elementary(S)), flip_(F.reversed ? -1.0f : 1.0f), patches_(pack, S, patches) {
+        if (elementary_) closed_ = detail::Elementary(pack, S).normals(flip_);
     }
 
     // What a vertex's normal costs, in eighths of a work unit: closed form, from a B-spline's
     // fixed-point patch (about four thousand ARM926 instructions), from float derivatives.
-    uint32_t vertex_cost() const { return type_ <= SurfaceType::Torus ? 1 : patches_.usable() ? 6 : 48; }
+    uint32_t vertex_cost() const { return elementary_ ? 1 : patches_.usable() ? 6 : 48; }
 
     Vec3 at(Vec3 p, Vec2 uv) const {
-        const Vec3 d = p - O_;
-        switch (type_) {
-        case SurfaceType::Plane: return plane_;
-        case SurfaceType::Cylinder: return (d - Z_ * dot(d, Z_)) * scale_;
-        case SurfaceType::Sphere: return d * scale_;
-        case SurfaceType::Cone: {
-            // (cos a radial - sin a Z) on the near side of the apex, mirrored past it.
-            const float z = dot(d, Z_), s = radius_ + z / cos_a_ * sin_a_; // the signed radius there
-            if (std::fabs(s) > 1e-6f * (std::fabs(radius_) + std::fabs(z))) {
-                return ((d - Z_ * z) * (cos_a_ / std::fabs(s)) - Z_ * (s < 0 ? -sin_a_ : sin_a_)) * scale_;
-            }
-            break; // the apex: from the derivatives nearby
-        }
-        default: break;
-        }
-        return from_derivatives(uv);
+        Vec3 n;
+        return closed_.at(p, n) ? n : from_derivatives(uv); // (none unless elementary)
     }
 
 private:
@@ -97,10 +69,9 @@ private:
     const Pack& pack_;
     const Surface& S_;
     const pack::Face& F_;
-    SurfaceType type_;
+    bool elementary_;
     float flip_;
-    Vec3 O_{}, Z_{}, plane_{};
-    float scale_ = 1, radius_ = 0, sin_a_ = 0, cos_a_ = 1;
+    detail::Elementary::Normals closed_;
     mutable PatchCache patches_;
 };
 
@@ -108,31 +79,9 @@ private:
 // parameter directions (1/mm; magnitudes). Exact on the elementary surfaces; on the others
 // from the turn of the unit normal over a small step each way (a B-spline's points from its
 // fixed-point patches).
-void bending(const Pack& pack, const Surface& S, const pack::Face& F, float u, float v, const SurfacePoint& at,
-             PatchCache& patches, float& ku, float& kv) {
-    const float* q = pack.floats().data() + S.params;
-    ku = kv = 0;
-    switch (SurfaceType(S.type)) {
-    case SurfaceType::Plane: return;
-    case SurfaceType::Cylinder: ku = 1 / q[12]; return;
-    case SurfaceType::Cone: {
-        float sa, ca;
-        sincos_f(q[13], sa, ca);
-        const float r = std::fabs(q[12] + v * sa);
-        ku = r > 0 ? std::fabs(ca) / r : 0;
-        return;
-    }
-    case SurfaceType::Sphere: ku = kv = 1 / q[12]; return;
-    case SurfaceType::Torus: {
-        float sv, cv;
-        sincos_f(v, sv, cv);
-        const float rho = std::fabs(q[12] + q[13] * cv);
-        kv = 1 / q[13];
-        ku = rho > 0 ? std::fabs(cv) / rho : 0;
-        return;
-    }
-    default: break;
-    }
+void bending(const Pack& pack, const Surface& S, const pack::Face& F, float u, float v, PatchCache& patches, float& ku,
+             float& kv) {
+    if (is_elementary(S)) return detail::Elementary(pack, S).bending(v, ku, kv);
     auto turn = [&](float du, float dv) { // |n(+) - n(-)| / |S(+) - S(-)|
         auto eval = [&](float x, float y) { return patches.usable() ? patches.point_and_derivatives(x, y) : eval_surface(pack, S, x, y); };
         const SurfacePoint a = eval(u + du, v + dv), b = eval(u - du, v - dv);
@@ -140,7 +89,6 @@ void bending(const Pack& pack, const Surface& S, const pack::Face& F, float u, f
         const float d = length(a.p - b.p);
         return d > 0 ? length(na - nb) / d : 0.0f;
     };
-    (void)at;
     ku = turn(0.01f * (F.uv_max[0] - F.uv_min[0]), 0);
     kv = turn(0, 0.01f * (F.uv_max[1] - F.uv_min[1]));
 }
@@ -259,7 +207,7 @@ Result FaceJob::prepare() {
     if (!(grid.su > 1e-9f)) grid.su = 1;
     if (!(grid.sv > 1e-9f)) grid.sv = 1;
     float ku, kv;
-    bending(pack, S, F, um, vm, mid, patches, ku, kv);
+    bending(pack, S, F, um, vm, patches, ku, kv);
     const float kmax = std::max(ku, kv);
     if (kmax > 0) {
         constexpr float kMinWeight = 0.125f; // at most 8:1 stretch

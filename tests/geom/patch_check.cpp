@@ -64,8 +64,7 @@ std::vector<float> params(const float* knots, int count) {
 }
 
 // The surface's point and first derivatives, in double.
-SurfacePointD reference(const float* q, float u, float v) {
-    const detail::BSplineSurfaceView B(q);
+SurfacePointD reference(const BSplineSurfaceView& B, float u, float v) {
     double Nu[kMaxDegree + 1], dNu[kMaxDegree + 1], Nv[kMaxDegree + 1], dNv[kMaxDegree + 1];
     const int su = detail::basis<double>(B.uk, B.nu, B.pu, u, B.u_periodic, Nu, dNu);
     const int sv = detail::basis<double>(B.vk, B.nv, B.pv, v, B.v_periodic, Nv, dNv);
@@ -94,17 +93,15 @@ SurfacePointD reference(const float* q, float u, float v) {
 // float merged (a knot of multiplicity 72 at degree 10): the surface jumps there, and its
 // derivative over a span one or two float steps long is not defined by the stored data. The
 // points are still compared there.
-bool resolved(const float* q, float u, float v) {
-    const detail::BSplineSurfaceView B(q);
+bool resolved(const BSplineSurfaceView& B, float u, float v) {
     const int su = detail::find_span(B.uk, B.nu, B.pu, u, B.u_periodic), sv = detail::find_span(B.vk, B.nv, B.pv, v, B.v_periodic);
     return B.uk[su + 1] - B.uk[su] >= 1e-4f * (B.uk[B.ku - 1] - B.uk[0]) && B.vk[sv + 1] - B.vk[sv] >= 1e-4f * (B.vk[B.kv - 1] - B.vk[0]);
 }
 
 void check_surface(const Pack& pack, uint32_t s, double diagonal, std::vector<uint32_t>& memory, Worst& w) {
     const pack::Surface& S = pack.surfaces()[s];
-    const float* q = pack.floats().data() + S.params;
-    const int ku = int(q[4]), kv = int(q[5]);
-    const std::vector<float> us = params(q + 9, ku), vs = params(q + 9 + ku, kv);
+    const BSplineSurfaceView B = bspline(pack, S);
+    const std::vector<float> us = params(B.uk, B.ku), vs = params(B.vk, B.kv);
     PatchCache cache(pack, S, memory);
     if (!cache.usable()) {
         ++w.skipped;
@@ -118,7 +115,7 @@ void check_surface(const Pack& pack, uint32_t s, double diagonal, std::vector<ui
     double largest = 0, off = 0; // derivatives: the largest, and the largest difference
     for (float u : us) {
         for (float v : vs) {
-            const SurfacePointD ref = reference(q, u, v);
+            const SurfacePointD ref = reference(B, u, v);
             const double e = distance(cache.point(u, v), ref.p) / diagonal;
             ++w.points;
             if (e > w.error || e != e) w.error = e, w.surface = s, w.u = u, w.v = v;
@@ -126,7 +123,7 @@ void check_surface(const Pack& pack, uint32_t s, double diagonal, std::vector<ui
             const double ep = distance(da.p, ref.p) / diagonal;
             if (ep > w.error || ep != ep) w.error = ep, w.surface = s, w.u = u, w.v = v;
             largest = std::max({largest, distance({0, 0, 0}, ref.du), distance({0, 0, 0}, ref.dv)});
-            if (!resolved(q, u, v)) {
+            if (!resolved(B, u, v)) {
                 ++w.unresolved;
                 continue;
             }
@@ -139,8 +136,7 @@ void check_surface(const Pack& pack, uint32_t s, double diagonal, std::vector<ui
 }
 
 // A B-spline curve's point and derivative (dim 2 or 3), in double.
-void curve_reference(const float* q, int dim, float t, double p[3], double d[3]) {
-    const detail::BSplineCurveView C(q, dim);
+void curve_reference(const BSplineCurveView& C, int dim, float t, double p[3], double d[3]) {
     double N[kMaxDegree + 1], dN[kMaxDegree + 1];
     const int s = detail::basis<double>(C.knots, C.n, C.p, t, C.periodic, N, dN);
     double A[4] = {}, dA[4] = {};
@@ -164,8 +160,7 @@ void check_curve(const Pack& pack, const pack::Curve& C, uint32_t c, double diag
     if (!spans.usable()) return;
     ++w.surfaces;
     const int dim = C.dim;
-    const float* q = pack.floats().data() + C.params;
-    const detail::BSplineCurveView V(q, dim);
+    const BSplineCurveView V = bspline(pack, C);
     if (dim == 2) { // the pcurve's own size
         double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300}, big = 0;
         for (int i = 0; i < V.n; ++i) {
@@ -179,7 +174,7 @@ void check_curve(const Pack& pack, const pack::Curve& C, uint32_t c, double diag
     double largest = 0, off = 0;
     for (float t : params(V.knots, V.k)) {
         double p[3], d[3];
-        curve_reference(q, dim, t, p, d);
+        curve_reference(V, dim, t, p, d);
         std::vector<Vec3> got;
         if (dim == 3) got = {spans.point(t), spans.point_and_derivative(t).p};
         else got = {Vec3{spans.point2(t).x, spans.point2(t).y, 0}};
@@ -237,8 +232,8 @@ int main(int argc, char** argv) {
         for (uint32_t s = 0; s < pack.surfaces().size(); ++s) {
             if (pack.surfaces()[s].type != uint8_t(pack::SurfaceType::BSpline)) continue;
             std::vector<uint32_t> all(kPatchCacheWords), one;
-            const float* q = pack.floats().data() + pack.surfaces()[s].params;
-            one.resize(1 + PatchCache::slot_words(int(q[0]), int(q[1]), q[6] != 0));
+            const BSplineSurfaceView B = bspline(pack, pack.surfaces()[s]);
+            one.resize(1 + PatchCache::slot_words(B.pu, B.pv, B.rational));
             check_surface(pack, s, diagonal, all, big);
             check_surface(pack, s, diagonal, one, small);
         }

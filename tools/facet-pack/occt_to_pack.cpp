@@ -35,6 +35,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <vector>
 
 namespace facet::packer {
@@ -48,18 +49,31 @@ using Floats = std::vector<float>;
 // as many bytes as any other float, a 0 almost none. Moves nothing by more than 1e-9.
 float clean(double x) { return std::fabs(x) < 1e-9 ? 0.0f : float(x); }
 
-void put(Floats& f, const gp_XYZ& v) { f.insert(f.end(), {clean(v.X()), clean(v.Y()), clean(v.Z())}); }
-void put(Floats& f, const gp_XY& v) { f.insert(f.end(), {clean(v.X()), clean(v.Y())}); }
+// The records of pack_format.h from OCCT's values (coordinates cleaned, as every float of a
+// position or direction), and a record as the floats the pool stores.
+void set(float (&out)[3], const gp_XYZ& v) { out[0] = clean(v.X()), out[1] = clean(v.Y()), out[2] = clean(v.Z()); }
+void set(float (&out)[2], const gp_XY& v) { out[0] = clean(v.X()), out[1] = clean(v.Y()); }
 
-void put_axes(Floats& f, const gp_Ax3& a) {
-    put(f, a.Location().XYZ());
-    put(f, a.XDirection().XYZ());
-    put(f, a.YDirection().XYZ());
-    put(f, a.Direction().XYZ());
+Frame frame_of(const gp_Ax3& a) {
+    Frame f;
+    set(f.origin, a.Location().XYZ());
+    set(f.x, a.XDirection().XYZ());
+    set(f.y, a.YDirection().XYZ());
+    set(f.z, a.Direction().XYZ());
+    return f;
+}
+
+template <typename Params>
+Floats floats_of(const Params& p) {
+    Floats f(float_count<Params>);
+    std::memcpy(f.data(), &p, sizeof p);
+    return f;
 }
 
 constexpr double kApproxTolerance = 1e-4; // mm, for curves and surfaces with no packed form
 
+void put(Floats& f, const gp_XYZ& v) { f.insert(f.end(), {clean(v.X()), clean(v.Y()), clean(v.Z())}); }
+void put(Floats& f, const gp_XY& v) { f.insert(f.end(), {clean(v.X()), clean(v.Y())}); }
 void put(Floats& f, const gp_Pnt& p) { put(f, p.XYZ()); }
 void put(Floats& f, const gp_Pnt2d& p) { put(f, p.XY()); }
 
@@ -73,11 +87,11 @@ Floats bspline_curve(opencascade::handle<Curve> c) {
         c = opencascade::handle<Curve>::DownCast(c->Copy());
         c->SetNotPeriodic(); // same curve over one period; the reader wraps parameters into it
     }
-    Floats f;
     const int n = c->NbPoles();
     TColStd_Array1OfReal knots(1, c->NbPoles() + c->Degree() + 1);
     c->KnotSequence(knots);
-    f.insert(f.end(), {float(c->Degree()), float(n), float(knots.Length()), c->IsRational() ? 1.0f : 0.0f, periodic ? 1.0f : 0.0f});
+    Floats f = floats_of(BSplineCurveHead{float(c->Degree()), float(n), float(knots.Length()), c->IsRational() ? 1.0f : 0.0f,
+                                          periodic ? 1.0f : 0.0f});
     for (int i = knots.Lower(); i <= knots.Upper(); ++i) f.push_back(clean(knots(i)));
     for (int i = 1; i <= n; ++i) put(f, c->Pole(i));
     if (c->IsRational())
@@ -90,16 +104,16 @@ gp_XYZ coords(const gp_Pnt& p) { return p.XYZ(); }
 gp_XY coords(const gp_Pnt2d& p) { return p.XY(); }
 
 // A degree-1 B-spline with two poles is a line, exactly: P0 + (t - k0) (P1 - P0) / (k1 - k0).
-// (Geom_BSplineCurve or Geom2d_BSplineCurve.)
-template <typename BSpline>
-bool bspline_line(const opencascade::handle<BSpline>& b, Floats& f) {
+// (Geom_BSplineCurve and Line3Params, or Geom2d_BSplineCurve and Line2Params.)
+template <typename BSpline, typename Line>
+bool bspline_line(const opencascade::handle<BSpline>& b, Line& line) {
     if (b->Degree() != 1 || b->NbPoles() != 2 || b->IsRational() || b->IsPeriodic()) return false;
     const double k0 = b->FirstParameter(), k1 = b->LastParameter();
     if (!(k1 > k0)) return false;
     const auto p0 = coords(b->Pole(1));
     const auto d = (coords(b->Pole(2)) - p0) / (k1 - k0);
-    put(f, p0 - d * k0);
-    put(f, d);
+    set(line.origin, p0 - d * k0);
+    set(line.direction, d);
     return true;
 }
 
@@ -149,34 +163,36 @@ Handle(Geom2d_BSplineCurve) simpler_pcurve(const Handle(Geom2d_BSplineCurve)& b,
 // A 3D curve as a Curves3 record; other kinds become B-splines within kApproxTolerance.
 static uint32_t add_curve3(geom::PackWriter& w, const Handle(Geom_Curve)& curve, double t0, double t1, Stats& st) {
     GeomAdaptor_Curve a(curve);
-    Floats f;
     switch (a.GetType()) {
     case GeomAbs_Line: {
         const gp_Lin l = a.Line();
-        put(f, l.Location().XYZ());
-        put(f, l.Direction().XYZ());
-        return w.add_curve(CurveType::Line, 3, f);
+        Line3Params line;
+        set(line.origin, l.Location().XYZ());
+        set(line.direction, l.Direction().XYZ());
+        return w.add_curve(CurveType::Line, 3, floats_of(line));
     }
     case GeomAbs_Circle: {
         const gp_Circ c = a.Circle();
-        put(f, c.Location().XYZ());
-        put(f, c.XAxis().Direction().XYZ());
-        put(f, c.YAxis().Direction().XYZ());
-        f.push_back(float(c.Radius()));
-        return w.add_curve(CurveType::Circle, 3, f);
+        Circle3Params circle;
+        set(circle.origin, c.Location().XYZ());
+        set(circle.x, c.XAxis().Direction().XYZ());
+        set(circle.y, c.YAxis().Direction().XYZ());
+        circle.radius = float(c.Radius());
+        return w.add_curve(CurveType::Circle, 3, floats_of(circle));
     }
     case GeomAbs_Ellipse: {
         const gp_Elips e = a.Ellipse();
-        put(f, e.Location().XYZ());
-        put(f, e.XAxis().Direction().XYZ());
-        put(f, e.YAxis().Direction().XYZ());
-        f.insert(f.end(), {float(e.MajorRadius()), float(e.MinorRadius())});
-        return w.add_curve(CurveType::Ellipse, 3, f);
+        Ellipse3Params ellipse;
+        set(ellipse.origin, e.Location().XYZ());
+        set(ellipse.x, e.XAxis().Direction().XYZ());
+        set(ellipse.y, e.YAxis().Direction().XYZ());
+        ellipse.major = float(e.MajorRadius()), ellipse.minor = float(e.MinorRadius());
+        return w.add_curve(CurveType::Ellipse, 3, floats_of(ellipse));
     }
     case GeomAbs_BSplineCurve:
-        if (bspline_line(a.BSpline(), f)) {
+        if (Line3Params line; bspline_line(a.BSpline(), line)) {
             ++st.converted["3D B-spline of degree 1 -> line"];
-            return w.add_curve(CurveType::Line, 3, f);
+            return w.add_curve(CurveType::Line, 3, floats_of(line));
         }
         return w.add_curve(CurveType::BSpline, 3, bspline_curve(a.BSpline()));
     default: break;
@@ -200,35 +216,37 @@ static uint32_t add_curve3(geom::PackWriter& w, const Handle(Geom_Curve)& curve,
 static uint32_t add_curve2(geom::PackWriter& w, const Handle(Geom2d_Curve)& curve, double t0, double t1,
                            const Handle(Geom_Surface)& surface, Stats& st) {
     Geom2dAdaptor_Curve a(curve);
-    Floats f;
     switch (a.GetType()) {
     case GeomAbs_Line: {
         const gp_Lin2d l = a.Line();
-        put(f, l.Location().XY());
-        put(f, l.Direction().XY());
-        return w.add_curve(CurveType::Line, 2, f);
+        Line2Params line;
+        set(line.origin, l.Location().XY());
+        set(line.direction, l.Direction().XY());
+        return w.add_curve(CurveType::Line, 2, floats_of(line));
     }
     case GeomAbs_Circle: {
         const gp_Circ2d c = a.Circle();
-        put(f, c.Location().XY());
-        put(f, c.XAxis().Direction().XY());
-        put(f, c.YAxis().Direction().XY());
-        f.push_back(float(c.Radius()));
-        return w.add_curve(CurveType::Circle, 2, f);
+        Circle2Params circle;
+        set(circle.origin, c.Location().XY());
+        set(circle.x, c.XAxis().Direction().XY());
+        set(circle.y, c.YAxis().Direction().XY());
+        circle.radius = float(c.Radius());
+        return w.add_curve(CurveType::Circle, 2, floats_of(circle));
     }
     case GeomAbs_Ellipse: {
         const gp_Elips2d e = a.Ellipse();
-        put(f, e.Location().XY());
-        put(f, e.XAxis().Direction().XY());
-        put(f, e.YAxis().Direction().XY());
-        f.insert(f.end(), {float(e.MajorRadius()), float(e.MinorRadius())});
-        return w.add_curve(CurveType::Ellipse, 2, f);
+        Ellipse2Params ellipse;
+        set(ellipse.origin, e.Location().XY());
+        set(ellipse.x, e.XAxis().Direction().XY());
+        set(ellipse.y, e.YAxis().Direction().XY());
+        ellipse.major = float(e.MajorRadius()), ellipse.minor = float(e.MinorRadius());
+        return w.add_curve(CurveType::Ellipse, 2, floats_of(ellipse));
     }
     case GeomAbs_BSplineCurve: {
         const Handle(Geom2d_BSplineCurve) b = a.BSpline();
-        if (bspline_line(b, f)) {
+        if (Line2Params line; bspline_line(b, line)) {
             ++st.converted["pcurve B-spline of degree 1 -> line"];
-            return w.add_curve(CurveType::Line, 2, f);
+            return w.add_curve(CurveType::Line, 2, floats_of(line));
         }
         if (const Handle(Geom2d_BSplineCurve) simple = simpler_pcurve(b, surface, t0, t1); !simple.IsNull()) {
             ++st.converted["pcurve B-spline -> fewer poles"];
@@ -259,32 +277,26 @@ static Handle(Geom_Surface) untrimmed(Handle(Geom_Surface) s) {
 
 static uint32_t add_surface(geom::PackWriter& w, const Handle(Geom_Surface)& surface, Stats& st) {
     GeomAdaptor_Surface a(surface);
-    Floats f;
     switch (a.GetType()) {
     case GeomAbs_Plane:
         ++st.surface_types["plane"];
-        put_axes(f, a.Plane().Position());
-        return w.add_surface(SurfaceType::Plane, f);
+        return w.add_surface(SurfaceType::Plane, floats_of(PlaneParams{frame_of(a.Plane().Position())}));
     case GeomAbs_Cylinder:
         ++st.surface_types["cylinder"];
-        put_axes(f, a.Cylinder().Position());
-        f.push_back(float(a.Cylinder().Radius()));
-        return w.add_surface(SurfaceType::Cylinder, f);
+        return w.add_surface(SurfaceType::Cylinder,
+                             floats_of(CylinderParams{frame_of(a.Cylinder().Position()), float(a.Cylinder().Radius())}));
     case GeomAbs_Cone:
         ++st.surface_types["cone"];
-        put_axes(f, a.Cone().Position());
-        f.insert(f.end(), {float(a.Cone().RefRadius()), float(a.Cone().SemiAngle())});
-        return w.add_surface(SurfaceType::Cone, f);
+        return w.add_surface(SurfaceType::Cone, floats_of(ConeParams{frame_of(a.Cone().Position()), float(a.Cone().RefRadius()),
+                                                                     float(a.Cone().SemiAngle())}));
     case GeomAbs_Sphere:
         ++st.surface_types["sphere"];
-        put_axes(f, a.Sphere().Position());
-        f.push_back(float(a.Sphere().Radius()));
-        return w.add_surface(SurfaceType::Sphere, f);
+        return w.add_surface(SurfaceType::Sphere,
+                             floats_of(SphereParams{frame_of(a.Sphere().Position()), float(a.Sphere().Radius())}));
     case GeomAbs_Torus:
         ++st.surface_types["torus"];
-        put_axes(f, a.Torus().Position());
-        f.insert(f.end(), {float(a.Torus().MajorRadius()), float(a.Torus().MinorRadius())});
-        return w.add_surface(SurfaceType::Torus, f);
+        return w.add_surface(SurfaceType::Torus, floats_of(TorusParams{frame_of(a.Torus().Position()), float(a.Torus().MajorRadius()),
+                                                                       float(a.Torus().MinorRadius())}));
     case GeomAbs_SurfaceOfRevolution: {
         const gp_Ax1 axis = a.AxeOfRevolution();
         Handle(Geom_SurfaceOfRevolution) rev = Handle(Geom_SurfaceOfRevolution)::DownCast(untrimmed(surface));
@@ -292,9 +304,10 @@ static uint32_t add_surface(geom::PackWriter& w, const Handle(Geom_Surface)& sur
         const uint32_t c = add_curve3(w, rev->BasisCurve(), rev->BasisCurve()->FirstParameter(), rev->BasisCurve()->LastParameter(), st);
         if (c == kNoIndex) break;
         ++st.surface_types["revolution"];
-        put(f, axis.Location().XYZ());
-        put(f, axis.Direction().XYZ());
-        return w.add_surface(SurfaceType::Revolution, f, c);
+        RevolutionParams revolution;
+        set(revolution.axis_origin, axis.Location().XYZ());
+        set(revolution.axis_direction, axis.Direction().XYZ());
+        return w.add_surface(SurfaceType::Revolution, floats_of(revolution), c);
     }
     case GeomAbs_SurfaceOfExtrusion: {
         Handle(Geom_SurfaceOfLinearExtrusion) ext = Handle(Geom_SurfaceOfLinearExtrusion)::DownCast(untrimmed(surface));
@@ -302,8 +315,9 @@ static uint32_t add_surface(geom::PackWriter& w, const Handle(Geom_Surface)& sur
         const uint32_t c = add_curve3(w, ext->BasisCurve(), ext->BasisCurve()->FirstParameter(), ext->BasisCurve()->LastParameter(), st);
         if (c == kNoIndex) break;
         ++st.surface_types["extrusion"];
-        put(f, a.Direction().XYZ());
-        return w.add_surface(SurfaceType::Extrusion, f, c);
+        ExtrusionParams extrusion;
+        set(extrusion.direction, a.Direction().XYZ());
+        return w.add_surface(SurfaceType::Extrusion, floats_of(extrusion), c);
     }
     default: break;
     }
@@ -338,8 +352,9 @@ static uint32_t add_surface(geom::PackWriter& w, const Handle(Geom_Surface)& sur
     b->UKnotSequence(uk);
     b->VKnotSequence(vk);
     const bool rational = b->IsURational() || b->IsVRational();
-    f.insert(f.end(), {float(b->UDegree()), float(b->VDegree()), float(nu), float(nv), float(uk.Length()),
-                       float(vk.Length()), rational ? 1.0f : 0.0f, u_periodic ? 1.0f : 0.0f, v_periodic ? 1.0f : 0.0f});
+    Floats f = floats_of(BSplineSurfaceHead{float(b->UDegree()), float(b->VDegree()), float(nu), float(nv), float(uk.Length()),
+                                            float(vk.Length()), rational ? 1.0f : 0.0f, u_periodic ? 1.0f : 0.0f,
+                                            v_periodic ? 1.0f : 0.0f});
     for (int i = uk.Lower(); i <= uk.Upper(); ++i) f.push_back(clean(uk(i)));
     for (int i = vk.Lower(); i <= vk.Upper(); ++i) f.push_back(clean(vk(i)));
     for (int i = 1; i <= nu; ++i)

@@ -41,7 +41,9 @@ bool invert_elementary(const Pack& pack, const pack::Surface& s, Vec3 p, const f
 int invert_candidates(const Pack& pack, const pack::Surface& s, Vec3 p, const float uv_min[2],
                       const float uv_max[2], Vec2 out[2]);
 
-bool is_elementary(const pack::Surface& s);
+inline bool is_elementary(const pack::Surface& s) {
+    return s.type >= uint8_t(pack::SurfaceType::Plane) && s.type <= uint8_t(pack::SurfaceType::Torus);
+}
 // Whether u (v) of this surface type is an angle (periodic with 2 pi).
 bool u_periodic(const pack::Surface& s);
 bool v_periodic(const pack::Surface& s);

@@ -67,6 +67,16 @@ inline float sqrt_by_integers(float x) {
     return std::bit_cast<float>((uint32_t((ex - odd) / 2 + 126) << 23) + r);
 }
 
+// A small float routine called from a hot loop: inlined where the core has an FPU (its float
+// operations are single instructions, and the call would cost more than they do); kept out of
+// line on an ARM core without one, where every operation is a library call anyway and each
+// inlined copy is kilobytes of code.
+#if defined(__ARM_ARCH) && !defined(__ARM_FP)
+#define FACET_INLINE_WITH_FPU [[gnu::noinline]]
+#else
+#define FACET_INLINE_WITH_FPU
+#endif
+
 // sqrt x, correctly rounded: by integers on an ARM core without an FPU, else the FPU's own
 // instruction (the Cortex-M7's vsqrt, the host's): the same bits either way.
 inline float sqrt_f(float x) {

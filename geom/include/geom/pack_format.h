@@ -77,32 +77,95 @@ static_assert(sizeof(SectionEntry) == 16);
 //   Sphere    P(u,v) = O + R cos v (cos u X + sin u Y) + R sin v Z
 //   Torus     P(u,v) = O + (R + r cos v)(cos u X + sin u Y) + r sin v Z
 enum class SurfaceType : uint8_t {
-    Plane = 1,      // params: origin[3] x[3] y[3] z[3]                         (12)
-    Cylinder = 2,   // origin[3] x[3] y[3] z[3] radius                          (13)
-    Cone = 3,       // origin[3] x[3] y[3] z[3] ref_radius semi_angle           (14)
-    Sphere = 4,     // origin[3] x[3] y[3] z[3] radius                          (13)
-    Torus = 5,      // origin[3] x[3] y[3] z[3] major minor                     (14)
-    BSpline = 6,    // see BSplineSurfaceHead
-    Revolution = 7, // axis origin[3] dir[3]; ref = the revolved 3D curve: P(u,v) = C(v) turned
-                    // by u about the axis                                      (6)
-    Extrusion = 8,  // dir[3]; ref = the extruded 3D curve: P(u,v) = C(u) + v D  (3)
+    Plane = 1,      // PlaneParams
+    Cylinder = 2,   // CylinderParams
+    Cone = 3,       // ConeParams
+    Sphere = 4,     // SphereParams
+    Torus = 5,      // TorusParams
+    BSpline = 6,    // BSplineSurfaceHead, then knots, poles, weights
+    Revolution = 7, // RevolutionParams; ref = the revolved 3D curve: P(u,v) = C(v) turned by u
+                    // about the axis
+    Extrusion = 8,  // ExtrusionParams; ref = the extruded 3D curve: P(u,v) = C(u) + v D
 };
 
 enum class CurveType : uint8_t {
-    Line = 1,    // 3D: origin[3] dir[3] (6);            2D: origin[2] dir[2] (4)
-    Circle = 2,  // 3D: origin[3] xdir[3] ydir[3] r (10); 2D: origin[2] xdir[2] ydir[2] r (7)
-    Ellipse = 3, // 3D: ... major minor (11);             2D: ... major minor (8)
-    BSpline = 4, // see BSplineCurveHead
+    Line = 1,    // Line3Params / Line2Params
+    Circle = 2,  // Circle3Params / Circle2Params
+    Ellipse = 3, // Ellipse3Params / Ellipse2Params
+    BSpline = 4, // BSplineCurveHead, then knots, poles, weights
 };
 
-// Leading parameters of a B-spline, then knots (expanded by multiplicity), then poles
-// (dim values each, times the weight-free coordinates; weights follow the poles if rational).
+// The parameters of each kind of surface and curve, as they lie in the Floats pool from the
+// record's `params` on: the packer writes these records and the reader reads them in place
+// (geom/params.h); a record's float count is its size. A B-spline's head is followed by its
+// knots (expanded by multiplicity), its poles (dim floats each, weight-free coordinates) and, if
+// rational, its weights.
+struct Frame {
+    float origin[3], x[3], y[3], z[3];
+};
+struct PlaneParams {
+    Frame frame;
+};
+struct CylinderParams {
+    Frame frame;
+    float radius;
+};
+struct ConeParams {
+    Frame frame;
+    float ref_radius; // the radius at v = 0
+    float semi_angle; // rad
+};
+struct SphereParams {
+    Frame frame;
+    float radius;
+};
+struct TorusParams {
+    Frame frame;
+    float major_radius; // of the circle the tube's centre runs on
+    float minor_radius; // the tube's
+};
+struct RevolutionParams {
+    float axis_origin[3], axis_direction[3];
+};
+struct ExtrusionParams {
+    float direction[3];
+};
+struct Line3Params {
+    float origin[3], direction[3]; // P(t) = origin + t direction
+};
+struct Circle3Params {
+    float origin[3], x[3], y[3], radius; // P(t) = origin + radius (cos t x + sin t y)
+};
+struct Ellipse3Params {
+    float origin[3], x[3], y[3], major, minor; // P(t) = origin + major cos t x + minor sin t y
+};
+struct Line2Params {
+    float origin[2], direction[2];
+};
+struct Circle2Params {
+    float origin[2], x[2], y[2], radius;
+};
+struct Ellipse2Params {
+    float origin[2], x[2], y[2], major, minor;
+};
 struct BSplineCurveHead {
     float degree, pole_count, knot_count, rational, periodic; // stored as floats in the pool
 };
 struct BSplineSurfaceHead {
     float u_degree, v_degree, u_poles, v_poles, u_knots, v_knots, rational, u_periodic, v_periodic;
 };
+
+// A record's length in floats (the reader's expected count; a B-spline's head alone).
+template <typename Params>
+constexpr uint32_t float_count = uint32_t(sizeof(Params) / sizeof(float));
+static_assert(float_count<PlaneParams> == 12 && float_count<CylinderParams> == 13 && float_count<ConeParams> == 14 &&
+                  float_count<SphereParams> == 13 && float_count<TorusParams> == 14 && float_count<RevolutionParams> == 6 &&
+                  float_count<ExtrusionParams> == 3,
+              "the surface records of pack version 3");
+static_assert(float_count<Line3Params> == 6 && float_count<Circle3Params> == 10 && float_count<Ellipse3Params> == 11 &&
+                  float_count<Line2Params> == 4 && float_count<Circle2Params> == 7 && float_count<Ellipse2Params> == 8 &&
+                  float_count<BSplineCurveHead> == 5 && float_count<BSplineSurfaceHead> == 9,
+              "the curve records of pack version 3");
 
 struct Surface {
     uint8_t type;  // SurfaceType

@@ -33,6 +33,23 @@ constexpr int kMaxPatchDegree = 7;   // up to this degree: power form, Horner
 constexpr int kMaxBezierDegree = 15; // beyond it up to this one: Bézier form, Bernstein sums
 
 class PatchCache {
+    // The memory: word 0 the surface whose patches it holds (its first float + 1; 0: none),
+    // then (power form, when there is room) kMatrixSlots span matrices per direction, each a
+    // MatrixHead and (p + 1)^2 coefficients, then the patch slots, each a PatchHead and the
+    // patch's coefficients (int32, coordinate after coordinate).
+    struct PatchHead {
+        uint32_t key;       // the spans, su << 16 | sv (kEmpty: a free slot)
+        uint32_t exponents; // a signed byte per coordinate: coefficient = value 2^exponent
+        float origin[3];    // the patch's first pole: its coordinates are relative to it
+        float per_span[2];  // 2^30 over the u and the v span's length (local parameters)
+    };
+    struct MatrixHead {
+        uint32_t span; // kEmpty: a free slot
+        int32_t exponent;
+    };
+    static constexpr uint32_t kHead = sizeof(PatchHead) / 4;
+    static constexpr uint32_t kMatrixHead = sizeof(MatrixHead) / 4;
+
 public:
     // Words of one patch: its header and (pu + 1)(pv + 1) coefficients per coordinate.
     static constexpr uint32_t slot_words(int pu, int pv, bool rational) {
@@ -53,24 +70,25 @@ public:
     uint32_t conversions() const { return conversions_; } // patches made by this view
 
 private:
-    static constexpr uint32_t kHead = 7; // key, exponents, origin x y z, 2^30 over the spans' lengths
     static constexpr uint32_t kMatrixSlots = 32;
-    static constexpr uint32_t matrix_words(int p) { return 2 + uint32_t((p + 1) * (p + 1)); }
+    static constexpr uint32_t matrix_words(int p) { return kMatrixHead + uint32_t((p + 1) * (p + 1)); }
+    static const int32_t* coefficients(const PatchHead* h) { return reinterpret_cast<const int32_t*>(h + 1); }
+    static int32_t* coefficients(PatchHead* h) { return reinterpret_cast<int32_t*>(h + 1); }
     // Span `span`'s basis matrix in u (v false) or v and its exponent: from the memory's
     // matrices, made there if missing, or made in `local` when there are none.
     const int32_t* span_matrix(bool v, int span, int& e, int32_t* local);
-    const uint32_t* patch(int su, int sv);
+    const PatchHead* patch(int su, int sv);
     // The patch of (u, v) and the local parameters in [0, 2^30]; u and v wrapped or clamped.
-    const uint32_t* locate(float& u, float& v, int32_t& qs, int32_t& qt);
-    void convert(int su, int sv, uint32_t* slot);
-    void convert_bezier(int su, int sv, uint32_t* slot);
+    const PatchHead* locate(float& u, float& v, int32_t& qs, int32_t& qt);
+    void convert(int su, int sv, PatchHead* slot);
+    void convert_bezier(int su, int sv, PatchHead* slot);
     // Pole `at` in homogeneous coordinates w (P - O), w (w only if rational) into h.
     void homogeneous(int at, const float* O, float* h) const;
     // The slot's header after its coefficients: exponents, origin, 2^30 over the spans' lengths.
-    void write_head(uint32_t* slot, int su, int sv, const float* O, uint32_t exps) const;
+    void write_head(PatchHead* slot, int su, int sv, const float* O, uint32_t exps) const;
     // The Bézier patch's coordinates at (qs, qt), and (ds, dt not null) their last
     // differences in s and t (the derivatives over the degrees).
-    void bezier(const uint32_t* slot, int32_t qs, int32_t qt, int32_t* out, int32_t* ds, int32_t* dt) const;
+    void bezier(const PatchHead* slot, int32_t qs, int32_t qt, int32_t* out, int32_t* ds, int32_t* dt) const;
 
     uint32_t* memory_ = nullptr;
     uint32_t slots_ = 0, slot_words_ = 0, conversions_ = 0;
@@ -83,7 +101,7 @@ private:
     // memory before the patches (a span's is shared by a row or column of patches): key,
     // exponent, (p + 1)^2 coefficients. Null when the memory has no room for them.
     uint32_t *mu_ = nullptr, *mv_ = nullptr;
-    const uint32_t* last_ = nullptr;  // and its patch
+    const PatchHead* last_ = nullptr; // and its patch
 };
 
 // Points of a B-spline curve in fixed point. In float, the basis functions take p (p + 1) / 2
