@@ -93,22 +93,27 @@ struct CountCrossed {
 // Flags an existing edge, or collects and re-triangulates the cavity of one piece (phase 2).
 template <typename Index>
 void Cdt<Index>::apply_piece(Index a, Index b, uint32_t K, Index& reached) {
-    // Work layout for at most K crossed triangles (13K + 18 entries, checked in phase 1):
-    //   slots[K] | left poly[K+2] | left edges[3(K+1)] | right poly[K+2] | right edges[3(K+1)]
-    //   | polygon stack[4(K+2)]
+    // The cavity's parts in the work buffer (CavityLayout: checked in phase 1).
+    static_assert(sizeof(Index) != 2 || (CavityLayout::of(1).entries == 13 + 18 && sizeof(CavityEdge) == 3 * sizeof(Index)),
+                  "the device's cavity: 13 K + 18 entries, an edge record in three");
     Index* const w = a_.work.data();
+    const CavityLayout at = CavityLayout::of(K);
     struct Collect {
         Cdt& c;
-        Index *slots, *lpoly, *ledge, *rpoly, *redge;
+        Index* slots;
+        Index* lpoly;
+        CavityEdge* ledge;
+        Index* rpoly;
+        CavityEdge* redge;
         uint32_t ns = 0, nl = 0, nr = 0;
         bool existing = false;
 
-        void record(Index* out, Index t, int e) {
+        void record(CavityEdge& out, Index t, int e) {
             const Triangle<Index>& T = c.a_.triangles[t];
-            const Index o = T.n[e];
-            out[0] = o;
-            out[1] = Index(T.back_edge(e));
-            out[2] = Index(T.flag(e));
+            out.outside = T.n[e];
+            out.outside_edge = uint8_t(T.back_edge(e));
+            out.flag = T.flag(e);
+            out.slit = out.slit_built = false;
         }
         void edge(Index t, int e) {
             existing = true;
@@ -124,37 +129,40 @@ void Cdt<Index>::apply_piece(Index a, Index b, uint32_t K, Index& reached) {
             const Triangle<Index>& T = c.a_.triangles[t];
             slots[ns++] = t;
             lpoly[++nl] = T.v[prev3(k)];
-            record(ledge, t, next3(k)); // (a, y)
+            record(ledge[0], t, next3(k)); // (a, y)
             rpoly[++nr] = T.v[next3(k)];
-            record(redge, t, prev3(k)); // (a, x)
+            record(redge[0], t, prev3(k)); // (a, x)
         }
         void step(Index u, int j, int side) {
             const Triangle<Index>& U = c.a_.triangles[u];
             slots[ns++] = u;
             if (side >= 0) { // left boundary edge (v[j+1], w) is edge j+2
-                record(ledge + 3 * nl, u, prev3(j));
+                record(ledge[nl], u, prev3(j));
                 if (side > 0) lpoly[++nl] = U.v[j];
             }
             if (side <= 0) { // right boundary edge (v[j+2], w) is edge j+1
-                record(redge + 3 * nr, u, next3(j));
+                record(redge[nr], u, next3(j));
                 if (side < 0) rpoly[++nr] = U.v[j];
             }
         }
-    } col{*this, w, w + K, w + 2 * K + 2, w + 5 * K + 5, w + 6 * K + 7};
-    Index* const stack = w + 9 * K + 10;
+    } col{*this,
+          w + at.slots,
+          w + at.left_poly,
+          reinterpret_cast<CavityEdge*>(w + at.left_edges),
+          w + at.right_poly,
+          reinterpret_cast<CavityEdge*>(w + at.right_edges)};
+    Index* const stack = w + at.stack;
 
     (void)trace(a, b, reached, col);
     if (col.existing) return;
 
     // Records whose "outside" is a crossed triangle are slit edges inside the cavity.
     for (uint32_t i = 0; i < col.ns; ++i) a_.triangles[col.slots[i]].flags |= Triangle<Index>::kMarkBit;
-    for (Index* edges : {col.ledge, col.redge}) {
+    for (CavityEdge* edges : {col.ledge, col.redge}) {
         const uint32_t n = edges == col.ledge ? col.nl + 1 : col.nr + 1;
         for (uint32_t i = 0; i < n; ++i) {
-            Index* rec = edges + 3 * i;
-            if (rec[0] != kNone<Index> && (a_.triangles[rec[0]].flags & Triangle<Index>::kMarkBit)) {
-                rec[2] |= kSlit;
-            }
+            CavityEdge& rec = edges[i];
+            if (rec.outside != kNone<Index> && (a_.triangles[rec.outside].flags & Triangle<Index>::kMarkBit)) rec.slit = true;
         }
     }
 
@@ -171,11 +179,9 @@ void Cdt<Index>::apply_piece(Index a, Index b, uint32_t K, Index& reached) {
         col.rpoly[j] = t;
     }
     for (uint32_t i = 0, j = rn - 2; i < j; ++i, --j) {
-        for (int f = 0; f < 3; ++f) {
-            const Index t = col.redge[3 * i + f];
-            col.redge[3 * i + f] = col.redge[3 * j + f];
-            col.redge[3 * j + f] = t;
-        }
+        const CavityEdge t = col.redge[i];
+        col.redge[i] = col.redge[j];
+        col.redge[j] = t;
     }
     uint32_t cursor = 0;
     const Index tl = build_polygon(col.lpoly, col.ledge, col.nl + 1, stack, col.slots, cursor);
@@ -192,24 +198,23 @@ void Cdt<Index>::apply_piece(Index a, Index b, uint32_t K, Index& reached) {
 // and flag. A slit edge waits for its twin (the same edge, reversed, elsewhere in the chain)
 // and is linked to it once both sides exist.
 template <typename Index>
-void Cdt<Index>::set_boundary(Index t, int e, const Index* poly, Index* edges, uint32_t count,
-                              uint32_t i) {
-    Index* rec = edges + 3 * i;
+void Cdt<Index>::set_boundary(Index t, int e, const Index* poly, CavityEdge* edges, uint32_t count, uint32_t i) {
+    CavityEdge& rec = edges[i];
     Triangle<Index>& T = a_.triangles[t];
-    T.set_flag(e, static_cast<Flag>(rec[2] & 3));
-    if (!(rec[2] & kSlit)) {
-        link(t, e, rec[0], int(rec[1]));
+    T.set_flag(e, rec.flag);
+    if (!rec.slit) {
+        link(t, e, rec.outside, rec.outside_edge);
         return;
     }
     for (uint32_t k = 0; k + 1 < count; ++k) {
-        Index* twin = edges + 3 * k;
-        if (k == i || poly[k] != poly[i + 1] || poly[k + 1] != poly[i] || !(twin[2] & kSlit)) continue;
-        if (twin[2] & kSlitBuilt) {
-            link(t, e, twin[0], twin[1]);
+        const CavityEdge& twin = edges[k];
+        if (k == i || poly[k] != poly[i + 1] || poly[k + 1] != poly[i] || !twin.slit) continue;
+        if (twin.slit_built) {
+            link(t, e, twin.outside, twin.outside_edge);
         } else {
-            rec[0] = t;
-            rec[1] = Index(e);
-            rec[2] |= kSlitBuilt;
+            rec.outside = t;
+            rec.outside_edge = uint8_t(e);
+            rec.slit_built = true;
             T.n[e] = kNone<Index>; // until the twin is built
         }
         return;
@@ -220,8 +225,8 @@ void Cdt<Index>::set_boundary(Index t, int e, const Index* poly, Index* edges, u
 // Triangulates poly[0..count-1]: base poly[0] -> poly[count-1], the chain between them on the
 // base's left. Reuses slots[cursor...]; returns the triangle on the base (its edge 2).
 template <typename Index>
-Index Cdt<Index>::build_polygon(const Index* poly, Index* edges, uint32_t count,
-                                Index* stack, const Index* slots, uint32_t& cursor) {
+Index Cdt<Index>::build_polygon(const Index* poly, CavityEdge* edges, uint32_t count, Index* stack, const Index* slots,
+                                uint32_t& cursor) {
     uint32_t top = 0;
     Index root = kNone<Index>;
     auto push = [&](uint32_t lo, uint32_t hi, Index parent, int pedge) {
@@ -265,7 +270,7 @@ Status Cdt<Index>::insert_constraint(Index a, Index b) {
         if (Status s = trace(cur, b, reached, count); !ok(s)) return s;
         if (count.crossed > max_crossed) max_crossed = count.crossed;
     }
-    if (!work_fits(13 * max_crossed + 18)) return Status::Full;
+    if (!work_fits(CavityLayout::of(max_crossed).entries)) return Status::Full;
     for (Index cur = a, reached; cur != b; cur = reached) apply_piece(cur, b, max_crossed, reached);
     return Status::Ok;
 }

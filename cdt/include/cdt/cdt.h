@@ -98,13 +98,43 @@ private:
     Status legalize(Index v, uint32_t stack_base);
 
     // constraints (constraint.ipp)
+    //
+    // A boundary edge of a constraint's cavity, recorded before the cavity's triangles are
+    // taken apart: the triangle a new one will meet across it, and its flag. A slit (an edge
+    // with the cavity on both sides) is linked to its twin instead, once both sides are built.
+    struct CavityEdge {
+        Index outside;       // the triangle across the edge, outside the cavity (kNone: the box)
+        uint8_t outside_edge; // which of its edges (0..2)
+        Flag flag;           // the edge's constraint flag, seen from inside
+        bool slit;           // both sides inside the cavity
+        bool slit_built;     // a slit whose first side is built: outside/outside_edge name it
+    };
+    // Where each part of the cavity of a piece crossing at most K triangles lies in the work
+    // buffer (in Index entries): the crossed triangles' slots (K), each side's polygon (K + 2
+    // vertices) and boundary edges (K + 1 records), and the polygon stack (4 entries per
+    // pending sub-polygon, at most K + 2).
+    struct CavityLayout {
+        uint32_t slots, left_poly, left_edges, right_poly, right_edges, stack, entries;
+
+        static constexpr uint32_t kEdgeEntries = uint32_t((sizeof(CavityEdge) + sizeof(Index) - 1) / sizeof(Index));
+        static constexpr CavityLayout of(uint32_t K) {
+            CavityLayout c{};
+            c.slots = 0;
+            c.left_poly = c.slots + K;
+            c.left_edges = c.left_poly + (K + 2);
+            c.right_poly = c.left_edges + (K + 1) * kEdgeEntries;
+            c.right_edges = c.right_poly + (K + 2);
+            c.stack = c.right_edges + (K + 1) * kEdgeEntries;
+            c.entries = c.stack + 4 * (K + 2);
+            return c;
+        }
+    };
     template <typename Visitor>
     Status trace(Index a, Index b, Index& reached, Visitor& visit);
     void apply_piece(Index a, Index b, uint32_t max_crossed, Index& reached);
-    Index build_polygon(const Index* poly, Index* edges, uint32_t count, Index* stack,
-                        const Index* slots, uint32_t& cursor);
-    void set_boundary(Index t, int e, const Index* poly, Index* edges, uint32_t count, uint32_t i);
-    static constexpr Index kSlit = 4, kSlitBuilt = 8; // bits of a cavity edge record's flag word
+    Index build_polygon(const Index* poly, CavityEdge* edges, uint32_t count, Index* stack, const Index* slots,
+                        uint32_t& cursor);
+    void set_boundary(Index t, int e, const Index* poly, CavityEdge* edges, uint32_t count, uint32_t i);
 
     bool work_fits(uint32_t need) {
         if (need > a_.work.size()) return false;
