@@ -13,12 +13,12 @@ constexpr int32_t kRadiusV = 32768;          // the bounding sphere's radius in 
 
 inline int32_t round_to_int(float v) { return int32_t(v + (v >= 0 ? 0.5f : -0.5f)); }
 
-// The eye's distance from the centre in view units, and the focal length in 1/16 pixel: the
+// The eye's distance from the centre in view units, and the focal length in sub-pixels: the
 // bounding sphere fills 80% of the short side when fitted.
 int32_t eye_distance(float zoom) { return round_to_int(3.0f * kRadiusV * zoom); }
 int32_t focal16(uint16_t width, uint16_t height) {
     const float half = 0.5f * float(width < height ? width : height);
-    return round_to_int(16 * 2.5f * half);
+    return round_to_int(float(render::subpixel::kPerPixel) * 2.5f * half);
 }
 
 } // namespace
@@ -111,8 +111,8 @@ Transform Camera::transform(const Scene& scene, uint32_t index, uint16_t width, 
     in.dist = eye_distance(view_.zoom);
     in.near = kRadiusV / 64;
     in.f16 = focal16(width, height);
-    in.cx16 = int32_t(width) * 8;
-    in.cy16 = int32_t(height) * 8;
+    in.cx16 = int32_t(width) * (render::subpixel::kPerPixel / 2); // the screen's centre
+    in.cy16 = int32_t(height) * (render::subpixel::kPerPixel / 2);
     in.guard = render::kGuardBand - (in.cx16 > in.cy16 ? in.cx16 : in.cy16) - 64;
     const int32_t far = in.dist + kRadiusV;
     in.zk = (int64_t(65535) << 16) / (far - in.near > 1 ? far - in.near : 1);

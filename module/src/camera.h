@@ -22,7 +22,8 @@ struct Projected {
 };
 constexpr uint8_t kOutNear = 1, kOutGuard = 2, kOutCut = 4; // kOutCut: on the side a section cuts away (drawing only)
 
-// Rows of the screen being drawn, as distances from the screen's centre (28.4 sub-pixels):
+// Rows of the screen being drawn, as distances from the screen's centre (sub-pixels,
+// render/subpixel.h):
 // the view volume's top and bottom sides for culling. The whole screen: both cy16.
 struct Rows {
     int32_t top16, bottom16;

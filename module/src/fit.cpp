@@ -102,12 +102,13 @@ bool Framer::run(const Scene& scene, Camera& camera, uint32_t units) {
 bool Framer::adjust(const Scene& scene, Camera& camera) {
     const int32_t aw = int32_t(width_) - taken_.left - taken_.right, ah = int32_t(height_) - taken_.top - taken_.bottom;
     if (o_.points == 0 || aw < 8 || ah < 8) return true; // nothing to frame
-    // The area's centre and the outline's offset from it, in 16ths of a pixel.
-    const int32_t ax16 = (taken_.left * 2 + aw) * 8, ay16 = (taken_.top * 2 + ah) * 8;
+    // The area's centre and the outline's offset from it, in sub-pixels.
+    constexpr int32_t kSub = render::subpixel::kPerPixel;
+    const int32_t ax16 = (taken_.left * 2 + aw) * (kSub / 2), ay16 = (taken_.top * 2 + ah) * (kSub / 2);
     const int32_t dx = ax16 - int32_t((int64_t(o_.left) + o_.right) / 2), dy = ay16 - int32_t((int64_t(o_.top) + o_.bottom) / 2);
-    const float w = float(o_.right - o_.left) / (16.0f * float(aw)), h = float(o_.bottom - o_.top) / (16.0f * float(ah));
+    const float w = float(o_.right - o_.left) / (float(kSub) * float(aw)), h = float(o_.bottom - o_.top) / (float(kSub) * float(ah));
     const float now = w > h ? w : h;
-    const bool centred = dx >= -16 && dx <= 16 && dy >= -16 && dy <= 16;
+    const bool centred = dx >= -kSub && dx <= kSub && dy >= -kSub && dy <= kSub; // within a pixel
     if (!o_.hidden && centred && now <= fill_ * 1.02f && now >= fill_ * 0.98f) return true;
     // Centre: pan by the offset (pan_pixels moves the model's centre with the pointer). Size:
     // the dolly scales the outline about inversely (exactly for a flat model at the centre's

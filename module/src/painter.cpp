@@ -64,7 +64,7 @@ const render::Palette& Painter::palette(uint32_t rgb) {
 
 Rows Painter::rows(const Transform& t) const {
     const render::Target& tg = raster_.target();
-    return {t.cy16 - int32_t(tg.y0) * 16, int32_t(tg.y0 + tg.rows) * 16 - t.cy16};
+    return {t.cy16 - render::subpixel::start(tg.y0), render::subpixel::start(tg.y0 + tg.rows) - t.cy16};
 }
 
 void Painter::background() {

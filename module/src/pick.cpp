@@ -81,12 +81,12 @@ Event Core::pick_at(int16_t x, int16_t y) {
     if (!scene_.loaded() || x < 0 || y < 0 || x >= d.width || y >= d.height) return e;
     presenter_.projected_reused(); // a frame under way projects its face again
     const geom::Pack& pack = scene_.pack();
-    const int64_t sx = int64_t(x) * 16 + 8, sy = int64_t(y) * 16 + 8;
+    const int64_t sx = render::subpixel::centre(x), sy = render::subpixel::centre(y);
     float best = 1e30f;
     for (uint32_t i = 0; i < pack.instances().size(); ++i) {
         if (!scene_.shown(i)) continue;
         const module::Transform t = camera_.transform(scene_, i, d.width, d.height);
-        const module::Rows row{t.cy16 - int32_t(y) * 16, (int32_t(y) + 1) * 16 - t.cy16};
+        const module::Rows row{t.cy16 - render::subpixel::start(y), render::subpixel::start(y + 1) - t.cy16};
         const pack::Shell& sh = pack.shells()[pack.instances()[i].shell];
         for (uint32_t f = sh.first_face; f < sh.first_face + sh.face_count; ++f) {
             const module::FaceInfo& F = scene_.face(f);

@@ -3,8 +3,8 @@
 // buffer, for the whole screen or for a band of its rows (partial rendering: a board without
 // room for full frames draws the screen band after band, with the same pixels).
 //
-// Screen space, y down. Vertex positions are 28.4 fixed point (1/16 pixel); pixel (x, y) is
-// sampled at its centre (16x+8, 16y+8). Coverage follows the top-left rule, so triangles
+// Screen space, y down. Vertex positions are sub-pixels (render/subpixel.h: 28.4 fixed point);
+// pixel (x, y) is sampled at its centre. Coverage follows the top-left rule, so triangles
 // sharing an edge never draw a pixel twice and never leave a gap. Depth is a 16-bit z-buffer
 // (0 nearest). Shading is Gouraud: a shade index (how lit the surface is) is interpolated per
 // pixel and the triangle's palette colours it, one table look-up per pixel (a lit CAD face is
@@ -12,6 +12,7 @@
 // arithmetic only.
 #include "hal/pixel.h"
 #include "hal/status.h"
+#include "render/subpixel.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -19,7 +20,7 @@
 namespace facet::render {
 
 struct ScreenVertex {
-    int32_t x, y;     // 28.4 sub-pixel position
+    int32_t x, y;     // sub-pixels (render/subpixel.h)
     uint16_t z;       // depth, 0 = nearest
     uint8_t shade;    // palette index: 0 darkest, 255 brightest
 };
@@ -35,9 +36,10 @@ struct Palette {
 // The palette of a colour under light: shade s gives (r, g, b) * s / 255.
 void make_palette(Palette& out, uint8_t r, uint8_t g, uint8_t b);
 
-// Positions must satisfy |x|, |y| <= kGuardBand (28.4 units) so every product stays in 64 bits;
-// triangles beyond it are refused with OutOfRange (clipping happens before the rasterizer).
-constexpr int32_t kGuardBand = 8192 * 16;
+// Positions must satisfy |x|, |y| <= kGuardBand (sub-pixels) so every product stays in 64 bits
+// (render/subpixel.h); triangles beyond it are refused with OutOfRange (clipping happens
+// before the rasterizer).
+constexpr int32_t kGuardBand = subpixel::kGuardPixels * subpixel::kPerPixel;
 
 enum class Cull : uint8_t { None, Back };
 

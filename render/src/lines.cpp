@@ -1,0 +1,71 @@
+// Lines: a DDA along the longer axis, depth-tested per pixel (B-rep edges over faces, and
+// surfaces' outlines tested against the pixel beyond them).
+#include "render/raster.h"
+
+#include "raster_internal.h"
+#include "render/fixed.h"
+
+#include <cstdint>
+
+namespace facet::render {
+namespace {
+
+using namespace detail;
+
+// The steps of a one-pixel line from a to b (pixel centres nearest the ends, a DDA along the
+// longer axis): 16.16 positions and depth pulled `bias` toward the eye, the three slopes over
+// one reciprocal of the length. Each pixel on the screen and in the band is depth-tested: a
+// line against itself, an outline (kBeyond) against its neighbour (ox, oy) when that one is
+// in the band. A pixel that passes is drawn, and its depth written where nearer. Returns the
+// pixels stepped.
+template <bool kBeyond>
+uint32_t stroke(const Target& t, const ScreenVertex& a, const ScreenVertex& b, hal::Rgb565 colour, uint16_t bias,
+                int32_t ox = 0, int32_t oy = 0) {
+    const int32_t x0 = pixel_of(a.x), y0 = pixel_of(a.y), dx = pixel_of(b.x) - x0, dy = pixel_of(b.y) - y0;
+    const int32_t n = (dx < 0 ? -dx : dx) > (dy < 0 ? -dy : dy) ? (dx < 0 ? -dx : dx) : (dy < 0 ? -dy : dy);
+    int32_t x = (x0 << 16) + 0x8000, y = (y0 << 16) + 0x8000, z = int32_t(a.z) << 8;
+    int32_t sx = 0, sy = 0, sz = 0;
+    if (n) {
+        const Reciprocal r = reciprocal(uint32_t(n));
+        sx = divide(int64_t(dx) << 16, r);
+        sy = divide(int64_t(dy) << 16, r);
+        sz = divide((int64_t(b.z) - a.z) << 8, r);
+    }
+    z -= int32_t(bias) << 8; // pulled toward the eye
+    uint16_t* const depth = t.depth;
+    hal::Rgb565* const fb = t.pixels;
+    const uint32_t width = t.width, band0 = t.y0, rows = t.rows;
+    for (int32_t i = 0; i <= n; ++i, x += sx, y += sy, z += sz) {
+        const int32_t px = x >> 16, py = y >> 16;
+        // Off the screen or the band (negatives too).
+        if (uint32_t(px) >= width || uint32_t(py) - band0 >= rows) continue;
+        const int32_t zv = z < 0 ? 0 : z >> 8;
+        const size_t at = size_t(uint32_t(py) - band0) * width + uint32_t(px);
+        if constexpr (kBeyond) {
+            const bool in = uint32_t(px + ox) < width && uint32_t(py + oy) - band0 < rows;
+            if (zv >= depth[in ? size_t(uint32_t(py + oy) - band0) * width + uint32_t(px + ox) : at]) continue;
+            if (zv < depth[at]) depth[at] = uint16_t(zv);
+        } else {
+            if (zv >= depth[at]) continue;
+            depth[at] = uint16_t(zv);
+        }
+        fb[at] = colour;
+    }
+    return uint32_t(n + 1);
+}
+
+} // namespace
+
+Status Rasterizer::line(const ScreenVertex& a, const ScreenVertex& b, hal::Rgb565 colour, uint16_t bias) {
+    if (!in_guard(a) || !in_guard(b)) return Status::OutOfRange;
+    stats.pixels += stroke<false>(t_, a, b, colour, bias);
+    return Status::Ok;
+}
+
+Status Rasterizer::outline(const ScreenVertex& a, const ScreenVertex& b, hal::Rgb565 colour, uint16_t bias, uint8_t beyond) {
+    if (!in_guard(a) || !in_guard(b)) return Status::OutOfRange;
+    stats.pixels += stroke<true>(t_, a, b, colour, bias, beyond == 0 ? 1 : beyond == 2 ? -1 : 0, beyond == 1 ? 1 : beyond == 3 ? -1 : 0);
+    return Status::Ok;
+}
+
+} // namespace facet::render
