@@ -175,18 +175,12 @@ bool run_facet(const std::vector<uint8_t>& bytes, Projectors& proj, double defle
     std::vector<uint16_t> ec(ne);
     std::vector<float> et(ne * 256 + 1024);
     std::vector<geom::Vec3> ep(ne * 256 + 1024);
-    constexpr size_t kV = 32000;
-    std::vector<cdt::Vertex<uint16_t>> av(kV);
-    std::vector<cdt::Triangle<uint16_t>> at(cdt::triangles_for(kV));
-    std::vector<uint16_t> aw(cdt::work_for(kV)), ao(kV), am(kV), ai(kV);
-    std::vector<uint32_t> ak(kV), ls(4096), mo(kV);
-    std::vector<cdt::Point> lp(kV);
-    std::vector<geom::Vec2> uv(kV);
-    std::vector<geom::Vec3> xyz(kV);
-    std::vector<uint8_t> pin(kV);
-    std::vector<geom::TriangleMeasure> measured(cdt::triangles_for(kV));
-    std::vector<geom::Sliver> slivers(4096);
-    geom::FaceScratch sc{{av, at, aw, ao, am, ai, ak}, lp, ls, uv, pin, xyz, mo, measured, slivers};
+    // One face's storage as the device's, patches included: the comparison measures the
+    // device's own path (fixed-point patches), not the float one.
+    const geom::FaceCapacity capacity{31996, 4096, 4096, geom::kPatchCacheWords};
+    std::vector<uint64_t> face_memory(geom::face_storage_bytes(capacity) / 8 + 1);
+    geom::FaceStorage sc;
+    if (!sc.bind(face_memory.data(), face_memory.size() * 8, capacity).ok()) return false;
     std::vector<geom::MeshVertex> mv(1 << 21);
     std::vector<uint32_t> mi(3u << 21);
     std::vector<Tri> tris;

@@ -1,10 +1,71 @@
 #pragma once
 // Pieces of tessellate_face shared between its source files (not part of geom's interface).
+#include "cdt/cdt.h"
+#include "cdt/face.h"
+#include "geom/face_storage.h"
 #include "geom/tessellate.h"
 
 #include <cstdint>
+#include <span>
 
 namespace facet::geom::detail {
+
+// How far one triangle strays from its surface, and where a point would help most.
+struct TriangleMeasure {
+    uint64_t key;     // the slot's three vertices when measured (a changed triangle is re-measured)
+    float error2;     // squared deviation estimate
+    cdt::Point at;    // the grid point to insert if it is too large
+};
+
+// A triangle that keeps a loop point the CDT grid could not hold (see clean_loops).
+struct Sliver {
+    Vec3 p[3];
+    Vec2 uv[3];
+};
+
+// A face's storage (geom/face_storage.h) as typed arrays. uv and xyz hold every point of the
+// face: the loops' samples, then the points refinement adds.
+struct FaceScratch {
+    cdt::ArenaView<uint16_t> arena;
+    std::span<cdt::Point> loop_points;
+    std::span<uint32_t> loop_sizes;
+    std::span<Vec2> uv;          // per point, unquantized
+    std::span<uint8_t> pinned;   // per loop point: bit 0 u, bit 1 v known exactly (seam, pcurve)
+    std::span<Vec3> xyz;         // per point: the edge sample's 3D point, or the surface point
+    std::span<uint32_t> mesh_of; // per CDT vertex: its point (while refining), then its mesh vertex
+    // Per CDT triangle slot: the last measure of the triangle in it, so that a refinement
+    // round measures only the triangles that changed. At least triangles_for(arena vertices).
+    std::span<TriangleMeasure> measured;
+    std::span<Sliver> slivers;   // loop points dropped from the grid, as triangles
+    std::span<uint32_t> patches; // a free-form face's spans as fixed-point patches (geom/patches.h)
+};
+
+// The storage's block cut by the plan (face_storage.cpp).
+FaceScratch scratch_of(const FaceStorage& storage);
+
+// How a face's (u,v) maps to the CDT's integer grid: u and v scaled by the surface's metric
+// (|Su|, |Sv| at the middle of the face), shifted and scaled so the face's extent spans
+// [-kGridHalf, kGridHalf].
+struct Grid {
+    float su = 1, sv = 1; // metric scale
+    float x0 = 0, y0 = 0; // scaled (u,v) of the grid's corner
+    float q = 1;          // grid units per scaled unit
+
+    cdt::Point to_grid(Vec2 uv) const;
+    Vec2 to_uv(cdt::Point g) const;
+};
+// Where refinement (Step 5) stands between two pieces.
+struct RefineState {
+    uint32_t round = 0;
+    uint32_t cleared = 0;   // measured[] slots reset for this face
+    uint32_t next = 0;      // the next triangle slot to measure or to refine
+    uint32_t triangles = 0; // the triangles at the round's start
+    bool inserting = false; // measuring the changed triangles, or inserting points
+    float worst = 0, threshold = 0;
+    float last_worst = 0;   // the previous round's worst
+    uint32_t added = 0;     // points this round
+    uint32_t total = 0;     // points of the face so far
+};
 
 constexpr float kTwoPi = 6.28318530717958647692f;
 constexpr int32_t kGridHalf = 16384; // the face's (scaled) extent spans 2 * kGridHalf grid units

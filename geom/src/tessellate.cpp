@@ -8,10 +8,34 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <new>
+#include <type_traits>
 
 namespace facet::geom {
 
 using namespace facet::pack;
+using detail::FaceScratch;
+using detail::Sliver;
+
+// What a job works in besides the caller's memory: its CDT (over the storage's arena) and the
+// builder that fills it, the storage's arrays by type, the face's grid and refinement's state.
+struct FaceJob::Engine {
+    FaceScratch sc{};
+    const uint8_t* cut_from = nullptr; // the storage sc was cut from, and its capacity
+    FaceCapacity cut_for{};
+    cdt::Cdt<uint16_t> cdt{{}};
+    cdt::FaceBuilder<uint16_t> builder{cdt};
+    detail::Grid grid;
+    detail::RefineState refine;
+};
+
+FaceJob::FaceJob() {
+    static_assert(sizeof(Engine) <= kEngineBytes && alignof(Engine) <= 8, "FaceJob::kEngineBytes holds the Engine");
+    static_assert(std::is_trivially_destructible_v<Engine>, "a job's engine needs no destructor");
+    new (engine_) Engine();
+}
+
+FaceJob::Engine& FaceJob::engine() { return *std::launder(reinterpret_cast<Engine*>(engine_)); }
 
 cdt::Point detail::Grid::to_grid(Vec2 uv) const {
     return {int32_t(std::lround((uv.x * su - x0) * q)) - kGridHalf, int32_t(std::lround((uv.y * sv - y0) * q)) - kGridHalf};
@@ -161,19 +185,33 @@ Status emit_triangles(const FaceNormals& normals, const pack::Face& F, const cdt
 
 } // namespace
 
-void FaceJob::start(const Pack& pack, uint32_t face, const EdgeSamples& edges, const TessOptions& opt, FaceScratch& sc,
+void FaceJob::start(const Pack& pack, uint32_t face, const EdgeSamples& edges, const TessOptions& opt, FaceStorage& storage,
                     Mesh& mesh) {
-    pack_ = &pack, edges_ = &edges, opt_ = opt, sc_ = &sc, mesh_ = &mesh, face_ = face;
+    pack_ = &pack, edges_ = &edges, opt_ = opt, mesh_ = &mesh, face_ = face;
     stage_ = Stage::Map;
     np_ = nl_ = 0;
     base_vertex_ = mesh.vertex_count, base_triangle_ = mesh.triangle_count;
-    grid_ = {};
-    refine_ = {};
+    Engine& E = engine();
+    E.grid = {};
+    E.refine = {};
     next_loop_ = next_triangle_ = 0;
-    cdt_ = cdt::Cdt<uint16_t>(sc.arena);
-    PatchCache::forget(sc.patches); // they may be another pack's
     stats_ = {};
     result_ = Result::fail(Status::Busy, "tessellating");
+    if (!storage.bound()) {
+        E.sc = {};
+        E.cut_from = nullptr;
+        stage_ = Stage::Failed;
+        result_ = Result::fail(Status::OutOfRange, "the face storage is not bound to memory", {"face", face});
+        return;
+    }
+    const FaceCapacity& c = storage.capacity();
+    if (E.cut_from != storage.memory() || E.cut_for.points != c.points || E.cut_for.loops != c.loops ||
+        E.cut_for.slivers != c.slivers || E.cut_for.patch_words != c.patch_words) {
+        E.sc = detail::scratch_of(storage);
+        E.cut_from = storage.memory(), E.cut_for = c;
+    }
+    E.cdt = cdt::Cdt<uint16_t>(E.sc.arena);
+    PatchCache::forget(E.sc.patches); // they may be another pack's
 }
 
 Result FaceJob::fail(Result r) {
@@ -187,7 +225,7 @@ Result FaceJob::fail(Result r) {
 // Steps 2 and 3 (once the loops are in (u,v)): the metric, the CDT grid.
 Result FaceJob::prepare() {
     const Pack& pack = *pack_;
-    FaceScratch& sc = *sc_;
+    FaceScratch& sc = engine().sc;
     const pack::Face& F = pack.faces()[face_];
     const Surface& S = pack.surfaces()[F.surface];
     if (!(opt_.tolerance > 0 && opt_.tolerance <= pack::kMaxMagnitude) || !(opt_.max_angle > 0)) {
@@ -199,7 +237,7 @@ Result FaceJob::prepare() {
     //    of the surface's bending along it, so that equal distances mean equal deviations of a
     //    chord: Delaunay triangles are then stretched along the flatter direction (a torus
     //    fillet's triangles run around its ring), as the deviation allows.
-    detail::Grid& grid = grid_;
+    detail::Grid& grid = engine().grid;
     const float um = 0.5f * (F.uv_min[0] + F.uv_max[0]), vm = 0.5f * (F.uv_min[1] + F.uv_max[1]);
     PatchCache patches(pack, S, sc.patches); // (the patches stay for refinement and normals)
     const SurfacePoint mid = patches.usable() ? patches.point_and_derivatives(um, vm) : eval_surface(pack, S, um, vm);
@@ -233,7 +271,8 @@ Result FaceJob::prepare() {
 Result FaceJob::run(uint32_t units) {
     if (stage_ == Stage::Done || stage_ == Stage::Failed) return result_;
     const Pack& pack = *pack_;
-    FaceScratch& sc = *sc_;
+    Engine& E = engine();
+    FaceScratch& sc = E.sc;
     Mesh& mesh = *mesh_;
     const pack::Face& F = pack.faces()[face_];
     const Result busy = Result::fail(Status::Busy, "tessellating");
@@ -261,38 +300,38 @@ Result FaceJob::run(uint32_t units) {
         } else {
             // 4. Triangulate the loops.
             const cdt::FaceInput in{{sc.loop_points.data(), np_}, {sc.loop_sizes.data(), nl_}, {}};
-            if (Result r = builder_.start(in, cdt::kDefaultLocateMode); !r.ok()) return fail(r);
+            if (Result r = E.builder.start(in, cdt::kDefaultLocateMode); !r.ok()) return fail(r);
             spent += 1 + np_ / 16;
             stage_ = Stage::Triangulate;
         }
         if (spent >= units) return busy;
     }
     if (stage_ == Stage::Triangulate) {
-        const Result r = builder_.run(units - spent);
+        const Result r = E.builder.run(units - spent);
         if (r.status == Status::Busy) return busy;
         if (!r.ok()) return fail(r);
-        spent += builder_.used() + np_ / 32;
-        if (sc.mesh_of.size() < cdt_.vertex_capacity()) {
+        spent += E.builder.used() + np_ / 32;
+        if (sc.mesh_of.size() < E.cdt.vertex_capacity()) {
             return fail(Result::fail(Status::Full, "more vertices than the face scratch holds"));
         }
-        for (uint32_t v = 0; v < cdt_.vertex_count(); ++v) sc.mesh_of[v] = UINT32_MAX;
+        for (uint32_t v = 0; v < E.cdt.vertex_count(); ++v) sc.mesh_of[v] = UINT32_MAX;
         for (uint32_t i = 0; i < np_; ++i) { // point -> vertex after triangulation; repeats keep the first
             const uint32_t v = sc.arena.keys[i];
-            if (v < cdt_.vertex_count() && sc.mesh_of[v] == UINT32_MAX) sc.mesh_of[v] = i;
+            if (v < E.cdt.vertex_count() && sc.mesh_of[v] == UINT32_MAX) sc.mesh_of[v] = i;
         }
-        refine_ = {};
-        refine_.total = np_;
+        E.refine = {};
+        E.refine.total = np_;
         stage_ = Stage::Refine;
         if (spent >= units) return busy;
     }
     if (stage_ == Stage::Refine) {
         // 5. Refine until every inner triangle is within the tolerance.
         uint32_t used = 0;
-        const Result r = detail::refine(pack, face_, opt_, grid_, cdt_, sc, refine_, units - spent, used);
+        const Result r = detail::refine(pack, face_, opt_, E.grid, E.cdt, sc, E.refine, units - spent, used);
         if (r.status == Status::Busy) return busy;
         if (!r.ok()) return fail(r);
         spent += used;
-        stats_.points = refine_.total;
+        stats_.points = E.refine.total;
         stage_ = Stage::Emit;
         if (spent >= units) return busy;
     }
@@ -301,7 +340,7 @@ Result FaceJob::run(uint32_t units) {
     const Surface& S = pack.surfaces()[F.surface];
     const FaceNormals normals(pack, S, F, sc.patches);
     if (nl_ > 0) {
-        const Status e = emit_triangles(normals, F, cdt_, sc, mesh, stats_, next_triangle_, units - std::min(units, spent),
+        const Status e = emit_triangles(normals, F, E.cdt, sc, mesh, stats_, next_triangle_, units - std::min(units, spent),
                                         normals.vertex_cost());
         if (e == Status::Busy) return busy;
         if (!ok(e)) return fail(Result::fail(Status::Full, "the mesh is full"));
@@ -322,10 +361,10 @@ Result FaceJob::run(uint32_t units) {
     return result_;
 }
 
-Result tessellate_face(const Pack& pack, uint32_t face, const EdgeSamples& edges, const TessOptions& opt, FaceScratch& scratch,
+Result tessellate_face(const Pack& pack, uint32_t face, const EdgeSamples& edges, const TessOptions& opt, FaceStorage& storage,
                        Mesh& mesh, FaceStats& stats) {
     FaceJob job;
-    job.start(pack, face, edges, opt, scratch, mesh);
+    job.start(pack, face, edges, opt, storage, mesh);
     Result r;
     while ((r = job.run(UINT32_MAX)).status == Status::Busy) {
     }

@@ -1,6 +1,5 @@
 #include "core.h"
 
-#include "cdt/arena.h"
 #include "geom/pack_file.h"
 
 #include <cstring>
@@ -9,96 +8,86 @@
 namespace facet {
 namespace {
 
+using module::Array;
 using module::Carver;
-
-// Every array of the workspace, in the order they are cut.
-struct Arrays {
-    std::span<uint32_t> edge_first;
-    std::span<uint16_t> edge_count;
-    std::span<uint8_t> edge_drawn;
-    std::span<float> sample_t;
-    std::span<geom::Vec3> sample_p;
-    std::span<int32_t> sample_q;
-    cdt::ArenaView<uint16_t> arena;
-    std::span<cdt::Point> loop_points;
-    std::span<uint32_t> loop_sizes;
-    std::span<geom::Vec2> face_uv;
-    std::span<uint8_t> pinned;
-    std::span<geom::Vec3> face_xyz;
-    std::span<uint32_t> mesh_of;
-    std::span<geom::TriangleMeasure> measured;
-    std::span<geom::Sliver> slivers;
-    std::span<geom::MeshVertex> face_vertices;
-    std::span<uint32_t> face_indices;
-    std::span<module::DrawVertex> mesh_vertices;
-    std::span<uint16_t> mesh_indices;
-    std::span<module::FaceInfo> faces;
-    std::span<uint32_t> done_order;
-    std::span<module::Projected> projected;
-    std::span<render::Palette> palettes;
-    std::span<uint32_t> palette_rgb;
-    std::span<uint32_t> patches;
-};
-
-constexpr uint32_t kPalettes = 16; // face colours shaded at once (more are rebuilt as needed)
-
-// (Out of line at run time: once, in the constructor; the compiler evaluates it for the checks.)
-[[gnu::noinline]] constexpr void carve(Carver& k, const Capacity& c, Arrays* out) {
-    const size_t V = c.face_points + cdt::kBoxVertices, T = cdt::triangles_for(V);
-    auto e_first = k.take<uint32_t>(c.edges);
-    auto e_count = k.take<uint16_t>(c.edges);
-    auto e_drawn = k.take<uint8_t>(c.edges);
-    auto s_t = k.take<float>(c.samples);
-    auto s_p = k.take<geom::Vec3>(c.samples);
-    auto s_q = k.take<int32_t>(3 * size_t(c.samples));
-    auto a_v = k.take<cdt::Vertex<uint16_t>>(V);
-    auto a_t = k.take<cdt::Triangle<uint16_t>>(T);
-    auto a_w = k.take<uint16_t>(cdt::work_for(V));
-    auto a_o = k.take<uint16_t>(V);
-    auto a_m = k.take<uint16_t>(V);
-    auto a_i = k.take<uint16_t>(V);
-    auto a_k = k.take<uint32_t>(V);
-    auto lp = k.take<cdt::Point>(V);
-    auto ls = k.take<uint32_t>(c.loops);
-    auto uv = k.take<geom::Vec2>(V);
-    auto pin = k.take<uint8_t>(V);
-    auto xyz = k.take<geom::Vec3>(V);
-    auto mo = k.take<uint32_t>(V);
-    auto ms = k.take<geom::TriangleMeasure>(T);
-    auto sl = k.take<geom::Sliver>(c.slivers);
-    auto fv = k.take<geom::MeshVertex>(V);
-    auto fi = k.take<uint32_t>(3 * T);
-    auto mv = k.take<module::DrawVertex>(c.mesh_vertices);
-    auto mi = k.take<uint16_t>(3 * size_t(c.mesh_triangles));
-    auto fa = k.take<module::FaceInfo>(c.faces);
-    auto dn = k.take<uint32_t>(c.faces);
-    auto pr = k.take<module::Projected>(V);
-    auto pa = k.take<render::Palette>(kPalettes);
-    auto pc = k.take<uint32_t>(kPalettes);
-    auto pt = k.take<uint32_t>(geom::kPatchCacheWords);
-    if (out) {
-        *out = {e_first, e_count, e_drawn, s_t, s_p, s_q, {a_v, a_t, a_w, a_o, a_m, a_i, a_k}, lp, ls, uv, pin, xyz, mo, ms,
-                sl, fv, fi, mv, mi, fa, dn, pr, pa, pc, pt};
-    }
-}
 
 constexpr size_t core_bytes() { return (sizeof(Core) + 15) / 16 * 16; }
 
-constexpr size_t layout_bytes(const Capacity& c) {
-    Carver k;
-    carve(k, c, nullptr);
-    return core_bytes() + k.used();
+// The workspace a capacity takes: the Core, then its arrays.
+constexpr size_t layout_bytes(const Capacity& c, uint32_t patch_words = geom::kPatchCacheWords) {
+    return core_bytes() + module::arrays_bytes(c, patch_words);
 }
 
-// The public formula (facet/sizes.h) must hold what the layout takes.
+// facet/sizes.h states the workspace as a fixed part plus bytes per item of each capacity; the
+// plan's arrays (packed) must take exactly those bytes per item, and the fixed part must hold
+// what is left (the Core, the palettes, the patches, the alignment).
+constexpr size_t packed_bytes(const Capacity& c) {
+    module::Measure<true> m;
+    module::workspace_plan(c, geom::kPatchCacheWords, m);
+    return m.at;
+}
+constexpr Capacity kNothing{0, 0, 0, 0, 0, 0, 0, 0};
+template <uint32_t Capacity::*kItem>
+constexpr size_t bytes_per() {
+    Capacity one = kNothing;
+    one.*kItem = 1;
+    return packed_bytes(one) - packed_bytes(kNothing);
+}
+static_assert(bytes_per<&Capacity::faces>() == FACET_BYTES_PER_FACE, "facet/sizes.h: FACET_BYTES_PER_FACE");
+static_assert(bytes_per<&Capacity::edges>() == FACET_BYTES_PER_EDGE, "facet/sizes.h: FACET_BYTES_PER_EDGE");
+static_assert(bytes_per<&Capacity::samples>() == FACET_BYTES_PER_SAMPLE, "facet/sizes.h: FACET_BYTES_PER_SAMPLE");
+static_assert(bytes_per<&Capacity::face_points>() == FACET_BYTES_PER_FACE_POINT, "facet/sizes.h: FACET_BYTES_PER_FACE_POINT");
+static_assert(bytes_per<&Capacity::loops>() == FACET_BYTES_PER_LOOP, "facet/sizes.h: FACET_BYTES_PER_LOOP");
+static_assert(bytes_per<&Capacity::slivers>() == FACET_BYTES_PER_SLIVER, "facet/sizes.h: FACET_BYTES_PER_SLIVER");
+static_assert(bytes_per<&Capacity::mesh_vertices>() == FACET_BYTES_PER_MESH_VERTEX, "facet/sizes.h: FACET_BYTES_PER_MESH_VERTEX");
+static_assert(bytes_per<&Capacity::mesh_triangles>() == FACET_BYTES_PER_MESH_TRIANGLE,
+              "facet/sizes.h: FACET_BYTES_PER_MESH_TRIANGLE");
+// The alignment the plan's arrays can lose: under 8 bytes each, and as much inside the face's block.
+constexpr size_t kAlignmentSlack = 8 * (uint32_t(Array::PaletteRgb) + 1 + uint32_t(geom::FaceArray::Patches) + 1);
+static_assert(core_bytes() + packed_bytes(kNothing) + kAlignmentSlack <= FACET_WORKSPACE_FIXED_BYTES,
+              "facet/sizes.h: FACET_WORKSPACE_FIXED_BYTES holds the Core, the palettes, the patches and the alignment");
 static_assert(layout_bytes(Capacity{}) <= workspace_bytes(Capacity{}), "facet/sizes.h understates the default workspace");
-static_assert(sizeof(module::Projected) == 28 && sizeof(geom::TriangleMeasure) == 24 && sizeof(geom::MeshVertex) == 24 &&
-                  sizeof(cdt::Vertex<uint16_t>) == 12 && sizeof(cdt::Triangle<uint16_t>) == 14,
-              "FACET_BYTES_PER_FACE_POINT counts these records' sizes");
-static_assert(sizeof(geom::Sliver) == FACET_BYTES_PER_SLIVER);
-static_assert(core_bytes() + kPalettes * (sizeof(render::Palette) + 4) + geom::kPatchCacheWords * 4 + 1024 <=
-                  FACET_WORKSPACE_FIXED_BYTES,
-              "FACET_WORKSPACE_FIXED_BYTES: the viewer's state, palettes, free-form patches and alignment");
+
+// Lays the plan's arrays out in the workspace and hands each part of the viewer its own.
+struct Carve {
+    Carver& k;
+    module::Scene::Memory scene{};
+    module::Scheduler::Memory scheduler{};
+    module::Painter::Memory painter{};
+    std::span<module::Projected> projected;
+    Result face_bound;
+
+    template <typename T>
+    std::span<T> as(size_t count, size_t bytes, size_t align) {
+        void* p = k.take(count * bytes, align);
+        return p ? std::span<T>(static_cast<T*>(p), count) : std::span<T>();
+    }
+    void array(Array what, size_t count, size_t bytes, size_t align) {
+        switch (what) {
+        case Array::EdgeFirst: scene.samples.first = as<uint32_t>(count, bytes, align); break;
+        case Array::EdgeCount: scene.samples.count = as<uint16_t>(count, bytes, align); break;
+        case Array::EdgeDrawn: painter.edge_drawn = as<uint8_t>(count, bytes, align); break;
+        case Array::SampleT: scene.samples.t = as<float>(count, bytes, align); break;
+        case Array::SampleP: scene.samples.p = as<geom::Vec3>(count, bytes, align); break;
+        case Array::SampleQ: scene.sample_q = as<int32_t>(count, bytes, align); break;
+        case Array::FaceStorage: break; // face()
+        case Array::FaceVertices: scheduler.face_mesh.vertices = as<geom::MeshVertex>(count, bytes, align); break;
+        case Array::FaceIndices: scheduler.face_mesh.indices = as<uint32_t>(count, bytes, align); break;
+        case Array::MeshVertices: scene.vertices = as<module::DrawVertex>(count, bytes, align); break;
+        case Array::MeshIndices: scene.indices = as<uint16_t>(count, bytes, align); break;
+        case Array::Faces: scene.faces = as<module::FaceInfo>(count, bytes, align); break;
+        case Array::DoneOrder: scene.done_order = as<uint32_t>(count, bytes, align); break;
+        case Array::Projected: projected = painter.projected = as<module::Projected>(count, bytes, align); break;
+        case Array::Palettes: painter.palettes = as<render::Palette>(count, bytes, align); break;
+        case Array::PaletteRgb: painter.palette_rgb = as<uint32_t>(count, bytes, align); break;
+        }
+    }
+    void face(const geom::FaceCapacity& f) {
+        const size_t bytes = geom::face_storage_bytes(f);
+        if (void* p = k.take(bytes, 8)) face_bound = scheduler.storage.bind(p, bytes, f);
+        else face_bound = Result::fail(Status::Full, "no room for a face's storage");
+    }
+};
 
 } // namespace
 
@@ -115,17 +104,15 @@ uint32_t pack_memory_bytes(const void* file, uint32_t file_bytes) {
 Core::Core(const Config& config, Carver& k)
     : config_(config), emitter_{relay, this}, painter_(scene_, raster_), scheduler_(scene_, emitter_),
       presenter_(scene_, camera_, painter_, raster_, emitter_, {config.now_us, config.clock_user}) {
-    Arrays a{};
-    carve(k, config.capacity, &a);
-    carved_ = k.fits();
+    Carve c{k, {}, {}, {}, {}, {}};
+    module::workspace_plan(config.capacity, geom::kPatchCacheWords, c);
+    carved_ = k.fits() && c.face_bound.ok();
     if (!carved_) return;
-    scene_.init({geom::EdgeSamples{a.edge_first, a.edge_count, a.sample_t, a.sample_p}, a.sample_q, a.mesh_vertices,
-                 a.mesh_indices, a.faces, a.done_order});
-    geom::FaceScratch scratch{a.arena,    a.loop_points, a.loop_sizes, a.face_uv, a.pinned,
-                              a.face_xyz, a.mesh_of,     a.measured,   a.slivers, a.patches};
-    scheduler_.init({scratch, geom::Mesh{a.face_vertices, a.face_indices, {}}, uint32_t(a.projected.size())});
-    painter_.init({a.projected, a.edge_drawn, a.palettes, a.palette_rgb});
-    projected_ = a.projected;
+    scene_.init(c.scene);
+    c.scheduler.max_face_vertices = uint32_t(c.projected.size());
+    scheduler_.init(c.scheduler);
+    painter_.init(c.painter);
+    projected_ = c.projected;
     controls_.set_screen(config.display.width, config.display.height);
     controls_.set_overlay(&presenter_.overlay());
     presenter_.overlay().set_scene(&scene_);
@@ -436,17 +423,12 @@ void Core::act(Action a) {
 Stats Core::stats() const {
     const module::Totals& t = scene_.totals();
     const geom::Pack& p = scene_.pack();
-    const uint64_t edges = p.edges().size(), faces = p.faces().size();
-    const uint64_t points = t.face_points_peak + cdt::kBoxVertices, triangles = cdt::triangles_for(points);
-    const uint64_t peak =
-        core_bytes() + edges * (sizeof(uint32_t) + sizeof(uint16_t) + sizeof(uint8_t)) +
-        uint64_t(t.samples_peak) * (sizeof(float) + sizeof(geom::Vec3) + 3 * sizeof(int32_t)) + cdt::arena_bytes<uint16_t>(points) +
-        points * (sizeof(cdt::Point) + sizeof(geom::Vec2) + 1 + sizeof(geom::Vec3) + sizeof(uint32_t) + sizeof(geom::MeshVertex) +
-                  sizeof(module::Projected)) +
-        triangles * (sizeof(geom::TriangleMeasure) + 3 * sizeof(uint32_t)) + uint64_t(t.slivers_peak) * sizeof(geom::Sliver) +
-        uint64_t(config_.capacity.loops) * sizeof(uint32_t) + uint64_t(t.vertices_peak) * sizeof(module::DrawVertex) +
-        uint64_t(t.triangles_peak) * 3 * sizeof(uint16_t) + faces * (sizeof(module::FaceInfo) + sizeof(uint32_t)) +
-        kPalettes * (sizeof(render::Palette) + sizeof(uint32_t));
+    // The plan at this model's peaks (the patches only for a model with free-form surfaces).
+    const Capacity used{uint32_t(p.faces().size()), uint32_t(p.edges().size()), t.samples_peak, t.face_points_peak,
+                        config_.capacity.loops,     t.slivers_peak,              t.vertices_peak, t.triangles_peak};
+    bool free_form = false;
+    for (const pack::Surface& s : p.surfaces()) free_form = free_form || s.type == uint8_t(pack::SurfaceType::BSpline);
+    const uint64_t peak = scene_.loaded() ? layout_bytes(used, free_form ? geom::kPatchCacheWords : 0) : core_bytes();
     return {t.faces, t.done, t.failed, t.triangles, t.vertices, scheduler_.pass(), t.mesh_bytes, t.arena_peak_bytes,
             pack_bytes_, pack_file_bytes_, uint32_t(peak), scheduler_.tolerance(), painter_.refused()};
 }

@@ -1,6 +1,5 @@
 #include "scene.h"
 
-#include "cdt/arena.h"
 
 #include <cmath>
 
@@ -221,7 +220,7 @@ Result Scene::append(uint32_t f, const geom::Mesh& fm, const geom::FaceStats& st
     t.vertices += fm.vertex_count;
     t.triangles += fm.triangle_count;
     t.mesh_bytes = t.vertices * uint32_t(sizeof(DrawVertex)) + t.triangles * 3 * uint32_t(sizeof(uint16_t));
-    const uint32_t arena = uint32_t(cdt::arena_bytes<uint16_t>(stats.points + 4));
+    const uint32_t arena = uint32_t(geom::face_arena_bytes(stats.points));
     if (arena > t.arena_peak_bytes) t.arena_peak_bytes = arena;
     if (stats.points > t.face_points_peak) t.face_points_peak = stats.points;
     if (stats.slivers > t.slivers_peak) t.slivers_peak = stats.slivers;

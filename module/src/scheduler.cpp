@@ -28,7 +28,7 @@ bool Scheduler::run(uint32_t units) {
     }
     if (!in_face_) {
         mem_.face_mesh.vertex_count = mem_.face_mesh.triangle_count = 0;
-        job_.start(scene_.pack(), face_, scene_.samples(), opt_, mem_.scratch, mem_.face_mesh);
+        job_.start(scene_.pack(), face_, scene_.samples(), opt_, mem_.storage, mem_.face_mesh);
         in_face_ = true;
     }
     const Result r = job_.run(units);

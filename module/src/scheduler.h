@@ -20,7 +20,7 @@ struct Emitter {
 class Scheduler {
 public:
     struct Memory {
-        geom::FaceScratch scratch;
+        geom::FaceStorage storage;      // one face's working memory (geom/face_storage.h)
         geom::Mesh face_mesh;           // one face's float output, before the scene quantizes it
         uint32_t max_face_vertices = 0; // the most a face may have (the painter projects them)
     };

@@ -4,7 +4,6 @@
 // bounded time, and an Ok face's triangles must index its own vertices.
 //
 // Input: a plain pack; its size and CRC are fixed up so the fuzzer gets past them.
-#include "cdt/cdt.h"
 #include "geom/pack.h"
 #include "geom/tessellate.h"
 
@@ -19,24 +18,13 @@ using namespace facet::geom;
 
 namespace {
 
-constexpr size_t kV = 512;      // CDT vertices per face (small: the fuzzer runs many inputs; more gives Full)
+// A face's storage as the device's, small (the fuzzer runs many inputs; more points give Full).
+constexpr FaceCapacity kFace{508, 256, 256, kPatchCacheWords};
 constexpr size_t kMesh = 20000; // mesh vertices for all faces together
 constexpr uint32_t kFaces = 8;  // faces tessellated per input
 
 struct Buffers {
-    std::vector<cdt::Vertex<uint16_t>> av = std::vector<cdt::Vertex<uint16_t>>(kV);
-    std::vector<cdt::Triangle<uint16_t>> at = std::vector<cdt::Triangle<uint16_t>>(cdt::triangles_for(kV));
-    std::vector<uint16_t> aw = std::vector<uint16_t>(cdt::work_for(kV)), ao = std::vector<uint16_t>(kV),
-                          am = std::vector<uint16_t>(kV), ai = std::vector<uint16_t>(kV);
-    std::vector<uint32_t> ak = std::vector<uint32_t>(kV);
-    std::vector<cdt::Point> lp = std::vector<cdt::Point>(kV);
-    std::vector<uint32_t> ls = std::vector<uint32_t>(256), mesh_of = std::vector<uint32_t>(kV);
-    std::vector<Vec2> uvs = std::vector<Vec2>(kV);
-    std::vector<Vec3> xyz = std::vector<Vec3>(kV);
-    std::vector<uint8_t> pinned = std::vector<uint8_t>(kV);
-    std::vector<TriangleMeasure> measured = std::vector<TriangleMeasure>(cdt::triangles_for(kV));
-    std::vector<Sliver> slivers = std::vector<Sliver>(256);
-    std::vector<uint32_t> patches = std::vector<uint32_t>(kPatchCacheWords);
+    std::vector<uint64_t> face = std::vector<uint64_t>(face_storage_bytes(kFace) / 8 + 1);
     std::vector<MeshVertex> mv = std::vector<MeshVertex>(kMesh);
     std::vector<uint32_t> mi = std::vector<uint32_t>(3 * kMesh);
     std::vector<Vec2> muv = std::vector<Vec2>(kMesh);
@@ -66,7 +54,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     opt.tolerance = default_tolerance(pack);
     if (!sample_edges(pack, opt, samples).ok()) return 0;
 
-    FaceScratch sc{{b.av, b.at, b.aw, b.ao, b.am, b.ai, b.ak}, b.lp, b.ls, b.uvs, b.pinned, b.xyz, b.mesh_of, b.measured, b.slivers, b.patches};
+    FaceStorage sc;
+    if (!sc.bind(b.face.data(), b.face.size() * 8, kFace).ok()) std::abort();
     Mesh mesh{b.mv, b.mi, b.muv};
     for (uint32_t f = 0; f < pack.faces().size() && f < kFaces; ++f) {
         const uint32_t v0 = mesh.vertex_count, t0 = mesh.triangle_count;

@@ -205,20 +205,15 @@ int main(int argc, char** argv) {
             return die(std::string("edge sampling at --tolerance ") + std::to_string(opt.tolerance) + " mm: " + text + hint);
         }
     }
-    const size_t kV = size_t(face_points);
-    std::vector<cdt::Vertex<uint16_t>> av(kV);
-    std::vector<cdt::Triangle<uint16_t>> at(cdt::triangles_for(kV));
-    std::vector<uint16_t> aw(cdt::work_for(kV)), ao(kV), am(kV), ai(kV);
-    std::vector<uint32_t> ak(kV);
-    std::vector<cdt::Point> lp(kV);
-    std::vector<uint32_t> ls(kV), mesh_of(kV); // loops: each has points
-    std::vector<Vec2> uvs(kV);
-    std::vector<Vec3> xyz(kV);
-    std::vector<uint8_t> pinned(kV);
-    std::vector<TriangleMeasure> measured(cdt::triangles_for(kV));
-    std::vector<Sliver> slivers(4096);
-    std::vector<uint32_t> patches(kPatchCacheWords); // as the device: the same meshes
-    FaceScratch sc{{av, at, aw, ao, am, ai, ak}, lp, ls, uvs, pinned, xyz, mesh_of, measured, slivers, patches};
+    // One face's storage as the device's (its patches too: the same meshes), at this capacity.
+    const FaceCapacity capacity{uint32_t(face_points), uint32_t(face_points), 4096, kPatchCacheWords};
+    std::vector<uint64_t> face_memory(face_storage_bytes(capacity) / 8 + 1);
+    FaceStorage sc;
+    if (Result r = sc.bind(face_memory.data(), face_memory.size() * 8, capacity); !r.ok()) {
+        char text[160];
+        describe(r, text, sizeof text);
+        return die(text);
+    }
     std::vector<MeshVertex> mv(1 << 22);
     std::vector<uint32_t> mi(3u << 22);
     std::vector<Vec2> muv(1 << 22);
@@ -379,7 +374,7 @@ int main(int argc, char** argv) {
     for (auto& [r, n] : reasons) std::printf("  %u faces: %s\n", n, r.c_str());
     if (full_faces) {
         std::printf("  %u faces need more than one face's capacity (%zu points) at %.4g mm: a coarser --tolerance "
-                    "meshes them (the default is %.4g mm)\n", full_faces, kV, opt.tolerance, default_tolerance(pack));
+                    "meshes them (the default is %.4g mm)\n", full_faces, size_t(face_points), opt.tolerance, default_tolerance(pack));
     }
     if (!quiet) {
         for (const std::string& f : failures) std::fprintf(stderr, "facet-mesh: %s\n", f.c_str());

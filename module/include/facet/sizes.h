@@ -34,8 +34,9 @@
 #define FACET_DEFAULT_MESH_TRIANGLES 98304u
 
 /* Bytes per item of each capacity, and the fixed part (the viewer's state, 16 colour palettes,
- * 64 KB of a free-form face's fixed-point patches, alignment). The module asserts these
- * against its own records when it is built. */
+ * 64 KB of a free-form face's fixed-point patches, alignment). They come from the workspace's
+ * one plan (module/src/workspace.h, a face's part from geom/face_storage.h): the module's build
+ * fails unless each equals what the plan takes per item, and the fixed part holds the rest. */
 #define FACET_BYTES_PER_FACE 44ul
 #define FACET_BYTES_PER_EDGE 7ul
 #define FACET_BYTES_PER_SAMPLE 28ul
