@@ -16,6 +16,23 @@ function(facet_board_bytes text out)
     set(${out} ${v} PARENT_SCOPE)
 endfunction()
 
+# What a board can do, from its description's "capabilities" (boards/<board>/board.json):
+# screenshots (a host takes its pictures: QEMU's runner), mouse, touch, bench (the benches
+# measure on it), flash_runner (how ./facet flash writes it: "probe-drive", or null). Sets `out`
+# to the value (ON/OFF for the flags, the text or "" for flash_runner).
+function(facet_board_capability board capability out)
+    set(json_file ${CMAKE_SOURCE_DIR}/boards/${board}/board.json)
+    file(READ ${json_file} json)
+    string(JSON value ERROR_VARIABLE missing GET "${json}" capabilities ${capability})
+    if(missing)
+        message(FATAL_ERROR "${json_file}: no capabilities.${capability}")
+    endif()
+    if(value STREQUAL "null")
+        set(value "")
+    endif()
+    set(${out} ${value} PARENT_SCOPE)
+endfunction()
+
 # Reads boards/<board>/board.json, the board's one description, and writes what the build
 # needs from it: the CPU flags, the config header the firmware sizes its buffers from
 # (facet_board_config.h) and the linker script's memory map and pack region (board_memory.ld).
@@ -37,6 +54,15 @@ macro(facet_read_board board)
     # EVKB's stand-in links with the EVKB's), pack "writable" (false: the pack sits in flash and
     # a deflated one is inflated into "memory" bytes of RAM; true: inflated in place).
     string(JSON FACET_QEMU_MACHINE ERROR_VARIABLE _noqemu GET "${_json}" qemu machine)
+    foreach(_cap screenshots mouse touch bench flash_runner)
+        string(TOUPPER ${_cap} _CAP)
+        facet_board_capability(${board} ${_cap} FACET_BOARD_${_CAP})
+        if(FACET_BOARD_${_CAP})
+            set(_${_cap}_cpp true)
+        else()
+            set(_${_cap}_cpp false)
+        endif()
+    endforeach()
     string(JSON _linker ERROR_VARIABLE _nolinker GET "${_json}" linker)
     if(_nolinker)
         set(_linker ${board})
@@ -122,6 +148,8 @@ constexpr bool kPackWritable = ${_pack_writable_cpp};
 constexpr uint32_t kPackMemoryBytes = ${_pack_memory_bytes}u;
 // Where facet-fault-test stores: the first address past the RAM the board grants.
 constexpr uintptr_t kFaultProbe = ${_fault_probe_address}u;
+// What it can do (board.json \"capabilities\"; its drivers say the same at run time).
+constexpr bool kMouse = ${_mouse_cpp}, kTouch = ${_touch_cpp}, kScreenshots = ${_screenshots_cpp};
 } // namespace facet::board_config
 ")
     configure_file(${FACET_BOARD_GENERATED}/facet_board_config.h.in ${FACET_BOARD_GENERATED}/facet_board_config.h COPYONLY)

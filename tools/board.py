@@ -5,7 +5,9 @@
   board.py --list               the boards
 
 From Python: board.load('qemu-versatilepb') -> dict, with 'pack_address' and 'pack_bytes' as
-integers and 'size' as 'WxH'.
+integers and 'size' as 'WxH'; board.can('qemu-versatilepb', 'mouse') -> what it can do (its
+"capabilities": screenshots, mouse, touch, bench, flash_runner); board.qemu_boards() -> the
+boards QEMU runs (those with a "qemu" machine).
 """
 import json
 import os
@@ -38,6 +40,18 @@ def load(name):
     b['pack_bytes'] = bytes_of(b['pack']['bytes'])
     b['size'] = f'{b["display"]["width"]}x{b["display"]["height"]}'
     return b
+
+
+def can(name, capability):
+    """A board's capability (board.json "capabilities"): True/False, or a flash runner's name."""
+    caps = load(name).get('capabilities', {})
+    if capability not in caps:
+        raise SystemExit(f'board.py: {name} does not say whether it has {capability!r} (board.json "capabilities")')
+    return caps[capability]
+
+
+def qemu_boards():
+    return [n for n in names() if 'qemu' in load(n)]
 
 
 def main():

@@ -21,8 +21,7 @@
 #include "hal/board.h"
 #include "hal/measure.h"
 #include "hal/print.h"
-#include "report.h"
-#include "qemu/capture.h"
+#include "hal/report.h"
 #include "tgx_side.h"
 
 namespace {
@@ -77,7 +76,8 @@ uint32_t covered(const uint16_t* z, uint32_t n, uint16_t empty) {
 }
 
 bool dump(const char* name, const uint16_t* pixels, uint16_t w, uint16_t h) {
-    const Status s = qemu::dump(name, reinterpret_cast<const Rgb565*>(pixels), w, h);
+    hal::Capture* c = hal::board().capture;
+    const Status s = c ? c->dump(name, reinterpret_cast<const Rgb565*>(pixels), w, h) : Status::Unsupported;
     if (!ok(s)) print(*state.con, "bench: picture {} not written: {}\n", name, s);
     return ok(s);
 }
@@ -124,7 +124,7 @@ bool views(Viewer& v, const char* name, uint16_t w, uint16_t h, const bench::Pee
 int facet_main(hal::Board& board) {
     hal::Console& con = board.console;
     state.con = &con;
-    fw::report_board(board);
+    hal::report_board(board);
     auto* region = reinterpret_cast<const uint8_t*>(board_config::kPackAddress);
     bench::PeerMesh peer{};
     if (!bench::peer_load(region + kMeshOffset, board_config::kPackBytes - kMeshOffset, peer)) {

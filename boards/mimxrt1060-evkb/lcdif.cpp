@@ -43,10 +43,10 @@ void Lcdif::init(const PanelTiming& p) {
 }
 
 hal::DisplayInfo Lcdif::info() const {
-    return {panel_ ? panel_->width : uint16_t(0), panel_ ? panel_->height : uint16_t(0), hal::PixelFormat::Rgb565, true};
+    return {panel_ ? panel_->width : uint16_t(0), panel_ ? panel_->height : uint16_t(0), PixelFormat::Rgb565, true};
 }
 
-Status Lcdif::show(hal::Rgb565* frame) {
+Status Lcdif::show(Rgb565* frame) {
     if (!frame || !panel_) return Status::OutOfRange;
     // The frames sit in a write-through MPU region: memory already holds every pixel; the
     // barrier makes sure the last stores have left the core before the controller reads.
@@ -70,7 +70,7 @@ bool Lcdif::busy() const {
     return !(mmio::read(kCtrl1) & kCurFrameDone);
 }
 
-Status Lcdif::write(const hal::Rect& area, const hal::Rgb565* pixels) {
+Status Lcdif::write(const Area& area, const Rgb565* pixels) {
     if (!panel_) return Status::NotFound;
     return hal::copy_area(shown_, panel_->width, panel_->height, area, pixels);
 }

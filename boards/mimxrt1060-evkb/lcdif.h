@@ -35,15 +35,15 @@ public:
     // Programs the controller for `panel` (it starts scanning at the first show()).
     void init(const PanelTiming& panel);
     hal::DisplayInfo info() const override;
-    Status show(hal::Rgb565* frame) override;
-    Status write(const hal::Rect& area, const hal::Rgb565* pixels) override;
-    const hal::Rgb565* frame() const override { return shown_; }
+    Status show(Rgb565* frame) override;
+    Status write(const Area& area, const Rgb565* pixels) override;
+    const Rgb565* frame() const override { return shown_; }
     bool busy() const override;
     const PanelTiming* panel() const { return panel_; }
 
 private:
     const PanelTiming* panel_ = nullptr;
-    hal::Rgb565* shown_ = nullptr;
+    Rgb565* shown_ = nullptr;
     bool running_ = false;
 };
 

@@ -1,7 +1,7 @@
 #pragma once
 // LPI2C1 as a polled I2C master (the touch controller's bus), and the small bus interface the
 // touch drivers use (so they are tested on the host with a simulated device).
-#include "hal/status.h"
+#include "core/status.h"
 
 #include <cstdint>
 

@@ -5,7 +5,7 @@
 
 namespace facet::qemu {
 
-Status dump(const char* name, const hal::Rgb565* pixels, uint16_t width, uint16_t height) {
+Status dump(const char* name, const Rgb565* pixels, uint16_t width, uint16_t height) {
     hal::Console& con = hal::board().console;
     char path[64];
     if (format(path, sizeof path, "{}.f565", name) >= sizeof path) return Status::OutOfRange;

@@ -7,15 +7,15 @@ namespace {
 constexpr uint16_t kW = board_config::kDisplayWidth, kH = board_config::kDisplayHeight;
 } // namespace
 
-hal::DisplayInfo RamDisplay::info() const { return {kW, kH, hal::PixelFormat::Rgb565, true}; }
+hal::DisplayInfo RamDisplay::info() const { return {kW, kH, PixelFormat::Rgb565, true}; }
 
-Status RamDisplay::show(hal::Rgb565* frame) {
+Status RamDisplay::show(Rgb565* frame) {
     if (!frame) return Status::OutOfRange;
     shown_ = frame;
     return Status::Ok;
 }
 
-Status RamDisplay::write(const hal::Rect& area, const hal::Rgb565* pixels) {
+Status RamDisplay::write(const Area& area, const Rgb565* pixels) {
     return hal::copy_area(shown_, kW, kH, area, pixels);
 }
 

@@ -9,12 +9,12 @@ namespace facet::mps2 {
 class RamDisplay final : public hal::Display {
 public:
     hal::DisplayInfo info() const override;
-    Status show(hal::Rgb565* frame) override;
-    Status write(const hal::Rect& area, const hal::Rgb565* pixels) override;
-    const hal::Rgb565* frame() const override { return shown_; }
+    Status show(Rgb565* frame) override;
+    Status write(const Area& area, const Rgb565* pixels) override;
+    const Rgb565* frame() const override { return shown_; }
 
 private:
-    hal::Rgb565* shown_ = nullptr;
+    Rgb565* shown_ = nullptr;
 };
 
 } // namespace facet::mps2

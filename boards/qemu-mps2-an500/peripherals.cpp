@@ -18,7 +18,7 @@ CmsdkUart console;
 DualTimerClock clock;
 RamDisplay display;
 boards::UartInput input(console);
-hal::Board the_board{board_config::kName, console, clock, display, input};
+hal::Board the_board{board_config::kName, console, clock, display, input, &qemu::runner()};
 } // namespace
 
 void start_peripherals() {
@@ -39,7 +39,7 @@ Board& board() { return mps2::the_board; }
 namespace facet::qemu {
 
 Status capture(const char* name) {
-    const hal::Rgb565* frame = mps2::display.frame();
+    const Rgb565* frame = mps2::display.frame();
     if (!frame) {
         print(mps2::console, "capture {}: no frame shown\n", name);
         return Status::NotFound;

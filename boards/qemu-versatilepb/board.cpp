@@ -31,7 +31,7 @@ public:
         return (mouse_ok && mouse.poll(event)) || uart_input.poll(event);
     }
 } input;
-hal::Board the_board{board_config::kName, console, clock, display, input};
+hal::Board the_board{board_config::kName, console, clock, display, input, &qemu::runner()};
 } // namespace
 } // namespace facet::versatilepb
 

@@ -34,9 +34,9 @@ void Pl110Display::init() {
     reg(kTim2) = 0x067F0020;
 }
 
-hal::DisplayInfo Pl110Display::info() const { return {kW, kH, hal::PixelFormat::Rgb565, true}; }
+hal::DisplayInfo Pl110Display::info() const { return {kW, kH, PixelFormat::Rgb565, true}; }
 
-Status Pl110Display::show(hal::Rgb565* frame) {
+Status Pl110Display::show(Rgb565* frame) {
     // The upper panel base must be 8-byte aligned (the controller fetches doublewords).
     if (!frame || (reinterpret_cast<uintptr_t>(frame) & 7)) return Status::OutOfRange;
     reg(kUpBase) = reinterpret_cast<uintptr_t>(frame);
@@ -45,7 +45,7 @@ Status Pl110Display::show(hal::Rgb565* frame) {
     return Status::Ok;
 }
 
-Status Pl110Display::write(const hal::Rect& area, const hal::Rgb565* pixels) {
+Status Pl110Display::write(const Area& area, const Rgb565* pixels) {
     return hal::copy_area(shown_, kW, kH, area, pixels);
 }
 

@@ -9,12 +9,12 @@ class Pl110Display final : public hal::Display {
 public:
     void init(); // timings; the controller is enabled with the first frame shown
     hal::DisplayInfo info() const override;
-    Status show(hal::Rgb565* frame) override;
-    Status write(const hal::Rect& area, const hal::Rgb565* pixels) override;
-    const hal::Rgb565* frame() const override { return shown_; }
+    Status show(Rgb565* frame) override;
+    Status write(const Area& area, const Rgb565* pixels) override;
+    const Rgb565* frame() const override { return shown_; }
 
 private:
-    hal::Rgb565* shown_ = nullptr;
+    Rgb565* shown_ = nullptr;
 };
 
 } // namespace facet::versatilepb

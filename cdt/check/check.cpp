@@ -1,7 +1,7 @@
 #include "cdt/check.h"
 
 #include "cdt/predicates.h"
-#include "hal/print.h"
+#include "core/format.h"
 
 #include <algorithm>
 

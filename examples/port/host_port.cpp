@@ -19,7 +19,7 @@ int app_main(void);
 
 namespace {
 uint16_t width = 480, height = 272;
-std::vector<facet::hal::Rgb565> screen;
+std::vector<facet::Rgb565> screen;
 std::vector<uint32_t> file, memory;
 uint32_t file_bytes = 0;
 std::string out;

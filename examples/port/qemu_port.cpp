@@ -4,7 +4,6 @@
 #include "facet_board_config.h"
 #include "hal/board.h"
 #include "hal/print.h"
-#include "qemu/capture.h"
 
 extern "C" {
 #include "port.h"
@@ -15,7 +14,7 @@ namespace {
 
 using namespace facet;
 constexpr uint16_t kW = board_config::kDisplayWidth, kH = board_config::kDisplayHeight;
-alignas(64) __attribute__((section(".framebuffers"))) hal::Rgb565 frame[uint32_t(kW) * kH];
+alignas(64) __attribute__((section(".framebuffers"))) Rgb565 frame[uint32_t(kW) * kH];
 // A board whose pack region is flash (the EVKB's configuration) inflates a deflated pack into
 // RAM of its own; the others inflate it in place.
 constexpr uint32_t kPackMemory = board_config::kPackWritable ? 8 : board_config::kPackMemoryBytes;
@@ -63,7 +62,8 @@ extern "C" void port_log(const char* line) { print(board->console, "minimal: {}\
 // Idle: the test's screenshot, and the example is done (a product would wait for input).
 extern "C" int port_idle(void) {
     print(board->console, "minimal: idle\n");
-    if (Status s = qemu::capture("minimal"); !ok(s)) print(board->console, "minimal: no screenshot ({})\n", s);
+    const Status s = board->capture ? board->capture->shot("minimal") : Status::Unsupported;
+    if (!ok(s)) print(board->console, "minimal: no screenshot ({})\n", s);
     return 1;
 }
 

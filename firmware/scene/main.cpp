@@ -5,22 +5,21 @@
 #include "hal/board.h"
 #include "hal/measure.h"
 #include "hal/print.h"
-#include "qemu/capture.h"
-#include "render/test_scene.h"
-#include "report.h"
+#include "test_scene.h"
+#include "hal/report.h"
 
 namespace {
 
 using namespace facet;
 constexpr uint16_t kW = board_config::kDisplayWidth, kH = board_config::kDisplayHeight;
 
-alignas(64) __attribute__((section(".framebuffers"))) hal::Rgb565 frame[uint32_t(kW) * kH];
+alignas(64) __attribute__((section(".framebuffers"))) Rgb565 frame[uint32_t(kW) * kH];
 alignas(64) __attribute__((section(".zbuffer"))) uint16_t depth[uint32_t(kW) * kH];
 
 } // namespace
 
 int facet_main(hal::Board& board) {
-    fw::report_board(board);
+    hal::report_board(board);
     render::Rasterizer raster(render::Target{frame, depth, kW, kH, 0, kH});
     const char* names[2] = {"scene-a", "scene-b"};
     const char* regions[2] = {"draw_scene_a", "draw_scene_b"};
@@ -42,7 +41,11 @@ int facet_main(hal::Board& board) {
               names[i], raster.stats.triangles, raster.stats.culled, raster.stats.spans,
               raster.stats.pixels, (t1 - t0) * 1'000'000 / board.clock.ticks_per_second());
         raster.stats = {};
-        if (Status c = qemu::capture(names[i]); !ok(c)) {
+        if (!board.capture) {
+            print(board.console, "scene: this board has no capture for its screenshots\n");
+            return 1;
+        }
+        if (Status c = board.capture->shot(names[i]); !ok(c)) {
             print(board.console, "scene: capture failed: {}\n", c);
             return 1;
         }

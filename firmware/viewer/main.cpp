@@ -22,11 +22,7 @@
 #include "hal/board.h"
 #include "hal/measure.h"
 #include "hal/print.h"
-#include "report.h"
-#if __has_include("qemu/capture.h")
-#include "qemu/capture.h"
-#define FACET_CAPTURE 1
-#endif
+#include "hal/report.h"
 
 namespace {
 
@@ -73,12 +69,14 @@ const char* work_name(Work w) {
 
 uint32_t um(float mm) { return uint32_t(mm * 1000 + 0.5f); }
 
+// A screenshot, on a board with a host to take it (its Capture; QEMU's).
 void capture(const char* name) {
-#if FACET_CAPTURE
-    if (Status s = qemu::capture(name); !ok(s)) print(session.board->console, "viewer: capture {} failed ({})\n", name, s);
-#else
-    print(session.board->console, "viewer: no screenshot '{}' on this board (QEMU only)\n", name);
-#endif
+    hal::Capture* c = session.board->capture;
+    if (!c) {
+        print(session.board->console, "viewer: no screenshot '{}' on this board (it has no capture)\n", name);
+    } else if (Status s = c->shot(name); !ok(s)) {
+        print(session.board->console, "viewer: capture {} failed ({})\n", name, s);
+    }
 }
 
 void on_event(void*, const Event& e) {
@@ -296,7 +294,7 @@ void key(uint8_t k) {
 int facet_main(hal::Board& board) {
     hal::Console& con = board.console;
     session.board = &board;
-    fw::report_board(board);
+    hal::report_board(board);
 
     Config cfg;
     cfg.display.width = kW, cfg.display.height = kH, cfg.display.band_lines = kH;

@@ -2,7 +2,7 @@
 
 #include "file_io.h"
 
-#include "hal/print.h"
+#include "core/format.h"
 
 #include "geom/pack_file.h"
 #include "geom/pack_format.h"

@@ -3,7 +3,7 @@
 #include "geom/eval.h"
 #include "geom/params.h"
 
-#include "hal/print.h"
+#include "core/format.h"
 
 #include <cmath>
 #include <cstring>

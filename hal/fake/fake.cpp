@@ -29,7 +29,7 @@ Status Display::show(Rgb565* frame) {
     return Status::Ok;
 }
 
-Status Display::write(const Rect& area, const Rgb565* px) {
+Status Display::write(const Area& area, const Rgb565* px) {
     const Status s = copy_area(shown_ ? shown_ : panel_.data(), width_, height_, area, px);
     if (!ok(s)) {
         ++rejected;

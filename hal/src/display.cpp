@@ -4,7 +4,7 @@
 
 namespace facet::hal {
 
-Status copy_area(Rgb565* frame, uint16_t width, uint16_t height, const Rect& a, const Rgb565* pixels) {
+Status copy_area(Rgb565* frame, uint16_t width, uint16_t height, const Area& a, const Rgb565* pixels) {
     if (!frame) return Status::NotFound;
     if (!pixels || a.width == 0 || a.height == 0 || uint32_t(a.x) + a.width > width || uint32_t(a.y) + a.height > height) {
         return Status::OutOfRange;

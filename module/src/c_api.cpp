@@ -2,7 +2,7 @@
 #include "facet/facet.h"
 
 #include "facet/viewer.h"
-#include "hal/print.h"
+#include "core/format.h"
 
 #include <cstring>
 

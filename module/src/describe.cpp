@@ -1,6 +1,6 @@
 #include "describe.h"
 
-#include "hal/print.h"
+#include "core/format.h"
 
 namespace facet::module {
 namespace {

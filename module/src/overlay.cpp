@@ -1,13 +1,13 @@
 #include "overlay.h"
 
-#include "hal/print.h"
+#include "core/format.h"
 #include "render/text.h"
 
 namespace facet::module {
 namespace {
 
-constexpr hal::Rgb565 kBar = hal::rgb565(36, 40, 48), kText = hal::rgb565(236, 238, 242), kDim = hal::rgb565(150, 156, 168);
-constexpr hal::Rgb565 kButton = hal::rgb565(58, 64, 76), kButtonOn = hal::rgb565(40, 110, 220), kEdge = hal::rgb565(20, 22, 28);
+constexpr Rgb565 kBar = rgb565(36, 40, 48), kText = rgb565(236, 238, 242), kDim = rgb565(150, 156, 168);
+constexpr Rgb565 kButton = rgb565(58, 64, 76), kButtonOn = rgb565(40, 110, 220), kEdge = rgb565(20, 22, 28);
 constexpr int32_t kKnob = 10;    // half the section slider's knob
 constexpr int32_t kScrollW = 28; // the parts list's scroll buttons
 
@@ -59,7 +59,7 @@ FreeArea Overlay::taken() const {
     FreeArea a;
     a.top = status_rows_;
     a.right = int16_t(width_ - toolbar_x_ + (slider_on_ && button_count_ ? kSliderWidth : 0));
-    a.left = parts_open() ? parts_panel().w : 0;
+    a.left = parts_open() ? parts_panel().width : 0;
     a.bottom = int16_t(line_count_ ? line_count_ * render::kLineHeight + 4 : 0);
     return a;
 }
@@ -81,28 +81,33 @@ void Overlay::set_lines(const char* const* lines, uint32_t count) {
     }
 }
 
-Overlay::Rect Overlay::slider() const {
+// An area from signed corners: nothing (0 wide or high) where they cross.
+static Area area(int32_t x, int32_t y, int32_t width, int32_t height) {
+    return {uint16_t(x > 0 ? x : 0), uint16_t(y > 0 ? y : 0), uint16_t(width > 0 ? width : 0), uint16_t(height > 0 ? height : 0)};
+}
+
+Area Overlay::slider() const {
     if (!slider_on_ || !button_count_) return {0, 0, 0, 0};
-    const int16_t bottom = int16_t(height_ - (line_count_ ? line_count_ * render::kLineHeight + 4 : 0) - kBarRows);
-    return {int16_t(toolbar_x_ - kSliderWidth), status_rows_, kSliderWidth, int16_t(bottom - status_rows_)};
+    const int32_t bottom = height_ - (line_count_ ? line_count_ * render::kLineHeight + 4 : 0) - kBarRows;
+    return area(toolbar_x_ - kSliderWidth, status_rows_, kSliderWidth, bottom - status_rows_);
 }
 
 float Overlay::slider_at(int16_t y) const {
-    const Rect r = slider();
-    const int32_t track = r.h - 2 * kKnob; // the knob's centre runs from kKnob to h - kKnob
+    const Area r = slider();
+    const int32_t track = r.height - 2 * kKnob; // the knob's centre runs from kKnob to height - kKnob
     if (track <= 0) return 0.5f;
-    const float v = float(r.y + r.h - kKnob - y) / float(track);
+    const float v = float(r.y + r.height - kKnob - y) / float(track);
     return v < 0 ? 0 : v > 1 ? 1 : v;
 }
 
-Overlay::Rect Overlay::parts_panel() const {
-    const int16_t w = int16_t(toolbar_x_ / 2 < 200 ? toolbar_x_ / 2 : 200);
-    const int16_t bottom = int16_t(height_ - (line_count_ ? line_count_ * render::kLineHeight + 4 : 0));
-    return {0, status_rows_, w, int16_t(bottom - status_rows_)};
+Area Overlay::parts_panel() const {
+    const int32_t w = toolbar_x_ / 2 < 200 ? toolbar_x_ / 2 : 200;
+    const int32_t bottom = height_ - (line_count_ ? line_count_ * render::kLineHeight + 4 : 0);
+    return area(0, status_rows_, w, bottom - status_rows_);
 }
 
 uint32_t Overlay::part_rows() const {
-    const int32_t rows = (parts_panel().h - kRow - kPartsFooter) / kRow;
+    const int32_t rows = (parts_panel().height - kRow - kPartsFooter) / kRow;
     return rows > 0 ? uint32_t(rows) : 0;
 }
 
@@ -125,16 +130,16 @@ void Overlay::scroll(int32_t rows) {
 Overlay::PartsHit Overlay::parts_at(int16_t x, int16_t y) const {
     PartsHit h;
     if (!parts_open()) return h;
-    const Rect p = parts_panel();
+    const Area p = parts_panel();
     if (!p.contains(x, y)) return h;
     h.kind = PartsHit::Kind::Panel;
     const int32_t dy = y - p.y;
     if (dy < kRow) { // the header: the scroll buttons at its right end
-        if (x >= p.w - 2 * kScrollW) h.kind = x >= p.w - kScrollW ? PartsHit::Kind::Down : PartsHit::Kind::Up;
+        if (x >= p.width - 2 * kScrollW) h.kind = x >= p.width - kScrollW ? PartsHit::Kind::Down : PartsHit::Kind::Up;
         return h;
     }
-    if (y >= p.y + p.h - kPartsFooter) { // HIDE, ISOL, ALL
-        const int32_t third = p.w / 3;
+    if (y >= p.y + p.height - kPartsFooter) { // HIDE, ISOL, ALL
+        const int32_t third = p.width / 3;
         h.kind = x < third ? PartsHit::Kind::Hide : x < 2 * third ? PartsHit::Kind::Isolate : PartsHit::Kind::All;
         return h;
     }
@@ -221,27 +226,27 @@ void Overlay::help_panel(const render::Target& t) const {
 }
 
 void Overlay::slider_bar(const render::Target& t) const {
-    const Rect r = slider();
-    if (r.w <= 0 || r.h <= 2 * kKnob) return;
-    render::fill_rect(t, r.x, r.y, r.w, r.h, kBar);
-    render::fill_rect(t, r.x + r.w / 2 - 1, r.y + kKnob, 3, r.h - 2 * kKnob, kDim); // the track
-    const int32_t y = r.y + r.h - kKnob - int32_t(slider_value_ * float(r.h - 2 * kKnob) + 0.5f);
-    render::fill_rect(t, r.x + 2, y - kKnob + 2, r.w - 4, 2 * kKnob - 4, kEdge);
-    render::fill_rect(t, r.x + 3, y - kKnob + 3, r.w - 6, 2 * kKnob - 6, kButtonOn);
+    const Area r = slider();
+    if (r.width <= 0 || r.height <= 2 * kKnob) return;
+    render::fill_rect(t, r.x, r.y, r.width, r.height, kBar);
+    render::fill_rect(t, r.x + r.width / 2 - 1, r.y + kKnob, 3, r.height - 2 * kKnob, kDim); // the track
+    const int32_t y = r.y + r.height - kKnob - int32_t(slider_value_ * float(r.height - 2 * kKnob) + 0.5f);
+    render::fill_rect(t, r.x + 2, y - kKnob + 2, r.width - 4, 2 * kKnob - 4, kEdge);
+    render::fill_rect(t, r.x + 3, y - kKnob + 3, r.width - 6, 2 * kKnob - 6, kButtonOn);
 }
 
 void Overlay::parts_list(const render::Target& t) const {
-    const Rect p = parts_panel();
-    if (!scene_ || !scene_->loaded() || p.h < kRow + kPartsFooter) return;
+    const Area p = parts_panel();
+    if (!scene_ || !scene_->loaded() || p.height < kRow + kPartsFooter) return;
     const geom::Pack& pack = scene_->pack();
     const uint32_t count = uint32_t(pack.instances().size());
-    render::fill_rect(t, p.x, p.y, p.w, p.h, kEdge);
-    render::fill_rect(t, p.x, p.y, p.w - 1, p.h, kBar);
+    render::fill_rect(t, p.x, p.y, p.width, p.height, kEdge);
+    render::fill_rect(t, p.x, p.y, p.width - 1, p.height, kBar);
     char text[48];
     format(text, sizeof text, "PARTS {}", count);
     render::draw_text(t, p.x + 4, p.y + (kRow - render::kGlyphHeight) / 2, text, kText);
     for (int i = 0; i < 2; ++i) { // scroll up, down
-        const int32_t x = p.w - (2 - i) * kScrollW;
+        const int32_t x = p.width - (2 - i) * kScrollW;
         render::fill_rect(t, x + 1, p.y + 1, kScrollW - 2, kRow - 2, kButton);
         render::draw_text(t, x + (kScrollW - render::kCellWidth) / 2, p.y + (kRow - render::kGlyphHeight) / 2, i ? "v" : "^", kText);
     }
@@ -250,20 +255,20 @@ void Overlay::parts_list(const render::Target& t) const {
         const uint32_t part = first_row_ + r;
         const int32_t y = p.y + kRow + int32_t(r) * kRow;
         const bool shown = scene_->shown(part);
-        if (part == chosen_) render::fill_rect(t, p.x, y, p.w - 1, kRow, kButtonOn);
+        if (part == chosen_) render::fill_rect(t, p.x, y, p.width - 1, kRow, kButtonOn);
         // The box: filled when the part is shown.
         render::fill_rect(t, p.x + 5, y + 4, 12, 12, shown ? kText : kDim);
         if (!shown) render::fill_rect(t, p.x + 7, y + 6, 8, 8, part == chosen_ ? kButtonOn : kBar);
         const char* name = pack.shell_name(pack.instances()[part].shell);
         format(text, sizeof text, "{} {}", part + 1, *name ? name : "(unnamed)");
-        const int32_t room = (p.w - 26) / render::kCellWidth;
+        const int32_t room = (p.width - 26) / render::kCellWidth;
         if (room < int32_t(sizeof text)) text[room > 0 ? room : 0] = 0;
         render::draw_text(t, p.x + 22, y + (kRow - render::kGlyphHeight) / 2, text, shown ? kText : kDim);
     }
     static constexpr const char* kLabels[3] = {"HIDE", "ISOL", "ALL"};
-    const int32_t third = p.w / 3, y = p.y + p.h - kPartsFooter;
+    const int32_t third = p.width / 3, y = p.y + p.height - kPartsFooter;
     for (int i = 0; i < 3; ++i) {
-        const int32_t x = p.x + i * third, w = i == 2 ? p.w - 2 * third : third;
+        const int32_t x = p.x + i * third, w = i == 2 ? p.width - 2 * third : third;
         render::fill_rect(t, x + 1, y + 1, w - 2, kPartsFooter - 2, chosen_ == ~0u && i < 2 ? kBar : kButton);
         render::draw_text(t, x + (w - render::text_width(kLabels[i])) / 2, y + (kPartsFooter - render::kGlyphHeight) / 2, kLabels[i],
                           chosen_ == ~0u && i < 2 ? kDim : kText);

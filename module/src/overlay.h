@@ -30,7 +30,7 @@ struct StatusInfo {
 class Overlay {
 public:
     static constexpr uint16_t kBarRows = 4;
-    static constexpr hal::Rgb565 kDone = hal::rgb565(40, 110, 220), kLeft = hal::rgb565(70, 74, 84);
+    static constexpr Rgb565 kDone = rgb565(40, 110, 220), kLeft = rgb565(70, 74, 84);
     static constexpr uint32_t kButtons = 9;
     static constexpr int16_t kSliderWidth = 28; // the section slider, left of the toolbar
     static constexpr int16_t kRow = 20, kPartsFooter = 26; // the parts list's rows and buttons
@@ -53,11 +53,7 @@ public:
     // The section slider: shown or not, and where its knob is (0: the bottom, 1: the top).
     void set_slider(bool on, float value) { slider_on_ = on, slider_value_ = value; }
     bool slider_on() const { return slider_on_; }
-    struct Rect {
-        int16_t x, y, w, h;
-        bool contains(int32_t px, int32_t py) const { return px >= x && px < x + w && py >= y && py < y + h; }
-    };
-    Rect slider() const; // the track (w 0: none)
+    Area slider() const; // the track (width 0: none)
     float slider_at(int16_t y) const; // the value at a row of the track, 0..1
 
     // The parts list: a panel down the left side, a row per part (instance) with its box
@@ -72,7 +68,7 @@ public:
     };
     PartsHit parts_at(int16_t x, int16_t y) const;
     void scroll(int32_t rows);
-    Rect parts_panel() const;
+    Area parts_panel() const;
     uint32_t part_rows() const; // rows the list shows at once
 
     void set_help(bool on) { help_ = on; }

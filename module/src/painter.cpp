@@ -9,7 +9,7 @@ namespace facet::module {
 namespace {
 
 constexpr uint16_t kLineBias = 384; // depth units edges are pulled toward the eye
-constexpr hal::Rgb565 kEdgeColour = hal::rgb565(28, 30, 38);
+constexpr Rgb565 kEdgeColour = rgb565(28, 30, 38);
 constexpr uint32_t kNoColour = 0xFF000000u; // no palette in the slot (colours are 24-bit)
 constexpr uint32_t kPaper = 0x00FFFFFFu;    // hidden-line faces: white
 constexpr uint32_t kPicked = 0x00C830FFu;   // the picked face (B, G, R bytes: magenta, rare in CAD colours)
@@ -75,7 +75,7 @@ void Painter::background() {
     const int32_t dr = (80 << 16) / rows, dg = (78 << 16) / rows, db = (64 << 16) / rows;
     int32_t r = (214 << 16) - int32_t(t.y0) * dr, g = (222 << 16) - int32_t(t.y0) * dg, b = (234 << 16) - int32_t(t.y0) * db;
     for (int32_t y = t.y0; y < t.y0 + t.rows; ++y, r -= dr, g -= dg, b -= db) {
-        render::fill_pixels(t.row(y), t.width, hal::rgb565(uint8_t(r >> 16), uint8_t(g >> 16), uint8_t(b >> 16)));
+        render::fill_pixels(t.row(y), t.width, rgb565(uint8_t(r >> 16), uint8_t(g >> 16), uint8_t(b >> 16)));
     }
 }
 

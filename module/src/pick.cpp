@@ -3,7 +3,7 @@
 #include "core.h"
 #include "describe.h"
 #include "geom/measure.h"
-#include "hal/print.h"
+#include "core/format.h"
 
 #include <cstdlib>
 

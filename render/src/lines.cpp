@@ -19,7 +19,7 @@ using namespace detail;
 // in the band. A pixel that passes is drawn, and its depth written where nearer. Returns the
 // pixels stepped.
 template <bool kBeyond>
-uint32_t stroke(const Target& t, const ScreenVertex& a, const ScreenVertex& b, hal::Rgb565 colour, uint16_t bias,
+uint32_t stroke(const Target& t, const ScreenVertex& a, const ScreenVertex& b, Rgb565 colour, uint16_t bias,
                 int32_t ox = 0, int32_t oy = 0) {
     const int32_t x0 = pixel_of(a.x), y0 = pixel_of(a.y), dx = pixel_of(b.x) - x0, dy = pixel_of(b.y) - y0;
     const int32_t n = (dx < 0 ? -dx : dx) > (dy < 0 ? -dy : dy) ? (dx < 0 ? -dx : dx) : (dy < 0 ? -dy : dy);
@@ -33,7 +33,7 @@ uint32_t stroke(const Target& t, const ScreenVertex& a, const ScreenVertex& b, h
     }
     z -= int32_t(bias) << 8; // pulled toward the eye
     uint16_t* const depth = t.depth;
-    hal::Rgb565* const fb = t.pixels;
+    Rgb565* const fb = t.pixels;
     const uint32_t width = t.width, band0 = t.y0, rows = t.rows;
     for (int32_t i = 0; i <= n; ++i, x += sx, y += sy, z += sz) {
         const int32_t px = x >> 16, py = y >> 16;
@@ -56,13 +56,13 @@ uint32_t stroke(const Target& t, const ScreenVertex& a, const ScreenVertex& b, h
 
 } // namespace
 
-Status Rasterizer::line(const ScreenVertex& a, const ScreenVertex& b, hal::Rgb565 colour, uint16_t bias) {
+Status Rasterizer::line(const ScreenVertex& a, const ScreenVertex& b, Rgb565 colour, uint16_t bias) {
     if (!in_guard(a) || !in_guard(b)) return Status::OutOfRange;
     stats.pixels += stroke<false>(t_, a, b, colour, bias);
     return Status::Ok;
 }
 
-Status Rasterizer::outline(const ScreenVertex& a, const ScreenVertex& b, hal::Rgb565 colour, uint16_t bias, uint8_t beyond) {
+Status Rasterizer::outline(const ScreenVertex& a, const ScreenVertex& b, Rgb565 colour, uint16_t bias, uint8_t beyond) {
     if (!in_guard(a) || !in_guard(b)) return Status::OutOfRange;
     stats.pixels += stroke<true>(t_, a, b, colour, bias, beyond == 0 ? 1 : beyond == 2 ? -1 : 0, beyond == 1 ? 1 : beyond == 3 ? -1 : 0);
     return Status::Ok;

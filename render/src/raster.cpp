@@ -17,7 +17,7 @@ void make_palette(Palette& out, uint8_t r, uint8_t g, uint8_t b) {
         const uint32_t x = c * s + 127;
         return uint8_t((x + 1 + (x >> 8)) >> 8);
     };
-    for (uint32_t s = 0; s < 256; ++s) out.colour[s] = hal::rgb565(scaled(r, s), scaled(g, s), scaled(b, s));
+    for (uint32_t s = 0; s < 256; ++s) out.colour[s] = rgb565(scaled(r, s), scaled(g, s), scaled(b, s));
     for (int k = 0; k < Palette::kPad; ++k) out.colour[256 + k] = out.colour[255];
 }
 

@@ -93,13 +93,13 @@ namespace {
 // span costs; counting those that pass would cost an instruction a pixel).
 [[gnu::always_inline]] inline uint32_t shade_span(uint16_t* d, uint16_t* end, uintptr_t to_out, uint32_t z, uint32_t zs,
                                                   uint32_t s, uint32_t ss, const uint32_t* colour) {
-    static_assert(sizeof(hal::Rgb565) == sizeof(uint16_t));
+    static_assert(sizeof(Rgb565) == sizeof(uint16_t));
     const uint32_t n = uint32_t(end - d);
     auto pixel = [&](uint16_t* at, uint32_t zz, uint32_t sh) {
         const uint32_t zv = zz >> kFrac; // within [0, 65535] on this path (no clamps needed)
         if (zv < *at) {
             *at = uint16_t(zv);
-            *reinterpret_cast<hal::Rgb565*>(reinterpret_cast<uintptr_t>(at) + to_out) = hal::Rgb565(colour[sh >> kFrac]);
+            *reinterpret_cast<Rgb565*>(reinterpret_cast<uintptr_t>(at) + to_out) = Rgb565(colour[sh >> kFrac]);
         }
     };
     if (n & 1) {
@@ -115,11 +115,11 @@ namespace {
     return n;
 }
 
-inline uintptr_t byte_distance(const uint16_t* from, const hal::Rgb565* to) {
+inline uintptr_t byte_distance(const uint16_t* from, const Rgb565* to) {
     return reinterpret_cast<uintptr_t>(to) - reinterpret_cast<uintptr_t>(from);
 }
 
-[[gnu::always_inline]] inline uint32_t shade_in_place(uint16_t* d, uint16_t* end, hal::Rgb565* out, uint32_t z,
+[[gnu::always_inline]] inline uint32_t shade_in_place(uint16_t* d, uint16_t* end, Rgb565* out, uint32_t z,
                                                       uint32_t zs, uint32_t s, uint32_t ss, const uint32_t* colour) {
     return shade_span(d, end, byte_distance(d, out), z, zs, s, ss, colour);
 }
@@ -137,7 +137,7 @@ struct InPlaceRows {
 // their pixels (a row's span is often a few pixels: slivers, zoomed views, so what a row
 // costs besides its pixels matters as much). Returns the pixels depth-tested.
 [[gnu::noinline]] uint32_t rows_in_place(InPlaceRows& w, int32_t rows, int32_t col0, int32_t col1, uint16_t* depth,
-                                          hal::Rgb565* fb, uint32_t width, const uint32_t* colour) {
+                                          Rgb565* fb, uint32_t width, const uint32_t* colour) {
     constexpr int32_t kChunk = 32;
     int32_t span[2 * kChunk];
     uint32_t tested = 0;
@@ -354,7 +354,7 @@ void Rasterizer::scan_rows(const ScreenVertex& v0, const ScreenVertex& v1, const
         T lq = L.q, lr = L.r, rq = R.q, rr = R.r;
         const T ls = L.s, ldq = L.dq, ldr = L.dr, rs = R.s, rdq = R.dq, rdr = R.dr;
         uint16_t* const depth = t_.depth;
-        hal::Rgb565* const fb = t_.pixels;
+        Rgb565* const fb = t_.pixels;
         const uint32_t* const colour = palette_->colour;
         const size_t width = t_.width;
         uint32_t pixels = 0, spans = 0;
@@ -452,7 +452,7 @@ void Rasterizer::shade(int32_t y, int32_t lo, int32_t hi, const Interp* at, bool
     const uint32_t zs = at[0].sx, ss = at[1].sx;
     const size_t row = size_t(y - t_.y0) * t_.width;
     uint16_t* const drow = t_.depth + row;
-    hal::Rgb565* const line = t_.pixels + row;
+    Rgb565* const line = t_.pixels + row;
     const uint32_t* colour = palette_->colour;
     if (!clamp) {
         stats.pixels += shade_in_place(drow + lo, drow + hi + 1, line + lo, z, zs, s, ss, colour);
@@ -464,7 +464,7 @@ void Rasterizer::shade(int32_t y, int32_t lo, int32_t hi, const Interp* at, bool
         const uint16_t zv = uint16_t(at[0].value(z));
         if (zv < drow[x]) {
             drow[x] = zv;
-            line[x] = hal::Rgb565(colour[at[1].value(s)]);
+            line[x] = Rgb565(colour[at[1].value(s)]);
         }
     }
     stats.pixels += uint32_t(hi - lo + 1);

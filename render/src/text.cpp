@@ -18,7 +18,7 @@ bool clip(const Target& t, int32_t& x, int32_t& y, int32_t& w, int32_t& h) {
 
 } // namespace
 
-void fill_pixels(hal::Rgb565* p, uint32_t n, hal::Rgb565 c) {
+void fill_pixels(Rgb565* p, uint32_t n, Rgb565 c) {
     // Two pixels per word store, eight words per round: the odd pixel at each end on its own.
     using Pair = uint32_t __attribute__((may_alias, aligned(4)));
     if ((reinterpret_cast<uintptr_t>(p) & 2) && n) *p++ = c, --n;
@@ -27,7 +27,7 @@ void fill_pixels(hal::Rgb565* p, uint32_t n, hal::Rgb565 c) {
     uint32_t words = n / 2;
     for (; words >= 8; words -= 8, w += 8) w[0] = w[1] = w[2] = w[3] = w[4] = w[5] = w[6] = w[7] = pair;
     while (words--) *w++ = pair;
-    if (n & 1) *reinterpret_cast<hal::Rgb565*>(w) = c;
+    if (n & 1) *reinterpret_cast<Rgb565*>(w) = c;
 }
 
 int32_t text_width(const char* text, int32_t scale) {
@@ -36,7 +36,7 @@ int32_t text_width(const char* text, int32_t scale) {
     return n ? (n * kCellWidth - 1) * scale : 0;
 }
 
-int32_t draw_text(const Target& t, int32_t x, int32_t y, const char* text, hal::Rgb565 colour, int32_t scale) {
+int32_t draw_text(const Target& t, int32_t x, int32_t y, const char* text, Rgb565 colour, int32_t scale) {
     const int32_t top = t.y0, bottom = t.y0 + t.rows;
     for (; *text; ++text, x += kCellWidth * scale) {
         if (x >= t.width) { // the rest is off the screen: only the advance counts
@@ -53,7 +53,7 @@ int32_t draw_text(const Target& t, int32_t x, int32_t y, const char* text, hal::
             if (!bits) continue;
             for (int32_t py = y + gr * scale, end = py + scale; py < end; ++py) {
                 if (py < top || py >= bottom) continue;
-                hal::Rgb565* row = t.row(py);
+                Rgb565* row = t.row(py);
                 for (int32_t gc = 0; gc < kGlyphWidth; ++gc) {
                     if (!((bits >> (4 - gc)) & 1)) continue;
                     for (int32_t px = x + gc * scale, stop = px + scale; px < stop; ++px)
@@ -65,18 +65,18 @@ int32_t draw_text(const Target& t, int32_t x, int32_t y, const char* text, hal::
     return x;
 }
 
-void fill_rect(const Target& t, int32_t x, int32_t y, int32_t w, int32_t h, hal::Rgb565 colour) {
+void fill_rect(const Target& t, int32_t x, int32_t y, int32_t w, int32_t h, Rgb565 colour) {
     if (!clip(t, x, y, w, h)) return;
     for (int32_t r = y; r < y + h; ++r) fill_pixels(t.row(r) + x, uint32_t(w), colour);
 }
 
-void dim_rect(const Target& t, int32_t x, int32_t y, int32_t w, int32_t h, hal::Rgb565 colour) {
+void dim_rect(const Target& t, int32_t x, int32_t y, int32_t w, int32_t h, Rgb565 colour) {
     if (!clip(t, x, y, w, h)) return;
     // Halve both and add: the low bit of each channel dropped first (no carry between them).
     const uint32_t half = (uint32_t(colour) & 0xF7DEu) >> 1;
     for (int32_t r = y; r < y + h; ++r) {
-        hal::Rgb565* p = t.row(r) + x;
-        for (int32_t i = 0; i < w; ++i) p[i] = hal::Rgb565(((uint32_t(p[i]) & 0xF7DEu) >> 1) + half);
+        Rgb565* p = t.row(r) + x;
+        for (int32_t i = 0; i < w; ++i) p[i] = Rgb565(((uint32_t(p[i]) & 0xF7DEu) >> 1) + half);
     }
 }
 

@@ -291,7 +291,7 @@ TEST_P(Panels, TheControllerSendsThePanelsTimingsAndPolarities) {
     lcdif_hardware();
     Lcdif lcd;
     lcd.init(p);
-    static hal::Rgb565 frames[2][4];
+    static Rgb565 frames[2][4];
     EXPECT_EQ(lcd.show(frames[0]), Status::Ok);
     const uint32_t ctrl = model.regs[lcdif::kCtrl];
     EXPECT_TRUE(ctrl & lcdif::kRun);

@@ -2,7 +2,7 @@
 // Test harness for cdt/: heap-backed arenas of any size, face builders, and a one-call
 // "triangulate and run the independent checker" helper.
 #include "cdt/check.h"
-#include "hal/print.h"
+#include "core/format.h"
 #include "cdt/face.h"
 
 #include <gtest/gtest.h>

@@ -6,7 +6,7 @@
 // topology, constraints and the Delaunay property; odd = a valid face (outer rectangle, holes in
 // separate cells) also checked for the inner set.
 #include "cdt/check.h"
-#include "hal/print.h"
+#include "core/format.h"
 
 #include <cstdint>
 #include <cstdio>

@@ -3,7 +3,7 @@
 #include "geom/pack.h"
 #include "pack_writer.h"
 
-#include "hal/print.h"
+#include "core/format.h"
 
 #include <gtest/gtest.h>
 

@@ -6,7 +6,7 @@ using namespace facet;
 
 TEST(FakeDisplay, RejectsAreasOffScreenAndDrawsNothing) {
     hal::fake::Display d(32, 8, false);
-    const hal::Rgb565 px[4] = {1, 2, 3, 4};
+    const Rgb565 px[4] = {1, 2, 3, 4};
     EXPECT_EQ(d.write({30, 0, 4, 1}, px), Status::OutOfRange); // runs off the right edge
     EXPECT_EQ(d.write({0, 8, 1, 1}, px), Status::OutOfRange);  // below the last row
     EXPECT_EQ(d.write({0, 0, 0, 1}, px), Status::OutOfRange);  // empty
@@ -14,17 +14,17 @@ TEST(FakeDisplay, RejectsAreasOffScreenAndDrawsNothing) {
     EXPECT_EQ(d.show(nullptr), Status::Unsupported) << "no scan-out on this panel";
     EXPECT_EQ(d.rejected, 5u);
     EXPECT_EQ(d.pixels, 0u);
-    for (hal::Rgb565 p : d.front()) EXPECT_EQ(p, 0);
+    for (Rgb565 p : d.front()) EXPECT_EQ(p, 0);
 }
 
 TEST(FakeDisplay, ShowsFramesInPlaceAndWritesAreasIntoThem) {
     hal::fake::Display d(16, 4);
-    std::vector<hal::Rgb565> a(16 * 4, 0x1111), b(16 * 4, 0x2222);
+    std::vector<Rgb565> a(16 * 4, 0x1111), b(16 * 4, 0x2222);
     ASSERT_EQ(d.show(a.data()), Status::Ok);
     EXPECT_EQ(d.pixel(3, 1), 0x1111);
     ASSERT_EQ(d.show(b.data()), Status::Ok);
     EXPECT_EQ(d.pixel(3, 1), 0x2222);
-    const hal::Rgb565 band[16 * 2] = {};
+    const Rgb565 band[16 * 2] = {};
     ASSERT_EQ(d.write({0, 2, 16, 2}, band), Status::Ok);
     EXPECT_EQ(b[16 * 2 + 5], 0) << "an area goes into the frame shown";
     EXPECT_EQ(d.pixel(5, 1), 0x2222);
@@ -50,7 +50,7 @@ TEST(FakeConsoleInput, RecordsAndReplays) {
 }
 
 TEST(Rgb565, PacksChannels) {
-    EXPECT_EQ(hal::rgb565(255, 0, 0), 0xF800);
-    EXPECT_EQ(hal::rgb565(0, 255, 0), 0x07E0);
-    EXPECT_EQ(hal::rgb565(0, 0, 255), 0x001F);
+    EXPECT_EQ(rgb565(255, 0, 0), 0xF800);
+    EXPECT_EQ(rgb565(0, 255, 0), 0x07E0);
+    EXPECT_EQ(rgb565(0, 0, 255), 0x001F);
 }

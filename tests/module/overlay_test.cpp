@@ -12,32 +12,32 @@ using namespace facet::module;
 
 TEST(Overlay, TheProgressBarShowsTheFacesDoneAndGoesWhenAllAreIn) {
     constexpr uint16_t W = 101, H = 30;
-    std::vector<hal::Rgb565> px(W * H, 7);
+    std::vector<Rgb565> px(W * H, 7);
     std::vector<uint16_t> depth(W * H);
     const render::Target t{px.data(), depth.data(), W, H, 0, H};
     Overlay o;
     o.progress(t, 1, 4);
     for (uint16_t y = 0; y < H; ++y) {
         for (uint16_t x = 0; x < W; ++x) {
-            const hal::Rgb565 want = y < H - Overlay::kBarRows ? 7 : (x < W / 4 ? Overlay::kDone : Overlay::kLeft);
+            const Rgb565 want = y < H - Overlay::kBarRows ? 7 : (x < W / 4 ? Overlay::kDone : Overlay::kLeft);
             ASSERT_EQ(px[y * W + x], want) << x << "," << y;
         }
     }
-    std::vector<hal::Rgb565> before = px;
+    std::vector<Rgb565> before = px;
     o.progress(t, 4, 4);
     EXPECT_EQ(px, before) << "nothing drawn once every face is in";
 }
 
 TEST(Overlay, BandsGetTheirRowsOfTheBar) {
     constexpr uint16_t W = 64, H = 20;
-    std::vector<hal::Rgb565> whole(W * H, 1), depth(W * H);
+    std::vector<Rgb565> whole(W * H, 1), depth(W * H);
     Overlay o;
     o.progress({whole.data(), depth.data(), W, H, 0, H}, 3, 8);
     for (uint16_t band : {1, 3, 7}) {
-        std::vector<hal::Rgb565> screen(W * H, 1);
+        std::vector<Rgb565> screen(W * H, 1);
         for (uint16_t y0 = 0; y0 < H; y0 += band) {
             const uint16_t rows = uint16_t(std::min<int>(band, H - y0));
-            std::vector<hal::Rgb565> px(W * rows, 1);
+            std::vector<Rgb565> px(W * rows, 1);
             std::vector<uint16_t> z(W * rows);
             o.progress({px.data(), z.data(), W, H, y0, rows}, 3, 8);
             std::copy(px.begin(), px.end(), screen.begin() + W * y0);
@@ -49,11 +49,11 @@ TEST(Overlay, BandsGetTheirRowsOfTheBar) {
 namespace {
 
 // The whole overlay into a screen, whole or band by band.
-std::vector<hal::Rgb565> draw(const Overlay& o, uint16_t w, uint16_t h, uint16_t band, const StatusInfo& s) {
-    std::vector<hal::Rgb565> screen(size_t(w) * h, 0x1234);
+std::vector<Rgb565> draw(const Overlay& o, uint16_t w, uint16_t h, uint16_t band, const StatusInfo& s) {
+    std::vector<Rgb565> screen(size_t(w) * h, 0x1234);
     for (uint16_t y0 = 0; y0 < h; y0 += band) {
         const uint16_t rows = uint16_t(std::min<int>(band, h - y0));
-        std::vector<hal::Rgb565> px(size_t(w) * rows, 0x1234);
+        std::vector<Rgb565> px(size_t(w) * rows, 0x1234);
         std::vector<uint16_t> z(size_t(w) * rows);
         o.draw({px.data(), z.data(), w, h, y0, rows}, s);
         std::copy(px.begin(), px.end(), screen.begin() + ptrdiff_t(w) * y0);
@@ -111,7 +111,7 @@ TEST(Overlay, StatusToolbarPanelAndHelpDrawTheSameInBands) {
     o.set_measuring(true);
     StatusInfo s;
     s.finished = 40, s.total = 87, s.triangles = 1594, s.frame_us = 13100, s.tolerance_mm = 0.504f;
-    const std::vector<hal::Rgb565> whole = draw(o, W, H, H, s);
+    const std::vector<Rgb565> whole = draw(o, W, H, H, s);
     for (uint16_t band : {1, 16, 100}) EXPECT_EQ(draw(o, W, H, band, s), whole) << "bands of " << band;
     auto touched = [&](int x0, int y0, int x1, int y1) {
         int n = 0;
@@ -128,7 +128,7 @@ TEST(Overlay, StatusToolbarPanelAndHelpDrawTheSameInBands) {
 // The font: a glyph drawn is its pixel art (tools/font/make_font.py), scaled; unknown bytes are '?'.
 TEST(Overlay, TextIsTheFontsPixelArt) {
     constexpr uint16_t W = 40, H = 20;
-    std::vector<hal::Rgb565> px(W * H, 0);
+    std::vector<Rgb565> px(W * H, 0);
     std::vector<uint16_t> z(W * H);
     const render::Target t{px.data(), z.data(), W, H, 0, H};
     EXPECT_EQ(render::draw_text(t, 1, 1, "T", 0xFFFF), 1 + render::kCellWidth);
@@ -139,7 +139,7 @@ TEST(Overlay, TextIsTheFontsPixelArt) {
     }
     EXPECT_EQ(render::text_width("T"), 5);
     EXPECT_EQ(render::text_width("TT", 2), 22);
-    std::vector<hal::Rgb565> a(W * H, 0), b(W * H, 0);
+    std::vector<Rgb565> a(W * H, 0), b(W * H, 0);
     render::draw_text({a.data(), z.data(), W, H, 0, H}, 0, 0, "\x01", 1);
     render::draw_text({b.data(), z.data(), W, H, 0, H}, 0, 0, "?", 1);
     EXPECT_EQ(a, b);
@@ -163,9 +163,9 @@ TEST(Overlay, TheFrameTimeFieldIsWhereImgPySaysItIs) {
         // The time is drawn inside it only.
         StatusInfo s;
         s.finished = s.total = 5, s.frame_us = 1234567;
-        const std::vector<hal::Rgb565> with = draw(o, c.w, c.h, c.h, s);
+        const std::vector<Rgb565> with = draw(o, c.w, c.h, c.h, s);
         s.frame_us = 0;
-        const std::vector<hal::Rgb565> without = draw(o, c.w, c.h, c.h, s);
+        const std::vector<Rgb565> without = draw(o, c.w, c.h, c.h, s);
         for (int y = 0; y < c.h; ++y)
             for (int x = 0; x < c.w; ++x)
                 if (with[size_t(y) * c.w + x] != without[size_t(y) * c.w + x]) {

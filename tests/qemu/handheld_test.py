@@ -50,9 +50,9 @@ ASSEMBLY_SESSION = ['keys p'] + to(100, 222) + ['mouse 0 0 left', 'keys p', 'key
 
 def session(args, env, fpk, board_dir, sim_dir, script, shots):
     """The script on the board and in the simulator: the problems found (screenshots that differ)."""
-    board = boards.load('qemu-versatilepb')
+    board = boards.load(args.board)
     dev = os.path.join(args.work, board_dir)
-    cmd = [sys.executable, os.path.join(ROOT, 'tools', 'qemu', 'run.py'), '--board', 'qemu-versatilepb', '--elf', args.elf,
+    cmd = [sys.executable, os.path.join(ROOT, 'tools', 'qemu', 'run.py'), '--board', args.board, '--elf', args.elf,
            '--out', dev, '--load', f'{fpk}@{board["pack"]["address"]}', '--icount', '--timeout', '600', '--quiet']
     for s in script:
         cmd += ['--send', s]
@@ -81,9 +81,11 @@ def session(args, env, fpk, board_dir, sim_dir, script, shots):
 
 def main():
     ap = argparse.ArgumentParser()
-    for a in ('--elf', '--sim', '--packer', '--measure', '--sample', '--assembly', '--work'):
+    for a in ('--board', '--elf', '--sim', '--packer', '--measure', '--sample', '--assembly', '--work'):
         ap.add_argument(a, required=True)
     args = ap.parse_args()
+    if not boards.can(args.board, 'mouse'):
+        raise SystemExit(f'handheld_test.py: {args.board} has no mouse (board.json "capabilities"): the session drags one')
     os.makedirs(args.work, exist_ok=True)
     env = dict(os.environ, ASAN_OPTIONS='detect_leaks=0')
     step, fpk = os.path.join(args.work, 'sample.step'), os.path.join(args.work, 'sample.fpk')

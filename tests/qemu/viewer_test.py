@@ -37,7 +37,7 @@ FRAME_BUDGET_PER_10K = 20_000_000
 
 def session(board):
     s = ['keys dd!shot turned\\n']
-    if board == 'qemu-versatilepb':  # the PS/2 mouse (PL050); mps2 has none
+    if boards.can(board, 'mouse'):  # versatilepb's PS/2 mouse (PL050); mps2 has none
         s += ['mouse 40 20', 'keys !shot dragged\\n']
     s += ['keys +++!shot zoomed\\n', 'keys f]', 'keys !shot lod\\n', 'keys q']
     return s
@@ -163,7 +163,7 @@ def main():
             problems.append(f'{m.group(2)} faces failed')
         elif int(m.group(3)) == 0:
             problems.append('no triangles')
-        shots = ['wireframe', 'half', 'done', 'turned'] + (['dragged'] if args.board == 'qemu-versatilepb' else []) + \
+        shots = ['wireframe', 'half', 'done', 'turned'] + (['dragged'] if boards.can(args.board, 'mouse') else []) + \
             ['zoomed', 'lod']
         digests = {}
         for s in shots:

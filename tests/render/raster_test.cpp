@@ -19,10 +19,10 @@ namespace {
 // triangle is also drawn alone into a scratch target, whose changed depth is its coverage).
 struct Fixture {
     uint16_t w, h;
-    std::vector<hal::Rgb565> colour;
+    std::vector<Rgb565> colour;
     std::vector<uint16_t> depth;
     std::vector<int> count;
-    std::vector<hal::Rgb565> scratch_pixels;
+    std::vector<Rgb565> scratch_pixels;
     std::vector<uint16_t> scratch_depth;
     Rasterizer raster, alone;
     Fixture(uint16_t w_, uint16_t h_)
@@ -160,12 +160,12 @@ TEST(Raster, GouraudReproducesVertexShadesAtVertexPixels) {
 TEST(Raster, PalettesScaleTheColourByTheShade) {
     render::Palette p;
     render::make_palette(p, 255, 128, 64);
-    EXPECT_EQ(p.colour[0], hal::rgb565(0, 0, 0));
-    EXPECT_EQ(p.colour[255], hal::rgb565(255, 128, 64));
-    EXPECT_EQ(p.colour[128], hal::rgb565(128, 64, 32));
+    EXPECT_EQ(p.colour[0], rgb565(0, 0, 0));
+    EXPECT_EQ(p.colour[255], rgb565(255, 128, 64));
+    EXPECT_EQ(p.colour[128], rgb565(128, 64, 32));
     Fixture f(16, 16);
     ASSERT_EQ(f.draw(v(0, 0), v(0, 256), v(256, 256), p), Status::Ok);
-    EXPECT_EQ(f.colour[15 * 16], hal::rgb565(255, 128, 64));
+    EXPECT_EQ(f.colour[15 * 16], rgb565(255, 128, 64));
 }
 
 TEST(Raster, SamePixelsInBandsAndOnTheWholeScreen) {
@@ -200,12 +200,12 @@ TEST(Raster, SamePixelsInBandsAndOnTheWholeScreen) {
             }
         }
     };
-    std::vector<hal::Rgb565> whole(W * H, 0);
+    std::vector<Rgb565> whole(W * H, 0);
     std::vector<uint16_t> whole_depth(W * H);
     Rasterizer a(render::Target{whole.data(), whole_depth.data(), W, H, 0, H});
     draw_all(a);
     for (uint16_t band : {1, 7, 16, 33, 80}) {
-        std::vector<hal::Rgb565> screen(W * H, 0), pixels(size_t(W) * band);
+        std::vector<Rgb565> screen(W * H, 0), pixels(size_t(W) * band);
         std::vector<uint16_t> screen_depth(W * H), depth(size_t(W) * band);
         for (uint16_t y0 = 0; y0 < H; y0 += band) {
             const uint16_t rows = uint16_t(std::min<int>(band, H - y0));
@@ -306,7 +306,7 @@ TEST(Raster, ATriangleCalledHiddenDrawsNothing) {
     std::uniform_int_distribution<int> coord(-200, 16 * W + 200), z(0, 65535), small(-300, 300), near(0, 20000), shade(0, 255);
     int said_hidden = 0, said_shown = 0;
     for (uint16_t band : {H, uint16_t(17)}) {
-        std::vector<hal::Rgb565> px(size_t(W) * band);
+        std::vector<Rgb565> px(size_t(W) * band);
         std::vector<uint16_t> depth(size_t(W) * band);
         for (uint16_t y0 = 0; y0 < H; y0 += band) {
             const uint16_t rows = uint16_t(std::min<int>(band, H - y0));
@@ -323,7 +323,7 @@ TEST(Raster, ATriangleCalledHiddenDrawsNothing) {
                 ScreenVertex t[3];
                 t[0] = {coord(rng), coord(rng) * H / W, uint16_t(z(rng)), uint8_t(shade(rng))};
                 for (int k = 1; k < 3; ++k) t[k] = {t[0].x + small(rng), t[0].y + small(rng), uint16_t(z(rng)), uint8_t(shade(rng))};
-                const std::vector<hal::Rgb565> px0 = px;
+                const std::vector<Rgb565> px0 = px;
                 const std::vector<uint16_t> depth0 = depth;
                 const bool hidden = r.hidden(t[0], t[1], t[2]);
                 ASSERT_EQ(r.draw(t[0], t[1], t[2], pal, render::Cull::None), Status::Ok);

@@ -4,7 +4,7 @@
 #include "core.h"
 #include "facet/viewer.h"
 #include "geom/pack.h"
-#include "hal/print.h"
+#include "core/format.h"
 #include "pack_io.h"
 #include "pack_writer.h"
 
@@ -548,7 +548,7 @@ TEST(Viewer, DisplayModesDrawFacesAndEdgesAsNamed) {
     ASSERT_TRUE(app.create().ok());
     ASSERT_TRUE(app.load(polygon_and_triangle(40)).ok());
     app.run();
-    const Rgb565 edge = hal::rgb565(28, 30, 38), white = hal::rgb565(255, 255, 255);
+    const Rgb565 edge = rgb565(28, 30, 38), white = rgb565(255, 255, 255);
     auto look = [&]() {
         const std::vector<Rgb565> s = app.screen();
         struct {
@@ -891,8 +891,8 @@ TEST(Viewer, ThePartsListHidesShowsAndIsolatesByTouch) {
     const int cx = (second[0] + second[2]) / 2, cy = (second[1] + second[3]) / 2;
     tap(app.w - 20, button(Action::Parts));
     ASSERT_TRUE(o.parts_open());
-    const module::Overlay::Rect panel = o.parts_panel();
-    EXPECT_LT(panel.x + panel.w, second[0]) << "the list leaves the second block in view";
+    const Area panel = o.parts_panel();
+    EXPECT_LT(panel.x + panel.width, second[0]) << "the list leaves the second block in view";
     const int row1 = panel.y + module::Overlay::kRow + module::Overlay::kRow + module::Overlay::kRow / 2; // the second row
     tap(60, row1);
     EXPECT_EQ(app.v->chosen_part(), 1u);
@@ -908,10 +908,10 @@ TEST(Viewer, ThePartsListHidesShowsAndIsolatesByTouch) {
     // ISOL with the first part chosen: the second stays hidden, ALL brings it back.
     tap(60, row1 - module::Overlay::kRow);
     EXPECT_EQ(app.v->chosen_part(), 0u);
-    tap(panel.w / 2, panel.y + panel.h - 5);
+    tap(panel.width / 2, panel.y + panel.height - 5);
     EXPECT_TRUE(app.v->part(0).shown);
     EXPECT_FALSE(app.v->part(1).shown);
-    tap(panel.w - 5, panel.y + panel.h - 5);
+    tap(panel.width - 5, panel.y + panel.height - 5);
     EXPECT_TRUE(app.v->part(1).shown);
     tap(60, row1 - module::Overlay::kRow); // a second tap on the chosen name lets it go
     EXPECT_EQ(app.v->chosen_part(), ~0u);
@@ -949,7 +949,7 @@ TEST(Viewer, ASectionCutsTheModelAndShowsTheSolidsInside) {
     app.v->set_section({true, {1, 0, 0}, 50});
     app.v->key('0');
     app.run();
-    const Rgb565 cap = hal::rgb565(205, 70, 60); // painter.cpp's kCap, flat
+    const Rgb565 cap = rgb565(205, 70, 60); // painter.cpp's kCap, flat
     const std::vector<Rgb565> iso = app.screen();
     const long caps = std::count(iso.begin(), iso.end(), cap);
     EXPECT_GT(caps, 500) << "the inside of the cut block";
@@ -969,12 +969,12 @@ TEST(Viewer, ASectionCutsTheModelAndShowsTheSolidsInside) {
     EXPECT_EQ(app.screen(), iso);
     // The slider: a finger on it at the top puts the plane at the model's far end, dragged to
     // the bottom at its near end.
-    const module::Overlay::Rect s = core.overlay().slider();
-    ASSERT_GT(s.w, 0);
-    app.v->touch(0, int16_t(s.x + s.w / 2), int16_t(s.y + 2), true);
+    const Area s = core.overlay().slider();
+    ASSERT_GT(s.width, 0);
+    app.v->touch(0, int16_t(s.x + s.width / 2), int16_t(s.y + 2), true);
     const float hi = app.v->section().offset_mm;
-    app.v->touch(0, int16_t(s.x + s.w / 2), int16_t(s.y + s.h - 2), true);
-    app.v->touch(0, int16_t(s.x + s.w / 2), int16_t(s.y + s.h - 2), false);
+    app.v->touch(0, int16_t(s.x + s.width / 2), int16_t(s.y + s.height - 2), true);
+    app.v->touch(0, int16_t(s.x + s.width / 2), int16_t(s.y + s.height - 2), false);
     const float lo = app.v->section().offset_mm;
     const float radius = 0.5f * std::sqrt(250.0f * 250 + 100 * 100 + 100 * 100);
     EXPECT_NEAR(hi, 125 + radius, 0.5f);
@@ -1039,7 +1039,7 @@ TEST(Viewer, HiddenLineDrawsTheOutlinesOfCurvedFaces) {
     ASSERT_TRUE(l >= 2 && top >= 0 && r < app.w - 2 && b < app.h) << "the tube on the screen";
     ASSERT_GT(r - l, 60);
     ASSERT_GT(b - top, 60);
-    const Rgb565 ink = hal::rgb565(28, 30, 38); // painter.cpp's kEdgeColour
+    const Rgb565 ink = rgb565(28, 30, 38); // painter.cpp's kEdgeColour
     // Rows strictly between the circles (seen edge-on: the top and bottom lines): how many have
     // an outline pixel within two pixels of each side.
     auto sides = [&](const std::vector<Rgb565>& px) {

@@ -19,7 +19,7 @@
 // a non-manifold edge more than two. A closed shell (a solid) is watertight when it has
 // neither and no face failed.
 #include "geom/deviation.h"
-#include "hal/print.h"
+#include "core/format.h"
 #include "geom/pack.h"
 #include "geom/tessellate.h"
 #include "file_io.h"

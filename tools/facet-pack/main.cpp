@@ -12,7 +12,7 @@
 // rest. --unit: the length unit of a file that gives none (default: guessed from its size).
 // Exit codes: 0 packed (or valid), 1 error (the reason on stderr; no file left behind), 2 usage.
 #include "geom/pack.h"
-#include "hal/print.h"
+#include "core/format.h"
 #include "file_io.h"
 #include "occt_to_pack.h"
 #include "reference.h"

@@ -113,7 +113,7 @@ class Qmp:
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument('--board', required=True, choices=[b for b in boards.names() if b.startswith('qemu-')])
+    ap.add_argument('--board', required=True, choices=boards.qemu_boards())
     ap.add_argument('--elf', required=True)
     ap.add_argument('--out', required=True, help='directory for uart.log, screenshots, report.json')
     ap.add_argument('--load', action='append', default=[], metavar='FILE@ADDR')
@@ -373,8 +373,8 @@ def main():
             f.write(prof)
         print(f'profile: {os.path.relpath(os.path.join(out, "profile.txt"))}')
     if report['ram']:
-        print(f'RAM: {report["ram"].get("total", 0):,} bytes in use of 33,554,432'
-              if args.board == 'qemu-versatilepb' else f'RAM: {report["ram"].get("total", 0):,} bytes in use')
+        budget = boards.bytes_of(boards.load(args.board)['ram_budget'])
+        print(f'RAM: {report["ram"].get("total", 0):,} bytes in use of the board\'s {budget:,}')
     if os.path.exists(qmp_path):
         os.unlink(qmp_path)
     with open(os.path.join(out, 'report.json'), 'w') as f:

@@ -3,7 +3,7 @@
 //
 //   facet-scene-ref WIDTH HEIGHT OUT_PREFIX   ->  OUT_PREFIX-scene-a.f565, OUT_PREFIX-scene-b.f565
 #include "hal/fake.h"
-#include "render/test_scene.h"
+#include "test_scene.h"
 
 #include <cstdio>
 #include <cstdlib>
@@ -21,7 +21,7 @@ int main(int argc, char** argv) {
         return 2;
     }
     using namespace facet;
-    std::vector<hal::Rgb565> frame(size_t(w) * h);
+    std::vector<Rgb565> frame(size_t(w) * h);
     std::vector<uint16_t> depth(size_t(w) * h);
     render::Rasterizer raster(render::Target{frame.data(), depth.data(), uint16_t(w), uint16_t(h), 0, uint16_t(h)});
     const char* names[2] = {"scene-a", "scene-b"};

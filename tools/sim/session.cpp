@@ -1,7 +1,7 @@
 #include "session.h"
 
 #include "hal/fake.h"
-#include "hal/print.h"
+#include "core/format.h"
 
 #include <chrono>
 #include <cstdio>

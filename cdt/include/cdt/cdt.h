@@ -13,7 +13,7 @@
 // Every call returns a Status; on any status other than Ok the triangulation is unchanged
 // and valid (Full, OutOfRange, Crossing never leave it half-modified).
 #include "cdt/arena.h"
-#include "hal/status.h"
+#include "core/status.h"
 
 namespace facet::cdt {
 

@@ -11,7 +11,7 @@
 // The plan below lists its arrays once, in order; the bytes a capacity takes are that list
 // summed (face_storage_bytes, constexpr), and geom cuts the block by the same list
 // (face_storage.cpp, which checks each listed record size against the record itself).
-#include "hal/status.h"
+#include "core/status.h"
 
 #include <cstddef>
 #include <cstdint>

@@ -9,7 +9,7 @@
 // Every read, length and distance is checked: a corrupt or truncated stream, or one that
 // does not fit the output, gets Status::Corrupt (or Full) and a reason, never a write outside
 // `out`.
-#include "hal/status.h"
+#include "core/status.h"
 
 #include <cstdint>
 #include <span>

@@ -5,7 +5,7 @@
 // not from a mesh. In double: on a core without an FPU a measurement is a one-off, and the
 // pack's float32 parameters then lose nothing more on the way.
 #include "geom/pack.h"
-#include "hal/status.h"
+#include "core/status.h"
 
 #include <cstdint>
 

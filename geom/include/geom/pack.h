@@ -10,7 +10,7 @@
 // float is finite. Nothing is read before it is checked, so a corrupt pack can only produce a
 // status and a message naming the bad record, never a crash.
 #include "geom/pack_format.h"
-#include "hal/status.h"
+#include "core/status.h"
 
 #include <cstdint>
 #include <span>

@@ -11,7 +11,7 @@
 //   if (unpack_in_place(region, capacity, loaded, bytes).ok()) r = pack.open(region, bytes);
 #include "geom/pack_format.h"
 #include "geom/unlzma.h"
-#include "hal/status.h"
+#include "core/status.h"
 
 #include <cstdint>
 #include <span>

@@ -16,7 +16,7 @@
 // input byte read. An end marker, a truncated or corrupt stream, bytes after its end, or a
 // distance reaching before the output's start gets Status::Corrupt and a reason, never a read
 // or write outside `in` and `out`.
-#include "hal/status.h"
+#include "core/status.h"
 
 #include <cstdint>
 #include <span>

@@ -1,5 +1,6 @@
 #pragma once
 // What a board gives the portable code. Each board implements board() and the free functions.
+#include "hal/capture.h"
 #include "hal/clock.h"
 #include "hal/console.h"
 #include "hal/display.h"
@@ -13,6 +14,7 @@ struct Board {
     Clock& clock;
     Display& display;
     Input& input;
+    Capture* capture = nullptr; // screenshots for a watching host (QEMU); null: none
 };
 
 // The board's singletons, ready to use (startup has initialised them).

@@ -3,8 +3,8 @@
 // display_write): an LCD controller that scans a frame out of RAM is shown a frame the caller
 // owns; any panel takes areas copied into the frame it shows (or into its own memory, behind a
 // bus). The geometry comes from the driver; nothing outside boards/ may assume a resolution.
-#include "hal/pixel.h"
-#include "hal/status.h"
+#include "core/pixel.h"
+#include "core/status.h"
 
 #include <cstdint>
 
@@ -17,10 +17,6 @@ struct DisplayInfo {
     bool scanout; // show() works: the controller reads frames from RAM
 };
 
-struct Rect {
-    uint16_t x, y, width, height;
-};
-
 class Display {
 public:
     virtual DisplayInfo info() const = 0;
@@ -30,7 +26,7 @@ public:
     // Copies `pixels` (area.width * area.height, row after row) into the frame on the panel.
     // OutOfRange (nothing written) if the area leaves the screen; NotFound on a scan-out panel
     // that was shown no frame yet.
-    virtual Status write(const Rect& area, const Rgb565* pixels) = 0;
+    virtual Status write(const Area& area, const Rgb565* pixels) = 0;
     // The frame on the screen (for captures); null when there is none in RAM.
     virtual const Rgb565* frame() const = 0;
     // True while the frame last passed to show() is not on the screen yet: a controller that
@@ -44,6 +40,6 @@ protected:
 
 // The copy every RAM-frame driver needs: `area` of `pixels` into `frame` (width x height),
 // bounds-checked.
-Status copy_area(Rgb565* frame, uint16_t width, uint16_t height, const Rect& area, const Rgb565* pixels);
+Status copy_area(Rgb565* frame, uint16_t width, uint16_t height, const Area& area, const Rgb565* pixels);
 
 } // namespace facet::hal

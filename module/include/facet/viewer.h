@@ -20,16 +20,14 @@
 // on_event) or load() (on_event), on the caller's thread; they may call flush_done() and the
 // queries, nothing else of the module. Input from an interrupt is queued by the application and
 // fed from its thread. Several Viewers (each with its own memory) are independent.
+#include "core/pixel.h"
+#include "core/status.h"
 #include "facet/sizes.h"
-#include "hal/pixel.h"
-#include "hal/status.h"
 
 #include <cstddef>
 #include <cstdint>
 
 namespace facet {
-
-using hal::Rgb565;
 
 struct Capacity {
     uint32_t faces = FACET_DEFAULT_FACES, edges = FACET_DEFAULT_EDGES, samples = FACET_DEFAULT_SAMPLES;
@@ -48,10 +46,6 @@ constexpr size_t depth_bytes(uint16_t width, uint16_t lines) { return FACET_DEPT
 // place (4-byte aligned), the pack's size for a compressed one (its head says; + LZMA state) or an unaligned
 // plain one; 0 for bytes that are no pack (load() then says why).
 uint32_t pack_memory_bytes(const void* file, uint32_t file_bytes);
-
-struct Area {
-    uint16_t x, y, width, height;
-};
 
 // How the application's display takes a finished area.
 enum class Flush : uint8_t {

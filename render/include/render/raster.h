@@ -10,8 +10,8 @@
 // pixel and the triangle's palette colours it, one table look-up per pixel (a lit CAD face is
 // its colour times its lighting, so one interpolant does the work of three). Integer
 // arithmetic only.
-#include "hal/pixel.h"
-#include "hal/status.h"
+#include "core/pixel.h"
+#include "core/status.h"
 #include "render/subpixel.h"
 
 #include <cstddef>
@@ -48,12 +48,12 @@ enum class Cull : uint8_t { None, Back };
 // Everything outside the band is clipped, exactly: a triangle drawn band by band covers the
 // same pixels with the same values as drawn into the whole screen at once.
 struct Target {
-    hal::Rgb565* pixels = nullptr;
+    Rgb565* pixels = nullptr;
     uint16_t* depth = nullptr;
     uint16_t width = 0, height = 0; // the screen
     uint16_t y0 = 0, rows = 0;      // the band (0, height: the whole screen)
 
-    hal::Rgb565* row(int32_t y) const { return pixels + size_t(y - y0) * width; } // y within the band
+    Rgb565* row(int32_t y) const { return pixels + size_t(y - y0) * width; } // y within the band
 };
 
 struct RasterStats {
@@ -91,14 +91,14 @@ public:
     // `bias` units toward the eye first, so an edge of a surface shows on that surface (CAD
     // edges over faces); it writes its depth, so faces drawn later behind it keep it.
     // OutOfRange (nothing drawn) if an end is outside the guard band.
-    Status line(const ScreenVertex& a, const ScreenVertex& b, hal::Rgb565 colour, uint16_t bias);
+    Status line(const ScreenVertex& a, const ScreenVertex& b, Rgb565 colour, uint16_t bias);
     // A surface's outline (where it turns from facing the eye to facing away): like line(), but
     // each pixel is depth-tested against its neighbour one pixel beyond the outline (`beyond`:
     // the side away from the surface, 0 right, 1 down, 2 left, 3 up), not against itself: there
     // the surface is edge-on, and the pixel itself is mostly covered by the surface's own nearer
     // part. Only a pixel whose neighbour is outside the band (or the screen) is tested against
     // itself. It writes its depth where it is nearer.
-    Status outline(const ScreenVertex& a, const ScreenVertex& b, hal::Rgb565 colour, uint16_t bias, uint8_t beyond);
+    Status outline(const ScreenVertex& a, const ScreenVertex& b, Rgb565 colour, uint16_t bias, uint8_t beyond);
 
     RasterStats stats;
 

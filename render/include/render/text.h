@@ -13,16 +13,16 @@ constexpr int32_t kGlyphWidth = 5, kGlyphHeight = 8; // pixels of a glyph (row 7
 constexpr int32_t kCellWidth = 6, kLineHeight = 10;  // a character's advance, a line's
 
 // n pixels of one colour from p (two a word store).
-void fill_pixels(hal::Rgb565* p, uint32_t n, hal::Rgb565 colour);
+void fill_pixels(Rgb565* p, uint32_t n, Rgb565 colour);
 
 // The text's width in pixels at `scale` (1 or more: each font pixel scale x scale).
 int32_t text_width(const char* text, int32_t scale = 1);
 // Draws `text` with its top-left corner at (x, y) in `colour`; characters outside 32-126 are
 // drawn as '?'. Returns the x after the last character.
-int32_t draw_text(const Target& t, int32_t x, int32_t y, const char* text, hal::Rgb565 colour, int32_t scale = 1);
+int32_t draw_text(const Target& t, int32_t x, int32_t y, const char* text, Rgb565 colour, int32_t scale = 1);
 // A rectangle filled with one colour, or the picture under it halved toward `colour` (a
 // translucent panel: each channel (picture + colour) / 2).
-void fill_rect(const Target& t, int32_t x, int32_t y, int32_t w, int32_t h, hal::Rgb565 colour);
-void dim_rect(const Target& t, int32_t x, int32_t y, int32_t w, int32_t h, hal::Rgb565 colour);
+void fill_rect(const Target& t, int32_t x, int32_t y, int32_t w, int32_t h, Rgb565 colour);
+void dim_rect(const Target& t, int32_t x, int32_t y, int32_t w, int32_t h, Rgb565 colour);
 
 } // namespace facet::render

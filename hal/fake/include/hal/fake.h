@@ -37,7 +37,7 @@ public:
 
     DisplayInfo info() const override { return {width_, height_, PixelFormat::Rgb565, scanout_}; }
     Status show(Rgb565* frame) override;
-    Status write(const Rect& area, const Rgb565* pixels) override;
+    Status write(const Area& area, const Rgb565* pixels) override;
     const Rgb565* frame() const override { return shown_ ? shown_ : panel_.data(); }
 
     // What the panel shows now, as pixels.

@@ -1,4 +1,4 @@
-#include "render/test_scene.h"
+#include "test_scene.h"
 
 #include "render/fixed.h"
 
@@ -102,9 +102,9 @@ Status draw_test_scene(Rasterizer& raster, const SceneView& view) {
     // Background: a vertical gradient, dark blue-grey at the top to light grey at the bottom.
     for (int32_t y = t.y0; y < t.y0 + t.rows; ++y) {
         const uint32_t k = uint32_t(y) * 255 / (h > 1 ? h - 1 : 1);
-        const hal::Rgb565 c = hal::rgb565(uint8_t(40 + k * 150 / 255), uint8_t(48 + k * 150 / 255),
+        const Rgb565 c = rgb565(uint8_t(40 + k * 150 / 255), uint8_t(48 + k * 150 / 255),
                                           uint8_t(70 + k * 140 / 255));
-        hal::Rgb565* row = t.row(y);
+        Rgb565* row = t.row(y);
         for (uint16_t x = 0; x < w; ++x) row[x] = c;
     }
     raster.clear_depth();

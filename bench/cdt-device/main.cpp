@@ -9,7 +9,7 @@
 #include "hal/board.h"
 #include "hal/measure.h"
 #include "hal/print.h"
-#include "report.h"
+#include "hal/report.h"
 
 namespace {
 
@@ -68,7 +68,7 @@ bool run(hal::Board& board, const char* name, const char* region, cdt::LocateMod
 } // namespace
 
 int facet_main(hal::Board& board) {
-    fw::report_board(board);
+    hal::report_board(board);
     print(board.console, "cdt-bench: arena {} bytes for {} vertices ({} bytes per triangle)\n",
           sizeof arena, kVertices, sizeof(cdt::Triangle<uint16_t>));
     // facet's default order, then the paper's own order (each point, then its segment).

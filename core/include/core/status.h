@@ -1,5 +1,5 @@
 #pragma once
-// How facet reports errors, everywhere (cdt/, geom/, render/, the module, the boards):
+// How facet reports errors, everywhere (cdt/, geom/, render/, the module, hal/ and the boards):
 //
 //   Status   the code: Ok = 0 and a few kinds of failure (like pico-sdk's and Zephyr's codes).
 //            Low-level calls whose failure needs no more words than the code return it alone

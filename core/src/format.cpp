@@ -1,4 +1,4 @@
-#include "hal/print.h"
+#include "core/format.h"
 
 namespace facet::fmt_detail {
 namespace {
@@ -6,8 +6,8 @@ namespace {
 void put(Sink& s, char c) {
     ++s.total;
     if (s.len == s.cap) {
-        if (!s.console) return; // truncating sink: drop
-        s.console->write(s.buf, s.len);
+        if (!s.flush) return; // truncating sink: drop
+        s.flush(s.to, s.buf, s.len);
         s.len = 0;
     }
     s.buf[s.len++] = c;
