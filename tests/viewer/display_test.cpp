@@ -1,0 +1,152 @@
+// The module through its public API (facet/viewer.h), as an application uses it (app.h).
+// The display contract and time slicing: bands and full frames give the same pixels, a step
+// without a clock is one piece of work, a step stops at its budget, a DMA's late flush_done().
+#include "app.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstring>
+#include <map>
+#include <memory>
+
+using namespace facet;
+using namespace facet::geom;
+using namespace facet::test;
+
+TEST(Viewer, BandsGiveTheSamePixelsAsFullFrames) {
+    // The same model and view through every display configuration: full frames (two buffers
+    // with a depth buffer each, or one shared depth buffer; scan-out or copy) and bands of
+    // several heights with one or two band buffers. The final pictures are identical.
+    const Bytes pack = deflate_pack(polygon_and_triangle(40));
+    struct Setup {
+        uint16_t lines;
+        int buffers;
+        Flush mode;
+        bool depth_each;
+    };
+    const Setup setups[] = {{120, 2, Flush::Scanout, true}, {120, 2, Flush::Copy, false}, {120, 1, Flush::Copy, true},
+                            {16, 2, Flush::Copy, false},    {7, 1, Flush::Copy, false},   {1, 2, Flush::Copy, false},
+                            {50, 2, Flush::Copy, false}};
+    std::vector<Rgb565> reference;
+    for (const Setup& s : setups) {
+        App app;
+        app.lines = s.lines, app.buffers = s.buffers, app.mode = s.mode;
+        ASSERT_TRUE(app.create(s.depth_each).ok());
+        ASSERT_TRUE(app.load(pack).ok());
+        app.run();
+        app.v->key('d'); // a view change: every configuration draws it whole
+        app.v->key('w');
+        app.run();
+        const std::vector<Rgb565> got = app.screen();
+        if (reference.empty()) {
+            reference = got;
+            size_t lit = 0;
+            for (size_t i = 0; i < got.size(); ++i) lit += got[i] != got[0];
+            EXPECT_GT(lit, got.size() / 20) << "the picture shows something";
+        }
+        EXPECT_EQ(got, reference) << "bands of " << s.lines << ", " << s.buffers << " buffers";
+    }
+}
+
+TEST(Viewer, WithoutAClockEachStepIsOnePieceOfWork) {
+    App app;
+    ASSERT_TRUE(app.create().ok());
+    ASSERT_TRUE(app.load(polygon_and_triangle(3000)).ok());
+    int steps = 0;
+    size_t seen = 0;
+    while (app.v->step(0) != Activity::Idle && steps < 10000) {
+        ++steps;
+        int begun = 0;
+        for (; seen < app.events.size(); ++seen) begun += app.events[seen].kind == Event::Kind::WorkBegin;
+        ASSERT_EQ(begun, 1) << "step " << steps;
+    }
+    EXPECT_GT(steps, 5) << "sampling, the faces in pieces, frames";
+    EXPECT_EQ(app.v->stats().done, 2u) << steps << " steps (" << [&] {
+        std::map<std::string, int> pieces; // each piece of work by its name
+        for (const Event& e : app.events)
+            if (e.kind == Event::Kind::WorkBegin) ++pieces[work_name(e.work.what)];
+        std::string s;
+        for (const auto& [name, n] : pieces) s += std::to_string(n) + " " + name + ", ";
+        return s + "pieces; ";
+    }() << (app.last(Event::Kind::FaceFailed) ? text(app.last(Event::Kind::FaceFailed)->why) : "no face failed");
+}
+
+TEST(Viewer, AStepStopsWhenItsBudgetIsSpent) {
+    // A clock that advances 50 us at every read: a step goes on with pieces of work while its
+    // budget lasts (the step reads the clock once a piece at least: at most budget / 50 + 1
+    // pieces), and always does one.
+    for (uint32_t budget : {1u, 400u, 2000u}) {
+        App a;
+        a.use_clock = true, a.tick_us = 50;
+        ASSERT_TRUE(a.create().ok());
+        ASSERT_TRUE(a.load(polygon_and_triangle(3000)).ok());
+        size_t seen = 0;
+        int steps = 0, most = 0;
+        while (a.v->step(budget) != Activity::Idle && steps < 10000) {
+            ++steps;
+            int begun = 0;
+            for (; seen < a.events.size(); ++seen) begun += a.events[seen].kind == Event::Kind::WorkBegin;
+            ASSERT_GE(begun, 1) << "budget " << budget;
+            ASSERT_LE(begun, int(budget / 50 + 1)) << "budget " << budget;
+            most = std::max(most, begun);
+        }
+        EXPECT_EQ(a.v->stats().done, 2u);
+        if (budget == 1) {
+            EXPECT_EQ(most, 1);
+        }
+        if (budget == 2000) {
+            EXPECT_GT(most, 3);
+        }
+    }
+    App b;
+    b.use_clock = true, b.tick_us = 50;
+    ASSERT_TRUE(b.create().ok());
+    ASSERT_TRUE(b.load(polygon_and_triangle(3000)).ok());
+    EXPECT_EQ(b.v->step(1'000'000'000), Activity::Idle) << "all of it in one step";
+    EXPECT_EQ(b.v->stats().done, 2u);
+    App c;
+    ASSERT_TRUE(c.create().ok());
+    ASSERT_TRUE(c.load(polygon_and_triangle(3000)).ok());
+    c.run();
+    EXPECT_EQ(b.screen(), c.screen()) << "however the work is cut, the same picture";
+}
+
+TEST(Viewer, ADmaDisplayGetsNoDrawingIntoABufferInFlight) {
+    // flush_done() comes only when step() says it waits for it (a slow DMA): meanwhile the
+    // module draws into no buffer that is being copied, hands over one flush at a time, and
+    // the picture comes out whole.
+    for (int buffers : {1, 2}) {
+        App app;
+        app.lines = 30, app.buffers = buffers, app.late_done = true;
+        ASSERT_TRUE(app.create(false).ok());
+        ASSERT_TRUE(app.load(polygon_and_triangle(40)).ok());
+        int waits = 0;
+        Activity a = Activity::Busy;
+        for (int i = 0; i < 100000; ++i) {
+            const uint32_t before = app.flushes;
+            a = app.v->step(0);
+            ASSERT_LE(app.pending, 1u) << "one flush in flight at most";
+            if (app.flushes > before) {
+                // The pixels just handed over: they must stay until flush_done().
+                const Rgb565* px = app.buffers == 2 ? app.buf[(app.flushes - 1) % 2].data() : app.buf[0].data();
+                const std::vector<Rgb565> copy(px, px + size_t(app.w) * app.lines);
+                while ((a = app.v->step(0)) == Activity::Busy) {
+                    ASSERT_TRUE(std::equal(copy.begin(), copy.end(), px)) << "drawn into while in flight";
+                }
+                ASSERT_TRUE(std::equal(copy.begin(), copy.end(), px));
+            }
+            if (a == Activity::Waiting) ++waits;
+            app.done();
+            if (a == Activity::Idle) break;
+        }
+        EXPECT_GT(waits, 0) << buffers << " buffers";
+        EXPECT_EQ(a, Activity::Idle);
+        EXPECT_EQ(app.v->stats().done, 2u);
+        App ref; // the same, copied at once
+        ASSERT_TRUE(ref.create().ok());
+        ASSERT_TRUE(ref.load(polygon_and_triangle(40)).ok());
+        ref.run();
+        EXPECT_EQ(app.screen(), ref.screen()) << buffers << " buffers";
+    }
+}
