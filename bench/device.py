@@ -31,25 +31,25 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, 'tools'))
 sys.path.insert(0, os.path.join(ROOT, 'tests', 'qemu'))
 import board as boards  # noqa: E402
-import uart_regions  # noqa: E402
+import protocol  # noqa: E402
 from viewer_test import analyse, peak_ram, unpack_instructions  # noqa: E402
 
 COLUMNS = ['board', 'model', 'faces', 'triangles', 'inflate_instructions', 'tessellation_instructions',
            'max_face_instructions', 'max_frame_instructions', 'peak_ram_bytes']
-SESSION = ['keys +++!shot zoomed\\n', 'keys q']
+SESSION = protocol.read_session(protocol.session_path('device'))
 TESSELLATION_BUDGET = 600_000_000
 
 
 def face_instructions(uart, regions):
     """Instructions per face of the first pass: its 'face' pieces up to its '@progress' line."""
     faces, now, pass_no = [], 0, -1
-    for w, region in uart_regions.lines(uart, regions):
-        if w[0] == '@pass':
-            pass_no = int(w[1])
-        elif w[0] == '@progress' and pass_no == 0:
+    for r, region in protocol.with_regions(uart, regions):
+        if r.name == 'pass':
+            pass_no = int(r.words[0])
+        elif r.name == 'progress' and pass_no == 0:
             faces.append(now)
             now = 0
-        elif region and w[1] == 'face' and pass_no == 0:
+        elif region and r.words[0] == 'face' and pass_no == 0:
             now += region['instructions'] or 0
     return faces
 
@@ -83,13 +83,13 @@ def run_one(board_name, elf, fpk, out, timeout):
     bad = re.search(r'^viewer: no valid pack: (.*)$', uart, re.M)
     if bad:
         notes.append(bad.group(1))
-    m = re.search(r'^@tessellation faces (\d+) failed (\d+) triangles (\d+)', uart, re.M)
+    t = protocol.tessellation(uart)
     tess, frames = analyse(uart, rep.get('regions', []))
     faces = face_instructions(uart, rep.get('regions', []))
-    if m:
-        row['faces'], row['triangles'] = int(m.group(1)), int(m.group(3))
-        if int(m.group(2)):
-            notes.append(f'{m.group(2)} faces failed')
+    if t:
+        row['faces'], row['triangles'] = t['faces'], t['triangles']
+        if t['failed']:
+            notes.append(f'{t["failed"]} faces failed')
         full = [f['instructions'] for f in frames
                 if f['pass'] == 0 and f['triangles'] == row['triangles'] and f['instructions'] is not None]
         if full:

@@ -13,10 +13,11 @@ mesh (faces failed on the device: they stay wireframe). 0 otherwise, and without
 import argparse
 import json
 import os
-import re
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), 'tests', 'qemu'))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import protocol  # noqa: E402
 from viewer_test import analyse, frame_budget, peak_ram, unpack_instructions  # noqa: E402  (one definition of each measure)
 
 RAM_BUDGET = 32 << 20
@@ -42,8 +43,7 @@ def main():
     uart = open(uart_path).read() if os.path.exists(uart_path) else ''
     passes, frame_list = analyse(uart, rep['regions'])
     tess = passes.get(0)
-    m = re.search(r'^@tessellation faces (\d+) failed (\d+) triangles (\d+) vertices (\d+) mesh_bytes (\d+) '
-                  r'arena_peak (\d+)', uart, re.M)
+    t = protocol.tessellation(uart) or {}
     frames = [{'name': f'frame {i + 1}', 'instructions': f['instructions'], 'triangles': f['triangles'],
                'ms_at_600mhz': None if f['instructions'] is None else round(f['instructions'] / 600e3, 2)}
               for i, f in enumerate(frame_list)]
@@ -59,15 +59,15 @@ def main():
         'pack_file_bytes': rep.get('memory', {}).get('pack_file_bytes'),
         'pack_bytes': rep.get('memory', {}).get('pack_bytes'),
         'unpack_instructions': unpack_instructions(rep['regions']),
-        'faces': int(m.group(1)) if m else None,
-        'faces_failed': int(m.group(2)) if m else None,
-        'triangles': int(m.group(3)) if m else None,
-        'mesh_bytes': int(m.group(5)) if m else None,
-        'arena_peak': int(m.group(6)) if m else None,
+        'faces': t.get('faces'),
+        'faces_failed': t.get('failed'),
+        'triangles': t.get('triangles'),
+        'mesh_bytes': t.get('mesh_bytes'),
+        'arena_peak': t.get('arena_peak'),
         'tri_instructions': tess,
         'tri_ms_at_600mhz': None if tess is None else round(tess / 600e3, 1),
         'frame_instructions': max((f['instructions'] or 0 for f in frame_list
-                                   if m and f['triangles'] == int(m.group(3))), default=None),
+                                   if t and f['triangles'] == t['triangles']), default=None),
         'frames': frames,
         'frame_budget_instructions_per_10k_triangles': FRAME_BUDGET,
         'tessellation_budget_instructions': TESSELLATION_BUDGET,

@@ -33,7 +33,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)
 sys.path.insert(0, os.path.join(ROOT, 'tools'))
 import board as boards  # noqa: E402
 import img  # noqa: E402
-import uart_regions  # noqa: E402
+import protocol  # noqa: E402
 
 COLUMNS = ['board', 'model', 'view', 'width', 'height', 'impl', 'triangles', 'pixels', 'instructions']
 COVERAGE_TOLERANCE = 0.02
@@ -42,27 +42,27 @@ COVERAGE_TOLERANCE = 0.02
 def analyse(uart, regions):
     """Rows from the firmware's lines and the plugin's regions, in order."""
     rows, problems, frames, last_frame, last_tgx, model = [], [], [], None, None, {}
-    for w, region in uart_regions.lines(uart, regions):
+    for r, region in protocol.with_regions(uart, regions):
         if region:
-            if w[1] == 'frame':
+            if r.words[0] == 'frame':
                 frames.append(region['instructions'])
-            elif w[1] == 'tgx':
+            elif r.words[0] == 'tgx':
                 last_tgx = region['instructions']
-        elif w[0] == '@model':
-            model = dict(zip(w[1::2], map(int, w[2::2])))
+        elif r.name == 'model':
+            model = dict(zip(r.words[0::2], map(int, r.words[1::2])))
             if model['triangles'] != model['peer_triangles']:
                 problems.append(f'facet tessellated {model["triangles"]:,} triangles, the OBJ has {model["peer_triangles"]:,}')
-        elif w[0] == '@frame':
-            kv = dict(zip(w[1::2], map(int, w[2::2])))
+        elif r.name == 'frame':
+            kv = dict(zip(r.words[0::2], map(int, r.words[1::2])))
             n = kv['pieces']
             mine = frames[-n:] if n and len(frames) >= n else [None]
             last_frame = dict(kv, instructions=None if None in mine else sum(mine))
             frames = []
-        elif w[0] in ('@view', '@peer'):
-            view, size = w[1], w[2]
+        elif r.name in ('view', 'peer'):
+            view, size = r.words[0], r.words[1]
             width, height = map(int, size.split('x'))
-            kv = dict(zip(w[3::2], w[4::2])) if w[0] == '@peer' else {'mode': w[3], 'covered': w[5]}
-            if w[0] == '@view':
+            kv = dict(zip(r.words[2::2], r.words[3::2])) if r.name == 'peer' else {'mode': r.words[2], 'covered': r.words[4]}
+            if r.name == 'view':
                 impl = 'facet' if kv['mode'] == 'edges' else 'facet_shaded'
                 rows.append({'view': view, 'width': width, 'height': height, 'impl': impl,
                              'triangles': last_frame['triangles'], 'pixels': int(kv['covered']),

@@ -185,7 +185,7 @@ void help(hal::Console& con) {
         const char key[2] = {char(keys.table[i].key), 0};
         if (keys.table[i].key < 0x80) print(con, " {}", key);
     }
-    print(con, " (turn, tilt, zoom, pan, fit, coarser/finer detail), h help, q quit;\n"
+    print(con, " (turn, tilt, zoom, pan, fit, coarser/finer detail; h or ? this help), q quit;\n"
                "      !shot NAME<enter> takes a screenshot; mouse: left drag turns, right drag pans, middle drag zooms\n");
 }
 
@@ -274,14 +274,14 @@ void key(uint8_t k) {
     switch (k) {
     case kEnq: s.prompt = true; return;
     case '!': s.in_line = true, s.line_len = 0; return;
-    case 'q': s.quit = true; return;
-    case 'h': case '?': help(s.board->console); return;
+    case 'q': s.quit = true; return; // the firmware's own key; every other is the module's table's
     case '\r': case '\n': case ' ': return;
     default: break;
     }
     const KeyBindings keys = key_bindings();
     for (uint32_t i = 0; i < keys.count; ++i) {
         if (keys.table[i].key == k) {
+            if (keys.table[i].action == Action::Help) help(s.board->console); // on the console too
             s.viewer->key(k);
             return;
         }

@@ -25,8 +25,9 @@ constexpr KeyBinding kKeys[] = {
     {'c', Action::Section, "section: picked plane, x, y, z, off"},
     {',', Action::SectionIn, "move the section back"}, {'.', Action::SectionOut, "move the section forward"},
     {'p', Action::Parts, "the parts list"},  {'n', Action::NextPart, "choose the next part"},
-    {'h', Action::HidePart, "hide the chosen part"}, {'o', Action::IsolatePart, "show the chosen part alone"},
+    {'x', Action::HidePart, "hide the chosen part"}, {'o', Action::IsolatePart, "show the chosen part alone"},
     {'u', Action::ShowAllParts, "show every part"}, {'g', Action::NextDetail, "level of detail: finer, finest, coarser"},
+    {'h', Action::Help, "help: the keys and gestures"}, {'?', Action::Help, "help: the keys and gestures"},
 };
 
 int32_t distance(int32_t dx, int32_t dy) { return int32_t(std::sqrt(float(dx * dx + dy * dy)) + 0.5f); }

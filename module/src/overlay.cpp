@@ -216,7 +216,8 @@ void Overlay::help_panel(const render::Target& t) const {
         "PART: the parts: tap a name, its box hides it; ISOL, ALL",
         "LOD: finer, finest, coarser triangles, and back",
         "keys: 1 2 3 4 7 8 0 views, 5 projection, m mode, f fit",
-        "c section , . move it  p parts n next h hide o isolate u all",
+        "c section , . move it  p parts n next x hide o isolate u all",
+        "g level of detail   h or ? this help",
     };
     constexpr int32_t n = sizeof kHelp / sizeof kHelp[0];
     const int32_t w = toolbar_x_ - 16, h = n * render::kLineHeight + 8, x = 8, y = status_rows_ + 8;

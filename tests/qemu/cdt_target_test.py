@@ -7,11 +7,12 @@ row per face (board,input,vertices,instructions,per_vertex; the header if FILE i
 import argparse
 import json
 import os
-import re
 import subprocess
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+sys.path.insert(0, os.path.join(ROOT, 'tools'))
+import protocol  # noqa: E402
 
 
 def main():
@@ -30,13 +31,15 @@ def main():
     for name, region in (('paper', 'cdt_paper'), ('plate10k', 'cdt_plate10k'),
                          ('paper, paper order', 'cdt_paper_paper_order'),
                          ('plate10k, paper order', 'cdt_plate10k_paper_order')):
-        m = re.search(rf'^@cdt {region} points (\d+) .* checker (.*)$', uart, re.M)
+        cdt = next((c for c in protocol.records(uart, 'cdt') if c.words and c.words[0] == region), None)
+        kv = cdt.fields(1) if cdt else {}  # @cdt REGION points N ... checker VERDICT
+        verdict = cdt.line.split(' checker ', 1)[1] if cdt and ' checker ' in cdt.line else None
         n = next((x['instructions'] for x in rep['regions'] if x['name'] == region), None)
-        if not m or m.group(2) != 'ok' or n is None:
-            print(f'FAIL {name}: {m.group(2) if m else "no result"}; instructions {n}')
+        if not cdt or verdict != 'ok' or n is None:
+            print(f'FAIL {name}: {verdict if cdt else "no result"}; instructions {n}')
             failed = True
             continue
-        pts = int(m.group(1))
+        pts = kv['points']
         rows.append((args.board, name.replace(', ', '/').replace(' ', '-'), pts, n, n / pts))
         print(f'{args.board} {name}: {pts} points, checker ok, {n:,} instructions '
               f'({n / pts:,.0f} per inserted vertex, {n / 600e3:.2f} ms at 600 MHz)')

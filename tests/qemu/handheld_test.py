@@ -21,31 +21,22 @@ ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)
 sys.path.insert(0, os.path.join(ROOT, 'tools'))
 sys.path.insert(0, os.path.join(ROOT, 'tests', 'qemu'))
 import board as boards  # noqa: E402
+import protocol  # noqa: E402
 import img  # noqa: E402
 from viewer_test import analyse, frame_budget  # noqa: E402
 
-# The isometric view; hidden line; a section across x, its slider dragged with the mouse; the
-# parts list with the part chosen; a picked face (versatilepb: 640x480, the slider at x 556-583,
-# the list's first row at y 32-51). The pointer is put somewhere from the top left corner, in
-# moves of at most 250 (QEMU's PS/2 mouse holds a few packets of at most 255 each).
-def to(x, y):
-    entries = ['move -250 -250'] * 3
-    while x or y:
-        dx, dy = min(x, 250), min(y, 250)
-        entries.append(f'move {dx} {dy}')
-        x, y = x - dx, y - dy
-    return entries
+# The sessions (tests/sessions): the handheld's features on the sample part, and see-through on
+# an assembly, on the board and in the simulator.
+def sessions(board):
+    """(the features session, the see-through one), for this board's screen (refused otherwise)."""
+    return (protocol.read_session(protocol.session_path('handheld'), board),
+            protocol.read_session(protocol.session_path('handheld-assembly'), board))
 
 
-SESSION = (['keys 0', 'keys !shot views\\n', 'keys mmm', 'keys !shot hidden-line\\n', 'keys mm', 'keys c'] + to(570, 240) +
-           ['mouse 0 -60', 'keys !shot section\\n', 'keys ccc', 'keys p'] + to(100, 42) +
-           ['mouse 0 0 left', 'keys !shot parts\\n', 'mouse 0 0 left', 'keys p'] + to(380, 210) +
-           ['mouse 0 0 left', 'keys !shot measure\\n', 'keys q'])
 SHOTS = ['views', 'hidden-line', 'section', 'parts', 'measure']
 
 
-# as1_oc_214's parts list: its tenth row (y 212-231 at 640x480) is l-bracket_1.
-ASSEMBLY_SESSION = ['keys p'] + to(100, 222) + ['mouse 0 0 left', 'keys p', 'keys mmmm', 'keys !shot see-through\\n', 'keys q']
+
 
 
 def session(args, env, fpk, board_dir, sim_dir, script, shots):
@@ -91,12 +82,13 @@ def main():
     step, fpk = os.path.join(args.work, 'sample.step'), os.path.join(args.work, 'sample.fpk')
     subprocess.run([args.sample, step], check=True, capture_output=True, env=env)
     subprocess.run([args.packer, step, '-o', fpk, '--quiet'], check=True, capture_output=True, env=env)
-    problems = session(args, env, fpk, 'board', 'sim', SESSION, SHOTS)
+    features, see_through = sessions(args.board)
+    problems = session(args, env, fpk, 'board', 'sim', features, SHOTS)
     dev = os.path.join(args.work, 'board')
     # See-through on an assembly: a part chosen in the list drawn solid, the others a screen door.
     afpk = os.path.join(args.work, 'assembly.fpk')
     subprocess.run([args.packer, args.assembly, '-o', afpk, '--quiet'], check=True, capture_output=True, env=env)
-    problems += session(args, env, afpk, 'assembly-board', 'assembly-sim', ASSEMBLY_SESSION, ['see-through'])
+    problems += session(args, env, afpk, 'assembly-board', 'assembly-sim', see_through, ['see-through'])
     # The picked face's values, as the host's facet-measure states them.
     rep = json.load(open(os.path.join(dev, 'report.json'))) if os.path.exists(os.path.join(dev, 'report.json')) else {}
     picks = rep.get('picks', [])

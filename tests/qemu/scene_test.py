@@ -14,7 +14,6 @@
 import argparse
 import json
 import os
-import re
 import subprocess
 import sys
 
@@ -22,6 +21,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, os.path.join(ROOT, 'tools'))
 import img  # noqa: E402
+import protocol  # noqa: E402
 
 REF = os.path.join(ROOT, 'tests', 'reference')
 GEOMETRIES = [(640, 480), (480, 272)]
@@ -62,12 +62,12 @@ def qemu(args):
     r = subprocess.run(cmd)
     report = json.load(open(os.path.join(out, 'report.json')))
     uart = open(os.path.join(out, 'uart.log')).read()
-    m = re.search(r'^@board \S+ (\d+)x(\d+)', uart, re.M)
-    if r.returncode != 0 or not m:
+    b = protocol.first(uart, 'board')  # @board NAME WxH scanout BOOL
+    if r.returncode != 0 or not b or len(b.words) < 2:
         print(uart)
         print(f'FAIL: firmware exit {r.returncode}')
         return 1
-    w, h = int(m.group(1)), int(m.group(2))
+    w, h = (int(v) for v in b.words[1].split('x'))
     failed = 0
     for view in VIEWS:
         shot = os.path.join(out, f'{view}.png')

@@ -18,7 +18,6 @@ QEMU board, one check per finding:
 """
 import argparse
 import os
-import re
 import shutil
 import subprocess
 import sys
@@ -26,6 +25,7 @@ import sys
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 sys.path.insert(0, os.path.join(ROOT, 'tools'))
 import board as boards  # noqa: E402
+import protocol  # noqa: E402
 
 
 def main():
@@ -89,12 +89,13 @@ def main():
     subprocess.run([args.stress, 'holes', '1600', holes_step], check=True, capture_output=True, env=occt)
     holes = pack(holes_step, 'holes1600.fpk')
     code, uart, _ = session('holes1600', holes, 'keys q', timeout=900)
-    m = re.search(r'^@tessellation faces (\d+) failed (\d+) triangles (\d+)', uart, re.M)
-    if code != 0 or not m or m.group(1) != '1606' or m.group(2) != '0':
-        problems.append(f'plate_of_1600_holes: exit {code}, {m.group(0) if m else "no @tessellation line"}: '
+    t = protocol.first(uart, 'tessellation')
+    kv = t.fields() if t else {}
+    if code != 0 or not t or kv.get('faces') != 1606 or kv.get('failed') != 0:
+        problems.append(f'plate_of_1600_holes: exit {code}, {t.line if t else "no @tessellation line"}: '
                         f'{"; ".join(l for l in uart.splitlines() if "failed" in l)[:400]}')
     else:
-        print(f'{args.board}: the 1,600-hole plate: 1606 faces, 0 failed, {m.group(3)} triangles')
+        print(f'{args.board}: the 1,600-hole plate: 1606 faces, 0 failed, {kv["triangles"]} triangles')
 
     for p in problems:
         print(f'FAIL {args.board}: {p}')

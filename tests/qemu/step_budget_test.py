@@ -18,13 +18,13 @@ steps that ran out of work (idle) are not counted as overruns. Prints the figure
 import argparse
 import json
 import os
-import re
 import subprocess
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 sys.path.insert(0, os.path.join(ROOT, 'tools'))
 import board as boards  # noqa: E402
+import protocol  # noqa: E402
 
 
 def main():
@@ -49,7 +49,7 @@ def main():
         r = subprocess.run([sys.executable, os.path.join(ROOT, 'tools', 'qemu', 'run.py'), '--board', args.board,
                             '--elf', args.elf, '--out', out, '--load', f'{fpk}@{board["pack"]["address"]}', '--icount',
                             '--timeout', '900', '--quiet', '--type', f'!budget {args.budget_us}\\n',
-                            '--send', 'keys d', '--send', 'keys ]', '--send', 'keys q'], capture_output=True, text=True)
+                            '--session', 'step-budget'], capture_output=True, text=True)
         problems = []
         report = os.path.join(out, 'report.json')
         if r.returncode != 0 or not os.path.exists(report):
@@ -58,7 +58,8 @@ def main():
             continue
         rep = json.load(open(report))
         uart = open(os.path.join(out, 'uart.log')).read()
-        if not re.search(r'^@retessellation faces \d+ failed 0 ', uart, re.M):
+        again = protocol.tessellation(uart, 'retessellation')
+        if not again or again['failed'] != 0:
             problems.append('the session did not finish its finer level of detail')
         steps = [x['instructions'] for x in rep['regions'] if x['name'] == 'step']
         if not steps or None in steps:

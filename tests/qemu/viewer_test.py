@@ -21,7 +21,6 @@ import argparse
 import hashlib
 import json
 import os
-import re
 import subprocess
 import sys
 
@@ -29,18 +28,15 @@ ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)
 sys.path.insert(0, os.path.join(ROOT, 'tools'))
 import board as boards  # noqa: E402
 import img  # noqa: E402
-import uart_regions  # noqa: E402
+import protocol  # noqa: E402
 
 TESSELLATION_BUDGET = 600_000_000
 FRAME_BUDGET_PER_10K = 20_000_000
 
 
 def session(board):
-    s = ['keys dd!shot turned\\n']
-    if boards.can(board, 'mouse'):  # versatilepb's PS/2 mouse (PL050); mps2 has none
-        s += ['mouse 40 20', 'keys !shot dragged\\n']
-    s += ['keys +++!shot zoomed\\n', 'keys f]', 'keys !shot lod\\n', 'keys q']
-    return s
+    """tests/sessions/viewer.session for this board (the drag only where it has a mouse)."""
+    return protocol.read_session(protocol.session_path('viewer'), board)
 
 
 def peak_ram(rep):
@@ -77,14 +73,14 @@ def analyse(uart, regions):
     line: a frame the view outdated while it was drawn is not one), the overlay's part of them,
     the mesh's triangles then and the cost the firmware's own clock gave it (us at 600 MHz)."""
     tess, frames, tri_now, pass_no, pieces, overlay = {}, [], 0, -1, [], []
-    for w, region in uart_regions.lines(uart, regions):
-        if w[0] == '@pass':
-            pass_no = int(w[1])
+    for r, region in protocol.with_regions(uart, regions):
+        if r.name == 'pass':
+            pass_no = int(r.words[0])
             tri_now = 0
-        elif w[0] == '@progress':
-            tri_now = int(w[3])
-        elif w[0] == '@frame':
-            kv = dict(zip(w[1::2], w[2::2]))
+        elif r.name == 'progress':
+            tri_now = int(r.words[2])
+        elif r.name == 'frame':
+            kv = dict(zip(r.words[0::2], r.words[1::2]))
             n = int(kv.get('pieces', 1))
             mine = pieces[-n:] if len(pieces) >= n else [None]
             frames.append({'instructions': None if None in mine else sum(mine), 'triangles': tri_now, 'pass': pass_no,
@@ -92,11 +88,11 @@ def analyse(uart, regions):
             pieces, overlay = [], []
         elif region:
             n = region['instructions']
-            if w[1] in ('edges', 'face'):
+            if r.words[0] in ('edges', 'face'):
                 tess[pass_no] = tess.get(pass_no, 0) + (n or 0)
-            elif w[1] in ('frame', 'overlay'):
+            elif r.words[0] in ('frame', 'overlay'):
                 pieces.append(n)  # a frame's cost: its pieces, the overlay's included
-            if w[1] == 'overlay':
+            if r.words[0] == 'overlay':
                 overlay.append(n or 0)
     return tess, frames
 
@@ -153,15 +149,14 @@ def main():
             problems.append(f'exit {r.returncode}: {r.stderr.strip()[-300:]}')
         if h.returncode != 0:
             problems.append(f'facet-sim exit {h.returncode}: {h.stderr.strip()[-300:]}')
-        m = re.search(r'^@tessellation faces (\d+) failed (\d+) triangles (\d+) vertices (\d+) mesh_bytes (\d+) '
-                      r'arena_peak (\d+)', uart, re.M)
+        t = protocol.tessellation(uart)
         if 'the rasterizer refused' in uart:
             problems.append('the rasterizer refused triangles or lines')
-        if not m:
+        if not t:
             problems.append('no tessellation report')
-        elif int(m.group(2)) != 0:
-            problems.append(f'{m.group(2)} faces failed')
-        elif int(m.group(3)) == 0:
+        elif t['failed'] != 0:
+            problems.append(f'{t["failed"]} faces failed')
+        elif t['triangles'] == 0:
             problems.append('no triangles')
         shots = ['wireframe', 'half', 'done', 'turned'] + (['dragged'] if boards.can(args.board, 'mouse') else []) + \
             ['zoomed', 'lod']

@@ -13,10 +13,11 @@ What it does:
     acknowledges over the UART; '@dump NAME FILE': converts a framebuffer the board wrote via
     semihosting (F565) into OUT/NAME.png;
   * --type TEXT: types TEXT into the UART at boot (C-style escapes allowed, e.g. 'r\\n');
-  * --send ENTRY (repeatable): a scripted session; each time the firmware prints '@idle' the
-    next entry is sent: 'keys TEXT' types TEXT (escapes allowed), 'mouse DX DY [BUTTON]' drags
-    the PS/2 mouse over QMP (button left/right/middle held during the move), 'move DX DY' moves
-    it with no button held;
+  * --session NAME|FILE, --send ENTRY (repeatable): a scripted session (a file of
+    tests/sessions, by name or path; tools/protocol.py reads it), then the entries; each time the
+    firmware prints '@idle' the next entry is sent: 'keys TEXT' types TEXT (escapes allowed),
+    'mouse DX DY [BUTTON]' drags the PS/2 mouse over QMP (button left/right/middle held during
+    the move), 'move DX DY' moves it with no button held (docs/protocol.md);
   * runs the guest on a virtual clock, the board description's qemu.clock (-icount shift=0:
     the guest's timers count executed instructions, 1 ns each), so a firmware's clock is
     deterministic: its time-sliced steps repeatable, its frame times those of the 600 MHz
@@ -45,6 +46,7 @@ ROOT = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, os.path.dirname(HERE))
 import board as boards  # noqa: E402
 import img  # noqa: E402
+import protocol  # noqa: E402
 
 MHZ = 600
 
@@ -118,6 +120,8 @@ def main():
     ap.add_argument('--out', required=True, help='directory for uart.log, screenshots, report.json')
     ap.add_argument('--load', action='append', default=[], metavar='FILE@ADDR')
     ap.add_argument('--type', default='', help='text typed into the UART at boot')
+    ap.add_argument('--session', action='append', default=[], metavar='NAME|FILE',
+                    help='a scripted session: tests/sessions/NAME.session or a file (before the --send entries)')
     ap.add_argument('--send', action='append', default=[], metavar='ENTRY',
                     help="sent at each '@idle': 'keys TEXT', 'mouse DX DY [left|right|middle]' or 'move DX DY'")
     ap.add_argument('--timeout', type=float, default=120)
@@ -133,6 +137,14 @@ def main():
     ap.add_argument('--window', action='store_true', help='open a QEMU window if a display exists')
     ap.add_argument('--quiet', action='store_true')
     args = ap.parse_args()
+    script = []
+    for name in args.session:
+        path = name if os.path.sep in name or name.endswith('.session') else protocol.session_path(name)
+        try:
+            script += protocol.read_session(path, args.board)
+        except (OSError, ValueError) as e:
+            ap.error(f'--session {name}: {e}')
+    script += args.send
 
     elf = os.path.abspath(args.elf)
     out = os.path.abspath(args.out)
@@ -189,7 +201,7 @@ def main():
 
     threading.Thread(target=pump, args=(proc.stdout, 'uart'), daemon=True).start()
     threading.Thread(target=pump, args=(proc.stderr, 'qemu'), daemon=True).start()
-    if window and not args.send:
+    if window and not script:
         # An interactive session: the terminal's keys go to the UART (the mouse is the window's).
         def forward():
             for chunk in iter(lambda: os.read(sys.stdin.fileno(), 64), b''):
@@ -217,7 +229,6 @@ def main():
     report = {'board': args.board, 'elf': os.path.relpath(elf, ROOT), 'regions': [], 'ram': {},
               'shots': [], 'exit_code': None, 'failures': []}
     begins = []
-    script = list(args.send)
     log = open(os.path.join(out, 'uart.log'), 'w')
     deadline = time.time() + args.timeout
     open_streams, timed_out = 2, False
@@ -241,16 +252,17 @@ def main():
         log.flush()
         if not args.quiet:
             print(line, flush=True)
-        words = line.split()
-        if not words:
+        rec = protocol.parse(line)
+        if rec is None:
             continue
-        if words[0] == '@idle':
+        words = ['@' + rec.name] + rec.words
+        if rec.name == 'idle':
             # Each entry ends with ENQ (0x05) on the UART: the firmware says '@idle' again only
             # once it has handled everything before it (mouse packets are polled first).
             if script:
                 entry = script.pop(0)
                 kind, _, rest = entry.partition(' ')
-                enq = b'\x05'
+                enq = protocol.ENQ
                 if kind == 'keys':
                     # The keys and their ENQ in one write: a quit key may end QEMU at once.
                     send(rest.encode().decode('unicode_escape').encode('latin-1') + enq)
@@ -289,8 +301,8 @@ def main():
             # The name becomes a file in OUT: never a path (a firmware could print anything).
             report['failures'].append(f'{" ".join(words[:3])!r}: not a file name (letters, digits, - and _ only); ignored')
             if words[0] == '@shot':
-                send(b'\x06')
-        elif words[0] == '@shot' and len(words) == 2:
+                send(protocol.ACK)
+        elif rec.name == 'shot' and len(rec.words) == 1:
             name = words[1]
             try:
                 if qmp is None:
@@ -300,35 +312,33 @@ def main():
                 report['shots'].append(os.path.relpath(png, ROOT))
             except (OSError, RuntimeError) as e:
                 report['failures'].append(f'screendump {name}: {e}')
-            send(b'\x06')
-        elif words[0] == '@dump' and len(words) == 3:
+            send(protocol.ACK)
+        elif rec.name == 'dump' and len(rec.words) == 2:
             png = os.path.join(out, f'{words[1]}.png')
             try:
                 img.f565_to_png(os.path.join(out, words[2]), png)
                 report['shots'].append(os.path.relpath(png, ROOT))
             except (OSError, ValueError) as e:
                 report['failures'].append(f'dump {words[1]}: {e}')
-        elif words[0] == '@begin' and len(words) == 2:
-            begins.append(words[1])
-        elif words[0] == '@ram' and len(words) == 4:
-            report['ram'][words[1]] = int(words[3])
-        elif words[0] == '@stack' and len(words) >= 5:
-            report['stack_used'] = int(words[2])
-            report['stack_size'] = int(words[4])
-        elif words[0] == '@tessellation' and len(words) >= 9:
-            kv = dict(zip(words[1::2], words[2::2]))
-            report['model'] = {'faces': int(kv['faces']), 'faces_failed': int(kv['failed']),
-                               'triangles': int(kv['triangles']), 'mesh_bytes': int(kv['mesh_bytes'])}
-        elif words[0] == '@pick' and len(words) >= 3:
-            if words[1] == 'face':
-                kv = dict(zip(words[1::2], words[2::2]))
-                report.setdefault('picks', []).append({'face': int(kv['face']), 'instance': int(kv['instance']), 'lines': []})
-        elif words[0] == '@measure' and report.get('picks'):
-            report['picks'][-1]['lines'].append(line.split(' ', 1)[1].strip())  # the picked faces' exact values
-        elif words[0] == '@memory' and len(words) >= 3:
-            report['memory'] = {k: int(v) for k, v in zip(words[1::2], words[2::2])}
-        elif words[0] == '@expect' and len(words) == 3:
-            report.setdefault('expect', {})[words[1]] = int(words[2])
+        elif rec.name == 'begin' and len(rec.words) == 1:
+            begins.append(rec.words[0])
+        elif rec.name == 'ram' and len(rec.words) == 3:
+            report['ram'][rec.words[0]] = int(rec.words[2])
+        elif rec.name == 'stack' and len(rec.words) >= 4:  # used N of M bytes
+            report['stack_used'], report['stack_size'] = int(rec.words[1]), int(rec.words[3])
+        elif rec.name == 'tessellation' and len(rec.words) >= 8:
+            kv = rec.fields()
+            report['model'] = {'faces': kv['faces'], 'faces_failed': kv['failed'], 'triangles': kv['triangles'],
+                               'mesh_bytes': kv['mesh_bytes']}
+        elif rec.name == 'pick' and rec.words and rec.words[0] == 'face':
+            kv = rec.fields()
+            report.setdefault('picks', []).append({'face': kv['face'], 'instance': kv['instance'], 'lines': []})
+        elif rec.name == 'measure' and report.get('picks'):
+            report['picks'][-1]['lines'].append(rec.text())  # the picked faces' exact values
+        elif rec.name == 'memory' and len(rec.words) >= 2:
+            report['memory'] = rec.fields()
+        elif rec.name == 'expect' and len(rec.words) == 2:
+            report.setdefault('expect', {})[rec.words[0]] = int(rec.words[1])
 
     if timed_out:
         proc.kill()

@@ -257,14 +257,16 @@ void Session::key(uint8_t c) {
         quit_ = true;
         return;
     }
-    if (c == 'h' || c == '?') {
-        const facet::KeyBindings keys = facet::key_bindings();
-        for (uint32_t i = 0; i < keys.count; ++i) {
-            if (keys.table[i].key < 0x80) std::printf("  %c  %s\n", char(keys.table[i].key), keys.table[i].help);
+    // Every other key is the module's (its one table); a help key also lists them here.
+    const facet::KeyBindings keys = facet::key_bindings();
+    for (uint32_t i = 0; i < keys.count; ++i) {
+        if (keys.table[i].key != c || keys.table[i].action != facet::Action::Help) continue;
+        for (uint32_t j = 0; j < keys.count; ++j) {
+            if (keys.table[j].key < 0x80) std::printf("  %c  %s\n", char(keys.table[j].key), keys.table[j].help);
         }
         std::printf("  arrows turn and tilt, PageUp/PageDown zoom, Home fits; left drag orbits, right drag pans,\n"
                     "  wheel zooms, a click picks; two fingers pinch and pan; q or Esc quits\n");
-        return;
+        break;
     }
     viewer_->key(c);
 }

@@ -1,0 +1,154 @@
+"""./facet run, sim, example and flash: the viewer on QEMU, in the simulator's window, the C
+example, and the evaluation board's image."""
+import json
+import os
+import sys
+
+from common import (INCOMPLETE_MESH, OVER_BUDGET, ROOT, Failure, build, existing_file, fresh, model_pack,
+                    pack_address, preset_of, run, say, setup, tool)
+
+RUN_BOARD = 'qemu-versatilepb'  # the main job's: an ARM926 without an FPU, like the paper's handheld
+SHOTS = ['wireframe', 'half', 'done', 'turned', 'dragged', 'zoomed', 'views', 'hidden-line', 'section', 'parts',
+         'measure']
+
+
+def add(sub):
+    p = sub.add_parser('run', help='set up, build and run the main job: the viewer in QEMU, screenshots, budgets',
+                       description='Set up, build, and run the main job: make the sample part (or take MODEL.step), '
+                       'pack it, boot the viewer in QEMU (versatilepb: ARM926EJ-S, 32 MiB), which shows the wireframe, '
+                       'fills in the faces, then is turned, dragged, zoomed, put in the isometric view and in hidden '
+                       'line, cut by a section, shown with its parts list and clicked, by the session '
+                       'tests/sessions/run.session. Screenshots, uart.log, report.json and the budget report '
+                       '(budgets.json, budgets.md) go to out/run/. Exit 4 over a budget, 5 when faces failed.')
+    p.add_argument('model', nargs='?', metavar='MODEL.step', help='a STEP file (default: the sample part)')
+    p.add_argument('--window', action='store_true', help='a QEMU window to use yourself instead of the script '
+                   '(keys on the terminal, the mouse in the window; h lists the keys, q quits)')
+    p.set_defaults(run=cmd_run)
+
+    p = sub.add_parser('sim', help='the desktop simulator: the module in an SDL window',
+                       description='The module in an SDL window: mouse (left drag orbits, right drag pans, wheel '
+                       'zooms, a click picks), touch (one finger orbits, two pinch and pan), keys as on the boards '
+                       '(h lists them). The sample part unless a model is given.')
+    p.add_argument('model', nargs='?', metavar='MODEL.step|MODEL.fpk')
+    p.add_argument('--size', metavar='WxH', help='the screen: 480x272 (the EVKB) or 640x480')
+    p.add_argument('--bands', metavar='N', help='draw in bands of N lines')
+    p.add_argument('--scale', metavar='K', help='window pixels per screen pixel')
+    p.add_argument('--headless', action='store_true', help='no window: screenshots to out/sim')
+    p.set_defaults(run=cmd_sim)
+
+    p = sub.add_parser('example', help='examples/minimal (the C example) in QEMU and on the host',
+                       description='Build and run examples/minimal (C99, bands of 16 lines) in QEMU (versatilepb) '
+                       'and on the host; pictures under out/example/.')
+    p.add_argument('model', nargs='?', metavar='MODEL.step')
+    p.set_defaults(run=cmd_example)
+
+    p = sub.add_parser('flash', help="the MIMXRT1060-EVKB's image and a model's pack onto the board",
+                       description="Build the MIMXRT1060-EVKB image and the model's plain pack (the sample part "
+                       'unless a model is given; read in place from flash), write out/flash/facet-evkb.hex (firmware '
+                       "+ pack), .bin and pack.hex, and copy the .hex onto the board's debug-probe drive (found "
+                       'mounted, or --drive). With no board: exit 3 and what to do (docs/boards.md).')
+    p.add_argument('model', nargs='?', metavar='MODEL.step|MODEL.fpk')
+    p.add_argument('--drive', metavar='DIR', help="the probe's drive (default: found mounted)")
+    p.add_argument('--pack-only', action='store_true', help='the pack alone: a new model without a new firmware')
+    p.add_argument('--wait', metavar='SECONDS', help='wait this long for the drive to appear')
+    p.set_defaults(run=cmd_flash)
+
+
+def cmd_run(args, parser):
+    model = existing_file(parser, args.model) if args.model else None
+    setup()
+    build(RUN_BOARD, 'host')
+    out = fresh(os.path.join(ROOT, 'out', 'run'))
+    if model is None:
+        say('making the sample part (Open CASCADE): out/run/sample.step')
+    fpk = model_pack(model, out)
+    name = os.path.basename(model) if model else 'sample.step'
+    say(f'packed {name}: {os.path.getsize(fpk):,} bytes')
+    say(f'booting the viewer in QEMU ({RUN_BOARD}: ARM926EJ-S, 32 MiB) with the pack loaded')
+    cmd = [sys.executable, 'tools/qemu/run.py', '--board', RUN_BOARD,
+           '--elf', f'build/{RUN_BOARD}/firmware/facet-viewer.elf', '--out', out,
+           '--load', f'{fpk}@{pack_address(RUN_BOARD)}', '--icount', '--timeout', '900']
+    cmd += ['--window'] if args.window else ['--quiet', '--session', 'run']
+    if run(cmd) != 0:
+        log = os.path.join(out, 'uart.log')
+        if os.path.exists(log):
+            print(''.join(open(log).readlines()[-20:]), file=sys.stderr)
+        raise Failure('the viewer run failed (out/run/uart.log)')
+    rc = run([sys.executable, 'tools/budgets.py', os.path.join(out, 'report.json'), '--json', os.path.join(out, 'budgets.json'),
+              '--markdown', os.path.join(out, 'budgets.md'), '--model', name, '--strict'])
+    say('screenshots out/run/{' + ','.join(SHOTS) + '}.png, budget report out/run/budgets.json (.md)')
+    for p in json.load(open(os.path.join(out, 'report.json'))).get('picks', []):
+        print(f'  picked face {p["face"]}: {"; ".join(p["lines"])}')
+    if rc == OVER_BUDGET:
+        raise Failure('OVER BUDGET (exit 4): out/run/budgets.md says where', OVER_BUDGET)
+    if rc == INCOMPLETE_MESH:
+        raise Failure('INCOMPLETE MESH (exit 5): faces failed on the device, out/run/uart.log says why', INCOMPLETE_MESH)
+    if rc != 0:
+        raise Failure(f'the budget report failed (exit {rc})')
+    return 0
+
+
+def cmd_sim(args, parser):
+    model = existing_file(parser, args.model) if args.model else None
+    if not args.headless and not (os.environ.get('DISPLAY') or os.environ.get('WAYLAND_DISPLAY') or
+                                  os.environ.get('SDL_VIDEODRIVER')):
+        raise Failure("no display for the simulator's window: run it on a desktop, under xvfb-run, or with "
+                      '--headless (screenshots to out/sim)')
+    setup()
+    build('host', quiet=True)
+    fpk = model_pack(model, os.path.join(ROOT, 'out', 'sim'))
+    extra = []
+    for opt in ('size', 'bands', 'scale'):
+        if getattr(args, opt):
+            extra += [f'--{opt}', getattr(args, opt)]
+    if args.headless:
+        extra.append('--headless')
+    say(f'facet-sim: {os.path.basename(fpk)} (h lists the keys, Esc or q quits)')
+    os.execv(tool('facet-sim'), [tool('facet-sim'), '--pack', fpk, '--out', os.path.join(ROOT, 'out', 'sim')] + extra)
+
+
+def cmd_example(args, parser):
+    model = existing_file(parser, args.model) if args.model else None
+    setup()
+    build('host', 'qemu-versatilepb', quiet=True)
+    out = fresh(os.path.join(ROOT, 'out', 'example'))
+    fpk = model_pack(model, out)
+    say('examples/minimal on the host (480x272): out/example/host.f565')
+    if run([tool('facet-example-minimal'), fpk, os.path.join(out, 'host.f565'), '480x272']) != 0:
+        raise Failure('the example failed on the host')
+    run([sys.executable, 'tools/img.py', 'topng', os.path.join(out, 'host.f565'), os.path.join(out, 'host.png')])
+    say('examples/minimal in QEMU (versatilepb, 640x480, bands of 16 lines): out/example/qemu/minimal.png')
+    return run([sys.executable, 'tools/qemu/run.py', '--board', 'qemu-versatilepb',
+                '--elf', 'build/qemu-versatilepb/examples/facet-example-minimal.elf', '--out', os.path.join(out, 'qemu'),
+                '--load', f'{fpk}@{pack_address("qemu-versatilepb")}', '--timeout', '300'])
+
+
+def flash_board():
+    """The board ./facet flash writes: the one whose board.json names a flash runner."""
+    import board as boards
+    found = [b for b in boards.names() if boards.can(b, 'flash_runner')]
+    if len(found) != 1:
+        raise Failure(f'./facet flash needs exactly one board with a flash_runner in its board.json (found {found})')
+    return found[0]
+
+
+def cmd_flash(args, parser):
+    model = existing_file(parser, args.model) if args.model else None
+    preset = preset_of(flash_board())
+    setup()
+    build('host', preset, quiet=True)
+    out = os.path.join(ROOT, 'out', 'flash')
+    os.makedirs(out, exist_ok=True)
+    # A plain pack: the board reads it in place from flash (nothing to inflate at boot); a .fpk
+    # as it is (a compressed one is decoded into SDRAM).
+    fpk = model_pack(model, out, plain=True)
+    extra = []
+    if args.drive:
+        extra += ['--drive', args.drive]
+    if args.pack_only:
+        extra.append('--pack-only')
+    if args.wait:
+        extra += ['--wait', args.wait]
+    return run([sys.executable, 'tools/flash.py', '--image', f'build/{preset}/firmware/facet-viewer.bin', '--pack', fpk,
+                '--out', out] + extra)
+
