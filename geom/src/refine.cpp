@@ -25,6 +25,7 @@
 #include "geom/fmath.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #ifdef FACET_DEBUG_REFINE
 #include <cstdio>
@@ -150,11 +151,39 @@ struct Context {
     // A point of the surface: from its fixed-point patch where it has one.
     Vec3 point(Vec2 uv) const { return patches.usable() ? patches.point(uv.x, uv.y) : eval_surface_point(pack, S, uv.x, uv.y); }
 
-    // The measure of T; `cost` gets the work it took in units (FaceJob's: about five thousand
-    // ARM926 instructions): none for the quick answers, 3 for seven distances to an
-    // elementary surface or seven points of a fixed-point patch, 30 for seven points of a
-    // free-form surface in float, kConvertUnits for each patch made.
+    // The measure of T, as estimate() gives it, but for a triangle that wraps across a seam:
+    // one of its inner sides joins two corners at the same 3D point (a point on each side of a
+    // periodic surface's seam: a full sphere's first triangles join u = 0 to u = 2 pi). Its
+    // 3D image is flat or a segment while the surface it stands for is not, so no estimate from
+    // its corners means anything: it gets a point at its middle whatever they say. (A pole's
+    // side is a loop's, constrained: a triangle on it is left to the estimate.)
     TriangleMeasure measure(const Tri& T, uint32_t& cost) const {
+        TriangleMeasure m = estimate(T, cost);
+        if (m.error2 > target2) return m;
+        for (int k = 0; k < 3; ++k) {
+            if (T.constrained(k)) continue;
+            const Vec3 a = sc.xyz[sc.mesh_of[T.v[cdt::next3(k)]]], b = sc.xyz[sc.mesh_of[T.v[cdt::prev3(k)]]];
+            if (!same_point(a, b)) continue;
+            const cdt::Point g0 = cdt.vertex(T.v[0]).p, g1 = cdt.vertex(T.v[1]).p, g2 = cdt.vertex(T.v[2]).p;
+            m.error2 = 4 * target2;
+            m.at = {(g0.x + g1.x + g2.x) / 3, (g0.y + g1.y + g2.y) / 3};
+            break;
+        }
+        return m;
+    }
+
+    // One point: the same bits (the samples of one point are copies of one computation).
+    static bool same_point(Vec3 p, Vec3 q) {
+        return std::bit_cast<uint32_t>(p.x) == std::bit_cast<uint32_t>(q.x) &&
+               std::bit_cast<uint32_t>(p.y) == std::bit_cast<uint32_t>(q.y) &&
+               std::bit_cast<uint32_t>(p.z) == std::bit_cast<uint32_t>(q.z);
+    }
+
+    // The estimate of T's deviation; `cost` gets the work it took in units (FaceJob's: about
+    // five thousand ARM926 instructions): none for the quick answers, 3 for seven distances to
+    // an elementary surface or seven points of a fixed-point patch, 30 for seven points of a
+    // free-form surface in float, kConvertUnits for each patch made.
+    TriangleMeasure estimate(const Tri& T, uint32_t& cost) const {
         TriangleMeasure m{key_of(T), 0, {0, 0}};
         cost = 0;
         Vec3 P[3];

@@ -2,7 +2,8 @@
 """Packs and tessellates every shared model with facet-pack + facet-mesh (the device's geom/
 and cdt/ code) at the default tolerance (0.1% of the bounding-box diagonal) and at 1%.
 
-Asserted for every model that packs, at both tolerances:
+Asserted for every model (one that does not pack fails the test: pack_models_test.py says
+why; a folder without models fails too), at both tolerances:
   * every face yields triangles (a face that cannot be triangulated is a failure, with the
     reason facet-mesh gives for it);
   * the measured deviation (facet-mesh samples every triangle inside and along its edges and
@@ -75,12 +76,15 @@ def main():
     args = ap.parse_args()
     os.makedirs(args.work, exist_ok=True)
     rows, bad = [], []
-    for f in sorted(x for x in os.listdir(args.models) if x.lower().endswith(('.stp', '.step'))):
+    models = sorted(x for x in os.listdir(args.models) if x.lower().endswith(('.stp', '.step')))
+    if not models:
+        bad.append(f'no STEP files in {args.models}')
+    for f in models:
         base = os.path.join(args.work, os.path.splitext(f)[0])
         p = subprocess.run([args.packer, os.path.join(args.models, f), '-o', base + '.fpk', '--quiet'],
                            capture_output=True, text=True, timeout=600)
         if p.returncode != 0:
-            print(f'skip    {f}: not packed ({p.stderr.strip().splitlines()[-1] if p.stderr.strip() else p.returncode})')
+            bad.append(f'{f}: not packed ({p.stderr.strip().splitlines()[-1] if p.stderr.strip() else p.returncode})')
             continue
         r, messages = mesh(args, base + '.fpk', base + '.json', extra=['--stl', base + '.stl'])
         pieces, _ = mesh(args, base + '.fpk', base + '-pieces.json', extra=['--stl', base + '-pieces.stl', '--pieces', '1'])

@@ -316,11 +316,16 @@ int main(int argc, char** argv) {
         if (pack.shells()[s].closed) {
             ++closed;
             const pack::Shell& sh = pack.shells()[s];
-            // (A face may rightly have no triangle: one with no area at this tolerance.)
+            // (A face may rightly have no triangle: one with no area at this tolerance. A whole
+            // solid may not: no triangles have no free edges, and are no mesh of it.)
             bool all_faces = true;
             for (uint32_t fi = sh.first_face; fi < sh.first_face + sh.face_count; ++fi) all_faces = all_faces && !failed_face.count(fi);
-            if (!fr && !nm && all_faces) ++watertight;
-            else if (!quiet) std::fprintf(stderr, "facet-mesh: closed shell %u is not watertight: %u free, %u non-manifold edges%s\n", s, fr, nm, all_faces ? "" : ", a face failed");
+            const bool empty = m.tri.empty();
+            if (!fr && !nm && all_faces && !empty) ++watertight;
+            else if (!quiet) {
+                std::fprintf(stderr, "facet-mesh: closed shell %u is not watertight: %u free, %u non-manifold edges%s%s\n", s, fr, nm,
+                             all_faces ? "" : ", a face failed", empty ? ", no triangles at all" : "");
+            }
             if (overlap > overlap_before && !quiet) {
                 std::fprintf(stderr, "facet-mesh: closed shell %u: %u edges where two of its faces overlap in the B-rep\n", s,
                              overlap - overlap_before);

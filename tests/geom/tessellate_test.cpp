@@ -1,0 +1,210 @@
+// The tessellation's pieces (edge sampling, face loops, the CDT, refinement, normals) on shapes
+// built in code (tests/geom/shapes.h, no Open CASCADE): a plate with holes (planar faces with
+// holes, cylinder seams), a sphere (its poles), a torus (two seams), a trimmed B-spline sheet.
+// Each mesh is checked for what it must be, not for what it was: watertight (or, open, bounded
+// by its loops alone), the volume it encloses within area x tolerance of the exact one, every
+// triangle within the tolerance of its surface, a triangle count between what the boundary
+// needs and what the surface's curvature allows; and made in pieces it is the mesh made at once.
+#include "geom/deviation.h"
+#include "geom/face_storage.h"
+#include "geom/pack.h"
+#include "geom/tessellate.h"
+#include "mesh_topology.h"
+#include "shapes.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <map>
+#include <set>
+#include <string>
+#include <tuple>
+#include <vector>
+
+using namespace facet;
+using namespace facet::geom;
+using namespace facet::test;
+
+namespace {
+
+struct Tessellated {
+    std::vector<MeshVertex> vertices;
+    std::vector<Vec2> uv;
+    std::vector<uint32_t> indices;  // three per triangle
+    std::vector<uint32_t> face_of;  // per triangle
+    std::vector<Vec3> samples;      // every edge sample's point
+    uint32_t boundary_samples = 0;  // samples around the loops (each coedge's, its ends once)
+};
+
+// The pack's faces tessellated as the device does (its face storage, patches included), in
+// pieces of `units` (0: each face at once). An empty string, or what failed.
+std::string tessellate(const Pack& pack, float tolerance, uint32_t units, Tessellated& out) {
+    TessOptions opt;
+    opt.tolerance = tolerance;
+    const size_t ne = pack.edges().size();
+    std::vector<uint32_t> first(ne);
+    std::vector<uint16_t> count(ne);
+    std::vector<float> t(1 << 16);
+    std::vector<Vec3> p(1 << 16);
+    EdgeSamples samples{first, count, t, p};
+    if (!sample_edges(pack, opt, samples).ok()) return "edge sampling failed";
+    out.samples.assign(p.begin(), p.begin() + samples.used);
+    for (const pack::Coedge& c : pack.coedges()) out.boundary_samples += count[c.edge()] ? count[c.edge()] - 1 : 0;
+    const FaceCapacity capacity{};
+    std::vector<uint64_t> memory(face_storage_bytes(capacity) / 8 + 1);
+    FaceStorage storage;
+    if (!storage.bind(memory.data(), memory.size() * 8, capacity).ok()) return "no face storage";
+    std::vector<MeshVertex> mv(1 << 17);
+    std::vector<uint32_t> mi(3 << 18);
+    std::vector<Vec2> muv(1 << 17);
+    Mesh mesh{mv, mi, muv};
+    for (uint32_t f = 0; f < pack.faces().size(); ++f) {
+        const uint32_t before = mesh.triangle_count;
+        FaceJob job;
+        job.start(pack, f, samples, opt, storage, mesh);
+        Result r;
+        while ((r = job.run(units ? units : UINT32_MAX)).status == Status::Busy) {
+        }
+        if (!r.ok()) return "face " + std::to_string(f) + ": " + r.what;
+        out.face_of.insert(out.face_of.end(), mesh.triangle_count - before, f);
+    }
+    out.vertices.assign(mv.begin(), mv.begin() + mesh.vertex_count);
+    out.uv.assign(muv.begin(), muv.begin() + mesh.vertex_count);
+    out.indices.assign(mi.begin(), mi.begin() + 3 * mesh.triangle_count);
+    return "";
+}
+
+Bytes copy_aligned(const Bytes& b, std::vector<uint32_t>& words) {
+    words.assign(b.size() / 4 + 1, 0);
+    std::memcpy(words.data(), b.data(), b.size());
+    return b;
+}
+
+struct Shape {
+    const char* name;
+    Bytes bytes;
+    bool closed;
+    double volume;     // exact (closed shapes)
+    float curvature;   // the most the surface bends (1/mm): bounds the triangles refinement may add
+    int holes;         // of the open sheet's face (its Euler characteristic: 1 - holes)
+};
+
+std::vector<Shape> shapes() {
+    return {{"plate with holes", plate_with_holes(), true, plate_volume(), 1.0f / 8, 0},
+            {"sphere", sphere(), true, sphere_volume(), 1.0f / kSphereRadius, 0},
+            {"torus", torus(), true, torus_volume(), 1.0f / kTorusMinor, 0},
+            {"trimmed B-spline", trimmed_bspline(), false, 0, kBentPlateCurvature, 1}};
+}
+
+Vec3 corner(const Tessellated& m, uint32_t t, int k) { return m.vertices[m.indices[3 * t + k]].p; }
+
+class Tessellation : public ::testing::TestWithParam<float> {};
+
+} // namespace
+
+// Every shape at three tolerances: the properties the mesh must have.
+TEST_P(Tessellation, ShapesAreWatertightWithinToleranceAndSized) {
+    const float tol = GetParam();
+    for (const Shape& s : shapes()) {
+        SCOPED_TRACE(std::string(s.name) + " at " + std::to_string(tol) + " mm");
+        std::vector<uint32_t> words;
+        copy_aligned(s.bytes, words);
+        Pack pack;
+        ASSERT_TRUE(pack.open(words.data(), uint32_t(s.bytes.size())).ok());
+        Tessellated m;
+        ASSERT_EQ(tessellate(pack, tol, 0, m), "");
+        const uint32_t triangles = uint32_t(m.face_of.size());
+        ASSERT_GT(triangles, 0u);
+
+        // Topology: welded at exactly equal positions (the shared edge samples), no free edge
+        // on a closed solid; on the open sheet, free edges only along its loops.
+        std::vector<TopoTriangle> topo(triangles);
+        double area = 0, volume = 0;
+        for (uint32_t t = 0; t < triangles; ++t) {
+            topo[t].group = 0, topo[t].face = m.face_of[t];
+            const Vec3 a = corner(m, t, 0), b = corner(m, t, 1), c = corner(m, t, 2);
+            for (int k = 0; k < 3; ++k) {
+                const Vec3 q = corner(m, t, k);
+                topo[t].p[k][0] = q.x, topo[t].p[k][1] = q.y, topo[t].p[k][2] = q.z;
+            }
+            const Vec3 n = cross(b - a, c - a);
+            area += 0.5 * std::sqrt(double(dot(n, n)));
+            volume += double(dot(a, cross(b, c))) / 6; // the divergence theorem, outward winding
+        }
+        std::set<std::tuple<float, float, float>> on_loops;
+        for (const Vec3& q : m.samples) on_loops.insert({q.x, q.y, q.z});
+        uint32_t inner_free = 0;
+        const EdgeTopology e = edge_topology(topo, [&](const BadEdge& bad) {
+            if (bad.triangles.size() == 1 && (!on_loops.count({bad.a[0], bad.a[1], bad.a[2]}) ||
+                                              !on_loops.count({bad.b[0], bad.b[1], bad.b[2]}))) {
+                ++inner_free;
+            }
+        });
+        EXPECT_EQ(e.nonmanifold, 0u);
+        if (s.closed) {
+            EXPECT_EQ(e.free, 0u) << "watertight";
+            // Chords and flat triangles cut inside or outside the curved surfaces by at most the
+            // tolerance: the enclosed volume is the solid's within area x tolerance.
+            EXPECT_NEAR(volume, s.volume, area * tol) << "outward and closed: its volume";
+        } else {
+            EXPECT_EQ(inner_free, 0u) << "free edges only along the loops";
+            EXPECT_EQ(e.free, m.boundary_samples) << "every chord of every loop, once";
+            // Euler characteristic of the welded mesh: a disc with `holes` holes.
+            std::map<std::tuple<float, float, float>, uint32_t> id;
+            std::set<std::pair<uint32_t, uint32_t>> edges;
+            for (uint32_t t = 0; t < triangles; ++t) {
+                uint32_t v[3];
+                for (int k = 0; k < 3; ++k) v[k] = id.emplace(std::make_tuple(topo[t].p[k][0], topo[t].p[k][1], topo[t].p[k][2]), uint32_t(id.size())).first->second;
+                for (int k = 0; k < 3; ++k) edges.insert({std::min(v[k], v[(k + 1) % 3]), std::max(v[k], v[(k + 1) % 3])});
+            }
+            EXPECT_EQ(int64_t(id.size()) - int64_t(edges.size()) + int64_t(triangles), 1 - s.holes);
+        }
+
+        // Every triangle within the tolerance of its face's surface (the shapes' edges lie on
+        // their surfaces exactly: no B-rep gap to allow for; a float's rounding does).
+        float worst = 0;
+        for (uint32_t t = 0; t < triangles; ++t) {
+            const Vec3 p[3] = {corner(m, t, 0), corner(m, t, 1), corner(m, t, 2)};
+            const Vec2 uv[3] = {m.uv[m.indices[3 * t]], m.uv[m.indices[3 * t + 1]], m.uv[m.indices[3 * t + 2]]};
+            worst = std::max(worst, triangle_deviation(pack, m.face_of[t], p, uv, 4));
+        }
+        EXPECT_LE(worst, tol * 1.001f + 1e-5f) << "the measured deviation";
+
+        // At least what the loops need (a polygon of n chords takes n - 2 triangles, a hole
+        // two more); at most four times what the curvature allows: triangles whose sides
+        // L sag by L^2 k / 8 = tol cover the area in about area / (0.43 L^2), plus the
+        // boundary's own.
+        const double L2 = 8 * double(tol) / s.curvature;
+        const double most = 4 * (area / (0.43 * L2) + m.boundary_samples);
+        EXPECT_GE(double(triangles), double(m.boundary_samples) - 2 * pack.faces().size());
+        EXPECT_LE(double(triangles), most) << "triangles for an area of " << area << " mm^2";
+
+        // In pieces (the device's way: a bounded amount of work at a time), the same mesh.
+        Tessellated pieces;
+        ASSERT_EQ(tessellate(pack, tol, 7, pieces), "");
+        ASSERT_EQ(pieces.indices, m.indices);
+        ASSERT_EQ(pieces.vertices.size(), m.vertices.size());
+        EXPECT_EQ(std::memcmp(pieces.vertices.data(), m.vertices.data(), m.vertices.size() * sizeof(MeshVertex)), 0);
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(AtThreeTolerances, Tessellation, ::testing::Values(0.5f, 0.1f, 0.02f));
+
+// A finer tolerance never gives fewer triangles (refinement only adds points where needed, and
+// the edges are sampled at least as finely).
+TEST(Tessellation, AFinerToleranceGivesNoFewerTriangles) {
+    for (const Shape& s : shapes()) {
+        std::vector<uint32_t> words;
+        copy_aligned(s.bytes, words);
+        Pack pack;
+        ASSERT_TRUE(pack.open(words.data(), uint32_t(s.bytes.size())).ok());
+        size_t last = 0;
+        for (float tol : {1.0f, 0.3f, 0.1f, 0.03f}) {
+            Tessellated m;
+            ASSERT_EQ(tessellate(pack, tol, 0, m), "") << s.name;
+            EXPECT_GE(m.face_of.size(), last) << s.name << " at " << tol << " mm";
+            last = m.face_of.size();
+        }
+    }
+}
