@@ -97,7 +97,7 @@ def run_one(board_name, elf, fpk, out, timeout):
     elif not bad:
         notes.append('no tessellation report')
     row['inflate_instructions'] = unpack_instructions(rep.get('regions', [])) or 0
-    if 0 in tess and m:
+    if 0 in tess and t:
         row['tessellation_instructions'] = tess[0]
         if tess[0] > TESSELLATION_BUDGET:
             notes.append('tessellation over the 600 M budget')

@@ -65,6 +65,8 @@ struct RefineState {
     float last_worst = 0;   // the previous round's worst
     uint32_t added = 0;     // points this round
     uint32_t total = 0;     // points of the face so far
+    uint32_t loop_points = 0; // the points from the loops' samples (refinement's come after them)
+    int8_t seams = -1;      // the face's loops run along a seam (-1: not looked yet)
 };
 
 constexpr float kTwoPi = 6.28318530717958647692f;
@@ -114,7 +116,8 @@ Result clean_loops(FaceScratch& sc, uint32_t& np, uint32_t& nl, uint32_t& sliver
 // Step 5: adds surface points until every inner triangle is within the tolerance (see
 // refine.cpp), about `units` of work at a time (`spent` says how much): Busy while unfinished.
 // sc.mesh_of maps CDT vertices to points (sc.uv/sc.xyz); state.total (the face's points so
-// far) grows with every point added. A fresh RefineState{} with total set starts a face.
+// far) grows with every point added. A fresh RefineState{} with total and loop_points set (the
+// loops' points) starts a face.
 Result refine(const Pack& pack, uint32_t face, const TessOptions& opt, const Grid& grid, cdt::Cdt<uint16_t>& cdt,
               FaceScratch& sc, RefineState& state, uint32_t units, uint32_t& spent);
 

@@ -124,21 +124,34 @@ uint64_t key_of(const Tri& T) {
     return uint64_t(T.v[0]) | uint64_t(T.v[1]) << 16 | uint64_t(T.v[2]) << 32 | uint64_t(1) << 48;
 }
 
+// Whether one of the face's coedges lies on a seam of its surface.
+bool has_seam(const Pack& pack, const pack::Face& F) {
+    for (uint32_t l = F.first_loop; l < F.first_loop + F.loop_count; ++l) {
+        const Loop& L = pack.loops()[l];
+        for (uint32_t c = L.first_coedge; c < L.first_coedge + L.coedge_count; ++c)
+            if (pack.coedges()[c].seam() != Seam::None) return true;
+    }
+    return false;
+}
+
 struct Context {
     const Pack& pack;
     const Surface& S;
     bool elementary;
     detail::Elementary shape; // its closed forms (none unless elementary)
     detail::Elementary::FlatBound flat; // what needs no samples (elementary surfaces)
+    bool seams;    // the face's loops run along a seam (each side of it: points twice in 3D)
+    uint32_t loop_points; // the points from the loops' samples (refinement's come after them)
     float tol2;
     float target2; // what refinement aims for: the tolerance, with a margin where it estimates
     const FaceScratch& sc;
     const cdt::Cdt<uint16_t>& cdt;
     mutable PatchCache patches; // a B-spline's points in fixed point (its cache is the scratch's)
 
-    Context(const Pack& p, const pack::Face& F, const Surface& s, float tol, const FaceScratch& scratch,
+    Context(const Pack& p, const pack::Face& F, const Surface& s, float tol, bool on_seams, uint32_t loop_point_count,
+            const FaceScratch& scratch,
             const cdt::Cdt<uint16_t>& c)
-        : pack(p), S(s), elementary(is_elementary(s)), shape(p, s),
+        : pack(p), S(s), elementary(is_elementary(s)), shape(p, s), seams(on_seams), loop_points(loop_point_count),
           tol2(tol * tol), sc(scratch), cdt(c), patches(p, s, scratch.patches) {
         // On a doubly curved surface the deviation is modelled from samples (exact only for
         // cubic deviations); free-form deviations are estimated along the normal. Aim 5%
@@ -151,19 +164,29 @@ struct Context {
     // A point of the surface: from its fixed-point patch where it has one.
     Vec3 point(Vec2 uv) const { return patches.usable() ? patches.point(uv.x, uv.y) : eval_surface_point(pack, S, uv.x, uv.y); }
 
+    // One point: the same bits (the samples of one point are copies of one computation).
+    static bool same_point(Vec3 p, Vec3 q) {
+        return std::bit_cast<uint32_t>(p.x) == std::bit_cast<uint32_t>(q.x) &&
+               std::bit_cast<uint32_t>(p.y) == std::bit_cast<uint32_t>(q.y) &&
+               std::bit_cast<uint32_t>(p.z) == std::bit_cast<uint32_t>(q.z);
+    }
+
     // The measure of T, as estimate() gives it, but for a triangle that wraps across a seam:
     // one of its inner sides joins two corners at the same 3D point (a point on each side of a
     // periodic surface's seam: a full sphere's first triangles join u = 0 to u = 2 pi). Its
     // 3D image is flat or a segment while the surface it stands for is not, so no estimate from
-    // its corners means anything: it gets a point at its middle whatever they say. (A pole's
-    // side is a loop's, constrained: a triangle on it is left to the estimate.)
+    // its corners means anything: where the estimate would leave it, it gets a point at its
+    // middle. (A pole's side is a loop's, constrained: a triangle on it is left to the
+    // estimate.) Such corners are both loop samples on the seam (pinned): others are passed
+    // over without loading a 3D point.
     TriangleMeasure measure(const Tri& T, uint32_t& cost) const {
-        TriangleMeasure m = estimate(T, cost);
-        if (m.error2 > target2) return m;
+        bool narrow = false; // accepted by the u-span bound: narrower than the period, it cannot wrap
+        TriangleMeasure m = estimate(T, cost, narrow);
+        if (!seams || narrow || m.error2 > target2) return m;
         for (int k = 0; k < 3; ++k) {
             if (T.constrained(k)) continue;
-            const Vec3 a = sc.xyz[sc.mesh_of[T.v[cdt::next3(k)]]], b = sc.xyz[sc.mesh_of[T.v[cdt::prev3(k)]]];
-            if (!same_point(a, b)) continue;
+            const uint32_t a = sc.mesh_of[T.v[cdt::next3(k)]], b = sc.mesh_of[T.v[cdt::prev3(k)]];
+            if (a >= loop_points || b >= loop_points || !sc.pinned[a] || !sc.pinned[b] || !same_point(sc.xyz[a], sc.xyz[b])) continue;
             const cdt::Point g0 = cdt.vertex(T.v[0]).p, g1 = cdt.vertex(T.v[1]).p, g2 = cdt.vertex(T.v[2]).p;
             m.error2 = 4 * target2;
             m.at = {(g0.x + g1.x + g2.x) / 3, (g0.y + g1.y + g2.y) / 3};
@@ -172,18 +195,11 @@ struct Context {
         return m;
     }
 
-    // One point: the same bits (the samples of one point are copies of one computation).
-    static bool same_point(Vec3 p, Vec3 q) {
-        return std::bit_cast<uint32_t>(p.x) == std::bit_cast<uint32_t>(q.x) &&
-               std::bit_cast<uint32_t>(p.y) == std::bit_cast<uint32_t>(q.y) &&
-               std::bit_cast<uint32_t>(p.z) == std::bit_cast<uint32_t>(q.z);
-    }
-
     // The estimate of T's deviation; `cost` gets the work it took in units (FaceJob's: about
     // five thousand ARM926 instructions): none for the quick answers, 3 for seven distances to
     // an elementary surface or seven points of a fixed-point patch, 30 for seven points of a
     // free-form surface in float, kConvertUnits for each patch made.
-    TriangleMeasure estimate(const Tri& T, uint32_t& cost) const {
+    TriangleMeasure estimate(const Tri& T, uint32_t& cost, bool& narrow) const {
         TriangleMeasure m{key_of(T), 0, {0, 0}};
         cost = 0;
         Vec3 P[3];
@@ -203,7 +219,10 @@ struct Context {
         case Flat::Everywhere: return m;
         case Flat::USpan: {
             const float span = std::max({UV[0].x, UV[1].x, UV[2].x}) - std::min({UV[0].x, UV[1].x, UV[2].x});
-            if (span <= flat.limit) return m;
+            if (span <= flat.limit) {
+                narrow = true;
+                return m;
+            }
             break;
         }
         case Flat::Circumradius: {
@@ -293,7 +312,8 @@ Result refine(const Pack& pack, uint32_t fi, const TessOptions& opt, const Grid&
     const Surface& S = pack.surfaces()[F.surface];
     spent = 0;
     if (S.type == uint8_t(SurfaceType::Plane)) return {}; // flat: nothing to add
-    const Context ctx(pack, F, S, opt.tolerance * kAim, sc, cdt);
+    if (st.seams < 0) st.seams = has_seam(pack, F) ? 1 : 0; // once a face
+    const Context ctx(pack, F, S, opt.tolerance * kAim, st.seams > 0, st.loop_points, sc, cdt);
     if (sc.measured.size() < cdt::triangles_for(cdt.vertex_capacity())) {
         return Result::fail(Status::Full, "the refinement's triangle measures are fewer than the arena's triangles");
     }

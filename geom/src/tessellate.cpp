@@ -320,7 +320,7 @@ Result FaceJob::run(uint32_t units) {
             if (v < E.cdt.vertex_count() && sc.mesh_of[v] == UINT32_MAX) sc.mesh_of[v] = i;
         }
         E.refine = {};
-        E.refine.total = np_;
+        E.refine.total = E.refine.loop_points = np_;
         stage_ = Stage::Refine;
         if (spent >= units) return busy;
     }

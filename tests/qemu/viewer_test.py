@@ -203,12 +203,12 @@ def main():
         peak = peak_ram(rep)
         if peak is None:
             problems.append('no @memory report')
-        row = {'model': name, 'faces': int(m.group(1)), 'triangles': int(m.group(3)), 'mesh_bytes': int(m.group(5)),
+        row = {'model': name, 'faces': t['faces'], 'triangles': t['triangles'], 'mesh_bytes': t['mesh_bytes'],
                'peak_ram': peak,
-               'arena_peak': int(m.group(6)), 'file_bytes': os.path.getsize(fpk),
+               'arena_peak': t['arena_peak'], 'file_bytes': os.path.getsize(fpk),
                'pack_bytes': rep.get('memory', {}).get('pack_bytes', 0), 'unpack': unpack_instructions(rep['regions']),
                'tess': t0,
-               'frame': max(f['instructions'] for f in frames if f['pass'] == 0 and f['triangles'] == int(m.group(3))),
+               'frame': max(f['instructions'] for f in frames if f['pass'] == 0 and f['triangles'] == t['triangles']),
                'big_frame': big, 'tess_lod': tess.get(max(tess)), 'notes': budget_notes}
         rows.append(row)
         print(f'{args.board} {name}: {row["faces"]} faces, {row["triangles"]:,} triangles, arena peak '
