@@ -1,6 +1,7 @@
 #pragma once
 // The facet pack: exact B-rep geometry, packed on the host (tools/facet-pack) and read in place
-// on the device (geom/pack_reader). One header for both sides; docs/pack-format.md explains it.
+// on the device (geom/pack.h, its records through geom/params.h). One header for both sides;
+// docs/pack-format.md explains it.
 //
 // Layout: a 64-byte header, a table of sections, then each section's records, every part
 // 4-byte aligned. Little-endian. Geometry is float32 (a 2 m part keeps ~0.1 um steps, far below

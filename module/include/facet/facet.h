@@ -1,5 +1,8 @@
-/* facet: the C API, a thin layer over the C++ one (facet/viewer.h: the same calls, the same
- * rules for memory, threads and interrupts -- read its head). C99.
+/* facet: the C API, a thin layer over part of the C++ one (facet/viewer.h): creating a viewer,
+ * loading a pack, stepping, input (keys, the pointer, the wheel, touch), flush_done and the
+ * statistics, under the same rules for memory, threads and interrupts (read viewer.h's head).
+ * The C++ API has more (display modes, parts, the section plane, the camera, measurements);
+ * they are not in C yet. C99.
  *
  *   static uint8_t workspace[FACET_WORKSPACE_BYTES_DEFAULT] __attribute__((aligned(8)));
  *   facet_config cfg;

@@ -59,7 +59,9 @@ struct Target {
 struct RasterStats {
     uint32_t triangles = 0;   // triangles that reached scan conversion
     uint32_t culled = 0;      // back-facing or zero-area
-    uint32_t spans = 0;       // spans pushed to the display (none when pixels go in place)
+    uint32_t spans = 0;       // spans shaded one at a time: clamped or stippled ones, and the rows
+                              // of a larger triangle far from the origin (the common paths, in
+                              // place a chunk of rows or a small triangle at once, count none)
     uint32_t pixels = 0;      // pixels depth-tested, drawn or hidden (what the spans cost)
 };
 
