@@ -69,14 +69,20 @@ const char* work_name(Work w) {
 
 uint32_t um(float mm) { return uint32_t(mm * 1000 + 0.5f); }
 
-// A screenshot, on a board with a host to take it (its Capture; QEMU's).
+// A screenshot, on a board with a host to take it (its Capture; QEMU's). The first pass's
+// shots are taken from on_event, inside a step: with step regions on, the wait for the host
+// (as long as the host takes, not the module's work) is a region of its own, "shot", nested in
+// the step, which tests/qemu/step_budget_test.py takes out of the step's count.
 void capture(const char* name) {
     hal::Capture* c = session.board->capture;
     if (!c) {
         print(session.board->console, "viewer: no screenshot '{}' on this board (it has no capture)\n", name);
-    } else if (Status s = c->shot(name); !ok(s)) {
-        print(session.board->console, "viewer: capture {} failed ({})\n", name, s);
+        return;
     }
+    if (session.step_regions) hal::measure_begin(session.board->console, "shot");
+    const Status s = c->shot(name);
+    if (session.step_regions) hal::measure_end(session.board->console, "shot");
+    if (!ok(s)) print(session.board->console, "viewer: capture {} failed ({})\n", name, s);
 }
 
 void on_event(void*, const Event& e) {

@@ -26,7 +26,8 @@ What it does:
     firmware's '@begin NAME' lines; --limit N stops any region over N instructions;
     --budget NAME=N fails the run if region NAME used more than N instructions;
   * enforces --timeout seconds of wall clock (exit 124);
-  * writes OUT/report.json (exit code, regions, RAM by section, stack, screenshots);
+  * writes OUT/report.json (exit code, regions with the region each is nested in, RAM by
+    section, stack, screenshots);
   * --window opens a QEMU window instead of running headless, when a display exists.
 Exit status: the firmware's exit code, or non-zero for a timeout, a budget or a runner error.
 """
@@ -228,7 +229,7 @@ def main():
     qmp = None
     report = {'board': args.board, 'elf': os.path.relpath(elf, ROOT), 'regions': [], 'ram': {},
               'shots': [], 'exit_code': None, 'failures': []}
-    begins = []
+    begins, parents, open_regions = [], [], []  # region names in the order they begin; nesting
     log = open(os.path.join(out, 'uart.log'), 'w')
     deadline = time.time() + args.timeout
     open_streams, timed_out = 2, False
@@ -321,7 +322,11 @@ def main():
             except (OSError, ValueError) as e:
                 report['failures'].append(f'dump {words[1]}: {e}')
         elif rec.name == 'begin' and len(rec.words) == 1:
+            parents.append(open_regions[-1] if open_regions else None)
+            open_regions.append(len(begins))
             begins.append(rec.words[0])
+        elif rec.name == 'end' and len(rec.words) == 1 and open_regions:
+            open_regions.pop()
         elif rec.name == 'ram' and len(rec.words) == 3:
             report['ram'][rec.words[0]] = int(rec.words[2])
         elif rec.name == 'stack' and len(rec.words) >= 4:  # used N of M bytes
@@ -364,7 +369,7 @@ def main():
                     report['failures'].append(l.strip())
         for i, name in enumerate(begins):
             n = counts.get(i)
-            report['regions'].append({'name': name, 'instructions': n,
+            report['regions'].append({'name': name, 'instructions': n, 'parent': parents[i],
                                       'ms_at_600mhz': None if n is None else round(n / (MHZ * 1000), 3)})
             if n is not None and name in budgets and n > budgets[name]:
                 report['failures'].append(f'region {name}: {n} instructions, budget {budgets[name]}')
