@@ -1,6 +1,7 @@
 #include "pack_io.h"
 
 #include "file_io.h"
+#include "pack_blocks.h"
 
 #include "core/format.h"
 
@@ -72,8 +73,16 @@ bool load_pack_bytes(const std::vector<uint8_t>& file, LoadedPack& out, std::str
     out.kind = pack_file_kind(file.data(), uint32_t(file.size()));
     switch (out.kind) {
     case PackFileKind::Unknown:
-        error = "not a facet pack (neither FPK1, FPX1 nor FPZ1)";
+        error = "not a facet pack (neither FPB1, FPK1, FPX1 nor FPZ1)";
         return false;
+    case PackFileKind::Blocked: {
+        std::vector<uint8_t> whole;
+        if (!join_blocked({file.data(), file.size()}, whole, error)) return false;
+        out.words.resize((whole.size() + 3) / 4);
+        std::memcpy(out.words.data(), whole.data(), whole.size());
+        out.bytes = uint32_t(whole.size());
+        return true;
+    }
     case PackFileKind::Pack:
         // Pack::open checks the size against the header and says so.
         out.words.resize((file.size() + 3) / 4);
@@ -107,8 +116,9 @@ bool load_pack_bytes(const std::vector<uint8_t>& file, LoadedPack& out, std::str
 
 bool load_pack_file(const std::string& path, LoadedPack& out, std::string& error) {
     std::vector<uint8_t> file;
-    // A pack is at most kMaxBytes; a deflated one is smaller (or barely larger: a header).
-    if (!host::read_file(path, uint64_t(pack::kMaxBytes) + 4096, file, error)) return false;
+    // A blocked pack is at most kMaxBlockedBytes; a whole one kMaxBytes (compressed: smaller,
+    // or barely larger: a header).
+    if (!host::read_file(path, uint64_t(pack::kMaxBlockedBytes), file, error)) return false;
     if (!load_pack_bytes(file, out, error)) {
         error = path + ": " + error;
         return false;

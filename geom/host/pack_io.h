@@ -16,7 +16,8 @@ std::vector<uint8_t> deflate_pack(const std::vector<uint8_t>& pack);
 // pb 2): facet-pack's default, about two thirds of the deflated size on B-spline-heavy packs.
 std::vector<uint8_t> lzma_pack(const std::vector<uint8_t>& pack);
 
-// A pack file (any kind) read and, if compressed, decoded with the device's code.
+// A pack file (any kind) read and, if compressed, decoded with the device's code; a blocked
+// one joined into a whole pack (pack_blocks.h).
 struct LoadedPack {
     std::vector<uint32_t> words; // the pack, 4-byte aligned
     uint32_t bytes = 0;          // the pack's size

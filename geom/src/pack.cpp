@@ -1,4 +1,5 @@
 #include "geom/pack.h"
+#include "geom/pack_index.h"
 
 #include "geom/eval.h"
 #include "geom/params.h"
@@ -10,13 +11,28 @@
 
 namespace facet::pack {
 
+namespace {
+
+// The CRC of each byte value, a byte at a time (1 KB of constants): about six instructions a
+// byte where the bit loop took forty.
+struct CrcTable {
+    uint32_t of[256];
+    constexpr CrcTable() : of() {
+        for (uint32_t b = 0; b < 256; ++b) {
+            uint32_t c = b;
+            for (int k = 0; k < 8; ++k) c = (c >> 1) ^ (0xEDB88320u & (0u - (c & 1u)));
+            of[b] = c;
+        }
+    }
+};
+constexpr CrcTable kCrc;
+
+} // namespace
+
 uint32_t crc32(const void* data, uint32_t size, uint32_t crc) {
     const uint8_t* p = static_cast<const uint8_t*>(data);
     crc = ~crc;
-    for (uint32_t i = 0; i < size; ++i) {
-        crc ^= p[i];
-        for (int k = 0; k < 8; ++k) crc = (crc >> 1) ^ (0xEDB88320u & (0u - (crc & 1u)));
-    }
+    for (uint32_t i = 0; i < size; ++i) crc = kCrc.of[(crc ^ p[i]) & 0xFFu] ^ (crc >> 8);
     return ~crc;
 }
 
@@ -216,7 +232,6 @@ Result Pack::check_names() {
     if (!names_.empty() && names_.back() != 0) return fail("the last name is not ended by a 0 byte", N, uint32_t(names_.size() - 1));
     if (names_.size() & 3) return fail("not padded to a multiple of 4 bytes", N, 0);
     // Every name starts at the pool's start or after a 0 byte, so it ends within the pool.
-    auto bad = [&](uint32_t at) { return at != kNoIndex && (at >= names_.size() || (at > 0 && names_[at - 1] != 0)); };
     const struct {
         std::span<const uint32_t> table;
         size_t count;
@@ -225,8 +240,8 @@ Result Pack::check_names() {
     for (const auto& t : tables) {
         if (t.table.empty()) continue;
         if (t.table.size() != t.count) return fail("one name per record of its section is needed", uint32_t(t.id), 0);
-        for (uint32_t i = 0; i < t.table.size(); ++i) {
-            if (bad(t.table[i])) return fail("the name does not start a string of Names", uint32_t(t.id), i);
+        if (const uint32_t bad = first_bad_name(names_, t.table); bad != kNoIndex) {
+            return fail("the name does not start a string of Names", uint32_t(t.id), bad);
         }
     }
     return {};

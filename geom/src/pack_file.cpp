@@ -18,6 +18,7 @@ PackFileKind pack_file_kind(const void* data, uint32_t available) {
     if (std::memcmp(data, kMagic, 4) == 0) return PackFileKind::Pack;
     if (std::memcmp(data, kDeflatedMagic, 4) == 0) return PackFileKind::Deflated;
     if (std::memcmp(data, kLzmaMagic, 4) == 0) return PackFileKind::Lzma;
+    if (std::memcmp(data, kBlockedMagic, 4) == 0) return PackFileKind::Blocked;
     return PackFileKind::Unknown;
 }
 
@@ -72,9 +73,84 @@ uint32_t pack_file_bytes(const void* data, uint32_t available) {
         n = uint64_t(sizeof(LzmaHead)) + h.stream_bytes;
         break;
     }
+    case PackFileKind::Blocked: {
+        if (available < sizeof(IndexHeader)) return 0;
+        IndexHeader h;
+        std::memcpy(&h, data, sizeof h);
+        n = h.total_bytes;
+        break;
+    }
     case PackFileKind::Unknown: return 0;
     }
     return n <= available ? uint32_t(n) : 0;
+}
+
+uint32_t stored_pack_bytes(const void* data, uint32_t available) {
+    if (pack_file_kind(data, available) == PackFileKind::Pack) return pack_file_bytes(data, available);
+    CompressedHead h;
+    return read_head(data, available, h) && h.pack_bytes <= kMaxBytes ? h.pack_bytes : 0;
+}
+
+Result PackDecoder::start(std::span<const uint8_t> file, std::span<uint8_t> out, LzmaProbs& probs) {
+    *this = PackDecoder{};
+    kind_ = pack_file_kind(file.data(), uint32_t(file.size()));
+    auto fail = [&](Result r) { return result_ = r.within(kFile); };
+    if (reinterpret_cast<uintptr_t>(out.data()) & 3) return fail(Result::fail(Status::OutOfRange, "the memory for the pack is not 4-byte aligned"));
+    switch (kind_) {
+    case PackFileKind::Unknown:
+    case PackFileKind::Blocked: return fail(Result::fail(Status::Corrupt, "not a pack (neither FPK1, FPX1 nor FPZ1)"));
+    case PackFileKind::Pack: {
+        pack_bytes_ = pack_file_bytes(file.data(), uint32_t(file.size()));
+        if (pack_bytes_ == 0) return fail(Result::fail(Status::Corrupt, "the pack is longer than its bytes (truncated)"));
+        if (pack_bytes_ > out.size()) return fail(Result::fail(Status::Full, "the pack does not fit its memory"));
+        stream_ = file.first(pack_bytes_), out_ = out;
+        return result_ = Result::fail(Status::Busy, "copying");
+    }
+    case PackFileKind::Deflated:
+    case PackFileKind::Lzma: break;
+    }
+    CompressedHead h;
+    if (!read_head(file.data(), uint32_t(file.size()), h)) return fail(Result::fail(Status::Corrupt, "the compressed head is cut short"));
+    if (uint64_t(sizeof(LzmaHead)) + h.stream_bytes > file.size()) {
+        return fail(Result::fail(Status::Corrupt, "the compressed pack is shorter than its head says (truncated)"));
+    }
+    if (h.pack_bytes > kMaxBytes) return fail(Result::fail(Status::Corrupt, "the pack would be larger than the 64 MiB limit"));
+    if (!h.reserved_zero) return fail(Result::fail(Status::Corrupt, "the compressed head's reserved field is not 0"));
+    if (h.pack_bytes > out.size()) return fail(Result::fail(Status::Full, "the decoded pack does not fit its memory"));
+    pack_bytes_ = h.pack_bytes;
+    stream_ = file.subspan(sizeof(LzmaHead), h.stream_bytes), out_ = out.first(h.pack_bytes);
+    if (kind_ == PackFileKind::Lzma) {
+        const Result r = lzma_.start(stream_, h.props, out_, probs);
+        if (r.status != Status::Busy) return fail(r);
+    }
+    return result_ = Result::fail(Status::Busy, "decoding");
+}
+
+Result PackDecoder::finish(const Result& r, uint32_t written) {
+    if (r.status == Status::Busy) return result_ = r;
+    if (!r.ok()) return result_ = r.within(kFile);
+    if (written != pack_bytes_) return result_ = Result::fail(Status::Corrupt, "the decoded pack is shorter than its head says", kFile);
+    return result_ = {};
+}
+
+Result PackDecoder::run(uint32_t bytes) {
+    if (result_.status != Status::Busy) return result_;
+    switch (kind_) {
+    case PackFileKind::Pack: {
+        std::memmove(out_.data(), stream_.data(), pack_bytes_);
+        return finish({}, pack_bytes_);
+    }
+    case PackFileKind::Deflated: {
+        uint32_t written = 0;
+        const Result r = inflate(stream_, out_, written);
+        return finish(r, written);
+    }
+    case PackFileKind::Lzma: {
+        const Result r = lzma_.run(bytes);
+        return finish(r, lzma_.written());
+    }
+    default: return result_;
+    }
 }
 
 namespace {
@@ -124,6 +200,7 @@ Result unpack_in_place(uint8_t* region, uint32_t capacity, uint32_t loaded, uint
     const PackFileKind kind = pack_file_kind(region, loaded);
     switch (kind) {
     case PackFileKind::Unknown:
+    case PackFileKind::Blocked:
         return Result::fail(Status::Corrupt, "no pack here (neither FPK1, FPX1 nor FPZ1)", kFile);
     case PackFileKind::Pack:
         if (file == 0) {

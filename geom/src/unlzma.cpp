@@ -32,9 +32,12 @@ static_assert(kLiteral + LzmaProbs::kLiterals == LzmaProbs::kCount, "the model o
 // Inside a length coder: choice, choice2, low[16][8], mid[16][8], high[256].
 constexpr uint32_t kLenChoice = 0, kLenChoice2 = 1, kLenLow = 2, kLenMid = kLenLow + 128, kLenHigh = kLenMid + 128;
 
+// The range decoder's state lives in LzmaDecoder between pieces; run() copies it into this
+// class's registers and back.
 class RangeDecoder {
 public:
-    RangeDecoder(const uint8_t* in, uint32_t size) : p_(in), end_(in + size) {}
+    RangeDecoder(const uint8_t* p, const uint8_t* end, uint32_t range, uint32_t code, bool overrun)
+        : p_(p), end_(end), range_(range), code_(code), overrun_(overrun) {}
 
     bool init() {
         if (next() != 0) return false; // the encoder's first byte is always 0
@@ -44,6 +47,9 @@ public:
     bool overrun() const { return overrun_; }
     bool finished_cleanly() const { return code_ == 0; }
     uint32_t left() const { return uint32_t(end_ - p_); }
+    void save(const uint8_t*& p, uint32_t& range, uint32_t& code, bool& overrun) const {
+        p = p_, range = range_, code = code_, overrun = overrun_;
+    }
 
     [[gnu::always_inline]] uint32_t bit(uint16_t* prob) {
         const uint32_t bound = (range_ >> kProbBits) * *prob;
@@ -110,9 +116,9 @@ private:
 
     const uint8_t* p_;
     const uint8_t* end_;
-    uint32_t range_ = 0xFFFFFFFFu;
-    uint32_t code_ = 0;
-    bool overrun_ = false;
+    uint32_t range_;
+    uint32_t code_;
+    bool overrun_;
 };
 
 [[gnu::always_inline]] inline uint32_t decode_length(RangeDecoder& rc, uint16_t* coder, uint32_t pos_state) {
@@ -123,26 +129,47 @@ private:
 
 } // namespace
 
-Result unlzma(std::span<const uint8_t> in, uint8_t props, std::span<uint8_t> out, LzmaProbs& probs,
-              uint32_t& written) {
-    written = 0;
-    if (props >= 9 * 5 * 5) return Result::fail(Status::Corrupt, "bad properties byte");
-    const uint32_t lc = props % 9, lp = (props / 9) % 5, pb = props / 45;
-    if (lc + lp > kLzmaMaxLcLp) {
-        return Result::fail(Status::Unsupported, "literal context bits (lc + lp) beyond what the decoder holds", {"lc + lp", lc + lp});
+Result LzmaDecoder::start(std::span<const uint8_t> in, uint8_t props, std::span<uint8_t> out, LzmaProbs& probs) {
+    *this = LzmaDecoder{};
+    if (props >= 9 * 5 * 5) return fail(Result::fail(Status::Corrupt, "bad properties byte"));
+    lc_ = props % 9;
+    const uint32_t lp = (props / 9) % 5, pb = props / 45;
+    if (lc_ + lp > kLzmaMaxLcLp) {
+        return fail(Result::fail(Status::Unsupported, "literal context bits (lc + lp) beyond what the decoder holds", {"lc + lp", lc_ + lp}));
     }
-    uint16_t* const P = probs.p;
-    for (uint32_t i = 0; i < LzmaProbs::kCount; ++i) P[i] = kProbInit;
-    RangeDecoder rc(in.data(), uint32_t(in.size()));
-    if (!rc.init()) return Result::fail(Status::Corrupt, "the stream does not start as a range coder's does");
+    pb_mask_ = (1u << pb) - 1, lp_mask_ = (1u << lp) - 1;
+    probs_ = probs.p;
+    for (uint32_t i = 0; i < LzmaProbs::kCount; ++i) probs_[i] = kProbInit;
+    out_ = out.data(), size_ = uint32_t(out.size());
+    end_ = in.data() + in.size();
+    RangeDecoder rc(in.data(), end_, 0xFFFFFFFFu, 0, false);
+    if (!rc.init()) return fail(Result::fail(Status::Corrupt, "the stream does not start as a range coder's does"));
+    rc.save(in_, range_, code_, overrun_);
+    status_ = Status::Busy;
+    return Result::fail(Status::Busy, "decoding");
+}
 
-    uint8_t* const o = out.data();
-    const uint32_t size = uint32_t(out.size());
-    const uint32_t pb_mask = (1u << pb) - 1, lp_mask = (1u << lp) - 1;
-    uint32_t pos = 0, state = 0, rep0 = 0, rep1 = 0, rep2 = 0, rep3 = 0;
+Result LzmaDecoder::fail(const Result& r) {
+    status_ = r.status;
+    failure_ = r;
+    return r;
+}
+
+Result LzmaDecoder::run(uint32_t bytes) {
+    if (status_ != Status::Busy) return status_ == Status::Ok ? Result{} : failure_;
+    RangeDecoder rc(in_, end_, range_, code_, overrun_);
+    uint16_t* const P = probs_;
+    uint8_t* const o = out_;
+    const uint32_t size = size_, lc = lc_, pb_mask = pb_mask_, lp_mask = lp_mask_;
+    const uint32_t stop = bytes < size - pos_ ? pos_ + bytes : size; // a match may run past it
+    uint32_t pos = pos_, state = state_, rep0 = rep_[0], rep1 = rep_[1], rep2 = rep_[2], rep3 = rep_[3];
     bool corrupt = false;
-    while (pos < size) {
-        if (rc.overrun()) return Result::fail(Status::Corrupt, "the stream ends early (truncated)", {"byte", pos});
+    Result r = Result::fail(Status::Busy, "decoding");
+    while (pos < stop) {
+        if (rc.overrun()) {
+            r = Result::fail(Status::Corrupt, "the stream ends early (truncated)", {"byte", pos});
+            break;
+        }
         const uint32_t pos_state = pos & pb_mask;
         if (rc.bit(P + kIsMatch + (state << 4) + pos_state) == 0) {
             // A literal, coded in the context of the previous byte's high bits and the position.
@@ -150,7 +177,10 @@ Result unlzma(std::span<const uint8_t> in, uint8_t props, std::span<uint8_t> out
             uint16_t* lit = P + kLiteral + 0x300 * (((pos & lp_mask) << lc) + (prev >> (8 - lc)));
             uint32_t symbol = 1;
             if (state >= 7) { // after a match: the byte at rep0 guides the first bits
-                if (rep0 >= pos) return Result::fail(Status::Corrupt, "a distance reaches before the start", {"byte", pos});
+                if (rep0 >= pos) {
+                    r = Result::fail(Status::Corrupt, "a distance reaches before the start", {"byte", pos});
+                    break;
+                }
                 uint32_t match = o[pos - rep0 - 1];
                 do {
                     const uint32_t match_bit = (match >> 7) & 1;
@@ -167,10 +197,16 @@ Result unlzma(std::span<const uint8_t> in, uint8_t props, std::span<uint8_t> out
         }
         uint32_t len;
         if (rc.bit(P + kIsRep + state) != 0) {
-            if (pos == 0) return Result::fail(Status::Corrupt, "a repeated match before any output");
+            if (pos == 0) {
+                r = Result::fail(Status::Corrupt, "a repeated match before any output");
+                break;
+            }
             if (rc.bit(P + kIsRepG0 + state) == 0) {
                 if (rc.bit(P + kIsRep0Long + (state << 4) + pos_state) == 0) { // one byte at rep0
-                    if (rep0 >= pos) return Result::fail(Status::Corrupt, "a distance reaches before the start", {"byte", pos});
+                    if (rep0 >= pos) {
+                        r = Result::fail(Status::Corrupt, "a distance reaches before the start", {"byte", pos});
+                        break;
+                    }
                     state = state < 7 ? 9 : 11;
                     o[pos] = o[pos - rep0 - 1];
                     ++pos;
@@ -216,24 +252,50 @@ Result unlzma(std::span<const uint8_t> in, uint8_t props, std::span<uint8_t> out
                 rep0 = dist;
             }
             if (rep0 == 0xFFFFFFFFu) { // the end marker
-                return Result::fail(Status::Corrupt, "the stream ends before the output is complete", {"byte", pos});
+                r = Result::fail(Status::Corrupt, "the stream ends before the output is complete", {"byte", pos});
+                break;
             }
         }
         len += 2;
-        if (corrupt) return Result::fail(Status::Corrupt, "the range coder's state is invalid", {"byte", pos});
-        if (rep0 >= pos) return Result::fail(Status::Corrupt, "a distance reaches before the start", {"byte", pos});
-        if (len > size - pos) return Result::fail(Status::Corrupt, "a match runs past the end of the output", {"byte", pos});
+        if (corrupt) {
+            r = Result::fail(Status::Corrupt, "the range coder's state is invalid", {"byte", pos});
+            break;
+        }
+        if (rep0 >= pos) {
+            r = Result::fail(Status::Corrupt, "a distance reaches before the start", {"byte", pos});
+            break;
+        }
+        if (len > size - pos) {
+            r = Result::fail(Status::Corrupt, "a match runs past the end of the output", {"byte", pos});
+            break;
+        }
         const uint8_t* from = o + pos - rep0 - 1;
         uint8_t* to = o + pos;
         for (uint32_t i = 0; i < len; ++i) to[i] = from[i]; // may overlap forward: byte by byte
         pos += len;
     }
-    if (rc.overrun()) return Result::fail(Status::Corrupt, "the stream ends early (truncated)", {"byte", pos});
+    pos_ = pos, state_ = state, rep_[0] = rep0, rep_[1] = rep1, rep_[2] = rep2, rep_[3] = rep3;
+    if (r.status != Status::Busy) return fail(r);
+    if (pos < size) {
+        rc.save(in_, range_, code_, overrun_);
+        return r; // Busy: more next time
+    }
+    if (rc.overrun()) return fail(Result::fail(Status::Corrupt, "the stream ends early (truncated)", {"byte", pos}));
     // The encoder's flush leaves the decoder with a zero code and every byte read.
-    if (!rc.finished_cleanly()) return Result::fail(Status::Corrupt, "the stream does not end where the output does");
-    if (rc.left() != 0) return Result::fail(Status::Corrupt, "bytes follow the end of the LZMA stream", {"bytes", rc.left()});
-    written = pos;
+    if (!rc.finished_cleanly()) return fail(Result::fail(Status::Corrupt, "the stream does not end where the output does"));
+    if (rc.left() != 0) return fail(Result::fail(Status::Corrupt, "bytes follow the end of the LZMA stream", {"bytes", rc.left()}));
+    status_ = Status::Ok;
     return {};
+}
+
+Result unlzma(std::span<const uint8_t> in, uint8_t props, std::span<uint8_t> out, LzmaProbs& probs,
+              uint32_t& written) {
+    written = 0;
+    LzmaDecoder d;
+    Result r = d.start(in, props, out, probs);
+    if (r.status == Status::Busy) r = d.run(uint32_t(out.size()));
+    if (r.ok()) written = d.written();
+    return r;
 }
 
 } // namespace facet::geom

@@ -93,7 +93,8 @@ struct Carve {
 
 uint32_t pack_memory_bytes(const void* file, uint32_t file_bytes) {
     switch (geom::pack_file_kind(file, file_bytes)) {
-    case geom::PackFileKind::Unknown: return 0;
+    case geom::PackFileKind::Unknown:
+    case geom::PackFileKind::Blocked: return 0;
     case geom::PackFileKind::Pack: return (reinterpret_cast<uintptr_t>(file) & 3) ? file_bytes : 0;
     case geom::PackFileKind::Deflated:
     case geom::PackFileKind::Lzma: return geom::decoded_memory_bytes(file, file_bytes);
@@ -201,6 +202,7 @@ Result Core::load(const void* file, uint32_t file_bytes, void* memory, uint32_t 
     uint32_t bytes = 0;
     switch (geom::pack_file_kind(file, file_bytes)) {
     case geom::PackFileKind::Unknown: return Result::fail(Status::Corrupt, "no pack here (neither FPK1, FPX1 nor FPZ1)", {"pack file"});
+    case geom::PackFileKind::Blocked: return Result::fail(Status::Unsupported, "a blocked pack", {"pack file"});
     case geom::PackFileKind::Pack:
         bytes = pack_file_bytes_;
         if (bytes == 0) return Result::fail(Status::Corrupt, "the pack is longer than the bytes given, or truncated", {"pack file"});

@@ -1,8 +1,13 @@
 // facet-pack: STEP (AP203/AP214/AP242) -> facet pack, with Open CASCADE.
 //
-//   facet-pack model.step -o model.fpk [--plain|--deflate] [--unit U] [--partial] [--quiet]
-//                                                  pack (LZMA unless --plain or --deflate), print a summary
+//   facet-pack model.step -o model.fpk [--plain|--deflate] [--whole] [--unit U] [--partial] [--quiet]
+//                                                  pack, print a summary
 //   facet-pack --check model.fpk                   validate a pack file with the device's code
+//
+// The pack is blocked (pack_format.h): an index the device reads first (parts with their boxes,
+// instances, names), then blocks of about 64 KB decoded, each the pack of a few parts (a larger
+// part alone), LZMA-compressed (--deflate: deflated; --plain: as they are, read in place from
+// flash). --whole writes the whole pack as one (FPX1, FPZ1 or FPK1), as before blocks.
 //
 // Reads with the XCAF reader (units converted to mm, assemblies, colours from styled items),
 // heals each solid and shell with ShapeFix, and writes every face's exact surface, its loops
@@ -16,7 +21,9 @@
 #include "file_io.h"
 #include "occt_to_pack.h"
 #include "reference.h"
+#include "pack_blocks.h"
 #include "pack_io.h"
+#include "geom/pack_index.h"
 #include "pack_writer.h"
 #include "step_reader.h"
 
@@ -52,7 +59,7 @@ using namespace facet;
 namespace {
 
 int usage() {
-    std::fprintf(stderr, "usage: facet-pack MODEL.step -o MODEL.fpk [--plain|--deflate] [--unit mm|cm|m|in|ft] [--partial] [--reference FACES.json] [--quiet]\n"
+    std::fprintf(stderr, "usage: facet-pack MODEL.step -o MODEL.fpk [--plain|--deflate] [--whole] [--unit mm|cm|m|in|ft] [--partial] [--reference FACES.json] [--quiet]\n"
                          "       facet-pack --check MODEL.fpk\n");
     return 2;
 }
@@ -92,7 +99,7 @@ int check(const char* path) {
 
 int main(int argc, char** argv) {
     const char *in = nullptr, *out = nullptr, *reference = nullptr;
-    bool quiet = false, plain = false, deflated = false, partial = false;
+    bool quiet = false, plain = false, deflated = false, partial = false, whole = true; // blocked: once the module reads it
     packer::UnitGuess unit = packer::UnitGuess::BySize;
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--check") && i + 1 < argc) return argc == 3 ? check(argv[i + 1]) : usage();
@@ -101,6 +108,8 @@ int main(int argc, char** argv) {
         else if (!std::strcmp(argv[i], "--plain")) plain = true;
         else if (!std::strcmp(argv[i], "--deflate")) deflated = true;
         else if (!std::strcmp(argv[i], "--partial")) partial = true;
+        else if (!std::strcmp(argv[i], "--whole")) whole = true;
+        else if (!std::strcmp(argv[i], "--blocked")) whole = false;
         else if (!std::strcmp(argv[i], "--reference") && i + 1 < argc && !reference) reference = argv[++i];
         else if (!std::strcmp(argv[i], "--unit") && i + 1 < argc) {
             if (!packer::parse_unit(argv[++i], unit)) {
@@ -163,8 +172,26 @@ int main(int argc, char** argv) {
     }
     if (!quiet) packer::progress(plain ? "writing" : "compressing");
     const std::vector<uint8_t> pack = writer.finish();
-    const std::vector<uint8_t> bytes = plain ? pack : (deflated ? geom::deflate_pack(pack) : geom::lzma_pack(pack));
-    if (bytes.empty()) return die(deflated ? "zlib could not deflate the pack" : "liblzma could not compress the pack");
+    std::vector<uint8_t> bytes;
+    uint32_t blocks = 0;
+    if (!whole) {
+        geom::Pack opened;
+        if (const Result r = opened.open(pack.data(), uint32_t(pack.size())); !r.ok()) {
+            char text[160];
+            describe(r, text, sizeof text);
+            return die(std::string("the pack written does not read back: ") + text);
+        }
+        geom::BlockOptions options;
+        options.store = plain ? geom::BlockStore::Plain : deflated ? geom::BlockStore::Deflated : geom::BlockStore::Lzma;
+        if (!geom::make_blocked(opened, packer::part_boxes(packer.prototypes), options, bytes, error)) return die(error);
+        geom::PackIndex index;
+        blocks = index.open(bytes.data(), uint32_t(bytes.size())).ok() ? uint32_t(index.blocks().size()) : 0;
+        if (blocks == 1) whole = true; // one block: the whole pack as it is, without an index
+    }
+    if (whole) {
+        bytes = plain ? pack : (deflated ? geom::deflate_pack(pack) : geom::lzma_pack(pack));
+        if (bytes.empty()) return die(deflated ? "zlib could not deflate the pack" : "liblzma could not compress the pack");
+    }
     if (!host::write_file(out, bytes.data(), bytes.size(), error)) return die(error);
     if (reference && !host::write_file(reference, packer::reference_json(packer.packed_faces, model.unit_mm), error)) return die(error);
     std::string types;
@@ -174,7 +201,8 @@ int main(int argc, char** argv) {
     if (stats.faces_skipped) std::printf(", %u faces skipped (%s)", stats.faces_skipped, stats.first_problem.c_str());
     std::printf("\n  pack %zu bytes = %.1f%% of the STEP file (%lld bytes)", bytes.size(),
                 100.0 * double(bytes.size()) / double(st.st_size), (long long)st.st_size);
-    if (!plain) std::printf("; %zu bytes decoded", pack.size());
+    if (!plain || !whole) std::printf("; %zu bytes decoded", pack.size());
+    if (!whole) std::printf(" in %u block%s", blocks, blocks == 1 ? "" : "s");
     std::printf("\n");
     for (auto& [k, v] : stats.converted) std::printf("  converted: %u %s\n", v, k.c_str());
     for (size_t a = 0, b; a < model.notes.size(); a = b + 1) {

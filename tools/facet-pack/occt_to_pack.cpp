@@ -1,5 +1,8 @@
 #include "occt_to_pack.h"
 
+#include <BRepBndLib.hxx>
+#include <Bnd_Box.hxx>
+
 #include "clearance.h"
 
 #include <BRepTools.hxx>
@@ -535,6 +538,23 @@ void Packer::add_occurrence(const TopoDS_Shape& shape, bool closed, const std::s
         for (int c = 1; c <= 4; ++c) inst.m[(r - 1) * 4 + (c - 1)] = float(t.Value(r, c));
     w_.name_instance(w_.add_instance(inst), instance);
     ++stats_.instances;
+}
+
+std::vector<geom::PartBox> part_boxes(const std::vector<TopoDS_Shape>& prototypes) {
+    std::vector<geom::PartBox> boxes;
+    for (const TopoDS_Shape& shape : prototypes) {
+        Bnd_Box b;
+        BRepBndLib::AddOptimal(shape, b, false, false);
+        geom::PartBox p{};
+        if (!b.IsVoid()) {
+            double lo[3], hi[3];
+            b.Get(lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]);
+            const double grow = 1e-3 * std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]}) + 1e-3;
+            for (int k = 0; k < 3; ++k) p.min[k] = float(lo[k] - grow), p.max[k] = float(hi[k] + grow);
+        }
+        boxes.push_back(p);
+    }
+    return boxes;
 }
 
 } // namespace facet::packer

@@ -1,5 +1,6 @@
 #pragma once
 // Open CASCADE shapes to pack records: surfaces, curves, pcurves, topology, colours.
+#include "pack_blocks.h"
 #include "pack_writer.h"
 
 #include <TopoDS_Shape.hxx>
@@ -46,5 +47,9 @@ private:
     std::map<const void*, uint32_t> prototypes_; // TShape -> Shells index
     std::map<uint32_t, uint32_t> colour_index_;  // packed RGBA -> Colours index
 };
+
+// Each prototype's box (its own coordinates, mm): Open CASCADE's tight box of its faces, grown
+// by a thousandth of its size and a micrometre (float rounding, the B-rep's tolerances).
+std::vector<geom::PartBox> part_boxes(const std::vector<TopoDS_Shape>& prototypes);
 
 } // namespace facet::packer

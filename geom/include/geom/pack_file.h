@@ -19,7 +19,9 @@
 namespace facet::geom {
 
 // What the bytes at `data` hold, from their first bytes alone.
-enum class PackFileKind : uint8_t { Unknown, Pack, Deflated, Lzma };
+// Blocked: an index and blocks (pack_format.h, geom/pack_index.h), each block itself one of
+// the other kinds.
+enum class PackFileKind : uint8_t { Unknown, Pack, Deflated, Lzma, Blocked };
 PackFileKind pack_file_kind(const void* data, uint32_t available);
 constexpr bool compressed(PackFileKind k) { return k == PackFileKind::Deflated || k == PackFileKind::Lzma; }
 
@@ -33,6 +35,34 @@ constexpr uint32_t kLzmaStateBytes = (sizeof(LzmaProbs) + 3) & ~3u;
 // The memory decode_pack_file() needs for a compressed file: its pack, and after it the LZMA
 // decoder's state; 0 when the head is unreadable.
 uint32_t decoded_memory_bytes(const void* data, uint32_t available);
+
+// A stored pack (a whole one, or one block of a blocked pack) decoded into caller memory a
+// piece at a time: an LZMA file in pieces of about the bytes run() is given, a deflated one in
+// one piece, a plain one copied. `out` must hold pack_bytes (stored_pack_bytes()), 4-byte
+// aligned; `probs` is an LZMA file's decoder state (caller memory, kLzmaStateBytes).
+//
+//   PackDecoder d;
+//   Result r = d.start(file, out, probs);
+//   while (r.status == Status::Busy) r = d.run(64 * 1024);
+//   if (r.ok()) r = pack.open(out.data(), d.pack_bytes());
+class PackDecoder {
+public:
+    Result start(std::span<const uint8_t> file, std::span<uint8_t> out, LzmaProbs& probs);
+    Result run(uint32_t bytes);
+    uint32_t pack_bytes() const { return pack_bytes_; }
+
+private:
+    Result finish(const Result& r, uint32_t written);
+    PackFileKind kind_ = PackFileKind::Unknown;
+    std::span<const uint8_t> stream_;
+    std::span<uint8_t> out_;
+    uint32_t pack_bytes_ = 0;
+    LzmaDecoder lzma_;
+    Result result_ = Result::fail(Status::OutOfRange, "run() before start()");
+};
+
+// The decoded size of a stored pack as its head says (plain: its total), 0 when unreadable.
+uint32_t stored_pack_bytes(const void* data, uint32_t available);
 
 // Makes the file loaded at region[0, loaded) a pack at region[0, bytes). A compressed file is
 // moved to the region's end and decoded to its start: it needs the pack's size plus its own

@@ -285,6 +285,71 @@ struct LzmaHead {
 };
 static_assert(sizeof(LzmaHead) == 16);
 
+// A blocked pack (facet-pack's default): an index, read in place, then blocks. Each block is a
+// pack of its own (the layout above: the faces, edges, curves, surfaces and colours of some
+// shells, no instances, no names), stored as an LZMA file (LzmaHead and stream) or plain, and
+// decoded alone when its shells are needed, so a device holds only what the view needs. The
+// index says what the model is: its parts (a shell: which block holds it, its box, its counts),
+// the instances that place them (pack::Instance, `shell` a part number) and the names.
+//
+//   IndexHeader, SectionEntry[section_count], the index's sections (ids below), then the
+//   blocks at the offsets the Blocks section gives, each 4-byte aligned.
+constexpr char kBlockedMagic[4] = {'F', 'P', 'B', '1'};
+constexpr uint16_t kBlockedVersion = 1;
+constexpr uint32_t kMaxBlockedBytes = 256u << 20; // a larger file is refused as corrupt
+
+struct IndexHeader {
+    char magic[4];          // FPB1
+    uint16_t version;       // kBlockedVersion
+    uint16_t header_bytes;  // sizeof(IndexHeader)
+    uint32_t total_bytes;   // the whole file, blocks included
+    uint32_t crc32;         // of bytes [kIndexCrcFrom, index_bytes): the rest of this header and
+                            // the index (the blocks have their own)
+    uint32_t index_bytes;   // where the index ends (the first block starts at or after it)
+    uint32_t section_count;
+    uint32_t flags;         // reserved, 0
+    float bbox_min[3];      // the placed model (every instance's part box, placed), mm
+    float bbox_max[3];
+    float source_unit_mm;
+    uint32_t reserved[2];
+};
+static_assert(sizeof(IndexHeader) == 64, "blocked pack header is 64 bytes");
+constexpr uint32_t kIndexCrcFrom = 16; // the field after crc32
+
+// The index's sections: Blocks and Parts, and the pack's own Instances, Names, ShellNames (per
+// part) and InstanceNames records.
+enum class IndexSectionId : uint32_t {
+    Instances = uint32_t(SectionId::Instances),
+    Names = uint32_t(SectionId::Names),
+    PartNames = uint32_t(SectionId::ShellNames),
+    InstanceNames = uint32_t(SectionId::InstanceNames),
+    Blocks = 16,
+    Parts = 17,
+};
+
+struct Block {
+    uint32_t offset;       // from the file's start, 4-byte aligned, after the index
+    uint32_t stored_bytes; // as stored: an LZMA file, or a plain pack
+    uint32_t pack_bytes;   // decoded (= stored_bytes for a plain one)
+    uint32_t first_part;   // its parts are [first_part, first_part + part_count), its shells in order
+    uint32_t part_count;
+    float box_min[3];      // its parts where their instances place them, mm (empty: min > max)
+    float box_max[3];
+};
+static_assert(sizeof(Block) == 44);
+
+// A part: one shell of a block. The block's shells, faces and edges are its parts' in order:
+// a part's faces follow the faces of the parts before it in its block, and so do its edges.
+struct Part {
+    uint32_t block;      // which block holds it; its shell there is its place among the block's parts
+    uint32_t face_count; // its shell's
+    uint32_t edge_count; // edges its faces use (each once)
+    uint32_t closed;     // 1: a closed solid
+    float box_min[3];    // its shell's box, shell coordinates (mm): every point of its faces
+    float box_max[3];
+};
+static_assert(sizeof(Part) == 40);
+
 // CRC-32 (IEEE 802.3, reflected, as zlib) for the header's checksum.
 uint32_t crc32(const void* data, uint32_t size, uint32_t crc = 0);
 

@@ -32,6 +32,36 @@ struct LzmaProbs {
     uint16_t p[kCount];
 };
 
+// The same a piece at a time: start(), then run() until it is no longer Busy. The decoder keeps
+// where it stands (about 60 bytes); `in`, `out` and `probs` must stay put meanwhile.
+//
+//   LzmaDecoder d;
+//   Result r = d.start(stream, props, out, probs);
+//   while (r.status == Status::Busy) r = d.run(64 * 1024); // about 64 KB of output a piece
+class LzmaDecoder {
+public:
+    Result start(std::span<const uint8_t> in, uint8_t props, std::span<uint8_t> out, LzmaProbs& probs);
+    // About `bytes` more output (a match under way is finished): Busy while some is left, then
+    // Ok once all of `out` is written and the stream checked to its end, or the failure (which
+    // every later call returns again).
+    Result run(uint32_t bytes);
+    uint32_t written() const { return pos_; }
+
+private:
+    Result fail(const Result& r);
+
+    const uint8_t* in_ = nullptr;
+    const uint8_t* end_ = nullptr;
+    uint32_t range_ = 0, code_ = 0;
+    bool overrun_ = false;
+    uint16_t* probs_ = nullptr;
+    uint8_t* out_ = nullptr;
+    uint32_t size_ = 0, pos_ = 0, state_ = 0, rep_[4] = {};
+    uint32_t lc_ = 0, pb_mask_ = 0, lp_mask_ = 0;
+    Status status_ = Status::OutOfRange;
+    Result failure_ = Result::fail(Status::OutOfRange, "run() before start()");
+};
+
 Result unlzma(std::span<const uint8_t> in, uint8_t props, std::span<uint8_t> out, LzmaProbs& probs,
               uint32_t& written);
 

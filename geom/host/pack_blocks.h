@@ -1,0 +1,38 @@
+#pragma once
+// Blocked packs on the host (pack_format.h: an index, then blocks each a pack of some shells):
+// made from a whole pack by facet-pack, and joined back into a whole one for the host tools
+// (the mesher, facet-measure), which read every kind of pack file through load_pack_file().
+// Host only (allocates).
+#include "geom/pack.h"
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace facet::geom {
+
+// A shell's box in its own coordinates (mm).
+struct PartBox {
+    float min[3], max[3];
+};
+
+enum class BlockStore : uint8_t { Lzma, Deflated, Plain };
+
+struct BlockOptions {
+    uint32_t block_bytes = 64 * 1024; // a block's decoded size to aim at: shells are grouped until
+                                      // the next would pass it (a larger shell is a block alone)
+    BlockStore store = BlockStore::Lzma;
+};
+
+// The blocked pack of `whole` (validated): its shells, in order, grouped into blocks; its
+// instances and names in the index. `boxes`: one per shell (the packer's exact boxes); empty:
+// each shell's box from its vertices' and curves' control points is used.
+bool make_blocked(const Pack& whole, const std::vector<PartBox>& boxes, const BlockOptions& options,
+                  std::vector<uint8_t>& out, std::string& error);
+
+// The whole pack a blocked file holds (each block decoded and validated with the device's code):
+// the parts' shells in part order, then the index's instances and names.
+bool join_blocked(std::span<const uint8_t> file, std::vector<uint8_t>& whole, std::string& error);
+
+} // namespace facet::geom

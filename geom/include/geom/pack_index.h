@@ -1,0 +1,63 @@
+#pragma once
+// Reading a blocked pack's index in place (pack_format.h: IndexHeader, Blocks, Parts, and the
+// instances and names), after validating all of it; the blocks themselves are read when needed
+// (block_file(), then geom/pack_file.h and geom/pack.h).
+//
+//   geom::PackIndex index;
+//   if (Result r = index.open(file, bytes); !r.ok()) print(con, "pack: {}\n", r);
+//       -> "pack: index section Parts record 3: block index out of range"
+//
+// open() checks the header, the index's CRC, every section's bounds and record size, that the
+// blocks lie in the file after the index, in order, and hold every part once, and every index,
+// box and placement. Nothing is read before it is checked.
+#include "geom/pack_format.h"
+#include "core/status.h"
+
+#include <cstdint>
+#include <span>
+
+namespace facet::geom {
+
+class PackIndex {
+public:
+    // Corrupt, with the bad record as the place, unless every check passes. `size`: the bytes
+    // available at `data` (the file's own size is in its header: it may be shorter).
+    Result open(const void* data, uint32_t size);
+
+    const pack::IndexHeader& header() const { return *header_; }
+    std::span<const pack::Block> blocks() const { return blocks_; }
+    std::span<const pack::Part> parts() const { return parts_; }
+    std::span<const pack::Instance> instances() const { return instances_; }
+    // Block b as stored: an LZMA file or a plain pack (geom/pack_file.h reads either).
+    std::span<const uint8_t> block_file(uint32_t b) const {
+        return {base_ + blocks_[b].offset, blocks_[b].stored_bytes};
+    }
+    // Names from the STEP file: "" when the file has none.
+    const char* model_name() const { return names_.empty() ? "" : names_.data(); }
+    const char* part_name(uint32_t p) const { return name_at(part_names_, p); }
+    const char* instance_name(uint32_t i) const { return name_at(instance_names_, i); }
+
+private:
+    Result fail(const char* what, uint32_t section, uint32_t index);
+    Result check_records();
+    const char* name_at(std::span<const uint32_t> table, uint32_t i) const {
+        return i < table.size() && table[i] != pack::kNoIndex ? names_.data() + table[i] : "";
+    }
+
+    const uint8_t* base_ = nullptr;
+    const pack::IndexHeader* header_ = nullptr;
+    std::span<const pack::Block> blocks_;
+    std::span<const pack::Part> parts_;
+    std::span<const pack::Instance> instances_;
+    std::span<const char> names_;
+    std::span<const uint32_t> part_names_, instance_names_;
+};
+
+// The place of record `index` of index section `id` ("index section Parts record" 3).
+Place index_place(uint32_t id, uint32_t index);
+
+// The first entry of a name table that is neither kNoIndex nor the start of a string of `pool`
+// (0-terminated strings), or kNoIndex when every one is. Shared by the pack's and the index's checks.
+uint32_t first_bad_name(std::span<const char> pool, std::span<const uint32_t> table);
+
+} // namespace facet::geom

@@ -1,0 +1,163 @@
+#include "geom/pack_index.h"
+
+#include <cmath>
+#include <cstddef>
+#include <cstring>
+
+namespace facet::geom {
+namespace {
+
+using namespace facet::pack;
+
+bool finite(float f) { return std::fabs(f) <= kMaxMagnitude; }
+
+bool box_ok(const float lo[3], const float hi[3]) {
+    for (int k = 0; k < 3; ++k) {
+        if (!finite(lo[k]) || !finite(hi[k]) || lo[k] > hi[k]) return false;
+    }
+    return true;
+}
+
+} // namespace
+
+uint32_t first_bad_name(std::span<const char> pool, std::span<const uint32_t> table) {
+    for (uint32_t i = 0; i < table.size(); ++i) {
+        const uint32_t at = table[i];
+        if (at != kNoIndex && (at >= pool.size() || (at > 0 && pool[at - 1] != 0))) return i;
+    }
+    return kNoIndex;
+}
+
+Place index_place(uint32_t id, uint32_t index) {
+    switch (IndexSectionId(id)) {
+    case IndexSectionId::Instances: return {"index section Instances record", index};
+    case IndexSectionId::Names: return {"index section Names byte", index};
+    case IndexSectionId::PartNames: return {"index section PartNames record", index};
+    case IndexSectionId::InstanceNames: return {"index section InstanceNames record", index};
+    case IndexSectionId::Blocks: return {"index section Blocks record", index};
+    case IndexSectionId::Parts: return {"index section Parts record", index};
+    }
+    return {"index header"};
+}
+
+Result PackIndex::fail(const char* what, uint32_t section, uint32_t index) {
+    *this = PackIndex{};
+    return Result::fail(Status::Corrupt, what, index_place(section, index));
+}
+
+Result PackIndex::open(const void* data, uint32_t size) {
+    *this = PackIndex{};
+    const uint8_t* base = static_cast<const uint8_t*>(data);
+    if (!data || (reinterpret_cast<uintptr_t>(data) & 3)) return fail("the index is not 4-byte aligned", 0, 0);
+    if (size < sizeof(IndexHeader)) return fail("shorter than the index header (truncated)", 0, 0);
+    const IndexHeader* h = reinterpret_cast<const IndexHeader*>(base);
+    if (std::memcmp(h->magic, kBlockedMagic, 4) != 0) return fail("not a blocked pack (bad magic)", 0, 0);
+    if (h->version != kBlockedVersion) return fail("unsupported version", 0, 0);
+    if (h->header_bytes != sizeof(IndexHeader)) return fail("unexpected header size", 0, 0);
+    if (h->flags != 0 || h->reserved[0] != 0 || h->reserved[1] != 0) return fail("the header's flags or reserved fields are not 0", 0, 0);
+    if (h->total_bytes > size) return fail("the file is longer than the bytes given (truncated)", 0, 0);
+    if (h->total_bytes > kMaxBlockedBytes) return fail("larger than the 256 MiB limit", 0, 0);
+    if (h->index_bytes < sizeof(IndexHeader) || h->index_bytes > h->total_bytes || (h->index_bytes & 3)) {
+        return fail("the index's size is out of range", 0, 0);
+    }
+    if (h->section_count > kMaxSections) return fail("too many sections", 0, 0);
+    const uint64_t table_end = sizeof(IndexHeader) + uint64_t(h->section_count) * sizeof(SectionEntry);
+    if (table_end > h->index_bytes) return fail("section table runs past the index", 0, 0);
+    static_assert(offsetof(IndexHeader, crc32) + sizeof(uint32_t) == kIndexCrcFrom);
+    if (pack::crc32(base + kIndexCrcFrom, h->index_bytes - kIndexCrcFrom) != h->crc32) return fail("CRC mismatch", 0, 0);
+    if (!box_ok(h->bbox_min, h->bbox_max)) return fail("bounding box is not finite, beyond +-1e8 or inverted", 0, 0);
+    if (!finite(h->source_unit_mm) || !(h->source_unit_mm > 0)) return fail("bad source unit", 0, 0);
+
+    const SectionEntry* table = reinterpret_cast<const SectionEntry*>(base + sizeof(IndexHeader));
+    uint32_t seen = 0;
+    for (uint32_t i = 0; i < h->section_count; ++i) {
+        const SectionEntry& s = table[i];
+        uint32_t record = 0;
+        switch (IndexSectionId(s.id)) {
+        case IndexSectionId::Instances: record = sizeof(Instance); break;
+        case IndexSectionId::Names: record = 1; break;
+        case IndexSectionId::PartNames:
+        case IndexSectionId::InstanceNames: record = 4; break;
+        case IndexSectionId::Blocks: record = sizeof(pack::Block); break;
+        case IndexSectionId::Parts: record = sizeof(pack::Part); break;
+        default: continue; // unknown sections are skipped
+        }
+        if (seen & (1u << s.id)) return fail("section appears twice", s.id, 0);
+        seen |= 1u << s.id;
+        if (s.record_bytes != record) return fail("record size does not match this reader", s.id, 0);
+        if (s.offset & 3) return fail("section offset is not 4-byte aligned", s.id, 0);
+        if (s.offset < table_end || uint64_t(s.offset) + uint64_t(s.count) * s.record_bytes > h->index_bytes) {
+            return fail("section lies outside the index (bad offset or count)", s.id, 0);
+        }
+        const uint8_t* at = base + s.offset;
+        switch (IndexSectionId(s.id)) {
+        case IndexSectionId::Instances: instances_ = {reinterpret_cast<const Instance*>(at), s.count}; break;
+        case IndexSectionId::Names: names_ = {reinterpret_cast<const char*>(at), s.count}; break;
+        case IndexSectionId::PartNames: part_names_ = {reinterpret_cast<const uint32_t*>(at), s.count}; break;
+        case IndexSectionId::InstanceNames: instance_names_ = {reinterpret_cast<const uint32_t*>(at), s.count}; break;
+        case IndexSectionId::Blocks: blocks_ = {reinterpret_cast<const pack::Block*>(at), s.count}; break;
+        case IndexSectionId::Parts: parts_ = {reinterpret_cast<const pack::Part*>(at), s.count}; break;
+        }
+    }
+    base_ = base;
+    header_ = h;
+    return check_records();
+}
+
+Result PackIndex::check_records() {
+    constexpr uint32_t B = uint32_t(IndexSectionId::Blocks), P = uint32_t(IndexSectionId::Parts);
+    constexpr uint32_t I = uint32_t(IndexSectionId::Instances), N = uint32_t(IndexSectionId::Names);
+    if (blocks_.empty()) return fail("no blocks", B, 0);
+    if (parts_.empty()) return fail("no parts", P, 0);
+    if (instances_.empty()) return fail("no instances", I, 0);
+    // The blocks follow the index in order, and each holds the parts after the previous one's.
+    uint64_t after = header_->index_bytes;
+    uint32_t next_part = 0;
+    for (uint32_t b = 0; b < blocks_.size(); ++b) {
+        const pack::Block& k = blocks_[b];
+        if ((k.offset & 3) || k.offset < after || uint64_t(k.offset) + k.stored_bytes > header_->total_bytes || k.stored_bytes == 0) {
+            return fail("the block lies outside the file, overlaps the one before it or is empty", B, b);
+        }
+        after = uint64_t(k.offset) + k.stored_bytes;
+        if (k.pack_bytes < sizeof(Header) || k.pack_bytes > kMaxBytes) return fail("the block's decoded size is out of range", B, b);
+        if (k.first_part != next_part || k.part_count == 0 || uint64_t(k.first_part) + k.part_count > parts_.size()) {
+            return fail("the block's parts do not follow the block before it's", B, b);
+        }
+        next_part += k.part_count;
+        const bool empty = k.box_min[0] > k.box_max[0];
+        if (!empty && !box_ok(k.box_min, k.box_max)) return fail("bounding box is not finite, beyond +-1e8 or inverted", B, b);
+    }
+    if (next_part != parts_.size()) return fail("parts no block holds", P, next_part);
+    for (uint32_t p = 0; p < parts_.size(); ++p) {
+        const pack::Part& part = parts_[p];
+        if (part.block >= blocks_.size() || p < blocks_[part.block].first_part ||
+            p >= blocks_[part.block].first_part + blocks_[part.block].part_count) {
+            return fail("the part's block does not hold it", P, p);
+        }
+        if (part.closed > 1) return fail("bad closed flag", P, p);
+        if (!box_ok(part.box_min, part.box_max)) return fail("bounding box is not finite, beyond +-1e8 or inverted", P, p);
+    }
+    for (uint32_t i = 0; i < instances_.size(); ++i) {
+        if (instances_[i].shell >= parts_.size()) return fail("part index out of range", I, i);
+        for (const float f : instances_[i].m) {
+            if (!finite(f)) return fail("placement is NaN, infinite or beyond +-1e8", I, i);
+        }
+    }
+    if (!names_.empty() && names_.back() != 0) return fail("the last name is not ended by a 0 byte", N, uint32_t(names_.size() - 1));
+    if (names_.size() & 3) return fail("not padded to a multiple of 4 bytes", N, 0);
+    const struct {
+        std::span<const uint32_t> table;
+        size_t count;
+        IndexSectionId id;
+    } tables[] = {{part_names_, parts_.size(), IndexSectionId::PartNames}, {instance_names_, instances_.size(), IndexSectionId::InstanceNames}};
+    for (const auto& t : tables) {
+        if (t.table.empty()) continue;
+        if (t.table.size() != t.count) return fail("one name per record of its section is needed", uint32_t(t.id), 0);
+        if (const uint32_t bad = first_bad_name(names_, t.table); bad != kNoIndex) {
+            return fail("the name does not start a string of Names", uint32_t(t.id), bad);
+        }
+    }
+    return {};
+}
+
+} // namespace facet::geom
