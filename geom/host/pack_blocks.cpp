@@ -325,4 +325,19 @@ bool join_blocked(std::span<const uint8_t> file, std::vector<uint8_t>& whole, st
     return true;
 }
 
+std::vector<uint8_t> combine_packs(std::span<const Pack> packs, float spacing_mm) {
+    PackWriter w;
+    uint32_t placed = 0;
+    for (const Pack& p : packs) {
+        Copier copy(p, w);
+        for (uint32_t s = 0; s < p.shells().size(); ++s) {
+            uint32_t edges = 0;
+            const uint32_t shell = copy.shell(s, edges);
+            w.name_shell(shell, p.shell_name(s));
+            (void)w.add_instance({shell, {1, 0, 0, spacing_mm * float(placed++), 0, 1, 0, 0, 0, 0, 1, 0}});
+        }
+    }
+    return w.finish();
+}
+
 } // namespace facet::geom

@@ -35,4 +35,9 @@ bool make_blocked(const Pack& whole, const std::vector<PartBox>& boxes, const Bl
 // the parts' shells in part order, then the index's instances and names.
 bool join_blocked(std::span<const uint8_t> file, std::vector<uint8_t>& whole, std::string& error);
 
+// One whole pack of several packs' shells (each pack's shells in order, then the next's), each
+// shell placed once, the k-th of all moved `spacing_mm` along x from the one before: an
+// assembly of shapes built in code, for tests.
+std::vector<uint8_t> combine_packs(std::span<const Pack> packs, float spacing_mm);
+
 } // namespace facet::geom

@@ -45,12 +45,13 @@ Vec2 detail::Grid::to_uv(cdt::Point g) const {
     return {(float(g.x + kGridHalf) / q + x0) / su, (float(g.y + kGridHalf) / q + y0) / sv};
 }
 
-float default_tolerance(const Pack& pack) {
-    const pack::Header& h = pack.header();
-    const Vec3 d{h.bbox_max[0] - h.bbox_min[0], h.bbox_max[1] - h.bbox_min[1], h.bbox_max[2] - h.bbox_min[2]};
+float default_tolerance(const float box_min[3], const float box_max[3]) {
+    const Vec3 d{box_max[0] - box_min[0], box_max[1] - box_min[1], box_max[2] - box_min[2]};
     const float diag = length(d);
     return diag > 0 ? diag * 0.001f : 0.01f;
 }
+
+float default_tolerance(const Pack& pack) { return default_tolerance(pack.header().bbox_min, pack.header().bbox_max); }
 
 namespace {
 

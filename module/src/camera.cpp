@@ -80,7 +80,7 @@ float Camera::focal_px(uint16_t width, uint16_t height) {
 }
 
 Transform Camera::transform(const Scene& scene, uint32_t index, uint16_t width, uint16_t height) const {
-    const pack::Instance& inst = scene.pack().instances()[index];
+    const pack::Instance& inst = scene.instances()[index];
     Transform in{};
     float R[9];
     rotation(R);
@@ -106,7 +106,7 @@ Transform Camera::transform(const Scene& scene, uint32_t index, uint16_t width, 
     for (int j = 0; j < 3; ++j) in.light[j] = round_to_int((A[j] * L[0] + A[3 + j] * L[1] + A[6 + j] * L[2]) * 16384.0f);
     const float det = m[0] * (m[5] * m[10] - m[6] * m[9]) - m[1] * (m[4] * m[10] - m[6] * m[8]) + m[2] * (m[4] * m[9] - m[5] * m[8]);
     in.mirrored = det < 0;
-    in.closed = scene.pack().shells()[inst.shell].closed != 0;
+    in.closed = scene.part(inst.shell).closed;
 
     in.dist = eye_distance(view_.zoom);
     in.near = kRadiusV / 64;

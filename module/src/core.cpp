@@ -1,6 +1,7 @@
 #include "core.h"
 
 #include "geom/pack_file.h"
+#include "loader.h"
 
 #include <cstring>
 #include <new>
@@ -91,16 +92,7 @@ struct Carve {
 
 } // namespace
 
-uint32_t pack_memory_bytes(const void* file, uint32_t file_bytes) {
-    switch (geom::pack_file_kind(file, file_bytes)) {
-    case geom::PackFileKind::Unknown:
-    case geom::PackFileKind::Blocked: return 0;
-    case geom::PackFileKind::Pack: return (reinterpret_cast<uintptr_t>(file) & 3) ? file_bytes : 0;
-    case geom::PackFileKind::Deflated:
-    case geom::PackFileKind::Lzma: return geom::decoded_memory_bytes(file, file_bytes);
-    }
-    return 0;
-}
+uint32_t pack_memory_bytes(const void* file, uint32_t file_bytes) { return module::pack_memory_need(file, file_bytes); }
 
 Core::Core(const Config& config, Carver& k)
     : config_(config), emitter_{relay, this}, painter_(scene_, raster_), scheduler_(scene_, emitter_),
@@ -192,52 +184,19 @@ Result Core::load(const void* file, uint32_t file_bytes, void* memory, uint32_t 
     presenter_.reset();
     scene_.close();
     pack_bytes_ = pack_file_bytes_ = 0;
-    auto* mem = static_cast<uint8_t*>(memory);
-    const auto* in = static_cast<const uint8_t*>(file);
-    if (!mem) memory_bytes = 0;
-    const bool inside = mem && in >= mem && in < mem + memory_bytes;
-    if (!file) return Result::fail(Status::OutOfRange, "no pack file");
-    pack_file_bytes_ = geom::pack_file_bytes(file, file_bytes);
-    const uint8_t* pack = in;
-    uint32_t bytes = 0;
-    switch (geom::pack_file_kind(file, file_bytes)) {
-    case geom::PackFileKind::Unknown: return Result::fail(Status::Corrupt, "no pack here (neither FPK1, FPX1 nor FPZ1)", {"pack file"});
-    case geom::PackFileKind::Blocked: return Result::fail(Status::Unsupported, "a blocked pack", {"pack file"});
-    case geom::PackFileKind::Pack:
-        bytes = pack_file_bytes_;
-        if (bytes == 0) return Result::fail(Status::Corrupt, "the pack is longer than the bytes given, or truncated", {"pack file"});
-        if (reinterpret_cast<uintptr_t>(in) & 3) { // copied where it can be read in place
-            if (memory_bytes < bytes || (reinterpret_cast<uintptr_t>(mem) & 3)) {
-                return Result::fail(Status::Full, "an unaligned pack needs 4-byte aligned pack memory of its size", {"pack file"});
-            }
-            std::memmove(mem, in, bytes);
-            pack = mem;
-        }
-        break;
-    case geom::PackFileKind::Deflated:
-    case geom::PackFileKind::Lzma: {
-        work(Event::Kind::WorkBegin, Work::Unpack, 0);
-        Result r;
-        if (!mem || (reinterpret_cast<uintptr_t>(mem) & 3)) {
-            r = Result::fail(Status::Full, "a compressed pack needs 4-byte aligned pack memory", {"pack file"});
-        } else if (inside) { // the file was loaded into the pack memory: inflated in place
-            const uint32_t offset = uint32_t(in - mem);
-            if (offset) std::memmove(mem, in, memory_bytes - offset < file_bytes ? memory_bytes - offset : file_bytes);
-            r = geom::unpack_in_place(mem, memory_bytes, memory_bytes - offset, bytes);
-        } else {
-            r = geom::decode_pack_file({in, file_bytes}, {mem, memory_bytes}, bytes);
-        }
-        work(Event::Kind::WorkEnd, Work::Unpack, 0);
-        if (!r.ok()) return r;
-        pack = mem;
-        break;
-    }
-    }
-    geom::Pack p;
-    if (Result r = p.open(pack, bytes); !r.ok()) return r;
-    if (Result r = scene_.open(p); !r.ok()) return r;
-    pack_bytes_ = bytes;
-    default_tolerance_ = geom::default_tolerance(p);
+    const geom::PackFileKind kind = file ? geom::pack_file_kind(file, file_bytes) : geom::PackFileKind::Unknown;
+    const bool decoding = kind != geom::PackFileKind::Pack && kind != geom::PackFileKind::Unknown;
+    if (decoding) work(Event::Kind::WorkBegin, Work::Unpack, 0);
+    const uint32_t file_size = file ? geom::pack_file_bytes(file, file_bytes) : 0; // (a file in the pack memory is decoded over)
+    module::Unpacked unpacked;
+    const Result decoded = module::unpack(file, file_bytes, memory, memory_bytes, unpacked);
+    if (decoding) work(Event::Kind::WorkEnd, Work::Unpack, 0);
+    if (!decoded.ok()) return decoded;
+    if (Result r = module::open_unpacked(unpacked, scene_); !r.ok()) return r;
+    pack_file_bytes_ = file_size;
+    pack_bytes_ = unpacked.bytes;
+    const uint32_t bytes = pack_bytes_;
+    default_tolerance_ = geom::default_tolerance(scene_.box_min(), scene_.box_max());
     camera_.fit();
     user_moved_ = false;
     picked_count_ = 0;
@@ -250,8 +209,8 @@ Result Core::load(const void* file, uint32_t file_bytes, void* memory, uint32_t 
     presenter_.overlay().set_lines(nullptr, 0);
     Event e{};
     e.kind = Event::Kind::Loaded;
-    e.loaded = {uint32_t(p.faces().size()), uint32_t(p.edges().size()), uint32_t(p.shells().size()),
-                uint32_t(p.instances().size()), bytes, pack_file_bytes_};
+    e.loaded = {scene_.face_count(), scene_.edge_count(), scene_.part_count(), uint32_t(scene_.instances().size()), bytes,
+                pack_file_bytes_};
     emit(e);
     scheduler_.begin_pass(default_tolerance_);
     return {};
@@ -424,12 +383,13 @@ void Core::act(Action a) {
 
 Stats Core::stats() const {
     const module::Totals& t = scene_.totals();
-    const geom::Pack& p = scene_.pack();
     // The plan at this model's peaks (the patches only for a model with free-form surfaces).
-    const Capacity used{uint32_t(p.faces().size()), uint32_t(p.edges().size()), t.samples_peak, t.face_points_peak,
-                        config_.capacity.loops,     t.slivers_peak,              t.vertices_peak, t.triangles_peak};
+    const Capacity used{scene_.face_count(), scene_.edge_count(), t.samples_peak,   t.face_points_peak,
+                        config_.capacity.loops, t.slivers_peak,   t.vertices_peak, t.triangles_peak};
     bool free_form = false;
-    for (const pack::Surface& s : p.surfaces()) free_form = free_form || s.type == uint8_t(pack::SurfaceType::BSpline);
+    for (uint32_t b = 0; scene_.loaded() && b < scene_.block_count(); ++b) {
+        for (const pack::Surface& s : scene_.block(b).pack.surfaces()) free_form = free_form || s.type == uint8_t(pack::SurfaceType::BSpline);
+    }
     const uint64_t peak = scene_.loaded() ? layout_bytes(used, free_form ? geom::kPatchCacheWords : 0) : core_bytes();
     return {t.faces, t.done, t.failed, t.triangles, t.vertices, scheduler_.pass(), t.mesh_bytes, t.arena_peak_bytes,
             pack_bytes_, pack_file_bytes_, uint32_t(peak), scheduler_.tolerance(), painter_.refused()};

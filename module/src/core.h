@@ -4,6 +4,7 @@
 #include "controls.h"
 #include "fit.h"
 #include "facet/viewer.h"
+#include "geom/measure.h"
 #include "painter.h"
 #include "presenter.h"
 #include "scene.h"
@@ -105,6 +106,7 @@ private:
     uint32_t picked_count_ = 0;
     uint8_t next_view_ = 0; // the toolbar's VIEW button: the next standard view
     void picked(const Event& e); // a pick: highlight, measure, the panel
+    Result describe(const Picked& p, geom::FaceGeometry& g) const; // the picked face's exact geometry, placed
     void highlight();            // the painter's highlight from picked_
     void show_measurement();
     void focus(); // the painter's chosen part and see-through focus

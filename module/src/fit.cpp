@@ -27,10 +27,7 @@ void Framer::start(uint16_t width, uint16_t height, FreeArea taken, uint32_t ins
 
 bool Framer::run(const Scene& scene, Camera& camera, uint32_t units) {
     if (!busy_) return true;
-    const geom::Pack& pack = scene.pack();
-    const auto instances = pack.instances();
-    const auto loops = pack.loops();
-    const auto coedges = pack.coedges();
+    const auto instances = scene.instances();
     const geom::EdgeSamples& samples = scene.samples();
     uint32_t budget = units * kPointsPerUnit;
     Projected p;
@@ -50,14 +47,14 @@ bool Framer::run(const Scene& scene, Camera& camera, uint32_t units) {
             ++instance_;
             continue;
         }
-        const pack::Shell& sh = pack.shells()[instances[instance_].shell];
+        const Part sh = scene.part(instances[instance_].shell);
         if (!have_transform_) {
             t_ = camera.transform(scene, instance_, width_, height_);
             have_transform_ = true;
             face_ = sh.first_face, phase_ = 0, k_ = 0;
             budget = budget > 32 ? budget - 32 : 0;
         }
-        if (face_ >= sh.first_face + sh.face_count || face_ >= pack.faces().size()) {
+        if (face_ >= sh.first_face + sh.face_count) {
             ++instance_;
             have_transform_ = false;
             continue;
@@ -67,7 +64,10 @@ bool Framer::run(const Scene& scene, Camera& camera, uint32_t units) {
             continue;
         }
         const FaceInfo& F = scene.face(face_);
-        const pack::Face& PF = pack.faces()[face_];
+        const Block& block = scene.block_of_face(face_);
+        const auto loops = block.pack.loops();
+        const auto coedges = block.pack.coedges();
+        const pack::Face& PF = block.pack.faces()[face_ - block.first_face];
         if (phase_ == 0) { // the face's mesh
             if (F.state == FaceState::Done) {
                 for (; k_ < F.vertex_count && budget > 0; ++k_, --budget) {
@@ -88,7 +88,7 @@ bool Framer::run(const Scene& scene, Camera& camera, uint32_t units) {
             if (loop_ < PF.first_loop + PF.loop_count) coedge_ = loops[loop_].first_coedge;
             continue;
         }
-        const uint32_t e = coedges[coedge_].edge(), n = samples.count[e];
+        const uint32_t e = block.first_edge + coedges[coedge_].edge(), n = samples.count[e];
         for (; k_ < n && budget > 0; ++k_, --budget) {
             t_.project(scene.sample_q(samples.first[e] + k_), p);
             o_.add(p);

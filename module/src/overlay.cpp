@@ -120,7 +120,7 @@ void Overlay::set_chosen(uint32_t part) {
 }
 
 void Overlay::scroll(int32_t rows) {
-    const uint32_t count = scene_ && scene_->loaded() ? uint32_t(scene_->pack().instances().size()) : 0;
+    const uint32_t count = scene_ && scene_->loaded() ? uint32_t(scene_->instances().size()) : 0;
     const uint32_t shown = part_rows();
     const int64_t last = count > shown ? int64_t(count - shown) : 0;
     int64_t first = int64_t(first_row_) + rows;
@@ -144,7 +144,7 @@ Overlay::PartsHit Overlay::parts_at(int16_t x, int16_t y) const {
         return h;
     }
     const uint32_t row = uint32_t(dy - kRow) / uint32_t(kRow);
-    const uint32_t count = scene_ && scene_->loaded() ? uint32_t(scene_->pack().instances().size()) : 0;
+    const uint32_t count = scene_ && scene_->loaded() ? uint32_t(scene_->instances().size()) : 0;
     if (row >= part_rows() || first_row_ + row >= count) return h;
     h.part = first_row_ + row;
     h.kind = x < 22 ? PartsHit::Kind::Box : PartsHit::Kind::Row;
@@ -239,8 +239,7 @@ void Overlay::slider_bar(const render::Target& t) const {
 void Overlay::parts_list(const render::Target& t) const {
     const Area p = parts_panel();
     if (!scene_ || !scene_->loaded() || p.height < kRow + kPartsFooter) return;
-    const geom::Pack& pack = scene_->pack();
-    const uint32_t count = uint32_t(pack.instances().size());
+    const uint32_t count = uint32_t(scene_->instances().size());
     render::fill_rect(t, p.x, p.y, p.width, p.height, kEdge);
     render::fill_rect(t, p.x, p.y, p.width - 1, p.height, kBar);
     char text[48];
@@ -260,7 +259,7 @@ void Overlay::parts_list(const render::Target& t) const {
         // The box: filled when the part is shown.
         render::fill_rect(t, p.x + 5, y + 4, 12, 12, shown ? kText : kDim);
         if (!shown) render::fill_rect(t, p.x + 7, y + 6, 8, 8, part == chosen_ ? kButtonOn : kBar);
-        const char* name = pack.shell_name(pack.instances()[part].shell);
+        const char* name = scene_->part_name(scene_->instances()[part].shell);
         format(text, sizeof text, "{} {}", part + 1, *name ? name : "(unnamed)");
         const int32_t room = (p.width - 26) / render::kCellWidth;
         if (room < int32_t(sizeof text)) text[room > 0 ? room : 0] = 0;

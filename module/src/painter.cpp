@@ -261,15 +261,17 @@ uint32_t Painter::face_edges(uint32_t f, const Transform& t, Rows rows, bool onc
         const DrawVertex& v = scene_.vertices()[info.first_vertex];
         if (t.hides_plane(v.p, v.n)) return 0;
     }
-    const geom::Pack& pack = scene_.pack();
-    const pack::Face& F = pack.faces()[f];
+    const Block& block = scene_.block_of_face(f);
+    const geom::Pack& pack = block.pack;
+    const pack::Face& F = pack.faces()[f - block.first_face];
     uint32_t work = 1;
     for (uint32_t l = F.first_loop; l < F.first_loop + F.loop_count; ++l) {
         const pack::Loop& L = pack.loops()[l];
         for (uint32_t c = L.first_coedge; c < L.first_coedge + L.coedge_count; ++c) {
             const pack::Coedge& C = pack.coedges()[c];
             if (C.seam() != pack::Seam::None) continue; // a periodic surface's seam is no B-rep edge to the eye
-            const uint32_t e = C.edge();
+            const uint32_t local = C.edge(), e = block.first_edge + local;
+            if (pack.edges()[local].curve == pack::kNoIndex) continue; // a pole: nothing to draw
             if (once) {
                 if (mem_.edge_drawn[e]) continue;
                 mem_.edge_drawn[e] = 1;
@@ -281,8 +283,6 @@ uint32_t Painter::face_edges(uint32_t f, const Transform& t, Rows rows, bool onc
 }
 
 uint32_t Painter::edge(uint32_t e, const Transform& t) {
-    const pack::Edge& E = scene_.pack().edges()[e];
-    if (E.curve == pack::kNoIndex) return 0; // a pole: nothing to draw
     const geom::EdgeSamples& samples = scene_.samples();
     const uint32_t first = samples.first[e], n = samples.count[e];
     Projected prev{}, cur{};

@@ -52,19 +52,23 @@ void Core::highlight() {
                            picked_count_ > 1 ? picked_[1].face : ~0u, picked_count_ > 1 ? picked_[1].instance : ~0u);
 }
 
+Result Core::describe(const Picked& p, geom::FaceGeometry& g) const {
+    const module::Block& b = scene_.block_of_face(p.face);
+    return geom::describe_face(b.pack, p.face - b.first_face, scene_.instances()[p.instance].m, g);
+}
+
 void Core::show_measurement() {
     if (!config_.interface || picked_count_ == 0) {
         presenter_.overlay().set_lines(nullptr, 0);
         return;
     }
-    const geom::Pack& pack = scene_.pack();
-    const float unit = pack.header().source_unit_mm > 0 ? pack.header().source_unit_mm : 1.0f;
+    const float unit = scene_.source_unit_mm();
     char lines[3][module::Overlay::kLineChars];
     const char* ptrs[3] = {lines[0], lines[1], lines[2]};
     geom::FaceGeometry g[2];
     for (uint32_t i = 0; i < picked_count_; ++i) {
         const Picked& p = picked_[i];
-        if (!geom::describe_face(pack, p.face, pack.instances()[p.instance].m, g[i]).ok()) return;
+        if (!describe(p, g[i]).ok()) return;
         module::describe(g[i], p.face, unit, lines[i], sizeof lines[i]);
     }
     uint32_t n = picked_count_;
@@ -80,14 +84,14 @@ Event Core::pick_at(int16_t x, int16_t y) {
     const Display& d = config_.display;
     if (!scene_.loaded() || x < 0 || y < 0 || x >= d.width || y >= d.height) return e;
     presenter_.projected_reused(); // a frame under way projects its face again
-    const geom::Pack& pack = scene_.pack();
+    const auto instances = scene_.instances();
     const int64_t sx = render::subpixel::centre(x), sy = render::subpixel::centre(y);
     float best = 1e30f;
-    for (uint32_t i = 0; i < pack.instances().size(); ++i) {
+    for (uint32_t i = 0; i < instances.size(); ++i) {
         if (!scene_.shown(i)) continue;
         const module::Transform t = camera_.transform(scene_, i, d.width, d.height);
         const module::Rows row{t.cy16 - render::subpixel::start(y), render::subpixel::start(y + 1) - t.cy16};
-        const pack::Shell& sh = pack.shells()[pack.instances()[i].shell];
+        const module::Part sh = scene_.part(instances[i].shell);
         for (uint32_t f = sh.first_face; f < sh.first_face + sh.face_count; ++f) {
             const module::FaceInfo& F = scene_.face(f);
             if (F.state != module::FaceState::Done || !t.visible(F.centre, F.radius, row)) continue;
@@ -117,8 +121,7 @@ Event Core::pick_at(int16_t x, int16_t y) {
                 }
                 if (z < best) {
                     best = z;
-                    const uint8_t type = pack.surfaces()[pack.faces()[f].surface].type;
-                    e.pick = {true, f, i, pack.instances()[i].shell, type, x, y};
+                    e.pick = {true, f, i, instances[i].shell, scene_.surface_type(f), x, y};
                 }
             }
         }

@@ -87,14 +87,14 @@ void Presenter::set_band() {
 }
 
 bool Presenter::full_pieces(uint32_t units) {
-    const geom::Pack& pack = scene_.pack();
+    const auto instances = scene_.instances();
     uint32_t spent = 0;
-    while (job_.instance < pack.instances().size()) {
+    while (job_.instance < instances.size()) {
         if (!scene_.shown(job_.instance)) { // a hidden part
             ++job_.instance;
             continue;
         }
-        const pack::Shell& sh = pack.shells()[pack.instances()[job_.instance].shell];
+        const Part sh = scene_.part(instances[job_.instance].shell);
         if (!job_.have_transform) {
             job_.transform = camera_.transform(scene_, job_.instance, display_.width, display_.height);
             job_.have_transform = true;
@@ -130,12 +130,12 @@ bool Presenter::full_pieces(uint32_t units) {
 }
 
 bool Presenter::update_pieces(uint32_t units) {
-    const geom::Pack& pack = scene_.pack();
+    const auto instances = scene_.instances();
     uint32_t spent = 0;
     // The faces finished since this buffer was last drawn, in every instance of their shell:
     // each face's triangles, then its edges over them.
-    while (job_.instance < pack.instances().size()) {
-        const pack::Shell& sh = pack.shells()[pack.instances()[job_.instance].shell];
+    while (job_.instance < instances.size()) {
+        const Part sh = scene_.part(instances[job_.instance].shell);
         if (!scene_.shown(job_.instance)) job_.face = job_.applied_to; // a hidden part: none of its faces
         for (; job_.face < job_.applied_to && spent < units; ++job_.face) {
             const uint32_t f = scene_.done_face(job_.face);
@@ -243,7 +243,7 @@ void Presenter::run_piece(uint32_t units, uint32_t pass) {
     }
     if (job_.stage == Job::Stage::Overlay) {
         StatusInfo s;
-        s.name = scene_.pack().model_name();
+        s.name = scene_.model_name();
         s.finished = job_.finished, s.total = scene_.totals().faces, s.triangles = scene_.totals().triangles;
         s.frame_us = last_frame_us_, s.tolerance_mm = tolerance_mm_, s.mode = painter_.mode(), s.ortho = camera_.view().ortho;
         overlay_.draw(raster_.target(), s);

@@ -15,20 +15,73 @@ inline int32_t round_to_int(float v) { return int32_t(v + (v >= 0 ? 0.5f : -0.5f
 
 Result Scene::open(const geom::Pack& pack) {
     loaded_ = false;
-    if (pack.faces().size() > mem_.faces.size()) {
-        return Result::fail(Status::Full, "more faces than the workspace holds (Capacity::faces)",
-                            {"faces", uint32_t(pack.faces().size())});
+    whole_ = {pack, 0, 0, 0};
+    blocks_ = {&whole_, 1};
+    blocked_ = false;
+    instances_ = pack.instances();
+    faces_ = uint32_t(pack.faces().size()), edges_ = uint32_t(pack.edges().size()), parts_ = uint32_t(pack.shells().size());
+    const pack::Header& h = pack.header();
+    source_unit_mm_ = h.source_unit_mm;
+    for (int k = 0; k < 3; ++k) box_min_[k] = h.bbox_min[k], box_max_[k] = h.bbox_max[k];
+    return start();
+}
+
+Result Scene::open(const geom::PackIndex& index, std::span<Block> blocks) {
+    loaded_ = false;
+    const auto parts = index.parts();
+    if (blocks.size() != index.blocks().size() || blocks.empty()) {
+        return Result::fail(Status::OutOfRange, "the blocks given are not the index's");
     }
-    if (pack.edges().size() > mem_.samples.first.size()) {
-        return Result::fail(Status::Full, "more edges than the workspace holds (Capacity::edges)",
-                            {"edges", uint32_t(pack.edges().size())});
+    uint32_t faces = 0, edges = 0;
+    for (uint32_t k = 0; k < 3; ++k) box_min_[k] = INFINITY, box_max_[k] = -INFINITY;
+    for (uint32_t b = 0; b < blocks.size(); ++b) {
+        const pack::Block& entry = index.blocks()[b];
+        Block& block = blocks[b];
+        const geom::Pack& p = block.pack;
+        const Place here{"block", b};
+        if (p.shells().size() != entry.part_count) return Result::fail(Status::Corrupt, "its shells are not its parts", here);
+        block.first_face = faces, block.first_edge = edges, block.first_part = entry.first_part;
+        uint32_t block_edges = 0;
+        for (uint32_t s = 0; s < entry.part_count; ++s) {
+            const pack::Part& part = parts[entry.first_part + s];
+            const pack::Shell& shell = p.shells()[s];
+            if (shell.face_count != part.face_count || (shell.closed != 0) != (part.closed != 0)) {
+                return Result::fail(Status::Corrupt, "a shell is not its part of the index", here);
+            }
+            block_edges += part.edge_count;
+            for (int k = 0; k < 3; ++k) {
+                box_min_[k] = part.box_min[k] < box_min_[k] ? part.box_min[k] : box_min_[k];
+                box_max_[k] = part.box_max[k] > box_max_[k] ? part.box_max[k] : box_max_[k];
+            }
+        }
+        if (block_edges != p.edges().size() || p.faces().size() != p.shells().back().first_face + p.shells().back().face_count) {
+            return Result::fail(Status::Corrupt, "its faces or edges are not its parts'", here);
+        }
+        faces += uint32_t(p.faces().size()), edges += block_edges;
     }
-    pack_ = pack;
-    const pack::Header& h = pack_.header();
+    if (!(box_min_[0] <= box_max_[0])) {
+        for (int k = 0; k < 3; ++k) box_min_[k] = box_max_[k] = 0;
+    }
+    index_ = index;
+    blocks_ = blocks;
+    blocked_ = true;
+    instances_ = index.instances();
+    faces_ = faces, edges_ = edges, parts_ = uint32_t(parts.size());
+    source_unit_mm_ = index.header().source_unit_mm;
+    return start();
+}
+
+Result Scene::start() {
+    if (faces_ > mem_.faces.size()) {
+        return Result::fail(Status::Full, "more faces than the workspace holds (Capacity::faces)", {"faces", faces_});
+    }
+    if (edges_ > mem_.samples.first.size()) {
+        return Result::fail(Status::Full, "more edges than the workspace holds (Capacity::edges)", {"edges", edges_});
+    }
     float r2 = 0;
     for (int k = 0; k < 3; ++k) {
-        centre_[k] = 0.5f * (h.bbox_min[k] + h.bbox_max[k]);
-        const float e = 0.5f * (h.bbox_max[k] - h.bbox_min[k]);
+        centre_[k] = 0.5f * (box_min_[k] + box_max_[k]);
+        const float e = 0.5f * (box_max_[k] - box_min_[k]);
         r2 += e * e;
     }
     radius_ = own_radius_ = r2 > 0 ? std::sqrt(r2) : 1.0f;
@@ -38,6 +91,23 @@ Result Scene::open(const geom::Pack& pack) {
     show_all();
     fit_bounds(false);
     return {};
+}
+
+Part Scene::part(uint32_t s) const {
+    const uint32_t b = find(s, &Block::first_part);
+    const Block& block = blocks_[b];
+    const pack::Shell& shell = block.pack.shells()[s - block.first_part];
+    return {block.first_face + shell.first_face, shell.face_count, b, shell.closed != 0};
+}
+
+uint8_t Scene::surface_type(uint32_t f) const {
+    const Block& b = block_of_face(f);
+    return b.pack.surfaces()[b.pack.faces()[f - b.first_face].surface].type;
+}
+
+const char* Scene::part_name(uint32_t s) const {
+    if (blocked_) return index_.part_name(s);
+    return blocks_[0].pack.shell_name(s);
 }
 
 namespace {
@@ -56,32 +126,33 @@ struct Box {
 } // namespace
 
 void Scene::fit_bounds(bool sampled) {
-    const auto shells = pack_.shells();
-    const auto instances = pack_.instances();
-    const auto faces = pack_.faces();
-    const auto loops = pack_.loops();
-    const auto coedges = pack_.coedges();
-    const auto edges = pack_.edges();
     const float inv = 1.0f / unit_;
     float lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-    for (uint32_t s = 0; s < shells.size(); ++s) {
+    for (uint32_t s = 0; s < parts_; ++s) {
+        const Part part = this->part(s);
+        const Block& block = blocks_[part.block];
+        const geom::Pack& pack = block.pack;
+        const auto faces = pack.faces();
+        const auto loops = pack.loops();
+        const auto coedges = pack.coedges();
+        const auto edges = pack.edges();
         Box box;
-        for (uint32_t f = shells[s].first_face; f < shells[s].first_face + shells[s].face_count && f < faces.size(); ++f) {
+        for (uint32_t f = part.first_face; f < part.first_face + part.face_count; ++f) {
             const FaceInfo& info = mem_.faces[f];
             if (sampled && info.state == FaceState::Done) {
                 for (uint32_t v = 0; v < info.vertex_count; ++v) box.add(mem_.vertices[info.first_vertex + v].p);
             }
-            const pack::Face& F = faces[f];
+            const pack::Face& F = faces[f - block.first_face];
             for (uint32_t l = F.first_loop; l < F.first_loop + F.loop_count; ++l) {
                 for (uint32_t c = loops[l].first_coedge; c < loops[l].first_coedge + loops[l].coedge_count; ++c) {
-                    const uint32_t e = coedges[c].edge();
+                    const uint32_t local = coedges[c].edge(), e = block.first_edge + local;
                     const uint32_t n = !sampled || mem_.samples.count.empty() ? 0 : mem_.samples.count[e];
                     if (n && !mem_.sample_q.empty()) {
                         const uint32_t first = mem_.samples.first[e];
                         for (uint32_t i = first; i < first + n; ++i) box.add(&mem_.sample_q[3 * i]);
                     } else { // not sampled yet: the edge's ends
-                        for (const uint32_t vi : {edges[e].v0, edges[e].v1}) {
-                            const float* q = pack_.vertices()[vi].p;
+                        for (const uint32_t vi : {edges[local].v0, edges[local].v1}) {
+                            const float* q = pack.vertices()[vi].p;
                             const float f[3] = {q[0] * inv, q[1] * inv, q[2] * inv};
                             if (!(std::fabs(f[0]) < 1e9f && std::fabs(f[1]) < 1e9f && std::fabs(f[2]) < 1e9f)) continue;
                             const int32_t p[3] = {int32_t(f[0]), int32_t(f[1]), int32_t(f[2])};
@@ -92,8 +163,8 @@ void Scene::fit_bounds(bool sampled) {
             }
         }
         if (box.empty()) continue;
-        for (uint32_t i = 0; i < instances.size(); ++i) {
-            const pack::Instance& inst = instances[i];
+        for (uint32_t i = 0; i < instances_.size(); ++i) {
+            const pack::Instance& inst = instances_[i];
             if (inst.shell != s || !shown(i)) continue; // a hidden part is not framed
             for (int corner = 0; corner < 8; ++corner) {
                 const float c[3] = {float(corner & 1 ? box.hi[0] : box.lo[0]) * unit_, float(corner & 2 ? box.hi[1] : box.lo[1]) * unit_,
@@ -131,17 +202,25 @@ void Scene::show_all() {
 }
 
 uint32_t Scene::shell_of(uint32_t f) const {
-    const auto shells = pack_.shells();
-    uint32_t s = 0;
-    while (s + 1 < shells.size() && f >= shells[s].first_face + shells[s].face_count) ++s;
-    return s;
+    const Block& b = block_of_face(f);
+    const auto shells = b.pack.shells();
+    const uint32_t local = f - b.first_face;
+    uint32_t lo = 0, hi = uint32_t(shells.size()); // the last shell starting at or before the face
+    while (hi - lo > 1) {
+        const uint32_t mid = (lo + hi) / 2;
+        if (shells[mid].first_face <= local) lo = mid;
+        else hi = mid;
+    }
+    return b.first_part + lo;
 }
 
 uint32_t Scene::colour_of(uint32_t f) const {
-    const pack::Face& F = pack_.faces()[f];
-    const uint32_t ci = F.colour != pack::kNoIndex ? F.colour : pack_.shells()[shell_of(f)].colour;
+    const Block& b = block_of_face(f);
+    const geom::Pack& pack = b.pack;
+    const pack::Face& F = pack.faces()[f - b.first_face];
+    const uint32_t ci = F.colour != pack::kNoIndex ? F.colour : pack.shells()[shell_of(f) - b.first_part].colour;
     if (ci == pack::kNoIndex) return kDefaultRgb;
-    const pack::Colour c = pack_.colours()[ci];
+    const pack::Colour c = pack.colours()[ci];
     return uint32_t(c.r) | uint32_t(c.g) << 8 | uint32_t(c.b) << 16;
 }
 
@@ -211,8 +290,7 @@ Result Scene::append(uint32_t f, const geom::Mesh& fm, const geom::FaceStats& st
         for (int k = 0; k < 3; ++k) centre[k] = int32_t((int64_t(lo[k]) + hi[k]) / 2);
         radius = int32_t((int64_t(hi[0] - lo[0]) + (hi[1] - lo[1]) + (hi[2] - lo[2])) / 2 + 2);
     }
-    const pack::Face& F = pack_.faces()[f];
-    const bool planar = pack_.surfaces()[F.surface].type == uint8_t(pack::SurfaceType::Plane);
+    const bool planar = surface_type(f) == uint8_t(pack::SurfaceType::Plane);
     mem_.faces[f] = {v0, fm.vertex_count, i0, fm.triangle_count, colour_of(f), {centre[0], centre[1], centre[2]}, radius,
                      FaceState::Done, planar};
     mem_.done_order[totals_.done++] = f;

@@ -1,10 +1,13 @@
 #pragma once
-// The model as the viewer holds it: the pack (read in place), the edges' samples (shared by
-// both faces of an edge, and quantized for drawing), and the mesh, face after face, as the
-// scheduler tessellates them. Positions are quantized once per face (shell coordinates,
-// diag/2^20 units); normals are Q14.
+// The model as the viewer holds it: the pack's records (one whole pack, or the blocks of a
+// blocked pack, each a pack of a few parts, read in place), the edges' samples (shared by both
+// faces of an edge, and quantized for drawing), and the mesh, face after face, as the scheduler
+// tessellates them. Faces, edges and parts are numbered model-wide: a block's follow the blocks
+// before it (Block::first_face...), and a block's pack numbers its own from 0. Positions are
+// quantized once per face (shell coordinates, diag/2^20 units); normals are Q14.
 #include "facet/sizes.h"
 #include "geom/pack.h"
+#include "geom/pack_index.h"
 #include "geom/tessellate.h"
 
 #include <cstdint>
@@ -31,6 +34,19 @@ struct FaceInfo {
 };
 static_assert(sizeof(FaceInfo) + sizeof(uint32_t) == FACET_BYTES_PER_FACE); // with its done_order entry
 
+// A pack of whole parts (a whole pack's shells, or one block of a blocked pack), and where its
+// faces, edges and parts start in the model's numbering.
+struct Block {
+    geom::Pack pack;
+    uint32_t first_face = 0, first_edge = 0, first_part = 0;
+};
+
+// A part (a shell): its faces in the model's numbering, and its block.
+struct Part {
+    uint32_t first_face, face_count, block;
+    bool closed;
+};
+
 // Totals of the current pass, and high-water marks over every pass.
 struct Totals {
     uint32_t faces = 0, done = 0, failed = 0, triangles = 0, vertices = 0;
@@ -51,17 +67,38 @@ public:
     };
 
     void init(const Memory& memory) { mem_ = memory; }
-    // Takes a validated pack; Full if it has more faces or edges than the memory holds.
+    // A whole pack (validated): one block. Full if it has more faces or edges than the memory holds.
     Result open(const geom::Pack& pack);
+    // A blocked pack: its index and its blocks (each pack opened; they stay where they are, as
+    // the index does), checked against the index's parts.
+    Result open(const geom::PackIndex& index, std::span<Block> blocks);
     bool loaded() const { return loaded_; }
-    void close() { loaded_ = false, pack_ = {}, totals_ = {}; } // no model (the memory stays)
+    void close() { loaded_ = false, blocks_ = {}, totals_ = {}; } // no model (the memory stays)
 
-    const geom::Pack& pack() const { return pack_; }
-    uint32_t face_count() const { return uint32_t(pack_.faces().size()); }
-    uint32_t edge_count() const { return uint32_t(pack_.edges().size()); }
+    uint32_t face_count() const { return faces_; }
+    uint32_t edge_count() const { return edges_; }
+    uint32_t part_count() const { return parts_; }
+    std::span<const pack::Instance> instances() const { return instances_; } // Instance::shell: a part
+    uint32_t block_count() const { return uint32_t(blocks_.size()); }
+    const Block& block(uint32_t b) const { return blocks_[b]; }
+    const Block& block_of_face(uint32_t f) const { return blocks_[find(f, &Block::first_face)]; }
+    const Block& block_of_edge(uint32_t e) const { return blocks_[find(e, &Block::first_edge)]; }
+    Part part(uint32_t s) const;
+    const pack::Face& face_record(uint32_t f) const {
+        const Block& b = block_of_face(f);
+        return b.pack.faces()[f - b.first_face];
+    }
+    uint8_t surface_type(uint32_t f) const; // pack::SurfaceType of the face's surface
+    const char* model_name() const { return blocked_ ? index_.model_name() : blocks_[0].pack.model_name(); }
+    const char* part_name(uint32_t s) const;
+    const char* instance_name(uint32_t i) const { return blocked_ ? index_.instance_name(i) : blocks_[0].pack.instance_name(i); }
+    float source_unit_mm() const { return source_unit_mm_ > 0 ? source_unit_mm_ : 1.0f; }
+    // The shells' own box (every part in its own coordinates), mm.
+    const float* box_min() const { return box_min_; }
+    const float* box_max() const { return box_max_; }
     // The placed model (every instance's shell where the instance puts it): its bounding
     // box's centre and half its diagonal (mm), what the camera frames. The mesh quantum (mm)
-    // comes from the shells' own coordinates (the pack's box), which the mesh is stored in.
+    // comes from the shells' own coordinates (box_min/box_max), which the mesh is stored in.
     const float* centre() const { return centre_; }
     float radius() const { return radius_; }
     float unit() const { return unit_; }
@@ -81,6 +118,15 @@ public:
 
     geom::EdgeSamples& samples() { return mem_.samples; }
     const geom::EdgeSamples& samples() const { return mem_.samples; }
+    // The pool seen through a block's own edge numbering (its first/count from the block's
+    // first edge): what geom's sampler and face jobs take with the block's pack. The pool's
+    // `used` and `work` are a copy (the caller carries them back).
+    geom::EdgeSamples samples_of(const Block& b) const {
+        geom::EdgeSamples v = mem_.samples;
+        v.first = v.first.subspan(b.first_edge, b.pack.edges().size());
+        v.count = v.count.subspan(b.first_edge, b.pack.edges().size());
+        return v;
+    }
     const int32_t* sample_q(uint32_t sample) const { return &mem_.sample_q[3 * sample]; }
     // Quantizes samples [from, to) of the pool for drawing.
     void quantize_samples(uint32_t from, uint32_t to);
@@ -99,8 +145,26 @@ public:
     Totals& totals() { return totals_; }
 
 private:
+    Result start(); // after the blocks are set: the model's counts, box and quantum
+    // The block holding item k of a numbering (binary search on the blocks' firsts).
+    uint32_t find(uint32_t k, uint32_t Block::*first) const {
+        uint32_t lo = 0, hi = uint32_t(blocks_.size());
+        while (hi - lo > 1) {
+            const uint32_t mid = (lo + hi) / 2;
+            if (blocks_[mid].*first <= k) lo = mid;
+            else hi = mid;
+        }
+        return lo;
+    }
+
     Memory mem_{};
-    geom::Pack pack_;
+    Block whole_;                 // a whole pack's one block
+    std::span<Block> blocks_;     // whole_, or a blocked pack's
+    geom::PackIndex index_;       // a blocked pack's
+    bool blocked_ = false;
+    std::span<const pack::Instance> instances_;
+    uint32_t faces_ = 0, edges_ = 0, parts_ = 0;
+    float source_unit_mm_ = 1, box_min_[3] = {0, 0, 0}, box_max_[3] = {0, 0, 0};
     bool loaded_ = false;
     float unit_ = 1, centre_[3] = {0, 0, 0}, radius_ = 1, own_radius_ = 1;
     Totals totals_;

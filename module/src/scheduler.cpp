@@ -28,7 +28,9 @@ bool Scheduler::run(uint32_t units) {
     }
     if (!in_face_) {
         mem_.face_mesh.vertex_count = mem_.face_mesh.triangle_count = 0;
-        job_.start(scene_.pack(), face_, scene_.samples(), opt_, mem_.storage, mem_.face_mesh);
+        const Block& b = scene_.block_of_face(face_);
+        view_ = scene_.samples_of(b);
+        job_.start(b.pack, face_ - b.first_face, view_, opt_, mem_.storage, mem_.face_mesh);
         in_face_ = true;
     }
     const Result r = job_.run(units);
@@ -45,12 +47,17 @@ void Scheduler::sample(uint32_t units) {
     const uint32_t work0 = s.work;
     Result r;
     for (uint32_t n = 0; next_edge_ < edges && s.work - work0 + n < units && r.ok(); ++n) {
-        if (!in_edge_) {
-            sampler_.start(scene_.pack(), opt_, s, next_edge_);
+        if (!in_edge_) { // the edge's block sees the pool through its own numbering
+            const Block& b = scene_.block_of_edge(next_edge_);
+            view_ = scene_.samples_of(b);
+            sampler_.start(b.pack, opt_, view_, next_edge_ - b.first_edge);
+            s.used = view_.used, s.work = view_.work;
             in_edge_ = true;
         }
         const uint32_t used = s.work - work0 + n; // (start() evaluates the curve's ends)
+        view_.used = s.used, view_.work = s.work;
         r = sampler_.run(used < units ? units - used : 0);
+        s.used = view_.used, s.work = view_.work;
         if (r.status == Status::Busy) break; // this edge goes on next time
         in_edge_ = false;
         ++next_edge_;

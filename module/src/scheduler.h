@@ -60,6 +60,7 @@ private:
     uint32_t next_edge_ = 0;
     bool in_edge_ = false;     // an edge is being sampled (sampler_ holds where)
     uint32_t quantized_ = 0;   // samples quantized so far
+    geom::EdgeSamples view_;   // the pool as the block of the edge or face under way numbers its edges
     geom::EdgeSampler sampler_;
     uint32_t face_ = 0;        // the face being tessellated
     bool in_face_ = false;

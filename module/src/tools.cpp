@@ -34,7 +34,7 @@ void Core::section_next() {
     module::Section s = camera_.section();
     geom::FaceGeometry g;
     const bool plane = picked_count_ > 0 &&
-                       geom::describe_face(scene_.pack(), picked_[0].face, scene_.pack().instances()[picked_[0].instance].m, g).ok() &&
+                       describe(picked_[0], g).ok() &&
                        g.type == pack::SurfaceType::Plane;
     uint8_t kind = section_kind_;
     do {
@@ -69,7 +69,7 @@ void Core::section_at(float at, bool relative) {
 }
 
 void Core::choose(uint32_t part) {
-    chosen_part_ = scene_.loaded() && part < scene_.pack().instances().size() ? part : ~0u;
+    chosen_part_ = scene_.loaded() && part < scene_.instances().size() ? part : ~0u;
     presenter_.overlay().set_chosen(chosen_part_);
     focus();
     presenter_.invalidate();
@@ -81,7 +81,7 @@ void Core::focus() {
 }
 
 Result Core::show(uint32_t part, bool shown) {
-    if (!scene_.loaded() || part >= scene_.pack().instances().size()) {
+    if (!scene_.loaded() || part >= scene_.instances().size()) {
         return Result::fail(Status::OutOfRange, "no such part", {"part", part});
     }
     if (part >= module::Scene::kMaxHideable) {
@@ -100,7 +100,7 @@ Result Core::show(uint32_t part, bool shown) {
 
 void Core::tool(Action a) {
     if (!scene_.loaded()) return;
-    const uint32_t parts = uint32_t(scene_.pack().instances().size());
+    const uint32_t parts = uint32_t(scene_.instances().size());
     switch (a) {
     case Action::Section: section_next(); return;
     case Action::SectionIn: section_at(-kStep, true); return;
@@ -149,15 +149,15 @@ bool Core::tap_parts(int16_t x, int16_t y) {
 // The public face of the tools.
 uint32_t Viewer::part_count() const {
     const Core& c = *static_cast<const Core*>(this);
-    return c.scene().loaded() ? uint32_t(c.scene().pack().instances().size()) : 0;
+    return c.scene().loaded() ? uint32_t(c.scene().instances().size()) : 0;
 }
 
 Viewer::Part Viewer::part(uint32_t i) const {
     const Core& c = *static_cast<const Core*>(this);
     if (i >= part_count()) return {"", "", 0, false};
-    const geom::Pack& p = c.scene().pack();
-    const uint32_t shell = p.instances()[i].shell;
-    return {p.shell_name(shell), p.instance_name(i), p.shells()[shell].face_count, c.scene().shown(i)};
+    const module::Scene& s = c.scene();
+    const uint32_t shell = s.instances()[i].shell;
+    return {s.part_name(shell), s.instance_name(i), s.part(shell).face_count, s.shown(i)};
 }
 
 Result Viewer::show_part(uint32_t i, bool shown) { return static_cast<Core*>(this)->show(i, shown); }
@@ -165,7 +165,7 @@ void Viewer::choose_part(uint32_t i) { static_cast<Core*>(this)->choose(i); }
 uint32_t Viewer::chosen_part() const { return static_cast<const Core*>(this)->chosen_part(); }
 const char* Viewer::model_name() const {
     const Core& c = *static_cast<const Core*>(this);
-    return c.scene().loaded() ? c.scene().pack().model_name() : "";
+    return c.scene().loaded() ? c.scene().model_name() : "";
 }
 
 Viewer::SectionPlane Viewer::section() const {

@@ -3,7 +3,7 @@
 
 For each model: facet-pack must exit 0 and write a pack that the device's reader (facet-pack
 --check) validates, with every face of the file's shells (ndr_part01 too: no product structure,
-no unit, read as metres). A refusal (exit 1 with its 'facet-pack: error: ...' line, printed), a
+no unit, read as metres), and no larger than 10% of its STEP file (blocked or whole). A refusal (exit 1 with its 'facet-pack: error: ...' line, printed), a
 crash, a signal, a timeout, or a pack the reader refuses fails the test. Prints one line per model
 (faces by surface type, pack file size as % of the STEP file) and the counts, and writes them to
 WORK/pack-models.json.
@@ -42,11 +42,13 @@ def main():
                 bad.append(f'{f}: packed, but the reader refuses it: {c.stderr.strip()}')
                 continue
             m = re.search(r'pack (\d+) bytes = ([\d.]+)% of the STEP', r.stdout)
-            inflated = re.search(r'(\d+) bytes inflated', r.stdout)
+            inflated = re.search(r'(\d+) bytes decoded', r.stdout)
             summary = r.stdout.strip().splitlines()[0].split(': ', 1)[1]
             rows.append({'model': f, 'status': 'packed', 'bytes': int(m.group(1)), 'percent_of_step': float(m.group(2)),
                          'inflated_bytes': int(inflated.group(1)) if inflated else int(m.group(1)), 'summary': summary})
             print(f'packed  {f}: {summary}; {m.group(2)}% of the STEP file')
+            if float(m.group(2)) > 10.0:
+                bad.append(f'{f}: the pack is {m.group(2)}% of the STEP file (at most 10%)')
         elif r.returncode == 1 and 'facet-pack: error:' in r.stderr:
             reason = r.stderr.strip().splitlines()[-1]
             rows.append({'model': f, 'status': 'refused', 'reason': reason})

@@ -63,10 +63,9 @@ Fit check(const std::vector<uint8_t>& file, Screen s) {
     }
     const Core& core = *static_cast<const Core*>(v);
     const module::Scene& scene = core.scene();
-    const geom::Pack& pack = scene.pack();
-    for (uint32_t i = 0; i < pack.instances().size(); ++i) {
+    for (uint32_t i = 0; i < scene.instances().size(); ++i) {
         const module::Transform t = core.camera().transform(scene, i, s.w, s.h);
-        const pack::Shell& sh = pack.shells()[pack.instances()[i].shell];
+        const module::Part sh = scene.part(scene.instances()[i].shell);
         for (uint32_t f = sh.first_face; f < sh.first_face + sh.face_count; ++f) {
             const module::FaceInfo& F = scene.face(f);
             if (F.state != module::FaceState::Done) continue;

@@ -66,7 +66,7 @@ TEST(Viewer, BadPackFilesAreRefusedWithTheirReason) {
         {"a bit flipped in a plain pack", flipped, "header: CRC mismatch"},
         {"a deflated pack cut in half", truncated_stream, "pack file: "},
         {"a damaged DEFLATE stream", bad_stream, "pack file: "},
-        {"not a pack at all", Bytes(300, 'x'), "no pack here (neither FPK1, FPX1 nor FPZ1)"},
+        {"not a pack at all", Bytes(300, 'x'), "no pack here (neither FPK1, FPX1, FPZ1 nor FPB1)"},
         {"nothing loaded", Bytes(64, 0), "no pack here"},
     };
     for (const Case& c : cases) {

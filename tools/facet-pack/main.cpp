@@ -99,7 +99,7 @@ int check(const char* path) {
 
 int main(int argc, char** argv) {
     const char *in = nullptr, *out = nullptr, *reference = nullptr;
-    bool quiet = false, plain = false, deflated = false, partial = false, whole = true; // blocked: once the module reads it
+    bool quiet = false, plain = false, deflated = false, partial = false, whole = false;
     packer::UnitGuess unit = packer::UnitGuess::BySize;
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--check") && i + 1 < argc) return argc == 3 ? check(argv[i + 1]) : usage();

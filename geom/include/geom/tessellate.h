@@ -152,5 +152,7 @@ Result tessellate_face(const Pack& pack, uint32_t face, const EdgeSamples& edges
 
 // 0.1% of the pack's bounding-box diagonal (the default tolerance).
 float default_tolerance(const Pack& pack);
+// The same from a box (mm): 0.1% of its diagonal (0.01 mm for an empty one).
+float default_tolerance(const float box_min[3], const float box_max[3]);
 
 } // namespace facet::geom

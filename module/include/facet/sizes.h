@@ -7,8 +7,9 @@
  *   depth buffer      16-bit depth of the same rows                   FACET_DEPTH_BYTES(w, lines)
  *   workspace         the model: edges, samples, one face's CDT       FACET_WORKSPACE_BYTES(...)
  *                     arena, the mesh, per-face state, palettes
- *   pack memory       a deflated pack, inflated (plain packs are      facet_pack_memory_bytes()
- *                     read in place from flash or RAM)
+ *   pack memory       a compressed pack decoded, or a blocked pack's  facet_pack_memory_bytes()
+ *                     blocks (plain packs are read in place from
+ *                     flash or RAM)
  *
  * The shipped configurations (the workspace at the default capacities, 7,050,528 bytes):
  *

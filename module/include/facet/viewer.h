@@ -44,7 +44,8 @@ constexpr size_t depth_bytes(uint16_t width, uint16_t lines) { return FACET_DEPT
 
 // Bytes of pack memory load() needs for this pack file: 0 for a plain pack it can read in
 // place (4-byte aligned), the pack's size for a compressed one (its head says; + LZMA state) or an unaligned
-// plain one; 0 for bytes that are no pack (load() then says why).
+// plain one, its blocks decoded for a blocked one (4-byte aligned; its index says: + a table of the
+// blocks and LZMA state); 0 for bytes that are no pack (load() then says why).
 uint32_t pack_memory_bytes(const void* file, uint32_t file_bytes);
 
 // How the application's display takes a finished area.
@@ -176,11 +177,13 @@ public:
     // or null with the reason in *why (a buffer too small or missing, a bad size).
     static Viewer* create(const Config& config, void* workspace, size_t bytes, Result* why = nullptr);
 
-    // Takes a pack file (plain, LZMA or deflated) and shows its wireframe. A plain, aligned pack
-    // is read in place and must stay there; a compressed one is decoded into `memory`
-    // (pack_memory_bytes()); when the file itself lies inside `memory`, it is decoded in place
-    // (memory: the pack's size plus the file's, plus 9,840 bytes for LZMA). Corrupt names the bad record; Full: the model
-    // exceeds the capacities. The previous model, if any, is dropped first.
+    // Takes a pack file (plain, LZMA, deflated, or blocked: facet-pack's default, an index and
+    // blocks of a few parts) and shows its wireframe. A plain, aligned pack is read in place and
+    // must stay there, as must a blocked pack's index; a compressed pack or the blocks are decoded
+    // into `memory` (pack_memory_bytes()); when the file itself lies inside `memory`, it is
+    // decoded in place (memory: the decoded size plus the file's, plus 9,840 bytes for LZMA).
+    // Corrupt names the bad record (and block); Full: the model exceeds the capacities. The
+    // previous model, if any, is dropped first.
     Result load(const void* file, uint32_t file_bytes, void* memory = nullptr, uint32_t memory_bytes = 0);
 
     // Does pieces of work (a frame, a piece of a face's tessellation) until `budget_us` have

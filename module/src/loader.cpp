@@ -1,0 +1,149 @@
+#include "loader.h"
+
+#include "geom/pack_file.h"
+
+#include <cstring>
+#include <new>
+
+namespace facet::module {
+namespace {
+
+constexpr Place kFile{"pack file"};
+
+constexpr uint32_t align4(uint64_t n) { return uint32_t((n + 3) & ~uint64_t(3)); }
+constexpr uint32_t table_bytes(uint32_t blocks) { return align4(uint64_t(blocks) * sizeof(Block)); }
+
+// What a blocked pack needs: its table of blocks, each block decoded (4-byte aligned), and an
+// LZMA decoder's state (with its alignment). 0 when the index does not read.
+uint32_t blocked_need(const geom::PackIndex& index) {
+    uint64_t n = table_bytes(uint32_t(index.blocks().size())) + geom::kLzmaStateBytes + 8;
+    for (const pack::Block& b : index.blocks()) n += align4(b.pack_bytes);
+    return n > UINT32_MAX ? UINT32_MAX : uint32_t(n);
+}
+
+Result unpack_blocked(const uint8_t* in, uint32_t file_bytes, uint8_t* mem, uint32_t memory_bytes, bool inside, Unpacked& out) {
+    if (!mem || (reinterpret_cast<uintptr_t>(mem) & 7)) {
+        return Result::fail(Status::Full, "a blocked pack needs 8-byte aligned pack memory", kFile);
+    }
+    // The decoder's state at the memory's end; a file loaded into the memory just before it.
+    if (memory_bytes < geom::kLzmaStateBytes + 64) {
+        return Result::fail(Status::Full, "the decoded blocks do not fit the pack memory (it holds not even the decoder's state)", kFile);
+    }
+    const uint32_t state_at = (memory_bytes - geom::kLzmaStateBytes) & ~7u;
+    uint32_t end = state_at;
+    if (inside) {
+        if (file_bytes > end) return Result::fail(Status::Full, "the blocked pack leaves no pack memory to decode into", kFile);
+        end = (end - file_bytes) & ~7u;
+        std::memmove(mem + end, in, file_bytes);
+        in = mem + end;
+    }
+    if (reinterpret_cast<uintptr_t>(in) & 3) return Result::fail(Status::OutOfRange, "a blocked pack must lie 4-byte aligned", kFile);
+    geom::PackIndex& index = out.index;
+    if (Result r = index.open(in, file_bytes); !r.ok()) return r;
+    const uint32_t count = uint32_t(index.blocks().size());
+    const uint32_t need = blocked_need(index);
+    const uint64_t have = uint64_t(end) + (memory_bytes - state_at);
+    if (need > have) {
+        return Result::fail(Status::Full, "the decoded blocks do not fit the pack memory", {"bytes needed", need});
+    }
+    auto* table = reinterpret_cast<Block*>(mem);
+    for (uint32_t b = 0; b < count; ++b) new (&table[b]) Block{};
+    auto& probs = *reinterpret_cast<geom::LzmaProbs*>(mem + state_at);
+    uint32_t at = table_bytes(count);
+    for (uint32_t b = 0; b < count; ++b) {
+        const pack::Block& entry = index.blocks()[b];
+        const Place here{"block", b};
+        if (uint64_t(at) + entry.pack_bytes > end) return Result::fail(Status::Full, "the decoded blocks do not fit the pack memory", here);
+        geom::PackDecoder decoder;
+        Result r = decoder.start(index.block_file(b), {mem + at, entry.pack_bytes}, probs);
+        while (r.status == Status::Busy) r = decoder.run(1u << 30);
+        if (!r.ok()) return r.within(here);
+        if (decoder.pack_bytes() != entry.pack_bytes) return Result::fail(Status::Corrupt, "the block's size is not the index's", here);
+        at += align4(entry.pack_bytes);
+    }
+    out.blocks = {table, count};
+    out.pack = mem;
+    out.bytes = at;
+    return {};
+}
+
+} // namespace
+
+uint32_t pack_memory_need(const void* file, uint32_t file_bytes) {
+    switch (geom::pack_file_kind(file, file_bytes)) {
+    case geom::PackFileKind::Unknown: return 0;
+    case geom::PackFileKind::Blocked: {
+        geom::PackIndex index;
+        if ((reinterpret_cast<uintptr_t>(file) & 3) || !index.open(file, file_bytes).ok()) return 0;
+        return blocked_need(index);
+    }
+    case geom::PackFileKind::Pack: return (reinterpret_cast<uintptr_t>(file) & 3) ? file_bytes : 0;
+    case geom::PackFileKind::Deflated:
+    case geom::PackFileKind::Lzma: return geom::decoded_memory_bytes(file, file_bytes);
+    }
+    return 0;
+}
+
+Result unpack(const void* file, uint32_t file_bytes, void* memory, uint32_t memory_bytes, Unpacked& out) {
+    out = {};
+    auto* mem = static_cast<uint8_t*>(memory);
+    const auto* in = static_cast<const uint8_t*>(file);
+    if (!mem) memory_bytes = 0;
+    const bool inside = mem && in >= mem && in < mem + memory_bytes;
+    if (!file) return Result::fail(Status::OutOfRange, "no pack file");
+    const uint32_t stored = geom::pack_file_bytes(file, file_bytes);
+    const uint8_t* pack = in;
+    uint32_t bytes = 0;
+    switch (geom::pack_file_kind(file, file_bytes)) {
+    case geom::PackFileKind::Unknown: return Result::fail(Status::Corrupt, "no pack here (neither FPK1, FPX1, FPZ1 nor FPB1)", kFile);
+    case geom::PackFileKind::Blocked:
+        if (stored == 0 || stored > file_bytes) return Result::fail(Status::Corrupt, "the blocked pack is longer than the bytes given, or truncated", kFile);
+        return unpack_blocked(in, stored, mem, memory_bytes, inside, out);
+    case geom::PackFileKind::Pack:
+        bytes = stored;
+        if (bytes == 0) return Result::fail(Status::Corrupt, "the pack is longer than the bytes given, or truncated", kFile);
+        if (reinterpret_cast<uintptr_t>(in) & 3) { // copied where it can be read in place
+            if (memory_bytes < bytes || (reinterpret_cast<uintptr_t>(mem) & 3)) {
+                return Result::fail(Status::Full, "an unaligned pack needs 4-byte aligned pack memory of its size", kFile);
+            }
+            std::memmove(mem, in, bytes);
+            pack = mem;
+        }
+        break;
+    case geom::PackFileKind::Deflated:
+    case geom::PackFileKind::Lzma: {
+        Result r;
+        if (!mem || (reinterpret_cast<uintptr_t>(mem) & 3)) {
+            r = Result::fail(Status::Full, "a compressed pack needs 4-byte aligned pack memory", kFile);
+        } else if (inside) { // the file was loaded into the pack memory: inflated in place
+            const uint32_t offset = uint32_t(in - mem);
+            if (offset) std::memmove(mem, in, memory_bytes - offset < file_bytes ? memory_bytes - offset : file_bytes);
+            r = geom::unpack_in_place(mem, memory_bytes, memory_bytes - offset, bytes);
+        } else {
+            r = geom::decode_pack_file({in, file_bytes}, {mem, memory_bytes}, bytes);
+        }
+        if (!r.ok()) return r;
+        pack = mem;
+        break;
+    }
+    }
+    out.pack = pack, out.bytes = bytes;
+    return {};
+}
+
+Result open_unpacked(Unpacked& u, Scene& scene) {
+    if (u.blocks.empty()) {
+        geom::Pack p;
+        if (Result r = p.open(u.pack, u.bytes); !r.ok()) return r;
+        return scene.open(p);
+    }
+    uint32_t at = table_bytes(uint32_t(u.blocks.size()));
+    for (uint32_t b = 0; b < u.blocks.size(); ++b) {
+        const uint32_t bytes = u.index.blocks()[b].pack_bytes;
+        if (Result r = u.blocks[b].pack.open(u.pack + at, bytes); !r.ok()) return r.within({"block", b});
+        at += align4(bytes);
+    }
+    return scene.open(u.index, u.blocks);
+}
+
+} // namespace facet::module

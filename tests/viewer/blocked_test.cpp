@@ -1,0 +1,142 @@
+// Blocked packs in the viewer (pack_format.h: an index, then blocks of a few parts each): an
+// assembly of shapes built in code, loaded whole and blocked, shows the same faces, triangles and
+// pixels; the blocks are decoded into the pack memory (or from a file loaded into it), and a pack
+// memory too small, a corrupt block or a misplaced file gets a clear refusal.
+#include "../geom/shapes.h"
+#include "app.h"
+#include "pack_blocks.h"
+
+#include <vector>
+
+using namespace facet;
+using namespace facet::geom;
+using namespace facet::test;
+
+namespace {
+
+// Four shapes (a plate with holes, a sphere, a torus, a trimmed B-spline patch), one part each,
+// in a row 150 mm apart.
+Bytes assembly() {
+    const Bytes shapes[] = {plate_with_holes(), sphere(), torus(), trimmed_bspline()};
+    std::vector<Pack> packs(4);
+    for (int k = 0; k < 4; ++k) EXPECT_TRUE(packs[k].open(shapes[k].data(), uint32_t(shapes[k].size())).ok());
+    return combine_packs(packs, 150.0f);
+}
+
+// The blocked form of `whole`, a part a block, every part's box the whole pack's (so the two
+// forms have one box, one default tolerance and one mesh quantum: the same mesh).
+Bytes blocked(const Bytes& whole, BlockStore store = BlockStore::Lzma) {
+    Pack p;
+    EXPECT_TRUE(p.open(whole.data(), uint32_t(whole.size())).ok());
+    const pack::Header& h = p.header();
+    std::vector<PartBox> boxes(p.shells().size());
+    for (PartBox& b : boxes)
+        for (int k = 0; k < 3; ++k) b.min[k] = h.bbox_min[k], b.max[k] = h.bbox_max[k];
+    Bytes out;
+    std::string error;
+    EXPECT_TRUE(make_blocked(p, boxes, {1, store}, out, error)) << error;
+    return out;
+}
+
+struct Shown {
+    Stats stats;
+    std::vector<Rgb565> screen;
+    std::vector<std::string> names;
+};
+
+Shown show(const Bytes& file) {
+    App app;
+    app.w = 320, app.h = 240;
+    EXPECT_TRUE(app.create().ok());
+    const Result r = app.load(file);
+    EXPECT_TRUE(r.ok()) << text(r);
+    app.run();
+    Shown s{app.v->stats(), app.screen(), {}};
+    for (uint32_t i = 0; i < app.v->part_count(); ++i) s.names.push_back(app.v->part(i).name);
+    return s;
+}
+
+} // namespace
+
+TEST(Blocked, AnAssemblyShowsWhatItsWholePackShows) {
+    const Bytes whole = assembly();
+    const Bytes file = blocked(whole);
+    ASSERT_EQ(pack_file_kind(file.data(), uint32_t(file.size())), PackFileKind::Blocked);
+    const Shown a = show(whole), b = show(file);
+    EXPECT_EQ(b.stats.faces, a.stats.faces);
+    EXPECT_EQ(b.stats.failed, 0u);
+    EXPECT_EQ(b.stats.triangles, a.stats.triangles);
+    EXPECT_EQ(b.stats.vertices, a.stats.vertices);
+    EXPECT_EQ(b.stats.tolerance_mm, a.stats.tolerance_mm);
+    EXPECT_EQ(b.names, a.names);
+    EXPECT_GT(b.stats.pack_bytes, whole.size()) << "four blocks decoded, and their table";
+    EXPECT_EQ(b.stats.pack_file_bytes, file.size());
+    size_t differ = 0;
+    for (size_t i = 0; i < a.screen.size(); ++i) differ += a.screen[i] != b.screen[i];
+    EXPECT_EQ(differ, 0u) << "pixels that differ between the whole and the blocked pack";
+}
+
+TEST(Blocked, EveryStoreOfABlockReads) {
+    const Bytes whole = assembly();
+    const Shown a = show(whole);
+    for (const BlockStore store : {BlockStore::Deflated, BlockStore::Plain}) {
+        const Shown b = show(blocked(whole, store));
+        EXPECT_EQ(b.stats.triangles, a.stats.triangles);
+        EXPECT_EQ(b.screen, a.screen);
+    }
+}
+
+TEST(Blocked, AFileLoadedIntoThePackMemoryIsDecodedThere) {
+    const Bytes file = blocked(assembly());
+    App app;
+    ASSERT_TRUE(app.create().ok());
+    std::vector<uint64_t> words(file.size() / 8 + 1);
+    std::memcpy(words.data(), file.data(), file.size());
+    const uint32_t blocks_need = pack_memory_bytes(words.data(), uint32_t(file.size()));
+    ASSERT_GT(blocks_need, file.size());
+    // The file at the start of a memory of the blocks' size plus its own: moved to the end,
+    // decoded to the front.
+    std::vector<uint64_t> memory((blocks_need + file.size()) / 8 + 2, 0);
+    std::memcpy(memory.data(), file.data(), file.size());
+    const Result r = app.v->load(memory.data(), uint32_t(file.size()), memory.data(), uint32_t(memory.size() * 8));
+    ASSERT_TRUE(r.ok()) << text(r);
+    app.run();
+    EXPECT_EQ(app.v->stats().failed, 0u);
+    EXPECT_EQ(app.v->stats().done, app.v->stats().faces);
+}
+
+TEST(Blocked, TooLittleMemoryACorruptBlockAndAnUnalignedFileAreRefused) {
+    const Bytes file = blocked(assembly());
+    App app;
+    ASSERT_TRUE(app.create().ok());
+    std::vector<uint64_t> in(file.size() / 8 + 2);
+    std::memcpy(in.data(), file.data(), file.size());
+    const uint32_t need = pack_memory_bytes(in.data(), uint32_t(file.size()));
+    std::vector<uint64_t> memory(need / 8 + 1);
+    {
+        const Result r = app.v->load(in.data(), uint32_t(file.size()), memory.data(), need / 2);
+        EXPECT_EQ(r.status, Status::Full) << text(r);
+        EXPECT_NE(text(r).find("do not fit the pack memory"), std::string::npos) << text(r);
+    }
+    {
+        Bytes bad = file;
+        bad[bad.size() - 40] ^= 0x5A; // inside the last block's compressed stream
+        std::vector<uint64_t> b(bad.size() / 8 + 2);
+        std::memcpy(b.data(), bad.data(), bad.size());
+        const Result r = app.v->load(b.data(), uint32_t(bad.size()), memory.data(), uint32_t(memory.size() * 8));
+        EXPECT_EQ(r.status, Status::Corrupt) << text(r);
+        EXPECT_NE(text(r).find("block 3"), std::string::npos) << text(r);
+    }
+    {
+        std::vector<uint8_t> shifted(file.size() + 1);
+        std::memcpy(shifted.data() + 1, file.data(), file.size());
+        const Result r = app.v->load(shifted.data() + 1, uint32_t(file.size()), memory.data(), uint32_t(memory.size() * 8));
+        EXPECT_FALSE(r.ok());
+        EXPECT_NE(text(r).find("4-byte aligned"), std::string::npos) << text(r);
+    }
+    // And a good load after all of them.
+    const Result r = app.v->load(in.data(), uint32_t(file.size()), memory.data(), uint32_t(memory.size() * 8));
+    EXPECT_TRUE(r.ok()) << text(r);
+    app.run();
+    EXPECT_EQ(app.v->stats().failed, 0u);
+}
