@@ -5,8 +5,9 @@
 // A frame is drawn when the picture on the screen is behind the model: the view changed, a
 // level of detail began, a face was finished (the progress bar moved). With full frames and a
 // depth buffer per draw buffer, a buffer that only lacks the latest faces gets just those
-// (filling in costs a face, not a frame); otherwise the whole frame is drawn again, band after
-// band with partial rendering (then progress is shown every sixteenth of the faces).
+// (filling in costs those faces, not a frame), at most kProgressFrames times in a pass;
+// otherwise the whole frame is drawn again, band after band with partial rendering (then
+// progress is shown every sixteenth of the faces).
 #include "camera.h"
 #include "facet/viewer.h"
 #include "overlay.h"
@@ -38,6 +39,7 @@ public:
     void reset();        // a new model: nothing shown, nothing drawn
     void invalidate();   // every buffer must be drawn whole again (view, level of detail)
 
+    static constexpr uint32_t kProgressFrames = 128; // frames filling in a model's faces, at most
     // Whether the screen is behind the model (`finished` faces of `total` done or failed).
     bool wanted(uint32_t finished, uint32_t total) const;
     // Whether a piece of a frame can be done now (a buffer free, or a frame under way).
