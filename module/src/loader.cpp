@@ -15,9 +15,15 @@ constexpr uint32_t table_bytes(uint32_t blocks) { return align4(uint64_t(blocks)
 
 // What a blocked pack needs: its table of blocks, each block decoded (4-byte aligned), and an
 // LZMA decoder's state (with its alignment). 0 when the index does not read.
+// A plain block is read in place (blocks lie 4-byte aligned in the file).
+bool in_place(const geom::PackIndex& index, uint32_t b) {
+    const auto file = index.block_file(b);
+    return geom::pack_file_kind(file.data(), uint32_t(file.size())) == geom::PackFileKind::Pack;
+}
+
 uint32_t blocked_need(const geom::PackIndex& index) {
     uint64_t n = table_bytes(uint32_t(index.blocks().size())) + geom::kLzmaStateBytes + 8;
-    for (const pack::Block& b : index.blocks()) n += align4(b.pack_bytes);
+    for (uint32_t b = 0; b < index.blocks().size(); ++b) n += in_place(index, b) ? 0 : align4(index.blocks()[b].pack_bytes);
     return n > UINT32_MAX ? UINT32_MAX : uint32_t(n);
 }
 
@@ -53,12 +59,17 @@ Result unpack_blocked(const uint8_t* in, uint32_t file_bytes, uint8_t* mem, uint
     for (uint32_t b = 0; b < count; ++b) {
         const pack::Block& entry = index.blocks()[b];
         const Place here{"block", b};
+        if (in_place(index, b)) { // checked when it is opened
+            table[b].data = index.block_file(b).data();
+            continue;
+        }
         if (uint64_t(at) + entry.pack_bytes > end) return Result::fail(Status::Full, "the decoded blocks do not fit the pack memory", here);
         geom::PackDecoder decoder;
         Result r = decoder.start(index.block_file(b), {mem + at, entry.pack_bytes}, probs);
         while (r.status == Status::Busy) r = decoder.run(1u << 30);
         if (!r.ok()) return r.within(here);
         if (decoder.pack_bytes() != entry.pack_bytes) return Result::fail(Status::Corrupt, "the block's size is not the index's", here);
+        table[b].data = mem + at;
         at += align4(entry.pack_bytes);
     }
     out.blocks = {table, count};
@@ -137,11 +148,12 @@ Result open_unpacked(Unpacked& u, Scene& scene) {
         if (Result r = p.open(u.pack, u.bytes); !r.ok()) return r;
         return scene.open(p);
     }
-    uint32_t at = table_bytes(uint32_t(u.blocks.size()));
     for (uint32_t b = 0; b < u.blocks.size(); ++b) {
         const uint32_t bytes = u.index.blocks()[b].pack_bytes;
-        if (Result r = u.blocks[b].pack.open(u.pack + at, bytes); !r.ok()) return r.within({"block", b});
-        at += align4(bytes);
+        if (in_place(u.index, b) && u.index.block_file(b).size() < bytes) {
+            return Result::fail(Status::Corrupt, "a plain block is shorter than the index says", {"block", b});
+        }
+        if (Result r = u.blocks[b].pack.open(u.blocks[b].data, bytes); !r.ok()) return r.within({"block", b});
     }
     return scene.open(u.index, u.blocks);
 }

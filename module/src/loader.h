@@ -1,8 +1,8 @@
 #pragma once
 // A pack file opened into the scene, whatever its form: a plain pack read in place (or copied
 // where it can be, when unaligned), a compressed one decoded into the pack memory, a blocked
-// one's blocks decoded there one after the other behind a table of them (the index read in
-// place). When the file itself lies inside the pack memory, it is first moved to the memory's
+// one's blocks decoded there one after the other behind a table of them (the index and plain
+// blocks read in place). When the file itself lies inside the pack memory, it is first moved to the memory's
 // end and decoded from there.
 #include "scene.h"
 
@@ -19,8 +19,9 @@ struct Unpacked {
     const uint8_t* pack = nullptr; // a whole pack
     uint32_t bytes = 0;            // its size, or the pack memory the blocks and their table take
     geom::PackIndex index;         // a blocked pack's (read in place)
-    std::span<Block> blocks;       // a blocked pack's, in the pack memory, each block decoded after the
-                                   // table and the blocks before it (4-byte aligned)
+    std::span<Block> blocks;       // a blocked pack's, in the pack memory: each compressed block decoded
+                                   // after the table and the blocks before it (4-byte aligned); a plain
+                                   // block read in place
 };
 
 // Decodes `file` into the pack memory as its form asks (the work a profile calls unpacking).

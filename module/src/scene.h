@@ -39,6 +39,7 @@ static_assert(sizeof(FaceInfo) + sizeof(uint32_t) == FACET_BYTES_PER_FACE); // w
 struct Block {
     geom::Pack pack;
     uint32_t first_face = 0, first_edge = 0, first_part = 0;
+    const uint8_t* data = nullptr; // where its pack lies (decoded, or a plain block in the file)
 };
 
 // A part (a shell): its faces in the model's numbering, and its block.
