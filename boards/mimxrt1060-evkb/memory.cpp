@@ -9,7 +9,7 @@
 extern "C" uint8_t __itcm_start[], __itcm_end[], __itcm_load[], __itcm_origin[], __itcm_limit[], __dtcm_origin[],
     __dtcm_limit[], __ocram_origin[], __ocram_limit[], __sdram_origin[], __sdram_limit[], __flash_device_start[],
     __flash_device_end[], __data_start[], __data_end[], __bss_start[], __bss_end[], __stack_start[], __stack_end[],
-    __zbuffer_start[], __zbuffer_end[], __framebuffers_start[], __framebuffers_end[], __arena_start[], __arena_end[],
+    __zbuffer_start[], __zbuffer_end[], __framebuffers_start[], __framebuffers_end[], __arena_start[], __arena_end[], __free_start[],
     __pack_memory_start[], __pack_memory_end[];
 
 namespace facet::evkb {
@@ -62,6 +62,8 @@ uint32_t protect_memory() {
 } // namespace facet::evkb
 
 namespace facet::hal {
+
+FreeRam free_ram() { return {__free_start, size_t(__arena_end - __free_start)}; }
 
 // RAM only: the code executed in place and the pack stay in flash.
 uint32_t memory_map(MemoryRegion* out, uint32_t max) {

@@ -49,14 +49,16 @@ extern "C" [[noreturn]] void board_reset() {
 // Linker-script symbols describing RAM use.
 extern "C" uint8_t __text_start[], __text_end[], __data_start[], __data_end[], __bss_start[],
     __bss_end[], __framebuffers_start[], __framebuffers_end[], __zbuffer_start[], __zbuffer_end[],
-    __arena_start[], __arena_end[], __mmu_table_start[], __mmu_table_end[], __stack_start[],
-    __stack_end[], __pack_start[], __pack_end[];
+    __arena_start[], __arena_end[], __free_start[], __mmu_table_start[], __mmu_table_end[], __stack_start[],
+    __stack_end[];
 
 namespace facet::hal {
 
 Board& board() { return versatilepb::the_board; }
 
 [[noreturn]] void exit(int code) { semihosting::exit(code); }
+
+FreeRam free_ram() { return {__free_start, size_t(__arena_end - __free_start)}; }
 
 uint32_t memory_map(MemoryRegion* out, uint32_t max) {
     static const boards::LinkerSpan spans[] = {
@@ -68,7 +70,6 @@ uint32_t memory_map(MemoryRegion* out, uint32_t max) {
         {"arena", __arena_start, __arena_end},
         {"mmu_table", __mmu_table_start, __mmu_table_end},
         {"stack", __stack_start, __stack_end},
-        {"pack", __pack_start, __pack_end},
     };
     return boards::fill_memory_map(spans, sizeof spans / sizeof spans[0], out, max);
 }

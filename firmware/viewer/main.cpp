@@ -5,8 +5,8 @@
 //
 // This program is one user of the module's events: it turns them into the UART test protocol
 // the host runner and the tests read (and a person with a board watches), and it owns the
-// buffers (two full frames shown by the display's scan-out, a depth buffer each, the
-// workspace, the pack region or, when that is flash, the RAM a deflated pack is inflated into).
+// buffers (two full frames shown by the display's scan-out, a depth buffer each) and hands the
+// module all the free RAM as its workspace (the model's arrays; the pack decoded at its end).
 //
 //   from the firmware   @model, @pass, @lod, @progress, @face N failed, @tessellation /
 //                       @retessellation, @frame, @view, @pick, @budget, @memory; "@begin NAME" /
@@ -34,10 +34,6 @@ constexpr uint8_t kEnq = 0x05, kEsc = 0x1B;
 
 alignas(64) __attribute__((section(".framebuffers"))) Rgb565 frames[2][kPixels];
 alignas(64) __attribute__((section(".zbuffer"))) uint16_t depth[2][kPixels];
-alignas(8) __attribute__((section(".arena"))) uint8_t workspace[FACET_WORKSPACE_BYTES_DEFAULT];
-// A pack in flash is read in place when plain; a deflated one is inflated here.
-constexpr uint32_t kPackMemory = board_config::kPackWritable ? 8 : board_config::kPackMemoryBytes;
-alignas(8) __attribute__((section(".pack_memory"))) uint8_t pack_memory[kPackMemory];
 
 struct Session {
     hal::Board* board = nullptr;
@@ -311,18 +307,17 @@ int facet_main(hal::Board& board) {
     cfg.on_event = on_event;
     cfg.now_us = now_us;
     Result why;
-    session.viewer = Viewer::create(cfg, workspace, sizeof workspace, &why);
+    // The workspace: all the RAM nothing else uses. The module plans the model's arrays in it
+    // at load, and decodes the pack at its end (a pack QEMU loaded into it, where it lies).
+    const hal::FreeRam ram = hal::free_ram();
+    session.viewer = Viewer::create(cfg, ram.start, ram.bytes, &why);
     if (!session.viewer) {
         print(con, "viewer: {} ({})\n", why, why.status);
         return 1;
     }
     Viewer& v = *session.viewer;
     auto* region = reinterpret_cast<uint8_t*>(board_config::kPackAddress);
-    // The file is at the start of the pack region: a deflated one is inflated there, or (the
-    // region being flash) into pack_memory.
-    uint8_t* memory = board_config::kPackWritable ? region : pack_memory;
-    const uint32_t memory_bytes = board_config::kPackWritable ? board_config::kPackBytes : sizeof pack_memory;
-    if (Result r = v.load(region, board_config::kPackBytes, memory, memory_bytes); !r.ok()) {
+    if (Result r = v.load(region, board_config::kPackBytes); !r.ok()) {
         print(con, "viewer: no valid pack: {} ({})\n", r, r.status);
         const bool blank = (region[0] == 0 && region[1] == 0 && region[2] == 0 && region[3] == 0) ||
                            (region[0] == 0xFF && region[1] == 0xFF && region[2] == 0xFF && region[3] == 0xFF);

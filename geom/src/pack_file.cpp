@@ -91,6 +91,48 @@ uint32_t stored_pack_bytes(const void* data, uint32_t available) {
     return read_head(data, available, h) && h.pack_bytes <= kMaxBytes ? h.pack_bytes : 0;
 }
 
+Result stored_pack_counts(const void* data, uint32_t available, PackCounts& out, LzmaProbs& probs) {
+    out = {};
+    // The head and the section table: decoded alone for an LZMA file (its first bytes need no
+    // more of the output than themselves).
+    alignas(4) uint8_t head[sizeof(pack::Header) + 32 * sizeof(pack::SectionEntry)];
+    uint32_t have = 0;
+    const PackFileKind kind = pack_file_kind(data, available);
+    if (kind == PackFileKind::Pack) {
+        have = available < sizeof head ? available : uint32_t(sizeof head);
+        std::memcpy(head, data, have);
+    } else if (kind == PackFileKind::Lzma) {
+        CompressedHead h;
+        if (!read_head(data, available, h) || uint64_t(sizeof(LzmaHead)) + h.stream_bytes > available) {
+            return Result::fail(Status::Corrupt, "the compressed head is cut short or the file truncated", kFile);
+        }
+        const uint32_t want = h.pack_bytes < sizeof head ? h.pack_bytes : uint32_t(sizeof head);
+        LzmaDecoder d;
+        const auto* in = static_cast<const uint8_t*>(data) + sizeof(LzmaHead);
+        Result r = d.start({in, h.stream_bytes}, h.props, {head, want}, probs);
+        while (r.status == Status::Busy) r = d.run(want);
+        have = d.written(); // (a stream longer than the head is no fault here)
+    } else {
+        return Result::fail(Status::Unsupported, "counts are read from a plain or LZMA pack (a deflated one: decode it first)", kFile);
+    }
+    pack::Header h;
+    if (have < sizeof h) return Result::fail(Status::Corrupt, "the pack's head is cut short", kFile);
+    std::memcpy(&h, head, sizeof h);
+    if (std::memcmp(h.magic, pack::kMagic, 4) != 0 || h.header_bytes != sizeof h) {
+        return Result::fail(Status::Corrupt, "no pack head (FPK1) where the file says", kFile);
+    }
+    const uint32_t entries = (have - sizeof h) / sizeof(pack::SectionEntry);
+    if (h.section_count > entries) return Result::fail(Status::Corrupt, "more sections than a pack has", kFile);
+    for (uint32_t i = 0; i < h.section_count; ++i) {
+        pack::SectionEntry e;
+        std::memcpy(&e, head + sizeof h + i * sizeof e, sizeof e);
+        if (e.id == uint32_t(pack::SectionId::Faces)) out.faces = e.count;
+        if (e.id == uint32_t(pack::SectionId::Edges)) out.edges = e.count;
+        if (e.id == uint32_t(pack::SectionId::Shells)) out.shells = e.count;
+    }
+    return {};
+}
+
 Result PackDecoder::start(std::span<const uint8_t> file, std::span<uint8_t> out, LzmaProbs& probs) {
     *this = PackDecoder{};
     kind_ = pack_file_kind(file.data(), uint32_t(file.size()));

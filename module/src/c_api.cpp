@@ -105,6 +105,14 @@ size_t facet_workspace_bytes(const facet_capacity* c) { return c ? workspace_byt
 
 uint32_t facet_pack_memory_bytes(const void* file, uint32_t file_bytes) { return pack_memory_bytes(file, file_bytes); }
 
+facet_result facet_model_needs(const void* file, uint32_t file_bytes, facet_model_needs_t* out) {
+    if (!out) return to_c(Result::fail(Status::OutOfRange, "no facet_model_needs_t to fill"));
+    ModelNeeds n{};
+    const Result r = model_needs(file, file_bytes, n);
+    *out = {n.faces, n.edges, n.parts, n.pack_memory_bytes, n.least_workspace_bytes, n.workspace_bytes};
+    return to_c(r);
+}
+
 facet_viewer* facet_create(const facet_config* c, void* workspace, size_t bytes, facet_result* why) {
     auto refuse = [&](const Result& r) -> facet_viewer* {
         if (why) *why = to_c(r);

@@ -7,132 +7,6 @@
 #include <new>
 
 namespace facet {
-namespace {
-
-using module::Array;
-using module::Carver;
-
-constexpr size_t core_bytes() { return (sizeof(Core) + 15) / 16 * 16; }
-
-// The workspace a capacity takes: the Core, then its arrays.
-constexpr size_t layout_bytes(const Capacity& c, uint32_t patch_words = geom::kPatchCacheWords) {
-    return core_bytes() + module::arrays_bytes(c, patch_words);
-}
-
-// facet/sizes.h states the workspace as a fixed part plus bytes per item of each capacity; the
-// plan's arrays (packed) must take exactly those bytes per item, and the fixed part must hold
-// what is left (the Core, the palettes, the patches, the alignment).
-constexpr size_t packed_bytes(const Capacity& c) {
-    module::Measure<true> m;
-    module::workspace_plan(c, geom::kPatchCacheWords, m);
-    return m.at;
-}
-constexpr Capacity kNothing{0, 0, 0, 0, 0, 0, 0, 0};
-template <uint32_t Capacity::*kItem>
-constexpr size_t bytes_per() {
-    Capacity one = kNothing;
-    one.*kItem = 1;
-    return packed_bytes(one) - packed_bytes(kNothing);
-}
-static_assert(bytes_per<&Capacity::faces>() == FACET_BYTES_PER_FACE, "facet/sizes.h: FACET_BYTES_PER_FACE");
-static_assert(bytes_per<&Capacity::edges>() == FACET_BYTES_PER_EDGE, "facet/sizes.h: FACET_BYTES_PER_EDGE");
-static_assert(bytes_per<&Capacity::samples>() == FACET_BYTES_PER_SAMPLE, "facet/sizes.h: FACET_BYTES_PER_SAMPLE");
-static_assert(bytes_per<&Capacity::face_points>() == FACET_BYTES_PER_FACE_POINT, "facet/sizes.h: FACET_BYTES_PER_FACE_POINT");
-static_assert(bytes_per<&Capacity::loops>() == FACET_BYTES_PER_LOOP, "facet/sizes.h: FACET_BYTES_PER_LOOP");
-static_assert(bytes_per<&Capacity::slivers>() == FACET_BYTES_PER_SLIVER, "facet/sizes.h: FACET_BYTES_PER_SLIVER");
-static_assert(bytes_per<&Capacity::mesh_vertices>() == FACET_BYTES_PER_MESH_VERTEX, "facet/sizes.h: FACET_BYTES_PER_MESH_VERTEX");
-static_assert(bytes_per<&Capacity::mesh_triangles>() == FACET_BYTES_PER_MESH_TRIANGLE,
-              "facet/sizes.h: FACET_BYTES_PER_MESH_TRIANGLE");
-// The alignment the plan's arrays can lose: under 8 bytes each, and as much inside the face's block.
-constexpr size_t kAlignmentSlack = 8 * (uint32_t(Array::PaletteRgb) + 1 + uint32_t(geom::FaceArray::Patches) + 1);
-static_assert(core_bytes() + packed_bytes(kNothing) + kAlignmentSlack <= FACET_WORKSPACE_FIXED_BYTES,
-              "facet/sizes.h: FACET_WORKSPACE_FIXED_BYTES holds the Core, the palettes, the patches and the alignment");
-static_assert(layout_bytes(Capacity{}) <= workspace_bytes(Capacity{}), "facet/sizes.h understates the default workspace");
-
-// Lays the plan's arrays out in the workspace and hands each part of the viewer its own.
-struct Carve {
-    Carver& k;
-    module::Scene::Memory scene{};
-    module::Scheduler::Memory scheduler{};
-    module::Painter::Memory painter{};
-    std::span<module::Projected> projected;
-    Result face_bound;
-
-    template <typename T>
-    std::span<T> as(size_t count, size_t bytes, size_t align) {
-        void* p = k.take(count * bytes, align);
-        return p ? std::span<T>(static_cast<T*>(p), count) : std::span<T>();
-    }
-    void array(Array what, size_t count, size_t bytes, size_t align) {
-        switch (what) {
-        case Array::EdgeFirst: scene.samples.first = as<uint32_t>(count, bytes, align); break;
-        case Array::EdgeCount: scene.samples.count = as<uint16_t>(count, bytes, align); break;
-        case Array::EdgeDrawn: painter.edge_drawn = as<uint8_t>(count, bytes, align); break;
-        case Array::SampleT: scene.samples.t = as<float>(count, bytes, align); break;
-        case Array::SampleP: scene.samples.p = as<geom::Vec3>(count, bytes, align); break;
-        case Array::SampleQ: scene.sample_q = as<int32_t>(count, bytes, align); break;
-        case Array::FaceStorage: break; // face()
-        case Array::FaceVertices: scheduler.face_mesh.vertices = as<geom::MeshVertex>(count, bytes, align); break;
-        case Array::FaceIndices: scheduler.face_mesh.indices = as<uint32_t>(count, bytes, align); break;
-        case Array::MeshVertices: scene.vertices = as<module::DrawVertex>(count, bytes, align); break;
-        case Array::MeshIndices: scene.indices = as<uint16_t>(count, bytes, align); break;
-        case Array::Faces: scene.faces = as<module::FaceInfo>(count, bytes, align); break;
-        case Array::DoneOrder: scene.done_order = as<uint32_t>(count, bytes, align); break;
-        case Array::Projected: projected = painter.projected = as<module::Projected>(count, bytes, align); break;
-        case Array::Palettes: painter.palettes = as<render::Palette>(count, bytes, align); break;
-        case Array::PaletteRgb: painter.palette_rgb = as<uint32_t>(count, bytes, align); break;
-        }
-    }
-    void face(const geom::FaceCapacity& f) {
-        const size_t bytes = geom::face_storage_bytes(f);
-        if (void* p = k.take(bytes, 8)) face_bound = scheduler.storage.bind(p, bytes, f);
-        else face_bound = Result::fail(Status::Full, "no room for a face's storage");
-    }
-};
-
-} // namespace
-
-uint32_t pack_memory_bytes(const void* file, uint32_t file_bytes) { return module::pack_memory_need(file, file_bytes); }
-
-Core::Core(const Config& config, Carver& k)
-    : config_(config), emitter_{relay, this}, painter_(scene_, raster_), scheduler_(scene_, emitter_),
-      presenter_(scene_, camera_, painter_, raster_, emitter_, {config.now_us, config.clock_user}) {
-    Carve c{k, {}, {}, {}, {}, {}};
-    module::workspace_plan(config.capacity, geom::kPatchCacheWords, c);
-    carved_ = k.fits() && c.face_bound.ok();
-    if (!carved_) return;
-    scene_.init(c.scene);
-    c.scheduler.max_face_vertices = uint32_t(c.projected.size());
-    scheduler_.init(c.scheduler);
-    painter_.init(c.painter);
-    projected_ = c.projected;
-    controls_.set_screen(config.display.width, config.display.height);
-    controls_.set_overlay(&presenter_.overlay());
-    presenter_.overlay().set_scene(&scene_);
-}
-
-Viewer* Viewer::create(const Config& config, void* workspace, size_t bytes, Result* why) {
-    auto refuse = [&](Result r) -> Viewer* {
-        if (why) *why = r;
-        return nullptr;
-    };
-    if (!workspace || (reinterpret_cast<uintptr_t>(workspace) & 7)) {
-        return refuse(Result::fail(Status::OutOfRange, "the workspace must be 8-byte aligned", {"workspace"}));
-    }
-    const Capacity& c = config.capacity;
-    if (c.face_points < 8 || c.face_points > 32760 || c.loops == 0 || c.faces == 0 || c.edges == 0 || c.samples < 2) {
-        return refuse(Result::fail(Status::OutOfRange, "a capacity is out of range (face_points 8 to 32,760; the others above 0)", {"capacity"}));
-    }
-    if (bytes < layout_bytes(c)) {
-        return refuse(Result::fail(Status::Full, "the workspace is smaller than workspace_bytes(capacity)", {"bytes", uint32_t(bytes)}));
-    }
-    Carver k(static_cast<uint8_t*>(workspace) + core_bytes(), bytes - core_bytes());
-    Core* core = new (workspace) Core(config, k);
-    if (!core->carved()) return refuse(Result::fail(Status::Full, "the workspace is smaller than workspace_bytes(capacity)"));
-    if (Result r = core->configure(); !r.ok()) return refuse(r);
-    if (why) *why = {};
-    return core;
-}
 
 void Core::relay(void* self, const Event& e) {
     Core& c = *static_cast<Core*>(self);
@@ -186,13 +60,16 @@ Result Core::load(const void* file, uint32_t file_bytes, void* memory, uint32_t 
     pack_bytes_ = pack_file_bytes_ = 0;
     const geom::PackFileKind kind = file ? geom::pack_file_kind(file, file_bytes) : geom::PackFileKind::Unknown;
     const bool decoding = kind != geom::PackFileKind::Pack && kind != geom::PackFileKind::Unknown;
-    if (decoding) work(Event::Kind::WorkBegin, Work::Unpack, 0);
     const uint32_t file_size = file ? geom::pack_file_bytes(file, file_bytes) : 0; // (a file in the pack memory is decoded over)
+    uint8_t* model_end = end_;
+    if (Result r = place_pack(file, file_bytes, file_size, memory, memory_bytes, model_end); !r.ok()) return r;
+    if (decoding) work(Event::Kind::WorkBegin, Work::Unpack, 0);
     module::Unpacked unpacked;
     const Result decoded = module::unpack(file, file_bytes, memory, memory_bytes, unpacked);
     if (decoding) work(Event::Kind::WorkEnd, Work::Unpack, 0);
     if (!decoded.ok()) return decoded;
     if (Result r = module::open_unpacked(unpacked, scene_); !r.ok()) return r;
+    if (Result r = plan(scene_.face_count(), scene_.edge_count(), model_end); !r.ok()) return r;
     pack_file_bytes_ = file_size;
     pack_bytes_ = unpacked.bytes;
     const uint32_t bytes = pack_bytes_;
@@ -381,19 +258,6 @@ void Core::act(Action a) {
     view_changed();
 }
 
-Stats Core::stats() const {
-    const module::Totals& t = scene_.totals();
-    // The plan at this model's peaks (the patches only for a model with free-form surfaces).
-    const Capacity used{scene_.face_count(), scene_.edge_count(), t.samples_peak,   t.face_points_peak,
-                        config_.capacity.loops, t.slivers_peak,   t.vertices_peak, t.triangles_peak};
-    bool free_form = false;
-    for (uint32_t b = 0; scene_.loaded() && b < scene_.block_count(); ++b) {
-        for (const pack::Surface& s : scene_.block(b).pack.surfaces()) free_form = free_form || s.type == uint8_t(pack::SurfaceType::BSpline);
-    }
-    const uint64_t peak = scene_.loaded() ? layout_bytes(used, free_form ? geom::kPatchCacheWords : 0) : core_bytes();
-    return {t.faces, t.done, t.failed, t.triangles, t.vertices, scheduler_.pass(), t.mesh_bytes, t.arena_peak_bytes,
-            pack_bytes_, pack_file_bytes_, uint32_t(peak), scheduler_.tolerance(), painter_.refused()};
-}
 
 // The viewer's public face: each call goes to the Core the workspace holds.
 Result Viewer::load(const void* file, uint32_t file_bytes, void* memory, uint32_t memory_bytes) {

@@ -21,7 +21,7 @@ namespace facet {
 
 class Core : public Viewer {
 public:
-    Core(const Config& config, module::Carver& carver);
+    Core(const Config& config, module::Carver& carver, uint8_t* end);
 
     Result load(const void* file, uint32_t file_bytes, void* memory, uint32_t memory_bytes);
     Activity step(uint32_t budget_us);
@@ -81,6 +81,13 @@ private:
     module::Presenter presenter_;
     module::Framer framer_;
     std::span<module::Projected> projected_;
+    // The workspace past the base arrays: the model's arrays from model_start_ (to model_end_,
+    // planned at load), the pack's decoded blocks at its end when load() is given no memory.
+    uint8_t *model_start_ = nullptr, *model_end_ = nullptr, *end_ = nullptr;
+    module::ModelCapacity model_;
+    Result plan(uint32_t faces, uint32_t edges, uint8_t* end); // the model's arrays in [model_start_, end)
+    Result place_pack(const void* file, uint32_t file_bytes, uint32_t file_size, void*& memory, uint32_t& memory_bytes,
+                      uint8_t*& model_end) const;
     float default_tolerance_ = 0;
     uint32_t pack_bytes_ = 0, pack_file_bytes_ = 0;
     bool carved_ = false;

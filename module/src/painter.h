@@ -23,6 +23,7 @@ public:
 
     Painter(const Scene& scene, render::Rasterizer& raster) : scene_(scene), raster_(raster) {}
     void init(const Memory& memory);
+    void set_edges(std::span<uint8_t> edge_drawn) { mem_.edge_drawn = edge_drawn; } // the model's (load)
     void set_mode(DisplayMode m) { mode_ = m; }
     // Picked faces drawn in the highlight colour (face ~0u: none), and the instance being drawn.
     void set_highlight(uint32_t face0, uint32_t instance0, uint32_t face1, uint32_t instance1) {

@@ -72,12 +72,6 @@ Result Scene::open(const geom::PackIndex& index, std::span<Block> blocks) {
 }
 
 Result Scene::start() {
-    if (faces_ > mem_.faces.size()) {
-        return Result::fail(Status::Full, "more faces than the workspace holds (Capacity::faces)", {"faces", faces_});
-    }
-    if (edges_ > mem_.samples.first.size()) {
-        return Result::fail(Status::Full, "more edges than the workspace holds (Capacity::edges)", {"edges", edges_});
-    }
     float r2 = 0;
     for (int k = 0; k < 3; ++k) {
         centre_[k] = 0.5f * (box_min_[k] + box_max_[k]);
@@ -86,6 +80,17 @@ Result Scene::start() {
     }
     radius_ = own_radius_ = r2 > 0 ? std::sqrt(r2) : 1.0f;
     unit_ = 2 * radius_ / kUnitsPerDiagonal;
+    return {};
+}
+
+Result Scene::attach(const Memory& memory) {
+    mem_ = memory;
+    if (faces_ > mem_.faces.size()) {
+        return Result::fail(Status::Full, "more faces than the workspace holds (Capacity::faces)", {"faces", faces_});
+    }
+    if (edges_ > mem_.samples.first.size()) {
+        return Result::fail(Status::Full, "more edges than the workspace holds (Capacity::edges)", {"edges", edges_});
+    }
     totals_ = {};
     loaded_ = true;
     show_all();

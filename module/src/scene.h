@@ -67,12 +67,14 @@ public:
         std::span<uint32_t> done_order;    // faces in the order they were finished
     };
 
-    void init(const Memory& memory) { mem_ = memory; }
-    // A whole pack (validated): one block. Full if it has more faces or edges than the memory holds.
+    // A whole pack (validated): one block.
     Result open(const geom::Pack& pack);
     // A blocked pack: its index and its blocks (each pack opened; they stay where they are, as
     // the index does), checked against the index's parts.
     Result open(const geom::PackIndex& index, std::span<Block> blocks);
+    // The memory for the opened model (planned for its counts): loaded from then on. Full if
+    // it has more faces or edges than the memory holds.
+    Result attach(const Memory& memory);
     bool loaded() const { return loaded_; }
     void close() { loaded_ = false, blocks_ = {}, totals_ = {}; } // no model (the memory stays)
 

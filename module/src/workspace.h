@@ -18,16 +18,18 @@ namespace facet::module {
 
 constexpr uint32_t kPalettes = 16; // face colours shaded at once (more are rebuilt as needed)
 
-// The arrays of the workspace, in the order they lie in it (after the Core itself).
+// The arrays of the workspace. The base ones (one face's working memory and output, the
+// palettes) are laid out by create(), after the Core; the model's (per edge, per sample, the
+// mesh, per face) by load(), after the base, sized for the model and the room left.
 enum class Array : uint8_t {
-    EdgeFirst, EdgeCount, EdgeDrawn,  // per pack edge: its first sample, its samples, drawn this frame
-    SampleT, SampleP, SampleQ,        // per edge sample: parameter, 3D point, quantized point
     FaceStorage,                      // one face's working memory (geom/face_storage.h), one block
     FaceVertices, FaceIndices,        // one face's float mesh, before the scene quantizes it
-    MeshVertices, MeshIndices,        // the model's mesh
-    Faces, DoneOrder,                 // per pack face: what the scene keeps; the order faces finished
     Projected,                        // one face's vertices on the screen
     Palettes, PaletteRgb,             // the shades of the recently drawn colours, and which they are
+    EdgeFirst, EdgeCount, EdgeDrawn,  // per pack edge: its first sample, its samples, drawn this frame
+    SampleT, SampleP, SampleQ,        // per edge sample: parameter, 3D point, quantized point
+    MeshVertices, MeshIndices,        // the model's mesh
+    Faces, DoneOrder,                 // per pack face: what the scene keeps; the order faces finished
 };
 
 // The face capacity a workspace capacity gives; patch_words: kPatchCacheWords (the device's
@@ -36,27 +38,48 @@ constexpr geom::FaceCapacity face_capacity(const Capacity& c, uint32_t patch_wor
     return {c.face_points, c.loops, c.slivers, patch_words};
 }
 
-// The plan: take.array(what, count, bytes of one, alignment) for each array, and
-// take.face(capacity) for the face's block, in order.
+// The model's part of the workspace: what load() lays out for one model.
+struct ModelCapacity {
+    uint32_t faces = 0, edges = 0, samples = 0, mesh_vertices = 0, mesh_triangles = 0;
+};
+
+// The base plan: take.face(capacity) for the face's block, then take.array(what, count, bytes
+// of one, alignment) for each array, in order.
 template <typename Take>
-constexpr void workspace_plan(const Capacity& c, uint32_t patch_words, Take& take) {
+constexpr void base_plan(const Capacity& c, uint32_t patch_words, Take& take) {
     const geom::FaceCapacity f = face_capacity(c, patch_words);
-    take.array(Array::EdgeFirst, c.edges, sizeof(uint32_t), alignof(uint32_t));
-    take.array(Array::EdgeCount, c.edges, sizeof(uint16_t), alignof(uint16_t));
-    take.array(Array::EdgeDrawn, c.edges, sizeof(uint8_t), alignof(uint8_t));
-    take.array(Array::SampleT, c.samples, sizeof(float), alignof(float));
-    take.array(Array::SampleP, c.samples, sizeof(geom::Vec3), alignof(geom::Vec3));
-    take.array(Array::SampleQ, 3 * size_t(c.samples), sizeof(int32_t), alignof(int32_t));
     take.face(f);
     take.array(Array::FaceVertices, geom::face_mesh_vertices(f), sizeof(geom::MeshVertex), alignof(geom::MeshVertex));
     take.array(Array::FaceIndices, 3 * size_t(geom::face_mesh_triangles(f)), sizeof(uint32_t), alignof(uint32_t));
-    take.array(Array::MeshVertices, c.mesh_vertices, sizeof(DrawVertex), alignof(DrawVertex));
-    take.array(Array::MeshIndices, 3 * size_t(c.mesh_triangles), sizeof(uint16_t), alignof(uint16_t));
-    take.array(Array::Faces, c.faces, sizeof(FaceInfo), alignof(FaceInfo));
-    take.array(Array::DoneOrder, c.faces, sizeof(uint32_t), alignof(uint32_t));
     take.array(Array::Projected, geom::face_mesh_vertices(f), sizeof(Projected), alignof(Projected));
     take.array(Array::Palettes, kPalettes, sizeof(render::Palette), alignof(render::Palette));
     take.array(Array::PaletteRgb, kPalettes, sizeof(uint32_t), alignof(uint32_t));
+}
+
+// The model's plan, after the base.
+template <typename Take>
+constexpr void model_plan(const ModelCapacity& m, Take& take) {
+    take.array(Array::EdgeFirst, m.edges, sizeof(uint32_t), alignof(uint32_t));
+    take.array(Array::EdgeCount, m.edges, sizeof(uint16_t), alignof(uint16_t));
+    take.array(Array::EdgeDrawn, m.edges, sizeof(uint8_t), alignof(uint8_t));
+    take.array(Array::SampleT, m.samples, sizeof(float), alignof(float));
+    take.array(Array::SampleP, m.samples, sizeof(geom::Vec3), alignof(geom::Vec3));
+    take.array(Array::SampleQ, 3 * size_t(m.samples), sizeof(int32_t), alignof(int32_t));
+    take.array(Array::MeshVertices, m.mesh_vertices, sizeof(DrawVertex), alignof(DrawVertex));
+    take.array(Array::MeshIndices, 3 * size_t(m.mesh_triangles), sizeof(uint16_t), alignof(uint16_t));
+    take.array(Array::Faces, m.faces, sizeof(FaceInfo), alignof(FaceInfo));
+    take.array(Array::DoneOrder, m.faces, sizeof(uint32_t), alignof(uint32_t));
+}
+
+constexpr ModelCapacity model_capacity(const Capacity& c) {
+    return {c.faces, c.edges, c.samples, c.mesh_vertices, c.mesh_triangles};
+}
+
+// The whole plan: the base, then the model's at the capacity's own counts.
+template <typename Take>
+constexpr void workspace_plan(const Capacity& c, uint32_t patch_words, Take& take) {
+    base_plan(c, patch_words, take);
+    model_plan(model_capacity(c), take);
 }
 
 // The bytes the plan takes: laid out (aligned), or its arrays' sizes alone (`packed`: what
@@ -84,6 +107,46 @@ constexpr size_t arrays_bytes(const Capacity& c, uint32_t patch_words = geom::kP
     return m.at;
 }
 
+// Bytes of the model's arrays laid out from an 8-byte aligned start.
+constexpr size_t model_bytes(const ModelCapacity& m) {
+    Measure<false> k;
+    model_plan(m, k);
+    return k.at;
+}
+
+// The model's capacity in `room` bytes. Its faces and edges as they are; the room left goes
+// to the edge samples (30% of it), the mesh's vertices (45%) and its triangles (25%), each
+// about what a model of B-rep faces takes at the default detail (an assembly of 3,656 faces:
+// 29,502 samples, 41,068 vertices, 35,268 triangles; finer detail takes more of each). Counts
+// the application fixed (Capacity's nonzero ones) are taken as they are. `need`: the room the
+// model needs at least (two samples an edge: its wireframe at the coarsest); fits: room >= need.
+struct ModelPlan {
+    ModelCapacity capacity;
+    size_t need = 0;
+    bool fits = false;
+};
+constexpr size_t kSampleBytes = sizeof(float) + sizeof(geom::Vec3) + 3 * sizeof(int32_t); // SampleT, P, Q
+constexpr uint32_t kSampleShare = 30, kVertexShare = 45, kTriangleShare = 25; // percent of the room left
+constexpr ModelPlan plan_model(uint32_t faces, uint32_t edges, size_t room, const Capacity& given) {
+    ModelPlan p;
+    ModelCapacity& m = p.capacity;
+    m = {given.faces ? given.faces : faces, given.edges ? given.edges : edges, 0, 0, 0};
+    const size_t fixed = model_bytes(m) + 64; // + the alignment of the arrays after them
+    const size_t room_left = room > fixed ? room - fixed : 0;
+    const size_t least_samples = 2 * size_t(edges) + 2;
+    m.samples = given.samples ? given.samples : uint32_t(room_left * kSampleShare / 100 / kSampleBytes);
+    m.mesh_vertices = given.mesh_vertices ? given.mesh_vertices : uint32_t(room_left * kVertexShare / 100 / sizeof(DrawVertex));
+    m.mesh_triangles = given.mesh_triangles ? given.mesh_triangles : uint32_t(room_left * kTriangleShare / 100 / (3 * sizeof(uint16_t)));
+    if (given.samples) {
+        p.need = model_bytes(m);
+    } else {
+        p.need = fixed + (least_samples * kSampleBytes * 100 + kSampleShare - 1) / kSampleShare;
+        if (given.mesh_vertices || given.mesh_triangles) p.need += model_bytes({0, 0, 0, given.mesh_vertices, given.mesh_triangles});
+    }
+    p.fits = room >= p.need && model_bytes(m) <= room && (given.samples || m.samples >= least_samples);
+    return p;
+}
+
 // Cuts caller memory in order, each piece at its alignment; past the end it hands out nothing
 // and fits() turns false.
 class Carver {
@@ -98,6 +161,7 @@ public:
         return base_ + start;
     }
     bool fits() const { return base_ && at_ <= room_; }
+    uint8_t* next() const { return base_ + at_; } // where the next piece would start (unaligned)
 
 private:
     uint8_t* base_ = nullptr;

@@ -62,8 +62,9 @@ int main(int argc, char **argv) {
 
     if (argc != 2) return 2;
     facet_config_init(&cfg);
-    CHECK(cfg.capacity.faces == FACET_DEFAULT_FACES && cfg.step_slack_us > 0);
-    CHECK(facet_workspace_bytes(&cfg.capacity) == FACET_WORKSPACE_BYTES_DEFAULT);
+    /* The model's counts planned at load (0), one face's working memory at its default. */
+    CHECK(cfg.capacity.faces == 0 && cfg.capacity.face_points == FACET_DEFAULT_FACE_POINTS && cfg.step_slack_us > 0);
+    CHECK(facet_workspace_bytes(&cfg.capacity) == FACET_WORKSPACE_BASE_BYTES);
     cfg.display.width = W;
     cfg.display.height = H;
     cfg.display.band_lines = LINES;
@@ -102,6 +103,14 @@ int main(int argc, char **argv) {
     if (!file || fread(file, 1, (size_t)size, f) != (size_t)size) return 2;
     fclose(f);
     need = facet_pack_memory_bytes(file, (uint32_t)size);
+    {
+        facet_model_needs_t needs;
+        why = facet_model_needs(file, (uint32_t)size, &needs);
+        CHECK(why.status == FACET_OK && needs.faces > 0 && needs.edges > 0 && needs.pack_memory_bytes == need);
+        CHECK(needs.least_workspace_bytes > FACET_WORKSPACE_BASE_BYTES && needs.least_workspace_bytes <= needs.workspace_bytes);
+        CHECK(needs.workspace_bytes <= sizeof workspace);
+        CHECK(facet_model_needs(file, (uint32_t)size, NULL).status == FACET_OUT_OF_RANGE);
+    }
     memory = malloc(need + 4);
     why = facet_load(viewer, file, (uint32_t)size, memory, need);
     CHECK(why.status == FACET_OK);

@@ -42,8 +42,8 @@ struct Model {
         words.assign(bytes.size() / 4 + 1, 0);
         std::memcpy(words.data(), bytes.data(), bytes.size());
         EXPECT_TRUE(pack.open(words.data(), uint32_t(bytes.size())).ok());
-        scene.init({geom::EdgeSamples{first, count, {}, {}}, {}, {}, {}, faces, done});
         EXPECT_TRUE(scene.open(pack).ok());
+        EXPECT_TRUE(scene.attach({geom::EdgeSamples{first, count, {}, {}}, {}, {}, {}, faces, done}).ok());
     }
 };
 

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cstring>
 #include <string>
@@ -56,6 +57,7 @@ struct App {
     bool interface = false; // the model alone (the on-screen interface has tests of its own)
 
     Capacity capacity;
+    size_t workspace_size = 0; // 0: FACET_WORKSPACE_BYTES_DEFAULT (or the capacity's own, when larger)
 
     Result create(bool depth_per_buffer = true) {
         for (int b = 0; b < 2; ++b) {
@@ -83,9 +85,10 @@ struct App {
         }
         cfg.capacity = capacity;
         cfg.interface = interface;
-        workspace.assign(workspace_bytes() / 8 + 1, 0);
+        const size_t bytes = workspace_size ? workspace_size : std::max<size_t>(workspace_bytes(capacity), FACET_WORKSPACE_BYTES_DEFAULT);
+        workspace.assign(bytes / 8, 0);
         Result why;
-        v = Viewer::create(cfg, workspace.data(), workspace.size() * 8, &why);
+        v = Viewer::create(cfg, workspace.data(), bytes / 8 * 8, &why);
         return why;
     }
     void flushed(const Area& a, const Rgb565* px) {

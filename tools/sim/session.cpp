@@ -129,16 +129,6 @@ bool Session::open(const Options& o, std::string& error) {
     cfg.on_event = event;
     cfg.event_user = this;
     cfg.now_us = o.clock ? now_us : nullptr;
-    workspace_storage_.assign(facet::workspace_bytes() + 8, 0);
-    void* ws = workspace_storage_.data() + ((8 - reinterpret_cast<uintptr_t>(workspace_storage_.data()) % 8) % 8);
-    facet::Result why;
-    viewer_ = facet::Viewer::create(cfg, ws, facet::workspace_bytes(), &why);
-    char text[200];
-    if (!viewer_) {
-        facet::describe(why, text, sizeof text);
-        error = std::string("the viewer: ") + text;
-        return false;
-    }
     std::ifstream in(o.pack, std::ios::binary);
     if (!in) {
         error = "cannot read " + o.pack;
@@ -151,6 +141,23 @@ bool Session::open(const Options& o, std::string& error) {
     }
     file_.assign(bytes.size() / 4 + 1, 0);
     std::memcpy(file_.data(), bytes.data(), bytes.size());
+    // The workspace the model needs at the default detail with room to refine (a board hands
+    // the module all its free RAM; the simulator what this model asks for, at least the default).
+    char text[200];
+    facet::ModelNeeds needs{};
+    size_t ws_bytes = FACET_WORKSPACE_BYTES_DEFAULT;
+    if (facet::model_needs(file_.data(), uint32_t(bytes.size()), needs).ok() && needs.workspace_bytes > ws_bytes) {
+        ws_bytes = (needs.workspace_bytes + 7) / 8 * 8;
+    }
+    workspace_storage_.assign(ws_bytes + 8, 0);
+    void* ws = workspace_storage_.data() + ((8 - reinterpret_cast<uintptr_t>(workspace_storage_.data()) % 8) % 8);
+    facet::Result why;
+    viewer_ = facet::Viewer::create(cfg, ws, ws_bytes, &why);
+    if (!viewer_) {
+        facet::describe(why, text, sizeof text);
+        error = std::string("the viewer: ") + text;
+        return false;
+    }
     const uint32_t need = facet::pack_memory_bytes(file_.data(), uint32_t(bytes.size()));
     memory_.assign(need / 4 + 1, 0);
     const facet::Result r = viewer_->load(file_.data(), uint32_t(bytes.size()), memory_.data(), uint32_t(memory_.size() * 4));

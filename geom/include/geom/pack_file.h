@@ -64,6 +64,14 @@ private:
 // The decoded size of a stored pack as its head says (plain: its total), 0 when unreadable.
 uint32_t stored_pack_bytes(const void* data, uint32_t available);
 
+// The counts of a whole pack's records, from its head and section table alone (an LZMA
+// file's first few hundred bytes decoded with `probs`; a deflated one is refused: Unsupported).
+// Not validated: the pack's own open() checks them when it is read.
+struct PackCounts {
+    uint32_t faces = 0, edges = 0, shells = 0;
+};
+Result stored_pack_counts(const void* data, uint32_t available, PackCounts& out, LzmaProbs& probs);
+
 // Makes the file loaded at region[0, loaded) a pack at region[0, bytes). A compressed file is
 // moved to the region's end and decoded to its start: it needs the pack's size plus its own
 // within `capacity` (an LZMA file kLzmaStateBytes more, for its state at the very end). A plain

@@ -32,6 +32,13 @@ struct MemoryRegion {
 };
 // Fills up to `max` entries describing how the board's RAM is used; returns the count.
 uint32_t memory_map(MemoryRegion* out, uint32_t max);
+// The RAM nothing else uses (after the linker's .arena contents, to the end of its memory):
+// what the firmware hands the module as its workspace. A pack QEMU loads into RAM lies inside.
+struct FreeRam {
+    uint8_t* start;
+    size_t bytes;
+};
+FreeRam free_ram();
 // Bytes of stack never touched since boot (the painted stack's high-water mark), and its size.
 uint32_t stack_unused();
 uint32_t stack_size();

@@ -122,6 +122,13 @@ typedef struct {
 void facet_config_init(facet_config *config);
 size_t facet_workspace_bytes(const facet_capacity *capacity);
 uint32_t facet_pack_memory_bytes(const void *file, uint32_t file_bytes);
+/* What a pack needs (facet::model_needs: its counts, pack memory, the least workspace that
+ * opens it and one with room to refine), from its head or index alone. */
+typedef struct {
+    uint32_t faces, edges, parts, pack_memory_bytes;
+    size_t least_workspace_bytes, workspace_bytes;
+} facet_model_needs_t;
+facet_result facet_model_needs(const void *file, uint32_t file_bytes, facet_model_needs_t *needs);
 
 facet_viewer *facet_create(const facet_config *config, void *workspace, size_t bytes, facet_result *why);
 facet_result facet_load(facet_viewer *viewer, const void *file, uint32_t file_bytes, void *memory, uint32_t memory_bytes);

@@ -13,13 +13,11 @@
 // It draws into the caller's draw buffers and hands each finished area to display.flush, like
 // LVGL's flush_cb; it reports through on_event and never prints.
 //
-// Threads and interrupts: one Viewer is used from one thread (a task, or the main loop) and is
-// not re-entrant: create, load, step, the input calls and the queries, in any order, from that
-// thread only. flush_done() alone may be called from any context, an interrupt included (a DMA
-// or vertical-blank handler); it only sets a flag. The callbacks run inside step() (flush,
-// on_event) or load() (on_event), on the caller's thread; they may call flush_done() and the
-// queries, nothing else of the module. Input from an interrupt is queued by the application and
-// fed from its thread. Several Viewers (each with its own memory) are independent.
+// Threads and interrupts: a Viewer is used from one thread (a task or the main loop), not
+// re-entrant. flush_done() alone may be called from any context (a DMA or vertical-blank
+// interrupt): it only sets a flag. The callbacks run inside step() and load() on that thread and
+// may call flush_done() and the queries only. Input from an interrupt is queued by the
+// application and fed from its thread. Several Viewers (each with its own memory) are independent.
 #include "core/pixel.h"
 #include "core/status.h"
 #include "facet/sizes.h"
@@ -29,24 +27,34 @@
 
 namespace facet {
 
+// One face's working memory (face_points, loops, slivers) is laid out by create(); the model's
+// arrays by load(), for its faces and edges in the room left: 0 plans a count, a number fixes it.
 struct Capacity {
-    uint32_t faces = FACET_DEFAULT_FACES, edges = FACET_DEFAULT_EDGES, samples = FACET_DEFAULT_SAMPLES;
+    uint32_t faces = 0, edges = 0, samples = 0;
     uint32_t face_points = FACET_DEFAULT_FACE_POINTS, loops = FACET_DEFAULT_LOOPS, slivers = FACET_DEFAULT_SLIVERS;
-    uint32_t mesh_vertices = FACET_DEFAULT_MESH_VERTICES, mesh_triangles = FACET_DEFAULT_MESH_TRIANGLES;
+    uint32_t mesh_vertices = 0, mesh_triangles = 0;
 };
 
+// The least workspace create() takes (the default: FACET_WORKSPACE_BASE_BYTES); plus the model's.
 constexpr size_t workspace_bytes(const Capacity& c = {}) {
-    return FACET_WORKSPACE_BYTES(c.faces, c.edges, c.samples, c.face_points, c.loops, c.slivers, c.mesh_vertices,
-                                 c.mesh_triangles);
+    return FACET_WORKSPACE_BYTES(c.faces, c.edges, c.samples, c.face_points, c.loops, c.slivers, c.mesh_vertices, c.mesh_triangles);
 }
 constexpr size_t draw_bytes(uint16_t width, uint16_t lines) { return FACET_DRAW_BYTES(width, lines); }
 constexpr size_t depth_bytes(uint16_t width, uint16_t lines) { return FACET_DEPTH_BYTES(width, lines); }
 
-// Bytes of pack memory load() needs for this pack file: 0 for a plain pack it can read in
-// place (4-byte aligned), the pack's size for a compressed one (its head says; + LZMA state) or an unaligned
-// plain one, its blocks decoded for a blocked one (4-byte aligned; its index says: + a table of the
-// blocks and LZMA state); 0 for bytes that are no pack (load() then says why).
+// Pack memory load() needs for a file: 0 read in place (plain, aligned), else what it decodes to
+// (+ LZMA state; a blocked pack's compressed blocks and their table); 0 for bytes that are no pack.
 uint32_t pack_memory_bytes(const void* file, uint32_t file_bytes);
+
+// What a pack needs (from its head or index alone): counts, pack memory (from the workspace's end
+// when load() is given none), the least workspace that opens it (faces the mesh has no room for
+// stay wireframe; less: Full, bytes needed) and one with room to refine the default detail.
+struct ModelNeeds {
+    uint32_t faces, edges, parts, pack_memory_bytes;
+    size_t least_workspace_bytes, workspace_bytes;
+};
+// Ok, or why the bytes are no pack (Corrupt, Unsupported).
+Result model_needs(const void* file, uint32_t file_bytes, ModelNeeds& needs);
 
 // How the application's display takes a finished area.
 enum class Flush : uint8_t {
@@ -79,12 +87,10 @@ struct Event {
         Sampled,         // its edges are sampled: samples
         Progress,        // a face was tessellated (or failed): counts
         FaceFailed,      // a face could not be tessellated (why); it stays wireframe
-        PassFailed,      // a level of detail could not sample its edges (why): the previous one
-                         // stays (none at load: nothing is shown)
+        PassFailed,      // a level's edges could not be sampled (why): the previous level stays
         Tessellated,     // every face of the pass is done: totals
         FrameDone,       // a frame was handed to the display: what it drew and its cost
-        BudgetExceeded,  // a step ran past its budget by more than Config::step_slack_us, or a
-                         // frame took longer than Config::frame_budget_us
+        BudgetExceeded,  // a step over its budget + step_slack_us, or a frame over frame_budget_us
         Picked,          // a tap or click picked a face (or nothing)
         ViewChanged,     // the camera moved
         WorkBegin,       // a piece of work begins / ends (regions for a profiler)
@@ -165,8 +171,7 @@ KeyBindings key_bindings(); // for a help screen: what each key does
 
 struct Stats {
     uint32_t faces, done, failed, triangles, vertices, pass;
-    uint32_t mesh_bytes, arena_peak_bytes, pack_bytes, pack_file_bytes;
-    uint32_t workspace_peak_bytes; // the workspace this model needed at its peak (the rest is room)
+    uint32_t mesh_bytes, arena_peak_bytes, pack_bytes, pack_file_bytes, workspace_peak_bytes; // workspace: at its peak
     float tolerance_mm;
     uint32_t refused;              // triangles and lines the rasterizer refused: 0 (all are clipped first)
 };
@@ -179,11 +184,11 @@ public:
 
     // Takes a pack file (plain, LZMA, deflated, or blocked: facet-pack's default, an index and
     // blocks of a few parts) and shows its wireframe. A plain, aligned pack is read in place and
-    // must stay there, as must a blocked pack's index; a compressed pack or the blocks are decoded
-    // into `memory` (pack_memory_bytes()); when the file itself lies inside `memory`, it is
-    // decoded in place (memory: the decoded size plus the file's, plus 9,840 bytes for LZMA).
-    // Corrupt names the bad record (and block); Full: the model exceeds the capacities. The
-    // previous model, if any, is dropped first.
+    // must stay there, as must a blocked pack's index; the rest is decoded into `memory`
+    // (pack_memory_bytes(); a file inside it is decoded there) or, given none, into the
+    // workspace's end (a file the board loaded into the workspace is decoded where it lies).
+    // Then the model's arrays are planned in the room left. Corrupt names the bad record (and
+    // block); Full: the workspace is too small (bytes needed). The previous model is dropped first.
     Result load(const void* file, uint32_t file_bytes, void* memory = nullptr, uint32_t memory_bytes = 0);
 
     // Does pieces of work (a frame, a piece of a face's tessellation) until `budget_us` have

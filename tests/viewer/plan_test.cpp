@@ -1,0 +1,124 @@
+// The workspace planned for the model (issue 25): load() lays out the model's arrays for its
+// own faces and edges in the room the workspace has, so a model larger than the old fixed
+// capacities (8,192 faces) opens when the memory is there; model_needs() says what a pack needs
+// from its head or index alone, and a workspace under that is refused with the bytes missing.
+// Given no pack memory, a compressed pack is decoded at the workspace's end, and a file the
+// board loaded into the workspace is decoded where it lies.
+#include "app.h"
+
+#include <vector>
+
+using namespace facet;
+using namespace facet::test;
+using geom::deflate_pack;
+
+namespace {
+
+// A grid of `count` unit squares 2 mm apart in z = 0, one face each (their own four edges), in one shell.
+Bytes squares(uint32_t count) {
+    PackWriter w;
+    const uint32_t plane = w.add_surface(pack::SurfaceType::Plane, {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1});
+    const uint32_t columns = 100;
+    for (uint32_t i = 0; i < count; ++i) {
+        const float x = float(2 * (i % columns)), y = float(2 * (i / columns));
+        const uint32_t v[4] = {w.add_vertex(x, y, 0), w.add_vertex(x + 1, y, 0), w.add_vertex(x + 1, y + 1, 0), w.add_vertex(x, y + 1, 0)};
+        uint32_t e[4];
+        for (int k = 0; k < 4; ++k) e[k] = w.add_edge({pack::kStraight, 0, 1, v[k], v[(k + 1) % 4], 1e-7f, 0});
+        const uint32_t first = w.coedge_count();
+        for (int k = 0; k < 4; ++k) w.add_coedge(pack::Coedge::make(e[k], false, pack::Seam::None));
+        const uint32_t loop = w.add_loop({first, 4});
+        w.add_face({plane, loop, 1, pack::kNoIndex, pack::kNoIndex, 0, {0, 0, 0}, {x, y}, {x + 1, y + 1}});
+    }
+    const uint32_t shell = w.add_shell({0, count, pack::kNoIndex, 0});
+    w.add_instance({shell, {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0}});
+    return w.finish();
+}
+
+struct Aligned {
+    std::vector<uint64_t> words;
+    uint32_t bytes;
+    explicit Aligned(const Bytes& b) : words(b.size() / 8 + 1), bytes(uint32_t(b.size())) { std::memcpy(words.data(), b.data(), b.size()); }
+    const void* data() const { return words.data(); }
+};
+
+} // namespace
+
+TEST(Plan, AModelOverTheOldCapacitiesOpensInTheWorkspaceItNeeds) {
+    const uint32_t kFaces = 8400; // over the 8,192 faces a default workspace held before
+    const Aligned file(squares(kFaces));
+    ModelNeeds needs{};
+    ASSERT_TRUE(model_needs(file.data(), file.bytes, needs).ok());
+    EXPECT_EQ(needs.faces, kFaces);
+    EXPECT_EQ(needs.edges, 4 * kFaces);
+    EXPECT_EQ(needs.parts, 1u);
+    EXPECT_EQ(needs.pack_memory_bytes, 0u) << "a plain pack is read in place";
+    EXPECT_GT(needs.least_workspace_bytes, workspace_bytes());
+    EXPECT_GE(needs.workspace_bytes, needs.least_workspace_bytes);
+
+    // The workspace it needs: every face shaded.
+    App app;
+    app.w = 320, app.h = 240;
+    app.workspace_size = needs.workspace_bytes;
+    ASSERT_TRUE(app.create().ok());
+    Result r = app.v->load(file.data(), file.bytes);
+    ASSERT_TRUE(r.ok()) << text(r);
+    app.run();
+    EXPECT_EQ(app.v->stats().faces, kFaces);
+    EXPECT_EQ(app.v->stats().done, kFaces);
+    EXPECT_EQ(app.v->stats().failed, 0u);
+    EXPECT_EQ(app.v->stats().triangles, 2 * kFaces);
+
+    // The least: it opens; a kilobyte less (more than the alignment the least allows for) is
+    // refused with the bytes missing, and nothing is shown.
+    App least;
+    least.workspace_size = needs.least_workspace_bytes;
+    ASSERT_TRUE(least.create().ok());
+    r = least.v->load(file.data(), file.bytes);
+    EXPECT_TRUE(r.ok()) << text(r);
+    least.run();
+    EXPECT_EQ(least.v->stats().faces, kFaces);
+    App short_of;
+    short_of.workspace_size = needs.least_workspace_bytes - 1024;
+    ASSERT_TRUE(short_of.create().ok());
+    r = short_of.v->load(file.data(), file.bytes);
+    EXPECT_EQ(r.status, Status::Full);
+    EXPECT_NE(text(r).find("bytes needed"), std::string::npos) << text(r);
+    EXPECT_EQ(short_of.v->step(1000), Activity::Idle);
+    // A model that fits loads after the refusal.
+    r = short_of.load(polygon_and_triangle(12));
+    EXPECT_TRUE(r.ok()) << text(r);
+}
+
+TEST(Plan, WithoutPackMemoryTheWorkspaceEndHoldsTheDecodedPack) {
+    const Bytes plain = polygon_and_triangle(24);
+    const Bytes file = deflate_pack(plain);
+    // With pack memory of its own (the reference), then with none.
+    App given, none;
+    ASSERT_TRUE(given.create().ok());
+    ASSERT_TRUE(given.load(file).ok());
+    given.run();
+    ASSERT_TRUE(none.create().ok());
+    const Aligned f(file);
+    const Result r = none.v->load(f.data(), f.bytes);
+    ASSERT_TRUE(r.ok()) << text(r);
+    none.run();
+    EXPECT_EQ(none.v->stats().triangles, given.v->stats().triangles);
+    EXPECT_EQ(none.screen(), given.screen());
+
+    // A file the board loaded into the workspace's free room (the boards hand the module all
+    // free RAM, the loaded file included) is decoded where it lies.
+    App inside;
+    ASSERT_TRUE(inside.create().ok());
+    const size_t at = inside.workspace.size() * 8 - (file.size() + 64) / 8 * 8;
+    std::memcpy(reinterpret_cast<uint8_t*>(inside.workspace.data()) + at, file.data(), file.size());
+    const Result in = inside.v->load(reinterpret_cast<uint8_t*>(inside.workspace.data()) + at, uint32_t(file.size()));
+    ASSERT_TRUE(in.ok()) << text(in);
+    inside.run();
+    EXPECT_EQ(inside.screen(), given.screen());
+
+    // Pack memory that overlaps the workspace is refused (the model's arrays would be laid over it).
+    App overlap;
+    ASSERT_TRUE(overlap.create().ok());
+    uint8_t* tail = reinterpret_cast<uint8_t*>(overlap.workspace.data()) + overlap.workspace.size() * 8 - 65536;
+    EXPECT_EQ(overlap.v->load(f.data(), f.bytes, tail, 65536).status, Status::OutOfRange);
+}
