@@ -14,8 +14,7 @@ void Core::relay(void* self, const Event& e) {
     case Event::Kind::Pass: c.presenter_.set_tolerance(e.pass.tolerance_mm); break;
     case Event::Kind::PassFailed: c.presenter_.set_tolerance(c.scheduler_.tolerance()); break; // back to the previous level
     case Event::Kind::Sampled: // the new level's wireframe; the first one frames the placed model
-        if (e.pass.pass == 0) { // in the direction the user chose meanwhile, if any
-            c.scene_.fit_bounds(true);
+        if (e.pass.pass == 0) { // in the direction the user chose meanwhile, if any (each bounds the sampled model)
             if (c.glide_.phase != Glide::Phase::None) c.glide_to(c.glide_.target.view());
             else c.fit_view(c.user_moved_);
         }
