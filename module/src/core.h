@@ -81,10 +81,9 @@ private:
     module::Presenter presenter_;
     module::Framer framer_;
     std::span<module::Projected> projected_;
-    // The workspace past the base arrays: the model's arrays from model_start_ (to model_end_,
-    // planned at load), the pack's decoded blocks at its end when load() is given no memory.
-    uint8_t *model_start_ = nullptr, *model_end_ = nullptr, *end_ = nullptr;
-    module::ModelCapacity model_;
+    // The workspace past the base arrays: the model's arrays from model_start_ (planned at
+    // load), the pack's decoded blocks at its end (end_) when load() is given no memory.
+    uint8_t *model_start_ = nullptr, *end_ = nullptr;
     Result plan(uint32_t faces, uint32_t edges, uint8_t* end); // the model's arrays in [model_start_, end)
     Result place_pack(const void* file, uint32_t file_bytes, uint32_t file_size, void*& memory, uint32_t& memory_bytes,
                       uint8_t*& model_end) const;

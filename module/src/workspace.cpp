@@ -119,9 +119,9 @@ Result model_needs(const void* file, uint32_t file_bytes, ModelNeeds& needs) {
     // (+ the alignment the base's end and the model's arrays may lose, to 8 bytes)
     needs.least_workspace_bytes = (base + module::plan_model(needs.faces, needs.edges, 0, Capacity{}).need + 64 + 7) / 8 * 8;
     // Room for six samples an edge (the default detail takes two to four, finer up to twice that).
-    const size_t roomy = module::model_bytes({needs.faces, needs.edges, 0, 0, 0}) + 64 +
-                         6 * size_t(needs.edges) * module::kSampleBytes * 100 / module::kSampleShare;
-    needs.workspace_bytes = base + (roomy > needs.least_workspace_bytes - base ? roomy : needs.least_workspace_bytes - base);
+    const size_t roomy = base + module::model_bytes({needs.faces, needs.edges, 0, 0, 0}) + 64 +
+                         module::sample_share_room(6 * size_t(needs.edges));
+    needs.workspace_bytes = std::max(roomy, needs.least_workspace_bytes);
     return {};
 }
 
@@ -179,8 +179,6 @@ Result Core::plan(uint32_t faces, uint32_t edges, uint8_t* end) {
     Carve c{k, {}, {}, {}, {}, {}};
     module::model_plan(p.capacity, c);
     if (!k.fits()) return Result::fail(Status::Full, "the workspace is too small for this model's arrays");
-    model_ = p.capacity;
-    model_end_ = k.next();
     painter_.set_edges(c.painter.edge_drawn);
     return scene_.attach(c.scene);
 }

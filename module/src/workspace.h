@@ -118,8 +118,9 @@ constexpr size_t model_bytes(const ModelCapacity& m) {
 // to the edge samples (30% of it), the mesh's vertices (45%) and its triangles (25%), each
 // about what a model of B-rep faces takes at the default detail (an assembly of 3,656 faces:
 // 29,502 samples, 41,068 vertices, 35,268 triangles; finer detail takes more of each). Counts
-// the application fixed (Capacity's nonzero ones) are taken as they are. `need`: the room the
-// model needs at least (two samples an edge: its wireframe at the coarsest); fits: room >= need.
+// the application fixed (Capacity's nonzero ones) are taken as they are, and the shares are of
+// the room after them. `need`: the room the model needs at least (planned samples: two an
+// edge, its wireframe at the coarsest); fits: room >= need.
 struct ModelPlan {
     ModelCapacity capacity;
     size_t need = 0;
@@ -127,23 +128,21 @@ struct ModelPlan {
 };
 constexpr size_t kSampleBytes = sizeof(float) + sizeof(geom::Vec3) + 3 * sizeof(int32_t); // SampleT, P, Q
 constexpr uint32_t kSampleShare = 30, kVertexShare = 45, kTriangleShare = 25; // percent of the room left
+// The room left whose sample share holds `samples`.
+constexpr size_t sample_share_room(size_t samples) { return (samples * kSampleBytes * 100 + kSampleShare - 1) / kSampleShare; }
 constexpr ModelPlan plan_model(uint32_t faces, uint32_t edges, size_t room, const Capacity& given) {
     ModelPlan p;
-    ModelCapacity& m = p.capacity;
-    m = {given.faces ? given.faces : faces, given.edges ? given.edges : edges, 0, 0, 0};
-    const size_t fixed = model_bytes(m) + 64; // + the alignment of the arrays after them
+    const ModelCapacity fixed_counts{given.faces ? given.faces : faces, given.edges ? given.edges : edges, given.samples,
+                                     given.mesh_vertices, given.mesh_triangles};
+    const size_t fixed = model_bytes(fixed_counts) + 64; // + the alignment of the arrays after them
     const size_t room_left = room > fixed ? room - fixed : 0;
-    const size_t least_samples = 2 * size_t(edges) + 2;
-    m.samples = given.samples ? given.samples : uint32_t(room_left * kSampleShare / 100 / kSampleBytes);
-    m.mesh_vertices = given.mesh_vertices ? given.mesh_vertices : uint32_t(room_left * kVertexShare / 100 / sizeof(DrawVertex));
-    m.mesh_triangles = given.mesh_triangles ? given.mesh_triangles : uint32_t(room_left * kTriangleShare / 100 / (3 * sizeof(uint16_t)));
-    if (given.samples) {
-        p.need = model_bytes(m);
-    } else {
-        p.need = fixed + (least_samples * kSampleBytes * 100 + kSampleShare - 1) / kSampleShare;
-        if (given.mesh_vertices || given.mesh_triangles) p.need += model_bytes({0, 0, 0, given.mesh_vertices, given.mesh_triangles});
-    }
-    p.fits = room >= p.need && model_bytes(m) <= room && (given.samples || m.samples >= least_samples);
+    ModelCapacity& m = p.capacity;
+    m = fixed_counts;
+    if (!given.samples) m.samples = uint32_t(room_left * kSampleShare / 100 / kSampleBytes);
+    if (!given.mesh_vertices) m.mesh_vertices = uint32_t(room_left * kVertexShare / 100 / sizeof(DrawVertex));
+    if (!given.mesh_triangles) m.mesh_triangles = uint32_t(room_left * kTriangleShare / 100 / (3 * sizeof(uint16_t)));
+    p.need = fixed + (given.samples ? 0 : sample_share_room(2 * size_t(edges) + 2));
+    p.fits = room >= p.need && model_bytes(m) <= room;
     return p;
 }
 
