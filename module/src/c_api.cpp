@@ -159,7 +159,7 @@ void facet_touch(facet_viewer* v, uint8_t id, int16_t x, int16_t y, int down) { 
 facet_stats facet_get_stats(const facet_viewer* v) {
     const Stats s = cpp(v)->stats();
     return {s.faces, s.done, s.failed, s.triangles, s.vertices, s.pass, s.mesh_bytes, s.arena_peak_bytes, s.pack_bytes,
-            s.pack_file_bytes, s.workspace_peak_bytes, s.tolerance_mm, s.refused};
+            s.pack_file_bytes, s.workspace_peak_bytes, s.tolerance_mm, s.refused, s.deferred};
 }
 
 } // extern "C"

@@ -156,6 +156,32 @@ Transform Camera::transform(const Scene& scene, uint32_t index, uint16_t width, 
     return in;
 }
 
+SphereView Camera::sphere_view(const Scene& scene, uint16_t width, uint16_t height) const {
+    SphereView s{};
+    rotation(s.R);
+    for (int k = 0; k < 3; ++k) s.centre[k] = scene.centre()[k];
+    s.pan[0] = view_.pan_x, s.pan[1] = view_.pan_y;
+    s.dist = distance_mm(scene);
+    s.near = float(kRadiusV / 64) * (2 * scene.radius()) / kViewPerDiagonal; // as Transform::near
+    s.focal = focal_px(width, height);
+    s.half_w = 0.5f * float(width), s.half_h = 0.5f * float(height);
+    s.ortho = view_.ortho;
+    return s;
+}
+
+float SphereView::pixels(const float p[3], float r) const {
+    const float w[3] = {p[0] - centre[0], p[1] - centre[1], p[2] - centre[2]};
+    const float x = R[0] * w[0] + R[1] * w[1] + R[2] * w[2] + pan[0];
+    const float y = R[3] * w[0] + R[4] * w[1] + R[5] * w[2] + pan[1];
+    const float d = dist - (R[6] * w[0] + R[7] * w[1] + R[8] * w[2]);
+    if (d + r < near) return 0;
+    const float D = ortho ? dist : d, ax = x < 0 ? -x : x, ay = y < 0 ? -y : y;
+    if (ax * focal - half_w * D > r * (focal + half_w) || ay * focal - half_h * D > r * (focal + half_h)) return 0;
+    const float over = ortho ? dist : d - r;
+    if (over < near) return 1e9f; // at the eye
+    return 2 * r * focal / over;
+}
+
 // Each side test is conservative: the sphere's distance to a side plane is compared with its
 // radius times a bound on the plane normal's length.
 bool Transform::visible(const int32_t centre[3], int32_t radius, Rows rows) const {

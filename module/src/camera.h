@@ -121,12 +121,27 @@ struct Transform {
     }
 };
 
+// Spheres of the placed model on the screen, for the level of detail: a few dozen float
+// operations a sphere, no fixed-point transform per instance. Sides as Transform::visible.
+struct SphereView {
+    float R[9], centre[3], pan[2];
+    float dist, near, focal, half_w, half_h; // mm, pixels
+    bool ortho;
+    // A sphere's size across on the screen (placed model, mm, radius r), in pixels at its
+    // nearest point: 0 when it lies wholly off the screen or behind the eye.
+    float pixels(const float p[3], float r) const;
+};
+
 // The view: orbit angles (rad), dolly factor (1 = the sphere fitted), pan (mm, in view x/y),
 // and the projection (perspective, or parallel: the sizes at the model's centre everywhere).
 struct View {
     float yaw = 0.6f, pitch = -0.95f, zoom = 1, pan_x = 0, pan_y = 0;
     bool ortho = false;
 };
+
+inline bool same_view(const View& a, const View& b) {
+    return a.yaw == b.yaw && a.pitch == b.pitch && a.zoom == b.zoom && a.pan_x == b.pan_x && a.pan_y == b.pan_y && a.ortho == b.ortho;
+}
 
 // The standard views of a z-up model (yaw, pitch): front looks along +y, right along -x, top
 // down -z; isometric from (+1, -1, +1).
@@ -158,6 +173,7 @@ public:
     float distance_mm(const Scene& scene) const;
     static float focal_px(uint16_t width, uint16_t height);
 
+    SphereView sphere_view(const Scene& scene, uint16_t width, uint16_t height) const;
     // Instance `instance` of the scene under this camera on a width x height screen.
     Transform transform(const Scene& scene, uint32_t instance, uint16_t width, uint16_t height) const;
 

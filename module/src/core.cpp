@@ -73,6 +73,7 @@ Result Core::load(const void* file, uint32_t file_bytes, void* memory, uint32_t 
     pack_bytes_ = unpacked.bytes;
     const uint32_t bytes = pack_bytes_;
     default_tolerance_ = geom::default_tolerance(scene_.box_min(), scene_.box_max());
+    detail_part_ = ~0u, detail_radius_ = 0; // judged afresh
     camera_.fit();
     user_moved_ = false;
     picked_count_ = 0;
@@ -95,13 +96,15 @@ Result Core::load(const void* file, uint32_t file_bytes, void* memory, uint32_t 
 bool Core::frame_wanted() const {
     if (!scene_.loaded() || scheduler_.sampling() || framer_.busy() || glide_.phase == Glide::Phase::Framing) return false;
     const module::Totals& t = scene_.totals();
-    return presenter_.wanted(t.done + t.failed, t.faces);
+    return presenter_.wanted(t.finished(), t.faces);
 }
 
 Activity Core::step(uint32_t budget_us) {
     if (!scene_.loaded()) return Activity::Idle;
     const uint32_t t0 = now();
     for (;;) {
+        // Faces left to their edges are judged again when the view has moved (not while it is being framed).
+        if (!framer_.busy() && glide_.phase == Glide::Phase::None) detail_view_changed();
         // A frame when the screen is behind and a buffer is free; tessellation otherwise, but
         // not between the bands of one frame (they show one state of the model).
         const bool frame = frame_wanted() && presenter_.can_draw();
@@ -130,7 +133,10 @@ Activity Core::step(uint32_t budget_us) {
             const Work w = scheduler_.work();
             const uint32_t item = scheduler_.item();
             work(Event::Kind::WorkBegin, w, item);
+            const bool sweeping = scheduler_.sweeping();
             (void)scheduler_.run(kTessUnits); // busy: there was a piece to do
+            // A sweep's faces show as they come (Presenter::wanted) and all at its end.
+            if (sweeping && !scheduler_.sweeping() && scene_.totals().finished() != presenter_.shown_finished()) presenter_.invalidate();
             work(Event::Kind::WorkEnd, w, item);
         } else {
             break;

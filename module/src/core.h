@@ -88,6 +88,17 @@ private:
     Result place_pack(const void* file, uint32_t file_bytes, uint32_t file_size, void*& memory, uint32_t& memory_bytes,
                       uint8_t*& model_end) const;
     float default_tolerance_ = 0;
+    // The level of detail the view asks for (detail.cpp): a face under kMinFacePixels across in
+    // every instance of its part, or off the screen, is left to its edges until the view changes.
+    static constexpr float kMinFacePixels = 2.0f;
+    static bool wants_face(void* self, uint32_t face);
+    void detail_view_changed(); // when the view moved since the faces were last judged: judged again
+    bool judge_with_view();     // the spheres' view from the camera's, if it moved (true then)
+    module::SphereView detail_{};
+    module::View detail_view_{};
+    float detail_radius_ = 0;
+    static constexpr uint32_t kDetailInstances = 8; // a part's instances kept for the next of its faces
+    uint32_t detail_part_ = ~0u, detail_count_ = 0, detail_instances_[kDetailInstances] = {};
     uint32_t pack_bytes_ = 0, pack_file_bytes_ = 0;
     bool carved_ = false;
     bool user_moved_ = false; // the view was moved since load (no framing again when the faces are in)

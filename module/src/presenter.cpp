@@ -41,7 +41,8 @@ bool Presenter::wanted(uint32_t finished, uint32_t total) const {
     // load). Whole frames (no depth buffer per draw buffer) every sixteenth.
     const uint32_t parts = incremental_ ? kProgressFrames : 16;
     const uint32_t step = total / parts > 1 ? total / parts : 1;
-    return finished >= total || finished - shown_finished_ >= step;
+    // (Past the total, a sweep adding deferred faces: a frame every step of them.)
+    return (finished >= total && shown_finished_ < total) || finished - shown_finished_ >= step;
 }
 
 void Presenter::take_done() {
@@ -220,7 +221,7 @@ void Presenter::run(uint32_t units, uint32_t pass) {
 void Presenter::run_piece(uint32_t units, uint32_t pass) {
     take_done();
     if (job_.active && job_.version != version_) job_.active = false; // outdated: start over
-    if (!job_.active) start(scene_.totals().done + scene_.totals().failed);
+    if (!job_.active) start(scene_.totals().finished());
     if (job_.stage == Job::Stage::Begin) {
         if (!buffer_free(job_.buffer)) return;
         set_band();

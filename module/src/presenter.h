@@ -42,6 +42,7 @@ public:
     static constexpr uint32_t kProgressFrames = 128; // frames filling in a model's faces, at most
     // Whether the screen is behind the model (`finished` faces of `total` done or failed).
     bool wanted(uint32_t finished, uint32_t total) const;
+    uint32_t shown_finished() const { return shown_finished_; }
     // Whether a piece of a frame can be done now (a buffer free, or a frame under way).
     bool can_draw();
     // One piece of the frame (about `units` triangles). The last piece hands the frame over.

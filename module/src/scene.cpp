@@ -254,8 +254,42 @@ void Scene::reset_mesh(bool keep_peaks) {
 }
 
 void Scene::mark_failed(uint32_t f) {
+    if (mem_.faces[f].state == FaceState::Deferred) --totals_.deferred, ++totals_.undeferred;
     mem_.faces[f] = {0, 0, 0, 0, colour_of(f), {0, 0, 0}, 0, FaceState::Failed, false};
     ++totals_.failed;
+}
+
+void Scene::bound_by_edges(uint32_t f) {
+    const Block& block = block_of_face(f);
+    const geom::Pack& pack = block.pack;
+    const pack::Face& F = pack.faces()[f - block.first_face];
+    int32_t lo[3] = {INT32_MAX, INT32_MAX, INT32_MAX}, hi[3] = {INT32_MIN, INT32_MIN, INT32_MIN};
+    bool any = false;
+    for (uint32_t l = F.first_loop; l < F.first_loop + F.loop_count; ++l) {
+        const pack::Loop& L = pack.loops()[l];
+        for (uint32_t c = L.first_coedge; c < L.first_coedge + L.coedge_count; ++c) {
+            const uint32_t e = block.first_edge + pack.coedges()[c].edge();
+            const uint32_t first = mem_.samples.first[e], n = mem_.samples.count[e];
+            for (uint32_t k = 0; k < n; ++k) {
+                const int32_t* q = sample_q(first + k);
+                for (int i = 0; i < 3; ++i) lo[i] = q[i] < lo[i] ? q[i] : lo[i], hi[i] = q[i] > hi[i] ? q[i] : hi[i];
+            }
+            any = any || n > 0;
+        }
+    }
+    FaceInfo& info = mem_.faces[f];
+    info.rgb = colour_of(f);
+    info.radius = 0;
+    if (!any) return;
+    // As append() bounds the mesh: the box's centre, half its edges summed.
+    for (int i = 0; i < 3; ++i) info.centre[i] = int32_t((int64_t(lo[i]) + hi[i]) / 2);
+    info.radius = int32_t((int64_t(hi[0] - lo[0]) + (hi[1] - lo[1]) + (hi[2] - lo[2])) / 2 + 2);
+}
+
+void Scene::defer(uint32_t f) {
+    if (mem_.faces[f].state == FaceState::Deferred) return;
+    mem_.faces[f].state = FaceState::Deferred;
+    ++totals_.deferred;
 }
 
 Result Scene::append(uint32_t f, const geom::Mesh& fm, const geom::FaceStats& stats) {
@@ -296,6 +330,7 @@ Result Scene::append(uint32_t f, const geom::Mesh& fm, const geom::FaceStats& st
         radius = int32_t((int64_t(hi[0] - lo[0]) + (hi[1] - lo[1]) + (hi[2] - lo[2])) / 2 + 2);
     }
     const bool planar = surface_type(f) == uint8_t(pack::SurfaceType::Plane);
+    if (mem_.faces[f].state == FaceState::Deferred) --totals_.deferred, ++totals_.undeferred;
     mem_.faces[f] = {v0, fm.vertex_count, i0, fm.triangle_count, colour_of(f), {centre[0], centre[1], centre[2]}, radius,
                      FaceState::Done, planar};
     mem_.done_order[totals_.done++] = f;

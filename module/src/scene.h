@@ -22,7 +22,9 @@ struct DrawVertex {
 };
 static_assert(sizeof(DrawVertex) == FACET_BYTES_PER_MESH_VERTEX);
 
-enum class FaceState : uint8_t { Pending, Done, Failed };
+// Deferred: too small on the screen (or off it) to be worth its triangles for now; drawn by its
+// edges, its sphere bounded from them, tessellated when the view makes it large enough.
+enum class FaceState : uint8_t { Pending, Done, Failed, Deferred };
 
 struct FaceInfo {
     uint32_t first_vertex, vertex_count, first_index, triangle_count;
@@ -50,7 +52,11 @@ struct Part {
 
 // Totals of the current pass, and high-water marks over every pass.
 struct Totals {
-    uint32_t faces = 0, done = 0, failed = 0, triangles = 0, vertices = 0;
+    uint32_t faces = 0, done = 0, failed = 0, deferred = 0, triangles = 0, vertices = 0;
+    uint32_t undeferred = 0; // faces deferred and then done or failed
+    // The pass's progress, never going back within it: faces done, failed or deferred, and
+    // again each deferred face as it is done (so faces a sweep adds show as they come).
+    uint32_t finished() const { return done + failed + deferred + undeferred; }
     uint32_t arena_peak_bytes = 0; // largest CDT use of one face (vertices + triangles)
     uint32_t mesh_bytes = 0;       // vertices + indices in use
     uint32_t samples_peak = 0, face_points_peak = 0, slivers_peak = 0, vertices_peak = 0, triangles_peak = 0;
@@ -139,6 +145,10 @@ public:
     // Appends a tessellated face (its float mesh) to the drawing mesh. Full when the mesh is full.
     Result append(uint32_t face, const geom::Mesh& mesh, const geom::FaceStats& stats);
     void mark_failed(uint32_t face);
+    // A face not tessellated: its sphere from its edges' samples (radius 0 when it has none),
+    // kept in its FaceInfo; then, if deferred, counted so until it is appended.
+    void bound_by_edges(uint32_t face);
+    void defer(uint32_t face);
 
     const FaceInfo& face(uint32_t f) const { return mem_.faces[f]; }
     uint32_t done_face(uint32_t k) const { return mem_.done_order[k]; } // k-th face finished

@@ -13,6 +13,7 @@ void Scheduler::begin_pass(float tolerance) {
     in_edge_ = false;
     face_ = 0;
     in_face_ = false;
+    sweep_ = revisit_ = false;
     scene_.samples().used = 0;
     Event e{};
     e.kind = Event::Kind::Pass;
@@ -27,6 +28,7 @@ bool Scheduler::run(uint32_t units) {
     case Stage::Faces: break;
     }
     if (!in_face_) {
+        if (!next_face()) return true;
         mem_.face_mesh.vertex_count = mem_.face_mesh.triangle_count = 0;
         const Block& b = scene_.block_of_face(face_);
         view_ = scene_.samples_of(b);
@@ -100,6 +102,36 @@ void Scheduler::sample(uint32_t units) {
     emit_(e);
 }
 
+void Scheduler::revisit() {
+    if (!started_ || stage_ == Stage::Sampling) return; // the pass's faces meet the view as it is then
+    if (stage_ == Stage::Idle) {
+        if (scene_.totals().deferred == 0) return;
+        stage_ = Stage::Faces, sweep_ = true, face_ = 0, in_face_ = false;
+        return;
+    }
+    revisit_ = true;
+}
+
+// Faces already in (a sweep) are passed; a face the view does not want now is bounded by its
+// edges and deferred. True at a face to tessellate; false when this piece's checks are spent
+// or the faces are done.
+bool Scheduler::next_face() {
+    const uint32_t count = scene_.face_count();
+    for (uint32_t checked = 0; face_ < count; ++face_) {
+        const FaceState state = scene_.face(face_).state;
+        if (state == FaceState::Done || state == FaceState::Failed) continue;
+        if (state == FaceState::Pending) scene_.bound_by_edges(face_);
+        if (filter_(face_)) return true;
+        scene_.defer(face_);
+        if (++checked >= kChecksPerPiece) {
+            ++face_;
+            return false;
+        }
+    }
+    end_faces();
+    return false;
+}
+
 void Scheduler::finish_face(const Result& done) {
     Result r = done;
     const geom::Mesh& fm = mem_.face_mesh;
@@ -122,7 +154,18 @@ void Scheduler::finish_face(const Result& done) {
     emit_(p);
     in_face_ = false;
     if (++face_ < scene_.face_count()) return;
-    stage_ = Stage::Idle;
+    end_faces();
+}
+
+// The pass (or a sweep) has been through every face. The pass says so once; a view changed
+// meanwhile sends a sweep over the deferred faces.
+void Scheduler::end_faces() {
+    const Totals& t = scene_.totals();
+    const bool was_sweep = sweep_;
+    stage_ = Stage::Idle, sweep_ = false;
+    if (revisit_ && t.deferred > 0) stage_ = Stage::Faces, sweep_ = true, face_ = 0;
+    revisit_ = false;
+    if (was_sweep) return;
     Event e{};
     e.kind = Event::Kind::Tessellated;
     e.tessellated = {pass_, t.faces, t.failed, t.triangles, t.vertices, t.mesh_bytes, t.arena_peak_bytes, opt_.tolerance};

@@ -17,6 +17,13 @@ struct Emitter {
     }
 };
 
+// Whether a face is worth tessellating for the view now (large enough on the screen, on it).
+struct FaceFilter {
+    bool (*fn)(void* user, uint32_t face) = nullptr; // none: every face is
+    void* user = nullptr;
+    bool operator()(uint32_t face) const { return !fn || fn(user, face); }
+};
+
 class Scheduler {
 public:
     struct Memory {
@@ -27,12 +34,18 @@ public:
 
     Scheduler(Scene& scene, const Emitter& emit) : scene_(scene), emit_(emit) {}
     void init(const Memory& memory) { mem_ = memory; }
+    // The faces a pass leaves to their edges (FaceState::Deferred) are those `filter` turns down.
+    void set_filter(const FaceFilter& filter) { filter_ = filter; }
+    // The view changed: the deferred faces are looked at again once the pass is over (a sweep:
+    // those the view now wants are tessellated and appended), or again from the first.
+    void revisit();
 
     // A pass at `tolerance` (mm): nothing of the previous one is kept but the peaks.
     void begin_pass(float tolerance);
     void stop() { stage_ = Stage::Idle, started_ = false; }
 
     bool busy() const { return stage_ != Stage::Idle; }
+    bool sweeping() const { return sweep_; }
     bool sampling() const { return stage_ == Stage::Sampling; } // no edge may be drawn meanwhile
     uint32_t pass() const { return pass_; }
     float tolerance() const { return opt_.tolerance; }
@@ -45,12 +58,15 @@ public:
 private:
     enum class Stage : uint8_t { Idle, Sampling, Faces };
     void sample(uint32_t units);
-    void next_face();
+    bool next_face(); // past faces not to tessellate now; false when the piece is spent on them
     void finish_face(const Result& r);
+    void end_faces();
+    static constexpr uint32_t kChecksPerPiece = 48; // faces looked at (and deferred) in one piece
 
     Scene& scene_;
     Emitter emit_;
     Memory mem_{};
+    FaceFilter filter_;
     geom::TessOptions opt_;
     Stage stage_ = Stage::Idle;
     uint32_t pass_ = 0;        // 0: the first tessellation; +1 per level-of-detail change
@@ -64,6 +80,8 @@ private:
     geom::EdgeSampler sampler_;
     uint32_t face_ = 0;        // the face being tessellated
     bool in_face_ = false;
+    bool sweep_ = false;       // the faces again after the pass: only the deferred ones
+    bool revisit_ = false;     // the view changed during the pass or sweep: a sweep (again) after it
     geom::FaceJob job_;
 };
 

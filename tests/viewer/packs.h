@@ -1,6 +1,6 @@
 #pragma once
 // Packs the viewer tests build in code (no OCCT): planar faces of straight edges, a disc of four
-// arcs, two named blocks placed twice, an open tube with a seam.
+// arcs, two named blocks placed twice, an open tube with a seam, a grid of squares.
 #include "geom/pack.h"
 #include "pack_writer.h"
 
@@ -137,6 +137,26 @@ inline Bytes tube() {
     const uint32_t face = w.add_face({cylinder, loop, 1, pack::kNoIndex, pack::kNoIndex, 0, {0, 0, 0}, {0, 0}, {kTwoPi, 100}});
     w.add_instance({w.add_shell({face, 1, pack::kNoIndex, 0}), {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0}});
     w.set_model_name("tube");
+    return w.finish();
+}
+
+// A grid of `count` unit squares 2 mm apart in z = 0, `columns` a row, one face each (their own
+// four edges), in one shell.
+inline Bytes squares(uint32_t count, uint32_t columns = 100) {
+    PackWriter w;
+    const uint32_t plane = w.add_surface(pack::SurfaceType::Plane, {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1});
+    for (uint32_t i = 0; i < count; ++i) {
+        const float x = float(2 * (i % columns)), y = float(2 * (i / columns));
+        const uint32_t v[4] = {w.add_vertex(x, y, 0), w.add_vertex(x + 1, y, 0), w.add_vertex(x + 1, y + 1, 0), w.add_vertex(x, y + 1, 0)};
+        uint32_t e[4];
+        for (int k = 0; k < 4; ++k) e[k] = w.add_edge({pack::kStraight, 0, 1, v[k], v[(k + 1) % 4], 1e-7f, 0});
+        const uint32_t first = w.coedge_count();
+        for (int k = 0; k < 4; ++k) w.add_coedge(pack::Coedge::make(e[k], false, pack::Seam::None));
+        const uint32_t loop = w.add_loop({first, 4});
+        w.add_face({plane, loop, 1, pack::kNoIndex, pack::kNoIndex, 0, {0, 0, 0}, {x, y}, {x + 1, y + 1}});
+    }
+    const uint32_t shell = w.add_shell({0, count, pack::kNoIndex, 0});
+    w.add_instance({shell, {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0}});
     return w.finish();
 }
 

@@ -14,26 +14,6 @@ using geom::deflate_pack;
 
 namespace {
 
-// A grid of `count` unit squares 2 mm apart in z = 0, one face each (their own four edges), in one shell.
-Bytes squares(uint32_t count) {
-    PackWriter w;
-    const uint32_t plane = w.add_surface(pack::SurfaceType::Plane, {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1});
-    const uint32_t columns = 100;
-    for (uint32_t i = 0; i < count; ++i) {
-        const float x = float(2 * (i % columns)), y = float(2 * (i / columns));
-        const uint32_t v[4] = {w.add_vertex(x, y, 0), w.add_vertex(x + 1, y, 0), w.add_vertex(x + 1, y + 1, 0), w.add_vertex(x, y + 1, 0)};
-        uint32_t e[4];
-        for (int k = 0; k < 4; ++k) e[k] = w.add_edge({pack::kStraight, 0, 1, v[k], v[(k + 1) % 4], 1e-7f, 0});
-        const uint32_t first = w.coedge_count();
-        for (int k = 0; k < 4; ++k) w.add_coedge(pack::Coedge::make(e[k], false, pack::Seam::None));
-        const uint32_t loop = w.add_loop({first, 4});
-        w.add_face({plane, loop, 1, pack::kNoIndex, pack::kNoIndex, 0, {0, 0, 0}, {x, y}, {x + 1, y + 1}});
-    }
-    const uint32_t shell = w.add_shell({0, count, pack::kNoIndex, 0});
-    w.add_instance({shell, {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0}});
-    return w.finish();
-}
-
 struct Aligned {
     std::vector<uint64_t> words;
     uint32_t bytes;
@@ -55,9 +35,10 @@ TEST(Plan, AModelOverTheOldCapacitiesOpensInTheWorkspaceItNeeds) {
     EXPECT_GT(needs.least_workspace_bytes, workspace_bytes());
     EXPECT_GE(needs.workspace_bytes, needs.least_workspace_bytes);
 
-    // The workspace it needs: every face shaded.
+    // The workspace it needs: every face shaded (a screen where each square is over the
+    // detail's two pixels, so none is left to its edges).
     App app;
-    app.w = 320, app.h = 240;
+    app.w = 640, app.h = 480;
     app.workspace_size = needs.workspace_bytes;
     ASSERT_TRUE(app.create().ok());
     Result r = app.v->load(file.data(), file.bytes);

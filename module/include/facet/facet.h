@@ -116,6 +116,7 @@ typedef struct {
     uint32_t mesh_bytes, arena_peak_bytes, pack_bytes, pack_file_bytes, workspace_peak_bytes;
     float tolerance_mm;
     uint32_t refused;
+    uint32_t deferred; /* faces too small or off the screen to tessellate yet (drawn by their edges) */
 } facet_stats;
 
 /* Defaults: the default capacities, no callbacks, a step slack of 2 ms. */

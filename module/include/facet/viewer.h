@@ -170,7 +170,7 @@ struct KeyBindings { const KeyBinding* table; uint32_t count; };
 KeyBindings key_bindings(); // for a help screen: what each key does
 
 struct Stats {
-    uint32_t faces, done, failed, triangles, vertices, pass;
+    uint32_t faces, done, failed, deferred, triangles, vertices, pass; // deferred: too small to tessellate yet
     uint32_t mesh_bytes, arena_peak_bytes, pack_bytes, pack_file_bytes, workspace_peak_bytes; // workspace: at its peak
     float tolerance_mm;
     uint32_t refused;              // triangles and lines the rasterizer refused: 0 (all are clipped first)

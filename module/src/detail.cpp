@@ -1,0 +1,56 @@
+// The level of detail the view asks for: which faces are worth their triangles now.
+//
+// A face is tessellated when some instance of its part shows it at least kMinFacePixels across
+// (its sphere, bounded by its edges' samples, at its nearest point) and on the screen; the rest
+// are deferred (FaceState::Deferred): drawn by their edges, and judged again once the view
+// changes (the scheduler's sweep), so zooming in brings in what grew.
+#include "core.h"
+
+namespace facet {
+
+bool Core::wants_face(void* self, uint32_t f) {
+    Core& c = *static_cast<Core*>(self);
+    const module::Scene& scene = c.scene_;
+    const module::FaceInfo& F = scene.face(f);
+    if (F.radius <= 0) return true; // nothing to bound it by
+    c.judge_with_view();
+    const uint32_t part = scene.shell_of(f);
+    const auto instances = scene.instances();
+    if (part != c.detail_part_) { // its instances (the first few; more are looked up each time)
+        c.detail_part_ = part, c.detail_count_ = 0;
+        for (uint32_t i = 0; i < instances.size(); ++i) {
+            if (instances[i].shell != part) continue;
+            if (c.detail_count_ < kDetailInstances) c.detail_instances_[c.detail_count_] = i;
+            ++c.detail_count_;
+        }
+    }
+    const float u = scene.unit();
+    const float p[3] = {float(F.centre[0]) * u, float(F.centre[1]) * u, float(F.centre[2]) * u}, r = float(F.radius) * u;
+    auto shows = [&](const pack::Instance& inst) {
+        const float* m = inst.m;
+        const float w[3] = {m[0] * p[0] + m[1] * p[1] + m[2] * p[2] + m[3], m[4] * p[0] + m[5] * p[1] + m[6] * p[2] + m[7],
+                            m[8] * p[0] + m[9] * p[1] + m[10] * p[2] + m[11]};
+        return c.detail_.pixels(w, r) >= kMinFacePixels;
+    };
+    if (c.detail_count_ <= kDetailInstances) {
+        for (uint32_t k = 0; k < c.detail_count_; ++k)
+            if (shows(instances[c.detail_instances_[k]])) return true;
+        return false;
+    }
+    for (const pack::Instance& inst : instances)
+        if (inst.shell == part && shows(inst)) return true;
+    return false;
+}
+
+bool Core::judge_with_view() {
+    if (detail_radius_ == scene_.radius() && module::same_view(camera_.view(), detail_view_)) return false;
+    detail_ = camera_.sphere_view(scene_, config_.display.width, config_.display.height);
+    detail_view_ = camera_.view(), detail_radius_ = scene_.radius();
+    return true;
+}
+
+void Core::detail_view_changed() {
+    if (scene_.totals().deferred > 0 && judge_with_view()) scheduler_.revisit();
+}
+
+} // namespace facet

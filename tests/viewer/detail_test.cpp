@@ -1,0 +1,138 @@
+// The level of detail the view asks for (issue 25): a face under two pixels across on the screen,
+// or off it, is left to its edges (deferred) instead of tessellated; when the view changes, the
+// deferred faces are judged again and those it makes large enough come in, in the background.
+// Checked against the projection the frames use: at rest, no deferred face shows two pixels
+// across anywhere on the screen, every face is either in or deferred, and the work ends.
+#include "app.h"
+
+using namespace facet;
+using namespace facet::test;
+
+namespace {
+
+struct Extent {
+    bool on_screen = false;
+    int32_t width16 = 0, height16 = 0; // sub-pixels
+};
+
+// A face's boundary as the frames project it (its edges' samples, with the integer transform),
+// if the frames' culling of its sphere (bounded by those samples) does not leave it out.
+Extent boundary_extent(const Core& core, uint32_t face, uint16_t w, uint16_t h) {
+    const module::Scene& scene = core.scene();
+    const module::Transform t = core.camera().transform(scene, 0, w, h);
+    const module::FaceInfo& info = scene.face(face);
+    if (info.radius > 0 && !t.visible(info.centre, info.radius, {t.cy16, t.cy16})) return {};
+    const module::Block& block = scene.block_of_face(face);
+    const pack::Face& F = block.pack.faces()[face - block.first_face];
+    int32_t l = INT32_MAX, r = INT32_MIN, top = INT32_MAX, bottom = INT32_MIN;
+    uint32_t in = 0, out = 0; // points projected; out: behind the eye or far past the screen's sides
+    for (uint32_t li = F.first_loop; li < F.first_loop + F.loop_count; ++li) {
+        const pack::Loop& L = block.pack.loops()[li];
+        for (uint32_t c = L.first_coedge; c < L.first_coedge + L.coedge_count; ++c) {
+            const uint32_t e = block.first_edge + block.pack.coedges()[c].edge();
+            for (uint32_t k = 0; k < scene.samples().count[e]; ++k) {
+                module::Projected p{};
+                t.project(scene.sample_q(scene.samples().first[e] + k), p);
+                if (p.out) {
+                    ++out;
+                    continue;
+                }
+                ++in;
+                l = std::min(l, p.s.x), r = std::max(r, p.s.x), top = std::min(top, p.s.y), bottom = std::max(bottom, p.s.y);
+            }
+        }
+    }
+    if (in == 0) return {}; // all of it off the screen
+    if (out > 0) return {true, INT32_MAX, INT32_MAX}; // not culled, and from near the screen to far off it: large
+    Extent x;
+    x.on_screen = r >= 0 && l < w * 16 && bottom >= 0 && top < h * 16;
+    x.width16 = r - l, x.height16 = bottom - top;
+    return x;
+}
+
+// At rest: every face in or deferred, and no deferred face two pixels across on the screen.
+void expect_deferred_only_small(const App& app, const char* when) {
+    const Core& core = *static_cast<const Core*>(app.v);
+    const Stats s = app.v->stats();
+    EXPECT_EQ(s.done + s.deferred + s.failed, s.faces) << when;
+    uint32_t deferred = 0;
+    for (uint32_t f = 0; f < core.scene().face_count(); ++f) {
+        const module::FaceState state = core.scene().face(f).state;
+        EXPECT_NE(state, module::FaceState::Pending) << when << ": face " << f;
+        if (state != module::FaceState::Deferred) continue;
+        ++deferred;
+        const Extent x = boundary_extent(core, f, app.w, app.h);
+        if (!x.on_screen) continue;
+        EXPECT_LT(x.width16, 32) << when << ": face " << f << " deferred";
+        EXPECT_LT(x.height16, 32) << when << ": face " << f << " deferred";
+    }
+    EXPECT_EQ(deferred, s.deferred) << when;
+}
+
+} // namespace
+
+TEST(Detail, FacesUnderTwoPixelsAreLeftToTheirEdgesUntilTheViewMakesThemLarger) {
+    // 1,600 squares of 1 mm, 2 mm apart, on a 160 x 120 screen: about two pixels each, those
+    // further from the eye under.
+    App app;
+    ASSERT_TRUE(app.create().ok());
+    ASSERT_TRUE(app.load(squares(1600, 40)).ok());
+    app.run();
+    ASSERT_EQ(app.v->step(1000), Activity::Idle) << "the work ends";
+    EXPECT_EQ(app.count(Event::Kind::Tessellated), 1);
+    const Stats fitted = app.v->stats();
+    EXPECT_EQ(fitted.faces, 1600u);
+    EXPECT_GT(fitted.deferred, 0u);
+    EXPECT_EQ(fitted.triangles, 2 * fitted.done);
+    expect_deferred_only_small(app, "fitted");
+
+    // Zoomed in (each step 0.8 of the distance): the squares grow over two pixels and come in
+    // (each while it is still on the screen).
+    uint32_t done = fitted.done;
+    for (int zoom = 1; zoom <= 12; ++zoom) {
+        app.v->act(Action::ZoomIn);
+        app.run();
+        ASSERT_EQ(app.v->step(1000), Activity::Idle) << "the work ends";
+        const std::string when = "zoom " + std::to_string(zoom);
+        expect_deferred_only_small(app, when.c_str());
+        EXPECT_GE(app.v->stats().done, done) << when;
+        done = app.v->stats().done;
+    }
+    EXPECT_GT(done, fitted.done);
+    EXPECT_EQ(app.v->stats().triangles, 2 * done);
+    EXPECT_EQ(app.count(Event::Kind::Tessellated), 1) << "a pass says it is done once";
+
+    // Turned and zoomed out again: nothing already in is lost, and the rest stay deferred.
+    app.v->act(Action::TurnLeft);
+    for (int zoom = 0; zoom < 12; ++zoom) app.v->act(Action::ZoomOut);
+    app.run();
+    EXPECT_EQ(app.v->stats().done, done);
+    expect_deferred_only_small(app, "zoomed out");
+}
+
+TEST(Detail, ANewLevelOfDetailJudgesEveryFaceAgain) {
+    App app;
+    app.w = 320, app.h = 240, app.lines = 240;
+    ASSERT_TRUE(app.create().ok());
+    ASSERT_TRUE(app.load(squares(400, 20)).ok());
+    app.run();
+    EXPECT_EQ(app.v->stats().deferred, 0u) << "a square is about 4 pixels across";
+    EXPECT_EQ(app.v->stats().done, 400u);
+    for (int zoom = 0; zoom < 8; ++zoom) app.v->act(Action::ZoomOut);
+    app.run();
+    EXPECT_EQ(app.v->stats().done, 400u) << "zooming out keeps what is in";
+    app.v->act(Action::Coarser); // a new pass, at this view
+    app.run();
+    const Stats s = app.v->stats();
+    EXPECT_GT(s.deferred, 0u) << "zoomed out, the new pass leaves the small squares to their edges";
+    EXPECT_EQ(s.done + s.deferred, 400u);
+    expect_deferred_only_small(app, "new pass");
+
+    // Zoomed in on a corner: the squares there come in, those off the screen stay deferred.
+    for (int zoom = 0; zoom < 16; ++zoom) app.v->act(Action::ZoomIn);
+    for (int pan = 0; pan < 4; ++pan) app.v->act(Action::PanLeft);
+    app.run();
+    expect_deferred_only_small(app, "a corner");
+    EXPECT_GT(app.v->stats().done, s.done);
+    EXPECT_GT(app.v->stats().deferred, 0u) << "the squares off the screen are not tessellated";
+}
