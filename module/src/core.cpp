@@ -94,7 +94,7 @@ Result Core::load(const void* file, uint32_t file_bytes, void* memory, uint32_t 
 }
 
 bool Core::frame_wanted() const {
-    if (!scene_.loaded() || scheduler_.sampling() || framer_.busy() || glide_.phase == Glide::Phase::Framing) return false;
+    if (!scene_.loaded() || scheduler_.sampling() || scene_.bounding() || framer_.busy() || glide_.phase == Glide::Phase::Framing) return false;
     const module::Totals& t = scene_.totals();
     return presenter_.wanted(t.finished(), t.faces);
 }
@@ -104,15 +104,17 @@ Activity Core::step(uint32_t budget_us) {
     const uint32_t t0 = now();
     for (;;) {
         // Faces left to their edges are judged again when the view has moved (not while it is being framed).
-        if (!framer_.busy() && glide_.phase == Glide::Phase::None) detail_view_changed();
+        if (!scene_.bounding() && !framer_.busy() && glide_.phase == Glide::Phase::None) detail_view_changed();
         // A frame when the screen is behind and a buffer is free; tessellation otherwise, but
         // not between the bands of one frame (they show one state of the model).
         const bool frame = frame_wanted() && presenter_.can_draw();
         const bool mid_bands = presenter_.drawing() && config_.display.band_lines < config_.display.height;
         const bool gliding = glide_.phase == Glide::Phase::Framing;
-        if ((framer_.busy() || gliding) && !mid_bands) { // the view being framed: no frame until it sits
+        if ((scene_.bounding() || framer_.busy() || gliding) && !mid_bands) { // the view being framed: no frame until it sits
             work(Event::Kind::WorkBegin, Work::Fit, 0);
-            if (gliding) {
+            if (scene_.bounding()) {
+                (void)scene_.bound(kFrameUnits * module::Framer::kPointsPerUnit * 4); // (a bounded point: a quarter of a projected one)
+            } else if (gliding) {
                 if (framer_.run(scene_, glide_.target, kFrameUnits)) {
                     glide_.phase = Glide::Phase::Moving;
                     glide_.from = camera_.view();
@@ -153,7 +155,7 @@ Activity Core::step(uint32_t budget_us) {
     // What is left: work that can go on, or only a flush_done() that can free a buffer.
     const bool mid_bands = presenter_.drawing() && config_.display.band_lines < config_.display.height;
     if ((frame_wanted() && presenter_.can_draw()) ||
-        ((scheduler_.busy() || framer_.busy() || glide_.phase != Glide::Phase::None) && !mid_bands)) {
+        ((scheduler_.busy() || scene_.bounding() || framer_.busy() || glide_.phase != Glide::Phase::None) && !mid_bands)) {
         return Activity::Busy;
     }
     if (frame_wanted()) return Activity::Waiting;

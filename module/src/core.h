@@ -69,6 +69,7 @@ private:
     Event pick_at(int16_t x, int16_t y); // the Picked event of the face under (x, y)
     void view_changed();
     void fit_view(bool keep_direction); // frame the placed model (from the default direction, or this one)
+    void bound(bool sampled);           // the placed model's bounds again, before it is framed
 
     Config config_;
     module::Emitter emitter_;

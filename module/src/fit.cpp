@@ -47,13 +47,14 @@ bool Framer::run(const Scene& scene, Camera& camera, uint32_t units) {
             ++instance_;
             continue;
         }
-        const Part sh = scene.part(instances[instance_].shell);
         if (!have_transform_) {
             t_ = camera.transform(scene, instance_, width_, height_);
             have_transform_ = true;
-            face_ = sh.first_face, phase_ = 0, k_ = 0;
+            part_ = scene.part(instances[instance_].shell);
+            face_ = part_.first_face, phase_ = 0, k_ = 0;
             budget = budget > 32 ? budget - 32 : 0;
         }
+        const Part& sh = part_;
         if (face_ >= sh.first_face + sh.face_count) {
             ++instance_;
             have_transform_ = false;
@@ -68,13 +69,15 @@ bool Framer::run(const Scene& scene, Camera& camera, uint32_t units) {
         const auto loops = block.pack.loops();
         const auto coedges = block.pack.coedges();
         const pack::Face& PF = block.pack.faces()[face_ - block.first_face];
-        if (phase_ == 0) { // the face's mesh
+        if (phase_ == 0) { // the face's mesh (its loops' samples among its vertices)
             if (F.state == FaceState::Done) {
                 for (; k_ < F.vertex_count && budget > 0; ++k_, --budget) {
                     t_.project(scene.vertices()[F.first_vertex + k_].p, p);
                     o_.add(p);
                 }
                 if (k_ < F.vertex_count) continue;
+                ++face_, k_ = 0;
+                continue;
             }
             phase_ = 1, loop_ = PF.first_loop, coedge_ = loop_ < loops.size() ? loops[loop_].first_coedge : 0, k_ = 0;
         }

@@ -3,7 +3,8 @@
 // it and make it fill the screen's free area. The outline is what is drawn: every instance's
 // tessellated faces and sampled edges, projected exactly as a frame projects them. A round
 // projects every point once; rounds repeat until the outline sits (perspective makes neither
-// step exact when the camera ends close). The work is cut into pieces of about a million
+// step exact when the camera ends close). A tessellated face's vertices hold its loops' samples:
+// its mesh alone is projected. The work is cut into pieces of about a million
 // instructions on the ARM926, like a frame's, so a big model's fit never stalls a step.
 #include "camera.h"
 #include "overlay.h"
@@ -50,6 +51,7 @@ private:
     uint8_t phase_ = 0;
     bool have_transform_ = false;
     Transform t_{};
+    Part part_{}; // the instance's part
     Outline o_;
 };
 

@@ -115,74 +115,91 @@ const char* Scene::part_name(uint32_t s) const {
     return blocks_[0].pack.shell_name(s);
 }
 
-namespace {
-
-struct Box {
-    int64_t lo[3] = {INT64_MAX, INT64_MAX, INT64_MAX}, hi[3] = {INT64_MIN, INT64_MIN, INT64_MIN};
-    bool empty() const { return lo[0] > hi[0]; }
-    void add(const int32_t p[3]) {
-        for (int k = 0; k < 3; ++k) {
-            lo[k] = p[k] < lo[k] ? p[k] : lo[k];
-            hi[k] = p[k] > hi[k] ? p[k] : hi[k];
-        }
+void Scene::PartBox::add(const int32_t p[3]) {
+    for (int k = 0; k < 3; ++k) {
+        lo[k] = p[k] < lo[k] ? p[k] : lo[k];
+        hi[k] = p[k] > hi[k] ? p[k] : hi[k];
     }
-};
-
-} // namespace
+}
 
 void Scene::fit_bounds(bool sampled) {
+    start_bounds(sampled);
+    while (!bound(UINT32_MAX)) {
+    }
+}
+
+void Scene::start_bounds(bool sampled) {
+    bounds_ = {};
+    bounds_.active = true;
+    bounds_.sampled = sampled && !mem_.samples.count.empty() && !mem_.sample_q.empty();
+    for (int k = 0; k < 3; ++k) bounds_.lo[k] = INFINITY, bounds_.hi[k] = -INFINITY;
+}
+
+// Part by part: its box in its own coordinates (a tessellated face's vertices, which hold its
+// loops' samples; another face's samples, or before any sampling its edges' ends), then the
+// box's corners through each of its instances.
+bool Scene::bound(uint32_t points) {
+    Bounds& b = bounds_;
+    if (!b.active) return true;
     const float inv = 1.0f / unit_;
-    float lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-    for (uint32_t s = 0; s < parts_; ++s) {
-        const Part part = this->part(s);
+    while (b.part < parts_) {
+        const Part part = this->part(b.part);
         const Block& block = blocks_[part.block];
         const geom::Pack& pack = block.pack;
-        const auto faces = pack.faces();
-        const auto loops = pack.loops();
-        const auto coedges = pack.coedges();
-        const auto edges = pack.edges();
-        Box box;
-        for (uint32_t f = part.first_face; f < part.first_face + part.face_count; ++f) {
-            const FaceInfo& info = mem_.faces[f];
-            if (sampled && info.state == FaceState::Done) {
-                for (uint32_t v = 0; v < info.vertex_count; ++v) box.add(mem_.vertices[info.first_vertex + v].p);
+        if (b.face == 0) b.face = part.first_face, b.box = {};
+        for (; b.face < part.first_face + part.face_count; ++b.face) {
+            if (points == 0) return false;
+            const FaceInfo& info = mem_.faces[b.face];
+            if (b.sampled && info.state == FaceState::Done) {
+                for (uint32_t v = 0; v < info.vertex_count; ++v) b.box.add(mem_.vertices[info.first_vertex + v].p);
+                points = points > info.vertex_count ? points - info.vertex_count : 0;
+                continue;
             }
-            const pack::Face& F = faces[f - block.first_face];
+            const pack::Face& F = pack.faces()[b.face - block.first_face];
             for (uint32_t l = F.first_loop; l < F.first_loop + F.loop_count; ++l) {
-                for (uint32_t c = loops[l].first_coedge; c < loops[l].first_coedge + loops[l].coedge_count; ++c) {
-                    const uint32_t local = coedges[c].edge(), e = block.first_edge + local;
-                    const uint32_t n = !sampled || mem_.samples.count.empty() ? 0 : mem_.samples.count[e];
-                    if (n && !mem_.sample_q.empty()) {
+                const pack::Loop& L = pack.loops()[l];
+                for (uint32_t c = L.first_coedge; c < L.first_coedge + L.coedge_count; ++c) {
+                    const uint32_t local = pack.coedges()[c].edge(), e = block.first_edge + local;
+                    const uint32_t n = b.sampled ? mem_.samples.count[e] : 0;
+                    if (n) {
                         const uint32_t first = mem_.samples.first[e];
-                        for (uint32_t i = first; i < first + n; ++i) box.add(&mem_.sample_q[3 * i]);
-                    } else { // not sampled yet: the edge's ends
-                        for (const uint32_t vi : {edges[local].v0, edges[local].v1}) {
-                            const float* q = pack.vertices()[vi].p;
-                            const float f[3] = {q[0] * inv, q[1] * inv, q[2] * inv};
-                            if (!(std::fabs(f[0]) < 1e9f && std::fabs(f[1]) < 1e9f && std::fabs(f[2]) < 1e9f)) continue;
-                            const int32_t p[3] = {int32_t(f[0]), int32_t(f[1]), int32_t(f[2])};
-                            box.add(p);
-                        }
+                        for (uint32_t i = first; i < first + n; ++i) b.box.add(&mem_.sample_q[3 * i]);
+                        points = points > n ? points - n : 0;
+                        continue;
+                    }
+                    for (const uint32_t vi : {pack.edges()[local].v0, pack.edges()[local].v1}) { // not sampled yet: the ends
+                        const float* q = pack.vertices()[vi].p;
+                        const float f[3] = {q[0] * inv, q[1] * inv, q[2] * inv};
+                        if (!(std::fabs(f[0]) < 1e9f && std::fabs(f[1]) < 1e9f && std::fabs(f[2]) < 1e9f)) continue;
+                        const int32_t p[3] = {int32_t(f[0]), int32_t(f[1]), int32_t(f[2])};
+                        b.box.add(p);
+                    }
+                    points = points > 8 ? points - 8 : 0;
+                }
+            }
+        }
+        const PartBox& box = b.box;
+        if (!box.empty()) {
+            for (uint32_t i = 0; i < instances_.size(); ++i) {
+                const pack::Instance& inst = instances_[i];
+                if (inst.shell != b.part || !shown(i)) continue; // a hidden part is not framed
+                for (int corner = 0; corner < 8; ++corner) {
+                    const float c[3] = {float(corner & 1 ? box.hi[0] : box.lo[0]) * unit_, float(corner & 2 ? box.hi[1] : box.lo[1]) * unit_,
+                                        float(corner & 4 ? box.hi[2] : box.lo[2]) * unit_};
+                    for (int k = 0; k < 3; ++k) {
+                        const float w = inst.m[4 * k] * c[0] + inst.m[4 * k + 1] * c[1] + inst.m[4 * k + 2] * c[2] + inst.m[4 * k + 3];
+                        b.lo[k] = w < b.lo[k] ? w : b.lo[k];
+                        b.hi[k] = w > b.hi[k] ? w : b.hi[k];
                     }
                 }
             }
+            points = points > 8 ? points - 8 : 0;
         }
-        if (box.empty()) continue;
-        for (uint32_t i = 0; i < instances_.size(); ++i) {
-            const pack::Instance& inst = instances_[i];
-            if (inst.shell != s || !shown(i)) continue; // a hidden part is not framed
-            for (int corner = 0; corner < 8; ++corner) {
-                const float c[3] = {float(corner & 1 ? box.hi[0] : box.lo[0]) * unit_, float(corner & 2 ? box.hi[1] : box.lo[1]) * unit_,
-                                    float(corner & 4 ? box.hi[2] : box.lo[2]) * unit_};
-                for (int k = 0; k < 3; ++k) {
-                    const float w = inst.m[4 * k] * c[0] + inst.m[4 * k + 1] * c[1] + inst.m[4 * k + 2] * c[2] + inst.m[4 * k + 3];
-                    lo[k] = w < lo[k] ? w : lo[k];
-                    hi[k] = w > hi[k] ? w : hi[k];
-                }
-            }
-        }
+        ++b.part, b.face = 0;
     }
-    if (!(lo[0] <= hi[0])) return; // nothing placed: the pack's own box stays
+    b.active = false;
+    const float *lo = b.lo, *hi = b.hi;
+    if (!(lo[0] <= hi[0])) return true; // nothing placed: the pack's own box stays
     float r2 = 0;
     for (int k = 0; k < 3; ++k) {
         centre_[k] = 0.5f * (lo[k] + hi[k]);
@@ -194,6 +211,7 @@ void Scene::fit_bounds(bool sampled) {
     const float floor = own_radius_ / 16;
     radius_ = std::sqrt(r2);
     if (!(radius_ > floor)) radius_ = floor;
+    return true;
 }
 
 void Scene::set_shown(uint32_t i, bool on) {

@@ -82,7 +82,7 @@ public:
     // it has more faces or edges than the memory holds.
     Result attach(const Memory& memory);
     bool loaded() const { return loaded_; }
-    void close() { loaded_ = false, blocks_ = {}, totals_ = {}; } // no model (the memory stays)
+    void close() { loaded_ = false, blocks_ = {}, totals_ = {}, bounds_.active = false; } // no model (the memory stays)
 
     uint32_t face_count() const { return faces_; }
     uint32_t edge_count() const { return edges_; }
@@ -116,6 +116,11 @@ public:
     // the pass's samples exist), through every instance's placement. About ten instructions a
     // sample and a vertex (integer compares), then 8 corners an instance.
     void fit_bounds(bool sampled);
+    // The same in pieces of about `points` points each (bound() true when done: the centre and
+    // radius change only then), so a large model's bounds never stall a step.
+    void start_bounds(bool sampled);
+    bool bound(uint32_t points);
+    bool bounding() const { return bounds_.active; }
     uint32_t shell_of(uint32_t face) const;
     // Parts (instances) shown or hidden; the first kMaxHideable can be hidden (Viewer::show_part
     // refuses the rest, which stay shown). All shown at open().
@@ -181,6 +186,17 @@ private:
     bool loaded_ = false;
     float unit_ = 1, centre_[3] = {0, 0, 0}, radius_ = 1, own_radius_ = 1;
     Totals totals_;
+    struct PartBox { // a part's box in its own coordinates (mesh units)
+        int32_t lo[3] = {INT32_MAX, INT32_MAX, INT32_MAX}, hi[3] = {INT32_MIN, INT32_MIN, INT32_MIN};
+        bool empty() const { return lo[0] > hi[0]; }
+        void add(const int32_t p[3]);
+    };
+    struct Bounds { // where start_bounds()/bound() stand
+        bool active = false, sampled = false;
+        uint32_t part = 0, face = 0;
+        PartBox box;
+        float lo[3], hi[3]; // the placed box so far (mm)
+    } bounds_;
     uint32_t hidden_[kMaxHideable / 32] = {};
 };
 

@@ -4,13 +4,21 @@
 
 namespace facet {
 
+// The placed model bounded again before it is framed: from its samples and mesh in pieces of
+// work (step() runs them before the framer's), or at once from its edges' ends while the edges
+// are being sampled (no framing then).
+void Core::bound(bool sampled) {
+    if (sampled) scene_.start_bounds(true);
+    else scene_.fit_bounds(false);
+}
+
 void Core::glide_to(const module::View& v, uint32_t instance, uint32_t face) {
     if (!scene_.loaded()) return;
     framer_.stop(); // a glide frames its own end view
     glide_.target.set_view(v);
     glide_.target.reframe();
     const bool sampled = !scheduler_.sampling();
-    scene_.fit_bounds(sampled);
+    bound(sampled);
     glide_.phase = Glide::Phase::Framing;
     if (sampled) {
         // A face is framed to fill less: it is seen among its neighbours.
@@ -46,7 +54,7 @@ bool Core::glide_step() {
 
 void Core::fit_view(bool keep_direction) {
     const bool sampled = !scheduler_.sampling();
-    scene_.fit_bounds(sampled);
+    bound(sampled);
     if (keep_direction) {
         camera_.reframe();
     } else {

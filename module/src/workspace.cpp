@@ -153,7 +153,7 @@ Result Core::place_pack(const void* file, uint32_t file_bytes, uint32_t file_siz
     const bool file_inside = in && in >= model_start_ && in < end_;
     if (!memory) {
         uint32_t need = file ? module::pack_memory_need(file, file_bytes) : 0;
-        if (need && file_inside) need += file_size; // decoded in front of it
+        if (need && file_inside) need += file_size + 8; // decoded in front of it (moved to 8-byte alignment)
         uintptr_t start = need <= uintptr_t(end_ - model_start_) ? (reinterpret_cast<uintptr_t>(end_) - need) & ~uintptr_t(7) : 0;
         if (file_inside) start = std::min(start, reinterpret_cast<uintptr_t>(in) & ~uintptr_t(7));
         if (start < reinterpret_cast<uintptr_t>(model_start_)) {

@@ -117,6 +117,26 @@ TEST(Blocked, AFileLoadedIntoThePackMemoryIsDecodedThere) {
     EXPECT_EQ(app.v->stats().done, app.v->stats().faces);
 }
 
+TEST(Blocked, AFileTheBoardLoadedIntoTheWorkspaceIsDecodedWhereverItLies) {
+    // The boards hand the module all free RAM, the file loaded somewhere in it: with no pack
+    // memory, the blocks are decoded in front of the file (moved to the end first), whatever
+    // the file's size modulo the alignment.
+    const Bytes whole = assembly();
+    const Shown reference = show(blocked(whole));
+    for (BlockStore store : {BlockStore::Lzma, BlockStore::Deflated, BlockStore::Plain}) {
+        const Bytes file = blocked(whole, store);
+        App app;
+        app.w = 320, app.h = 240;
+        ASSERT_TRUE(app.create().ok());
+        uint8_t* at = reinterpret_cast<uint8_t*>(app.workspace.data()) + app.workspace.size() / 2 * 8; // mid-workspace
+        std::memcpy(at, file.data(), file.size());
+        const Result r = app.v->load(at, uint32_t(file.size()));
+        ASSERT_TRUE(r.ok()) << text(r) << " (store " << int(store) << ", " << file.size() % 8 << " bytes over 8)";
+        app.run();
+        EXPECT_EQ(app.screen(), reference.screen) << "store " << int(store);
+    }
+}
+
 TEST(Blocked, TooLittleMemoryACorruptBlockAndAnUnalignedFileAreRefused) {
     const Bytes file = blocked(assembly());
     App app;
