@@ -62,6 +62,19 @@ def add(sub):
     p.add_argument('models', nargs='*', metavar='MODEL.step[@finerN]')
     p.set_defaults(run=cmd_render)
 
+    p = kinds.add_parser('scale', help='assemblies of 1 k to 30 k faces through the viewer in QEMU',
+                         description='Assemblies made with Open CASCADE from shared models (nist_ctc_02, nist_ctc_04, '
+                         'mechanism, tail_section_asm), as distinct copies and as instances, of 1 k, 3 k, 10 k and 30 k '
+                         'faces, through the viewer in QEMU on the ARM926 and the EVKB\'s configuration: pack bytes, '
+                         'first wireframe, first view, frames at rest, turning and zoomed, triangles, peak RAM; a CSV '
+                         '(default out/bench/scale.csv), a markdown table and a PNG plot beside it. The assemblies are '
+                         'made once into out/bench/scale/ (the largest takes minutes); long: not part of ./facet test.')
+    p.add_argument('--csv', default=os.path.join(ROOT, 'out', 'bench', 'scale.csv'))
+    p.add_argument('--faces', default='1000,3000,10000,30000', metavar='N,M')
+    p.add_argument('--kinds', default='distinct,instances', metavar='A,B')
+    p.add_argument('--boards', default='qemu-versatilepb,qemu-mps2-evkb', metavar='A,B')
+    p.set_defaults(run=cmd_scale)
+
     p = kinds.add_parser('itcm', help="profile the EVKB's configuration, rewrite its ITCM code list",
                          description="Profile the viewer on the EVKB's configuration in QEMU (three models) and "
                          'rewrite linker/mimxrt1060-evkb-itcm.ld: the code that runs from ITCM.')
@@ -155,6 +168,20 @@ def cmd_device(args, parser):
     return run([sys.executable, 'bench/device.py', '--packer', tool('facet-pack'), '--build', 'build', '--boards', args.boards,
                 '--jobs', args.jobs, '--work', os.path.join(ROOT, 'out', 'bench', 'device'), '--csv', csv,
                 '--markdown', csv[:-4] + '.md', '--date', datetime.date.today().isoformat()] + models)
+
+
+def cmd_scale(args, parser):
+    boards = args.boards.split(',')
+    setup()
+    build('host', *boards, quiet=True)
+    csv = os.path.abspath(args.csv)
+    models = [os.path.join(MODELS, m) for m in ('nist_ctc_02.stp', 'nist_ctc_04.stp', 'mechanism.stp', 'tail_section_asm.stp')]
+    say(f'assemblies of {args.faces} faces ({args.kinds}) through the viewer on {" and ".join(boards)} '
+        '(QEMU, exact instruction counts; the assemblies are made once, the largest in minutes)')
+    return run([sys.executable, 'bench/scale.py', '--assembly', tool('facet-assembly'), '--packer', tool('facet-pack'),
+                '--build', 'build', '--work', os.path.join(ROOT, 'out', 'bench', 'scale'), '--csv', csv,
+                '--faces', args.faces, '--kinds', args.kinds, '--boards', args.boards,
+                '--date', datetime.date.today().isoformat()] + models)
 
 
 def cmd_render(args, parser):

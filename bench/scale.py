@@ -1,0 +1,254 @@
+#!/usr/bin/env python3
+"""./facet bench scale: assemblies of 1 k to 30 k faces through the viewer firmware in QEMU.
+
+Each assembly is made with Open CASCADE (tools/assembly: copies of shared models on a grid,
+`distinct` copies or `instances` of each model), packed (facet-pack's default: blocked, LZMA),
+loaded at the board's pack address and shown; then turned (four key turns), zoomed in on the
+centre (six steps) and quit (tests/sessions/scale.session). One CSV row per board and assembly:
+
+  board,kind,faces,step_bytes,pack_bytes,first_wireframe_instructions,first_view_instructions,
+  frame_rest_instructions,frame_turning_max_instructions,frame_zoomed_instructions,
+  triangles,deferred_faces,peak_ram_bytes,note
+
+  first wireframe: every piece of work from load to the end of the first frame (the edges);
+  first view: to the end of the first frame after the first pass (every face the view wants
+  in); a frame at rest: the full frame at the fitted view once the faces are in; turning: the
+  largest frame while the view turns; zoomed: the frame once the zoomed view's faces are in.
+
+The markdown table and a PNG plot (cost against faces, log-log) go beside the CSV. Exact guest
+instruction counts (the facet-icount plugin); 600 M = 1 s at 600 MHz. A run that fails says why
+in the note; nothing is left out silently.
+
+  scale.py --assembly facet-assembly --packer facet-pack --build build --work DIR --csv FILE
+           [--faces 1000,3000,10000,30000] [--kinds distinct,instances]
+           [--boards qemu-versatilepb,qemu-mps2-evkb] MODEL.step...
+"""
+import argparse
+import csv
+import json
+import os
+import re
+import subprocess
+import sys
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(ROOT, 'tools'))
+sys.path.insert(0, os.path.join(ROOT, 'tests', 'qemu'))
+import board as boards  # noqa: E402
+import protocol  # noqa: E402
+from viewer_test import peak_ram  # noqa: E402
+
+COLUMNS = ['board', 'kind', 'faces', 'step_bytes', 'pack_bytes', 'first_wireframe_instructions', 'first_view_instructions',
+           'frame_rest_instructions', 'frame_turning_max_instructions', 'frame_zoomed_instructions', 'triangles',
+           'deferred_faces', 'peak_ram_bytes', 'note']
+SESSION = protocol.read_session(protocol.session_path('scale'))
+WORK_REGIONS = ('unpack', 'edges', 'face', 'fit', 'frame', 'update', 'overlay')
+
+
+def measure(uart, regions):
+    """The run's figures from its log and regions, in the order they happened."""
+    spent = 0                 # every piece of work so far
+    pieces = []               # the pieces of the frame under way
+    phase = 'load'            # load, rest (after the first shot), turned, zoomed
+    tessellated = False
+    out = {'turning': []}
+    for r, region in protocol.with_regions(uart, regions):
+        if region:
+            n = region['instructions'] or 0
+            if r.words[0] in WORK_REGIONS:
+                spent += n
+            if r.words[0] in ('frame', 'update', 'overlay'):
+                pieces.append(n)
+        elif r.name == 'tessellation':
+            tessellated = True
+            kv = dict(zip(r.words[0::2], r.words[1::2]))
+            out['triangles'] = int(kv.get('triangles', 0))
+        elif r.name == 'frame':
+            kv = dict(zip(r.words[0::2], r.words[1::2]))
+            n = int(kv.get('pieces', 1))
+            cost = sum(pieces[-n:]) if len(pieces) >= n else None
+            pieces = []
+            out.setdefault('first_wireframe', spent)
+            if tessellated and 'first_view' not in out:
+                out['first_view'] = spent
+            if phase == 'load' and tessellated:
+                out['rest'] = cost
+            elif phase == 'rest' and cost is not None:
+                out['turning'].append(cost)
+            elif phase == 'turned':
+                out['zoomed'] = cost
+        elif r.name in ('shot', 'dump') and r.words:  # a screenshot: over QMP, or a framebuffer the board wrote
+            phase = {'first': 'rest', 'turned': 'turned', 'zoomed': 'zoomed'}.get(r.words[0], phase)
+    m = re.search(r'^viewer: \d+ faces \(\d+ failed, (\d+) too small', uart, re.M)
+    if m:
+        out['deferred'] = int(m.group(1))
+    m = re.findall(r'^viewer: .* (\d+) triangles; bye', uart, re.M)
+    if m:
+        out['triangles'] = int(m[-1])
+    return out
+
+
+def make(tool, args, what):
+    r = subprocess.run(tool + args, capture_output=True, text=True)
+    if r.returncode != 0:
+        return f'{what}: ' + ((r.stderr.strip().splitlines() or [f'exit {r.returncode}'])[-1])
+    return None
+
+
+def run_one(board_name, elf, fpk, out, timeout):
+    board = boards.load(board_name)
+    row, notes = {}, []
+    sends = [x for s in SESSION for x in ('--send', s)]
+    r = subprocess.run([sys.executable, os.path.join(ROOT, 'tools', 'qemu', 'run.py'), '--board', board_name,
+                        '--elf', elf, '--out', out, '--load', f'{fpk}@{board["pack"]["address"]}', '--icount',
+                        '--timeout', str(timeout), '--quiet'] + sends, capture_output=True, text=True)
+    rep_path = os.path.join(out, 'report.json')
+    if not os.path.exists(rep_path):
+        return row, [f'the runner wrote no report (exit {r.returncode})']
+    rep = json.load(open(rep_path))
+    uart = open(os.path.join(out, 'uart.log'), errors='replace').read()
+    bad = re.search(r'^viewer: no valid pack: (.*)$', uart, re.M)
+    if bad:
+        notes.append(bad.group(1))
+    elif r.returncode != 0:
+        notes.append(f'exit {r.returncode}' + (' (timeout)' if r.returncode == 124 else ''))
+    m = measure(uart, rep.get('regions', []))
+    for key, col in (('first_wireframe', 'first_wireframe_instructions'), ('first_view', 'first_view_instructions'),
+                     ('rest', 'frame_rest_instructions'), ('zoomed', 'frame_zoomed_instructions'),
+                     ('triangles', 'triangles'), ('deferred', 'deferred_faces')):
+        if m.get(key) is not None:
+            row[col] = m[key]
+    if m['turning']:
+        row['frame_turning_max_instructions'] = max(m['turning'])
+    peak = peak_ram(rep)
+    if peak is not None:
+        row['peak_ram_bytes'] = peak
+    return row, notes
+
+
+def markdown(rows, date):
+    m = lambda v: f'{v / 1e6:,.1f}' if isinstance(v, int) else '-'
+    lines = [f'Measured {date} by `./facet bench scale` (exact QEMU instruction counts, M = million instructions, '
+             '600 M = 1 s at 600 MHz; the goals of issue 25: first view 1,200 M for 10 k faces, a frame at rest 20 M).',
+             '', '| board | kind | faces | pack KB | first wireframe M | first view M | frame at rest M | turning M '
+             '| zoomed M | triangles | deferred faces | peak RAM MiB | note |',
+             '|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|']
+    for r in rows:
+        peak = r.get('peak_ram_bytes')
+        lines.append(f'| {r["board"]} | {r["kind"]} | {r.get("faces", "-")} | '
+                     f'{r["pack_bytes"] // 1024 if r.get("pack_bytes") else "-"} | '
+                     f'{m(r.get("first_wireframe_instructions"))} | {m(r.get("first_view_instructions"))} | '
+                     f'{m(r.get("frame_rest_instructions"))} | {m(r.get("frame_turning_max_instructions"))} | '
+                     f'{m(r.get("frame_zoomed_instructions"))} | {r.get("triangles", "-")} | '
+                     f'{r.get("deferred_faces", "-")} | {f"{peak / (1 << 20):.2f}" if peak else "-"} | {r.get("note", "")} |')
+    return '\n'.join(lines) + '\n'
+
+
+def plot(csv_path):
+    """Cost against faces (log-log), a line per board, kind and measure: the frames' lines should be flat."""
+    rows = [r for r in csv.DictReader(open(csv_path)) if r['first_view_instructions']]
+    png = os.path.splitext(csv_path)[0] + '.png'
+    series = []
+    dats = []
+    for b in sorted({r['board'] for r in rows}):
+        for k in sorted({r['kind'] for r in rows}):
+            mine = sorted((r for r in rows if r['board'] == b and r['kind'] == k), key=lambda r: int(r['faces']))
+            if not mine:
+                continue
+            dat = os.path.join(os.path.dirname(csv_path), f'.scale-{b}-{k}.dat')
+            with open(dat, 'w') as f:
+                for r in mine:
+                    f.write(' '.join([r['faces']] + [str(int(r[c]) / 1e6) if r[c] else 'NaN' for c in
+                                                     ('first_view_instructions', 'frame_rest_instructions',
+                                                      'frame_zoomed_instructions')]) + '\n')
+            dats.append(dat)
+            for col, what in ((2, 'first view'), (3, 'frame at rest'), (4, 'zoomed frame')):
+                series.append(f"'{dat}' using 1:{col} with linespoints title '{b} {k}: {what}'")
+    if not series:
+        return None
+    script = f"""
+set terminal pngcairo noenhanced size 1100,650 font 'sans,10'
+set output '{png}'
+set title 'facet on large assemblies: instructions against faces (exact QEMU counts)'
+set logscale xy
+set xlabel 'faces'
+set ylabel 'million instructions (600 = 1 s at 600 MHz)'
+set key outside right
+set grid
+plot {', '.join(series)}, 1200 with lines dashtype 2 title 'first view goal (10 k faces)', 20 with lines dashtype 3 title 'frame goal'
+"""
+    subprocess.run(['gnuplot'], input=script, text=True, check=True)
+    for d in dats:
+        os.unlink(d)
+    return png
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument('--assembly', required=True, help='tools/assembly (facet-assembly)')
+    ap.add_argument('--packer', required=True)
+    ap.add_argument('--build', required=True, help='the build tree holding <board>/firmware/facet-viewer.elf')
+    ap.add_argument('--work', required=True)
+    ap.add_argument('--csv', required=True)
+    ap.add_argument('--faces', default='1000,3000,10000,30000')
+    ap.add_argument('--kinds', default='distinct,instances')
+    ap.add_argument('--boards', default='qemu-versatilepb,qemu-mps2-evkb')
+    ap.add_argument('--timeout', type=int, default=3600, help='seconds of wall clock per run')
+    ap.add_argument('--date', default='')
+    ap.add_argument('models', nargs='+')
+    args = ap.parse_args()
+    os.makedirs(args.work, exist_ok=True)
+    board_names = [b for b in args.boards.split(',') if b]
+    for b in board_names:
+        boards.load(b)
+        if not os.path.exists(os.path.join(args.build, b, 'firmware', 'facet-viewer.elf')):
+            raise SystemExit(f'scale.py: no facet-viewer.elf for {b} under {args.build}')
+    rows = []
+    for kind in args.kinds.split(','):
+        for faces in [int(f) for f in args.faces.split(',')]:
+            name = f'{kind}-{faces}'
+            step = os.path.join(args.work, name + '.step')
+            fpk = os.path.join(args.work, name + '.fpk')
+            why = None
+            if not os.path.exists(step):  # made once (minutes for the largest); delete the folder to remake
+                why = make([args.assembly], [step, '--faces', str(faces)] + (['--instances'] if kind == 'instances' else [])
+                           + args.models, 'facet-assembly')
+            if not why and not os.path.exists(fpk):
+                why = make([args.packer], [step, '-o', fpk, '--quiet'], 'facet-pack')
+            for b in board_names:
+                row = {'board': b, 'kind': kind, 'faces': faces}
+                notes = []
+                if why:
+                    notes.append(why)
+                else:
+                    row['step_bytes'], row['pack_bytes'] = os.path.getsize(step), os.path.getsize(fpk)
+                    got, notes = run_one(b, os.path.join(args.build, b, 'firmware', 'facet-viewer.elf'), fpk,
+                                         os.path.join(args.work, b, name), args.timeout)
+                    row.update(got)
+                    log = os.path.join(args.work, b, name, 'uart.log')
+                    stated = re.search(r'^@model faces (\d+)', open(log, errors='replace').read(), re.M) if os.path.exists(log) else None
+                    if stated:
+                        row['faces'] = int(stated.group(1))  # what the assembly has (a little over what was asked)
+                row['note'] = '; '.join(notes)
+                rows.append(row)
+                fv = row.get('first_view_instructions')
+                print(f'{b} {name}: ' + (f'first view {fv / 1e6:,.0f} M, frame at rest '
+                                         f'{(row.get("frame_rest_instructions") or 0) / 1e6:.1f} M'
+                                         if fv else 'not measured') + (f' ({row["note"]})' if row['note'] else ''),
+                      flush=True)
+    os.makedirs(os.path.dirname(os.path.abspath(args.csv)), exist_ok=True)
+    with open(args.csv, 'w', newline='') as f:
+        w = csv.writer(f)
+        w.writerow(COLUMNS)
+        for row in rows:
+            w.writerow([row.get(c, '') for c in COLUMNS])
+    md = os.path.splitext(args.csv)[0] + '.md'
+    with open(md, 'w') as f:
+        f.write(markdown(rows, args.date))
+    png = plot(args.csv)
+    print(f'wrote {args.csv}, {md}' + (f', {png}' if png else ''))
+    return 0 if all('first_view_instructions' in r for r in rows) else 1
+
+
+if __name__ == '__main__':
+    sys.exit(main())
