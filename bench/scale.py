@@ -36,41 +36,31 @@ sys.path.insert(0, os.path.join(ROOT, 'tools'))
 sys.path.insert(0, os.path.join(ROOT, 'tests', 'qemu'))
 import board as boards  # noqa: E402
 import protocol  # noqa: E402
-from viewer_test import peak_ram  # noqa: E402
+from viewer_test import WORK_REGIONS, first_view, peak_ram  # noqa: E402
 
 COLUMNS = ['board', 'kind', 'faces', 'step_bytes', 'pack_bytes', 'first_wireframe_instructions', 'first_view_instructions',
            'frame_rest_instructions', 'frame_turning_max_instructions', 'frame_zoomed_instructions', 'triangles',
            'deferred_faces', 'peak_ram_bytes', 'note']
 SESSION = protocol.read_session(protocol.session_path('scale'))
-WORK_REGIONS = ('unpack', 'edges', 'face', 'fit', 'frame', 'update', 'overlay')
 
 
 def measure(uart, regions):
-    """The run's figures from its log and regions, in the order they happened."""
-    spent = 0                 # every piece of work so far
+    """The run's figures from its log and regions: the first wireframe and view (as ./facet run
+    budgets them), then the frames of each phase of the session, split by its screenshots."""
+    out = {'turning': []}
+    out['first_wireframe'], out['first_view'] = first_view(uart, regions)
     pieces = []               # the pieces of the frame under way
     phase = 'load'            # load, rest (after the first shot), turned, zoomed
     tessellated = False
-    out = {'turning': []}
     for r, region in protocol.with_regions(uart, regions):
-        if region:
-            n = region['instructions'] or 0
-            if r.words[0] in WORK_REGIONS:
-                spent += n
-            if r.words[0] in ('frame', 'update', 'overlay'):
-                pieces.append(n)
+        if region and r.words[0] in ('frame', 'update', 'overlay'):
+            pieces.append(region['instructions'] or 0)
         elif r.name == 'tessellation':
             tessellated = True
-            kv = dict(zip(r.words[0::2], r.words[1::2]))
-            out['triangles'] = int(kv.get('triangles', 0))
         elif r.name == 'frame':
-            kv = dict(zip(r.words[0::2], r.words[1::2]))
-            n = int(kv.get('pieces', 1))
+            n = int(dict(zip(r.words[0::2], r.words[1::2])).get('pieces', 1))
             cost = sum(pieces[-n:]) if len(pieces) >= n else None
             pieces = []
-            out.setdefault('first_wireframe', spent)
-            if tessellated and 'first_view' not in out:
-                out['first_view'] = spent
             if phase == 'load' and tessellated:
                 out['rest'] = cost
             elif phase == 'rest' and cost is not None:

@@ -9,7 +9,8 @@ drag with the PS/2 mouse on versatilepb, zoom, fit, finer level of detail, quit)
     to the one facet-sim --headless renders on the host with the same code and the same session;
     the session changed the picture (done, turned, zoomed and lod all differ);
   * exact instruction counts: tessellation = every 'edges' and 'face' region (pieces of work) of
-    the first pass; a frame = the 'frame' pieces of one full redraw (up to its '@frame' line). Budgets: tessellation <= 600 M
+    the first pass; the first view = every piece of work from load to the first frame after the
+    first pass (<= 1.2 G per 10,000 faces, at least 1.2 G); a frame = the 'frame' pieces of one full redraw (up to its '@frame' line). Budgets: tessellation <= 600 M
     instructions (1 s at 600 MHz), a frame <= 20 M per 10,000 triangles in view (30 frames/s;
     views under 10k triangles get the full 20 M). Printed for every run; asserted with
     --assert-budgets (the ctest runs on the ARM926 do).
@@ -61,6 +62,31 @@ def unpack_instructions(regions):
 
 
 OVERLAY_BUDGET = 500_000  # instructions a frame for the on-screen interface (issue 11)
+
+
+FIRST_VIEW_BUDGET_PER_10K_FACES = 1_200_000_000  # issue 25: load to the first view, 2 s for 10,000 faces
+WORK_REGIONS = ('unpack', 'edges', 'face', 'fit', 'frame', 'update', 'overlay')  # every piece of the viewer's work
+
+
+def first_view(uart, regions):
+    """(first wireframe, first view): every piece of work from load to the end of the first
+    frame (the edges), and to the end of the first frame after the first pass's faces are in (the
+    view at its level of detail); None where the log has no such frame."""
+    spent, wireframe, tessellated = 0, None, False
+    for r, region in protocol.with_regions(uart, regions):
+        if region and r.words[0] in WORK_REGIONS:
+            spent += region['instructions'] or 0
+        elif r.name == 'tessellation':
+            tessellated = True
+        elif r.name == 'frame':
+            wireframe = spent if wireframe is None else wireframe
+            if tessellated:
+                return wireframe, spent
+    return wireframe, None
+
+
+def first_view_budget(faces):
+    return FIRST_VIEW_BUDGET_PER_10K_FACES * max(1.0, faces / 10_000)
 
 
 def frame_budget(triangles):
@@ -183,6 +209,11 @@ def main():
         budget_notes = []
         if t0 is not None and t0 > TESSELLATION_BUDGET:
             budget_notes.append(f'tessellation {t0:,} > {TESSELLATION_BUDGET:,}')
+        _, view = first_view(uart, rep['regions'])
+        if view is None:
+            problems.append('no first view (no frame after the first pass)')
+        elif t and view > first_view_budget(t['faces']):
+            budget_notes.append(f'first view {view:,} > {first_view_budget(t["faces"]):,.0f}')
         for f in frames:
             if f['instructions'] and f['instructions'] > frame_budget(f['triangles']):
                 budget_notes.append(f'frame of {f["triangles"]:,} triangles: {f["instructions"]:,} > '
