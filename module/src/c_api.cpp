@@ -98,6 +98,7 @@ void facet_config_init(facet_config* c) {
     c->capacity = {d.faces, d.edges, d.samples, d.face_points, d.loops, d.slivers, d.mesh_vertices, d.mesh_triangles};
     c->step_slack_us = Config{}.step_slack_us;
     c->interface = 1;
+    c->screen_error_px = Config{}.screen_error_px;
 }
 
 // The formula's slack (facet/sizes.h) holds the bridge as well.
@@ -140,6 +141,7 @@ facet_viewer* facet_create(const facet_config* c, void* workspace, size_t bytes,
     cfg.frame_budget_us = c->frame_budget_us;
     cfg.step_slack_us = c->step_slack_us;
     cfg.interface = c->interface != 0;
+    cfg.screen_error_px = c->screen_error_px;
     Result r;
     Viewer* v = Viewer::create(cfg, workspace, viewer_bytes, &r);
     if (why) *why = to_c(r);

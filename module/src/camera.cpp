@@ -182,6 +182,13 @@ float SphereView::pixels(const float p[3], float r) const {
     return 2 * r * focal / over;
 }
 
+float SphereView::mm_per_pixel(const float p[3], float r) const {
+    if (ortho) return dist / focal;
+    const float w[3] = {p[0] - centre[0], p[1] - centre[1], p[2] - centre[2]};
+    const float d = dist - (R[6] * w[0] + R[7] * w[1] + R[8] * w[2]) - r;
+    return (d > near ? d : near) / focal;
+}
+
 // Each side test is conservative: the sphere's distance to a side plane is compared with its
 // radius times a bound on the plane normal's length.
 bool Transform::visible(const int32_t centre[3], int32_t radius, Rows rows) const {

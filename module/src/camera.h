@@ -130,6 +130,8 @@ struct SphereView {
     // A sphere's size across on the screen (placed model, mm, radius r), in pixels at its
     // nearest point: 0 when it lies wholly off the screen or behind the eye.
     float pixels(const float p[3], float r) const;
+    // Millimetres a pixel spans at the sphere's nearest point (the eye's plane at its depth).
+    float mm_per_pixel(const float p[3], float r) const;
 };
 
 // The view: orbit angles (rad), dolly factor (1 = the sphere fitted), pan (mm, in view x/y),

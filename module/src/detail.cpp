@@ -6,6 +6,8 @@
 // changes (the scheduler's sweep), so zooming in brings in what grew.
 #include "core.h"
 
+#include <cmath>
+
 namespace facet {
 
 bool Core::wants_face(void* self, uint32_t f) {
@@ -40,6 +42,27 @@ bool Core::wants_face(void* self, uint32_t f) {
     for (const pack::Instance& inst : instances)
         if (inst.shell == part && shows(inst)) return true;
     return false;
+}
+
+// A block's tolerance: the pass's (the default, or the bias the user chose) scaled by how far
+// the block lies: Config::screen_error_px (half a pixel) at its nearest point in the view the pass starts from (before
+// the first pass is framed: the whole model's sphere fitted), never finer than the pass's and
+// at most kCoarsest times it. A part near the eye gets the pass's own; a far one coarser.
+float Core::block_tolerance(void* self, uint32_t b, float pass_tolerance) {
+    Core& c = *static_cast<Core*>(self);
+    if (c.default_tolerance_ <= 0 || !(c.config_.screen_error_px > 0)) return pass_tolerance;
+    float lo[3], hi[3];
+    c.scene_.block_box(b, lo, hi);
+    if (!(lo[0] <= hi[0])) return pass_tolerance;
+    float centre[3], r2 = 0;
+    for (int k = 0; k < 3; ++k) centre[k] = 0.5f * (lo[k] + hi[k]), r2 += 0.25f * (hi[k] - lo[k]) * (hi[k] - lo[k]);
+    (void)c.judge_with_view();
+    const float mm_per_pixel = c.detail_.mm_per_pixel(centre, std::sqrt(r2));
+    const float bias = pass_tolerance / c.default_tolerance_;
+    float t = bias * c.config_.screen_error_px * mm_per_pixel;
+    if (t < pass_tolerance) t = pass_tolerance;
+    if (t > kCoarsest * pass_tolerance) t = kCoarsest * pass_tolerance;
+    return t;
 }
 
 bool Core::judge_with_view() {

@@ -15,7 +15,7 @@ inline int32_t round_to_int(float v) { return int32_t(v + (v >= 0 ? 0.5f : -0.5f
 
 Result Scene::open(const geom::Pack& pack) {
     loaded_ = false;
-    whole_ = {pack, 0, 0, 0};
+    whole_ = {pack, 0, 0, 0, nullptr, 0, 0};
     blocks_ = {&whole_, 1};
     blocked_ = false;
     instances_ = pack.instances();
@@ -113,6 +113,14 @@ uint8_t Scene::surface_type(uint32_t f) const {
 const char* Scene::part_name(uint32_t s) const {
     if (blocked_) return index_.part_name(s);
     return blocks_[0].pack.shell_name(s);
+}
+
+void Scene::block_box(uint32_t b, float lo[3], float hi[3]) const {
+    const pack::Block* entry = blocked_ ? &index_.blocks()[b] : nullptr;
+    for (int k = 0; k < 3; ++k) {
+        lo[k] = entry ? entry->box_min[k] : centre_[k] - radius_;
+        hi[k] = entry ? entry->box_max[k] : centre_[k] + radius_;
+    }
 }
 
 void Scene::PartBox::add(const int32_t p[3]) {

@@ -42,6 +42,9 @@ struct Block {
     geom::Pack pack;
     uint32_t first_face = 0, first_edge = 0, first_part = 0;
     const uint8_t* data = nullptr; // where its pack lies (decoded, or a plain block in the file)
+    // Its level of detail (mm): the pass's, set as the pass reaches its first edge (0: not yet),
+    // and the previous pass's. Its parts' edges and faces all take it: watertight per part.
+    float tolerance = 0, previous_tolerance = 0;
 };
 
 // A part (a shell): its faces in the model's numbering, and its block.
@@ -92,6 +95,12 @@ public:
     const Block& block(uint32_t b) const { return blocks_[b]; }
     const Block& block_of_face(uint32_t f) const { return blocks_[find(f, &Block::first_face)]; }
     const Block& block_of_edge(uint32_t e) const { return blocks_[find(e, &Block::first_edge)]; }
+    Block& block_of_edge(uint32_t e) { return blocks_[find(e, &Block::first_edge)]; }
+    Block& block(uint32_t b) { return blocks_[b]; }
+    uint32_t block_index(const Block& b) const { return uint32_t(&b - blocks_.data()); }
+    // Where a block's parts lie, placed by their instances (mm): the index's box for a blocked
+    // pack, the placed model's for a whole one.
+    void block_box(uint32_t b, float lo[3], float hi[3]) const;
     Part part(uint32_t s) const;
     const pack::Face& face_record(uint32_t f) const {
         const Block& b = block_of_face(f);

@@ -15,10 +15,24 @@ void Scheduler::begin_pass(float tolerance) {
     in_face_ = false;
     sweep_ = revisit_ = false;
     scene_.samples().used = 0;
+    for (uint32_t b = 0; b < scene_.block_count(); ++b) {
+        Block& block = scene_.block(b);
+        block.previous_tolerance = block.tolerance, block.tolerance = 0;
+    }
     Event e{};
     e.kind = Event::Kind::Pass;
     e.pass = {pass_, tolerance, 0};
     emit_(e);
+}
+
+geom::TessOptions Scheduler::options(Block& b) {
+    if (b.tolerance <= 0) {
+        const float t = block_tolerance_.fn ? block_tolerance_.fn(block_tolerance_.user, scene_.block_index(b), opt_.tolerance) : 0;
+        b.tolerance = t > 0 ? t : opt_.tolerance;
+    }
+    geom::TessOptions o = opt_;
+    o.tolerance = b.tolerance;
+    return o;
 }
 
 bool Scheduler::run(uint32_t units) {
@@ -32,7 +46,9 @@ bool Scheduler::run(uint32_t units) {
         mem_.face_mesh.vertex_count = mem_.face_mesh.triangle_count = 0;
         const Block& b = scene_.block_of_face(face_);
         view_ = scene_.samples_of(b);
-        job_.start(b.pack, face_ - b.first_face, view_, opt_, mem_.storage, mem_.face_mesh);
+        face_opt_ = opt_;
+        face_opt_.tolerance = b.tolerance > 0 ? b.tolerance : opt_.tolerance; // (set when its edges were sampled)
+        job_.start(b.pack, face_ - b.first_face, view_, face_opt_, mem_.storage, mem_.face_mesh);
         in_face_ = true;
     }
     const Result r = job_.run(units);
@@ -50,9 +66,10 @@ void Scheduler::sample(uint32_t units) {
     Result r;
     for (uint32_t n = 0; next_edge_ < edges && s.work - work0 + n < units && r.ok(); ++n) {
         if (!in_edge_) { // the edge's block sees the pool through its own numbering
-            const Block& b = scene_.block_of_edge(next_edge_);
+            Block& b = scene_.block_of_edge(next_edge_);
             view_ = scene_.samples_of(b);
-            sampler_.start(b.pack, opt_, view_, next_edge_ - b.first_edge);
+            edge_opt_ = options(b);
+            sampler_.start(b.pack, edge_opt_, view_, next_edge_ - b.first_edge);
             s.used = view_.used, s.work = view_.work;
             in_edge_ = true;
         }
@@ -81,6 +98,10 @@ void Scheduler::sample(uint32_t units) {
         in_edge_ = false;
         if (pass_ > 0 && !restoring_) {
             opt_.tolerance = previous_;
+            for (uint32_t b = 0; b < scene_.block_count(); ++b) { // each block back at its own previous level
+                Block& block = scene_.block(b);
+                block.tolerance = block.previous_tolerance;
+            }
             restoring_ = true;
             stage_ = Stage::Sampling;
             next_edge_ = 0;

@@ -24,6 +24,13 @@ struct FaceFilter {
     bool operator()(uint32_t face) const { return !fn || fn(user, face); }
 };
 
+// The tolerance (mm) a block's parts take in a pass at `pass_tolerance` (the level of detail's
+// bias): none given, the pass's own.
+struct BlockTolerance {
+    float (*fn)(void* user, uint32_t block, float pass_tolerance) = nullptr;
+    void* user = nullptr;
+};
+
 class Scheduler {
 public:
     struct Memory {
@@ -36,6 +43,7 @@ public:
     void init(const Memory& memory) { mem_ = memory; }
     // The faces a pass leaves to their edges (FaceState::Deferred) are those `filter` turns down.
     void set_filter(const FaceFilter& filter) { filter_ = filter; }
+    void set_block_tolerance(const BlockTolerance& t) { block_tolerance_ = t; }
     // The view changed: the deferred faces are looked at again once the pass is over (a sweep:
     // those the view now wants are tessellated and appended), or again from the first.
     void revisit();
@@ -67,6 +75,8 @@ private:
     Emitter emit_;
     Memory mem_{};
     FaceFilter filter_;
+    BlockTolerance block_tolerance_;
+    geom::TessOptions options(Block& b); // the pass's options at the block's tolerance (set on first use)
     geom::TessOptions opt_;
     Stage stage_ = Stage::Idle;
     uint32_t pass_ = 0;        // 0: the first tessellation; +1 per level-of-detail change
@@ -83,6 +93,7 @@ private:
     bool sweep_ = false;       // the faces again after the pass: only the deferred ones
     bool revisit_ = false;     // the view changed during the pass or sweep: a sweep (again) after it
     geom::FaceJob job_;
+    geom::TessOptions edge_opt_, face_opt_; // the edge's and the face's (they must outlive their job)
 };
 
 } // namespace facet::module

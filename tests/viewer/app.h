@@ -55,6 +55,7 @@ struct App {
     uint32_t clock_us = 0, tick_us = 0; // a fake clock: each read advances it
     bool use_clock = false;
     bool interface = false; // the model alone (the on-screen interface has tests of its own)
+    float screen_error_px = Config{}.screen_error_px;
 
     Capacity capacity;
     size_t workspace_size = 0; // 0: FACET_WORKSPACE_BYTES_DEFAULT (or the capacity's own, when larger)
@@ -85,6 +86,7 @@ struct App {
         }
         cfg.capacity = capacity;
         cfg.interface = interface;
+        cfg.screen_error_px = screen_error_px;
         const size_t bytes = workspace_size ? workspace_size : std::max<size_t>(workspace_bytes(capacity), FACET_WORKSPACE_BYTES_DEFAULT);
         workspace.assign(bytes / 8, 0);
         Result why;

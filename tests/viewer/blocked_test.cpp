@@ -6,6 +6,9 @@
 #include "app.h"
 #include "pack_blocks.h"
 
+#include <array>
+#include <cmath>
+#include <map>
 #include <vector>
 
 using namespace facet;
@@ -44,9 +47,12 @@ struct Shown {
     std::vector<std::string> names;
 };
 
+// Every part at the model's one tolerance (no coarser level for a far block: a whole pack is one
+// block), so the two forms make the same mesh.
 Shown show(const Bytes& file) {
     App app;
     app.w = 320, app.h = 240;
+    app.screen_error_px = 0;
     EXPECT_TRUE(app.create().ok());
     const Result r = app.load(file);
     EXPECT_TRUE(r.ok()) << text(r);
@@ -127,6 +133,7 @@ TEST(Blocked, AFileTheBoardLoadedIntoTheWorkspaceIsDecodedWhereverItLies) {
         const Bytes file = blocked(whole, store);
         App app;
         app.w = 320, app.h = 240;
+        app.screen_error_px = 0;
         ASSERT_TRUE(app.create().ok());
         uint8_t* at = reinterpret_cast<uint8_t*>(app.workspace.data()) + app.workspace.size() / 2 * 8; // mid-workspace
         std::memcpy(at, file.data(), file.size());
@@ -171,4 +178,58 @@ TEST(Blocked, TooLittleMemoryACorruptBlockAndAnUnalignedFileAreRefused) {
     EXPECT_TRUE(r.ok()) << text(r);
     app.run();
     EXPECT_EQ(app.v->stats().failed, 0u);
+}
+
+// Level of detail per block (issue 25): a block's parts take a tolerance from how far they lie
+// (half a pixel at their nearest point, never finer than the model's), and every edge of a part
+// is sampled once at its block's level for both its faces: each closed part is watertight
+// whatever mix of levels the model shows.
+TEST(Blocked, PartsAtMixedLevelsOfDetailAreEachWatertight) {
+    const Bytes shapes[] = {plate_with_holes(), sphere(), torus(), trimmed_bspline()};
+    std::vector<Pack> packs(4);
+    for (int k = 0; k < 4; ++k) ASSERT_TRUE(packs[k].open(shapes[k].data(), uint32_t(shapes[k].size())).ok());
+    const Bytes file = blocked(combine_packs(packs, 600.0f)); // far apart: the far blocks coarser
+    App app;
+    app.w = 320, app.h = 240;
+    ASSERT_TRUE(app.create().ok());
+    ASSERT_TRUE(app.load(file).ok());
+    app.run();
+    // Looking along the row (the right view looks along -x), a new pass: the far blocks coarser.
+    app.v->act(Action::ViewRight);
+    app.run();
+    app.v->act(Action::Finer);
+    app.run();
+    const Core& core = *static_cast<const Core*>(app.v);
+    const module::Scene& scene = core.scene();
+    float finest = INFINITY, coarsest = 0;
+    for (uint32_t b = 0; b < scene.block_count(); ++b) {
+        finest = std::min(finest, scene.block(b).tolerance), coarsest = std::max(coarsest, scene.block(b).tolerance);
+    }
+    EXPECT_GE(finest, app.v->stats().tolerance_mm) << "no block finer than the model's tolerance";
+    EXPECT_GT(coarsest, 1.5f * finest) << "the blocks are at different levels";
+    EXPECT_EQ(app.v->stats().failed, 0u);
+    using Point = std::array<int32_t, 3>;
+    for (uint32_t s = 0; s < scene.part_count(); ++s) {
+        const module::Part part = scene.part(s);
+        if (!part.closed) continue;
+        std::map<std::pair<Point, Point>, int> uses; // each side of a triangle, by its ends' positions
+        for (uint32_t f = part.first_face; f < part.first_face + part.face_count; ++f) {
+            const module::FaceInfo& F = scene.face(f);
+            ASSERT_EQ(F.state, module::FaceState::Done) << "part " << s << " face " << f;
+            const uint16_t* id = scene.indices() + F.first_index;
+            for (uint32_t t = 0; t < F.triangle_count; ++t, id += 3) {
+                for (int k = 0; k < 3; ++k) {
+                    const int32_t* a = scene.vertices()[F.first_vertex + id[k]].p;
+                    const int32_t* b = scene.vertices()[F.first_vertex + id[(k + 1) % 3]].p;
+                    Point pa{a[0], a[1], a[2]}, pb{b[0], b[1], b[2]};
+                    if (pb < pa) std::swap(pa, pb);
+                    ++uses[{pa, pb}];
+                }
+            }
+        }
+        size_t open = 0;
+        for (const auto& [side, n] : uses) open += n != 2;
+        EXPECT_EQ(open, 0u) << "part " << s << " (block tolerance " << scene.block(part.block).tolerance
+                            << " mm): sides not shared by exactly two triangles";
+    }
 }

@@ -101,6 +101,7 @@ typedef struct {
     void *clock_user;
     uint32_t frame_budget_us, step_slack_us;
     int interface; /* facet's own on-screen interface (facet_config_init: 1) */
+    float screen_error_px; /* a far part's chordal error at rest (facet_config_init: 0.5); 0: one tolerance */
 } facet_config;
 
 /* What step() left: more work (call again), a frame waiting for facet_flush_done(), nothing. */

@@ -119,8 +119,8 @@ struct Config {
     void* event_user = nullptr;
     uint32_t (*now_us)(void* user) = nullptr; // optional clock (wraps): step budgets and costs in us;
     void* clock_user = nullptr;               // without one, step() does one piece of work per call
-    uint32_t frame_budget_us = 0;             // BudgetExceeded past these (0: never)
-    uint32_t step_slack_us = 2000;
+    uint32_t frame_budget_us = 0, step_slack_us = 2000; // BudgetExceeded past these (0: never)
+    float screen_error_px = 0.5f; // a far part's chordal error at rest, pixels; 0: every part at the model's tolerance
     bool interface = true; // facet's own on-screen interface (status bar, toolbar, panels); false:
                            // the application draws its own and drives the viewer with act()
 };
