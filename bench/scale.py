@@ -88,6 +88,9 @@ def make(tool, args, what):
 def run_one(board_name, elf, fpk, out, timeout):
     board = boards.load(board_name)
     row, notes = {}, []
+    size = os.path.getsize(fpk)
+    if size > board['pack_bytes']:
+        return row, [f'pack file {size:,} B > the board\'s pack region {board["pack_bytes"]:,} B']
     sends = [x for s in SESSION for x in ('--send', s)]
     r = subprocess.run([sys.executable, os.path.join(ROOT, 'tools', 'qemu', 'run.py'), '--board', board_name,
                         '--elf', elf, '--out', out, '--load', f'{fpk}@{board["pack"]["address"]}', '--icount',
