@@ -1,5 +1,8 @@
 #include "scheduler.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace facet::module {
 
 void Scheduler::begin_pass(float tolerance) {
@@ -32,6 +35,10 @@ geom::TessOptions Scheduler::options(Block& b) {
     }
     geom::TessOptions o = opt_;
     o.tolerance = b.tolerance;
+    // A far block's arcs turn more between samples, as its tolerance is coarser (a small hole
+    // far off needs no seven sides), up to kMaxFarAngle.
+    const float ratio = b.tolerance / opt_.tolerance;
+    if (ratio > 1) o.max_angle = std::min(kMaxFarAngle, opt_.max_angle * std::sqrt(ratio));
     return o;
 }
 

@@ -69,7 +69,8 @@ private:
     bool next_face(); // past faces not to tessellate now; false when the piece is spent on them
     void finish_face(const Result& r);
     void end_faces();
-    static constexpr uint32_t kChecksPerPiece = 48; // faces looked at (and deferred) in one piece
+    static constexpr uint32_t kChecksPerPiece = 48;
+    static constexpr float kMaxFarAngle = 2.0f; // rad: a full circle in four sides at the coarsest // faces looked at (and deferred) in one piece
 
     Scene& scene_;
     Emitter emit_;
