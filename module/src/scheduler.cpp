@@ -28,17 +28,19 @@ void Scheduler::begin_pass(float tolerance) {
     emit_(e);
 }
 
-geom::TessOptions Scheduler::options(Block& b) {
-    if (b.tolerance <= 0) {
-        const float t = block_tolerance_.fn ? block_tolerance_.fn(block_tolerance_.user, scene_.block_index(b), opt_.tolerance) : 0;
-        b.tolerance = t > 0 ? t : opt_.tolerance;
-    }
+void Scheduler::set_level(Block& b) {
+    if (b.tolerance > 0) return;
+    const float t = block_tolerance_.fn ? block_tolerance_.fn(block_tolerance_.user, scene_.block_index(b), opt_.tolerance) : 0;
+    b.tolerance = t > 0 ? t : opt_.tolerance;
+}
+
+geom::TessOptions Scheduler::options(const Block& b) const {
     geom::TessOptions o = opt_;
+    if (!(b.tolerance > opt_.tolerance)) return o;
     o.tolerance = b.tolerance;
     // A far block's arcs turn more between samples, as its tolerance is coarser (a small hole
     // far off needs no seven sides), up to kMaxFarAngle.
-    const float ratio = b.tolerance / opt_.tolerance;
-    if (ratio > 1) o.max_angle = std::min(kMaxFarAngle, opt_.max_angle * std::sqrt(ratio));
+    o.max_angle = std::min(kMaxFarAngle, opt_.max_angle * std::sqrt(b.tolerance / opt_.tolerance));
     return o;
 }
 
@@ -53,9 +55,7 @@ bool Scheduler::run(uint32_t units) {
         mem_.face_mesh.vertex_count = mem_.face_mesh.triangle_count = 0;
         const Block& b = scene_.block_of_face(face_);
         view_ = scene_.samples_of(b);
-        face_opt_ = opt_;
-        face_opt_.tolerance = b.tolerance > 0 ? b.tolerance : opt_.tolerance; // (set when its edges were sampled)
-        job_.start(b.pack, face_ - b.first_face, view_, face_opt_, mem_.storage, mem_.face_mesh);
+        job_.start(b.pack, face_ - b.first_face, view_, options(b), mem_.storage, mem_.face_mesh); // (its level set by its edges)
         in_face_ = true;
     }
     const Result r = job_.run(units);
@@ -75,8 +75,8 @@ void Scheduler::sample(uint32_t units) {
         if (!in_edge_) { // the edge's block sees the pool through its own numbering
             Block& b = scene_.block_of_edge(next_edge_);
             view_ = scene_.samples_of(b);
-            edge_opt_ = options(b);
-            sampler_.start(b.pack, edge_opt_, view_, next_edge_ - b.first_edge);
+            set_level(b);
+            sampler_.start(b.pack, options(b), view_, next_edge_ - b.first_edge);
             s.used = view_.used, s.work = view_.work;
             in_edge_ = true;
         }

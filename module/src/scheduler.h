@@ -77,7 +77,8 @@ private:
     Memory mem_{};
     FaceFilter filter_;
     BlockTolerance block_tolerance_;
-    geom::TessOptions options(Block& b); // the pass's options at the block's tolerance (set on first use)
+    void set_level(Block& b);                         // its tolerance in this pass, when it has none yet
+    geom::TessOptions options(const Block& b) const; // the pass's options at the block's level
     geom::TessOptions opt_;
     Stage stage_ = Stage::Idle;
     uint32_t pass_ = 0;        // 0: the first tessellation; +1 per level-of-detail change
@@ -94,7 +95,6 @@ private:
     bool sweep_ = false;       // the faces again after the pass: only the deferred ones
     bool revisit_ = false;     // the view changed during the pass or sweep: a sweep (again) after it
     geom::FaceJob job_;
-    geom::TessOptions edge_opt_, face_opt_; // the edge's and the face's (they must outlive their job)
 };
 
 } // namespace facet::module
