@@ -6,11 +6,12 @@ Each assembly is made with Open CASCADE (tools/assembly: copies of shared models
 loaded at the board's pack address and shown; then turned (four key turns), zoomed in on the
 centre (six steps) and quit (tests/sessions/scale.session). One CSV row per board and assembly:
 
-  board,kind,faces,step_bytes,pack_bytes,first_wireframe_instructions,first_view_instructions,
+  board,kind,faces,step_bytes,pack_bytes,first_frame_instructions,first_view_instructions,
   frame_rest_instructions,frame_turning_max_instructions,frame_zoomed_instructions,
   triangles,deferred_faces,peak_ram_bytes,note
 
-  first wireframe: every piece of work from load to the end of the first frame (the edges);
+  first frame: every piece of work from load to the end of the first frame (the parts' boxes
+  of a blocked pack while its edges are sampled, or the wireframe);
   first view: to the end of the first frame after the first pass (every face the view wants
   in); a frame at rest: the full frame at the fitted view once the faces are in; turning: the
   largest frame while the view turns; zoomed: the frame once the zoomed view's faces are in.
@@ -38,17 +39,17 @@ import board as boards  # noqa: E402
 import protocol  # noqa: E402
 from viewer_test import WORK_REGIONS, first_view, peak_ram  # noqa: E402
 
-COLUMNS = ['board', 'kind', 'faces', 'step_bytes', 'pack_bytes', 'first_wireframe_instructions', 'first_view_instructions',
+COLUMNS = ['board', 'kind', 'faces', 'step_bytes', 'pack_bytes', 'first_frame_instructions', 'first_view_instructions',
            'frame_rest_instructions', 'frame_turning_max_instructions', 'frame_zoomed_instructions', 'triangles',
            'deferred_faces', 'peak_ram_bytes', 'note']
 SESSION = protocol.read_session(protocol.session_path('scale'))
 
 
 def measure(uart, regions):
-    """The run's figures from its log and regions: the first wireframe and view (as ./facet run
+    """The run's figures from its log and regions: the first frame and view (as ./facet run
     budgets them), then the frames of each phase of the session, split by its screenshots."""
     out = {'turning': []}
-    out['first_wireframe'], out['first_view'] = first_view(uart, regions)
+    out['first_frame'], out['first_view'] = first_view(uart, regions)
     pieces = []               # the pieces of the frame under way
     phase = 'load'            # load, rest (after the first shot), turned, zoomed
     tessellated = False
@@ -106,7 +107,7 @@ def run_one(board_name, elf, fpk, out, timeout):
     elif r.returncode != 0:
         notes.append(f'exit {r.returncode}' + (' (timeout)' if r.returncode == 124 else ''))
     m = measure(uart, rep.get('regions', []))
-    for key, col in (('first_wireframe', 'first_wireframe_instructions'), ('first_view', 'first_view_instructions'),
+    for key, col in (('first_frame', 'first_frame_instructions'), ('first_view', 'first_view_instructions'),
                      ('rest', 'frame_rest_instructions'), ('zoomed', 'frame_zoomed_instructions'),
                      ('triangles', 'triangles'), ('deferred', 'deferred_faces')):
         if m.get(key) is not None:
@@ -123,14 +124,14 @@ def markdown(rows, date):
     m = lambda v: f'{v / 1e6:,.1f}' if isinstance(v, int) else '-'
     lines = [f'Measured {date} by `./facet bench scale` (exact QEMU instruction counts, M = million instructions, '
              '600 M = 1 s at 600 MHz; the goals of issue 25: first view 1,200 M for 10 k faces, a frame at rest 20 M).',
-             '', '| board | kind | faces | pack KB | first wireframe M | first view M | frame at rest M | turning M '
+             '', '| board | kind | faces | pack KB | first frame M | first view M | frame at rest M | turning M '
              '| zoomed M | triangles | deferred faces | peak RAM MiB | note |',
              '|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|']
     for r in rows:
         peak = r.get('peak_ram_bytes')
         lines.append(f'| {r["board"]} | {r["kind"]} | {r.get("faces", "-")} | '
                      f'{r["pack_bytes"] // 1024 if r.get("pack_bytes") else "-"} | '
-                     f'{m(r.get("first_wireframe_instructions"))} | {m(r.get("first_view_instructions"))} | '
+                     f'{m(r.get("first_frame_instructions"))} | {m(r.get("first_view_instructions"))} | '
                      f'{m(r.get("frame_rest_instructions"))} | {m(r.get("frame_turning_max_instructions"))} | '
                      f'{m(r.get("frame_zoomed_instructions"))} | {r.get("triangles", "-")} | '
                      f'{r.get("deferred_faces", "-")} | {f"{peak / (1 << 20):.2f}" if peak else "-"} | {r.get("note", "")} |')
@@ -241,7 +242,7 @@ def main():
         f.write(markdown(rows, args.date))
     png = plot(args.csv)
     print(f'wrote {args.csv}, {md}' + (f', {png}' if png else ''))
-    figures = ('first_wireframe_instructions', 'first_view_instructions', 'frame_rest_instructions',
+    figures = ('first_frame_instructions', 'first_view_instructions', 'frame_rest_instructions',
                'frame_turning_max_instructions', 'frame_zoomed_instructions', 'peak_ram_bytes')
     if args.strict:  # (the test of this script) every figure of every row
         missing = [f'{r["board"]} {r["kind"]}-{r["faces"]}: {c}' for r in rows for c in figures if r.get(c) in (None, '')]

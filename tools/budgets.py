@@ -49,7 +49,7 @@ def main():
     frames = [{'name': f'frame {i + 1}', 'instructions': f['instructions'], 'triangles': f['triangles'],
                'ms_at_600mhz': None if f['instructions'] is None else round(f['instructions'] / 600e3, 2)}
               for i, f in enumerate(frame_list)]
-    wireframe, view = first_view(uart, rep['regions'])
+    first_frame, view = first_view(uart, rep['regions'])
     view_budget = first_view_budget(t['faces']) if t.get('faces') else None
     out = {
         'board': rep['board'],
@@ -72,7 +72,7 @@ def main():
         'tri_ms_at_600mhz': None if tess is None else round(tess / 600e3, 1),
         'frame_instructions': max((f['instructions'] or 0 for f in frame_list
                                    if t and f['triangles'] == t['triangles']), default=None),
-        'first_wireframe_instructions': wireframe,
+        'first_frame_instructions': first_frame,
         'first_view_instructions': view,
         'first_view_budget_instructions': None if view_budget is None else int(view_budget),
         'frames': frames,
@@ -139,7 +139,7 @@ def main():
               f'(budget {TESSELLATION_BUDGET:,} = 1 s)')
     if view is not None and view_budget is not None:
         print(f'  first view (load to the first frame with the faces in): {view:,} instructions = {view / 600e3:.0f} ms '
-              f'(budget {view_budget:,.0f}); first wireframe {wireframe:,}')
+              f'(budget {view_budget:,.0f}); the first frame (boxes or wireframe) {first_frame:,}')
     print(f'  RAM by section (budget {RAM_BUDGET:,} bytes = 32 MiB):')
     for k, v in ram.items():
         print(f'    {k:<14} {v:>12,}')

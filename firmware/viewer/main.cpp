@@ -117,7 +117,7 @@ void on_event(void*, const Event& e) {
         const auto& f = e.frame;
         if (f.full) print(con, "@frame triangles {} culled {} pixels {} pieces {} cost_us {}\n", f.triangles, f.culled, f.pixels, f.pieces, f.cost_us);
         // The screenshots of the first pass: the wireframe, half the faces, all of them.
-        if (f.pass != 0) break;
+        if (f.pass != 0 || f.boxes) break; // (the parts' boxes while the edges are sampled: no screenshot)
         if (!session.wireframe_shot && f.faces_done == 0) session.wireframe_shot = true, capture("wireframe");
         if (!session.half_shot && f.faces_done > 0 && 2 * f.faces_done >= f.faces_total) session.half_shot = true, capture("half");
         if (!session.done_shot && f.full && f.faces_done == f.faces_total) session.done_shot = true, capture("done");

@@ -66,7 +66,7 @@ void event_thunk(void* user, const Event& e) {
     }
     case Event::Kind::FrameDone: {
         const auto& f = e.frame;
-        c.u.frame = {f.triangles, f.culled, f.pixels, f.cost_us, f.pieces, f.faces_done, f.faces_total, f.pass, uint8_t(f.full)};
+        c.u.frame = {f.triangles, f.culled, f.pixels, f.cost_us, f.pieces, f.faces_done, f.faces_total, f.pass, uint8_t(f.full), uint8_t(f.boxes)};
         break;
     }
     case Event::Kind::BudgetExceeded: c.u.budget = {uint8_t(e.budget.step), e.budget.budget_us, e.budget.used_us}; break;

@@ -94,9 +94,17 @@ Result Core::load(const void* file, uint32_t file_bytes, void* memory, uint32_t 
 }
 
 bool Core::frame_wanted() const {
-    if (!scene_.loaded() || scheduler_.sampling() || scene_.bounding() || framer_.busy() || glide_.phase == Glide::Phase::Framing) return false;
+    if (!scene_.loaded() || scene_.bounding() || framer_.busy() || glide_.phase == Glide::Phase::Framing) return false;
+    if (scheduler_.sampling() && !boxes_while_sampling()) return false; // no edge may be drawn meanwhile
     const module::Totals& t = scene_.totals();
     return presenter_.wanted(t.finished(), t.faces);
+}
+
+// While the first pass samples the edges of a blocked pack, its parts' boxes (the index's) are
+// drawn: the model's layout on the screen right after load, turned and zoomed as the user likes.
+bool Core::boxes_while_sampling() const {
+    int32_t lo[3], hi[3];
+    return scheduler_.sampling() && scheduler_.pass() == 0 && scene_.part_count() > 0 && scene_.part_box(0, lo, hi);
 }
 
 Activity Core::step(uint32_t budget_us) {
@@ -127,6 +135,7 @@ Activity Core::step(uint32_t budget_us) {
         } else if (glide_.phase == Glide::Phase::Moving && !frame_wanted() && !mid_bands) {
             glide_step(); // the last frame is out: the next step of the glide
         } else if (frame) {
+            presenter_.set_boxes(boxes_while_sampling());
             const Work w = presenter_.work();
             work(Event::Kind::WorkBegin, w, 0);
             presenter_.run(kFrameUnits, scheduler_.pass());

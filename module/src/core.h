@@ -65,6 +65,7 @@ private:
     void work(Event::Kind kind, Work what, uint32_t item);
     uint32_t now() const { return config_.now_us ? config_.now_us(config_.clock_user) : 0; }
     bool frame_wanted() const;
+    bool boxes_while_sampling() const;
     void pick(int16_t x, int16_t y);
     Event pick_at(int16_t x, int16_t y); // the Picked event of the face under (x, y)
     void view_changed();

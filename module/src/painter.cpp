@@ -10,6 +10,7 @@ namespace {
 
 constexpr uint16_t kLineBias = 384; // depth units edges are pulled toward the eye
 constexpr Rgb565 kEdgeColour = rgb565(28, 30, 38);
+constexpr Rgb565 kBoxColour = rgb565(96, 104, 128); // a part's box before its edges are in
 constexpr uint32_t kNoColour = 0xFF000000u; // no palette in the slot (colours are 24-bit)
 constexpr uint32_t kPaper = 0x00FFFFFFu;    // hidden-line faces: white
 constexpr uint32_t kPicked = 0x00C830FFu;   // the picked face (B, G, R bytes: magenta, rare in CAD colours)
@@ -280,6 +281,24 @@ uint32_t Painter::face_edges(uint32_t f, const Transform& t, Rows rows, bool onc
         }
     }
     return work;
+}
+
+uint32_t Painter::part_box(uint32_t part, const Transform& t) {
+    int32_t lo[3], hi[3];
+    if (!scene_.part_box(part, lo, hi)) return 1;
+    Projected corner[8];
+    for (int c = 0; c < 8; ++c) {
+        const int32_t p[3] = {c & 1 ? hi[0] : lo[0], c & 2 ? hi[1] : lo[1], c & 4 ? hi[2] : lo[2]};
+        t.project(p, corner[c]);
+    }
+    for (int c = 0; c < 8; ++c) { // each corner to the ones one bit up: the twelve sides
+        for (int bit = 1; bit < 8; bit <<= 1) {
+            if (c & bit) continue;
+            const Projected &a = corner[c], &b = corner[c | bit];
+            if (!(a.out | b.out)) refused_ += !ok(raster_.line(a.s, b.s, kBoxColour, kLineBias));
+        }
+    }
+    return 4;
 }
 
 uint32_t Painter::edge(uint32_t e, const Transform& t) {

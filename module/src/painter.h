@@ -45,6 +45,8 @@ public:
     uint32_t face(uint32_t f, const Transform& t, Rows rows, uint32_t from, uint32_t units, uint32_t& spent);
     // The edges of the face, each at most once per reset_edges() when `once`. Returns the work.
     uint32_t face_edges(uint32_t f, const Transform& t, Rows rows, bool once);
+    // The part's box (Scene::part_box) as twelve lines, while its edges are not sampled yet.
+    uint32_t part_box(uint32_t part, const Transform& t);
     void reset_edges();
     // The rows of the screen being drawn (the target's band) for culling.
     Rows rows(const Transform& t) const;

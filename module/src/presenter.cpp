@@ -74,7 +74,8 @@ void Presenter::start(uint32_t finished) {
     job_ = {};
     job_.active = true;
     job_.buffer = b;
-    job_.full = !(incremental_ && buf_[b].version == version_);
+    job_.boxes = boxes_;
+    job_.full = boxes_ || !(incremental_ && buf_[b].version == version_);
     job_.version = version_;
     job_.finished = finished;
     job_.applied_to = scene_.totals().done;
@@ -106,6 +107,13 @@ bool Presenter::full_pieces(uint32_t units) {
         }
         const Transform& t = job_.transform;
         const Rows rows = painter_.rows(t);
+        if (job_.boxes) {
+            spent += painter_.part_box(instances[job_.instance].shell, t);
+            ++job_.instance;
+            job_.have_transform = false;
+            if (spent >= units) return false;
+            continue;
+        }
         if (job_.stage == Job::Stage::Faces) {
             while (job_.face < sh.face_count && spent < units) {
                 const uint32_t f = sh.first_face + job_.face;
@@ -191,7 +199,7 @@ void Presenter::flush(uint32_t pass) {
     const render::RasterStats& s = raster_.stats;
     const uint32_t cost = job_.cost_us + (clock_() - piece_start_);
     if (job_.full) last_frame_us_ = cost;
-    e.frame = {s.triangles, s.culled, s.pixels, cost, job_.pieces, job_.finished, scene_.totals().faces, pass, job_.full};
+    e.frame = {s.triangles, s.culled, s.pixels, cost, job_.pieces, job_.finished, scene_.totals().faces, pass, job_.full, job_.boxes};
     emit_(e);
     if (budget_us_ && cost > budget_us_) {
         Event b{};

@@ -47,6 +47,9 @@ public:
     bool can_draw();
     // One piece of the frame (about `units` triangles). The last piece hands the frame over.
     void run(uint32_t units, uint32_t pass);
+    // Frames begun from now on draw each instance's part box alone (its edges are being
+    // sampled: nothing else of it can be drawn yet), or the model.
+    void set_boxes(bool boxes) { boxes_ = boxes; }
     void run_piece(uint32_t units, uint32_t pass);
     // The kind of the piece run() would do next.
     Work work() const;
@@ -59,7 +62,7 @@ public:
 
 private:
     struct Job {
-        bool active = false, full = false;
+        bool active = false, full = false, boxes = false;
         uint8_t buffer = 0;
         uint16_t band = 0;            // full frames: the band being drawn
         enum class Stage : uint8_t { Begin, Faces, Edges, Overlay, Flush } stage = Stage::Begin;
@@ -89,6 +92,7 @@ private:
     Display display_{};
     uint8_t buffers_ = 1;
     bool incremental_ = false; // full frames with a depth buffer per draw buffer
+    bool boxes_ = false;       // set_boxes()
     uint16_t bands_ = 1;
 
     uint32_t version_ = 1;      // the picture's state: +1 whenever every buffer must be redrawn

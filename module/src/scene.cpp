@@ -123,6 +123,18 @@ void Scene::block_box(uint32_t b, float lo[3], float hi[3]) const {
     }
 }
 
+bool Scene::part_box(uint32_t s, int32_t lo[3], int32_t hi[3]) const {
+    if (!blocked_ || s >= index_.parts().size()) return false;
+    const pack::Part& part = index_.parts()[s];
+    const float inv = 1.0f / unit_;
+    for (int k = 0; k < 3; ++k) {
+        const float a = part.box_min[k] * inv, b = part.box_max[k] * inv;
+        if (!(a <= b && std::fabs(a) < 1e9f && std::fabs(b) < 1e9f)) return false; // empty, or far off
+        lo[k] = int32_t(std::floor(a)), hi[k] = int32_t(std::ceil(b));
+    }
+    return true;
+}
+
 void Scene::PartBox::add(const int32_t p[3]) {
     for (int k = 0; k < 3; ++k) {
         lo[k] = p[k] < lo[k] ? p[k] : lo[k];

@@ -101,6 +101,9 @@ public:
     // Where a block's parts lie, placed by their instances (mm): the index's box for a blocked
     // pack, the placed model's for a whole one.
     void block_box(uint32_t b, float lo[3], float hi[3]) const;
+    // A part's box in its own coordinates (mesh units), from a blocked pack's index; false for
+    // a whole pack (its parts' boxes are known once its edges are sampled).
+    bool part_box(uint32_t part, int32_t lo[3], int32_t hi[3]) const;
     Part part(uint32_t s) const;
     const pack::Face& face_record(uint32_t f) const {
         const Block& b = block_of_face(f);

@@ -69,20 +69,20 @@ WORK_REGIONS = ('unpack', 'edges', 'face', 'fit', 'frame', 'update', 'overlay') 
 
 
 def first_view(uart, regions):
-    """(first wireframe, first view): every piece of work from load to the end of the first
-    frame (the edges), and to the end of the first frame after the first pass's faces are in (the
+    """(first frame, first view): every piece of work from load to the end of the first frame
+    (a blocked pack's parts as boxes, or the wireframe), and to the end of the first frame after the first pass's faces are in (the
     view at its level of detail); None where the log has no such frame."""
-    spent, wireframe, tessellated = 0, None, False
+    spent, first, tessellated = 0, None, False
     for r, region in protocol.with_regions(uart, regions):
         if region and r.words[0] in WORK_REGIONS:
             spent += region['instructions'] or 0
         elif r.name == 'tessellation':
             tessellated = True
         elif r.name == 'frame':
-            wireframe = spent if wireframe is None else wireframe
+            first = spent if first is None else first
             if tessellated:
-                return wireframe, spent
-    return wireframe, None
+                return first, spent
+    return first, None
 
 
 def first_view_budget(faces):

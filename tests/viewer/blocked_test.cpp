@@ -233,3 +233,37 @@ TEST(Blocked, PartsAtMixedLevelsOfDetailAreEachWatertight) {
                             << " mm): sides not shared by exactly two triangles";
     }
 }
+
+// Right after load, while the first pass samples the edges, a blocked pack's parts show as
+// their boxes (the index's), each instance's in its place: the model's layout at once. A whole
+// pack has no boxes before its edges: nothing is drawn until its wireframe.
+TEST(Blocked, ThePartsShowAsBoxesWhileTheirEdgesAreSampled) {
+    const Bytes whole = assembly();
+    for (const Bytes* file : {&whole, static_cast<const Bytes*>(nullptr)}) {
+        const Bytes pack = file ? *file : blocked(whole);
+        App app;
+        app.w = 320, app.h = 240;
+        ASSERT_TRUE(app.create().ok());
+        ASSERT_TRUE(app.load(pack).ok());
+        uint32_t box_pixels = 0;
+        for (int i = 0; i < 100000 && app.count(Event::Kind::Sampled) == 0; ++i) {
+            (void)app.v->step(1000);
+            app.done();
+        }
+        ASSERT_EQ(app.count(Event::Kind::Sampled), 1);
+        bool boxes = false;
+        for (const Event& e : app.events) {
+            if (e.kind == Event::Kind::FrameDone) boxes = boxes || e.frame.boxes;
+            if (e.kind == Event::Kind::Sampled) break;
+        }
+        for (Rgb565 p : app.screen()) box_pixels += p == rgb565(96, 104, 128);
+        if (file) {
+            EXPECT_FALSE(boxes) << "a whole pack: no frame before its edges";
+        } else {
+            EXPECT_TRUE(boxes) << "a blocked pack: its boxes while its edges are sampled";
+            EXPECT_GT(box_pixels, 200u) << "four boxes' lines";
+        }
+        app.run();
+        EXPECT_EQ(app.v->stats().done + app.v->stats().deferred, app.v->stats().faces);
+    }
+}

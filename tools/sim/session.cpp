@@ -219,7 +219,7 @@ void Session::event(void* self, const facet::Event& e) {
         break;
     case Kind::FrameDone: {
         const auto& f = e.frame;
-        if (f.pass != 0) break;
+        if (f.pass != 0 || f.boxes) break; // (the parts' boxes while the edges are sampled: no screenshot)
         if (!s.wireframe_ && f.faces_done == 0) s.wireframe_ = true, s.capture("wireframe");
         if (!s.half_ && f.faces_done > 0 && 2 * f.faces_done >= f.faces_total) s.half_ = true, s.capture("half");
         if (!s.done_ && f.full && f.faces_done == f.faces_total) s.done_ = true, s.capture("done");

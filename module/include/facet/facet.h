@@ -83,7 +83,7 @@ typedef struct {
         struct { uint32_t face; } failed;
         struct { uint32_t pass, faces, failed, triangles, vertices, mesh_bytes, arena_peak_bytes; float tolerance_mm; } tessellated;
         /* frame: triangles set up, culled, pixels depth-tested (drawn or hidden), ... */
-        struct { uint32_t triangles, culled, pixels, cost_us, pieces, faces_done, faces_total, pass; uint8_t full; } frame;
+        struct { uint32_t triangles, culled, pixels, cost_us, pieces, faces_done, faces_total, pass; uint8_t full, boxes; } frame;
         struct { uint8_t step; uint32_t budget_us, used_us; } budget;
         struct { uint8_t hit; uint32_t face, instance, shell; uint8_t surface_type; int16_t x, y; } pick;
         struct { float yaw_deg, pitch_deg, zoom; } view;

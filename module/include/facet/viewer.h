@@ -103,7 +103,7 @@ struct Event {
         struct { uint32_t face; } failed;
         struct { uint32_t pass, faces, failed, triangles, vertices, mesh_bytes, arena_peak_bytes; float tolerance_mm; } tessellated;
         // frame: triangles set up, culled, pixels depth-tested (drawn or hidden), ...
-        struct { uint32_t triangles, culled, pixels, cost_us, pieces, faces_done, faces_total, pass; bool full; } frame;
+        struct { uint32_t triangles, culled, pixels, cost_us, pieces, faces_done, faces_total, pass; bool full, boxes; } frame;
         struct { bool step; uint32_t budget_us, used_us; } budget;
         struct { bool hit; uint32_t face, instance, shell; uint8_t surface_type; int16_t x, y; } pick;
         struct { float yaw_deg, pitch_deg, zoom; } view;
