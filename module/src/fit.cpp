@@ -52,7 +52,26 @@ bool Framer::run(const Scene& scene, Camera& camera, uint32_t units) {
             have_transform_ = true;
             part_ = scene.part(instances[instance_].shell);
             face_ = part_.first_face, phase_ = 0, k_ = 0;
+            uint32_t first = 0, count = 0;
+            by_edges_ = only_face_ == ~0u && scene.totals().done == 0 && !samples.count.empty() &&
+                        scene.part_edges(instances[instance_].shell, first, count);
+            edge_ = first, edge_end_ = first + count;
             budget = budget > 32 ? budget - 32 : 0;
+        }
+        if (by_edges_) {
+            while (edge_ < edge_end_ && budget > 0) {
+                const uint32_t n = samples.count[edge_], first = samples.first[edge_];
+                for (; k_ < n && budget > 0; ++k_, --budget) {
+                    t_.project(scene.sample_q(first + k_), p);
+                    o_.add(p);
+                }
+                if (k_ < n) break;
+                ++edge_, k_ = 0;
+            }
+            if (edge_ < edge_end_) continue;
+            ++instance_;
+            have_transform_ = false;
+            continue;
         }
         const Part& sh = part_;
         if (face_ >= sh.first_face + sh.face_count) {

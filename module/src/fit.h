@@ -49,6 +49,10 @@ private:
     // loops' coedges' samples (phase 1).
     uint32_t instance_ = 0, face_ = 0, loop_ = 0, coedge_ = 0, k_ = 0;
     uint8_t phase_ = 0;
+    // Before any face is in, an instance's outline is its part's edges: each once (a face's
+    // loops would give each edge twice), when the part's edges are known to be together.
+    bool by_edges_ = false;
+    uint32_t edge_ = 0, edge_end_ = 0;
     bool have_transform_ = false;
     Transform t_{};
     Part part_{}; // the instance's part

@@ -135,6 +135,20 @@ bool Scene::part_box(uint32_t s, int32_t lo[3], int32_t hi[3]) const {
     return true;
 }
 
+bool Scene::part_edges(uint32_t s, uint32_t& first, uint32_t& count) const {
+    if (!blocked_) {
+        first = 0, count = edges_;
+        return parts_ == 1;
+    }
+    if (s >= parts_) return false;
+    const Part p = part(s);
+    const Block& block = blocks_[p.block];
+    first = block.first_edge;
+    for (uint32_t k = block.first_part; k < s; ++k) first += index_.parts()[k].edge_count;
+    count = index_.parts()[s].edge_count;
+    return true;
+}
+
 void Scene::PartBox::add(const int32_t p[3]) {
     for (int k = 0; k < 3; ++k) {
         lo[k] = p[k] < lo[k] ? p[k] : lo[k];

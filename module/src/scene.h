@@ -104,6 +104,10 @@ public:
     // A part's box in its own coordinates (mesh units), from a blocked pack's index; false for
     // a whole pack (its parts' boxes are known once its edges are sampled).
     bool part_box(uint32_t part, int32_t lo[3], int32_t hi[3]) const;
+    // A part's edges in the model's numbering, each once, where they are known to be together:
+    // a blocked pack's part (its block's edges are its parts' in order), or a whole pack's only
+    // part. False otherwise.
+    bool part_edges(uint32_t part, uint32_t& first, uint32_t& count) const;
     Part part(uint32_t s) const;
     const pack::Face& face_record(uint32_t f) const {
         const Block& b = block_of_face(f);
