@@ -333,9 +333,16 @@ void Scene::bound_by_edges(uint32_t f) {
     info.rgb = colour_of(f);
     info.radius = 0;
     if (!any) return;
-    // As append() bounds the mesh: the box's centre, half its edges summed.
-    for (int i = 0; i < 3; ++i) info.centre[i] = int32_t((int64_t(lo[i]) + hi[i]) / 2);
-    info.radius = int32_t((int64_t(hi[0] - lo[0]) + (hi[1] - lo[1]) + (hi[2] - lo[2])) / 2 + 2);
+    // The sphere around the box (its centre, half its diagonal, rounded up): as tight as a
+    // sphere holding the box can be, so a face's size on the screen is not overstated (append()
+    // bounds a mesh by half the box's edges summed, which needs no root).
+    float r2 = 0;
+    for (int i = 0; i < 3; ++i) {
+        info.centre[i] = int32_t((int64_t(lo[i]) + hi[i]) / 2);
+        const float half = 0.5f * float(int64_t(hi[i]) - lo[i]) + 1.0f; // (the centre's rounding)
+        r2 += half * half;
+    }
+    info.radius = int32_t(std::sqrt(r2)) + 2;
 }
 
 void Scene::defer(uint32_t f) {
