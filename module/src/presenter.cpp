@@ -199,7 +199,8 @@ void Presenter::flush(uint32_t pass) {
     const render::RasterStats& s = raster_.stats;
     const uint32_t cost = job_.cost_us + (clock_() - piece_start_);
     if (job_.full) last_frame_us_ = cost;
-    e.frame = {s.triangles, s.culled, s.pixels, cost, job_.pieces, job_.finished, scene_.totals().faces, pass, job_.full, job_.boxes};
+    const uint32_t total = scene_.totals().faces, finished = job_.finished < total ? job_.finished : total;
+    e.frame = {s.triangles, s.culled, s.pixels, cost, job_.pieces, finished, total, pass, job_.full, job_.boxes};
     emit_(e);
     if (budget_us_ && cost > budget_us_) {
         Event b{};
@@ -256,7 +257,9 @@ void Presenter::run_piece(uint32_t units, uint32_t pass) {
     if (job_.stage == Job::Stage::Overlay) {
         StatusInfo s;
         s.name = scene_.model_name();
-        s.finished = job_.finished, s.total = scene_.totals().faces, s.triangles = scene_.totals().triangles;
+        // (A sweep's faces count again as they come in: the bar never shows more than all.)
+        s.total = scene_.totals().faces, s.finished = job_.finished < s.total ? job_.finished : s.total;
+        s.triangles = scene_.totals().triangles;
         s.frame_us = last_frame_us_, s.tolerance_mm = tolerance_mm_, s.mode = painter_.mode(), s.ortho = camera_.view().ortho;
         overlay_.draw(raster_.target(), s);
         job_.stage = Job::Stage::Flush;
