@@ -32,6 +32,8 @@ public:
     Command wheel(int16_t clicks) const;
     // A finger went down, moved or was lifted; up to two commands (a pinch pans and dollies).
     uint32_t touch(uint8_t id, int16_t x, int16_t y, bool down, Command out[2]);
+    // A drag under way: a mouse button held, or a finger down, past a tap's slop.
+    bool dragging() const { return (buttons_ && travel_ > kTapSlop) || (fingers_[0].down && fingers_[0].moved) || fingers_[1].down; }
 
 private:
     struct Finger {

@@ -136,6 +136,7 @@ Activity Core::step(uint32_t budget_us) {
             glide_step(); // the last frame is out: the next step of the glide
         } else if (frame) {
             presenter_.set_boxes(boxes_while_sampling());
+            presenter_.set_dragging(controls_.dragging());
             const Work w = presenter_.work();
             work(Event::Kind::WorkBegin, w, 0);
             presenter_.run(kFrameUnits, scheduler_.pass());
@@ -287,7 +288,9 @@ void Viewer::key(uint32_t k) {
 }
 void Viewer::pointer(int16_t dx, int16_t dy, uint8_t buttons) {
     Core& c = *static_cast<Core*>(this);
+    const bool dragging = c.controls().dragging();
     c.command(c.controls().pointer(dx, dy, buttons));
+    c.drag_ended(dragging);
 }
 void Viewer::wheel(int16_t clicks) {
     Core& c = *static_cast<Core*>(this);
@@ -296,8 +299,10 @@ void Viewer::wheel(int16_t clicks) {
 void Viewer::touch(uint8_t id, int16_t x, int16_t y, bool down) {
     Core& c = *static_cast<Core*>(this);
     module::Command out[2];
+    const bool dragging = c.controls().dragging();
     const uint32_t n = c.controls().touch(id, x, y, down, out);
     for (uint32_t i = 0; i < n; ++i) c.command(out[i]);
+    c.drag_ended(dragging);
 }
 void Viewer::act(Action a) { static_cast<Core*>(this)->act(a); }
 Stats Viewer::stats() const { return static_cast<const Core*>(this)->stats(); }

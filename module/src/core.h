@@ -41,6 +41,10 @@ public:
     static constexpr uint32_t kTessUnits = 160;
 
     module::Controls& controls() { return controls_; }
+    // The view rests after a drag: drawn again whole, with what a drag leaves out (its edges).
+    void drag_ended(bool was_dragging) {
+        if (was_dragging && !controls_.dragging()) presenter_.invalidate();
+    }
     // For tests of the parts behind the public API (the fitted view of every model).
     const module::Camera& camera() const { return camera_; }
     const module::Scene& scene() const { return scene_; }

@@ -256,6 +256,7 @@ uint32_t Painter::face_edges(uint32_t f, const Transform& t, Rows rows, bool onc
     // Its edges lie in its sphere; a plane facing away hides them unless a neighbour shows them.
     const FaceInfo& info = scene_.face(f);
     if (mode_ == DisplayMode::Shaded && info.state == FaceState::Done) return 0; // a face not in yet shows its edges
+    if (dragging_ && mode_ == DisplayMode::ShadedEdges && info.state == FaceState::Done) return 0; // back when the view rests
     if (!t.visible(info.centre, info.radius, rows)) return 0;
     if (t.cut.on && cut_away(t, info)) return 0;
     if (mode_ != DisplayMode::Wireframe && info.planar && info.vertex_count) {

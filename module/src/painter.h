@@ -25,6 +25,9 @@ public:
     void init(const Memory& memory);
     void set_edges(std::span<uint8_t> edge_drawn) { mem_.edge_drawn = edge_drawn; } // the model's (load)
     void set_mode(DisplayMode m) { mode_ = m; }
+    // While the view is dragged, shaded faces are drawn without their B-rep edges (a third of a
+    // frame's work): the edges come back when it rests. Wireframe and hidden line keep theirs.
+    void set_dragging(bool on) { dragging_ = on; }
     // Picked faces drawn in the highlight colour (face ~0u: none), and the instance being drawn.
     void set_highlight(uint32_t face0, uint32_t instance0, uint32_t face1, uint32_t instance1) {
         hl_[0] = {face0, instance0}, hl_[1] = {face1, instance1};
@@ -69,6 +72,7 @@ private:
     render::Rasterizer& raster_;
     Memory mem_{};
     uint32_t next_palette_ = 0; // the palette slot to reuse next
+    bool dragging_ = false;
     DisplayMode mode_ = DisplayMode::ShadedEdges;
     struct Highlight {
         uint32_t face = ~0u, instance = ~0u;

@@ -75,6 +75,7 @@ void Presenter::start(uint32_t finished) {
     job_.active = true;
     job_.buffer = b;
     job_.boxes = boxes_;
+    job_.dragging = dragging_;
     job_.full = boxes_ || !(incremental_ && buf_[b].version == version_);
     job_.version = version_;
     job_.finished = finished;
@@ -231,6 +232,7 @@ void Presenter::run_piece(uint32_t units, uint32_t pass) {
     take_done();
     if (job_.active && job_.version != version_) job_.active = false; // outdated: start over
     if (!job_.active) start(scene_.totals().finished());
+    painter_.set_dragging(job_.dragging); // (one frame, one look: its bands and pieces alike)
     if (job_.stage == Job::Stage::Begin) {
         if (!buffer_free(job_.buffer)) return;
         set_band();

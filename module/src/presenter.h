@@ -50,6 +50,8 @@ public:
     // Frames begun from now on draw each instance's part box alone (its edges are being
     // sampled: nothing else of it can be drawn yet), or the model.
     void set_boxes(bool boxes) { boxes_ = boxes; }
+    // Frames begun while the view is dragged are drawn lighter (Painter::set_dragging).
+    void set_dragging(bool on) { dragging_ = on; }
     void run_piece(uint32_t units, uint32_t pass);
     // The kind of the piece run() would do next.
     Work work() const;
@@ -62,7 +64,7 @@ public:
 
 private:
     struct Job {
-        bool active = false, full = false, boxes = false;
+        bool active = false, full = false, boxes = false, dragging = false;
         uint8_t buffer = 0;
         uint16_t band = 0;            // full frames: the band being drawn
         enum class Stage : uint8_t { Begin, Faces, Edges, Overlay, Flush } stage = Stage::Begin;
@@ -93,6 +95,7 @@ private:
     uint8_t buffers_ = 1;
     bool incremental_ = false; // full frames with a depth buffer per draw buffer
     bool boxes_ = false;       // set_boxes()
+    bool dragging_ = false;    // set_dragging()
     uint16_t bands_ = 1;
 
     uint32_t version_ = 1;      // the picture's state: +1 whenever every buffer must be redrawn

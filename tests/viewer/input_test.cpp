@@ -215,3 +215,35 @@ TEST(Viewer, ThePartsListHidesShowsAndIsolatesByTouch) {
     EXPECT_FALSE(o.parts_open());
     EXPECT_EQ(app.screen(), both) << "everything as it was";
 }
+
+// While the view is dragged, shaded faces are drawn without their B-rep edges (coarser detail
+// while the view moves, issue 25); when it rests the frame is drawn again with them.
+TEST(Viewer, ADragDrawsTheFacesAloneAndTheEdgesComeBackWhenItRests) {
+    App app;
+    app.w = 320, app.h = 240, app.lines = 240;
+    ASSERT_TRUE(app.create().ok());
+    ASSERT_TRUE(app.load(polygon_and_triangle(24)).ok());
+    app.run();
+    ASSERT_EQ(app.v->display_mode(), DisplayMode::ShadedEdges);
+    auto edge_pixels = [&] {
+        uint32_t n = 0;
+        for (Rgb565 p : app.screen()) n += p == rgb565(28, 30, 38);
+        return n;
+    };
+    const uint32_t at_rest = edge_pixels();
+    EXPECT_GT(at_rest, 100u) << "the polygon's and the triangle's edges";
+    app.v->pointer(0, 0, 1); // the left button down, then moved: an orbit
+    for (int k = 0; k < 4; ++k) {
+        app.v->pointer(6, 0, 1);
+        app.run();
+    }
+    EXPECT_EQ(edge_pixels(), 0u) << "no edges while dragging";
+    app.v->pointer(0, 0, 0); // released: the view rests
+    app.run();
+    EXPECT_GT(edge_pixels(), 100u) << "the edges back at rest";
+    // A click (no motion past the tap's slop) is no drag: a pick, and the edges stay.
+    app.v->pointer(0, 0, 1);
+    app.v->pointer(0, 0, 0);
+    app.run();
+    EXPECT_GT(edge_pixels(), 100u);
+}
