@@ -99,7 +99,7 @@ private:
     static constexpr float kMinFacePixels = 2.0f;
     static bool wants_face(void* self, uint32_t face);
     // Each block's tolerance in a pass: Config::screen_error_px at its nearest point (detail.cpp).
-    static constexpr float kCoarsest = 16.0f;
+    static constexpr float kCoarsest = 4.0f;
     static float block_tolerance(void* self, uint32_t block, float pass_tolerance);
     void detail_view_changed(); // when the view moved since the faces were last judged: judged again
     bool judge_with_view();     // the spheres' view from the camera's, if it moved (true then)
