@@ -8,7 +8,7 @@ centre (six steps) and quit (tests/sessions/scale.session). One CSV row per boar
 
   board,kind,faces,pack_faces,step_bytes,pack_bytes,first_frame_instructions,first_view_instructions,
   frame_rest_instructions,frame_turning_max_instructions,frame_zoomed_instructions,
-  triangles,deferred_faces,peak_ram_bytes,note
+  frame_dragging_max_instructions,triangles,deferred_faces,peak_ram_bytes,note
 
   faces: the assembly's size as asked (its placed faces are a little over); pack_faces: the
   faces the pack holds (for instances, those of the parts once each);
@@ -17,7 +17,9 @@ centre (six steps) and quit (tests/sessions/scale.session). One CSV row per boar
   of a blocked pack while its edges are sampled, or the wireframe);
   first view: to the end of the first frame after the first pass (every face the view wants
   in); a frame at rest: the full frame at the fitted view once the faces are in; turning: the
-  largest frame while the view turns; zoomed: the frame once the zoomed view's faces are in.
+  largest frame while the view turns by keys; dragging: the largest frame while the mouse drags
+  it (a board with a mouse; the frames a drag draws lighter); zoomed: the frame once the zoomed
+  view's faces are in.
 
 The markdown table and a PNG plot (cost against faces, log-log) go beside the CSV. Exact guest
 instruction counts (the facet-icount plugin); 600 M = 1 s at 600 MHz. A run that fails says why
@@ -43,19 +45,20 @@ import protocol  # noqa: E402
 from viewer_test import WORK_REGIONS, first_view, peak_ram  # noqa: E402
 
 COLUMNS = ['board', 'kind', 'faces', 'pack_faces', 'step_bytes', 'pack_bytes', 'first_frame_instructions', 'first_view_instructions',
-           'frame_rest_instructions', 'frame_turning_max_instructions', 'frame_zoomed_instructions', 'triangles',
+           'frame_rest_instructions', 'frame_turning_max_instructions', 'frame_zoomed_instructions',
+           'frame_dragging_max_instructions', 'triangles',
            'deferred_faces', 'peak_ram_bytes', 'note']
-SESSION = protocol.read_session(protocol.session_path('scale'))
 
 
 def measure(uart, regions):
     """The run's figures from its log and regions: the first frame and view (as ./facet run
     budgets them), then the frames of each phase of the session, split by its screenshots."""
-    out = {'turning': []}
+    out = {'turning': [], 'dragging': []}
     out['first_frame'], out['first_view'] = first_view(uart, regions)
     pieces = []               # the pieces of the frame under way
-    phase = 'load'            # load, rest (after the first shot), turned, zoomed
+    phase = 'load'            # load, rest (after the first shot), turned, dragged, zoomed
     tessellated = False
+    since_turned, last = [], None  # frames after the 'turned' shot; the last frame's cost
     for r, region in protocol.with_regions(uart, regions):
         if region and r.words[0] in ('frame', 'update', 'overlay'):
             pieces.append(region['instructions'] or 0)
@@ -63,16 +66,20 @@ def measure(uart, regions):
             tessellated = True
         elif r.name == 'frame':
             n = int(dict(zip(r.words[0::2], r.words[1::2])).get('pieces', 1))
-            cost = sum(pieces[-n:]) if len(pieces) >= n else None
+            last = sum(pieces[-n:]) if len(pieces) >= n else None
             pieces = []
             if phase == 'load' and tessellated:
-                out['rest'] = cost
-            elif phase == 'rest' and cost is not None:
-                out['turning'].append(cost)
-            elif phase == 'turned':
-                out['zoomed'] = cost
+                out['rest'] = last
+            elif phase == 'rest' and last is not None:
+                out['turning'].append(last)
+            elif phase == 'turned' and last is not None:
+                since_turned.append(last)
         elif r.name in ('shot', 'dump') and r.words:  # a screenshot: over QMP, or a framebuffer the board wrote
-            phase = {'first': 'rest', 'turned': 'turned', 'zoomed': 'zoomed'}.get(r.words[0], phase)
+            if r.words[0] == 'dragged':
+                out['dragging'] = since_turned[:-1]  # (the last: the view at rest once the button is up)
+            elif r.words[0] == 'zoomed':
+                out['zoomed'] = last
+            phase = {'first': 'rest', 'turned': 'turned', 'dragged': 'dragged', 'zoomed': 'zoomed'}.get(r.words[0], phase)
     m = re.search(r'^viewer: \d+ faces \(\d+ failed, (\d+) too small', uart, re.M)
     if m:
         out['deferred'] = int(m.group(1))
@@ -95,7 +102,7 @@ def run_one(board_name, elf, fpk, out, timeout):
     size = os.path.getsize(fpk)
     if size > board['pack_bytes']:
         return row, [f'pack file {size:,} B > the board\'s pack region {board["pack_bytes"]:,} B']
-    sends = [x for s in SESSION for x in ('--send', s)]
+    sends = [x for s in protocol.read_session(protocol.session_path('scale'), board_name) for x in ('--send', s)]
     r = subprocess.run([sys.executable, os.path.join(ROOT, 'tools', 'qemu', 'run.py'), '--board', board_name,
                         '--elf', elf, '--out', out, '--load', f'{fpk}@{board["pack"]["address"]}', '--icount',
                         '--timeout', str(timeout), '--quiet'] + sends, capture_output=True, text=True)
@@ -117,6 +124,8 @@ def run_one(board_name, elf, fpk, out, timeout):
             row[col] = m[key]
     if m['turning']:
         row['frame_turning_max_instructions'] = max(m['turning'])
+    if m['dragging']:
+        row['frame_dragging_max_instructions'] = max(m['dragging'])
     peak = peak_ram(rep)
     if peak is not None:
         row['peak_ram_bytes'] = peak
@@ -128,14 +137,15 @@ def markdown(rows, date):
     lines = [f'Measured {date} by `./facet bench scale` (exact QEMU instruction counts, M = million instructions, '
              '600 M = 1 s at 600 MHz; the goals of issue 25: first view 1,200 M for 10 k faces, a frame at rest 20 M).',
              '', '| board | kind | faces | faces in the pack | pack KB | first frame M | first view M | frame at rest M | turning M '
-             '| zoomed M | triangles | deferred faces | peak RAM MiB | note |',
-             '|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|']
+             '| dragging M | zoomed M | triangles | deferred faces | peak RAM MiB | note |',
+             '|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|']
     for r in rows:
         peak = r.get('peak_ram_bytes')
         lines.append(f'| {r["board"]} | {r["kind"]} | {r.get("faces", "-")} | {r.get("pack_faces", "-")} | '
                      f'{r["pack_bytes"] // 1024 if r.get("pack_bytes") else "-"} | '
                      f'{m(r.get("first_frame_instructions"))} | {m(r.get("first_view_instructions"))} | '
                      f'{m(r.get("frame_rest_instructions"))} | {m(r.get("frame_turning_max_instructions"))} | '
+                     f'{m(r.get("frame_dragging_max_instructions"))} | '
                      f'{m(r.get("frame_zoomed_instructions"))} | {r.get("triangles", "-")} | '
                      f'{r.get("deferred_faces", "-")} | {f"{peak / (1 << 20):.2f}" if peak else "-"} | {r.get("note", "")} |')
     return '\n'.join(lines) + '\n'

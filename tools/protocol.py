@@ -133,7 +133,7 @@ def pointer_to(x, y):
     return entries
 
 
-QEMU_ENTRIES = ('keys', 'mouse', 'move')
+QEMU_ENTRIES = ('keys', 'mouse', 'move', 'press', 'release')
 SIM_ENTRIES = ('wheel', 'drag', 'pinch', 'tap', 'click')  # the simulator's own (tools/sim/session.h)
 
 
@@ -142,7 +142,9 @@ def read_session(path, board=None):
 
       keys TEXT            typed (C-style escapes: '!shot NAME\\n' asks for a screenshot)
       mouse DX DY [BUTTON] a drag with a button held (left, right, middle)
-      move DX DY           the pointer alone
+      move DX DY           the pointer alone (a drag when a button was pressed before)
+      press [BUTTON]       a mouse button down (left, right, middle), held until 'release'
+      release [BUTTON]     and up again
       point X Y            the pointer to screen pixel (X, Y) (moves from the corner)
       include NAME         tests/sessions/NAME.session's entries here
       screen WxH           the screen the pointer moves were written for

@@ -17,7 +17,8 @@ What it does:
     tests/sessions, by name or path; tools/protocol.py reads it), then the entries; each time the
     firmware prints '@idle' the next entry is sent: 'keys TEXT' types TEXT (escapes allowed),
     'mouse DX DY [BUTTON]' drags the PS/2 mouse over QMP (button left/right/middle held during
-    the move), 'move DX DY' moves it with no button held (docs/protocol.md);
+    the move), 'move DX DY' moves it, 'press [BUTTON]' and 'release [BUTTON]' hold a button over
+    the entries between them (a drag in steps, a frame at each) (docs/protocol.md);
   * runs the guest on a virtual clock, the board description's qemu.clock (-icount shift=0:
     the guest's timers count executed instructions, 1 ns each), so a firmware's clock is
     deterministic: its time-sliced steps repeatable, its frame times those of the 600 MHz
@@ -282,7 +283,15 @@ def main():
                         qmp.command('input-send-event', events=[press(False)])
                     except (OSError, RuntimeError, IndexError, ValueError) as e:
                         report['failures'].append(f'mouse {rest}: {e}')
-                elif kind == 'move':  # the pointer alone, no button held
+                elif kind in ('press', 'release'):  # a button held over the entries between (a drag in steps)
+                    try:
+                        if qmp is None:
+                            qmp = Qmp(qmp_path)
+                        qmp.command('input-send-event', events=[
+                            {'type': 'btn', 'data': {'down': kind == 'press', 'button': rest.strip() or 'left'}}])
+                    except (OSError, RuntimeError, ValueError) as e:
+                        report['failures'].append(f'{kind} {rest}: {e}')
+                elif kind == 'move':  # the pointer alone (a drag while a button is pressed)
                     p = rest.split()
                     try:
                         if qmp is None:
