@@ -45,9 +45,10 @@ bool Core::wants_face(void* self, uint32_t f) {
 }
 
 // A block's tolerance: the pass's (the default, or the bias the user chose) scaled by how far
-// the block lies: Config::screen_error_px (half a pixel) at its nearest point in the view the pass starts from (before
-// the first pass is framed: the whole model's sphere fitted), never finer than the pass's and
-// at most kCoarsest times it. A part near the eye gets the pass's own; a far one coarser.
+// the block lies: Config::screen_error_px (half a pixel) at its nearest point in the view the
+// pass starts from (before the first pass is framed: the whole model's sphere fitted), never
+// finer than the pass's and at most kCoarsest times it. A part near the eye gets the pass's
+// own; a far one coarser.
 float Core::block_tolerance(void* self, uint32_t b, float pass_tolerance) {
     Core& c = *static_cast<Core*>(self);
     if (c.default_tolerance_ <= 0 || !(c.config_.screen_error_px > 0)) return pass_tolerance;
