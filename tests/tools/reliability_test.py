@@ -248,6 +248,23 @@ def plate_of_many_holes_packs_with_progress():
     expect_exit(r, 0, r'1606 faces, 0 failed.*watertight 1 of 1', 'the 1,600-hole plate at the device capacity')
 
 
+def large_model_packs_with_deflate():
+    """A large model's LZMA blocks took 88 instructions a decoded byte on the ARM926 (issue 25):
+    facet-pack compresses a model over 1 MiB decoded with DEFLATE, a smaller one with LZMA, and
+    --lzma / --deflate choose; either form checks with the device's reader."""
+    d = work('large')
+    step = os.path.join(d, 'holes.step')
+    expect_exit(run([ARGS.stress, 'holes', '3025', step]), 0, None, 'making the 3,025-hole plate (55 x 55)')
+    fpk = os.path.join(d, 'holes.fpk')
+    r = run([ARGS.packer, step, '-o', fpk], timeout=600)
+    expect_exit(r, 0, r'\d+ bytes decoded, DEFLATE', 'packing a model over 1 MiB decoded')
+    expect_exit(run([ARGS.packer, '--check', fpk]), 0, None, 'checking the DEFLATE pack')
+    r = run([ARGS.packer, step, '-o', fpk, '--lzma'], timeout=600)
+    expect_exit(r, 0, r'\d+ bytes decoded, LZMA', 'packing it with --lzma')
+    r = run([ARGS.packer, os.path.join(ARGS.models, 'anc101.stp'), '-o', os.path.join(d, 'anc101.fpk')])
+    expect_exit(r, 0, r'\d+ bytes decoded, LZMA', 'packing a small model')
+
+
 # -- 5. budgets enforced by the exit code ------------------------------------------------
 
 def budget_report_exit_codes():
@@ -284,7 +301,8 @@ def screenshot_names_stay_in_the_folder():
 TESTS = [broken_step_files, mesh_of_a_directory, check_of_a_directory_or_a_device, writes_onto_a_full_disk, face_with_a_missing_surface,
          tolerance_must_be_a_positive_number, output_is_the_input, trailing_bytes_and_reserved_fields,
          coarse_and_fine_tolerances, lens_faces_at_coarse_tolerances, incomplete_mesh_exits_5, ndr_part01_reads,
-         plate_of_many_holes_packs_with_progress, budget_report_exit_codes, screenshot_names_stay_in_the_folder]
+         plate_of_many_holes_packs_with_progress, large_model_packs_with_deflate, budget_report_exit_codes,
+         screenshot_names_stay_in_the_folder]
 
 
 def main():
