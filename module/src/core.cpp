@@ -22,7 +22,7 @@ void Core::relay(void* self, const Event& e) {
         break;
     case Event::Kind::Tessellated: // the progress bar goes; the first pass's outline is final
         // (a cylinder's silhouette is no edge): framed again unless the user has moved the view
-        if (e.tessellated.pass == 0 && !c.user_moved_) c.fit_view(true);
+        if (e.tessellated.pass == 0 && !c.user_moved_) c.fit_view(true, true);
         c.presenter_.invalidate();
         break;
     default: break;

@@ -73,7 +73,9 @@ private:
     void pick(int16_t x, int16_t y);
     Event pick_at(int16_t x, int16_t y); // the Picked event of the face under (x, y)
     void view_changed();
-    void fit_view(bool keep_direction); // frame the placed model (from the default direction, or this one)
+    // Frame the placed model (from the default direction, or this one; from_here: starting from
+    // the view as it is, framed already for a nearly equal outline).
+    void fit_view(bool keep_direction, bool from_here = false);
     void bound(bool sampled);           // the placed model's bounds again, before it is framed
 
     Config config_;

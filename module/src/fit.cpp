@@ -53,12 +53,12 @@ bool Framer::run(const Scene& scene, Camera& camera, uint32_t units) {
             part_ = scene.part(instances[instance_].shell);
             face_ = part_.first_face, phase_ = 0, k_ = 0;
             uint32_t first = 0, count = 0;
-            by_edges_ = only_face_ == ~0u && scene.totals().done == 0 && !samples.count.empty() &&
-                        scene.part_edges(instances[instance_].shell, first, count);
+            by_edges_ = only_face_ == ~0u && !samples.count.empty() && scene.part_edges(instances[instance_].shell, first, count);
             edge_ = first, edge_end_ = first + count;
+            curved_only_ = false;
             budget = budget > 32 ? budget - 32 : 0;
         }
-        if (by_edges_) {
+        if (by_edges_ && !curved_only_) {
             while (edge_ < edge_end_ && budget > 0) {
                 const uint32_t n = samples.count[edge_], first = samples.first[edge_];
                 for (; k_ < n && budget > 0; ++k_, --budget) {
@@ -69,9 +69,12 @@ bool Framer::run(const Scene& scene, Camera& camera, uint32_t units) {
                 ++edge_, k_ = 0;
             }
             if (edge_ < edge_end_) continue;
-            ++instance_;
-            have_transform_ = false;
-            continue;
+            if (scene.totals().done == 0) { // no mesh yet: the edges are all there is
+                ++instance_;
+                have_transform_ = false;
+                continue;
+            }
+            curved_only_ = true, k_ = 0; // then the curved faces' meshes (their silhouettes)
         }
         const Part& sh = part_;
         if (face_ >= sh.first_face + sh.face_count) {
@@ -84,6 +87,22 @@ bool Framer::run(const Scene& scene, Camera& camera, uint32_t units) {
             continue;
         }
         const FaceInfo& F = scene.face(face_);
+        if (curved_only_) { // the edges are in: a curved face's mesh can reach past them, a plane's cannot
+            if (F.state == FaceState::Done && !F.planar && k_ == 0 && inside_outline(F)) {
+                ++face_; // its sphere projects inside the outline so far: so does its mesh
+                --budget;
+                continue;
+            }
+            if (F.state == FaceState::Done && !F.planar) {
+                for (; k_ < F.vertex_count && budget > 0; ++k_, --budget) {
+                    t_.project(scene.vertices()[F.first_vertex + k_].p, p);
+                    o_.add(p);
+                }
+                if (k_ < F.vertex_count) continue;
+            }
+            ++face_, k_ = 0;
+            continue;
+        }
         const Block& block = scene.block_of_face(face_);
         const auto loops = block.pack.loops();
         const auto coedges = block.pack.coedges();
@@ -119,6 +138,25 @@ bool Framer::run(const Scene& scene, Camera& camera, uint32_t units) {
         ++coedge_, k_ = 0;
     }
     return false;
+}
+
+// Whether the face's sphere projects wholly inside the outline found so far (which only grows
+// within a round), so no point of the face can widen it. Conservative: the box around the
+// sphere, each side over the depth that pushes it furthest out (parallel: the centre's depth),
+// with a pixel to spare; a sphere reaching the near plane is never inside.
+bool Framer::inside_outline(const FaceInfo& F) const {
+    if (F.radius <= 0 || o_.points == 0) return false;
+    int32_t x, y, d;
+    t_.to_view(F.centre, x, y, d);
+    const int64_t rv = ((int64_t(F.radius) * t_.k16) >> 16) + 2; // view units, rounded up
+    if (d - rv < t_.near) return false;
+    const int64_t nearest = t_.ortho ? t_.dist : d - rv, furthest = t_.ortho ? t_.dist : d + rv;
+    const int64_t f = t_.f16, pad = render::subpixel::kPerPixel;
+    auto screen = [&](int64_t v) { return v * f / (v >= 0 ? nearest : furthest); }; // the outer bound of v / depth
+    auto screen_in = [&](int64_t v) { return v * f / (v >= 0 ? furthest : nearest); }; // the inner bound
+    const int64_t right = t_.cx16 + screen(x + rv), left = t_.cx16 + screen_in(x - rv);
+    const int64_t top = t_.cy16 - screen(y + rv), bottom = t_.cy16 - screen_in(y - rv);
+    return left - pad >= o_.left && right + pad <= o_.right && top - pad >= o_.top && bottom + pad <= o_.bottom;
 }
 
 bool Framer::adjust(const Scene& scene, Camera& camera) {

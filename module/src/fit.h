@@ -39,6 +39,7 @@ public:
 
 private:
     bool adjust(const Scene& scene, Camera& camera); // a round's outline seen: true if it sits
+    bool inside_outline(const FaceInfo& F) const;   // its sphere cannot widen the outline so far
     bool busy_ = false;
     uint16_t width_ = 0, height_ = 0;
     FreeArea taken_;
@@ -49,9 +50,10 @@ private:
     // loops' coedges' samples (phase 1).
     uint32_t instance_ = 0, face_ = 0, loop_ = 0, coedge_ = 0, k_ = 0;
     uint8_t phase_ = 0;
-    // Before any face is in, an instance's outline is its part's edges: each once (a face's
-    // loops would give each edge twice), when the part's edges are known to be together.
-    bool by_edges_ = false;
+    // Where a part's edges are known to be together, an instance's outline is its part's edges,
+    // each once (a face's loops would give each edge twice), then the meshes of its curved faces
+    // that are in (a cylinder's silhouette is no edge; a plane's mesh is its loops' samples).
+    bool by_edges_ = false, curved_only_ = false;
     uint32_t edge_ = 0, edge_end_ = 0;
     bool have_transform_ = false;
     Transform t_{};

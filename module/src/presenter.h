@@ -39,7 +39,7 @@ public:
     void reset();        // a new model: nothing shown, nothing drawn
     void invalidate();   // every buffer must be drawn whole again (view, level of detail)
 
-    static constexpr uint32_t kProgressFrames = 128; // frames filling in a model's faces, at most
+    static constexpr uint32_t kProgressFrames = 32; // frames filling in a model's faces, at most
     // Whether the screen is behind the model (`finished` faces of `total` done or failed).
     bool wanted(uint32_t finished, uint32_t total) const;
     uint32_t shown_finished() const { return shown_finished_; }

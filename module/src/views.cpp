@@ -52,10 +52,12 @@ bool Core::glide_step() {
     return true;
 }
 
-void Core::fit_view(bool keep_direction) {
+void Core::fit_view(bool keep_direction, bool from_here) {
     const bool sampled = !scheduler_.sampling();
     bound(sampled);
-    if (keep_direction) {
+    if (from_here) {
+        // (the view framed already, from a nearly equal outline: fewer rounds from it)
+    } else if (keep_direction) {
         camera_.reframe();
     } else {
         camera_.fit();
