@@ -21,7 +21,6 @@ measured and a note saying why, in the markdown and on stderr: never a silent ga
 import argparse
 import concurrent.futures
 import csv
-import json
 import os
 import re
 import subprocess
@@ -33,6 +32,7 @@ sys.path.insert(0, os.path.join(ROOT, 'tests', 'qemu'))
 import board as boards  # noqa: E402
 import protocol  # noqa: E402
 from viewer_test import analyse, peak_ram, unpack_instructions  # noqa: E402
+from boot import boot, exit_note, last_error  # noqa: E402  (bench/boot.py: the benches' one run)
 
 COLUMNS = ['board', 'model', 'faces', 'triangles', 'inflate_instructions', 'tessellation_instructions',
            'max_face_instructions', 'max_frame_instructions', 'peak_ram_bytes']
@@ -56,9 +56,7 @@ def face_instructions(uart, regions):
 
 def pack(packer, model, fpk):
     r = subprocess.run([packer, model, '-o', fpk, '--quiet'], capture_output=True, text=True)
-    if r.returncode != 0:
-        return (r.stderr.strip().splitlines() or [f'exit {r.returncode}'])[-1]
-    return None
+    return last_error(r) if r.returncode != 0 else None
 
 
 def run_one(board_name, elf, fpk, out, timeout):
@@ -66,20 +64,11 @@ def run_one(board_name, elf, fpk, out, timeout):
     name = os.path.basename(out)
     row = {'board': board_name, 'model': name}
     notes = []
-    size = os.path.getsize(fpk)
-    if size > board['pack_bytes']:
-        return row, [f'pack file {size:,} B > the board\'s pack region {board["pack_bytes"]:,} B']
-    sends = [x for s in SESSION for x in ('--send', s)]
-    r = subprocess.run([sys.executable, os.path.join(ROOT, 'tools', 'qemu', 'run.py'), '--board', board_name,
-                        '--elf', elf, '--out', out, '--load', f'{fpk}@{board["pack"]["address"]}', '--icount',
-                        '--timeout', str(timeout), '--quiet'] + sends, capture_output=True, text=True)
-    rep_path = os.path.join(out, 'report.json')
-    if not os.path.exists(rep_path):
-        return row, [f'the runner wrote no report (exit {r.returncode})']
-    rep = json.load(open(rep_path))
-    uart = open(os.path.join(out, 'uart.log'), errors='replace').read()
-    if r.returncode != 0:
-        notes.append(f'exit {r.returncode}' + (' (timeout)' if r.returncode == 124 else ''))
+    rep, uart, code = boot(board, elf, fpk, out, SESSION, timeout)
+    if rep is None:
+        return row, [code]
+    if code != 0:
+        notes.append(exit_note(code))
     bad = re.search(r'^viewer: no valid pack: (.*)$', uart, re.M)
     if bad:
         notes.append(bad.group(1))

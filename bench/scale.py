@@ -31,7 +31,6 @@ in the note; nothing is left out silently.
 """
 import argparse
 import csv
-import json
 import os
 import re
 import subprocess
@@ -42,7 +41,8 @@ sys.path.insert(0, os.path.join(ROOT, 'tools'))
 sys.path.insert(0, os.path.join(ROOT, 'tests', 'qemu'))
 import board as boards  # noqa: E402
 import protocol  # noqa: E402
-from viewer_test import WORK_REGIONS, first_view, peak_ram  # noqa: E402
+from viewer_test import first_view, peak_ram  # noqa: E402
+from boot import boot, exit_note, last_error  # noqa: E402  (bench/boot.py: the benches' one run)
 
 COLUMNS = ['board', 'kind', 'faces', 'pack_faces', 'step_bytes', 'pack_bytes', 'first_frame_instructions', 'first_view_instructions',
            'frame_rest_instructions', 'frame_turning_max_instructions', 'frame_zoomed_instructions',
@@ -91,31 +91,20 @@ def measure(uart, regions):
 
 def make(tool, args, what):
     r = subprocess.run(tool + args, capture_output=True, text=True)
-    if r.returncode != 0:
-        return f'{what}: ' + ((r.stderr.strip().splitlines() or [f'exit {r.returncode}'])[-1])
-    return None
+    return f'{what}: {last_error(r)}' if r.returncode != 0 else None
 
 
 def run_one(board_name, elf, fpk, out, timeout):
     board = boards.load(board_name)
     row, notes = {}, []
-    size = os.path.getsize(fpk)
-    if size > board['pack_bytes']:
-        return row, [f'pack file {size:,} B > the board\'s pack region {board["pack_bytes"]:,} B']
-    sends = [x for s in protocol.read_session(protocol.session_path('scale'), board_name) for x in ('--send', s)]
-    r = subprocess.run([sys.executable, os.path.join(ROOT, 'tools', 'qemu', 'run.py'), '--board', board_name,
-                        '--elf', elf, '--out', out, '--load', f'{fpk}@{board["pack"]["address"]}', '--icount',
-                        '--timeout', str(timeout), '--quiet'] + sends, capture_output=True, text=True)
-    rep_path = os.path.join(out, 'report.json')
-    if not os.path.exists(rep_path):
-        return row, [f'the runner wrote no report (exit {r.returncode})']
-    rep = json.load(open(rep_path))
-    uart = open(os.path.join(out, 'uart.log'), errors='replace').read()
+    rep, uart, code = boot(board, elf, fpk, out, protocol.read_session(protocol.session_path('scale'), board_name), timeout)
+    if rep is None:
+        return row, [code]
     bad = re.search(r'^viewer: no valid pack: (.*)$', uart, re.M)
     if bad:
         notes.append(bad.group(1))
-    elif r.returncode != 0:
-        notes.append(f'exit {r.returncode}' + (' (timeout)' if r.returncode == 124 else ''))
+    elif code != 0:
+        notes.append(exit_note(code))
     m = measure(uart, rep.get('regions', []))
     for key, col in (('first_frame', 'first_frame_instructions'), ('first_view', 'first_view_instructions'),
                      ('rest', 'frame_rest_instructions'), ('zoomed', 'frame_zoomed_instructions'),

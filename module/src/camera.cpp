@@ -169,11 +169,16 @@ SphereView Camera::sphere_view(const Scene& scene, uint16_t width, uint16_t heig
     return s;
 }
 
-float SphereView::pixels(const float p[3], float r) const {
+void SphereView::to_view(const float p[3], float& x, float& y, float& d) const {
     const float w[3] = {p[0] - centre[0], p[1] - centre[1], p[2] - centre[2]};
-    const float x = R[0] * w[0] + R[1] * w[1] + R[2] * w[2] + pan[0];
-    const float y = R[3] * w[0] + R[4] * w[1] + R[5] * w[2] + pan[1];
-    const float d = dist - (R[6] * w[0] + R[7] * w[1] + R[8] * w[2]);
+    x = R[0] * w[0] + R[1] * w[1] + R[2] * w[2] + pan[0];
+    y = R[3] * w[0] + R[4] * w[1] + R[5] * w[2] + pan[1];
+    d = dist - (R[6] * w[0] + R[7] * w[1] + R[8] * w[2]);
+}
+
+float SphereView::pixels(const float p[3], float r) const {
+    float x, y, d;
+    to_view(p, x, y, d);
     if (d + r < near) return 0;
     const float D = ortho ? dist : d, ax = x < 0 ? -x : x, ay = y < 0 ? -y : y;
     if (ax * focal - half_w * D > r * (focal + half_w) || ay * focal - half_h * D > r * (focal + half_h)) return 0;
@@ -184,9 +189,9 @@ float SphereView::pixels(const float p[3], float r) const {
 
 float SphereView::mm_per_pixel(const float p[3], float r) const {
     if (ortho) return dist / focal;
-    const float w[3] = {p[0] - centre[0], p[1] - centre[1], p[2] - centre[2]};
-    const float d = dist - (R[6] * w[0] + R[7] * w[1] + R[8] * w[2]) - r;
-    return (d > near ? d : near) / focal;
+    float x, y, d;
+    to_view(p, x, y, d);
+    return (d - r > near ? d - r : near) / focal;
 }
 
 // Each side test is conservative: the sphere's distance to a side plane is compared with its

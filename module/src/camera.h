@@ -132,6 +132,8 @@ struct SphereView {
     float pixels(const float p[3], float r) const;
     // Millimetres a pixel spans at the sphere's nearest point (the eye's plane at its depth).
     float mm_per_pixel(const float p[3], float r) const;
+    // A placed point (mm) in view space: x right, y up, d its depth in front of the eye.
+    void to_view(const float p[3], float& x, float& y, float& d) const;
 };
 
 // The view: orbit angles (rad), dolly factor (1 = the sphere fitted), pan (mm, in view x/y),

@@ -103,8 +103,7 @@ bool Core::frame_wanted() const {
 // While the first pass samples the edges of a blocked pack, its parts' boxes (the index's) are
 // drawn: the model's layout on the screen right after load, turned and zoomed as the user likes.
 bool Core::boxes_while_sampling() const {
-    int32_t lo[3], hi[3];
-    return scheduler_.sampling() && scheduler_.pass() == 0 && scene_.part_count() > 0 && scene_.part_box(0, lo, hi);
+    return scheduler_.sampling() && scheduler_.pass() == 0 && scene_.blocked();
 }
 
 Activity Core::step(uint32_t budget_us) {

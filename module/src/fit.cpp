@@ -93,13 +93,7 @@ bool Framer::run(const Scene& scene, Camera& camera, uint32_t units) {
                 --budget;
                 continue;
             }
-            if (F.state == FaceState::Done && !F.planar) {
-                for (; k_ < F.vertex_count && budget > 0; ++k_, --budget) {
-                    t_.project(scene.vertices()[F.first_vertex + k_].p, p);
-                    o_.add(p);
-                }
-                if (k_ < F.vertex_count) continue;
-            }
+            if (F.state == FaceState::Done && !F.planar && !project_mesh(scene, F, budget)) continue;
             ++face_, k_ = 0;
             continue;
         }
@@ -109,11 +103,7 @@ bool Framer::run(const Scene& scene, Camera& camera, uint32_t units) {
         const pack::Face& PF = block.pack.faces()[face_ - block.first_face];
         if (phase_ == 0) { // the face's mesh (its loops' samples among its vertices)
             if (F.state == FaceState::Done) {
-                for (; k_ < F.vertex_count && budget > 0; ++k_, --budget) {
-                    t_.project(scene.vertices()[F.first_vertex + k_].p, p);
-                    o_.add(p);
-                }
-                if (k_ < F.vertex_count) continue;
+                if (!project_mesh(scene, F, budget)) continue;
                 ++face_, k_ = 0;
                 continue;
             }
@@ -138,6 +128,16 @@ bool Framer::run(const Scene& scene, Camera& camera, uint32_t units) {
         ++coedge_, k_ = 0;
     }
     return false;
+}
+
+// The face's vertices from k_ on, while the budget lasts: true when all are in the outline.
+bool Framer::project_mesh(const Scene& scene, const FaceInfo& F, uint32_t& budget) {
+    Projected p;
+    for (; k_ < F.vertex_count && budget > 0; ++k_, --budget) {
+        t_.project(scene.vertices()[F.first_vertex + k_].p, p);
+        o_.add(p);
+    }
+    return k_ == F.vertex_count;
 }
 
 // Whether the face's sphere projects wholly inside the outline found so far (which only grows

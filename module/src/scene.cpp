@@ -149,7 +149,7 @@ bool Scene::part_edges(uint32_t s, uint32_t& first, uint32_t& count) const {
     return true;
 }
 
-void Scene::PartBox::add(const int32_t p[3]) {
+void Scene::Box::add(const int32_t p[3]) {
     for (int k = 0; k < 3; ++k) {
         lo[k] = p[k] < lo[k] ? p[k] : lo[k];
         hi[k] = p[k] > hi[k] ? p[k] : hi[k];
@@ -180,7 +180,7 @@ bool Scene::bound(uint32_t points) {
         const Part part = this->part(b.part);
         const Block& block = blocks_[part.block];
         const geom::Pack& pack = block.pack;
-        if (b.face == 0) b.face = part.first_face, b.box = {};
+        if (!b.in_part) b.face = part.first_face, b.box = {}, b.in_part = true;
         for (; b.face < part.first_face + part.face_count; ++b.face) {
             if (points == 0) return false;
             const FaceInfo& info = mem_.faces[b.face];
@@ -212,7 +212,7 @@ bool Scene::bound(uint32_t points) {
                 }
             }
         }
-        const PartBox& box = b.box;
+        const Box& box = b.box;
         if (!box.empty()) {
             for (uint32_t i = 0; i < instances_.size(); ++i) {
                 const pack::Instance& inst = instances_[i];
@@ -229,7 +229,7 @@ bool Scene::bound(uint32_t points) {
             }
             points = points > 8 ? points - 8 : 0;
         }
-        ++b.part, b.face = 0;
+        ++b.part, b.in_part = false;
     }
     b.active = false;
     const float *lo = b.lo, *hi = b.hi;
@@ -315,24 +315,20 @@ void Scene::bound_by_edges(uint32_t f) {
     const Block& block = block_of_face(f);
     const geom::Pack& pack = block.pack;
     const pack::Face& F = pack.faces()[f - block.first_face];
-    int32_t lo[3] = {INT32_MAX, INT32_MAX, INT32_MAX}, hi[3] = {INT32_MIN, INT32_MIN, INT32_MIN};
-    bool any = false;
+    Box box;
     for (uint32_t l = F.first_loop; l < F.first_loop + F.loop_count; ++l) {
         const pack::Loop& L = pack.loops()[l];
         for (uint32_t c = L.first_coedge; c < L.first_coedge + L.coedge_count; ++c) {
             const uint32_t e = block.first_edge + pack.coedges()[c].edge();
             const uint32_t first = mem_.samples.first[e], n = mem_.samples.count[e];
-            for (uint32_t k = 0; k < n; ++k) {
-                const int32_t* q = sample_q(first + k);
-                for (int i = 0; i < 3; ++i) lo[i] = q[i] < lo[i] ? q[i] : lo[i], hi[i] = q[i] > hi[i] ? q[i] : hi[i];
-            }
-            any = any || n > 0;
+            for (uint32_t k = 0; k < n; ++k) box.add(sample_q(first + k));
         }
     }
     FaceInfo& info = mem_.faces[f];
     info.rgb = colour_of(f);
     info.radius = 0;
-    if (!any) return;
+    if (box.empty()) return;
+    const int32_t *lo = box.lo, *hi = box.hi;
     // The sphere around the box (its centre, half its diagonal, rounded up): as tight as a
     // sphere holding the box can be, so a face's size on the screen is not overstated (append()
     // bounds a mesh by half the box's edges summed, which needs no root).

@@ -104,6 +104,7 @@ public:
     // A part's box in its own coordinates (mesh units), from a blocked pack's index; false for
     // a whole pack (its parts' boxes are known once its edges are sampled).
     bool part_box(uint32_t part, int32_t lo[3], int32_t hi[3]) const;
+    bool blocked() const { return blocked_; } // a blocked pack: its index has the parts' boxes
     // A part's edges in the model's numbering, each once, where they are known to be together:
     // a blocked pack's part (its block's edges are its parts' in order), or a whole pack's only
     // part. False otherwise.
@@ -202,15 +203,15 @@ private:
     bool loaded_ = false;
     float unit_ = 1, centre_[3] = {0, 0, 0}, radius_ = 1, own_radius_ = 1;
     Totals totals_;
-    struct PartBox { // a part's box in its own coordinates (mesh units)
+    struct Box { // a part's or a face's box in its own coordinates (mesh units)
         int32_t lo[3] = {INT32_MAX, INT32_MAX, INT32_MAX}, hi[3] = {INT32_MIN, INT32_MIN, INT32_MIN};
         bool empty() const { return lo[0] > hi[0]; }
         void add(const int32_t p[3]);
     };
     struct Bounds { // where start_bounds()/bound() stand
-        bool active = false, sampled = false;
+        bool active = false, sampled = false, in_part = false;
         uint32_t part = 0, face = 0;
-        PartBox box;
+        Box box;
         float lo[3], hi[3]; // the placed box so far (mm)
     } bounds_;
     uint32_t hidden_[kMaxHideable / 32] = {};
