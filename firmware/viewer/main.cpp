@@ -367,6 +367,6 @@ int facet_main(hal::Board& board) {
     print(con, "@memory pack_bytes {} pack_file_bytes {} storage_peak_bytes {}\n", t.pack_bytes, t.pack_file_bytes,
           t.workspace_peak_bytes);
     if (t.refused) print(con, "viewer: the rasterizer refused {} triangles or lines\n", t.refused);
-    print(con, "viewer: {} faces ({} failed, {} too small to tessellate yet), {} triangles; bye\n", t.faces, t.failed, t.deferred, t.triangles);
+    print(con, "viewer: {} faces ({} failed, {} not shown by the view yet), {} triangles; bye\n", t.faces, t.failed, t.deferred, t.triangles);
     return 0;
 }

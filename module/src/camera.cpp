@@ -10,6 +10,7 @@ namespace {
 
 constexpr float kViewPerDiagonal = 65536.0f; // 2^16: camera-space unit = diagonal / 2^16
 constexpr int32_t kRadiusV = 32768;          // the bounding sphere's radius in view units
+constexpr float kAwayMargin = 0.02f;          // about a degree: a plane nearer edge-on is not judged away
 
 inline int32_t round_to_int(float v) { return int32_t(v + (v >= 0 ? 0.5f : -0.5f)); }
 
@@ -185,6 +186,16 @@ float SphereView::pixels(const float p[3], float r) const {
     const float over = ortho ? dist : d - r;
     if (over < near) return 1e9f; // at the eye
     return 2 * r * focal / over;
+}
+
+bool SphereView::faces_away(const float p[3], const float n[3]) const {
+    float x, y, d;
+    to_view(p, x, y, d);
+    const float nx = R[0] * n[0] + R[1] * n[1] + R[2] * n[2], ny = R[3] * n[0] + R[4] * n[1] + R[5] * n[2];
+    const float nd = -(R[6] * n[0] + R[7] * n[1] + R[8] * n[2]);
+    if (ortho) return nd > kAwayMargin; // the eye far toward -d
+    const float reach = (x < 0 ? -x : x) + (y < 0 ? -y : y) + (d < 0 ? -d : d); // >= |eye - p|
+    return x * nx + y * ny + d * nd > kAwayMargin * reach;                     // the eye at view (0, 0, 0)
 }
 
 float SphereView::mm_per_pixel(const float p[3], float r) const {

@@ -134,6 +134,9 @@ struct SphereView {
     float mm_per_pixel(const float p[3], float r) const;
     // A placed point (mm) in view space: x right, y up, d its depth in front of the eye.
     void to_view(const float p[3], float& x, float& y, float& d) const;
+    // Whether the plane through the placed point p with the placed unit normal n turns its
+    // back to the eye by more than about a degree (n . (eye - p) < 0, as Transform::facing).
+    bool faces_away(const float p[3], const float n[3]) const;
 };
 
 // The view: orbit angles (rad), dolly factor (1 = the sphere fitted), pan (mm, in view x/y),

@@ -108,6 +108,7 @@ private:
     module::SphereView detail_{};
     module::View detail_view_{};
     float detail_radius_ = 0;
+    bool detail_section_ = false; // a section was on: every back face may show
     static constexpr uint32_t kDetailInstances = 8; // a part's instances kept for the next of its faces
     uint32_t detail_part_ = ~0u, detail_count_ = 0, detail_instances_[kDetailInstances] = {};
     uint32_t pack_bytes_ = 0, pack_file_bytes_ = 0;

@@ -1,9 +1,10 @@
 // The level of detail the view asks for: which faces are worth their triangles now.
 //
 // A face is tessellated when some instance of its part shows it at least kMinFacePixels across
-// (its sphere, bounded by its edges' samples, at its nearest point) and on the screen; the rest
-// are deferred (FaceState::Deferred): drawn by their edges, and judged again once the view
-// changes (the scheduler's sweep), so zooming in brings in what grew.
+// (its sphere, bounded by its edges' samples, at its nearest point), on the screen, and (a
+// closed part's plane, no section on) facing the eye; the rest are deferred
+// (FaceState::Deferred): drawn by their edges, and judged again once the view changes (the
+// scheduler's sweep), so zooming in brings in what grew and turning what came round.
 #include "core.h"
 
 #include <cmath>
@@ -14,7 +15,7 @@ bool Core::wants_face(void* self, uint32_t f) {
     Core& c = *static_cast<Core*>(self);
     const module::Scene& scene = c.scene_;
     const module::FaceInfo& F = scene.face(f);
-    if (F.radius <= 0) return true; // nothing to bound it by
+    if (F.radius <= 0 || !(c.config_.screen_error_px > 0)) return true; // nothing to bound it by; or the view chooses no detail
     c.judge_with_view();
     const uint32_t part = scene.shell_of(f);
     const auto instances = scene.instances();
@@ -28,10 +29,21 @@ bool Core::wants_face(void* self, uint32_t f) {
     }
     const float u = scene.unit();
     const float p[3] = {float(F.centre[0]) * u, float(F.centre[1]) * u, float(F.centre[2]) * u}, r = float(F.radius) * u;
+    // A closed part's plane turned away from the eye shows nothing, face nor edges, unless a
+    // section opens the solid (Transform::hides_plane): left for when the view turns it round.
+    float on_plane[3], normal[3];
+    const bool plane = !c.detail_section_ && scene.part(part).closed && scene.face_plane(f, on_plane, normal);
+    auto placed = [](const float* m, const float q[3], float w[3], float move) {
+        for (int k = 0; k < 3; ++k) w[k] = m[4 * k] * q[0] + m[4 * k + 1] * q[1] + m[4 * k + 2] * q[2] + move * m[4 * k + 3];
+    };
     auto shows = [&](const pack::Instance& inst) {
-        const float* m = inst.m;
-        const float w[3] = {m[0] * p[0] + m[1] * p[1] + m[2] * p[2] + m[3], m[4] * p[0] + m[5] * p[1] + m[6] * p[2] + m[7],
-                            m[8] * p[0] + m[9] * p[1] + m[10] * p[2] + m[11]};
+        float w[3];
+        if (plane) {
+            float wn[3];
+            placed(inst.m, on_plane, w, 1), placed(inst.m, normal, wn, 0);
+            if (c.detail_.faces_away(w, wn)) return false;
+        }
+        placed(inst.m, p, w, 1);
         return c.detail_.pixels(w, r) >= kMinFacePixels;
     };
     if (c.detail_count_ <= kDetailInstances) {
@@ -67,9 +79,10 @@ float Core::block_tolerance(void* self, uint32_t b, float pass_tolerance) {
 }
 
 bool Core::judge_with_view() {
-    if (detail_radius_ == scene_.radius() && module::same_view(camera_.view(), detail_view_)) return false;
+    const bool section = camera_.section().on;
+    if (detail_radius_ == scene_.radius() && section == detail_section_ && module::same_view(camera_.view(), detail_view_)) return false;
     detail_ = camera_.sphere_view(scene_, config_.display.width, config_.display.height);
-    detail_view_ = camera_.view(), detail_radius_ = scene_.radius();
+    detail_view_ = camera_.view(), detail_radius_ = scene_.radius(), detail_section_ = section;
     return true;
 }
 

@@ -259,9 +259,13 @@ uint32_t Painter::face_edges(uint32_t f, const Transform& t, Rows rows, bool onc
     if (dragging_ && mode_ == DisplayMode::ShadedEdges && info.state == FaceState::Done) return 0; // back when the view rests
     if (!t.visible(info.centre, info.radius, rows)) return 0;
     if (t.cut.on && cut_away(t, info)) return 0;
-    if (mode_ != DisplayMode::Wireframe && info.planar && info.vertex_count) {
-        const DrawVertex& v = scene_.vertices()[info.first_vertex];
-        if (t.hides_plane(v.p, v.n)) return 0;
+    if (mode_ != DisplayMode::Wireframe && info.planar) {
+        if (info.vertex_count) {
+            const DrawVertex& v = scene_.vertices()[info.first_vertex];
+            if (t.hides_plane(v.p, v.n)) return 0;
+        } else if (waiting_plane_hidden(f, t)) {
+            return 0;
+        }
     }
     const Block& block = scene_.block_of_face(f);
     const geom::Pack& pack = block.pack;
@@ -282,6 +286,18 @@ uint32_t Painter::face_edges(uint32_t f, const Transform& t, Rows rows, bool onc
         }
     }
     return work;
+}
+
+// A plane not tessellated yet (deferred: turned away when the view was judged) has no mesh
+// normal: its surface's, and a point of its boundary.
+bool Painter::waiting_plane_hidden(uint32_t f, const Transform& t) const {
+    if (!t.closed || t.inside_shows()) return false;
+    float point[3], normal[3];
+    const int32_t* p = scene_.boundary_point(f);
+    if (!p || !scene_.face_plane(f, point, normal)) return false;
+    int16_t n[3];
+    for (int k = 0; k < 3; ++k) n[k] = int16_t(round_to_int(normal[k] * 16384.0f));
+    return t.hides_plane(p, n);
 }
 
 uint32_t Painter::part_box(uint32_t part, const Transform& t) {

@@ -62,6 +62,7 @@ private:
     void triangle(const Transform& t, const Projected& a, const Projected& b, const Projected& c, const render::Palette& pal,
                   render::Cull cull, const render::Palette* cap);
     uint32_t edge(uint32_t e, const Transform& t);
+    bool waiting_plane_hidden(uint32_t f, const Transform& t) const; // a deferred plane turned away
     uint32_t silhouette(const FaceInfo& F, const Transform& t); // hidden line: a curved face's outline; the work
 
     static bool cut_away(const Transform& t, const FaceInfo& F);

@@ -1,5 +1,6 @@
 #include "scene.h"
 
+#include "geom/params.h"
 
 #include <cmath>
 
@@ -108,6 +109,30 @@ Part Scene::part(uint32_t s) const {
 uint8_t Scene::surface_type(uint32_t f) const {
     const Block& b = block_of_face(f);
     return b.pack.surfaces()[b.pack.faces()[f - b.first_face].surface].type;
+}
+
+bool Scene::face_plane(uint32_t f, float point[3], float normal[3]) const {
+    const Block& b = block_of_face(f);
+    const pack::Face& F = b.pack.faces()[f - b.first_face];
+    const pack::Surface& S = b.pack.surfaces()[F.surface];
+    if (S.type != uint8_t(pack::SurfaceType::Plane)) return false;
+    const pack::Frame& frame = geom::params<pack::PlaneParams>(b.pack, S).frame;
+    const float sign = F.reversed ? -1.0f : 1.0f;
+    for (int k = 0; k < 3; ++k) point[k] = frame.origin[k], normal[k] = sign * frame.z[k];
+    return true;
+}
+
+const int32_t* Scene::boundary_point(uint32_t f) const {
+    const Block& b = block_of_face(f);
+    const pack::Face& F = b.pack.faces()[f - b.first_face];
+    for (uint32_t l = F.first_loop; l < F.first_loop + F.loop_count; ++l) {
+        const pack::Loop& L = b.pack.loops()[l];
+        for (uint32_t c = L.first_coedge; c < L.first_coedge + L.coedge_count; ++c) {
+            const uint32_t e = b.first_edge + b.pack.coedges()[c].edge();
+            if (mem_.samples.count[e] > 0) return sample_q(mem_.samples.first[e]);
+        }
+    }
+    return nullptr;
 }
 
 const char* Scene::part_name(uint32_t s) const {
@@ -326,6 +351,7 @@ void Scene::bound_by_edges(uint32_t f) {
     }
     FaceInfo& info = mem_.faces[f];
     info.rgb = colour_of(f);
+    info.planar = surface_type(f) == uint8_t(pack::SurfaceType::Plane);
     info.radius = 0;
     if (box.empty()) return;
     const int32_t *lo = box.lo, *hi = box.hi;

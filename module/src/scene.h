@@ -115,6 +115,12 @@ public:
         return b.pack.faces()[f - b.first_face];
     }
     uint8_t surface_type(uint32_t f) const; // pack::SurfaceType of the face's surface
+    // A plane face's plane in its part's coordinates (mm): a point and the unit normal out of
+    // the face (its surface's, turned when the face is reversed). False for other surfaces.
+    bool face_plane(uint32_t f, float point[3], float normal[3]) const;
+    // A point of the face's boundary (its first sampled edge's first sample, quantized as
+    // DrawVertex::p), or null before its edges are sampled.
+    const int32_t* boundary_point(uint32_t f) const;
     const char* model_name() const { return blocked_ ? index_.model_name() : blocks_[0].pack.model_name(); }
     const char* part_name(uint32_t s) const;
     const char* instance_name(uint32_t i) const { return blocked_ ? index_.instance_name(i) : blocks_[0].pack.instance_name(i); }

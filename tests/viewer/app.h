@@ -143,16 +143,27 @@ struct App {
 };
 
 // The screen box of one instance's faces (pixels), from the camera; face: one of them only.
+// A face not tessellated (a solid's plane turned away waits: detail.cpp) by its edges' samples.
 inline std::array<int, 4> box_of(const Core& core, uint32_t instance, uint16_t w, uint16_t h, uint32_t face = ~0u) {
-    const module::Transform t = core.camera().transform(core.scene(), instance, w, h);
+    const module::Scene& scene = core.scene();
+    const module::Transform t = core.camera().transform(scene, instance, w, h);
     int l = INT32_MAX, top = INT32_MAX, r = INT32_MIN, b = INT32_MIN;
+    auto add = [&](const int32_t q[3]) {
+        module::Projected p{};
+        t.project(q, p);
+        l = std::min(l, p.s.x / 16), r = std::max(r, p.s.x / 16), top = std::min(top, p.s.y / 16), b = std::max(b, p.s.y / 16);
+    };
     for (uint32_t f = 0; f < 6; ++f) {
         if (face != ~0u && f != face) continue;
-        const module::FaceInfo& F = core.scene().face(f);
-        for (uint32_t k = 0; k < F.vertex_count; ++k) {
-            module::Projected p{};
-            t.project(core.scene().vertices()[F.first_vertex + k].p, p);
-            l = std::min(l, p.s.x / 16), r = std::max(r, p.s.x / 16), top = std::min(top, p.s.y / 16), b = std::max(b, p.s.y / 16);
+        const module::FaceInfo& F = scene.face(f);
+        for (uint32_t k = 0; k < F.vertex_count; ++k) add(scene.vertices()[F.first_vertex + k].p);
+        if (F.vertex_count) continue;
+        const module::Block& block = scene.block_of_face(f);
+        const pack::Face& record = block.pack.faces()[f - block.first_face];
+        const pack::Loop& loop = block.pack.loops()[record.first_loop];
+        for (uint32_t c = loop.first_coedge; c < loop.first_coedge + loop.coedge_count; ++c) {
+            const uint32_t e = block.first_edge + block.pack.coedges()[c].edge();
+            for (uint32_t k = 0; k < scene.samples().count[e]; ++k) add(scene.sample_q(scene.samples().first[e] + k));
         }
     }
     return {l, top, r, b};

@@ -50,7 +50,28 @@ Extent boundary_extent(const Core& core, uint32_t face, uint16_t w, uint16_t h) 
     return x;
 }
 
-// At rest: every face in or deferred, and no deferred face two pixels across on the screen.
+// Whether the frames leave the face out whole in every instance of its part: a closed part's
+// plane turned away from the eye (Transform::hides_plane, at a point of its boundary).
+bool hidden_plane(const Core& core, uint32_t face, uint16_t w, uint16_t h) {
+    const module::Scene& scene = core.scene();
+    float point[3], normal[3];
+    const uint32_t part = scene.shell_of(face);
+    if (!scene.part(part).closed || !scene.face_plane(face, point, normal)) return false;
+    int16_t n[3];
+    for (int k = 0; k < 3; ++k) n[k] = int16_t(std::lround(normal[k] * 16384));
+    const module::Block& block = scene.block_of_face(face);
+    const pack::Face& F = block.pack.faces()[face - block.first_face];
+    const uint32_t e = block.first_edge + block.pack.coedges()[block.pack.loops()[F.first_loop].first_coedge].edge();
+    const int32_t* p = scene.sample_q(scene.samples().first[e]);
+    for (uint32_t i = 0; i < scene.instances().size(); ++i) {
+        if (scene.instances()[i].shell != part) continue;
+        if (!core.camera().transform(scene, i, w, h).hides_plane(p, n)) return false;
+    }
+    return true;
+}
+
+// At rest: every face in or deferred, and no deferred face two pixels across on the screen
+// unless the frames leave it out whole (a solid's plane turned away).
 void expect_deferred_only_small(const App& app, const char* when) {
     const Core& core = *static_cast<const Core*>(app.v);
     const Stats s = app.v->stats();
@@ -62,7 +83,7 @@ void expect_deferred_only_small(const App& app, const char* when) {
         if (state != module::FaceState::Deferred) continue;
         ++deferred;
         const Extent x = boundary_extent(core, f, app.w, app.h);
-        if (!x.on_screen) continue;
+        if (!x.on_screen || hidden_plane(core, f, app.w, app.h)) continue;
         // Two pixels, and the rounding of its two ends to sub-pixels by the projection.
         EXPECT_LE(x.width16, 32 + 2) << when << ": face " << f << " deferred";
         EXPECT_LE(x.height16, 32 + 2) << when << ": face " << f << " deferred";
@@ -137,4 +158,55 @@ TEST(Detail, ANewLevelOfDetailJudgesEveryFaceAgain) {
     expect_deferred_only_small(app, "a corner");
     EXPECT_GT(app.v->stats().done, s.done);
     EXPECT_GT(app.v->stats().deferred, 0u) << "the squares off the screen are not tessellated";
+}
+
+TEST(Detail, ASolidsPlanesTurnedAwayWaitUntilTheViewTurnsThemRound) {
+    // Two 100 mm cubes (one solid placed twice): from the fitted view, some of a cube's six
+    // planes turn their backs to the eye in both places. The frames leave those out whole, so
+    // they are not tessellated until the view turns them round, or a section opens the solid.
+    App app;
+    app.w = 320, app.h = 240, app.lines = 240;
+    ASSERT_TRUE(app.create().ok());
+    ASSERT_TRUE(app.load(two_blocks()).ok());
+    app.run();
+    const Core& core = *static_cast<const Core*>(app.v);
+    const Stats fitted = app.v->stats();
+    EXPECT_GT(fitted.deferred, 0u) << "planes turned away wait";
+    EXPECT_GE(fitted.done, 3u) << "a cube shows at least three of its faces at a time in a general view";
+    EXPECT_EQ(fitted.done + fitted.deferred, 6u);
+    for (uint32_t f = 0; f < 6; ++f) {
+        if (core.scene().face(f).state != module::FaceState::Deferred) continue;
+        EXPECT_TRUE(hidden_plane(core, f, app.w, app.h)) << "face " << f;
+    }
+    expect_deferred_only_small(app, "fitted");
+    const std::vector<Rgb565> before = app.screen();
+
+    // A section may show the solid's inside: every plane comes in. Off again, the same view
+    // draws the same pixels with every face in as it drew with the back planes waiting.
+    app.v->act(Action::Section);
+    app.run();
+    ASSERT_TRUE(core.camera().section().on);
+    EXPECT_EQ(app.v->stats().deferred, 0u) << "with a section on, no plane is judged hidden";
+    EXPECT_EQ(app.v->stats().done, 6u);
+    for (int k = 0; k < 8 && core.camera().section().on; ++k) app.v->act(Action::Section);
+    ASSERT_FALSE(core.camera().section().on);
+    app.run();
+    EXPECT_EQ(app.screen(), before) << "the planes that waited drew nothing";
+
+    // Anew, turned round: the planes the first view left waiting come in as they face the eye.
+    ASSERT_TRUE(app.load(two_blocks()).ok());
+    app.run();
+    std::vector<uint32_t> waiting;
+    for (uint32_t f = 0; f < 6; ++f)
+        if (core.scene().face(f).state == module::FaceState::Deferred) waiting.push_back(f);
+    ASSERT_FALSE(waiting.empty());
+    for (int k = 0; k < 24; ++k) {
+        app.v->act(Action::TurnLeft);
+        app.v->act(Action::TiltUp);
+        app.run();
+        expect_deferred_only_small(app, ("turn " + std::to_string(k)).c_str());
+    }
+    uint32_t came = 0;
+    for (uint32_t f : waiting) came += core.scene().face(f).state == module::FaceState::Done;
+    EXPECT_GT(came, 0u) << "turning brings the back planes round";
 }

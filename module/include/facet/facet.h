@@ -101,7 +101,7 @@ typedef struct {
     void *clock_user;
     uint32_t frame_budget_us, step_slack_us;
     int interface; /* facet's own on-screen interface (facet_config_init: 1) */
-    float screen_error_px; /* a far part's chordal error at rest (facet_config_init: 0.5); 0: one tolerance */
+    float screen_error_px; /* a far part's chordal error at rest (facet_config_init: 0.5); 0: every face, one tolerance */
 } facet_config;
 
 /* What step() left: more work (call again), a frame waiting for facet_flush_done(), nothing. */
@@ -117,7 +117,7 @@ typedef struct {
     uint32_t mesh_bytes, arena_peak_bytes, pack_bytes, pack_file_bytes, workspace_peak_bytes;
     float tolerance_mm;
     uint32_t refused;
-    uint32_t deferred; /* faces too small or off the screen to tessellate yet (drawn by their edges) */
+    uint32_t deferred; /* faces the view does not show yet: too small, off the screen, or a solid's back planes (drawn by their edges) */
 } facet_stats;
 
 /* Defaults: the default capacities, no callbacks, a step slack of 2 ms. */

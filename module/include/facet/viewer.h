@@ -120,7 +120,7 @@ struct Config {
     uint32_t (*now_us)(void* user) = nullptr; // optional clock (wraps): step budgets and costs in us;
     void* clock_user = nullptr;               // without one, step() does one piece of work per call
     uint32_t frame_budget_us = 0, step_slack_us = 2000; // BudgetExceeded past these (0: never)
-    float screen_error_px = 0.5f; // a far part's chordal error at rest, pixels; 0: every part at the model's tolerance
+    float screen_error_px = 0.5f; // a far part's chordal error at rest, pixels; 0: no view-dependent detail (every face, one tolerance)
     bool interface = true; // facet's own on-screen interface (status bar, toolbar, panels); false:
                            // the application draws its own and drives the viewer with act()
 };
@@ -170,7 +170,7 @@ struct KeyBindings { const KeyBinding* table; uint32_t count; };
 KeyBindings key_bindings(); // for a help screen: what each key does
 
 struct Stats {
-    uint32_t faces, done, failed, deferred, triangles, vertices, pass; // deferred: too small to tessellate yet
+    uint32_t faces, done, failed, deferred, triangles, vertices, pass; // deferred: not shown by the view yet
     uint32_t mesh_bytes, arena_peak_bytes, pack_bytes, pack_file_bytes, workspace_peak_bytes; // workspace: at its peak
     float tolerance_mm;
     uint32_t refused;              // triangles and lines the rasterizer refused: 0 (all are clipped first)
