@@ -148,8 +148,13 @@ Activity Core::step(uint32_t budget_us) {
             (void)scheduler_.run(kTessUnits); // busy: there was a piece to do
             // A sweep's faces show as they come (Presenter::wanted) and all at its end.
             if (sweeping && !scheduler_.sweeping() && scene_.totals().finished() != presenter_.shown_finished()) presenter_.invalidate();
+            // Meshes or samples moved (a cache compacted), or a block refined: the frames whole again.
+            if (scene_.moves() != seen_moves_ || scheduler_.refined() != seen_refined_) {
+                seen_moves_ = scene_.moves(), seen_refined_ = scheduler_.refined();
+                presenter_.invalidate();
+            }
             work(Event::Kind::WorkEnd, w, item);
-        } else {
+        } else if (mid_bands || !refine_for_view()) {
             break;
         }
         if (!config_.now_us || now() - t0 >= budget_us) break;
@@ -163,6 +168,9 @@ Activity Core::step(uint32_t budget_us) {
     }
     // What is left: work that can go on, or only a flush_done() that can free a buffer.
     const bool mid_bands = presenter_.drawing() && config_.display.band_lines < config_.display.height;
+    // Nothing else left: a block the view wants at another level is begun now, so that the
+    // next step has its work (a step without a clock is one piece of work).
+    if (!mid_bands && !frame_wanted() && !scheduler_.busy()) (void)refine_for_view();
     if ((frame_wanted() && presenter_.can_draw()) ||
         ((scheduler_.busy() || scene_.bounding() || framer_.busy() || glide_.phase != Glide::Phase::None) && !mid_bands)) {
         return Activity::Busy;

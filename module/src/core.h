@@ -103,6 +103,13 @@ private:
     // Each block's tolerance in a pass: Config::screen_error_px at its nearest point (detail.cpp).
     static constexpr float kCoarsest = 4.0f;
     static float block_tolerance(void* self, uint32_t block, float pass_tolerance);
+    // The tolerance the view asks of block b (mm): between pass_tolerance / finest and
+    // kCoarsest times it; on_screen (if given): whether its box shows.
+    float wanted_tolerance(uint32_t b, float pass_tolerance, float finest, bool* on_screen);
+    static constexpr float kFinest = 16.0f, kRefineStep = 2.0f;
+    bool refine_for_view(); // true when it started (or tried) a refinement (detail.cpp)
+    bool refine_check_ = false;
+    uint32_t seen_moves_ = 0, seen_refined_ = 0; // the scene's moves and refinements the frames know of
     void detail_view_changed(); // when the view moved since the faces were last judged: judged again
     bool judge_with_view();     // the spheres' view from the camera's, if it moved (true then)
     module::SphereView detail_{};

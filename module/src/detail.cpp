@@ -62,20 +62,51 @@ bool Core::wants_face(void* self, uint32_t f) {
 // finer than the pass's and at most kCoarsest times it. A part near the eye gets the pass's
 // own; a far one coarser.
 float Core::block_tolerance(void* self, uint32_t b, float pass_tolerance) {
-    Core& c = *static_cast<Core*>(self);
-    if (c.default_tolerance_ <= 0 || !(c.config_.screen_error_px > 0)) return pass_tolerance;
+    return static_cast<Core*>(self)->wanted_tolerance(b, pass_tolerance, 1, nullptr);
+}
+
+float Core::wanted_tolerance(uint32_t b, float pass_tolerance, float finest, bool* on_screen) {
+    if (on_screen) *on_screen = true;
+    if (default_tolerance_ <= 0 || !(config_.screen_error_px > 0)) return pass_tolerance;
     float lo[3], hi[3];
-    c.scene_.block_box(b, lo, hi);
+    scene_.block_box(b, lo, hi);
     if (!(lo[0] <= hi[0])) return pass_tolerance;
     float centre[3], r2 = 0;
     for (int k = 0; k < 3; ++k) centre[k] = 0.5f * (lo[k] + hi[k]), r2 += 0.25f * (hi[k] - lo[k]) * (hi[k] - lo[k]);
-    (void)c.judge_with_view();
-    const float mm_per_pixel = c.detail_.mm_per_pixel(centre, std::sqrt(r2));
-    const float bias = pass_tolerance / c.default_tolerance_;
-    float t = bias * c.config_.screen_error_px * mm_per_pixel;
-    if (t < pass_tolerance) t = pass_tolerance;
+    (void)judge_with_view();
+    const float r = std::sqrt(r2);
+    if (on_screen) *on_screen = detail_.pixels(centre, r) > 0;
+    const float bias = pass_tolerance / default_tolerance_;
+    float t = bias * config_.screen_error_px * detail_.mm_per_pixel(centre, r);
+    if (t < pass_tolerance / finest) t = pass_tolerance / finest;
     if (t > kCoarsest * pass_tolerance) t = kCoarsest * pass_tolerance;
     return t;
+}
+
+// When nothing else is under way and the view has changed: the block on the screen whose level
+// is furthest from what the view now asks for (kRefineStep times too coarse, or kCoarsest times
+// too fine) is tessellated again at that level, down to kFinest times finer than the pass (a
+// part zoomed into). One at a time, largest gap first; none while a finger drags the view.
+bool Core::refine_for_view() {
+    if (!refine_check_ || scheduler_.busy() || controls_.dragging() || scene_.bounding() || framer_.busy()) return false;
+    for (;;) { // (a block refused, for want of room, is passed over the next time round)
+        uint32_t best = ~0u;
+        float best_gap = 1, best_tolerance = 0;
+        for (uint32_t b = 0; b < scene_.block_count(); ++b) {
+            const module::Block& block = scene_.block(b);
+            if (!(block.tolerance > 0) || block.refused) continue;
+            bool on_screen = true;
+            const float want = wanted_tolerance(b, scheduler_.tolerance(), kFinest, &on_screen);
+            const float finer = block.tolerance / want, coarser = want / block.tolerance;
+            const float gap = finer >= kRefineStep && on_screen ? finer : coarser >= kCoarsest ? coarser : 0;
+            if (gap > best_gap) best = b, best_gap = gap, best_tolerance = want;
+        }
+        if (best == ~0u) {
+            refine_check_ = false;
+            return false;
+        }
+        if (scheduler_.begin_refine(best, best_tolerance)) return true;
+    }
 }
 
 bool Core::judge_with_view() {
@@ -87,7 +118,9 @@ bool Core::judge_with_view() {
 }
 
 void Core::detail_view_changed() {
-    if (scene_.totals().deferred > 0 && judge_with_view()) scheduler_.revisit();
+    if (!judge_with_view()) return;
+    refine_check_ = true;
+    if (scene_.totals().deferred > 0) scheduler_.revisit();
 }
 
 } // namespace facet

@@ -321,6 +321,7 @@ void Scene::reset_mesh(bool keep_peaks) {
     const Totals before = totals_;
     totals_ = {};
     totals_.faces = face_count();
+    vertex_top_ = triangle_top_ = 0;
     if (keep_peaks) {
         totals_.arena_peak_bytes = before.arena_peak_bytes;
         totals_.samples_peak = before.samples_peak, totals_.face_points_peak = before.face_points_peak;
@@ -361,7 +362,8 @@ void Scene::bound_by_edges(uint32_t f) {
     float r2 = 0;
     for (int i = 0; i < 3; ++i) {
         info.centre[i] = int32_t((int64_t(lo[i]) + hi[i]) / 2);
-        const float half = 0.5f * float(int64_t(hi[i]) - lo[i]) + 1.0f; // (the centre's rounding)
+        // (hi >= lo: the span fits 32 unsigned bits, and converts without the 64-bit routine)
+        const float half = 0.5f * float(uint32_t(hi[i]) - uint32_t(lo[i])) + 1.0f; // (the centre's rounding)
         r2 += half * half;
     }
     info.radius = int32_t(std::sqrt(r2)) + 2;
@@ -374,7 +376,7 @@ void Scene::defer(uint32_t f) {
 }
 
 Result Scene::append(uint32_t f, const geom::Mesh& fm, const geom::FaceStats& stats) {
-    const uint32_t v0 = totals_.vertices, i0 = totals_.triangles * 3;
+    const uint32_t v0 = vertex_top_, i0 = triangle_top_ * 3;
     if (v0 + fm.vertex_count > mem_.vertices.size() || i0 + fm.triangle_count * 3 > mem_.indices.size()) {
         return Result::fail(Status::Full, "the viewer's mesh is full (Capacity::mesh_vertices, mesh_triangles)");
     }
@@ -411,11 +413,13 @@ Result Scene::append(uint32_t f, const geom::Mesh& fm, const geom::FaceStats& st
         radius = int32_t((int64_t(hi[0] - lo[0]) + (hi[1] - lo[1]) + (hi[2] - lo[2])) / 2 + 2);
     }
     const bool planar = surface_type(f) == uint8_t(pack::SurfaceType::Plane);
-    if (mem_.faces[f].state == FaceState::Deferred) --totals_.deferred, ++totals_.undeferred;
-    mem_.faces[f] = {v0, fm.vertex_count, i0, fm.triangle_count, colour_of(f), {centre[0], centre[1], centre[2]}, radius,
-                     FaceState::Done, planar};
-    mem_.done_order[totals_.done++] = f;
+    FaceInfo& info = mem_.faces[f];
     Totals& t = totals_;
+    if (info.state == FaceState::Deferred) --t.deferred, ++t.undeferred;
+    if (info.state == FaceState::Done) t.vertices -= info.vertex_count, t.triangles -= info.triangle_count; // replaced
+    else mem_.done_order[t.done++] = f;
+    info = {v0, fm.vertex_count, i0, fm.triangle_count, colour_of(f), {centre[0], centre[1], centre[2]}, radius, FaceState::Done, planar};
+    vertex_top_ += fm.vertex_count, triangle_top_ += fm.triangle_count;
     t.vertices += fm.vertex_count;
     t.triangles += fm.triangle_count;
     t.mesh_bytes = t.vertices * uint32_t(sizeof(DrawVertex)) + t.triangles * 3 * uint32_t(sizeof(uint16_t));

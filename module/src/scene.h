@@ -10,6 +10,7 @@
 #include "geom/pack_index.h"
 #include "geom/tessellate.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <span>
 
@@ -45,6 +46,9 @@ struct Block {
     // Its level of detail (mm): the pass's, set as the pass reaches its first edge (0: not yet),
     // and the previous pass's. Its parts' edges and faces all take it: watertight per part.
     float tolerance = 0, previous_tolerance = 0;
+    // A refinement this pass could not make (no room for its samples or its mesh): not tried
+    // again until the next pass.
+    bool refused = false;
 };
 
 // A part (a shell): its faces in the model's numbering, and its block.
@@ -170,8 +174,28 @@ public:
 
     // A new pass: no face done, the samples' peak carried over.
     void reset_mesh(bool keep_peaks);
-    // Appends a tessellated face (its float mesh) to the drawing mesh. Full when the mesh is full.
+    // Appends a tessellated face (its float mesh) to the drawing mesh; a face already done (its
+    // block refined) gets the new mesh, and its old one is garbage until compact(). Full when the
+    // mesh is full.
     Result append(uint32_t face, const geom::Mesh& mesh, const geom::FaceStats& stats);
+
+    // The mesh and the samples as caches of fixed bytes (scene_cache.cpp). A done face left to
+    // its edges again (its mesh garbage): deferred, as a face the view does not want.
+    void evict(uint32_t face);
+    // The live meshes moved down over the garbage, in the order they lie (done_order becomes
+    // that order). False when there was none.
+    bool compact();
+    uint32_t mesh_garbage_vertices() const { return vertex_top_ - totals_.vertices; }
+    uint32_t mesh_room_vertices() const { return uint32_t(mem_.vertices.size()) - vertex_top_; }
+    uint32_t mesh_room_triangles() const { return uint32_t(mem_.indices.size() / 3) - triangle_top_; }
+    // The samples' pool: each block's samples lie together (a pass samples a block's edges one
+    // after the other, and so does a refinement, at the pool's end, leaving the old ones as
+    // garbage); moved down over the garbage, block after block. `scratch`: 3 words a block
+    // (false when it is short, or nothing moved).
+    bool compact_samples(std::span<uint32_t> scratch);
+    uint32_t samples_room() const { return uint32_t(std::min(mem_.samples.t.size(), mem_.samples.p.size())) - mem_.samples.used; }
+    // Counts every move of meshes or samples: frames drawn before one must be drawn whole again.
+    uint32_t moves() const { return moves_; }
     void mark_failed(uint32_t face);
     // A face not tessellated: its sphere from its edges' samples (radius 0 when it has none),
     // kept in its FaceInfo; then, if deferred, counted so until it is appended.
@@ -209,6 +233,8 @@ private:
     bool loaded_ = false;
     float unit_ = 1, centre_[3] = {0, 0, 0}, radius_ = 1, own_radius_ = 1;
     Totals totals_;
+    uint32_t vertex_top_ = 0, triangle_top_ = 0; // the mesh's storage in use, garbage included
+    uint32_t moves_ = 0;
     struct Box { // a part's or a face's box in its own coordinates (mesh units)
         int32_t lo[3] = {INT32_MAX, INT32_MAX, INT32_MAX}, hi[3] = {INT32_MIN, INT32_MIN, INT32_MIN};
         bool empty() const { return lo[0] > hi[0]; }

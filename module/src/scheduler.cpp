@@ -16,11 +16,12 @@ void Scheduler::begin_pass(float tolerance) {
     in_edge_ = false;
     face_ = 0;
     in_face_ = false;
+    refine_block_ = kNoBlock;
     sweep_ = revisit_ = false;
     scene_.samples().used = 0;
     for (uint32_t b = 0; b < scene_.block_count(); ++b) {
         Block& block = scene_.block(b);
-        block.previous_tolerance = block.tolerance, block.tolerance = 0;
+        block.previous_tolerance = block.tolerance, block.tolerance = 0, block.refused = false;
     }
     Event e{};
     e.kind = Event::Kind::Pass;
@@ -34,13 +35,13 @@ void Scheduler::set_level(Block& b) {
     b.tolerance = t > 0 ? t : opt_.tolerance;
 }
 
-geom::TessOptions Scheduler::options(const Block& b) const {
+geom::TessOptions Scheduler::options_at(float tolerance) const {
     geom::TessOptions o = opt_;
-    if (!(b.tolerance > opt_.tolerance)) return o;
-    o.tolerance = b.tolerance;
+    if (!(tolerance > opt_.tolerance)) return o;
+    o.tolerance = tolerance;
     // A far block's arcs turn more between samples, as its tolerance is coarser (a small hole
     // far off needs no seven sides), up to kMaxFarAngle.
-    o.max_angle = std::min(kMaxFarAngle, opt_.max_angle * std::sqrt(b.tolerance / opt_.tolerance));
+    o.max_angle = std::min(kMaxFarAngle, opt_.max_angle * std::sqrt(tolerance / opt_.tolerance));
     return o;
 }
 
@@ -48,6 +49,7 @@ bool Scheduler::run(uint32_t units) {
     switch (stage_) {
     case Stage::Idle: return false;
     case Stage::Sampling: sample(units); return true;
+    case Stage::Refining: refine_sample(units); return true;
     case Stage::Faces: break;
     }
     if (!in_face_) {
@@ -124,6 +126,7 @@ void Scheduler::sample(uint32_t units) {
     }
     scene_.reset_mesh(pass_ > 0);
     stage_ = scene_.face_count() ? Stage::Faces : Stage::Idle;
+    face_end_ = scene_.face_count();
     Event e{};
     e.kind = Event::Kind::Sampled;
     e.pass = {pass_, opt_.tolerance, s.used};
@@ -134,7 +137,7 @@ void Scheduler::revisit() {
     if (!started_ || stage_ == Stage::Sampling) return; // the pass's faces meet the view as it is then
     if (stage_ == Stage::Idle) {
         if (scene_.totals().deferred == 0) return;
-        stage_ = Stage::Faces, sweep_ = true, face_ = 0, in_face_ = false;
+        stage_ = Stage::Faces, sweep_ = true, face_ = 0, face_end_ = scene_.face_count(), in_face_ = false;
         return;
     }
     revisit_ = true;
@@ -144,12 +147,12 @@ void Scheduler::revisit() {
 // edges and deferred. True at a face to tessellate; false when this piece's checks are spent
 // or the faces are done.
 bool Scheduler::next_face() {
-    const uint32_t count = scene_.face_count();
-    for (uint32_t checked = 0; face_ < count; ++face_) {
+    for (uint32_t checked = 0; face_ < face_end_; ++face_) {
         const FaceState state = scene_.face(face_).state;
-        if (state == FaceState::Done || state == FaceState::Failed) continue;
-        if (state == FaceState::Pending) scene_.bound_by_edges(face_);
+        if (state == FaceState::Failed || (state == FaceState::Done && !refining())) continue;
+        if (state == FaceState::Pending || refining()) scene_.bound_by_edges(face_); // (a refined block's by its new samples)
         if (filter_(face_)) return true;
+        scene_.evict(face_); // (a refined block's face the view no longer wants: its old mesh would not meet the new ones)
         scene_.defer(face_);
         if (++checked >= kChecksPerPiece) {
             ++face_;
@@ -166,9 +169,17 @@ void Scheduler::finish_face(const Result& done) {
     if (r.ok() && fm.vertex_count > mem_.max_face_vertices) {
         r = Result::fail(Status::Full, "more vertices than the viewer projects per face (Capacity::face_points)", {"face", face_});
     }
-    if (r.ok()) r = scene_.append(face_, fm, job_.stats()).within({"face", face_});
+    if (r.ok()) {
+        r = scene_.append(face_, fm, job_.stats());
+        // The mesh full: what faces tessellated again left behind is moved out of the way first,
+        // then the meshes of faces the view no longer wants (off the screen, under two pixels).
+        if (r.status == Status::Full && scene_.compact()) r = scene_.append(face_, fm, job_.stats());
+        if (r.status == Status::Full && evict_unwanted() && scene_.compact()) r = scene_.append(face_, fm, job_.stats());
+        r = r.within({"face", face_});
+    }
     const Totals& t = scene_.totals();
     if (!r.ok()) {
+        scene_.evict(face_); // (a refined block's face: its old mesh would not meet its neighbours' new ones)
         scene_.mark_failed(face_);
         Event e{};
         e.kind = Event::Kind::FaceFailed;
@@ -181,7 +192,7 @@ void Scheduler::finish_face(const Result& done) {
     p.progress = {t.done, t.failed, t.faces, t.triangles};
     emit_(p);
     in_face_ = false;
-    if (++face_ < scene_.face_count()) return;
+    if (++face_ < face_end_) return;
     end_faces();
 }
 
@@ -189,15 +200,96 @@ void Scheduler::finish_face(const Result& done) {
 // meanwhile sends a sweep over the deferred faces.
 void Scheduler::end_faces() {
     const Totals& t = scene_.totals();
-    const bool was_sweep = sweep_;
+    const bool was_sweep = sweep_ || refining();
+    if (refining()) refine_block_ = kNoBlock, ++refined_;
     stage_ = Stage::Idle, sweep_ = false;
-    if (revisit_ && t.deferred > 0) stage_ = Stage::Faces, sweep_ = true, face_ = 0;
+    if (revisit_ && t.deferred > 0) stage_ = Stage::Faces, sweep_ = true, face_ = 0, face_end_ = scene_.face_count();
     revisit_ = false;
     if (was_sweep) return;
     Event e{};
     e.kind = Event::Kind::Tessellated;
     e.tessellated = {pass_, t.faces, t.failed, t.triangles, t.vertices, t.mesh_bytes, t.arena_peak_bytes, opt_.tolerance};
     emit_(e);
+}
+
+bool Scheduler::evict_unwanted() {
+    uint32_t evicted = 0;
+    for (uint32_t f = 0; f < scene_.face_count(); ++f) {
+        if (f == face_ || scene_.face(f).state != FaceState::Done || filter_(f)) continue;
+        scene_.evict(f);
+        ++evicted;
+    }
+    return evicted > 0;
+}
+
+bool Scheduler::begin_refine(uint32_t b, float tolerance) {
+    Block& block = scene_.block(b);
+    if (stage_ != Stage::Idle || !started_) return false;
+    if (block.refused || !(tolerance > 0) || tolerance == block.tolerance) {
+        block.refused = true;
+        return false;
+    }
+    const uint32_t edges = uint32_t(block.pack.edges().size());
+    const geom::EdgeSamples& s = scene_.samples();
+    // The new samples' room: arcs take samples as the root of the tolerance's ratio (their sag
+    // goes as the square of their steps), and a fifth more for the angle's limit.
+    uint32_t now = 0;
+    for (uint32_t e = block.first_edge; e < block.first_edge + edges; ++e) now += s.count[e];
+    const uint32_t need = uint32_t(float(now) * 1.2f * std::sqrt(block.tolerance / tolerance)) + 2 * edges;
+    std::span<uint32_t> words(reinterpret_cast<uint32_t*>(mem_.scratch.data()), mem_.scratch.size() / 4);
+    if (scene_.samples_room() < need) scene_.compact_samples(words);
+    if (scene_.samples_room() < need || size_t(edges) * 6 > mem_.scratch.size()) {
+        block.refused = true;
+        return false;
+    }
+    refine_view_ = s;
+    refine_view_.first = words.first(edges);
+    refine_view_.count = std::span<uint16_t>(reinterpret_cast<uint16_t*>(words.data() + edges), edges);
+    refine_block_ = b, refine_tolerance_ = tolerance, refine_from_ = s.used;
+    stage_ = Stage::Refining, next_edge_ = 0, in_edge_ = false;
+    return true;
+}
+
+// The refined block's edges, a few at a time, into the scratch's (first, count): the drawn
+// edges and the faces still use the old ones meanwhile.
+void Scheduler::refine_sample(uint32_t units) {
+    Block& b = scene_.block(refine_block_);
+    geom::EdgeSamples& s = scene_.samples();
+    const uint32_t edges = uint32_t(b.pack.edges().size()), work0 = s.work;
+    Result r;
+    for (uint32_t n = 0; next_edge_ < edges && s.work - work0 + n < units && r.ok(); ++n) {
+        if (!in_edge_) {
+            refine_view_.used = s.used, refine_view_.work = s.work;
+            sampler_.start(b.pack, options_at(refine_tolerance_), refine_view_, next_edge_);
+            s.used = refine_view_.used, s.work = refine_view_.work;
+            in_edge_ = true;
+        }
+        const uint32_t used = s.work - work0 + n;
+        refine_view_.used = s.used, refine_view_.work = s.work;
+        r = sampler_.run(used < units ? units - used : 0);
+        s.used = refine_view_.used, s.work = refine_view_.work;
+        if (r.status == Status::Busy) return;
+        in_edge_ = false;
+        if (r.ok()) ++next_edge_;
+    }
+    if (!r.ok()) { // the pool is full: the new samples dropped, the block as it was
+        s.used = refine_from_;
+        b.refused = true;
+        Event e{};
+        e.kind = Event::Kind::PassFailed;
+        e.pass = {pass_, refine_tolerance_, s.used};
+        e.why = r.within({"refining block", refine_block_});
+        emit_(e);
+        refine_block_ = kNoBlock, stage_ = Stage::Idle;
+        return;
+    }
+    if (next_edge_ < edges) return;
+    // Every new sample in: the block's edges take them, and its faces are tessellated again.
+    scene_.quantize_samples(refine_from_, s.used);
+    for (uint32_t e = 0; e < edges; ++e) s.first[b.first_edge + e] = refine_view_.first[e], s.count[b.first_edge + e] = refine_view_.count[e];
+    b.tolerance = refine_tolerance_;
+    stage_ = Stage::Faces, face_ = b.first_face, face_end_ = b.first_face + uint32_t(b.pack.faces().size()), in_face_ = false;
+    if (face_ == face_end_) end_faces();
 }
 
 } // namespace facet::module

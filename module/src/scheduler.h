@@ -37,6 +37,9 @@ public:
         geom::FaceStorage storage;      // one face's working memory (geom/face_storage.h)
         geom::Mesh face_mesh;           // one face's float output, before the scene quantizes it
         uint32_t max_face_vertices = 0; // the most a face may have (the painter projects them)
+        // The face storage's bytes, as scratch while no face is under way: a refined block's
+        // edges' new (first, count) until all are sampled, and the samples' compaction.
+        std::span<uint8_t> scratch;
     };
 
     Scheduler(Scene& scene, const Emitter& emit) : scene_(scene), emit_(emit) {}
@@ -50,6 +53,15 @@ public:
 
     // A pass at `tolerance` (mm): nothing of the previous one is kept but the peaks.
     void begin_pass(float tolerance);
+    // Block b again at `tolerance` (mm, finer than its own), while nothing else is under way:
+    // its edges sampled at the pool's end (their old samples stay theirs until every new one is
+    // in: a pool too full leaves the block as it was, and says so), then its faces tessellated
+    // again, each replacing its mesh, or left to their edges where the view no longer wants
+    // them. Each part stays at one level, as in a pass, but for the moments its faces are
+    // swapped. False when it cannot start (busy; no room to try); Block::refused then says so.
+    bool begin_refine(uint32_t b, float tolerance);
+    bool refining() const { return refine_block_ != kNoBlock; }
+    uint32_t refined() const { return refined_; } // refinements finished
     void stop() { stage_ = Stage::Idle, started_ = false; }
 
     bool busy() const { return stage_ != Stage::Idle; }
@@ -57,15 +69,18 @@ public:
     bool sampling() const { return stage_ == Stage::Sampling; } // no edge may be drawn meanwhile
     uint32_t pass() const { return pass_; }
     float tolerance() const { return opt_.tolerance; }
-    Work work() const { return stage_ == Stage::Sampling ? Work::Sampling : Work::Face; }
-    uint32_t item() const { return stage_ == Stage::Sampling ? next_edge_ : face_; }
+    Work work() const { return stage_ == Stage::Sampling || stage_ == Stage::Refining ? Work::Sampling : Work::Face; }
+    uint32_t item() const { return stage_ == Stage::Sampling || stage_ == Stage::Refining ? next_edge_ : face_; }
 
     // One piece: about `units` of work (geom::FaceJob's units). False when there was none.
     bool run(uint32_t units);
 
 private:
-    enum class Stage : uint8_t { Idle, Sampling, Faces };
+    enum class Stage : uint8_t { Idle, Sampling, Faces, Refining };
     void sample(uint32_t units);
+    void refine_sample(uint32_t units);
+    bool evict_unwanted(); // the meshes of done faces the view does not want now (true: some)
+    static constexpr uint32_t kNoBlock = ~0u;
     bool next_face(); // past faces not to tessellate now; false when the piece is spent on them
     void finish_face(const Result& r);
     void end_faces();
@@ -78,7 +93,8 @@ private:
     FaceFilter filter_;
     BlockTolerance block_tolerance_;
     void set_level(Block& b);                         // its tolerance in this pass, when it has none yet
-    geom::TessOptions options(const Block& b) const; // the pass's options at the block's level
+    geom::TessOptions options(const Block& b) const { return options_at(b.tolerance); } // the pass's at the block's level
+    geom::TessOptions options_at(float tolerance) const;
     geom::TessOptions opt_;
     Stage stage_ = Stage::Idle;
     uint32_t pass_ = 0;        // 0: the first tessellation; +1 per level-of-detail change
@@ -91,7 +107,13 @@ private:
     geom::EdgeSamples view_;   // the pool as the block of the edge or face under way numbers its edges
     geom::EdgeSampler sampler_;
     uint32_t face_ = 0;        // the face being tessellated
+    uint32_t face_end_ = 0;    // past the faces of this pass, sweep or refinement
     bool in_face_ = false;
+    uint32_t refine_block_ = kNoBlock; // the block being refined
+    float refine_tolerance_ = 0;
+    uint32_t refine_from_ = 0;         // its new samples' first in the pool
+    uint32_t refined_ = 0;
+    geom::EdgeSamples refine_view_;    // the pool, with the block's edges' new (first, count) in the scratch
     bool sweep_ = false;       // the faces again after the pass: only the deferred ones
     bool revisit_ = false;     // the view changed during the pass or sweep: a sweep (again) after it
     geom::FaceJob job_;

@@ -88,7 +88,7 @@ struct Carve {
     }
     void face(const geom::FaceCapacity& f) {
         const size_t bytes = geom::face_storage_bytes(f);
-        if (void* p = k.take(bytes, 8)) face_bound = scheduler.storage.bind(p, bytes, f);
+        if (void* p = k.take(bytes, 8)) face_bound = scheduler.storage.bind(p, bytes, f), scheduler.scratch = {static_cast<uint8_t*>(p), bytes};
         else face_bound = Result::fail(Status::Full, "no room for a face's storage");
     }
 };

@@ -9,7 +9,8 @@ drag with the PS/2 mouse on versatilepb, zoom, fit, finer level of detail, quit)
     to the one facet-sim --headless renders on the host with the same code and the same session;
     the session changed the picture (done, turned, zoomed and lod all differ);
   * exact instruction counts: tessellation = every 'edges' and 'face' region (pieces of work) of
-    the first pass; the first view = every piece of work from load to the first frame after the
+    the first pass, up to its @tessellation line (what the views bring in after it, sweeps and
+    refinements of blocks, is counted apart); the first view = every piece of work from load to the first frame after the
     first pass (<= 1.2 G per 10,000 faces, at least 1.2 G); a frame = the 'frame' pieces of one full redraw (up to its '@frame' line). Budgets: tessellation <= 600 M
     instructions (1 s at 600 MHz), a frame <= 20 M per 10,000 triangles in view (30 frames/s;
     views under 10k triangles get the full 20 M). Printed for every run; asserted with
@@ -98,11 +99,13 @@ def analyse(uart, regions):
     its pieces' instructions (the last 'pieces' frame and overlay regions before its '@frame'
     line: a frame the view outdated while it was drawn is not one), the overlay's part of them,
     the mesh's triangles then and the cost the firmware's own clock gave it (us at 600 MHz)."""
-    tess, frames, tri_now, pass_no, pieces, overlay = {}, [], 0, -1, [], []
+    tess, frames, tri_now, pass_no, pieces, overlay, closed = {}, [], 0, -1, [], [], False
     for r, region in protocol.with_regions(uart, regions):
         if r.name == 'pass':
             pass_no = int(r.words[0])
-            tri_now = 0
+            tri_now, closed = 0, False
+        elif r.name in ('tessellation', 'retessellation'):
+            closed = True  # the pass is in: what follows is the view's (sweeps, refinements)
         elif r.name == 'progress':
             tri_now = int(r.words[2])
         elif r.name == 'frame':
@@ -115,7 +118,8 @@ def analyse(uart, regions):
         elif region:
             n = region['instructions']
             if r.words[0] in ('edges', 'face'):
-                tess[pass_no] = tess.get(pass_no, 0) + (n or 0)
+                key = 'view' if closed else pass_no
+                tess[key] = tess.get(key, 0) + (n or 0)
             elif r.words[0] in ('frame', 'overlay'):
                 pieces.append(n)  # a frame's cost: its pieces, the overlay's included
             if r.words[0] == 'overlay':
@@ -240,11 +244,12 @@ def main():
                'pack_bytes': rep.get('memory', {}).get('pack_bytes', 0), 'unpack': unpack_instructions(rep['regions']),
                'tess': t0,
                'frame': max(f['instructions'] for f in frames if f['pass'] == 0 and f['triangles'] == t['triangles']),
-               'big_frame': big, 'tess_lod': tess.get(max(tess)), 'notes': budget_notes}
+               'big_frame': big, 'tess_lod': tess.get(max(k for k in tess if isinstance(k, int))), 'tess_view': tess.get('view', 0), 'notes': budget_notes}
         rows.append(row)
         print(f'{args.board} {name}: {row["faces"]} faces, {row["triangles"]:,} triangles, arena peak '
               f'{row["arena_peak"]:,} B, mesh {row["mesh_bytes"]:,} B; tessellation {t0:,} instructions '
-              f'({t0 / 600e3:.0f} ms at 600 MHz); frame {row["frame"]:,} ({row["frame"] / 600e3:.1f} ms); '
+              f'({t0 / 600e3:.0f} ms at 600 MHz), then {row["tess_view"]:,} for what the views brought in; '
+              f'frame {row["frame"]:,} ({row["frame"] / 600e3:.1f} ms); '
               f'finest frame {big["instructions"]:,} for {big["triangles"]:,} triangles; '
               f'peak RAM {peak / (1 << 20):.2f} MiB; '
               f'{len(shots)} screenshots pixel-identical to the host'

@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <set>
 #include <vector>
 
 using namespace facet;
@@ -60,6 +61,59 @@ Shown show(const Bytes& file) {
     Shown s{app.v->stats(), app.screen(), {}};
     for (uint32_t i = 0; i < app.v->part_count(); ++i) s.names.push_back(app.v->part(i).name);
     return s;
+}
+
+// The sides of a part's triangles not shared by exactly two of them (by their ends' positions):
+// none for a closed part that is watertight, but along the edges of its faces left to their
+// edges (deferred), whose samples the neighbours' triangles end on.
+size_t open_sides(const module::Scene& scene, uint32_t s) {
+    using Point = std::array<int32_t, 3>;
+    const module::Part part = scene.part(s);
+    std::set<Point> waiting; // the samples of the deferred faces' edges
+    const module::Block& block = scene.block(part.block);
+    for (uint32_t f = part.first_face; f < part.first_face + part.face_count; ++f) {
+        if (scene.face(f).state != module::FaceState::Deferred) continue;
+        const pack::Face& F = block.pack.faces()[f - block.first_face];
+        for (uint32_t l = F.first_loop; l < F.first_loop + F.loop_count; ++l) {
+            const pack::Loop& L = block.pack.loops()[l];
+            for (uint32_t c = L.first_coedge; c < L.first_coedge + L.coedge_count; ++c) {
+                const uint32_t e = block.first_edge + block.pack.coedges()[c].edge();
+                for (uint32_t k = 0; k < scene.samples().count[e]; ++k) {
+                    const int32_t* q = scene.sample_q(scene.samples().first[e] + k);
+                    waiting.insert({q[0], q[1], q[2]});
+                }
+            }
+        }
+    }
+    std::map<std::pair<Point, Point>, int> uses;
+    for (uint32_t f = part.first_face; f < part.first_face + part.face_count; ++f) {
+        const module::FaceInfo& F = scene.face(f);
+        const uint16_t* id = scene.indices() + F.first_index;
+        for (uint32_t t = 0; t < F.triangle_count; ++t, id += 3) {
+            for (int k = 0; k < 3; ++k) {
+                const int32_t* a = scene.vertices()[F.first_vertex + id[k]].p;
+                const int32_t* b = scene.vertices()[F.first_vertex + id[(k + 1) % 3]].p;
+                Point pa{a[0], a[1], a[2]}, pb{b[0], b[1], b[2]};
+                if (pb < pa) std::swap(pa, pb);
+                ++uses[{pa, pb}];
+            }
+        }
+    }
+    size_t open = 0;
+    for (const auto& [side, n] : uses) open += n != 2 && !(n == 1 && waiting.count(side.first) && waiting.count(side.second));
+    return open;
+}
+
+// Whether part s is closed, some of its faces tessellated and none failed: what open_sides()
+// checks.
+bool whole(const module::Scene& scene, uint32_t s) {
+    const module::Part part = scene.part(s);
+    bool some = false, failed = false;
+    for (uint32_t f = part.first_face; f < part.first_face + part.face_count; ++f) {
+        some = some || scene.face(f).state == module::FaceState::Done;
+        failed = failed || scene.face(f).state == module::FaceState::Failed;
+    }
+    return part.closed && some && !failed;
 }
 
 } // namespace
@@ -213,33 +267,13 @@ TEST(Blocked, PartsAtMixedLevelsOfDetailAreEachWatertight) {
     EXPECT_GE(finest, app.v->stats().tolerance_mm) << "no block finer than the model's tolerance";
     EXPECT_GT(coarsest, 1.5f * finest) << "the blocks are at different levels";
     EXPECT_EQ(app.v->stats().failed, 0u);
-    using Point = std::array<int32_t, 3>;
     float checked_finest = INFINITY, checked_coarsest = 0; // the levels of the parts checked
     for (uint32_t s = 0; s < scene.part_count(); ++s) {
-        const module::Part part = scene.part(s);
-        bool whole = part.closed;
-        for (uint32_t f = part.first_face; f < part.first_face + part.face_count; ++f) whole = whole && scene.face(f).state == module::FaceState::Done;
-        if (!whole) continue; // (a face under two pixels is left to its edges)
-        const float level = scene.block(part.block).tolerance;
+        if (!whole(scene, s)) continue;
+        const float level = scene.block(scene.part(s).block).tolerance;
         checked_finest = std::min(checked_finest, level), checked_coarsest = std::max(checked_coarsest, level);
-        std::map<std::pair<Point, Point>, int> uses; // each side of a triangle, by its ends' positions
-        for (uint32_t f = part.first_face; f < part.first_face + part.face_count; ++f) {
-            const module::FaceInfo& F = scene.face(f);
-            const uint16_t* id = scene.indices() + F.first_index;
-            for (uint32_t t = 0; t < F.triangle_count; ++t, id += 3) {
-                for (int k = 0; k < 3; ++k) {
-                    const int32_t* a = scene.vertices()[F.first_vertex + id[k]].p;
-                    const int32_t* b = scene.vertices()[F.first_vertex + id[(k + 1) % 3]].p;
-                    Point pa{a[0], a[1], a[2]}, pb{b[0], b[1], b[2]};
-                    if (pb < pa) std::swap(pa, pb);
-                    ++uses[{pa, pb}];
-                }
-            }
-        }
-        size_t open = 0;
-        for (const auto& [side, n] : uses) open += n != 2;
-        EXPECT_EQ(open, 0u) << "part " << s << " (block tolerance " << scene.block(part.block).tolerance
-                            << " mm): sides not shared by exactly two triangles";
+        EXPECT_EQ(open_sides(scene, s), 0u) << "part " << s << " (block tolerance " << level
+                                             << " mm): sides not shared by exactly two triangles";
     }
     EXPECT_GT(checked_coarsest, 1.5f * checked_finest) << "closed parts at different levels were checked";
 }
@@ -275,5 +309,58 @@ TEST(Blocked, ThePartsShowAsBoxesWhileTheirEdgesAreSampled) {
         }
         app.run();
         EXPECT_EQ(app.v->stats().done + app.v->stats().deferred, app.v->stats().faces);
+    }
+}
+
+// Zoomed in along a row of four parts, the blocks the view brings near are tessellated again
+// at the level it asks for, finer than the model's tolerance where a part fills the screen;
+// every part stays watertight. Back at the first view each block is coarsened to its first
+// level: the same mesh and the same picture as before. In a mesh of fixed bytes, the meshes
+// left behind are moved out of the way (compacted) rather than refused.
+TEST(Blocked, ZoomingInRefinesTheBlocksItBringsNearAndZoomingOutCoarsensThem) {
+    const Bytes shapes[] = {plate_with_holes(), sphere(), torus(), trimmed_bspline()};
+    std::vector<Pack> packs(4);
+    for (int k = 0; k < 4; ++k) ASSERT_TRUE(packs[k].open(shapes[k].data(), uint32_t(shapes[k].size())).ok());
+    const Bytes file = blocked(combine_packs(packs, 600.0f));
+    for (const bool tight : {false, true}) {
+        App app;
+        app.w = 320, app.h = 240;
+        if (tight) app.capacity.mesh_vertices = 2000, app.capacity.mesh_triangles = 3600, app.capacity.samples = 360; // (the most in use: 1,246, 2,240, 271)
+        ASSERT_TRUE(app.create().ok());
+        ASSERT_TRUE(app.load(file).ok());
+        app.run();
+        app.v->act(Action::ViewLeft); // along the row
+        app.run();
+        const Core& core = *static_cast<const Core*>(app.v);
+        const module::Scene& scene = core.scene();
+        const float model = app.v->stats().tolerance_mm;
+        std::vector<float> levels;
+        for (uint32_t b = 0; b < scene.block_count(); ++b) levels.push_back(scene.block(b).tolerance);
+        const std::vector<Rgb565> before = app.screen();
+        const uint32_t triangles = app.v->stats().triangles;
+        for (int cycle = 0; cycle < 3; ++cycle) {
+            for (int zoom = 0; zoom < 4; ++zoom) app.v->act(Action::ZoomIn);
+            app.run();
+            float finest = INFINITY;
+            for (uint32_t b = 0; b < scene.block_count(); ++b) finest = std::min(finest, scene.block(b).tolerance);
+            EXPECT_LT(finest, model) << "a part filling the screen, finer than the model's tolerance";
+            EXPECT_EQ(app.v->stats().failed, 0u);
+            uint32_t checked = 0;
+            for (uint32_t s = 0; s < scene.part_count(); ++s) {
+                if (!whole(scene, s)) continue;
+                EXPECT_EQ(open_sides(scene, s), 0u) << "part " << s << " at " << scene.block(scene.part(s).block).tolerance << " mm, cycle " << cycle;
+                ++checked;
+            }
+            EXPECT_GT(checked, 0u);
+            for (int zoom = 0; zoom < 4; ++zoom) app.v->act(Action::ZoomOut);
+            app.run();
+            for (uint32_t b = 0; b < scene.block_count(); ++b) EXPECT_EQ(scene.block(b).tolerance, levels[b]) << "block " << b << ": its first level again";
+            EXPECT_EQ(app.v->stats().triangles, triangles);
+            EXPECT_EQ(app.screen(), before) << "the same mesh, the same picture";
+        }
+        EXPECT_EQ(app.count(Event::Kind::PassFailed), 0);
+        if (tight) {
+            EXPECT_GT(scene.moves(), 0u) << "the meshes left behind were compacted";
+        }
     }
 }
