@@ -80,7 +80,7 @@ def measure(uart, regions):
             elif r.words[0] == 'zoomed':
                 out['zoomed'] = last
             phase = {'first': 'rest', 'turned': 'turned', 'dragged': 'dragged', 'zoomed': 'zoomed'}.get(r.words[0], phase)
-    m = re.search(r'^viewer: \d+ faces \(\d+ failed, (\d+) too small', uart, re.M)
+    m = re.search(r'^viewer: \d+ faces \(\d+ failed, (\d+) not shown by the view', uart, re.M)
     if m:
         out['deferred'] = int(m.group(1))
     m = re.findall(r'^viewer: .* (\d+) triangles; bye', uart, re.M)

@@ -88,7 +88,9 @@ float Core::wanted_tolerance(uint32_t b, float pass_tolerance, float finest, boo
 // too fine) is tessellated again at that level, down to kFinest times finer than the pass (a
 // part zoomed into). One at a time, largest gap first; none while a finger drags the view.
 bool Core::refine_for_view() {
-    if (!refine_check_ || scheduler_.busy() || controls_.dragging() || scene_.bounding() || framer_.busy()) return false;
+    if (!refine_check_ || scheduler_.busy() || controls_.dragging() || scene_.bounding() || framer_.busy() || glide_.phase != Glide::Phase::None) {
+        return false;
+    }
     for (;;) { // (a block refused, for want of room, is passed over the next time round)
         uint32_t best = ~0u;
         float best_gap = 1, best_tolerance = 0;

@@ -188,6 +188,9 @@ public:
     uint32_t mesh_garbage_vertices() const { return vertex_top_ - totals_.vertices; }
     uint32_t mesh_room_vertices() const { return uint32_t(mem_.vertices.size()) - vertex_top_; }
     uint32_t mesh_room_triangles() const { return uint32_t(mem_.indices.size() / 3) - triangle_top_; }
+    // The room compact() would leave.
+    uint32_t mesh_free_vertices() const { return uint32_t(mem_.vertices.size()) - totals_.vertices; }
+    uint32_t mesh_free_triangles() const { return uint32_t(mem_.indices.size() / 3) - totals_.triangles; }
     // The samples' pool: each block's samples lie together (a pass samples a block's edges one
     // after the other, and so does a refinement, at the pool's end, leaving the old ones as
     // garbage); moved down over the garbage, block after block. `scratch`: 3 words a block

@@ -179,8 +179,14 @@ void Scheduler::finish_face(const Result& done) {
     }
     const Totals& t = scene_.totals();
     if (!r.ok()) {
-        scene_.evict(face_); // (a refined block's face: its old mesh would not meet its neighbours' new ones)
-        scene_.mark_failed(face_);
+        // A refined face with no room for its new mesh even so keeps its old one (said by the
+        // event); any other failure leaves it out.
+        if (refining() && r.status == Status::Full && scene_.face(face_).state == FaceState::Done) {
+            r = Result::fail(Status::Full, "no room for the face's finer mesh: kept at its previous level", {"face", face_});
+        } else {
+            scene_.evict(face_);
+            scene_.mark_failed(face_);
+        }
         Event e{};
         e.kind = Event::Kind::FaceFailed;
         e.failed = {face_};
@@ -215,7 +221,7 @@ void Scheduler::end_faces() {
 bool Scheduler::evict_unwanted() {
     uint32_t evicted = 0;
     for (uint32_t f = 0; f < scene_.face_count(); ++f) {
-        if (f == face_ || scene_.face(f).state != FaceState::Done || filter_(f)) continue;
+        if ((in_face_ && f == face_) || scene_.face(f).state != FaceState::Done || filter_(f)) continue;
         scene_.evict(f);
         ++evicted;
     }
@@ -238,7 +244,28 @@ bool Scheduler::begin_refine(uint32_t b, float tolerance) {
     const uint32_t need = uint32_t(float(now) * 1.2f * std::sqrt(block.tolerance / tolerance)) + 2 * edges;
     std::span<uint32_t> words(reinterpret_cast<uint32_t*>(mem_.scratch.data()), mem_.scratch.size() / 4);
     if (scene_.samples_room() < need) scene_.compact_samples(words);
-    if (scene_.samples_room() < need || size_t(edges) * 6 > mem_.scratch.size()) {
+    // The mesh's room, counting what compaction would give back: the block's faces grow about
+    // as the root of the ratio (a cylinder's strips; a sphere's grow faster, and a face that
+    // then does not fit is left to its edges). Short of it, the meshes the view does not want
+    // go first.
+    const float ratio = std::max(1.0f, block.tolerance / tolerance);
+    float vertices = 0, triangles = 0, grown_vertices = 0, grown_triangles = 0;
+    for (uint32_t f = block.first_face; f < block.first_face + block.pack.faces().size(); ++f) {
+        const FaceInfo& F = scene_.face(f);
+        if (F.state != FaceState::Done) continue;
+        const auto type = pack::SurfaceType(scene_.surface_type(f));
+        const float grow = type == pack::SurfaceType::Plane ? 1.0f
+                           : type == pack::SurfaceType::Sphere || type == pack::SurfaceType::Torus || type == pack::SurfaceType::BSpline
+                               ? ratio                 // curved both ways
+                               : std::sqrt(ratio);     // a cylinder's, a cone's strips
+        vertices += float(F.vertex_count), triangles += float(F.triangle_count);
+        grown_vertices += grow * float(F.vertex_count), grown_triangles += grow * float(F.triangle_count);
+    }
+    auto mesh_fits = [&] {
+        return float(scene_.mesh_free_vertices()) + vertices >= grown_vertices && float(scene_.mesh_free_triangles()) + triangles >= grown_triangles;
+    };
+    if (!mesh_fits()) (void)evict_unwanted();
+    if (scene_.samples_room() < need || size_t(edges) * 6 > mem_.scratch.size() || !mesh_fits()) {
         block.refused = true;
         return false;
     }

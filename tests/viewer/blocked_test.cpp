@@ -364,3 +364,46 @@ TEST(Blocked, ZoomingInRefinesTheBlocksItBringsNearAndZoomingOutCoarsensThem) {
         }
     }
 }
+
+// A mesh too small for a refined part and everything else: the meshes of the parts the view
+// no longer shows (off the screen) make room, and the part zoomed into comes in whole at its
+// finer level; zoomed back out, the evicted parts come back as they were.
+TEST(Blocked, AFullMeshEvictsWhatTheViewNoLongerShowsToRefineWhatItDoes) {
+    const Bytes shapes[] = {plate_with_holes(), sphere(), torus(), trimmed_bspline()};
+    std::vector<Pack> packs(4);
+    for (int k = 0; k < 4; ++k) ASSERT_TRUE(packs[k].open(shapes[k].data(), uint32_t(shapes[k].size())).ok());
+    const Bytes file = blocked(combine_packs(packs, 600.0f));
+    App app;
+    app.w = 320, app.h = 240;
+    // (Fitted along the row: 686 vertices and 1,134 triangles; the sphere zoomed into alone
+    // takes about 900 and 1,700, the plate refined on the way some 500.)
+    app.capacity.mesh_vertices = 1500, app.capacity.mesh_triangles = 2800;
+    ASSERT_TRUE(app.create().ok());
+    ASSERT_TRUE(app.load(file).ok());
+    app.run();
+    app.v->act(Action::ViewLeft); // along the row: the plate nearest, then the sphere
+    app.run();
+    const Core& core = *static_cast<const Core*>(app.v);
+    const module::Scene& scene = core.scene();
+    const Stats first = app.v->stats();
+    const std::vector<Rgb565> before = app.screen();
+    for (int zoom = 0; zoom < 4; ++zoom) app.v->act(Action::ZoomIn); // past the plate, onto the sphere
+    app.run();
+    EXPECT_LT(scene.block(1).tolerance, first.tolerance_mm) << "the sphere refined";
+    EXPECT_EQ(scene.face(scene.part(1).first_face).state, module::FaceState::Done);
+    const module::Part plate = scene.part(0);
+    for (uint32_t f = plate.first_face; f < plate.first_face + plate.face_count; ++f) {
+        EXPECT_EQ(scene.face(f).state, module::FaceState::Deferred) << "the plate, off the screen, evicted: face " << f;
+    }
+    EXPECT_EQ(app.v->stats().failed, 0u);
+    EXPECT_EQ(app.count(Event::Kind::FaceFailed), 0);
+    for (uint32_t s = 0; s < scene.part_count(); ++s) {
+        if (!whole(scene, s)) continue;
+        EXPECT_EQ(open_sides(scene, s), 0u) << "part " << s;
+    }
+    for (int zoom = 0; zoom < 4; ++zoom) app.v->act(Action::ZoomOut);
+    app.run();
+    EXPECT_EQ(app.v->stats().done, first.done);
+    EXPECT_EQ(app.v->stats().triangles, first.triangles);
+    EXPECT_EQ(app.screen(), before) << "every part back as it was";
+}
