@@ -122,6 +122,7 @@ bool Core::judge_with_view() {
 void Core::detail_view_changed() {
     if (!judge_with_view()) return;
     refine_check_ = true;
+    for (uint32_t b = 0; b < scene_.block_count(); ++b) scene_.block(b).refused = false; // (the room may differ now)
     if (scene_.totals().deferred > 0) scheduler_.revisit();
 }
 

@@ -46,8 +46,8 @@ struct Block {
     // Its level of detail (mm): the pass's, set as the pass reaches its first edge (0: not yet),
     // and the previous pass's. Its parts' edges and faces all take it: watertight per part.
     float tolerance = 0, previous_tolerance = 0;
-    // A refinement this pass could not make (no room for its samples or its mesh): not tried
-    // again until the next pass.
+    // A refinement it could not make (no room for its samples or its mesh): not tried again
+    // until the view changes or a new pass begins.
     bool refused = false;
 };
 
