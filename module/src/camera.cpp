@@ -198,6 +198,50 @@ bool SphereView::faces_away(const float p[3], const float n[3]) const {
     return x * nx + y * ny + d * nd > kAwayMargin * reach;                     // the eye at view (0, 0, 0)
 }
 
+// In view space (the eye at the origin; parallel: far toward -d), with w the way from the
+// frame's origin to the eye, the face's normal at u is sign (cos a (X cos u + Y sin u) - sin a Z)
+// and n . w = sign (cos a (A cos u + B sin u) - R cos a - C sin a), A = X . w, B = Y . w,
+// C = Z . w: the same along v (a cone's normal tilts as its radius grows). Its largest value
+// over [u0, u1]: where (A, B) points, if that lies in the range, else at an end.
+bool SphereView::faces_away(const RoundFace& f, const float m[12], float sag) const {
+    auto turn = [&](const float a[3], float out[3]) { // part -> view, a direction
+        const float w[3] = {m[0] * a[0] + m[1] * a[1] + m[2] * a[2], m[4] * a[0] + m[5] * a[1] + m[6] * a[2],
+                            m[8] * a[0] + m[9] * a[1] + m[10] * a[2]};
+        out[0] = R[0] * w[0] + R[1] * w[1] + R[2] * w[2], out[1] = R[3] * w[0] + R[4] * w[1] + R[5] * w[2];
+        out[2] = -(R[6] * w[0] + R[7] * w[1] + R[8] * w[2]);
+    };
+    float X[3], Y[3], Z[3], w[3];
+    turn(f.x, X), turn(f.y, Y), turn(f.z, Z);
+    float margin = kAwayMargin;
+    if (ortho) {
+        w[0] = 0, w[1] = 0, w[2] = -1;
+    } else {
+        const float placed[3] = {m[0] * f.o[0] + m[1] * f.o[1] + m[2] * f.o[2] + m[3], m[4] * f.o[0] + m[5] * f.o[1] + m[6] * f.o[2] + m[7],
+                                 m[8] * f.o[0] + m[9] * f.o[1] + m[10] * f.o[2] + m[11]};
+        to_view(placed, w[0], w[1], w[2]);
+        for (float& k : w) k = -k;
+        margin = kAwayMargin * ((w[0] < 0 ? -w[0] : w[0]) + (w[1] < 0 ? -w[1] : w[1]) + (w[2] < 0 ? -w[2] : w[2]) + f.radius) + sag;
+    }
+    const float A = X[0] * w[0] + X[1] * w[1] + X[2] * w[2], B = Y[0] * w[0] + Y[1] * w[1] + Y[2] * w[2];
+    const float C = Z[0] * w[0] + Z[1] * w[1] + Z[2] * w[2];
+    const float k = f.sign * f.cos_a, rest = -f.sign * ((ortho ? 0 : f.radius * f.cos_a) + C * f.sin_a);
+    // The largest of k (A cos u + B sin u): toward (A, B) when k > 0, away from it when not.
+    const float pa = k > 0 ? A : -A, pb = k > 0 ? B : -B;
+    auto cross = [](float ax, float ay, float bx, float by) { return ax * by - ay * bx; };
+    bool inside;
+    if (f.span >= 6.2831853f) {
+        inside = true;
+    } else if (f.span <= 3.14159265f) {
+        inside = cross(f.c0, f.s0, pa, pb) >= 0 && cross(pa, pb, f.c1, f.s1) >= 0;
+    } else { // more than a half turn: not strictly inside the rest of the circle
+        inside = !(cross(f.c1, f.s1, pa, pb) > 0 && cross(pa, pb, f.c0, f.s0) > 0);
+    }
+    const float k_abs = k < 0 ? -k : k;
+    const float most = inside ? k_abs * geom::sqrt_f(A * A + B * B)
+                              : std::max(k * (A * f.c0 + B * f.s0), k * (A * f.c1 + B * f.s1));
+    return most + rest < -margin;
+}
+
 float SphereView::mm_per_pixel(const float p[3], float r) const {
     if (ortho) return dist / focal;
     float x, y, d;

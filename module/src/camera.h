@@ -121,6 +121,16 @@ struct Transform {
     }
 };
 
+// A cylinder's or a cone's face as far as which way it faces goes (its part's coordinates, mm):
+// the surface's frame, its radius at v = 0 and semi-angle (a cylinder: 0), +1 when the face's
+// normal points away from the axis (-1: toward it, a hole), and the ends of its range of u as
+// cos, sin, and its span (a full turn or more: every way round).
+struct RoundFace {
+    float o[3], x[3], y[3], z[3];
+    float radius, sin_a, cos_a, sign;
+    float c0, s0, c1, s1, span;
+};
+
 // Spheres of the placed model on the screen, for the level of detail: a few dozen float
 // operations a sphere, no fixed-point transform per instance. Sides as Transform::visible.
 struct SphereView {
@@ -137,6 +147,10 @@ struct SphereView {
     // Whether the plane through the placed point p with the placed unit normal n turns its
     // back to the eye by more than about a degree (n . (eye - p) < 0, as Transform::facing).
     bool faces_away(const float p[3], const float n[3]) const;
+    // Whether the round face, placed by the 3x4 matrix m, turns its back to the eye at every u
+    // of its range (its normal turns with u alone) by more than about a degree and `sag` (mm:
+    // how far its mesh's chords may lie inside it).
+    bool faces_away(const RoundFace& f, const float m[12], float sag) const;
 };
 
 // The view: orbit angles (rad), dolly factor (1 = the sphere fitted), pan (mm, in view x/y),

@@ -6,10 +6,43 @@
 // (FaceState::Deferred): drawn by their edges, and judged again once the view changes (the
 // scheduler's sweep), so zooming in brings in what grew and turning what came round.
 #include "core.h"
+#include "geom/fmath.h"
+#include "geom/params.h"
 
 #include <cmath>
 
 namespace facet {
+namespace {
+
+// A cylinder's or a cone's face as SphereView::faces_away takes it; false for other surfaces, a
+// cone face reaching its apex, or a range of u it cannot read.
+bool round_face(const module::Scene& scene, uint32_t f, module::RoundFace& r) {
+    const module::Block& block = scene.block_of_face(f);
+    const pack::Face& F = block.pack.faces()[f - block.first_face];
+    const pack::Surface& S = block.pack.surfaces()[F.surface];
+    const auto type = pack::SurfaceType(S.type);
+    if (type != pack::SurfaceType::Cylinder && type != pack::SurfaceType::Cone) return false;
+    const pack::Frame& frame = geom::params<pack::PlaneParams>(block.pack, S).frame; // (every elementary record starts with its frame)
+    r.radius = 0, r.sin_a = 0, r.cos_a = 1;
+    if (type == pack::SurfaceType::Cylinder) {
+        r.radius = geom::params<pack::CylinderParams>(block.pack, S).radius;
+    } else {
+        const pack::ConeParams& cone = geom::params<pack::ConeParams>(block.pack, S);
+        r.radius = cone.ref_radius;
+        geom::sincos_f(cone.semi_angle, r.sin_a, r.cos_a);
+        // Its normal as below holds on the apex's near side: both ends of v there.
+        if (!(r.radius + F.uv_min[1] * r.sin_a > 0 && r.radius + F.uv_max[1] * r.sin_a > 0) || !(r.cos_a > 0)) return false;
+    }
+    r.span = F.uv_max[0] - F.uv_min[0];
+    if (!(r.span >= 0) || !(r.radius > 0)) return false;
+    for (int k = 0; k < 3; ++k) r.o[k] = frame.origin[k], r.x[k] = frame.x[k], r.y[k] = frame.y[k], r.z[k] = frame.z[k];
+    r.sign = (F.reversed ? -1.0f : 1.0f) * module::handedness(frame); // (du x dv: outward in a right-handed frame)
+    geom::sincos_f(F.uv_min[0], r.s0, r.c0);
+    geom::sincos_f(F.uv_max[0], r.s1, r.c1);
+    return true;
+}
+
+} // namespace
 
 bool Core::wants_face(void* self, uint32_t f) {
     Core& c = *static_cast<Core*>(self);
@@ -29,10 +62,15 @@ bool Core::wants_face(void* self, uint32_t f) {
     }
     const float u = scene.unit();
     const float p[3] = {float(F.centre[0]) * u, float(F.centre[1]) * u, float(F.centre[2]) * u}, r = float(F.radius) * u;
-    // A closed part's plane turned away from the eye shows nothing, face nor edges, unless a
-    // section opens the solid (Transform::hides_plane): left for when the view turns it round.
+    // A closed part's face turned away from the eye shows nothing unless a section opens the
+    // solid (Transform::hides_plane): a plane, a cylinder's or a cone's face is left for when
+    // the view turns it round.
     float on_plane[3], normal[3];
-    const bool plane = !c.detail_section_ && scene.part(part).closed && scene.face_plane(f, on_plane, normal);
+    const bool closed = !c.detail_section_ && scene.part(part).closed;
+    const bool plane = closed && scene.face_plane(f, on_plane, normal);
+    module::RoundFace round;
+    const bool is_round = closed && !plane && round_face(scene, f, round);
+    const float sag = kCoarsest * c.scheduler_.tolerance(); // (its mesh's chords: at most its block's tolerance inside it)
     auto placed = [](const float* m, const float q[3], float w[3], float move) {
         for (int k = 0; k < 3; ++k) w[k] = m[4 * k] * q[0] + m[4 * k + 1] * q[1] + m[4 * k + 2] * q[2] + move * m[4 * k + 3];
     };
@@ -43,6 +81,7 @@ bool Core::wants_face(void* self, uint32_t f) {
             placed(inst.m, on_plane, w, 1), placed(inst.m, normal, wn, 0);
             if (c.detail_.faces_away(w, wn)) return false;
         }
+        if (is_round && c.detail_.faces_away(round, inst.m, sag)) return false;
         placed(inst.m, p, w, 1);
         return c.detail_.pixels(w, r) >= kMinFacePixels;
     };

@@ -117,7 +117,7 @@ bool Scene::face_plane(uint32_t f, float point[3], float normal[3]) const {
     const pack::Surface& S = b.pack.surfaces()[F.surface];
     if (S.type != uint8_t(pack::SurfaceType::Plane)) return false;
     const pack::Frame& frame = geom::params<pack::PlaneParams>(b.pack, S).frame;
-    const float sign = F.reversed ? -1.0f : 1.0f;
+    const float sign = (F.reversed ? -1.0f : 1.0f) * handedness(frame);
     for (int k = 0; k < 3; ++k) point[k] = frame.origin[k], normal[k] = sign * frame.z[k];
     return true;
 }

@@ -27,6 +27,13 @@ static_assert(sizeof(DrawVertex) == FACET_BYTES_PER_MESH_VERTEX);
 // edges, its sphere bounded from them, tessellated when the view makes it large enough.
 enum class FaceState : uint8_t { Pending, Done, Failed, Deferred };
 
+// +1 for a right-handed frame (x cross y along z), -1 for a left-handed one: a surface's du x dv
+// (its own normal) goes with it (geom/src/elementary.h).
+inline float handedness(const pack::Frame& f) {
+    const float c[3] = {f.x[1] * f.y[2] - f.x[2] * f.y[1], f.x[2] * f.y[0] - f.x[0] * f.y[2], f.x[0] * f.y[1] - f.x[1] * f.y[0]};
+    return c[0] * f.z[0] + c[1] * f.z[1] + c[2] * f.z[2] < 0 ? -1.0f : 1.0f;
+}
+
 struct FaceInfo {
     uint32_t first_vertex, vertex_count, first_index, triangle_count;
     uint32_t rgb;      // r | g << 8 | b << 16
@@ -120,7 +127,8 @@ public:
     }
     uint8_t surface_type(uint32_t f) const; // pack::SurfaceType of the face's surface
     // A plane face's plane in its part's coordinates (mm): a point and the unit normal out of
-    // the face (its surface's, turned when the face is reversed). False for other surfaces.
+    // the face (its surface's, du x dv: z, or -z in a left-handed frame; turned when the face is
+    // reversed). False for other surfaces.
     bool face_plane(uint32_t f, float point[3], float normal[3]) const;
     // A point of the face's boundary (its first sampled edge's first sample, quantized as
     // DrawVertex::p), or null before its edges are sampled.

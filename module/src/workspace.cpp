@@ -88,8 +88,15 @@ struct Carve {
     }
     void face(const geom::FaceCapacity& f) {
         const size_t bytes = geom::face_storage_bytes(f);
-        if (void* p = k.take(bytes, 8)) face_bound = scheduler.storage.bind(p, bytes, f), scheduler.scratch = {static_cast<uint8_t*>(p), bytes};
-        else face_bound = Result::fail(Status::Full, "no room for a face's storage");
+        // The scratch: the storage but its last array, the B-spline patches (they stay between a
+        // face's pieces and are found again by their surface: never written over).
+        const size_t patches = size_t(f.patch_words) * 4 + 8;
+        if (void* p = k.take(bytes, 8)) {
+            face_bound = scheduler.storage.bind(p, bytes, f);
+            scheduler.scratch = {static_cast<uint8_t*>(p), bytes > patches ? bytes - patches : 0};
+        } else {
+            face_bound = Result::fail(Status::Full, "no room for a face's storage");
+        }
     }
 };
 

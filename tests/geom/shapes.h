@@ -100,6 +100,36 @@ inline Bytes plate_with_holes() {
     return w.finish();
 }
 
+// A half-round bar: half a cylinder of radius 10 about z (u in [0, pi]: y >= 0), z in [0, 40],
+// closed by its flat side in y = 0 and two half discs. Closed, every frame right-handed. Its
+// round face turns wholly away from an eye far toward -y.
+inline Bytes half_round_bar() {
+    PackWriter w;
+    const uint32_t va = w.add_vertex(10, 0, 0), vb = w.add_vertex(-10, 0, 0), vc = w.add_vertex(10, 0, 40), vd = w.add_vertex(-10, 0, 40);
+    const uint32_t low = w.add_curve(pack::CurveType::Circle, 3, {0, 0, 0, 1, 0, 0, 0, 1, 0, 10});
+    const uint32_t high = w.add_curve(pack::CurveType::Circle, 3, {0, 0, 40, 1, 0, 0, 0, 1, 0, 10});
+    const uint32_t A = w.add_edge({low, 0, kPi, va, vb, 1e-7f, 0}), B = w.add_edge({high, 0, kPi, vc, vd, 1e-7f, 0});
+    const uint32_t L1 = straight(w, va, vc, 40), L2 = straight(w, vb, vd, 40), D0 = straight(w, vb, va, 20), D1 = straight(w, vd, vc, 20);
+    auto loop = [&](std::initializer_list<std::pair<uint32_t, bool>> coedges) {
+        const uint32_t first = w.coedge_count();
+        for (auto [e, reversed] : coedges) w.add_coedge(Coedge::make(e, reversed, Seam::None));
+        return w.add_loop({first, uint32_t(coedges.size())});
+    };
+    auto face = [&](pack::SurfaceType type, std::vector<float> params, uint32_t l, std::array<float, 4> bounds) {
+        const uint32_t s = w.add_surface(type, std::move(params));
+        return w.add_face({s, l, 1, pack::kNoIndex, pack::kNoIndex, 0, {0, 0, 0}, {bounds[0], bounds[1]}, {bounds[2], bounds[3]}});
+    };
+    // Counter-clockwise in each face's (u, v): the round face in (angle, z); the flat side in
+    // (x, z), normal -y; the bottom in (x, -y), normal -z; the top in (x, y), normal +z.
+    const uint32_t first = face(pack::SurfaceType::Cylinder, {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 10},
+                                loop({{A, false}, {L2, false}, {B, true}, {L1, true}}), {0, 0, kPi, 40});
+    face(pack::SurfaceType::Plane, {0, 0, 0, 1, 0, 0, 0, 0, 1, 0, -1, 0}, loop({{D0, false}, {L1, false}, {D1, true}, {L2, true}}), {-10, 0, 10, 40});
+    face(pack::SurfaceType::Plane, {0, 0, 0, 1, 0, 0, 0, -1, 0, 0, 0, -1}, loop({{D0, true}, {A, true}}), {-10, -10, 10, 0});
+    face(pack::SurfaceType::Plane, {0, 0, 40, 1, 0, 0, 0, 1, 0, 0, 0, 1}, loop({{B, false}, {D1, false}}), {-10, 0, 10, 10});
+    w.add_instance({w.add_shell({first, 4, pack::kNoIndex, 1}), {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0}});
+    return w.finish();
+}
+
 // A sphere of radius R about the origin: one face, a seam from pole to pole (a half circle at
 // u = 0) and a degenerate edge at each pole. Closed.
 constexpr float kSphereRadius = 20;

@@ -3,6 +3,7 @@
 // deferred faces are judged again and those it makes large enough come in, in the background.
 // Checked against the projection the frames use: at rest, no deferred face shows two pixels
 // across anywhere on the screen, every face is either in or deferred, and the work ends.
+#include "../geom/shapes.h"
 #include "app.h"
 
 using namespace facet;
@@ -214,4 +215,33 @@ TEST(Detail, ASolidsPlanesTurnedAwayWaitUntilTheViewTurnsThemRound) {
     uint32_t came = 0;
     for (uint32_t f : waiting) came += core.scene().face(f).state == module::FaceState::Done;
     EXPECT_GT(came, 0u) << "turning brings the back planes round";
+}
+
+TEST(Detail, ASolidsRoundFaceTurnedAwayWaitsAndDrawsWhatEveryFaceIn) {
+    // A half-round bar from each standard view: where its round face turns wholly away from the
+    // eye it is left to its edges, and the picture is the one every face in gives (a section
+    // brings every face in; off again, the same view is drawn anew).
+    uint32_t waited = 0, shown = 0;
+    for (const Action view : {Action::ViewFront, Action::ViewBack, Action::ViewRight, Action::ViewLeft, Action::ViewTop,
+                              Action::ViewBottom, Action::ViewIso}) {
+        App app;
+        app.w = 320, app.h = 240, app.lines = 240;
+        ASSERT_TRUE(app.create().ok());
+        ASSERT_TRUE(app.load(half_round_bar()).ok());
+        app.v->act(view);
+        app.run();
+        const Core& core = *static_cast<const Core*>(app.v);
+        ASSERT_EQ(app.v->stats().failed, 0u);
+        const bool round_waits = core.scene().face(0).state == module::FaceState::Deferred;
+        (round_waits ? waited : shown) += 1;
+        const std::vector<Rgb565> before = app.screen();
+        app.v->act(Action::Section);
+        app.run();
+        EXPECT_EQ(app.v->stats().done, 4u) << "a section on: every face in";
+        for (int k = 0; k < 8 && core.camera().section().on; ++k) app.v->act(Action::Section);
+        app.run();
+        EXPECT_EQ(app.screen(), before) << "view " << int(view) << (round_waits ? ": the round face waited" : "");
+    }
+    EXPECT_GT(waited, 0u) << "some view turns the round face away";
+    EXPECT_GT(shown, 0u);
 }
