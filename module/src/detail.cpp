@@ -2,9 +2,11 @@
 //
 // A face is tessellated when some instance of its part shows it at least kMinFacePixels across
 // (its sphere, bounded by its edges' samples, at its nearest point), on the screen, and (a
-// closed part's plane, no section on) facing the eye; the rest are deferred
-// (FaceState::Deferred): drawn by their edges, and judged again once the view changes (the
-// scheduler's sweep), so zooming in brings in what grew and turning what came round.
+// closed part's plane, cylinder or cone face, no section on) facing the eye; the rest are
+// deferred (FaceState::Deferred): drawn by their edges, and judged again once the view changes
+// (the scheduler's sweep), so zooming in brings in what grew and turning what came round. Each
+// block's level follows the view too: set as a pass reaches it, and refined or coarsened when
+// the view has moved far enough (refine_for_view).
 #include "core.h"
 #include "geom/fmath.h"
 #include "geom/params.h"
