@@ -172,9 +172,9 @@ SphereView Camera::sphere_view(const Scene& scene, uint16_t width, uint16_t heig
 
 void SphereView::to_view(const float p[3], float& x, float& y, float& d) const {
     const float w[3] = {p[0] - centre[0], p[1] - centre[1], p[2] - centre[2]};
-    x = R[0] * w[0] + R[1] * w[1] + R[2] * w[2] + pan[0];
-    y = R[3] * w[0] + R[4] * w[1] + R[5] * w[2] + pan[1];
-    d = dist - (R[6] * w[0] + R[7] * w[1] + R[8] * w[2]);
+    float v[3];
+    turn(w, v);
+    x = v[0] + pan[0], y = v[1] + pan[1], d = dist + v[2];
 }
 
 float SphereView::pixels(const float p[3], float r) const {
@@ -189,13 +189,12 @@ float SphereView::pixels(const float p[3], float r) const {
 }
 
 bool SphereView::faces_away(const float p[3], const float n[3]) const {
-    float x, y, d;
+    float x, y, d, v[3];
     to_view(p, x, y, d);
-    const float nx = R[0] * n[0] + R[1] * n[1] + R[2] * n[2], ny = R[3] * n[0] + R[4] * n[1] + R[5] * n[2];
-    const float nd = -(R[6] * n[0] + R[7] * n[1] + R[8] * n[2]);
-    if (ortho) return nd > kAwayMargin; // the eye far toward -d
+    turn(n, v);
+    if (ortho) return v[2] > kAwayMargin; // the eye far toward -d
     const float reach = (x < 0 ? -x : x) + (y < 0 ? -y : y) + (d < 0 ? -d : d); // >= |eye - p|
-    return x * nx + y * ny + d * nd > kAwayMargin * reach;                     // the eye at view (0, 0, 0)
+    return x * v[0] + y * v[1] + d * v[2] > kAwayMargin * reach;               // the eye at view (0, 0, 0)
 }
 
 // In view space (the eye at the origin; parallel: far toward -d), with w the way from the
@@ -204,20 +203,19 @@ bool SphereView::faces_away(const float p[3], const float n[3]) const {
 // C = Z . w: the same along v (a cone's normal tilts as its radius grows). Its largest value
 // over [u0, u1]: where (A, B) points, if that lies in the range, else at an end.
 bool SphereView::faces_away(const RoundFace& f, const float m[12], float sag) const {
-    auto turn = [&](const float a[3], float out[3]) { // part -> view, a direction
-        const float w[3] = {m[0] * a[0] + m[1] * a[1] + m[2] * a[2], m[4] * a[0] + m[5] * a[1] + m[6] * a[2],
-                            m[8] * a[0] + m[9] * a[1] + m[10] * a[2]};
-        out[0] = R[0] * w[0] + R[1] * w[1] + R[2] * w[2], out[1] = R[3] * w[0] + R[4] * w[1] + R[5] * w[2];
-        out[2] = -(R[6] * w[0] + R[7] * w[1] + R[8] * w[2]);
+    auto axis = [&](const float a[3], float out[3]) { // the part's direction in view space
+        float placed[3];
+        place(m, a, placed, false);
+        turn(placed, out);
     };
     float X[3], Y[3], Z[3], w[3];
-    turn(f.x, X), turn(f.y, Y), turn(f.z, Z);
+    axis(f.x, X), axis(f.y, Y), axis(f.z, Z);
     float margin = kAwayMargin;
     if (ortho) {
         w[0] = 0, w[1] = 0, w[2] = -1;
     } else {
-        const float placed[3] = {m[0] * f.o[0] + m[1] * f.o[1] + m[2] * f.o[2] + m[3], m[4] * f.o[0] + m[5] * f.o[1] + m[6] * f.o[2] + m[7],
-                                 m[8] * f.o[0] + m[9] * f.o[1] + m[10] * f.o[2] + m[11]};
+        float placed[3];
+        place(m, f.o, placed);
         to_view(placed, w[0], w[1], w[2]);
         for (float& k : w) k = -k;
         margin = kAwayMargin * ((w[0] < 0 ? -w[0] : w[0]) + (w[1] < 0 ? -w[1] : w[1]) + (w[2] < 0 ? -w[2] : w[2]) + f.radius) + sag;

@@ -121,6 +121,14 @@ struct Transform {
     }
 };
 
+// A point (or, point false, a direction) of a part where an instance's 3x4 placement m puts it.
+inline void place(const float m[12], const float q[3], float out[3], bool point = true) {
+    for (int k = 0; k < 3; ++k) {
+        out[k] = m[4 * k] * q[0] + m[4 * k + 1] * q[1] + m[4 * k + 2] * q[2];
+        if (point) out[k] += m[4 * k + 3];
+    }
+}
+
 // A cylinder's or a cone's face as far as which way it faces goes (its part's coordinates, mm):
 // the surface's frame, its radius at v = 0 and semi-angle (a cylinder: 0), +1 when the face's
 // normal points away from the axis (-1: toward it, a hole), and the ends of its range of u as
@@ -144,6 +152,11 @@ struct SphereView {
     float mm_per_pixel(const float p[3], float r) const;
     // A placed point (mm) in view space: x right, y up, d its depth in front of the eye.
     void to_view(const float p[3], float& x, float& y, float& d) const;
+    // A placed direction in view space (x, y, d: as to_view's axes).
+    void turn(const float n[3], float v[3]) const {
+        v[0] = R[0] * n[0] + R[1] * n[1] + R[2] * n[2], v[1] = R[3] * n[0] + R[4] * n[1] + R[5] * n[2];
+        v[2] = -(R[6] * n[0] + R[7] * n[1] + R[8] * n[2]);
+    }
     // Whether the plane through the placed point p with the placed unit normal n turns its
     // back to the eye by more than about a degree (n . (eye - p) < 0, as Transform::facing).
     bool faces_away(const float p[3], const float n[3]) const;

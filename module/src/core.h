@@ -103,8 +103,9 @@ private:
     // Each block's tolerance in a pass: Config::screen_error_px at its nearest point (detail.cpp).
     static constexpr float kCoarsest = 4.0f;
     static float block_tolerance(void* self, uint32_t block, float pass_tolerance);
-    // The tolerance the view asks of block b (mm): between pass_tolerance / finest and
-    // kCoarsest times it; on_screen (if given): whether its box shows.
+    // The tolerance the view asks of block b (mm): between the finer of pass_tolerance / finest
+    // and the block's own share of it (its size over the model's) and kCoarsest times it;
+    // on_screen (if given): whether its box shows.
     float wanted_tolerance(uint32_t b, float pass_tolerance, float finest, bool* on_screen);
     static constexpr float kFinest = 16.0f, kRefineStep = 2.0f;
     bool refine_for_view(); // true when it started (or tried) a refinement (detail.cpp)

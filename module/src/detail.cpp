@@ -11,6 +11,7 @@
 #include "geom/fmath.h"
 #include "geom/params.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace facet {
@@ -73,18 +74,15 @@ bool Core::wants_face(void* self, uint32_t f) {
     module::RoundFace round;
     const bool is_round = closed && !plane && round_face(scene, f, round);
     const float sag = kCoarsest * c.scheduler_.tolerance(); // (its mesh's chords: at most its block's tolerance inside it)
-    auto placed = [](const float* m, const float q[3], float w[3], float move) {
-        for (int k = 0; k < 3; ++k) w[k] = m[4 * k] * q[0] + m[4 * k + 1] * q[1] + m[4 * k + 2] * q[2] + move * m[4 * k + 3];
-    };
     auto shows = [&](const pack::Instance& inst) {
         float w[3];
         if (plane) {
             float wn[3];
-            placed(inst.m, on_plane, w, 1), placed(inst.m, normal, wn, 0);
+            module::place(inst.m, on_plane, w), module::place(inst.m, normal, wn, false);
             if (c.detail_.faces_away(w, wn)) return false;
         }
         if (is_round && c.detail_.faces_away(round, inst.m, sag)) return false;
-        placed(inst.m, p, w, 1);
+        module::place(inst.m, p, w);
         return c.detail_.pixels(w, r) >= kMinFacePixels;
     };
     if (c.detail_count_ <= kDetailInstances) {
@@ -119,15 +117,22 @@ float Core::wanted_tolerance(uint32_t b, float pass_tolerance, float finest, boo
     if (on_screen) *on_screen = detail_.pixels(centre, r) > 0;
     const float bias = pass_tolerance / default_tolerance_;
     float t = bias * config_.screen_error_px * detail_.mm_per_pixel(centre, r);
-    if (t < pass_tolerance / finest) t = pass_tolerance / finest;
+    // Never finer than the block would take as a model of its own (its share of the model's
+    // size: a part of a large assembly zoomed into gets its own detail, a one-block model
+    // keeps the pass's), nor than `finest` times the pass's.
+    const float own = scene_.radius() > 0 ? pass_tolerance * std::min(1.0f, r / scene_.radius()) : pass_tolerance;
+    const float floor = std::max(own, pass_tolerance / finest);
+    if (t < floor) t = floor;
     if (t > kCoarsest * pass_tolerance) t = kCoarsest * pass_tolerance;
     return t;
 }
 
-// When nothing else is under way and the view has changed: the block on the screen whose level
-// is furthest from what the view now asks for (kRefineStep times too coarse, or kCoarsest times
-// too fine) is tessellated again at that level, down to kFinest times finer than the pass (a
-// part zoomed into). One at a time, largest gap first; none while a finger drags the view.
+// When nothing else is under way and the view has changed: the block whose level is furthest
+// from what the view now asks for (kRefineStep times too coarse and on the screen, or as many
+// times too fine) is tessellated again at that level, down to kFinest times finer than the pass
+// for a part of a large model zoomed into (wanted_tolerance). One at a time, largest gap first;
+// none while a finger drags the view. Once at the view's level, a block moves again only when
+// the view has moved by that factor.
 bool Core::refine_for_view() {
     if (!refine_check_ || scheduler_.busy() || controls_.dragging() || scene_.bounding() || framer_.busy() || glide_.phase != Glide::Phase::None) {
         return false;
@@ -141,7 +146,7 @@ bool Core::refine_for_view() {
             bool on_screen = true;
             const float want = wanted_tolerance(b, scheduler_.tolerance(), kFinest, &on_screen);
             const float finer = block.tolerance / want, coarser = want / block.tolerance;
-            const float gap = finer >= kRefineStep && on_screen ? finer : coarser >= kCoarsest ? coarser : 0;
+            const float gap = finer >= kRefineStep && on_screen ? finer : coarser >= kRefineStep ? coarser : 0;
             if (gap > best_gap) best = b, best_gap = gap, best_tolerance = want;
         }
         if (best == ~0u) {

@@ -193,9 +193,6 @@ public:
     // The live meshes moved down over the garbage, in the order they lie (done_order becomes
     // that order). False when there was none.
     bool compact();
-    uint32_t mesh_garbage_vertices() const { return vertex_top_ - totals_.vertices; }
-    uint32_t mesh_room_vertices() const { return uint32_t(mem_.vertices.size()) - vertex_top_; }
-    uint32_t mesh_room_triangles() const { return uint32_t(mem_.indices.size() / 3) - triangle_top_; }
     // The room compact() would leave.
     uint32_t mesh_free_vertices() const { return uint32_t(mem_.vertices.size()) - totals_.vertices; }
     uint32_t mesh_free_triangles() const { return uint32_t(mem_.indices.size() / 3) - totals_.triangles; }

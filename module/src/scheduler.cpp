@@ -37,11 +37,11 @@ void Scheduler::set_level(Block& b) {
 
 geom::TessOptions Scheduler::options_at(float tolerance) const {
     geom::TessOptions o = opt_;
-    if (!(tolerance > opt_.tolerance)) return o;
-    o.tolerance = tolerance;
+    if (!(tolerance > 0) || tolerance == opt_.tolerance) return o;
+    o.tolerance = tolerance; // (finer than the pass's: a block refined as the view came near)
     // A far block's arcs turn more between samples, as its tolerance is coarser (a small hole
     // far off needs no seven sides), up to kMaxFarAngle.
-    o.max_angle = std::min(kMaxFarAngle, opt_.max_angle * std::sqrt(tolerance / opt_.tolerance));
+    if (tolerance > opt_.tolerance) o.max_angle = std::min(kMaxFarAngle, opt_.max_angle * std::sqrt(tolerance / opt_.tolerance));
     return o;
 }
 
@@ -65,20 +65,26 @@ bool Scheduler::run(uint32_t units) {
     return true;
 }
 
-// Edges, or a piece of one, until about `units` are spent (a unit: a curve evaluation,
-// weighted by its cost, or an edge).
-void Scheduler::sample(uint32_t units) {
+// Edges from next_edge_ to `end`, or a piece of one, until about `units` are spent (a unit: a
+// curve evaluation, weighted by its cost, or an edge). Each edge is begun through view_: the
+// pool as the edge's block numbers its edges (a pass), or with the refined block's new (first,
+// count) in the scratch (a refinement); the pool's use is carried both ways. Busy while an
+// edge is under way; Full when the pool is.
+Result Scheduler::sample_edges(uint32_t end, uint32_t units) {
     geom::EdgeSamples& s = scene_.samples();
-    const uint32_t edges = scene_.edge_count();
-    if (next_edge_ == 0 && !in_edge_) s.work = 0, quantized_ = 0;
     const uint32_t work0 = s.work;
     Result r;
-    for (uint32_t n = 0; next_edge_ < edges && s.work - work0 + n < units && r.ok(); ++n) {
-        if (!in_edge_) { // the edge's block sees the pool through its own numbering
-            Block& b = scene_.block_of_edge(next_edge_);
-            view_ = scene_.samples_of(b);
-            set_level(b);
-            sampler_.start(b.pack, options(b), view_, next_edge_ - b.first_edge);
+    for (uint32_t n = 0; next_edge_ < end && s.work - work0 + n < units && r.ok(); ++n) {
+        if (!in_edge_) {
+            if (refining()) {
+                view_.used = s.used, view_.work = s.work;
+                sampler_.start(scene_.block(refine_block_).pack, options_at(refine_tolerance_), view_, next_edge_);
+            } else {
+                Block& b = scene_.block_of_edge(next_edge_);
+                view_ = scene_.samples_of(b);
+                set_level(b);
+                sampler_.start(b.pack, options(b), view_, next_edge_ - b.first_edge);
+            }
             s.used = view_.used, s.work = view_.work;
             in_edge_ = true;
         }
@@ -88,8 +94,17 @@ void Scheduler::sample(uint32_t units) {
         s.used = view_.used, s.work = view_.work;
         if (r.status == Status::Busy) break; // this edge goes on next time
         in_edge_ = false;
-        ++next_edge_;
+        if (r.ok()) ++next_edge_;
     }
+    return r;
+}
+
+// A pass's edges, a piece at a time.
+void Scheduler::sample(uint32_t units) {
+    geom::EdgeSamples& s = scene_.samples();
+    const uint32_t edges = scene_.edge_count();
+    if (next_edge_ == 0 && !in_edge_) s.work = 0, quantized_ = 0;
+    const Result r = sample_edges(edges, units);
     // The finished edges' samples, quantized for drawing (an edge under way may still thin its own).
     const uint32_t final_to = in_edge_ ? sampler_.first() : s.used;
     scene_.quantize_samples(quantized_, final_to);
@@ -179,10 +194,14 @@ void Scheduler::finish_face(const Result& done) {
     }
     const Totals& t = scene_.totals();
     if (!r.ok()) {
-        // A refined face with no room for its new mesh even so keeps its old one (said by the
-        // event); any other failure leaves it out.
-        if (refining() && r.status == Status::Full && scene_.face(face_).state == FaceState::Done) {
+        // No room even so, after the pass: a refined face keeps its old mesh, a face the view
+        // brought in stays with its edges until a later sweep finds room (the event says which);
+        // any other failure leaves it out.
+        const bool later = (refining() || sweep_) && r.status == Status::Full;
+        if (later && scene_.face(face_).state == FaceState::Done) {
             r = Result::fail(Status::Full, "no room for the face's finer mesh: kept at its previous level", {"face", face_});
+        } else if (later) {
+            r = Result::fail(Status::Full, "no room in the mesh: left to its edges until there is", {"face", face_});
         } else {
             scene_.evict(face_);
             scene_.mark_failed(face_);
@@ -206,10 +225,11 @@ void Scheduler::finish_face(const Result& done) {
 // meanwhile sends a sweep over the deferred faces.
 void Scheduler::end_faces() {
     const Totals& t = scene_.totals();
-    const bool was_sweep = sweep_ || refining();
-    if (refining()) refine_block_ = kNoBlock, ++refined_;
+    const bool was_refine = refining(), was_sweep = sweep_ || was_refine;
+    if (was_refine) refine_block_ = kNoBlock, ++refined_;
     stage_ = Stage::Idle, sweep_ = false;
-    if (revisit_ && t.deferred > 0) stage_ = Stage::Faces, sweep_ = true, face_ = 0, face_end_ = scene_.face_count();
+    // A sweep follows a view change, and a refinement (what it freed may bring faces in).
+    if ((revisit_ || was_refine) && t.deferred > 0) stage_ = Stage::Faces, sweep_ = true, face_ = 0, face_end_ = scene_.face_count();
     revisit_ = false;
     if (was_sweep) return;
     Event e{};
@@ -236,6 +256,10 @@ bool Scheduler::begin_refine(uint32_t b, float tolerance) {
         return false;
     }
     const uint32_t edges = uint32_t(block.pack.edges().size());
+    if (size_t(edges) * 6 > mem_.scratch.size()) { // no room for the block's new (first, count)
+        block.refused = true;
+        return false;
+    }
     const geom::EdgeSamples& s = scene_.samples();
     // The new samples' room: arcs take samples as the root of the tolerance's ratio (their sag
     // goes as the square of their steps), and a fifth more for the angle's limit.
@@ -265,13 +289,13 @@ bool Scheduler::begin_refine(uint32_t b, float tolerance) {
         return float(scene_.mesh_free_vertices()) + vertices >= grown_vertices && float(scene_.mesh_free_triangles()) + triangles >= grown_triangles;
     };
     if (!mesh_fits()) (void)evict_unwanted();
-    if (scene_.samples_room() < need || size_t(edges) * 6 > mem_.scratch.size() || !mesh_fits()) {
+    if (scene_.samples_room() < need || !mesh_fits()) {
         block.refused = true;
         return false;
     }
-    refine_view_ = s;
-    refine_view_.first = words.first(edges);
-    refine_view_.count = std::span<uint16_t>(reinterpret_cast<uint16_t*>(words.data() + edges), edges);
+    view_ = s;
+    view_.first = words.first(edges);
+    view_.count = std::span<uint16_t>(reinterpret_cast<uint16_t*>(words.data() + edges), edges);
     refine_block_ = b, refine_tolerance_ = tolerance, refine_from_ = s.used;
     stage_ = Stage::Refining, next_edge_ = 0, in_edge_ = false;
     return true;
@@ -282,23 +306,9 @@ bool Scheduler::begin_refine(uint32_t b, float tolerance) {
 void Scheduler::refine_sample(uint32_t units) {
     Block& b = scene_.block(refine_block_);
     geom::EdgeSamples& s = scene_.samples();
-    const uint32_t edges = uint32_t(b.pack.edges().size()), work0 = s.work;
-    Result r;
-    for (uint32_t n = 0; next_edge_ < edges && s.work - work0 + n < units && r.ok(); ++n) {
-        if (!in_edge_) {
-            refine_view_.used = s.used, refine_view_.work = s.work;
-            sampler_.start(b.pack, options_at(refine_tolerance_), refine_view_, next_edge_);
-            s.used = refine_view_.used, s.work = refine_view_.work;
-            in_edge_ = true;
-        }
-        const uint32_t used = s.work - work0 + n;
-        refine_view_.used = s.used, refine_view_.work = s.work;
-        r = sampler_.run(used < units ? units - used : 0);
-        s.used = refine_view_.used, s.work = refine_view_.work;
-        if (r.status == Status::Busy) return;
-        in_edge_ = false;
-        if (r.ok()) ++next_edge_;
-    }
+    const uint32_t edges = uint32_t(b.pack.edges().size());
+    const Result r = sample_edges(edges, units);
+    if (r.status == Status::Busy) return;
     if (!r.ok()) { // the pool is full: the new samples dropped, the block as it was
         s.used = refine_from_;
         b.refused = true;
@@ -313,7 +323,7 @@ void Scheduler::refine_sample(uint32_t units) {
     if (next_edge_ < edges) return;
     // Every new sample in: the block's edges take them, and its faces are tessellated again.
     scene_.quantize_samples(refine_from_, s.used);
-    for (uint32_t e = 0; e < edges; ++e) s.first[b.first_edge + e] = refine_view_.first[e], s.count[b.first_edge + e] = refine_view_.count[e];
+    for (uint32_t e = 0; e < edges; ++e) s.first[b.first_edge + e] = view_.first[e], s.count[b.first_edge + e] = view_.count[e];
     b.tolerance = refine_tolerance_;
     stage_ = Stage::Faces, face_ = b.first_face, face_end_ = b.first_face + uint32_t(b.pack.faces().size()), in_face_ = false;
     if (face_ == face_end_) end_faces();

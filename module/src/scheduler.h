@@ -78,6 +78,7 @@ public:
 private:
     enum class Stage : uint8_t { Idle, Sampling, Faces, Refining };
     void sample(uint32_t units);
+    Result sample_edges(uint32_t end, uint32_t units);
     void refine_sample(uint32_t units);
     bool evict_unwanted(); // the meshes of done faces the view does not want now (true: some)
     static constexpr uint32_t kNoBlock = ~0u;
@@ -105,6 +106,7 @@ private:
     bool in_edge_ = false;     // an edge is being sampled (sampler_ holds where)
     uint32_t quantized_ = 0;   // samples quantized so far
     geom::EdgeSamples view_;   // the pool as the block of the edge or face under way numbers its edges
+                               // (refining: with the block's edges' new (first, count) in the scratch)
     geom::EdgeSampler sampler_;
     uint32_t face_ = 0;        // the face being tessellated
     uint32_t face_end_ = 0;    // past the faces of this pass, sweep or refinement
@@ -113,7 +115,6 @@ private:
     float refine_tolerance_ = 0;
     uint32_t refine_from_ = 0;         // its new samples' first in the pool
     uint32_t refined_ = 0;
-    geom::EdgeSamples refine_view_;    // the pool, with the block's edges' new (first, count) in the scratch
     bool sweep_ = false;       // the faces again after the pass: only the deferred ones
     bool revisit_ = false;     // the view changed during the pass or sweep: a sweep (again) after it
     geom::FaceJob job_;

@@ -233,13 +233,19 @@ def ndr_part01_reads():
                 r'--unit parsec: one of mm, cm, m, in, ft', 'a unit facet-pack does not know')
 
 
+def packed_hole_plate(folder, holes):
+    """A plate of `holes` round holes made by the stress tool in work folder `folder`, and
+    facet-pack's run on it: (its STEP, its pack, the packer's result)."""
+    d = work(folder)
+    step = os.path.join(d, 'holes.step')
+    expect_exit(run([ARGS.stress, 'holes', str(holes), step]), 0, None, f'making the {holes:,}-hole plate')
+    fpk = os.path.join(d, 'holes.fpk')
+    return step, fpk, run([ARGS.packer, step, '-o', fpk], timeout=600)
+
+
 def plate_of_many_holes_packs_with_progress():
     """A face of 1,600 holes took 208 s to pack (5,625: over 600 s) with no sign of life."""
-    d = work('holes')
-    step = os.path.join(d, 'holes.step')
-    expect_exit(run([ARGS.stress, 'holes', '1600', step]), 0, None, 'making the 1,600-hole plate')
-    fpk = os.path.join(d, 'holes.fpk')
-    r = run([ARGS.packer, step, '-o', fpk], timeout=600)
+    step, fpk, r = packed_hole_plate('holes', 1600)
     expect_exit(r, 0, r'1606 faces', 'packing the 1,600-hole plate')
     for stage in ('reading STEP', 'healing', r'packed 1 of 1 parts \(1606 faces\)', 'compressing'):
         expect(re.search(rf'facet-pack: +[\d.]+ s: {stage}', r.stderr), f'no progress line for {stage!r}:\n{r.stderr}')
@@ -252,16 +258,12 @@ def large_model_packs_with_deflate():
     """A large model's LZMA blocks took 88 instructions a decoded byte on the ARM926 (issue 25):
     facet-pack compresses a model over 1 MiB decoded with DEFLATE, a smaller one with LZMA, and
     --lzma / --deflate choose; either form checks with the device's reader."""
-    d = work('large')
-    step = os.path.join(d, 'holes.step')
-    expect_exit(run([ARGS.stress, 'holes', '3025', step]), 0, None, 'making the 3,025-hole plate (55 x 55)')
-    fpk = os.path.join(d, 'holes.fpk')
-    r = run([ARGS.packer, step, '-o', fpk], timeout=600)
+    step, fpk, r = packed_hole_plate('large', 3025)
     expect_exit(r, 0, r'\d+ bytes decoded, DEFLATE', 'packing a model over 1 MiB decoded')
     expect_exit(run([ARGS.packer, '--check', fpk]), 0, None, 'checking the DEFLATE pack')
     r = run([ARGS.packer, step, '-o', fpk, '--lzma'], timeout=600)
     expect_exit(r, 0, r'\d+ bytes decoded, LZMA', 'packing it with --lzma')
-    r = run([ARGS.packer, os.path.join(ARGS.models, 'anc101.stp'), '-o', os.path.join(d, 'anc101.fpk')])
+    r = run([ARGS.packer, os.path.join(ARGS.models, 'anc101.stp'), '-o', os.path.join(os.path.dirname(fpk), 'anc101.fpk')])
     expect_exit(r, 0, r'\d+ bytes decoded, LZMA', 'packing a small model')
 
 

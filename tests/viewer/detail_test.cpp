@@ -92,6 +92,20 @@ void expect_deferred_only_small(const App& app, const char* when) {
     EXPECT_EQ(deferred, s.deferred) << when;
 }
 
+// A section turned on (the viewer's cycle from off: across x) and the work done, then off
+// again and the same view drawn anew: the stats with the section on.
+Stats with_a_section_and_without(App& app) {
+    const Core& core = *static_cast<const Core*>(app.v);
+    app.v->act(Action::Section);
+    app.run();
+    EXPECT_TRUE(core.camera().section().on);
+    const Stats on = app.v->stats();
+    for (int k = 0; k < 8 && core.camera().section().on; ++k) app.v->act(Action::Section);
+    EXPECT_FALSE(core.camera().section().on);
+    app.run();
+    return on;
+}
+
 } // namespace
 
 TEST(Detail, FacesUnderTwoPixelsAreLeftToTheirEdgesUntilTheViewMakesThemLarger) {
@@ -189,14 +203,9 @@ TEST(Detail, ASolidsPlanesTurnedAwayWaitUntilTheViewTurnsThemRound) {
 
     // A section may show the solid's inside: every plane comes in. Off again, the same view
     // draws the same pixels with every face in as it drew with the back planes waiting.
-    app.v->act(Action::Section);
-    app.run();
-    ASSERT_TRUE(core.camera().section().on);
-    EXPECT_EQ(app.v->stats().deferred, 0u) << "with a section on, no plane is judged hidden";
-    EXPECT_EQ(app.v->stats().done, 6u);
-    for (int k = 0; k < 8 && core.camera().section().on; ++k) app.v->act(Action::Section);
-    ASSERT_FALSE(core.camera().section().on);
-    app.run();
+    const Stats cut = with_a_section_and_without(app);
+    EXPECT_EQ(cut.deferred, 0u) << "with a section on, no plane is judged hidden";
+    EXPECT_EQ(cut.done, 6u);
     EXPECT_EQ(app.screen(), before) << "the planes that waited drew nothing";
 
     // Anew, turned round: the planes the first view left waiting come in as they face the eye.
@@ -235,11 +244,7 @@ TEST(Detail, ASolidsRoundFaceTurnedAwayWaitsAndDrawsWhatEveryFaceIn) {
         const bool round_waits = core.scene().face(0).state == module::FaceState::Deferred;
         (round_waits ? waited : shown) += 1;
         const std::vector<Rgb565> before = app.screen();
-        app.v->act(Action::Section);
-        app.run();
-        EXPECT_EQ(app.v->stats().done, 4u) << "a section on: every face in";
-        for (int k = 0; k < 8 && core.camera().section().on; ++k) app.v->act(Action::Section);
-        app.run();
+        EXPECT_EQ(with_a_section_and_without(app).done, 4u) << "a section on: every face in";
         EXPECT_EQ(app.screen(), before) << "view " << int(view) << (round_waits ? ": the round face waited" : "");
     }
     EXPECT_GT(waited, 0u) << "some view turns the round face away";
