@@ -105,6 +105,9 @@ def run_one(board_name, elf, fpk, out, timeout):
         notes.append(bad.group(1))
     elif code != 0:
         notes.append(exit_note(code))
+    cut = re.search(r'^viewer: the model is larger than the memory: (\d+) parts \((\d+) faces\) left out', uart, re.M)
+    if cut:
+        notes.append(f'larger than the memory: {int(cut.group(1)):,} parts ({int(cut.group(2)):,} faces) left out, drawn as boxes')
     m = measure(uart, rep.get('regions', []))
     for key, col in (('first_frame', 'first_frame_instructions'), ('first_view', 'first_view_instructions'),
                      ('rest', 'frame_rest_instructions'), ('zoomed', 'frame_zoomed_instructions'),
@@ -223,9 +226,11 @@ def main():
                                          os.path.join(args.work, b, name), args.timeout)
                     row.update(got)
                     log = os.path.join(args.work, b, name, 'uart.log')
-                    stated = re.search(r'^@model faces (\d+)', open(log, errors='replace').read(), re.M) if os.path.exists(log) else None
-                    if stated:
-                        row['pack_faces'] = int(stated.group(1))
+                    text = open(log, errors='replace').read() if os.path.exists(log) else ''
+                    stated = re.search(r'^@model faces (\d+)', text, re.M)
+                    boxed = re.search(r'^viewer: the model is larger than the memory: \d+ parts \((\d+) faces\)', text, re.M)
+                    if stated:  # (the faces held, and those of the parts left out)
+                        row['pack_faces'] = int(stated.group(1)) + (int(boxed.group(1)) if boxed else 0)
                 row['note'] = '; '.join(notes)
                 rows.append(row)
                 fv = row.get('first_view_instructions')

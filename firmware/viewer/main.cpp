@@ -94,6 +94,10 @@ void on_event(void*, const Event& e) {
     case Event::Kind::Loaded:
         print(con, "@model faces {} edges {} shells {} instances {} bytes {} file_bytes {}\n", e.loaded.faces, e.loaded.edges,
               e.loaded.shells, e.loaded.instances, e.loaded.pack_bytes, e.loaded.file_bytes);
+        if (e.loaded.boxed_parts) {
+            print(con, "viewer: the model is larger than the memory: {} parts ({} faces) left out, drawn as their boxes\n",
+                  e.loaded.boxed_parts, e.loaded.boxed_faces);
+        }
         break;
     case Event::Kind::Pass: print(con, "@pass {} tolerance_um {}\n", e.pass.pass, um(e.pass.tolerance_mm)); break;
     case Event::Kind::Sampled: print(con, "@lod tolerance_um {} samples {}\n", um(e.pass.tolerance_mm), e.pass.samples); break;

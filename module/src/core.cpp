@@ -61,10 +61,13 @@ Result Core::load(const void* file, uint32_t file_bytes, void* memory, uint32_t 
     const bool decoding = kind != geom::PackFileKind::Pack && kind != geom::PackFileKind::Unknown;
     const uint32_t file_size = file ? geom::pack_file_bytes(file, file_bytes) : 0; // (a file in the pack memory is decoded over)
     uint8_t* model_end = end_;
-    if (Result r = place_pack(file, file_bytes, file_size, memory, memory_bytes, model_end); !r.ok()) return r;
+    // A blocked pack larger than the memory: its largest blocks, the rest as boxes.
+    const module::BlockCut cut =
+        kind == geom::PackFileKind::Blocked ? cut_blocks(file, file_bytes, file_size, memory, memory_bytes) : module::BlockCut{};
+    if (Result r = place_pack(file, file_bytes, file_size, cut, memory, memory_bytes, model_end); !r.ok()) return r;
     if (decoding) work(Event::Kind::WorkBegin, Work::Unpack, 0);
     module::Unpacked unpacked;
-    const Result decoded = module::unpack(file, file_bytes, memory, memory_bytes, unpacked);
+    const Result decoded = module::unpack(file, file_bytes, memory, memory_bytes, cut, unpacked);
     if (decoding) work(Event::Kind::WorkEnd, Work::Unpack, 0);
     if (!decoded.ok()) return decoded;
     if (Result r = module::open_unpacked(unpacked, scene_); !r.ok()) return r;
@@ -87,7 +90,7 @@ Result Core::load(const void* file, uint32_t file_bytes, void* memory, uint32_t 
     Event e{};
     e.kind = Event::Kind::Loaded;
     e.loaded = {scene_.face_count(), scene_.edge_count(), scene_.part_count(), uint32_t(scene_.instances().size()), bytes,
-                pack_file_bytes_};
+                pack_file_bytes_, scene_.left_out().parts, scene_.left_out().faces};
     emit(e);
     scheduler_.begin_pass(default_tolerance_);
     return {};

@@ -5,6 +5,7 @@
 #include "fit.h"
 #include "facet/viewer.h"
 #include "geom/measure.h"
+#include "loader.h"
 #include "painter.h"
 #include "presenter.h"
 #include "scene.h"
@@ -93,8 +94,12 @@ private:
     // load), the pack's decoded blocks at its end (end_) when load() is given no memory.
     uint8_t *model_start_ = nullptr, *end_ = nullptr;
     Result plan(uint32_t faces, uint32_t edges, uint8_t* end); // the model's arrays in [model_start_, end)
-    Result place_pack(const void* file, uint32_t file_bytes, uint32_t file_size, void*& memory, uint32_t& memory_bytes,
-                      uint8_t*& model_end) const;
+    // Where the pack memory goes (a blocked pack's blocks as `cut` keeps them).
+    Result place_pack(const void* file, uint32_t file_bytes, uint32_t file_size, const module::BlockCut& cut, void*& memory,
+                      uint32_t& memory_bytes, uint8_t*& model_end) const;
+    // A blocked pack larger than the memory: the blocks it keeps (the largest), so that their
+    // decoded packs and arrays fit with room to tessellate; the default (all) when all fit.
+    module::BlockCut cut_blocks(const void* file, uint32_t file_bytes, uint32_t file_size, void* memory, uint32_t memory_bytes) const;
     float default_tolerance_ = 0;
     // The level of detail the view asks for (detail.cpp): a face under kMinFacePixels across in
     // every instance of its part, or off the screen, is left to its edges until the view changes.

@@ -2,6 +2,7 @@
 
 #include "geom/pack_file.h"
 
+#include <cmath>
 #include <cstring>
 #include <new>
 
@@ -21,13 +22,16 @@ bool in_place(const geom::PackIndex& index, uint32_t b) {
     return geom::pack_file_kind(file.data(), uint32_t(file.size())) == geom::PackFileKind::Pack;
 }
 
-uint32_t blocked_need(const geom::PackIndex& index) {
+uint32_t blocked_need(const geom::PackIndex& index, const BlockCut& cut) {
     uint64_t n = table_bytes(uint32_t(index.blocks().size())) + geom::kLzmaStateBytes + 8;
-    for (uint32_t b = 0; b < index.blocks().size(); ++b) n += in_place(index, b) ? 0 : align4(index.blocks()[b].pack_bytes);
+    for (uint32_t b = 0; b < index.blocks().size(); ++b) {
+        if (kept(index, b, cut) && !in_place(index, b)) n += align4(index.blocks()[b].pack_bytes);
+    }
     return n > UINT32_MAX ? UINT32_MAX : uint32_t(n);
 }
 
-Result unpack_blocked(const uint8_t* in, uint32_t file_bytes, uint8_t* mem, uint32_t memory_bytes, bool inside, Unpacked& out) {
+Result unpack_blocked(const uint8_t* in, uint32_t file_bytes, uint8_t* mem, uint32_t memory_bytes, bool inside, const BlockCut& cut,
+                      Unpacked& out) {
     if (!mem || (reinterpret_cast<uintptr_t>(mem) & 7)) {
         return Result::fail(Status::Full, "a blocked pack needs 8-byte aligned pack memory", kFile);
     }
@@ -47,7 +51,7 @@ Result unpack_blocked(const uint8_t* in, uint32_t file_bytes, uint8_t* mem, uint
     geom::PackIndex& index = out.index;
     if (Result r = index.open(in, file_bytes); !r.ok()) return r;
     const uint32_t count = uint32_t(index.blocks().size());
-    const uint32_t need = blocked_need(index);
+    const uint32_t need = blocked_need(index, cut);
     const uint64_t have = uint64_t(end) + (memory_bytes - state_at);
     if (need > have) {
         return Result::fail(Status::Full, "the decoded blocks do not fit the pack memory", {"bytes needed", need});
@@ -59,6 +63,10 @@ Result unpack_blocked(const uint8_t* in, uint32_t file_bytes, uint8_t* mem, uint
     for (uint32_t b = 0; b < count; ++b) {
         const pack::Block& entry = index.blocks()[b];
         const Place here{"block", b};
+        if (!kept(index, b, cut)) {
+            table[b].left_out = true;
+            continue;
+        }
         if (in_place(index, b)) { // checked when it is opened
             table[b].data = index.block_file(b).data();
             continue;
@@ -80,13 +88,40 @@ Result unpack_blocked(const uint8_t* in, uint32_t file_bytes, uint8_t* mem, uint
 
 } // namespace
 
-uint32_t pack_memory_need(const void* file, uint32_t file_bytes) {
+float block_size(const pack::Block& b) {
+    float r2 = 0;
+    for (int k = 0; k < 3; ++k) {
+        const float e = b.box_max[k] - b.box_min[k];
+        if (!(e >= 0)) return 0; // empty
+        r2 += e * e;
+    }
+    return std::sqrt(r2);
+}
+
+bool kept(const geom::PackIndex& index, uint32_t b, const BlockCut& cut) {
+    if (cut.above <= 0) return true;
+    const float size = block_size(index.blocks()[b]);
+    return size >= cut.above || (size >= cut.from && b <= cut.through);
+}
+
+void kept_counts(const geom::PackIndex& index, const BlockCut& cut, uint32_t& faces, uint32_t& edges) {
+    faces = edges = 0;
+    for (uint32_t k = 0; k < index.blocks().size(); ++k) {
+        if (!kept(index, k, cut)) continue;
+        const pack::Block& b = index.blocks()[k];
+        for (uint32_t p = b.first_part; p < b.first_part + b.part_count; ++p) {
+            faces += index.parts()[p].face_count, edges += index.parts()[p].edge_count;
+        }
+    }
+}
+
+uint32_t pack_memory_need(const void* file, uint32_t file_bytes, const BlockCut& cut) {
     switch (geom::pack_file_kind(file, file_bytes)) {
     case geom::PackFileKind::Unknown: return 0;
     case geom::PackFileKind::Blocked: {
         geom::PackIndex index;
         if ((reinterpret_cast<uintptr_t>(file) & 3) || !index.open(file, file_bytes).ok()) return 0;
-        return blocked_need(index);
+        return blocked_need(index, cut);
     }
     case geom::PackFileKind::Pack: return (reinterpret_cast<uintptr_t>(file) & 3) ? file_bytes : 0;
     case geom::PackFileKind::Deflated:
@@ -95,7 +130,7 @@ uint32_t pack_memory_need(const void* file, uint32_t file_bytes) {
     return 0;
 }
 
-Result unpack(const void* file, uint32_t file_bytes, void* memory, uint32_t memory_bytes, Unpacked& out) {
+Result unpack(const void* file, uint32_t file_bytes, void* memory, uint32_t memory_bytes, const BlockCut& cut, Unpacked& out) {
     out = {};
     auto* mem = static_cast<uint8_t*>(memory);
     const auto* in = static_cast<const uint8_t*>(file);
@@ -109,7 +144,7 @@ Result unpack(const void* file, uint32_t file_bytes, void* memory, uint32_t memo
     case geom::PackFileKind::Unknown: return Result::fail(Status::Corrupt, "no pack here (neither FPK1, FPX1, FPZ1 nor FPB1)", kFile);
     case geom::PackFileKind::Blocked:
         if (stored == 0 || stored > file_bytes) return Result::fail(Status::Corrupt, "the blocked pack is longer than the bytes given, or truncated", kFile);
-        return unpack_blocked(in, stored, mem, memory_bytes, inside, out);
+        return unpack_blocked(in, stored, mem, memory_bytes, inside, cut, out);
     case geom::PackFileKind::Pack:
         bytes = stored;
         if (bytes == 0) return Result::fail(Status::Corrupt, "the pack is longer than the bytes given, or truncated", kFile);
@@ -149,6 +184,7 @@ Result open_unpacked(Unpacked& u, Scene& scene) {
         return scene.open(p);
     }
     for (uint32_t b = 0; b < u.blocks.size(); ++b) {
+        if (u.blocks[b].left_out) continue;
         const uint32_t bytes = u.index.blocks()[b].pack_bytes;
         if (in_place(u.index, b) && u.index.block_file(b).size() < bytes) {
             return Result::fail(Status::Corrupt, "a plain block is shorter than the index says", {"block", b});

@@ -10,8 +10,21 @@
 
 namespace facet::module {
 
-// The pack memory a file needs (facet::pack_memory_bytes()); 0 for one read in place, or unreadable.
-uint32_t pack_memory_need(const void* file, uint32_t file_bytes);
+// A model larger than the memory keeps its largest blocks (by their boxes' diagonals, mm; the
+// first of equal ones) and leaves the rest out (Block::left_out): those at least `above`
+// across, and those at least `from` across up to block `through`. The default keeps all.
+struct BlockCut {
+    float above = 0, from = 0;
+    uint32_t through = 0;
+};
+float block_size(const pack::Block& b);
+bool kept(const geom::PackIndex& index, uint32_t b, const BlockCut& cut);
+// Faces and edges of the blocks kept.
+void kept_counts(const geom::PackIndex& index, const BlockCut& cut, uint32_t& faces, uint32_t& edges);
+
+// The pack memory a file needs (facet::pack_memory_bytes()), with a blocked pack's blocks as
+// `cut` keeps them; 0 for one read in place, or unreadable.
+uint32_t pack_memory_need(const void* file, uint32_t file_bytes, const BlockCut& cut = {});
 
 // A pack file made readable: a whole pack's bytes, or a blocked pack's index and its blocks
 // decoded behind their table (each block's pack not yet opened).
@@ -24,8 +37,9 @@ struct Unpacked {
                                    // block read in place
 };
 
-// Decodes `file` into the pack memory as its form asks (the work a profile calls unpacking).
-Result unpack(const void* file, uint32_t file_bytes, void* memory, uint32_t memory_bytes, Unpacked& out);
+// Decodes `file` into the pack memory as its form asks (the work a profile calls unpacking); a
+// blocked pack's blocks `cut` does not keep are left out.
+Result unpack(const void* file, uint32_t file_bytes, void* memory, uint32_t memory_bytes, const BlockCut& cut, Unpacked& out);
 // Validates what unpack() made and opens it into the scene.
 Result open_unpacked(Unpacked& u, Scene& scene);
 

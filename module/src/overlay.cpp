@@ -175,8 +175,11 @@ void Overlay::status(const render::Target& t, const StatusInfo& s) const {
     for (const char* c = s.name; *c && k < 16; ++c)
         if ((uint8_t(*c) & 0xC0) != 0x80) name[k++] = *c; // a UTF-8 character's first byte only
     name[k] = 0;
-    format(text, sizeof text, "{}{}faces {}/{}  {} tri  lod {} mm  {}  {}", name, k ? "  " : "", s.finished, s.total, s.triangles,
-           fixed(tol, 3), mode_name(s.mode), s.ortho ? "parallel" : "persp");
+    // A model larger than the memory: "faces 900/900 +4100 boxed" (the parts left out).
+    char boxed[24] = "";
+    if (s.boxed_faces) format(boxed, sizeof boxed, " +{} boxed", s.boxed_faces);
+    format(text, sizeof text, "{}{}faces {}/{}{}  {} tri  lod {} mm  {}  {}", name, k ? "  " : "", s.finished, s.total, boxed,
+           s.triangles, fixed(tol, 3), mode_name(s.mode), s.ortho ? "parallel" : "persp");
     const TimeField f = time_field();
     const int32_t room = (f.x0 - 6 - 3) / render::kCellWidth; // characters before the field
     if (room < int32_t(sizeof text)) text[room > 0 ? room : 0] = 0;

@@ -108,7 +108,7 @@ bool Presenter::full_pieces(uint32_t units) {
         }
         const Transform& t = job_.transform;
         const Rows rows = painter_.rows(t);
-        if (job_.boxes) {
+        if (job_.boxes || scene_.part_left_out(instances[job_.instance].shell)) { // (a part left out: always its box)
             spent += painter_.part_box(instances[job_.instance].shell, t);
             ++job_.instance;
             job_.have_transform = false;
@@ -261,7 +261,7 @@ void Presenter::run_piece(uint32_t units, uint32_t pass) {
         s.name = scene_.model_name();
         // (A sweep's faces count again as they come in: the bar never shows more than all.)
         s.total = scene_.totals().faces, s.finished = job_.finished < s.total ? job_.finished : s.total;
-        s.triangles = scene_.totals().triangles;
+        s.triangles = scene_.totals().triangles, s.boxed_faces = scene_.left_out().faces;
         s.frame_us = last_frame_us_, s.tolerance_mm = tolerance_mm_, s.mode = painter_.mode(), s.ortho = camera_.view().ortho;
         overlay_.draw(raster_.target(), s);
         job_.stage = Job::Stage::Flush;

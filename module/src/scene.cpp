@@ -19,6 +19,7 @@ Result Scene::open(const geom::Pack& pack) {
     whole_ = {pack, 0, 0, 0, nullptr, 0, 0};
     blocks_ = {&whole_, 1};
     blocked_ = false;
+    left_out_ = {};
     instances_ = pack.instances();
     faces_ = uint32_t(pack.faces().size()), edges_ = uint32_t(pack.edges().size()), parts_ = uint32_t(pack.shells().size());
     const pack::Header& h = pack.header();
@@ -34,27 +35,34 @@ Result Scene::open(const geom::PackIndex& index, std::span<Block> blocks) {
         return Result::fail(Status::OutOfRange, "the blocks given are not the index's");
     }
     uint32_t faces = 0, edges = 0;
+    left_out_ = {};
     for (uint32_t k = 0; k < 3; ++k) box_min_[k] = INFINITY, box_max_[k] = -INFINITY;
     for (uint32_t b = 0; b < blocks.size(); ++b) {
         const pack::Block& entry = index.blocks()[b];
         Block& block = blocks[b];
         const geom::Pack& p = block.pack;
         const Place here{"block", b};
-        if (p.shells().size() != entry.part_count) return Result::fail(Status::Corrupt, "its shells are not its parts", here);
         block.first_face = faces, block.first_edge = edges, block.first_part = entry.first_part;
+        if (block.left_out) ++left_out_.blocks;
+        else if (p.shells().size() != entry.part_count) return Result::fail(Status::Corrupt, "its shells are not its parts", here);
         uint32_t block_edges = 0;
         for (uint32_t s = 0; s < entry.part_count; ++s) {
             const pack::Part& part = parts[entry.first_part + s];
+            for (int k = 0; k < 3; ++k) {
+                box_min_[k] = part.box_min[k] < box_min_[k] ? part.box_min[k] : box_min_[k];
+                box_max_[k] = part.box_max[k] > box_max_[k] ? part.box_max[k] : box_max_[k];
+            }
+            if (block.left_out) { // no faces, no edges: its parts are boxes
+                ++left_out_.parts, left_out_.faces += part.face_count;
+                continue;
+            }
             const pack::Shell& shell = p.shells()[s];
             if (shell.face_count != part.face_count || (shell.closed != 0) != (part.closed != 0)) {
                 return Result::fail(Status::Corrupt, "a shell is not its part of the index", here);
             }
             block_edges += part.edge_count;
-            for (int k = 0; k < 3; ++k) {
-                box_min_[k] = part.box_min[k] < box_min_[k] ? part.box_min[k] : box_min_[k];
-                box_max_[k] = part.box_max[k] > box_max_[k] ? part.box_max[k] : box_max_[k];
-            }
         }
+        if (block.left_out) continue;
         if (block_edges != p.edges().size() || p.faces().size() != p.shells().back().first_face + p.shells().back().face_count) {
             return Result::fail(Status::Corrupt, "its faces or edges are not its parts'", here);
         }
@@ -102,6 +110,7 @@ Result Scene::attach(const Memory& memory) {
 Part Scene::part(uint32_t s) const {
     const uint32_t b = find(s, &Block::first_part);
     const Block& block = blocks_[b];
+    if (block.left_out) return {block.first_face, 0, b, index_.parts()[s].closed != 0};
     const pack::Shell& shell = block.pack.shells()[s - block.first_part];
     return {block.first_face + shell.first_face, shell.face_count, b, shell.closed != 0};
 }
@@ -169,6 +178,10 @@ bool Scene::part_edges(uint32_t s, uint32_t& first, uint32_t& count) const {
     const Part p = part(s);
     const Block& block = blocks_[p.block];
     first = block.first_edge;
+    if (block.left_out) { // none held
+        count = 0;
+        return true;
+    }
     for (uint32_t k = block.first_part; k < s; ++k) first += index_.parts()[k].edge_count;
     count = index_.parts()[s].edge_count;
     return true;
@@ -205,7 +218,11 @@ bool Scene::bound(uint32_t points) {
         const Part part = this->part(b.part);
         const Block& block = blocks_[part.block];
         const geom::Pack& pack = block.pack;
-        if (!b.in_part) b.face = part.first_face, b.box = {}, b.in_part = true;
+        if (!b.in_part) {
+            b.face = part.first_face, b.box = {}, b.in_part = true;
+            Box box;
+            if (block.left_out && part_box(b.part, box.lo, box.hi)) b.box = box;
+        }
         for (; b.face < part.first_face + part.face_count; ++b.face) {
             if (points == 0) return false;
             const FaceInfo& info = mem_.faces[b.face];

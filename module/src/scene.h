@@ -56,6 +56,9 @@ struct Block {
     // A refinement it could not make (no room for its samples or its mesh): not tried again
     // until the view changes or a new pass begins.
     bool refused = false;
+    // Left out of a model larger than the memory (loader.h): not decoded, no faces or edges;
+    // its parts are drawn as their boxes.
+    bool left_out = false;
 };
 
 // A part (a shell): its faces in the model's numbering, and its block.
@@ -116,6 +119,13 @@ public:
     // a whole pack (its parts' boxes are known once its edges are sampled).
     bool part_box(uint32_t part, int32_t lo[3], int32_t hi[3]) const;
     bool blocked() const { return blocked_; } // a blocked pack: its index has the parts' boxes
+    // What a model larger than the memory left out (its blocks not decoded, loader.h): its
+    // parts are drawn as their boxes.
+    struct LeftOut {
+        uint32_t blocks = 0, parts = 0, faces = 0;
+    };
+    const LeftOut& left_out() const { return left_out_; }
+    bool part_left_out(uint32_t s) const { return blocked_ && blocks_[find(s, &Block::first_part)].left_out; }
     // A part's edges in the model's numbering, each once, where they are known to be together:
     // a blocked pack's part (its block's edges are its parts' in order), or a whole pack's only
     // part. False otherwise.
@@ -231,6 +241,7 @@ private:
     }
 
     Memory mem_{};
+    LeftOut left_out_;
     Block whole_;                 // a whole pack's one block
     std::span<Block> blocks_;     // whole_, or a blocked pack's
     geom::PackIndex index_;       // a blocked pack's

@@ -15,6 +15,8 @@ namespace {
 using module::Array;
 using module::Carver;
 
+constexpr uint32_t kSamplesPerEdge = 6, kVerticesPerFace = 24; // the room a part opened from a model larger than the memory has
+
 constexpr size_t core_bytes() { return (sizeof(Core) + 15) / 16 * 16; }
 
 // The workspace a capacity takes: the Core, then its arrays.
@@ -126,8 +128,7 @@ Result model_needs(const void* file, uint32_t file_bytes, ModelNeeds& needs) {
     // (+ the alignment the base's end and the model's arrays may lose, to 8 bytes)
     needs.least_workspace_bytes = (base + module::plan_model(needs.faces, needs.edges, 0, Capacity{}).need + 64 + 7) / 8 * 8;
     // Room for six samples an edge (the default detail takes two to four, finer up to twice that).
-    const size_t roomy = base + module::model_bytes({needs.faces, needs.edges, 0, 0, 0}) + 64 +
-                         module::sample_share_room(6 * size_t(needs.edges));
+    const size_t roomy = base + module::model_room_bytes(needs.faces, needs.edges, 6, 0);
     needs.workspace_bytes = std::max(roomy, needs.least_workspace_bytes);
     return {};
 }
@@ -154,13 +155,13 @@ Core::Core(const Config& config, Carver& k, uint8_t* end)
 
 // Without pack memory of its own, the pack takes the workspace's end: what it decodes to, and
 // the file itself when it lies there (the model's arrays come before both: up to model_end).
-Result Core::place_pack(const void* file, uint32_t file_bytes, uint32_t file_size, void*& memory, uint32_t& memory_bytes,
-                        uint8_t*& model_end) const {
+Result Core::place_pack(const void* file, uint32_t file_bytes, uint32_t file_size, const module::BlockCut& cut, void*& memory,
+                        uint32_t& memory_bytes, uint8_t*& model_end) const {
     model_end = end_;
     const auto* in = static_cast<const uint8_t*>(file);
     const bool file_inside = in && in >= model_start_ && in < end_;
     if (!memory) {
-        uint32_t need = file ? module::pack_memory_need(file, file_bytes) : 0;
+        uint32_t need = file ? module::pack_memory_need(file, file_bytes, cut) : 0;
         if (need && file_inside) need += file_size + 8; // decoded in front of it (moved to 8-byte alignment)
         uintptr_t start = need <= uintptr_t(end_ - model_start_) ? (reinterpret_cast<uintptr_t>(end_) - need) & ~uintptr_t(7) : 0;
         if (file_inside) start = std::min(start, reinterpret_cast<uintptr_t>(in) & ~uintptr_t(7));
@@ -175,6 +176,42 @@ Result Core::place_pack(const void* file, uint32_t file_bytes, uint32_t file_siz
         model_end = reinterpret_cast<uint8_t*>(reinterpret_cast<uintptr_t>(in) & ~uintptr_t(7));
     }
     return {};
+}
+
+// The largest blocks that fit: decoded where place_pack() puts them, and their arrays in the
+// room left with room for their meshes (kVerticesPerFace: the distinct 10 k-face assembly's
+// takes about 5.5 a face at its fitted view; the whole model needs only the least that opens it). By bisection: on the size above which all are kept, then on
+// the last block kept among those of the next size (copies of a part have equal boxes).
+module::BlockCut Core::cut_blocks(const void* file, uint32_t file_bytes, uint32_t file_size, void* memory, uint32_t memory_bytes) const {
+    geom::PackIndex index;
+    if ((reinterpret_cast<uintptr_t>(file) & 3) || !index.open(file, file_bytes).ok()) return {}; // (load() says why)
+    auto fits = [&](const module::BlockCut& cut) {
+        void* mem = memory;
+        uint32_t mem_bytes = memory_bytes;
+        uint8_t* model_end = nullptr;
+        if (!place_pack(file, file_bytes, file_size, cut, mem, mem_bytes, model_end).ok()) return false;
+        if (memory && module::pack_memory_need(file, file_bytes, cut) > memory_bytes) return false;
+        uint32_t faces, edges;
+        module::kept_counts(index, cut, faces, edges);
+        const size_t room = model_end > model_start_ ? size_t(model_end - model_start_) : 0;
+        return module::plan_model(faces, edges, room, config_.capacity).fits &&
+               (cut.above <= 0 || room >= module::model_room_bytes(faces, edges, kSamplesPerEdge, kVerticesPerFace));
+    };
+    if (fits({})) return {}; // the whole model
+    float lo = 0, hi = 0; // lo: too many kept; hi: fits
+    for (const pack::Block& b : index.blocks()) hi = std::max(hi, module::block_size(b));
+    hi = hi * 1.001f + 1e-6f;
+    for (int k = 0; k < 40 && hi - lo > hi * 1e-4f; ++k) {
+        const float mid = 0.5f * (lo + hi);
+        (fits({mid, mid, 0}) ? hi : lo) = mid;
+    }
+    // The blocks between lo and hi across (equal ones): the first of them, as many as fit.
+    uint32_t none = 0, some = uint32_t(index.blocks().size()); // `none` kept through block none - 1 fits
+    while (some - none > 1) {
+        const uint32_t mid = (none + some) / 2;
+        (fits({hi, lo, mid - 1}) ? none : some) = mid;
+    }
+    return none ? module::BlockCut{hi, lo, none - 1} : module::BlockCut{hi, hi, 0};
 }
 
 Result Core::plan(uint32_t faces, uint32_t edges, uint8_t* end) {

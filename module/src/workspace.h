@@ -146,6 +146,16 @@ constexpr ModelPlan plan_model(uint32_t faces, uint32_t edges, size_t room, cons
     return p;
 }
 
+// The model's arrays with `per_edge` samples an edge (the default detail takes two to four,
+// finer up to twice that) and the mesh's share of the room beside them, and room for
+// `per_face` mesh vertices a face (and 256 more: a sphere of two faces takes about 180 at the
+// default detail), whichever is more.
+constexpr size_t model_room_bytes(uint32_t faces, uint32_t edges, uint32_t per_edge, uint32_t per_face) {
+    const size_t for_samples = sample_share_room(size_t(per_edge) * edges + 2);
+    const size_t for_mesh = per_face ? ((size_t(per_face) * faces + 256) * sizeof(DrawVertex) * 100 + kVertexShare - 1) / kVertexShare : 0;
+    return model_bytes({faces, edges, 0, 0, 0}) + 64 + (for_samples > for_mesh ? for_samples : for_mesh);
+}
+
 // Cuts caller memory in order, each piece at its alignment; past the end it hands out nothing
 // and fits() turns false.
 class Carver {

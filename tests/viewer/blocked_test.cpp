@@ -4,6 +4,7 @@
 // memory too small, a corrupt block or a misplaced file gets a clear refusal.
 #include "../geom/shapes.h"
 #include "app.h"
+#include "loader.h"
 #include "pack_blocks.h"
 
 #include <array>
@@ -439,4 +440,99 @@ TEST(Blocked, AFullMeshEvictsWhatTheViewNoLongerShowsToRefineWhatItDoes) {
         if (!whole(scene, s)) continue;
         EXPECT_EQ(open_sides(scene, s), 0u) << "part " << s << ", back";
     }
+}
+
+// A model larger than the memory (issue 25): with no room for every block's decoded pack and
+// arrays, the largest parts (by their boxes) are opened and the rest left out, drawn as their
+// boxes; the Loaded event says what was left out, the parts shown are whole and watertight, and
+// the view turns and zooms over both. With the room, nothing is left out.
+TEST(Blocked, AModelLargerThanTheMemoryShowsItsLargestPartsAndTheRestAsBoxes) {
+    // Three copies of the four shapes (copies have equal boxes: the first of them is opened first).
+    const Bytes shapes[] = {plate_with_holes(), sphere(), torus(), trimmed_bspline()};
+    constexpr uint32_t kParts = 12;
+    std::vector<Pack> packs(kParts);
+    for (uint32_t k = 0; k < kParts; ++k) ASSERT_TRUE(packs[k].open(shapes[k % 4].data(), uint32_t(shapes[k % 4].size())).ok());
+    Pack whole_pack;
+    const Bytes combined = combine_packs(packs, 150.0f);
+    ASSERT_TRUE(whole_pack.open(combined.data(), uint32_t(combined.size())).ok());
+    Bytes file;
+    std::string error;
+    ASSERT_TRUE(make_blocked(whole_pack, {}, {1, BlockStore::Lzma}, file, error)) << error; // a part a block, its own box
+    std::vector<uint64_t> in(file.size() / 8 + 1);
+    std::memcpy(in.data(), file.data(), file.size());
+    geom::PackIndex index;
+    ASSERT_TRUE(index.open(in.data(), uint32_t(file.size())).ok());
+    uint32_t largest = 0; // the first part with the largest box
+    for (uint32_t b = 0; b < index.blocks().size(); ++b) {
+        if (module::block_size(index.blocks()[b]) > module::block_size(index.blocks()[largest])) largest = b;
+    }
+    ASSERT_LT(largest, 4u);
+    ModelNeeds needs;
+    ASSERT_TRUE(model_needs(in.data(), uint32_t(file.size()), needs).ok());
+    // Workspaces from what opens the whole model down, until none opens even the index: each
+    // that leaves parts out (some or all of them) checked.
+    const size_t base = workspace_bytes();
+    bool some_opened = false, all_boxed = false;
+    for (size_t room = needs.least_workspace_bytes + needs.pack_memory_bytes - base; room > 1024; room = room * 31 / 32) {
+        App app;
+        app.w = 320, app.h = 240;
+        app.workspace_size = base + room;
+        ASSERT_TRUE(app.create().ok());
+        const Result r = app.v->load(in.data(), uint32_t(file.size())); // the pack memory at the workspace's end
+        if (!r.ok()) {
+            EXPECT_EQ(r.status, Status::Full) << text(r);
+            EXPECT_NE(text(r).find("bytes needed"), std::string::npos) << text(r);
+            break;
+        }
+        const Event* loaded = app.last(Event::Kind::Loaded);
+        ASSERT_NE(loaded, nullptr);
+        EXPECT_EQ(loaded->loaded.faces + loaded->loaded.boxed_faces, needs.faces) << "every face held or boxed";
+        if (loaded->loaded.boxed_parts == 0) continue; // still the whole model
+        const bool some = loaded->loaded.boxed_parts < kParts;
+        some_opened = some_opened || some, all_boxed = all_boxed || !some;
+        app.run();
+        const Core& core = *static_cast<const Core*>(app.v);
+        const module::Scene& scene = core.scene();
+        if (some) {
+            EXPECT_FALSE(scene.block(largest).left_out) << "the largest part is opened first";
+        }
+        // Each part opened has room for about 24 mesh vertices a face: these shapes' dense faces
+        // (a torus or a patch of hundreds) may not all fit. A face that does not is said so and
+        // keeps its edges; nothing else fails.
+        uint32_t full = 0;
+        for (const Event& e : app.events) {
+            if (e.kind == Event::Kind::PassFailed) ADD_FAILURE() << text(e.why);
+            if (e.kind != Event::Kind::FaceFailed) continue;
+            EXPECT_EQ(e.why.status, Status::Full) << text(e.why);
+            EXPECT_NE(text(e.why).find("mesh is full"), std::string::npos) << text(e.why);
+            ++full;
+        }
+        EXPECT_EQ(app.v->stats().failed, full);
+        EXPECT_EQ(app.v->stats().done + app.v->stats().deferred + app.v->stats().failed, app.v->stats().faces);
+        for (uint32_t s = 0; s < scene.part_count(); ++s) {
+            EXPECT_EQ(scene.part_left_out(s), scene.block(scene.part(s).block).left_out);
+            if (scene.part_left_out(s)) {
+                EXPECT_EQ(scene.part(s).face_count, 0u);
+            } else if (whole(scene, s)) {
+                EXPECT_EQ(open_sides(scene, s), 0u) << "part " << s;
+            }
+        }
+        uint32_t box_pixels = 0;
+        for (Rgb565 p : app.screen()) box_pixels += p == rgb565(96, 104, 128);
+        EXPECT_GT(box_pixels, 100u) << "the parts left out drawn as boxes";
+        for (Action a : {Action::TurnLeft, Action::TiltUp, Action::ZoomIn, Action::ZoomIn, Action::Fit}) {
+            app.v->act(a);
+            app.run();
+        }
+        EXPECT_EQ(app.v->stats().done + app.v->stats().deferred + app.v->stats().failed, app.v->stats().faces);
+    }
+    EXPECT_TRUE(some_opened) << "a workspace that opens the largest parts and leaves the rest out";
+    EXPECT_TRUE(all_boxed) << "a workspace that opens only the index: every part a box";
+    // With the room the whole model needs: nothing left out.
+    App app;
+    app.w = 320, app.h = 240;
+    app.workspace_size = needs.workspace_bytes + needs.pack_memory_bytes;
+    ASSERT_TRUE(app.create().ok());
+    ASSERT_TRUE(app.v->load(in.data(), uint32_t(file.size())).ok());
+    EXPECT_EQ(app.last(Event::Kind::Loaded)->loaded.boxed_parts, 0u);
 }

@@ -77,7 +77,7 @@ typedef enum { FACET_WORK_UNPACK, FACET_WORK_SAMPLING, FACET_WORK_FACE, FACET_WO
 typedef struct {
     facet_event_kind kind;
     union {
-        struct { uint32_t faces, edges, shells, instances, pack_bytes, file_bytes; } loaded;
+        struct { uint32_t faces, edges, shells, instances, pack_bytes, file_bytes, boxed_parts, boxed_faces; } loaded;
         struct { uint32_t pass; float tolerance_mm; uint32_t samples; } pass;
         struct { uint32_t done, failed, total, triangles; } progress;
         struct { uint32_t face; } failed;

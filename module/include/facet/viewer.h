@@ -82,7 +82,7 @@ enum class Work : uint8_t { Unpack, Sampling, Face, Frame, Update, Fit, Overlay 
 
 struct Event {
     enum class Kind : uint8_t {
-        Loaded,          // a pack was validated: counts
+        Loaded,          // a pack was validated: counts (a model larger than the memory: its parts left out, as boxes)
         Pass,            // a level of detail begins (the first one at load): tolerance
         Sampled,         // its edges are sampled: samples
         Progress,        // a face was tessellated (or failed): counts
@@ -97,7 +97,7 @@ struct Event {
         WorkEnd,
     } kind;
     union {
-        struct { uint32_t faces, edges, shells, instances, pack_bytes, file_bytes; } loaded;
+        struct { uint32_t faces, edges, shells, instances, pack_bytes, file_bytes, boxed_parts, boxed_faces; } loaded; // boxed: left out
         struct { uint32_t pass; float tolerance_mm; uint32_t samples; } pass;     // Pass, Sampled
         struct { uint32_t done, failed, total, triangles; } progress;
         struct { uint32_t face; } failed;
