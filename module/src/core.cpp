@@ -64,7 +64,8 @@ Result Core::load(const void* file, uint32_t file_bytes, void* memory, uint32_t 
     // A blocked pack larger than the memory: its largest blocks, the rest as boxes.
     const module::BlockCut cut =
         kind == geom::PackFileKind::Blocked ? cut_blocks(file, file_bytes, file_size, memory, memory_bytes) : module::BlockCut{};
-    if (Result r = place_pack(file, file_bytes, file_size, cut, memory, memory_bytes, model_end); !r.ok()) return r;
+    const uint32_t need = file ? module::pack_memory_need(file, file_bytes, cut) : 0;
+    if (Result r = place_pack(file, file_size, need, memory, memory_bytes, model_end); !r.ok()) return r;
     if (decoding) work(Event::Kind::WorkBegin, Work::Unpack, 0);
     module::Unpacked unpacked;
     const Result decoded = module::unpack(file, file_bytes, memory, memory_bytes, cut, unpacked);

@@ -94,9 +94,9 @@ private:
     // load), the pack's decoded blocks at its end (end_) when load() is given no memory.
     uint8_t *model_start_ = nullptr, *end_ = nullptr;
     Result plan(uint32_t faces, uint32_t edges, uint8_t* end); // the model's arrays in [model_start_, end)
-    // Where the pack memory goes (a blocked pack's blocks as `cut` keeps them).
-    Result place_pack(const void* file, uint32_t file_bytes, uint32_t file_size, const module::BlockCut& cut, void*& memory,
-                      uint32_t& memory_bytes, uint8_t*& model_end) const;
+    // Where the pack memory goes: `need` bytes (pack_memory_need()).
+    Result place_pack(const void* file, uint32_t file_size, uint32_t need, void*& memory, uint32_t& memory_bytes,
+                      uint8_t*& model_end) const;
     // A blocked pack larger than the memory: the blocks it keeps (the largest), so that their
     // decoded packs and arrays fit with room to tessellate; the default (all) when all fit.
     module::BlockCut cut_blocks(const void* file, uint32_t file_bytes, uint32_t file_size, void* memory, uint32_t memory_bytes) const;

@@ -115,6 +115,8 @@ void kept_counts(const geom::PackIndex& index, const BlockCut& cut, uint32_t& fa
     }
 }
 
+uint32_t pack_memory_need(const geom::PackIndex& index, const BlockCut& cut) { return blocked_need(index, cut); }
+
 uint32_t pack_memory_need(const void* file, uint32_t file_bytes, const BlockCut& cut) {
     switch (geom::pack_file_kind(file, file_bytes)) {
     case geom::PackFileKind::Unknown: return 0;

@@ -25,6 +25,7 @@ void kept_counts(const geom::PackIndex& index, const BlockCut& cut, uint32_t& fa
 // The pack memory a file needs (facet::pack_memory_bytes()), with a blocked pack's blocks as
 // `cut` keeps them; 0 for one read in place, or unreadable.
 uint32_t pack_memory_need(const void* file, uint32_t file_bytes, const BlockCut& cut = {});
+uint32_t pack_memory_need(const geom::PackIndex& index, const BlockCut& cut); // a blocked pack's, from its index
 
 // A pack file made readable: a whole pack's bytes, or a blocked pack's index and its blocks
 // decoded behind their table (each block's pack not yet opened).

@@ -155,13 +155,12 @@ Core::Core(const Config& config, Carver& k, uint8_t* end)
 
 // Without pack memory of its own, the pack takes the workspace's end: what it decodes to, and
 // the file itself when it lies there (the model's arrays come before both: up to model_end).
-Result Core::place_pack(const void* file, uint32_t file_bytes, uint32_t file_size, const module::BlockCut& cut, void*& memory,
-                        uint32_t& memory_bytes, uint8_t*& model_end) const {
+Result Core::place_pack(const void* file, uint32_t file_size, uint32_t need, void*& memory, uint32_t& memory_bytes,
+                        uint8_t*& model_end) const {
     model_end = end_;
     const auto* in = static_cast<const uint8_t*>(file);
     const bool file_inside = in && in >= model_start_ && in < end_;
     if (!memory) {
-        uint32_t need = file ? module::pack_memory_need(file, file_bytes, cut) : 0;
         if (need && file_inside) need += file_size + 8; // decoded in front of it (moved to 8-byte alignment)
         uintptr_t start = need <= uintptr_t(end_ - model_start_) ? (reinterpret_cast<uintptr_t>(end_) - need) & ~uintptr_t(7) : 0;
         if (file_inside) start = std::min(start, reinterpret_cast<uintptr_t>(in) & ~uintptr_t(7));
@@ -189,8 +188,9 @@ module::BlockCut Core::cut_blocks(const void* file, uint32_t file_bytes, uint32_
         void* mem = memory;
         uint32_t mem_bytes = memory_bytes;
         uint8_t* model_end = nullptr;
-        if (!place_pack(file, file_bytes, file_size, cut, mem, mem_bytes, model_end).ok()) return false;
-        if (memory && module::pack_memory_need(file, file_bytes, cut) > memory_bytes) return false;
+        const uint32_t need = module::pack_memory_need(index, cut);
+        if (!place_pack(file, file_size, need, mem, mem_bytes, model_end).ok()) return false;
+        if (memory && need > memory_bytes) return false;
         uint32_t faces, edges;
         module::kept_counts(index, cut, faces, edges);
         const size_t room = model_end > model_start_ ? size_t(model_end - model_start_) : 0;
