@@ -57,11 +57,10 @@ bool Framer::run(const Scene& scene, Camera& camera, uint32_t units) {
             edge_ = first, edge_end_ = first + count;
             curved_only_ = false;
             budget = budget > 32 ? budget - 32 : 0;
-            int32_t lo[3], hi[3];
+            int32_t corners[8][3];
             if (scene.part_left_out(instances[instance_].shell)) { // a part left out (drawn as its box): its box's corners
-                if (scene.part_box(instances[instance_].shell, lo, hi)) {
-                    for (int c = 0; c < 8; ++c) {
-                        const int32_t q[3] = {c & 1 ? hi[0] : lo[0], c & 2 ? hi[1] : lo[1], c & 4 ? hi[2] : lo[2]};
+                if (scene.part_corners(instances[instance_].shell, corners)) {
+                    for (const int32_t* q : corners) {
                         t_.project(q, p);
                         o_.add(p);
                     }

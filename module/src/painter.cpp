@@ -301,13 +301,10 @@ bool Painter::waiting_plane_hidden(uint32_t f, const Transform& t) const {
 }
 
 uint32_t Painter::part_box(uint32_t part, const Transform& t) {
-    int32_t lo[3], hi[3];
-    if (!scene_.part_box(part, lo, hi)) return 1;
+    int32_t at[8][3];
+    if (!scene_.part_corners(part, at)) return 1;
     Projected corner[8];
-    for (int c = 0; c < 8; ++c) {
-        const int32_t p[3] = {c & 1 ? hi[0] : lo[0], c & 2 ? hi[1] : lo[1], c & 4 ? hi[2] : lo[2]};
-        t.project(p, corner[c]);
-    }
+    for (int c = 0; c < 8; ++c) t.project(at[c], corner[c]);
     for (int c = 0; c < 8; ++c) { // each corner to the ones one bit up: the twelve sides
         for (int bit = 1; bit < 8; bit <<= 1) {
             if (c & bit) continue;

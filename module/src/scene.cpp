@@ -169,6 +169,14 @@ bool Scene::part_box(uint32_t s, int32_t lo[3], int32_t hi[3]) const {
     return true;
 }
 
+bool Scene::part_corners(uint32_t s, int32_t corners[8][3]) const {
+    int32_t lo[3], hi[3];
+    if (!part_box(s, lo, hi)) return false;
+    for (int c = 0; c < 8; ++c)
+        for (int k = 0; k < 3; ++k) corners[c][k] = (c >> k) & 1 ? hi[k] : lo[k];
+    return true;
+}
+
 bool Scene::part_edges(uint32_t s, uint32_t& first, uint32_t& count) const {
     if (!blocked_) {
         first = 0, count = edges_;

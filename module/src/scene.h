@@ -118,6 +118,8 @@ public:
     // A part's box in its own coordinates (mesh units), from a blocked pack's index; false for
     // a whole pack (its parts' boxes are known once its edges are sampled).
     bool part_box(uint32_t part, int32_t lo[3], int32_t hi[3]) const;
+    // Its eight corners, corner c taking hi along the axes of c's bits (x 1, y 2, z 4).
+    bool part_corners(uint32_t part, int32_t corners[8][3]) const;
     bool blocked() const { return blocked_; } // a blocked pack: its index has the parts' boxes
     // What a model larger than the memory left out (its blocks not decoded, loader.h): its
     // parts are drawn as their boxes.

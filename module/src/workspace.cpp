@@ -15,7 +15,10 @@ namespace {
 using module::Array;
 using module::Carver;
 
-constexpr uint32_t kSamplesPerEdge = 6, kVerticesPerFace = 24; // the room a part opened from a model larger than the memory has
+// Room to refine the default detail: six samples an edge (it takes two to four, finer up to
+// twice that); and for a part opened from a model larger than the memory, 24 mesh vertices a
+// face beside them (the distinct 10 k-face assembly takes about 5.5 at its fitted view).
+constexpr uint32_t kSamplesPerEdge = 6, kVerticesPerFace = 24;
 
 constexpr size_t core_bytes() { return (sizeof(Core) + 15) / 16 * 16; }
 
@@ -127,8 +130,7 @@ Result model_needs(const void* file, uint32_t file_bytes, ModelNeeds& needs) {
     const size_t base = layout_bytes(Capacity{});
     // (+ the alignment the base's end and the model's arrays may lose, to 8 bytes)
     needs.least_workspace_bytes = (base + module::plan_model(needs.faces, needs.edges, 0, Capacity{}).need + 64 + 7) / 8 * 8;
-    // Room for six samples an edge (the default detail takes two to four, finer up to twice that).
-    const size_t roomy = base + module::model_room_bytes(needs.faces, needs.edges, 6, 0);
+    const size_t roomy = base + module::model_room_bytes(needs.faces, needs.edges, kSamplesPerEdge, 0);
     needs.workspace_bytes = std::max(roomy, needs.least_workspace_bytes);
     return {};
 }
@@ -178,9 +180,10 @@ Result Core::place_pack(const void* file, uint32_t file_size, uint32_t need, voi
 }
 
 // The largest blocks that fit: decoded where place_pack() puts them, and their arrays in the
-// room left with room for their meshes (kVerticesPerFace: the distinct 10 k-face assembly's
-// takes about 5.5 a face at its fitted view; the whole model needs only the least that opens it). By bisection: on the size above which all are kept, then on
-// the last block kept among those of the next size (copies of a part have equal boxes).
+// room left with room for their samples and meshes (kSamplesPerEdge, kVerticesPerFace; the
+// whole model needs only the least that opens it). By bisection: on the size above which all
+// are kept, then on the last block kept among those of the next size (copies of a part have
+// equal boxes).
 module::BlockCut Core::cut_blocks(const void* file, uint32_t file_bytes, uint32_t file_size, void* memory, uint32_t memory_bytes) const {
     geom::PackIndex index;
     if ((reinterpret_cast<uintptr_t>(file) & 3) || !index.open(file, file_bytes).ok()) return {}; // (load() says why)
