@@ -98,6 +98,11 @@ struct Transform {
     // Whether a sphere (mesh units) may touch the rows: false only when it lies wholly behind
     // the near plane or beyond one side of the view volume (conservative).
     bool visible(const int32_t centre[3], int32_t radius, Rows rows) const;
+    // Where a sphere lies: wholly outside the view volume or the rows (as !visible), wholly
+    // inside them (in front of the near plane and within every side: what it holds needs no
+    // test of its own), or across a side. Conservative both ways: Across when unsure.
+    enum class Sight : uint8_t { Out, Across, In };
+    Sight sight(const int32_t centre[3], int32_t radius, Rows rows) const;
     // n . (eye - p) for a normal n (Q14) at the mesh point p, in shell coordinates: > 0 where
     // the surface looks at the eye, < 0 where it turns away (parallel: n . the way to the eye).
     int64_t facing(const int32_t p[3], const int16_t n[3]) const {

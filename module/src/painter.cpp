@@ -17,6 +17,10 @@ constexpr uint32_t kPicked = 0x00C830FFu;   // the picked face (B, G, R bytes: m
 constexpr uint32_t kPicked2 = 0x00FFD020u;  // the second one (measuring: cyan)
 constexpr uint32_t kCap = 0x003C46CDu;      // the inside of a cut solid (a section): brick red
 constexpr uint8_t kCapShade = 255;          // drawn flat, in that colour
+// A face left untessellated for its size (detail.cpp: under 2 pixels across) and under this
+// across now is drawn as a speck, not as its edges.
+constexpr int32_t kSpeckPixels = 3;
+constexpr uint8_t kSpeckShade = 200;        // a speck in the face's colour: lit about halfway
 
 // X / d for d >= 1, to about 2^-15 relative, without dividing (render/fixed.h).
 inline int32_t divide(int64_t x, int32_t d) { return render::divide(x, render::reciprocal(uint32_t(d))); }
@@ -80,8 +84,10 @@ void Painter::background() {
     }
 }
 
-void Painter::reset_edges() {
-    for (uint8_t& drawn : mem_.edge_drawn.first(scene_.edge_count())) drawn = 0;
+void Painter::reset_edges(uint32_t part) {
+    uint32_t first = 0, count = 0;
+    if (!scene_.part_edges(part, first, count)) first = 0, count = scene_.edge_count();
+    for (uint8_t& drawn : mem_.edge_drawn.subspan(first, count)) drawn = 0;
 }
 
 void Painter::triangle(const Transform& t, const Projected& a, const Projected& b, const Projected& c,
@@ -174,7 +180,7 @@ uint32_t Painter::face(uint32_t f, const Transform& t, Rows rows, uint32_t from,
     const bool inside = t.closed && t.inside_shows();    // its back faces may show through a section
     const bool outlines = white && !F.planar;            // a curved face's silhouette: no B-rep edge draws it
     if (from == 0) { // the face's vertices, once
-        if (F.state != FaceState::Done || !t.visible(F.centre, F.radius, rows)) return F.triangle_count;
+        if (F.state != FaceState::Done || (!inside_ && !t.visible(F.centre, F.radius, rows))) return F.triangle_count;
         if (t.cut.on && cut_away(t, F)) return F.triangle_count;
         if (F.planar && F.vertex_count && t.hides_plane(verts[0].p, verts[0].n)) return F.triangle_count;
         for (uint32_t v = 0; v < F.vertex_count; ++v) {
@@ -257,7 +263,11 @@ uint32_t Painter::face_edges(uint32_t f, const Transform& t, Rows rows, bool onc
     const FaceInfo& info = scene_.face(f);
     if (mode_ == DisplayMode::Shaded && info.state == FaceState::Done) return 0; // a face not in yet shows its edges
     if (dragging_ && mode_ == DisplayMode::ShadedEdges && info.state == FaceState::Done) return 0; // back when the view rests
-    if (!t.visible(info.centre, info.radius, rows)) return 0;
+    const bool solid = mode_ != DisplayMode::Wireframe && mode_ != DisplayMode::SeeThrough; // faces hide what lies behind
+    if (solid && info.state == FaceState::Deferred && !t.cut.on) {
+        if (const uint32_t work = speck(f, t)) return work;
+    }
+    if (!inside_ && !t.visible(info.centre, info.radius, rows)) return 0;
     if (t.cut.on && cut_away(t, info)) return 0;
     if (mode_ != DisplayMode::Wireframe && info.planar) {
         if (info.vertex_count) {
@@ -298,6 +308,25 @@ bool Painter::waiting_plane_hidden(uint32_t f, const Transform& t) const {
     int16_t n[3];
     for (int k = 0; k < 3; ++k) n[k] = int16_t(round_to_int(normal[k] * 16384.0f));
     return t.hides_plane(p, n);
+}
+
+// A deferred face a few pixels across shows as a speck: the pixel of its sphere's centre
+// (within a pixel of the surface), depth-tested like an edge, in the edges' colour (the face's
+// own where edges are not drawn). Its edges would be a knot of lines a pixel long, a
+// projection per sample for the same few pixels. Returns the work, or 0 when the face is
+// larger (or near the eye or the guard band): its edges then, as usual. (No section: a face
+// the cut crosses shows its edges.)
+uint32_t Painter::speck(uint32_t f, const Transform& t) {
+    const FaceInfo& info = scene_.face(f);
+    if (info.radius <= 0) return 0;
+    Projected centre;
+    t.project(info.centre, centre);
+    if (centre.out) return 0;
+    const int64_t across = 2 * ((int64_t(info.radius) * t.k16) >> 16) * t.f16; // sub-pixels times the depth
+    if (across >= int64_t(kSpeckPixels) * render::subpixel::kPerPixel * (t.ortho ? t.dist : centre.d)) return 0;
+    const Rgb565 colour = mode_ == DisplayMode::Shaded ? Rgb565(palette(info.rgb).colour[kSpeckShade]) : kEdgeColour;
+    refused_ += !ok(raster_.line(centre.s, centre.s, colour, kLineBias));
+    return 1;
 }
 
 uint32_t Painter::part_box(uint32_t part, const Transform& t) {

@@ -33,6 +33,9 @@ public:
         hl_[0] = {face0, instance0}, hl_[1] = {face1, instance1};
     }
     void set_instance(uint32_t i) { instance_ = i; }
+    // Every face of the instance being drawn lies inside the view and the rows (its part's
+    // sphere does: Transform::Sight::In): no face is tested on its own.
+    void set_inside(bool on) { inside_ = on; }
     // The part chosen in the parts list (every face in the highlight colour; ~0u: none), and
     // the part see-through mode draws solid (~0u: every part see-through).
     void set_part(uint32_t instance) { part_ = instance; }
@@ -50,7 +53,7 @@ public:
     uint32_t face_edges(uint32_t f, const Transform& t, Rows rows, bool once);
     // The part's box (Scene::part_box) as twelve lines, while its edges are not sampled yet.
     uint32_t part_box(uint32_t part, const Transform& t);
-    void reset_edges();
+    void reset_edges(uint32_t part); // (its edges: all of them where a part's are not known apart)
     // The rows of the screen being drawn (the target's band) for culling.
     Rows rows(const Transform& t) const;
     // Triangles and lines the rasterizer refused (outside its guard band): none, as every
@@ -62,6 +65,7 @@ private:
     void triangle(const Transform& t, const Projected& a, const Projected& b, const Projected& c, const render::Palette& pal,
                   render::Cull cull, const render::Palette* cap);
     uint32_t edge(uint32_t e, const Transform& t);
+    uint32_t speck(uint32_t f, const Transform& t); // a deferred face a few pixels across: the work (0: not one)
     bool waiting_plane_hidden(uint32_t f, const Transform& t) const; // a deferred plane turned away
     uint32_t silhouette(const FaceInfo& F, const Transform& t); // hidden line: a curved face's outline; the work
 
@@ -79,6 +83,7 @@ private:
         uint32_t face = ~0u, instance = ~0u;
     } hl_[2];
     uint32_t instance_ = 0;
+    bool inside_ = false;
     uint32_t part_ = ~0u, focus_ = ~0u;
     uint32_t refused_ = 0;
 };

@@ -92,6 +92,12 @@ void Presenter::set_band() {
     raster_.set_target({display_.buffers[job_.buffer], depth, display_.width, display_.height, y0, rows});
 }
 
+Transform::Sight Presenter::sight(uint32_t part, const Transform& t) const {
+    int32_t centre[3], radius;
+    if (!scene_.part_sphere(part, centre, radius)) return Transform::Sight::Across;
+    return t.sight(centre, radius, painter_.rows(t));
+}
+
 bool Presenter::full_pieces(uint32_t units) {
     const auto instances = scene_.instances();
     uint32_t spent = 0;
@@ -100,14 +106,26 @@ bool Presenter::full_pieces(uint32_t units) {
             ++job_.instance;
             continue;
         }
-        const Part sh = scene_.part(instances[job_.instance].shell);
+        const uint32_t shell = instances[job_.instance].shell;
+        const Part sh = scene_.part(shell);
         if (!job_.have_transform) {
             job_.transform = camera_.transform(scene_, job_.instance, display_.width, display_.height);
             job_.have_transform = true;
             painter_.set_instance(job_.instance);
+            job_.sight = sight(shell, job_.transform);
+            painter_.set_inside(job_.sight == Transform::Sight::In);
         }
         const Transform& t = job_.transform;
         const Rows rows = painter_.rows(t);
+        if (job_.sight == Transform::Sight::Out) { // the whole part off the view (or the band): none of it
+            ++job_.instance;
+            job_.face = 0;
+            job_.stage = Job::Stage::Faces;
+            job_.have_transform = false;
+            ++spent;
+            if (spent >= units) return false;
+            continue;
+        }
         if (job_.boxes || scene_.part_left_out(instances[job_.instance].shell)) { // (a part left out: always its box)
             spent += painter_.part_box(instances[job_.instance].shell, t);
             ++job_.instance;
@@ -129,8 +147,8 @@ bool Presenter::full_pieces(uint32_t units) {
             // Then each edge once in this instance (an edge has two faces).
             job_.stage = Job::Stage::Edges;
             job_.face = 0;
-            painter_.reset_edges();
-            spent += scene_.edge_count() / 256;
+            painter_.reset_edges(shell);
+            spent += sh.face_count / 256;
         }
         for (; job_.face < sh.face_count && spent < units; ++job_.face) spent += painter_.face_edges(sh.first_face + job_.face, t, rows, true);
         if (job_.face < sh.face_count) return false;
@@ -157,6 +175,7 @@ bool Presenter::update_pieces(uint32_t units) {
                 job_.transform = camera_.transform(scene_, job_.instance, display_.width, display_.height);
                 job_.have_transform = true;
                 painter_.set_instance(job_.instance);
+                painter_.set_inside(false); // (a face or two at a time: each tested)
             }
             const Rows rows = painter_.rows(job_.transform);
             uint32_t used;

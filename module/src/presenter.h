@@ -72,6 +72,7 @@ private:
         uint32_t tri = 0;             // and the next triangle of that face
         bool have_transform = false;
         Transform transform{};
+        Transform::Sight sight = Transform::Sight::Across; // where the instance's part lies
         uint32_t version = 0, finished = 0, applied_to = 0;
         uint32_t cost_us = 0;
         uint32_t pieces = 0;          // pieces of work this frame took so far
@@ -81,6 +82,7 @@ private:
     void set_band();
     void take_done();
     bool buffer_free(uint8_t b) const;
+    Transform::Sight sight(uint32_t part, const Transform& t) const; // its sphere's (Across: none known)
     bool full_pieces(uint32_t units);   // faces then edges, instance by instance; true when done
     bool update_pieces(uint32_t units); // the faces since the buffer was last drawn
     void flush(uint32_t pass);

@@ -177,6 +177,21 @@ bool Scene::part_corners(uint32_t s, int32_t corners[8][3]) const {
     return true;
 }
 
+bool Scene::part_sphere(uint32_t s, int32_t centre[3], int32_t& radius) const {
+    int32_t lo[3], hi[3];
+    if (!part_box(s, lo, hi)) return false;
+    float r2 = 0;
+    for (int k = 0; k < 3; ++k) {
+        centre[k] = int32_t((int64_t(lo[k]) + hi[k]) / 2);
+        const float half = 0.5f * (float(hi[k]) - float(lo[k])) + 1.0f; // (the centre's rounding)
+        r2 += half * half;
+    }
+    const float r = std::sqrt(r2) + 2.0f;
+    if (!(r < 1e9f)) return false;
+    radius = int32_t(r);
+    return true;
+}
+
 bool Scene::part_edges(uint32_t s, uint32_t& first, uint32_t& count) const {
     if (!blocked_) {
         first = 0, count = edges_;

@@ -120,6 +120,8 @@ public:
     bool part_box(uint32_t part, int32_t lo[3], int32_t hi[3]) const;
     // Its eight corners, corner c taking hi along the axes of c's bits (x 1, y 2, z 4).
     bool part_corners(uint32_t part, int32_t corners[8][3]) const;
+    // A sphere holding its box (mesh units, as FaceInfo's): false as part_box.
+    bool part_sphere(uint32_t part, int32_t centre[3], int32_t& radius) const;
     bool blocked() const { return blocked_; } // a blocked pack: its index has the parts' boxes
     // What a model larger than the memory left out (its blocks not decoded, loader.h): its
     // parts are drawn as their boxes.

@@ -101,6 +101,52 @@ TEST(Camera, SpheresOffTheScreenOrOutOfABandAreCulled) {
     EXPECT_TRUE(t.visible(c, 0, top)) << "no radius known: never culled";
 }
 
+// A part's sphere wholly inside the view spares its faces their own tests: In must hold every
+// point of the sphere on the screen (and in the rows), Out exactly what visible() culls.
+TEST(Camera, ASphereIsInOnlyWhenAllOfItProjectsOntoTheRows) {
+    Model m;
+    Camera cam;
+    const Transform t = cam.transform(m.scene, 0, 640, 480);
+    const Rows whole{t.cy16, t.cy16}, middle{t.cy16 - 200 * 16, 280 * 16 - t.cy16};
+    int32_t c[3];
+    quantize(m.scene, 10, 20, 0, c);
+    EXPECT_EQ(t.sight(c, int32_t(5 / m.scene.unit()), whole), Transform::Sight::In);
+    EXPECT_EQ(t.sight(c, int32_t(5000 / m.scene.unit()), whole), Transform::Sight::Across) << "larger than the view";
+    int32_t far[3];
+    quantize(m.scene, 10 + 5000, 20, 0, far);
+    EXPECT_EQ(t.sight(far, int32_t(5 / m.scene.unit()), whole), Transform::Sight::Out);
+    uint32_t in = 0, across = 0;
+    for (const Rows rows : {whole, middle})
+        for (int x = -400; x <= 400; x += 40)
+            for (int y = -400; y <= 400; y += 40)
+                for (const float radius : {2.0f, 20.0f, 80.0f}) {
+                    int32_t centre[3];
+                    quantize(m.scene, float(x), float(y), 10, centre);
+                    const int32_t r = int32_t(radius / m.scene.unit());
+                    const Transform::Sight s = t.sight(centre, r, rows);
+                    EXPECT_EQ(s == Transform::Sight::Out, !t.visible(centre, r, rows));
+                    if (s != Transform::Sight::In) {
+                        across += s == Transform::Sight::Across;
+                        continue;
+                    }
+                    ++in;
+                    for (int k = 0; k < 26; ++k) { // the sphere's points along the axes and diagonals
+                        const int dx = k % 3 - 1, dy = (k / 3) % 3 - 1, dz = k / 9 - 1;
+                        const float n = std::sqrt(float(dx * dx + dy * dy + dz * dz));
+                        if (n == 0) continue;
+                        int32_t p[3];
+                        quantize(m.scene, x + radius * dx / n, y + radius * dy / n, 10 + radius * dz / n, p);
+                        Projected q;
+                        t.project(p, q);
+                        ASSERT_EQ(q.out, 0);
+                        EXPECT_TRUE(q.s.x >= 0 && q.s.x < 640 * 16) << x << " " << y << " " << radius;
+                        EXPECT_TRUE(q.s.y - t.cy16 >= -rows.top16 && q.s.y - t.cy16 < rows.bottom16) << x << " " << y << " " << radius;
+                    }
+                }
+    EXPECT_GT(in, 20u);
+    EXPECT_GT(across, 20u);
+}
+
 TEST(Camera, ThePlaneFacesTheEyeFromAboveAndAwayFromBelow) {
     Model m;
     Camera cam;

@@ -1,5 +1,5 @@
 // The level of detail the view asks for (issue 25): a face under two pixels across on the screen,
-// or off it, is left to its edges (deferred) instead of tessellated; when the view changes, the
+// or off it, is left untessellated (deferred: a speck, or its edges); when the view changes, the
 // deferred faces are judged again and those it makes large enough come in, in the background.
 // Checked against the projection the frames use: at rest, no deferred face shows two pixels
 // across anywhere on the screen, every face is either in or deferred, and the work ends.
@@ -92,6 +92,27 @@ void expect_deferred_only_small(const App& app, const char* when) {
     EXPECT_EQ(deferred, s.deferred) << when;
 }
 
+// Each deferred face on the screen shows as its speck (painter.cpp): the pixel of its sphere's
+// centre in the edges' colour, not the knot of edges a pixel long it was drawn as before.
+uint32_t expect_specks(const App& app) {
+    const Core& core = *static_cast<const Core*>(app.v);
+    const module::Scene& scene = core.scene();
+    const module::Transform t = core.camera().transform(scene, 0, app.w, app.h);
+    const std::vector<Rgb565> screen = app.screen();
+    uint32_t specks = 0;
+    for (uint32_t f = 0; f < scene.face_count(); ++f) {
+        const module::FaceInfo& info = scene.face(f);
+        if (info.state != module::FaceState::Deferred) continue;
+        module::Projected p{};
+        t.project(info.centre, p);
+        const int32_t x = p.s.x >> 4, y = p.s.y >> 4;
+        if (p.out || x < 0 || x >= app.w || y < 0 || y >= app.h) continue;
+        EXPECT_EQ(screen[size_t(y) * app.w + x], rgb565(28, 30, 38)) << "face " << f << " at " << x << ", " << y;
+        ++specks;
+    }
+    return specks;
+}
+
 // A section turned on (the viewer's cycle from off: across x) and the work done, then off
 // again and the same view drawn anew: the stats with the section on.
 Stats with_a_section_and_without(App& app) {
@@ -122,6 +143,7 @@ TEST(Detail, FacesUnderTwoPixelsAreLeftToTheirEdgesUntilTheViewMakesThemLarger) 
     EXPECT_GT(fitted.deferred, 0u);
     EXPECT_EQ(fitted.triangles, 2 * fitted.done);
     expect_deferred_only_small(app, "fitted");
+    EXPECT_GT(expect_specks(app), 100u);
 
     // Zoomed in (each step 0.8 of the distance): the squares grow over two pixels and come in
     // (each while it is still on the screen).
