@@ -21,6 +21,9 @@ constexpr uint8_t kCapShade = 255;          // drawn flat, in that colour
 // across now is drawn as a speck, not as its edges.
 constexpr int32_t kSpeckPixels = 3;
 constexpr uint8_t kSpeckShade = 200;        // a speck in the face's colour: lit about halfway
+// While the view is dragged, a face under this across is drawn as a splat in its colour, not
+// as its triangles (issue 25: coarser detail while dragging, for the frame rate).
+constexpr int32_t kSplatPixels = 4;
 
 // X / d for d >= 1, to about 2^-15 relative, without dividing (render/fixed.h).
 inline int32_t divide(int64_t x, int32_t d) { return render::divide(x, render::reciprocal(uint32_t(d))); }
@@ -183,6 +186,18 @@ uint32_t Painter::face(uint32_t f, const Transform& t, Rows rows, uint32_t from,
         if (F.state != FaceState::Done || (!inside_ && !t.visible(F.centre, F.radius, rows))) return F.triangle_count;
         if (t.cut.on && cut_away(t, F)) return F.triangle_count;
         if (F.planar && F.vertex_count && t.hides_plane(verts[0].p, verts[0].n)) return F.triangle_count;
+        if (dragging_ && (mode_ == DisplayMode::ShadedEdges || mode_ == DisplayMode::Shaded) && !t.cut.on && !lit(f)) {
+            // A face a few pixels across while the view moves: a square of its colour, lit by
+            // its first normal, about its area (a sphere's diameter D holds a square of side 0.7 D).
+            Projected centre;
+            const int32_t size = across(F, t, centre);
+            if (size >= 0 && size < kSplatPixels * render::subpixel::kPerPixel) {
+                const int32_t side = std::clamp<int32_t>((size * 11 / 16 + render::subpixel::kHalfPixel) >> render::subpixel::kFractionBits, 1, 3);
+                refused_ += !ok(raster_.splat(centre.s, side, Rgb565(palette(F.rgb).colour[t.shade(verts[0].n)])));
+                spent = 1;
+                return F.triangle_count;
+            }
+        }
         for (uint32_t v = 0; v < F.vertex_count; ++v) {
             t.project(verts[v].p, P[v]);
             if (t.cut.on && t.cut.side(P[v].x, P[v].y, P[v].d) > 0) P[v].out |= kOutCut;
@@ -191,11 +206,9 @@ uint32_t Painter::face(uint32_t f, const Transform& t, Rows rows, uint32_t from,
             P[v].s.shade = white ? uint8_t(200 + ((t.shade(verts[v].n) * 55) >> 8)) : t.shade(verts[v].n);
             if (outlines) P[v].front = t.facing(verts[v].p, verts[v].n) > 0;
         }
-        spent = 1 + F.vertex_count / (outlines ? 2 : 4);
+        spent = 1 + (F.vertex_count >> (outlines ? 1 : 2));
     }
-    const bool lit = (hl_[0].face == f && hl_[0].instance == instance_) || (hl_[1].face == f && hl_[1].instance == instance_) ||
-                     part_ == instance_;
-    const render::Palette& pal = palette(lit ? (hl_[1].face == f && hl_[1].instance == instance_ ? kPicked2 : kPicked) : white ? kPaper : F.rgb);
+    const render::Palette& pal = palette(lit(f) ? (hl_[1].face == f && hl_[1].instance == instance_ ? kPicked2 : kPicked) : white ? kPaper : F.rgb);
     const render::Cull cull = t.closed && !inside ? render::Cull::Back : render::Cull::None;
     const render::Palette* cap = inside ? &palette(kCap) : nullptr;
     raster_.set_stipple(mode_ == DisplayMode::SeeThrough && instance_ != focus_);
@@ -310,6 +323,20 @@ bool Painter::waiting_plane_hidden(uint32_t f, const Transform& t) const {
     return t.hides_plane(p, n);
 }
 
+// The face's sphere across on the screen (sub-pixels, at most 64 pixels' worth), its centre
+// projected into `centre`; -1 when no sphere is known or its centre is off (near the eye, or
+// past the guard band).
+int32_t Painter::across(const FaceInfo& info, const Transform& t, Projected& centre) {
+    constexpr int32_t kMost = 64 * render::subpixel::kPerPixel;
+    if (info.radius <= 0) return -1;
+    t.project(info.centre, centre);
+    if (centre.out) return -1;
+    const int64_t size = 2 * ((int64_t(info.radius) * t.k16) >> 16) * t.f16; // sub-pixels times the depth
+    const int32_t over = t.ortho ? t.dist : centre.d;
+    if (size >= int64_t(kMost) * over) return kMost;
+    return render::divide(size, render::reciprocal(uint32_t(over)));
+}
+
 // A deferred face a few pixels across shows as a speck: the pixel of its sphere's centre
 // (within a pixel of the surface), depth-tested like an edge, in the edges' colour (the face's
 // own where edges are not drawn). Its edges would be a knot of lines a pixel long, a
@@ -318,12 +345,9 @@ bool Painter::waiting_plane_hidden(uint32_t f, const Transform& t) const {
 // the cut crosses shows its edges.)
 uint32_t Painter::speck(uint32_t f, const Transform& t) {
     const FaceInfo& info = scene_.face(f);
-    if (info.radius <= 0) return 0;
     Projected centre;
-    t.project(info.centre, centre);
-    if (centre.out) return 0;
-    const int64_t across = 2 * ((int64_t(info.radius) * t.k16) >> 16) * t.f16; // sub-pixels times the depth
-    if (across >= int64_t(kSpeckPixels) * render::subpixel::kPerPixel * (t.ortho ? t.dist : centre.d)) return 0;
+    const int32_t size = across(info, t, centre);
+    if (size < 0 || size >= kSpeckPixels * render::subpixel::kPerPixel) return 0;
     const Rgb565 colour = mode_ == DisplayMode::Shaded ? Rgb565(palette(info.rgb).colour[kSpeckShade]) : kEdgeColour;
     refused_ += !ok(raster_.line(centre.s, centre.s, colour, kLineBias));
     return 1;

@@ -65,6 +65,10 @@ private:
     void triangle(const Transform& t, const Projected& a, const Projected& b, const Projected& c, const render::Palette& pal,
                   render::Cull cull, const render::Palette* cap);
     uint32_t edge(uint32_t e, const Transform& t);
+    int32_t across(const FaceInfo& info, const Transform& t, Projected& centre); // its sphere on the screen (sub-pixels)
+    bool lit(uint32_t f) const { // picked, or of the part chosen: in the highlight colour
+        return (hl_[0].face == f && hl_[0].instance == instance_) || (hl_[1].face == f && hl_[1].instance == instance_) || part_ == instance_;
+    }
     uint32_t speck(uint32_t f, const Transform& t); // a deferred face a few pixels across: the work (0: not one)
     bool waiting_plane_hidden(uint32_t f, const Transform& t) const; // a deferred plane turned away
     uint32_t silhouette(const FaceInfo& F, const Transform& t); // hidden line: a curved face's outline; the work

@@ -62,6 +62,23 @@ Status Rasterizer::line(const ScreenVertex& a, const ScreenVertex& b, Rgb565 col
     return Status::Ok;
 }
 
+Status Rasterizer::splat(const ScreenVertex& c, int32_t size, Rgb565 colour) {
+    if (!in_guard(c) || size < 1 || size > kMaxSplat) return Status::OutOfRange;
+    const int32_t x0 = pixel_of(c.x) - (size - 1) / 2, y0 = pixel_of(c.y) - (size - 1) / 2;
+    for (int32_t y = y0; y < y0 + size; ++y) {
+        if (uint32_t(y) - t_.y0 >= t_.rows) continue; // off the band (negatives too)
+        for (int32_t x = x0; x < x0 + size; ++x) {
+            if (uint32_t(x) >= t_.width) continue;
+            const size_t at = size_t(uint32_t(y) - t_.y0) * t_.width + uint32_t(x);
+            if (c.z >= t_.depth[at]) continue;
+            t_.depth[at] = c.z;
+            t_.pixels[at] = colour;
+        }
+    }
+    stats.pixels += uint32_t(size * size);
+    return Status::Ok;
+}
+
 Status Rasterizer::outline(const ScreenVertex& a, const ScreenVertex& b, Rgb565 colour, uint16_t bias, uint8_t beyond) {
     if (!in_guard(a) || !in_guard(b)) return Status::OutOfRange;
     stats.pixels += stroke<true>(t_, a, b, colour, bias, beyond == 0 ? 1 : beyond == 2 ? -1 : 0, beyond == 1 ? 1 : beyond == 3 ? -1 : 0);

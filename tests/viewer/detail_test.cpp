@@ -272,3 +272,52 @@ TEST(Detail, ASolidsRoundFaceTurnedAwayWaitsAndDrawsWhatEveryFaceIn) {
     EXPECT_GT(waited, 0u) << "some view turns the round face away";
     EXPECT_GT(shown, 0u);
 }
+
+// While the view is dragged, a face under four pixels across is drawn as a splat of its colour
+// (painter.cpp), not as its triangles (coarser detail while the view moves, issue 25): fewer
+// triangles, and each such square still shows where its centre is.
+TEST(Detail, ADragDrawsFacesAFewPixelsAcrossAsSplats) {
+    App app;
+    ASSERT_TRUE(app.create().ok());
+    ASSERT_TRUE(app.load(squares(1600, 40)).ok());
+    app.run(); // the squares about two pixels across: those nearer the eye in, the rest specks
+    ASSERT_EQ(app.v->step(1000), Activity::Idle);
+    auto full_frame = [&] { // the last whole frame's triangles
+        for (auto e = app.events.rbegin(); e != app.events.rend(); ++e)
+            if (e->kind == Event::Kind::FrameDone && e->frame.full) return e->frame.triangles;
+        return 0u;
+    };
+    app.v->pointer(0, 0, 1); // the left button down, then moved past a tap's slop: an orbit
+    for (int k = 0; k < 2; ++k) {
+        app.v->pointer(6, 0, 1);
+        app.run();
+    }
+    const uint32_t dragged = full_frame();
+    const Core& core = *static_cast<const Core*>(app.v);
+    const module::Scene& scene = core.scene();
+    const module::Transform t = core.camera().transform(scene, 0, app.w, app.h);
+    const std::vector<Rgb565> screen = app.screen();
+    uint32_t splats = 0;
+    for (uint32_t f = 0; f < scene.face_count(); ++f) {
+        const module::FaceInfo& info = scene.face(f);
+        if (info.state != module::FaceState::Done) continue;
+        module::Projected centre{};
+        t.project(info.centre, centre);
+        const int32_t x = centre.s.x >> 4, y = centre.s.y >> 4;
+        if (centre.out || x < 0 || x >= app.w || y < 0 || y >= app.h) continue;
+        // Every square the same colour and normal: its splat's colour, or its triangles'.
+        const uint32_t rgb = info.rgb;
+        render::Palette palette;
+        render::make_palette(palette, uint8_t(rgb & 255), uint8_t((rgb >> 8) & 255), uint8_t((rgb >> 16) & 255));
+        const Rgb565 lit = Rgb565(palette.colour[t.shade(scene.vertices()[info.first_vertex].n)]);
+        // (A square the drag brought over two pixels came in after the frame drew its speck:
+        // over it, its splat (not pulled toward the eye as the speck is) leaves the speck.)
+        const Rgb565 at = screen[size_t(y) * app.w + x];
+        EXPECT_TRUE(at == lit || at == rgb565(28, 30, 38)) << "face " << f;
+        splats += at == lit;
+    }
+    EXPECT_GT(splats, 100u);
+    app.v->pointer(0, 0, 0); // released: at rest, the triangles again
+    app.run();
+    EXPECT_GT(full_frame(), 2 * dragged) << "most squares splats while dragging";
+}

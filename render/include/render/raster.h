@@ -101,6 +101,11 @@ public:
     // part. Only a pixel whose neighbour is outside the band (or the screen) is tested against
     // itself. It writes its depth where it is nearer.
     Status outline(const ScreenVertex& a, const ScreenVertex& b, Rgb565 colour, uint16_t bias, uint8_t beyond);
+    // A square `size` pixels a side (1 to kMaxSplat) around c's pixel, at c's depth, each pixel
+    // depth-tested and drawn in one colour where nearer: a surface too small on the screen for
+    // its triangles, while the view moves. OutOfRange (nothing drawn) outside the guard band.
+    static constexpr int32_t kMaxSplat = 4;
+    Status splat(const ScreenVertex& c, int32_t size, Rgb565 colour);
 
     RasterStats stats;
 
