@@ -131,45 +131,96 @@ struct Output {
     uint32_t at = 0;
 };
 
-// One block's literals and copies, up to its end-of-block symbol.
+// One block's literals and copies, up to its end-of-block symbol. The stream's bits are kept
+// in locals here, 25 or more in hand before each code (a byte store to the output may alias
+// any memory: kept in the Bits they would be reloaded after every byte written).
 Result codes(Bits& in, Output& out, const Huffman& literal, const Huffman& distance) {
-    for (;;) {
-        int sym = decode(in, literal);
-        if (sym < 0) {
-            return Result::fail(Status::Corrupt, in.truncated ? "the DEFLATE stream ends early" : "an invalid literal/length code");
+    const uint8_t* p = in.p;
+    const uint8_t* const end = in.end;
+    uint32_t buffer = in.buffer;
+    int count = in.count;
+    uint8_t* const data = out.data;
+    const uint32_t size = out.size;
+    uint32_t at = out.at;
+    const auto give_back = [&] { in.p = p, in.buffer = buffer, in.count = count, out.at = at; };
+    const auto fail = [&](Status s, const char* why) {
+        give_back();
+        return Result::fail(s, why);
+    };
+    const auto refill = [&] { // to over 24 bits, while bytes are left
+        for (; count <= 24 && p != end; count += 8) buffer |= uint32_t(*p++) << count;
+    };
+    // The next symbol of h from the bits in hand (a code is 15 bits at most): -1 when no code
+    // matches, -2 when the stream ends inside one.
+    const auto next = [&](const Huffman& h) -> int {
+        const uint32_t entry = h.fast[buffer & ((1u << kFastBits) - 1)];
+        const int len = int(entry & 15);
+        if (len && len <= count) {
+            buffer >>= len, count -= len;
+            return int(entry >> 4);
         }
-        if (sym < 256) {
-            if (out.at == out.size) {
-                return Result::fail(Status::Full, "the inflated data is larger than its space");
+        int code = 0, first = 0, index = 0;
+        uint32_t bits = buffer;
+        for (int n = 1; n <= kMaxBits; ++n, bits >>= 1) {
+            if (n > count) return -2;
+            code |= int(bits & 1);
+            const int c = h.count[n];
+            if (code - first < c) {
+                buffer >>= n, count -= n;
+                return h.symbol[index + (code - first)];
             }
-            out.data[out.at++] = uint8_t(sym);
+            index += c;
+            first = (first + c) << 1;
+            code <<= 1;
+        }
+        return -1;
+    };
+    const auto take = [&](int n) -> int { // n extra bits (-1: the stream ends first)
+        if (n > count) return -1;
+        const uint32_t v = buffer & ((1u << n) - 1);
+        buffer >>= n, count -= n;
+        return int(v);
+    };
+    constexpr const char* kEarly = "the DEFLATE stream ends early";
+    constexpr const char* kLarger = "the inflated data is larger than its space";
+    for (;;) {
+        refill();
+        const int sym = next(literal);
+        if (sym < 0) return fail(Status::Corrupt, sym == -2 ? kEarly : "an invalid literal/length code");
+        if (sym < 256) {
+            if (at == size) return fail(Status::Full, kLarger);
+            data[at++] = uint8_t(sym);
             continue;
         }
-        if (sym == 256) return {};
-        sym -= 257;
-        if (sym >= 29) {
-            return Result::fail(Status::Corrupt, "an invalid length symbol");
+        if (sym == 256) {
+            give_back();
+            return {};
         }
-        const uint32_t length = kLengthBase[sym] + in.take(kLengthExtra[sym]);
-        const int dsym = decode(in, distance);
-        if (dsym < 0 || dsym >= kDistanceCodes) {
-            return Result::fail(Status::Corrupt, in.truncated ? "the DEFLATE stream ends early" : "an invalid distance code");
-        }
-        const uint32_t dist = kDistanceBase[dsym] + in.take(kDistanceExtra[dsym]);
-        if (in.truncated) {
-            return Result::fail(Status::Corrupt, "the DEFLATE stream ends early");
-        }
-        if (dist > out.at) {
-            return Result::fail(Status::Corrupt, "a copy reaches back before the start");
-        }
-        if (length > out.size - out.at) {
-            return Result::fail(Status::Full, "the inflated data is larger than its space");
-        }
-        // Byte by byte: a copy may overlap what it writes (a run).
-        uint8_t* to = out.data + out.at;
+        const int ls = sym - 257;
+        if (ls >= 29) return fail(Status::Corrupt, "an invalid length symbol");
+        const int lx = take(kLengthExtra[ls]); // (the code and its extra bits: 20 at most, in hand)
+        if (lx < 0) return fail(Status::Corrupt, kEarly);
+        const uint32_t length = kLengthBase[ls] + uint32_t(lx);
+        refill();
+        const int dsym = next(distance);
+        if (dsym == -2) return fail(Status::Corrupt, kEarly);
+        if (dsym < 0 || dsym >= kDistanceCodes) return fail(Status::Corrupt, "an invalid distance code");
+        refill();
+        const int dx = take(kDistanceExtra[dsym]);
+        if (dx < 0) return fail(Status::Corrupt, kEarly);
+        const uint32_t dist = kDistanceBase[dsym] + uint32_t(dx);
+        if (dist > at) return fail(Status::Corrupt, "a copy reaches back before the start");
+        if (length > size - at) return fail(Status::Full, kLarger);
+        // Byte by byte: a copy may overlap what it writes (a run); four at a time when each
+        // reads only bytes written before them.
+        uint8_t* to = data + at;
         const uint8_t* from = to - dist;
-        for (uint32_t k = 0; k < length; ++k) to[k] = from[k];
-        out.at += length;
+        uint32_t k = 0;
+        if (dist >= 4) {
+            for (; k + 4 <= length; k += 4) to[k] = from[k], to[k + 1] = from[k + 1], to[k + 2] = from[k + 2], to[k + 3] = from[k + 3];
+        }
+        for (; k < length; ++k) to[k] = from[k];
+        at += length;
     }
 }
 

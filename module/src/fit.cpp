@@ -69,6 +69,12 @@ bool Framer::run(const Scene& scene, Camera& camera, uint32_t units) {
                 have_transform_ = false;
                 continue;
             }
+            int32_t centre[3], radius;
+            if (scene.part_sphere(instances[instance_].shell, centre, radius) && inside_outline(centre, radius)) {
+                ++instance_; // the whole part projects inside the outline so far: nothing of it can widen it
+                have_transform_ = false;
+                continue;
+            }
         }
         if (by_edges_ && !curved_only_) {
             while (edge_ < edge_end_ && budget > 0) {
@@ -100,7 +106,7 @@ bool Framer::run(const Scene& scene, Camera& camera, uint32_t units) {
         }
         const FaceInfo& F = scene.face(face_);
         if (curved_only_) { // the edges are in: a curved face's mesh can reach past them, a plane's cannot
-            if (F.state == FaceState::Done && !F.planar && k_ == 0 && inside_outline(F)) {
+            if (F.state == FaceState::Done && !F.planar && k_ == 0 && inside_outline(F.centre, F.radius)) {
                 ++face_; // its sphere projects inside the outline so far: so does its mesh
                 --budget;
                 continue;
@@ -152,15 +158,15 @@ bool Framer::project_mesh(const Scene& scene, const FaceInfo& F, uint32_t& budge
     return k_ == F.vertex_count;
 }
 
-// Whether the face's sphere projects wholly inside the outline found so far (which only grows
+// Whether a sphere (a face's, a part's) projects wholly inside the outline found so far (which only grows
 // within a round), so no point of the face can widen it. Conservative: the box around the
 // sphere, each side over the depth that pushes it furthest out (parallel: the centre's depth),
 // with a pixel to spare; a sphere reaching the near plane is never inside.
-bool Framer::inside_outline(const FaceInfo& F) const {
-    if (F.radius <= 0 || o_.points == 0) return false;
+bool Framer::inside_outline(const int32_t centre[3], int32_t radius) const {
+    if (radius <= 0 || o_.points == 0) return false;
     int32_t x, y, d;
-    t_.to_view(F.centre, x, y, d);
-    const int64_t rv = ((int64_t(F.radius) * t_.k16) >> 16) + 2; // view units, rounded up
+    t_.to_view(centre, x, y, d);
+    const int64_t rv = ((int64_t(radius) * t_.k16) >> 16) + 2; // view units, rounded up
     if (d - rv < t_.near) return false;
     const int64_t nearest = t_.ortho ? t_.dist : d - rv, furthest = t_.ortho ? t_.dist : d + rv;
     const int64_t f = t_.f16, pad = render::subpixel::kPerPixel;
