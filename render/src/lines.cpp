@@ -25,7 +25,12 @@ uint32_t stroke(const Target& t, const ScreenVertex& a, const ScreenVertex& b, R
     const int32_t n = (dx < 0 ? -dx : dx) > (dy < 0 ? -dy : dy) ? (dx < 0 ? -dx : dx) : (dy < 0 ? -dy : dy);
     int32_t x = (x0 << 16) + 0x8000, y = (y0 << 16) + 0x8000, z = int32_t(a.z) << 8;
     int32_t sx = 0, sy = 0, sz = 0;
-    if (n) {
+    if (n && (n & (n - 1)) == 0) { // a power of two (most short lines): the same steps by shifts
+        const int k = __builtin_ctz(uint32_t(n));
+        sx = int32_t((int64_t(dx) << 16) >> k);
+        sy = int32_t((int64_t(dy) << 16) >> k);
+        sz = int32_t(((int64_t(b.z) - a.z) << 8) >> k);
+    } else if (n) {
         const Reciprocal r = reciprocal(uint32_t(n));
         sx = divide(int64_t(dx) << 16, r);
         sy = divide(int64_t(dy) << 16, r);
