@@ -16,7 +16,8 @@ centre (six steps) and quit (tests/sessions/scale.session). One CSV row per boar
   first frame: every piece of work from load to the end of the first frame (the parts' boxes
   of a blocked pack while its edges are sampled, or the wireframe);
   first view: to the end of the first frame after the first pass (every face the view wants
-  in); a frame at rest: the full frame at the fitted view once the faces are in; turning: the
+  in); a frame at rest: the largest full frame drawn at a view at rest (once the faces are in
+  at the fitted view, if the framing then moves it; when the drag ends); turning: the
   largest frame while the view turns by keys; dragging: the largest frame while the mouse drags
   it (a board with a mouse; the frames a drag draws lighter); zoomed: the frame once the zoomed
   view's faces are in.
@@ -77,6 +78,8 @@ def measure(uart, regions):
         elif r.name in ('shot', 'dump') and r.words:  # a screenshot: over QMP, or a framebuffer the board wrote
             if r.words[0] == 'dragged':
                 out['dragging'] = since_turned[:-1]  # (the last: the view at rest once the button is up)
+                if since_turned:
+                    out['rest'] = max(out.get('rest') or 0, since_turned[-1])
             elif r.words[0] == 'zoomed':
                 out['zoomed'] = last
             phase = {'first': 'rest', 'turned': 'turned', 'dragged': 'dragged', 'zoomed': 'zoomed'}.get(r.words[0], phase)

@@ -22,6 +22,9 @@ void Core::relay(void* self, const Event& e) {
         break;
     case Event::Kind::Tessellated: // the progress bar goes; the first pass's outline is final
         // (a cylinder's silhouette is no edge): framed again unless the user has moved the view
+        // Then a whole frame: the frames drawn over the last as the faces came in keep the
+        // wireframe's lines where no face drawn since hides them (the edges of a face left out
+        // as too small, which a whole frame draws as a speck).
         if (e.tessellated.pass == 0 && !c.user_moved_) c.fit_view(true, true);
         c.presenter_.invalidate();
         break;
@@ -132,7 +135,7 @@ Activity Core::step(uint32_t budget_us) {
                     glide_.t0 = now(), glide_.frames = 0;
                 }
             } else if (framer_.run(scene_, camera_, kFrameUnits)) {
-                presenter_.invalidate();
+                if (!module::same_view(camera_.view(), framed_from_)) presenter_.invalidate();
             }
             work(Event::Kind::WorkEnd, Work::Fit, 0);
         } else if (glide_.phase == Glide::Phase::Moving && !frame_wanted() && !mid_bands) {

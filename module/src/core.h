@@ -89,6 +89,7 @@ private:
     module::Scheduler scheduler_;
     module::Presenter presenter_;
     module::Framer framer_;
+    module::View framed_from_; // the view when the framing began: a framing that ends there redraws nothing
     std::span<module::Projected> projected_;
     // The workspace past the base arrays: the model's arrays from model_start_ (planned at
     // load), the pack's decoded blocks at its end (end_) when load() is given no memory.

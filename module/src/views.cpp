@@ -54,6 +54,7 @@ bool Core::glide_step() {
 
 void Core::fit_view(bool keep_direction, bool from_here) {
     const bool sampled = !scheduler_.sampling();
+    framed_from_ = camera_.view();
     bound(sampled);
     if (from_here) {
         // (the view framed already, from a nearly equal outline: fewer rounds from it)
