@@ -24,6 +24,8 @@ constexpr uint8_t kSpeckShade = 200;        // a speck in the face's colour: lit
 // While the view is dragged, a face under this across is drawn as a splat in its colour, not
 // as its triangles (issue 25: coarser detail while dragging, for the frame rate).
 constexpr int32_t kSplatPixels = 4;
+// A part under this across (its sphere's) is drawn as its box until it grows (issue 25).
+constexpr int32_t kTinyPartPixels = 5;
 
 // X / d for d >= 1, to about 2^-15 relative, without dividing (render/fixed.h).
 inline int32_t divide(int64_t x, int32_t d) { return render::divide(x, render::reciprocal(uint32_t(d))); }
@@ -190,7 +192,7 @@ uint32_t Painter::face(uint32_t f, const Transform& t, Rows rows, uint32_t from,
             // A face a few pixels across while the view moves: a square of its colour, lit by
             // its first normal, about its area (a sphere's diameter D holds a square of side 0.7 D).
             Projected centre;
-            const int32_t size = across(F, t, centre);
+            const int32_t size = across(F.centre, F.radius, t, centre);
             if (size >= 0 && size < kSplatPixels * render::subpixel::kPerPixel) {
                 const int32_t side = std::clamp<int32_t>((size * 11 / 16 + render::subpixel::kHalfPixel) >> render::subpixel::kFractionBits, 1, 3);
                 refused_ += !ok(raster_.splat(centre.s, side, Rgb565(palette(F.rgb).colour[t.shade(verts[0].n)])));
@@ -323,15 +325,15 @@ bool Painter::waiting_plane_hidden(uint32_t f, const Transform& t) const {
     return t.hides_plane(p, n);
 }
 
-// The face's sphere across on the screen (sub-pixels, at most 64 pixels' worth), its centre
+// A sphere (a face's, a part's) across on the screen (sub-pixels, at most 64 pixels' worth), its centre
 // projected into `centre`; -1 when no sphere is known or its centre is off (near the eye, or
 // past the guard band).
-int32_t Painter::across(const FaceInfo& info, const Transform& t, Projected& centre) {
+int32_t Painter::across(const int32_t sphere_centre[3], int32_t radius, const Transform& t, Projected& centre) {
     constexpr int32_t kMost = 64 * render::subpixel::kPerPixel;
-    if (info.radius <= 0) return -1;
-    t.project(info.centre, centre);
+    if (radius <= 0) return -1;
+    t.project(sphere_centre, centre);
     if (centre.out) return -1;
-    const int64_t size = 2 * ((int64_t(info.radius) * t.k16) >> 16) * t.f16; // sub-pixels times the depth
+    const int64_t size = 2 * ((int64_t(radius) * t.k16) >> 16) * t.f16; // sub-pixels times the depth
     const int32_t over = t.ortho ? t.dist : centre.d;
     if (size >= int64_t(kMost) * over) return kMost;
     return render::divide(size, render::reciprocal(uint32_t(over)));
@@ -346,11 +348,17 @@ int32_t Painter::across(const FaceInfo& info, const Transform& t, Projected& cen
 uint32_t Painter::speck(uint32_t f, const Transform& t) {
     const FaceInfo& info = scene_.face(f);
     Projected centre;
-    const int32_t size = across(info, t, centre);
+    const int32_t size = across(info.centre, info.radius, t, centre);
     if (size < 0 || size >= kSpeckPixels * render::subpixel::kPerPixel) return 0;
     const Rgb565 colour = mode_ == DisplayMode::Shaded ? Rgb565(palette(info.rgb).colour[kSpeckShade]) : kEdgeColour;
     refused_ += !ok(raster_.line(centre.s, centre.s, colour, kLineBias));
     return 1;
+}
+
+bool Painter::tiny(const int32_t sphere_centre[3], int32_t radius, const Transform& t) {
+    Projected centre;
+    const int32_t size = across(sphere_centre, radius, t, centre);
+    return size >= 0 && size < kTinyPartPixels * render::subpixel::kPerPixel;
 }
 
 uint32_t Painter::part_box(uint32_t part, const Transform& t) {

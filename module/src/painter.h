@@ -51,8 +51,12 @@ public:
     uint32_t face(uint32_t f, const Transform& t, Rows rows, uint32_t from, uint32_t units, uint32_t& spent);
     // The edges of the face, each at most once per reset_edges() when `once`. Returns the work.
     uint32_t face_edges(uint32_t f, const Transform& t, Rows rows, bool once);
-    // The part's box (Scene::part_box) as twelve lines, while its edges are not sampled yet.
+    // The part's box (Scene::part_box) as twelve lines: while its edges are not sampled yet, for
+    // a part left out of a model larger than the memory, and for one tiny() on the screen.
     uint32_t part_box(uint32_t part, const Transform& t);
+    // Whether a part's sphere (Scene::part_sphere) is under a few pixels across: the part is
+    // drawn as its box until it grows.
+    bool tiny(const int32_t sphere_centre[3], int32_t radius, const Transform& t);
     void reset_edges(uint32_t part); // (its edges: all of them where a part's are not known apart)
     // The rows of the screen being drawn (the target's band) for culling.
     Rows rows(const Transform& t) const;
@@ -65,7 +69,7 @@ private:
     void triangle(const Transform& t, const Projected& a, const Projected& b, const Projected& c, const render::Palette& pal,
                   render::Cull cull, const render::Palette* cap);
     uint32_t edge(uint32_t e, const Transform& t);
-    int32_t across(const FaceInfo& info, const Transform& t, Projected& centre); // its sphere on the screen (sub-pixels)
+    int32_t across(const int32_t sphere_centre[3], int32_t radius, const Transform& t, Projected& centre); // on the screen (sub-pixels)
     bool lit(uint32_t f) const { // picked, or of the part chosen: in the highlight colour
         return (hl_[0].face == f && hl_[0].instance == instance_) || (hl_[1].face == f && hl_[1].instance == instance_) || part_ == instance_;
     }

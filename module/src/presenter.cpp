@@ -92,10 +92,11 @@ void Presenter::set_band() {
     raster_.set_target({display_.buffers[job_.buffer], depth, display_.width, display_.height, y0, rows});
 }
 
-Transform::Sight Presenter::sight(uint32_t part, const Transform& t) const {
+void Presenter::judge_part(uint32_t part, const Transform& t) {
     int32_t centre[3], radius;
-    if (!scene_.part_sphere(part, centre, radius)) return Transform::Sight::Across;
-    return t.sight(centre, radius, painter_.rows(t));
+    const bool known = scene_.part_sphere(part, centre, radius);
+    job_.sight = known ? t.sight(centre, radius, painter_.rows(t)) : Transform::Sight::Across;
+    job_.tiny = known && job_.sight != Transform::Sight::Out && painter_.tiny(centre, radius, t);
 }
 
 bool Presenter::full_pieces(uint32_t units) {
@@ -112,7 +113,7 @@ bool Presenter::full_pieces(uint32_t units) {
             job_.transform = camera_.transform(scene_, job_.instance, display_.width, display_.height);
             job_.have_transform = true;
             painter_.set_instance(job_.instance);
-            job_.sight = sight(shell, job_.transform);
+            judge_part(shell, job_.transform);
             painter_.set_inside(job_.sight == Transform::Sight::In);
         }
         const Transform& t = job_.transform;
@@ -126,8 +127,9 @@ bool Presenter::full_pieces(uint32_t units) {
             if (spent >= units) return false;
             continue;
         }
-        if (job_.boxes || scene_.part_left_out(instances[job_.instance].shell)) { // (a part left out: always its box)
-            spent += painter_.part_box(instances[job_.instance].shell, t);
+        if (job_.boxes || scene_.part_left_out(shell) || job_.tiny) {
+            // (a part left out: always its box; a tiny one until it grows)
+            spent += painter_.part_box(shell, t);
             ++job_.instance;
             job_.have_transform = false;
             if (spent >= units) return false;

@@ -73,6 +73,7 @@ private:
         bool have_transform = false;
         Transform transform{};
         Transform::Sight sight = Transform::Sight::Across; // where the instance's part lies
+        bool tiny = false;            // and whether it is a few pixels across (drawn as its box)
         uint32_t version = 0, finished = 0, applied_to = 0;
         uint32_t cost_us = 0;
         uint32_t pieces = 0;          // pieces of work this frame took so far
@@ -82,7 +83,7 @@ private:
     void set_band();
     void take_done();
     bool buffer_free(uint8_t b) const;
-    Transform::Sight sight(uint32_t part, const Transform& t) const; // its sphere's (Across: none known)
+    void judge_part(uint32_t part, const Transform& t); // job_.sight and job_.tiny, by its sphere (none known: Across)
     bool full_pieces(uint32_t units);   // faces then edges, instance by instance; true when done
     bool update_pieces(uint32_t units); // the faces since the buffer was last drawn
     void flush(uint32_t pass);

@@ -189,6 +189,36 @@ TEST(Blocked, APartsSphereHoldsEverythingDrawnOfIt) {
     }
 }
 
+// A part under a few pixels across is drawn as its box (twelve lines) until it grows: none of
+// its faces or edges is projected (issue 25: a frame's cost follows the screen).
+TEST(Blocked, APartAFewPixelsAcrossIsDrawnAsItsBox) {
+    App app;
+    app.w = 320, app.h = 240;
+    ASSERT_TRUE(app.create().ok());
+    ASSERT_TRUE(app.load(blocked(assembly())).ok());
+    app.run();
+    auto last_full = [&] {
+        for (auto e = app.events.rbegin(); e != app.events.rend(); ++e)
+            if (e->kind == Event::Kind::FrameDone && e->frame.full) return e->frame;
+        return Event{}.frame;
+    };
+    auto box_pixels = [&] {
+        uint32_t n = 0;
+        for (Rgb565 p : app.screen()) n += p == rgb565(96, 104, 128);
+        return n;
+    };
+    ASSERT_GT(last_full().triangles, 100u);
+    const uint32_t at_fit = box_pixels();
+    for (int k = 0; k < 16; ++k) app.v->act(Action::ZoomOut); // the four parts a few pixels each
+    app.run();
+    EXPECT_EQ(last_full().triangles, 0u) << "no face drawn";
+    EXPECT_GT(box_pixels(), at_fit + 8) << "the parts' boxes";
+    app.v->act(Action::Fit); // grown again: faces, no boxes
+    app.run();
+    EXPECT_GT(last_full().triangles, 100u);
+    EXPECT_EQ(box_pixels(), at_fit);
+}
+
 TEST(Blocked, EveryStoreOfABlockReads) {
     const Bytes whole = assembly();
     const Shown a = show(whole);
