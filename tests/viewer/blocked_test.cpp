@@ -4,6 +4,7 @@
 // memory too small, a corrupt block or a misplaced file gets a clear refusal.
 #include "../geom/shapes.h"
 #include "app.h"
+#include "assembly.h"
 #include "loader.h"
 #include "pack_blocks.h"
 
@@ -18,30 +19,6 @@ using namespace facet::geom;
 using namespace facet::test;
 
 namespace {
-
-// Four shapes (a plate with holes, a sphere, a torus, a trimmed B-spline patch), one part each,
-// in a row 150 mm apart.
-Bytes assembly() {
-    const Bytes shapes[] = {plate_with_holes(), sphere(), torus(), trimmed_bspline()};
-    std::vector<Pack> packs(4);
-    for (int k = 0; k < 4; ++k) EXPECT_TRUE(packs[k].open(shapes[k].data(), uint32_t(shapes[k].size())).ok());
-    return combine_packs(packs, 150.0f);
-}
-
-// The blocked form of `whole`, a part a block, every part's box the whole pack's (so the two
-// forms have one box, one default tolerance and one mesh quantum: the same mesh).
-Bytes blocked(const Bytes& whole, BlockStore store = BlockStore::Lzma) {
-    Pack p;
-    EXPECT_TRUE(p.open(whole.data(), uint32_t(whole.size())).ok());
-    const pack::Header& h = p.header();
-    std::vector<PartBox> boxes(p.shells().size());
-    for (PartBox& b : boxes)
-        for (int k = 0; k < 3; ++k) b.min[k] = h.bbox_min[k], b.max[k] = h.bbox_max[k];
-    Bytes out;
-    std::string error;
-    EXPECT_TRUE(make_blocked(p, boxes, {1, store}, out, error)) << error;
-    return out;
-}
 
 struct Shown {
     Stats stats;
@@ -142,81 +119,6 @@ TEST(Blocked, AnAssemblyShowsWhatItsWholePackShows) {
     size_t differ = 0;
     for (size_t i = 0; i < a.screen.size(); ++i) differ += a.screen[i] != b.screen[i];
     EXPECT_EQ(differ, 0u) << "pixels that differ between the whole and the blocked pack";
-}
-
-// A frame skips a part whose sphere (its box in the index) lies off the view and tests no face
-// of one wholly inside it (Presenter, Transform::sight: its geometry in camera_test.cpp). That
-// changes no pixel when the part's sphere holds everything drawn of it: checked here with each
-// part its own box (its vertices' and control points', as make_blocked takes them), every mesh
-// vertex and edge sample, at the model's one tolerance and refined.
-TEST(Blocked, APartsSphereHoldsEverythingDrawnOfIt) {
-    const Bytes whole = assembly();
-    Pack p;
-    ASSERT_TRUE(p.open(whole.data(), uint32_t(whole.size())).ok());
-    Bytes file;
-    std::string error;
-    ASSERT_TRUE(make_blocked(p, {}, {1, BlockStore::Plain}, file, error)) << error; // (each shell's own box)
-    for (const float screen_error : {0.0f, 0.5f}) {
-        App app;
-        app.w = 320, app.h = 240, app.screen_error_px = screen_error;
-        ASSERT_TRUE(app.create().ok());
-        ASSERT_TRUE(app.load(file).ok());
-        app.run();
-        for (int zoom = 0; zoom < 4; ++zoom) app.v->act(Action::ZoomIn); // (some blocks refined)
-        app.run();
-        const module::Scene& scene = static_cast<const Core*>(app.v)->scene();
-        uint32_t checked = 0;
-        for (uint32_t s = 0; s < scene.part_count(); ++s) {
-            int32_t c[3], r = 0;
-            ASSERT_TRUE(scene.part_sphere(s, c, r)) << "part " << s;
-            const auto inside = [&](const int32_t* q) {
-                double d2 = 0;
-                for (int k = 0; k < 3; ++k) d2 += double(q[k] - c[k]) * double(q[k] - c[k]);
-                ++checked;
-                return std::sqrt(d2) <= double(r);
-            };
-            const module::Part part = scene.part(s);
-            for (uint32_t f = part.first_face; f < part.first_face + part.face_count; ++f) {
-                const module::FaceInfo& F = scene.face(f);
-                for (uint32_t v = 0; v < F.vertex_count; ++v) EXPECT_TRUE(inside(scene.vertices()[F.first_vertex + v].p)) << "part " << s << " face " << f;
-            }
-            uint32_t first = 0, count = 0;
-            ASSERT_TRUE(scene.part_edges(s, first, count));
-            for (uint32_t e = first; e < first + count; ++e)
-                for (uint32_t k = 0; k < scene.samples().count[e]; ++k) EXPECT_TRUE(inside(scene.sample_q(scene.samples().first[e] + k))) << "part " << s << " edge " << e;
-        }
-        EXPECT_GT(checked, 100u);
-    }
-}
-
-// A part under a few pixels across is drawn as its box (twelve lines) until it grows: none of
-// its faces or edges is projected (issue 25: a frame's cost follows the screen).
-TEST(Blocked, APartAFewPixelsAcrossIsDrawnAsItsBox) {
-    App app;
-    app.w = 320, app.h = 240;
-    ASSERT_TRUE(app.create().ok());
-    ASSERT_TRUE(app.load(blocked(assembly())).ok());
-    app.run();
-    auto last_full = [&] {
-        for (auto e = app.events.rbegin(); e != app.events.rend(); ++e)
-            if (e->kind == Event::Kind::FrameDone && e->frame.full) return e->frame;
-        return Event{}.frame;
-    };
-    auto box_pixels = [&] {
-        uint32_t n = 0;
-        for (Rgb565 p : app.screen()) n += p == rgb565(96, 104, 128);
-        return n;
-    };
-    ASSERT_GT(last_full().triangles, 100u);
-    const uint32_t at_fit = box_pixels();
-    for (int k = 0; k < 16; ++k) app.v->act(Action::ZoomOut); // the four parts a few pixels each
-    app.run();
-    EXPECT_EQ(last_full().triangles, 0u) << "no face drawn";
-    EXPECT_GT(box_pixels(), at_fit + 8) << "the parts' boxes";
-    app.v->act(Action::Fit); // grown again: faces, no boxes
-    app.run();
-    EXPECT_GT(last_full().triangles, 100u);
-    EXPECT_EQ(box_pixels(), at_fit);
 }
 
 TEST(Blocked, EveryStoreOfABlockReads) {
