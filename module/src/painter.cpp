@@ -20,6 +20,9 @@ constexpr uint8_t kCapShade = 255;          // drawn flat, in that colour
 // A face left untessellated for its size (detail.cpp: under 2 pixels across) and under this
 // across now is drawn as a speck, not as its edges.
 constexpr int32_t kSpeckPixels = 3;
+// A face tessellated for another instance of its part and under this across in this one is
+// drawn as a speck too (detail.cpp's kMinFacePixels: the size the view tessellates a face for).
+constexpr int32_t kShownPixels = 2;
 constexpr uint8_t kSpeckShade = 200;        // a speck in the face's colour: lit about halfway
 // While the view is dragged, a face under this across is drawn as a splat in its colour, not
 // as its triangles (issue 25: coarser detail while dragging, for the frame rate).
@@ -200,6 +203,7 @@ uint32_t Painter::face(uint32_t f, const Transform& t, Rows rows, uint32_t from,
                 return F.triangle_count;
             }
         }
+        if (!dragging_ && shown_small(f, t)) return F.triangle_count; // (its speck: face_edges)
         for (uint32_t v = 0; v < F.vertex_count; ++v) {
             t.project(verts[v].p, P[v]);
             if (t.cut.on && t.cut.side(P[v].x, P[v].y, P[v].d) > 0) P[v].out |= kOutCut;
@@ -276,11 +280,12 @@ uint32_t Painter::silhouette(const FaceInfo& F, const Transform& t) {
 uint32_t Painter::face_edges(uint32_t f, const Transform& t, Rows rows, bool once) {
     // Its edges lie in its sphere; a plane facing away hides them unless a neighbour shows them.
     const FaceInfo& info = scene_.face(f);
+    if (info.state == FaceState::Done && !dragging_ && shown_small(f, t)) return speck(f, t, kShownPixels);
     if (mode_ == DisplayMode::Shaded && info.state == FaceState::Done) return 0; // a face not in yet shows its edges
     if (dragging_ && mode_ == DisplayMode::ShadedEdges && info.state == FaceState::Done) return 0; // back when the view rests
     const bool solid = mode_ != DisplayMode::Wireframe && mode_ != DisplayMode::SeeThrough; // faces hide what lies behind
     if (solid && info.state == FaceState::Deferred && !t.cut.on) {
-        if (const uint32_t work = speck(f, t)) return work;
+        if (const uint32_t work = speck(f, t, kSpeckPixels)) return work;
     }
     if (!inside_ && !t.visible(info.centre, info.radius, rows)) return 0;
     if (t.cut.on && cut_away(t, info)) return 0;
@@ -345,14 +350,28 @@ int32_t Painter::across(const int32_t sphere_centre[3], int32_t radius, const Tr
 // projection per sample for the same few pixels. Returns the work, or 0 when the face is
 // larger (or near the eye or the guard band): its edges then, as usual. (No section: a face
 // the cut crosses shows its edges.)
-uint32_t Painter::speck(uint32_t f, const Transform& t) {
+uint32_t Painter::speck(uint32_t f, const Transform& t, int32_t pixels) {
     const FaceInfo& info = scene_.face(f);
     Projected centre;
     const int32_t size = across(info.centre, info.radius, t, centre);
-    if (size < 0 || size >= kSpeckPixels * render::subpixel::kPerPixel) return 0;
+    if (size < 0 || size >= pixels * render::subpixel::kPerPixel) return 0;
     const Rgb565 colour = mode_ == DisplayMode::Shaded ? Rgb565(palette(info.rgb).colour[kSpeckShade]) : kEdgeColour;
     refused_ += !ok(raster_.line(centre.s, centre.s, colour, kLineBias));
     return 1;
+}
+
+// A face in this instance under the size the view tessellates a face for (detail.cpp), drawn
+// as its speck instead of its triangles and edges (at rest, in the solid modes; not picked,
+// no section): the view judged it by its nearest instance, and an instance further off shows
+// it as the view shows a face it left out. The same test in face() and face_edges(). (A model
+// whose every part is placed once has none: its faces were judged where they are.)
+bool Painter::shown_small(uint32_t f, const Transform& t) {
+    if (scene_.instances().size() <= scene_.part_count()) return false;
+    const FaceInfo& F = scene_.face(f);
+    if (mode_ == DisplayMode::Wireframe || mode_ == DisplayMode::SeeThrough || t.cut.on || F.radius <= 0 || lit(f)) return false;
+    Projected centre;
+    const int32_t size = across(F.centre, F.radius, t, centre);
+    return size >= 0 && size < kShownPixels * render::subpixel::kPerPixel;
 }
 
 bool Painter::tiny(const int32_t sphere_centre[3], int32_t radius, const Transform& t) {

@@ -73,7 +73,8 @@ private:
     bool lit(uint32_t f) const { // picked, or of the part chosen: in the highlight colour
         return (hl_[0].face == f && hl_[0].instance == instance_) || (hl_[1].face == f && hl_[1].instance == instance_) || part_ == instance_;
     }
-    uint32_t speck(uint32_t f, const Transform& t); // a deferred face a few pixels across: the work (0: not one)
+    uint32_t speck(uint32_t f, const Transform& t, int32_t pixels); // a face under `pixels` across: the work (0: not one)
+    bool shown_small(uint32_t f, const Transform& t); // a face in this instance under 2 pixels: its speck
     bool waiting_plane_hidden(uint32_t f, const Transform& t) const; // a deferred plane turned away
     uint32_t silhouette(const FaceInfo& F, const Transform& t); // hidden line: a curved face's outline; the work
 

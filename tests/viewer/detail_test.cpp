@@ -321,3 +321,40 @@ TEST(Detail, ADragDrawsFacesAFewPixelsAcrossAsSplats) {
     app.run();
     EXPECT_GT(full_frame(), 2 * dragged) << "most squares splats while dragging";
 }
+
+// A part placed twice, one copy far below the other (the view looks down): its faces are
+// tessellated for the nearer copy, and the farther one, where they are under two pixels, draws
+// them as specks as the view draws a face it left out (issue 25: a frame follows the screen).
+TEST(Detail, AFaceUnderTwoPixelsInAFartherInstanceIsDrawnAsASpeck) {
+    PackWriter w;
+    const uint32_t plane = w.add_surface(pack::SurfaceType::Plane, {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1});
+    constexpr uint32_t kSquares = 100;
+    for (uint32_t i = 0; i < kSquares; ++i) {
+        const float x = float(2 * (i % 10)), y = float(2 * (i / 10));
+        const uint32_t v[4] = {w.add_vertex(x, y, 0), w.add_vertex(x + 1, y, 0), w.add_vertex(x + 1, y + 1, 0), w.add_vertex(x, y + 1, 0)};
+        uint32_t e[4];
+        for (int k = 0; k < 4; ++k) e[k] = w.add_edge({pack::kStraight, 0, 1, v[k], v[(k + 1) % 4], 1e-7f, 0});
+        const uint32_t first = w.coedge_count();
+        for (int k = 0; k < 4; ++k) w.add_coedge(pack::Coedge::make(e[k], false, pack::Seam::None));
+        const uint32_t loop = w.add_loop({first, 4});
+        w.add_face({plane, loop, 1, pack::kNoIndex, pack::kNoIndex, 0, {0, 0, 0}, {x, y}, {x + 1, y + 1}});
+    }
+    const uint32_t shell = w.add_shell({0, kSquares, pack::kNoIndex, 0});
+    w.add_instance({shell, {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0}});
+    w.add_instance({shell, {1, 0, 0, 30, 0, 1, 0, 0, 0, 0, 1, -120}}); // beside it and below
+    App app;
+    ASSERT_TRUE(app.create().ok());
+    ASSERT_TRUE(app.load(w.finish()).ok());
+    app.run();
+    ASSERT_EQ(app.v->step(1000), Activity::Idle);
+    const Stats s = app.v->stats();
+    const Event* frame = nullptr;
+    for (auto e = app.events.rbegin(); e != app.events.rend() && !frame; ++e)
+        if (e->kind == Event::Kind::FrameDone && e->frame.full) frame = &*e;
+    ASSERT_NE(frame, nullptr);
+    // Both copies on the screen (framed): the nearer draws the faces it has over two pixels, the
+    // farther only specks (every square there under two pixels: none would be in for it).
+    ASSERT_GT(s.done, 0u);
+    EXPECT_GT(frame->frame.triangles, 0u);
+    EXPECT_LE(frame->frame.triangles + frame->frame.culled, s.triangles) << "the farther copy's faces drawn as specks";
+}
