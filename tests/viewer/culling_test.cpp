@@ -16,7 +16,7 @@ using namespace facet::test;
 // changes no pixel when the part's sphere holds everything drawn of it: checked here with each
 // part its own box (its vertices' and control points', as make_blocked takes them), every mesh
 // vertex and edge sample, at the model's one tolerance and refined.
-TEST(Blocked, APartsSphereHoldsEverythingDrawnOfIt) {
+TEST(Culling, APartsSphereHoldsEverythingDrawnOfIt) {
     const Bytes whole = assembly();
     Pack p;
     ASSERT_TRUE(p.open(whole.data(), uint32_t(whole.size())).ok());
@@ -58,7 +58,7 @@ TEST(Blocked, APartsSphereHoldsEverythingDrawnOfIt) {
 
 // A part under a few pixels across is drawn as its box (twelve lines) until it grows: none of
 // its faces or edges is projected (issue 25: a frame's cost follows the screen).
-TEST(Blocked, APartAFewPixelsAcrossIsDrawnAsItsBox) {
+TEST(Culling, APartAFewPixelsAcrossIsDrawnAsItsBox) {
     App app;
     app.w = 320, app.h = 240;
     ASSERT_TRUE(app.create().ok());
