@@ -1,5 +1,6 @@
 #include "scene.h"
 
+#include "geom/fmath.h"
 #include "geom/params.h"
 
 #include <cmath>
@@ -9,8 +10,6 @@ namespace {
 
 constexpr float kUnitsPerDiagonal = 1048576.0f; // 2^20: mesh quantum = diagonal / 2^20
 constexpr uint32_t kDefaultRgb = 0x00CDBEB4;    // light warm grey (B,G,R bytes)
-
-inline int32_t round_to_int(float v) { return int32_t(v + (v >= 0 ? 0.5f : -0.5f)); }
 
 } // namespace
 
@@ -346,13 +345,14 @@ uint32_t Scene::colour_of(uint32_t f) const {
     return uint32_t(c.r) | uint32_t(c.g) << 8 | uint32_t(c.b) << 16;
 }
 
+// (as append() quantizes the mesh's vertices, which hold the samples: the same integers; a
+// sample lies in the model's box, far inside the quantizer's range)
 void Scene::quantize_samples(uint32_t from, uint32_t to) {
-    const float inv = 1.0f / unit_;
+    const geom::Quantizer q(1.0f / unit_);
     for (uint32_t i = from; i < to; ++i) {
         const geom::Vec3 p = mem_.samples.p[i];
-        mem_.sample_q[3 * i] = round_to_int(p.x * inv);
-        mem_.sample_q[3 * i + 1] = round_to_int(p.y * inv);
-        mem_.sample_q[3 * i + 2] = round_to_int(p.z * inv);
+        int32_t* at = &mem_.sample_q[3 * i];
+        if (!q(p.x, at[0]) || !q(p.y, at[1]) || !q(p.z, at[2])) at[0] = at[1] = at[2] = 0;
     }
 }
 
@@ -421,18 +421,16 @@ Result Scene::append(uint32_t f, const geom::Mesh& fm, const geom::FaceStats& st
         return Result::fail(Status::Full, "the viewer's mesh is full (Capacity::mesh_vertices, mesh_triangles)");
     }
     if (fm.vertex_count > 0xFFFF) return Result::fail(Status::Full, "more than 65,535 vertices in one face");
-    const float inv = 1.0f / unit_, limit = float(1 << 30);
+    const geom::Quantizer q(1.0f / unit_), q14(16384.0f);
     for (uint32_t v = 0; v < fm.vertex_count; ++v) {
         const geom::MeshVertex& mv = fm.vertices[v];
         DrawVertex& d = mem_.vertices[v0 + v];
-        const float q[3] = {mv.p.x * inv, mv.p.y * inv, mv.p.z * inv};
-        for (int k = 0; k < 3; ++k) {
-            if (!(std::fabs(q[k]) < limit)) return Result::fail(Status::OutOfRange, "a vertex lies over 1000 diagonals from the model");
-            d.p[k] = round_to_int(q[k]);
+        if (!q(mv.p.x, d.p[0]) || !q(mv.p.y, d.p[1]) || !q(mv.p.z, d.p[2])) {
+            return Result::fail(Status::OutOfRange, "a vertex lies over 1000 diagonals from the model");
         }
-        d.n[0] = int16_t(round_to_int(mv.n.x * 16384.0f));
-        d.n[1] = int16_t(round_to_int(mv.n.y * 16384.0f));
-        d.n[2] = int16_t(round_to_int(mv.n.z * 16384.0f));
+        int32_t n[3];
+        if (!q14(mv.n.x, n[0]) || !q14(mv.n.y, n[1]) || !q14(mv.n.z, n[2])) n[0] = n[1] = n[2] = 0; // (not a number: unlit)
+        d.n[0] = int16_t(n[0]), d.n[1] = int16_t(n[1]), d.n[2] = int16_t(n[2]);
         d.pad = 0;
     }
     for (uint32_t i = 0; i < fm.triangle_count * 3; ++i) mem_.indices[i0 + i] = uint16_t(fm.indices[i]);

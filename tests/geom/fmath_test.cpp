@@ -8,6 +8,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 using namespace facet::geom;
 
@@ -70,4 +71,39 @@ TEST(Fmath, Atan2Within3e7OfLibmInEveryOctant) {
     EXPECT_EQ(atan2_f(0.0f, 1.0f), 0.0f);
     EXPECT_FLOAT_EQ(atan2_f(1.0f, 0.0f), 0.5f * kPi);
     EXPECT_FLOAT_EQ(atan2_f(0.0f, -1.0f), kPi);
+}
+
+// The quantizer is the exact product rounded once, halves away from zero: against long double
+// over points of every size and sign, scales of every kind, and the edges of its range.
+TEST(Fmath, QuantizerRoundsTheExactProduct) {
+    uint32_t seed = 12345;
+    auto next = [&] { return seed = seed * 1664525u + 1013904223u; };
+    for (const float scale : {1.0f, 16384.0f, 1.0f / 0.0137f, 3.7e4f, 1.0f / 3.0f, 7.5e-3f}) {
+        const Quantizer q(scale);
+        for (int i = 0; i < 200000; ++i) {
+            const float x = std::bit_cast<float>((next() & 0x807FFFFFu) | ((uint32_t(100 + next() % 60) & 0xFF) << 23));
+            const long double exact = (long double)x * (long double)scale;
+            int32_t got = 0;
+            if (std::fabs(exact) >= (long double)(1 << 30) - 0.5L) {
+                if (std::fabs(exact) >= (long double)(1 << 30)) {
+                    EXPECT_FALSE(q(x, got)) << x << " " << scale;
+                }
+                continue;
+            }
+            ASSERT_TRUE(q(x, got)) << x << " " << scale;
+            const long double want = exact >= 0 ? std::floor(exact + 0.5L) : -std::floor(-exact + 0.5L);
+            ASSERT_EQ((long double)got, want) << x << " * " << scale;
+        }
+    }
+    const Quantizer unit(1.0f);
+    int32_t v = 7;
+    EXPECT_TRUE(unit(0.0f, v) && v == 0);
+    EXPECT_TRUE(unit(-0.0f, v) && v == 0);
+    EXPECT_TRUE(unit(0.5f, v) && v == 1);
+    EXPECT_TRUE(unit(-0.5f, v) && v == -1);
+    EXPECT_TRUE(unit(2.5f, v) && v == 3);
+    EXPECT_TRUE(unit(1.0e-40f, v) && v == 0);
+    EXPECT_FALSE(unit(std::numeric_limits<float>::infinity(), v));
+    EXPECT_FALSE(unit(std::numeric_limits<float>::quiet_NaN(), v));
+    EXPECT_FALSE(unit(1.1e9f, v));
 }
