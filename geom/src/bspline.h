@@ -2,6 +2,7 @@
 // The B-spline pieces that eval.cpp and patches.cpp share: finding a knot span and the basis
 // functions (the layouts they read: geom/params.h).
 #include "geom/eval.h"
+#include "geom/fmath.h"
 #include "geom/params.h"
 
 #include <bit>
@@ -21,17 +22,21 @@ inline int find_span(const float* knots, int n, int p, float& t, bool periodic) 
         t = lo + std::fmod(t - lo, hi - lo);
         if (t < lo) t += hi - lo;
     }
-    if (t < lo) t = lo;
-    if (t > hi) t = hi;
+    // (The compares by order_key: the knots are finite, the pack's check; a NaN t is clamped to
+    // an end, as no float compare would.)
+    const int32_t klo = order_key(lo), khi = order_key(hi);
+    int32_t kt = order_key(t);
+    if (kt < klo) t = lo, kt = klo;
+    if (kt > khi) t = hi, kt = khi;
     int s = p;
-    if (t >= hi) {
+    if (kt >= khi) {
         s = n - 1;
-        while (s > p && knots[s] >= knots[s + 1]) --s;
+        while (s > p && order_key(knots[s]) >= order_key(knots[s + 1])) --s;
     } else {
         int a = p, b = n;
         while (b - a > 1) {
             const int m = (a + b) / 2;
-            if (t < knots[m]) b = m;
+            if (kt < order_key(knots[m])) b = m;
             else a = m;
         }
         s = a;

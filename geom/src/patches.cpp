@@ -81,10 +81,12 @@ void extract_span(const float* knots, int p, int s, float* row, int stride, int 
     const float ends[2] = {T[p], T[p + 1]};
     for (int end = 0; end < 2; ++end) {
         const float x = ends[end];
+        const int32_t kx = order_key(x); // (knots are finite: the pack's check)
         int k = 0, m = 0; // T[k] <= x < T[k+1]; m: x's multiplicity (an insertion adds one to each)
         for (int i = 0; i < nt; ++i) {
-            if (T[i] <= x) k = i;
-            m += T[i] == x;
+            const int32_t ki = order_key(T[i]);
+            if (ki <= kx) k = i;
+            m += ki == kx;
         }
         for (; m < p; ++m, ++k, ++nt, ++nq) {
             for (int i = nq; i > k - m; --i)
@@ -369,9 +371,14 @@ void PatchCache::convert_bezier(int su, int sv, PatchHead* slot) {
 const PatchCache::PatchHead* PatchCache::locate(float& u, float& v, int32_t& qs, int32_t& qt) {
     // The spans: the last point's if u and v are still in them, else found (and wrapped or
     // clamped as the B-spline's own evaluation does).
+    // (Compared by order_key: a NaN is in no span, as by float compares.)
+    const auto in_span = [](float x, const float* knots, int s) {
+        const int32_t k = order_key(x);
+        return k >= order_key(knots[s]) && k < order_key(knots[s + 1]);
+    };
     int su = last_su_, sv = last_sv_;
-    if (su < 0 || !(u >= uk_[su] && u < uk_[su + 1])) su = detail::find_span(uk_, nu_, pu_, u, u_periodic_);
-    if (sv < 0 || !(v >= vk_[sv] && v < vk_[sv + 1])) sv = detail::find_span(vk_, nv_, pv_, v, v_periodic_);
+    if (su < 0 || !in_span(u, uk_, su)) su = detail::find_span(uk_, nu_, pu_, u, u_periodic_);
+    if (sv < 0 || !in_span(v, vk_, sv)) sv = detail::find_span(vk_, nv_, pv_, v, v_periodic_);
     if (su != last_su_ || sv != last_sv_ || !last_) {
         last_ = patch(su, sv);
         last_su_ = su, last_sv_ = sv;

@@ -107,3 +107,19 @@ TEST(Fmath, QuantizerRoundsTheExactProduct) {
     EXPECT_FALSE(unit(std::numeric_limits<float>::quiet_NaN(), v));
     EXPECT_FALSE(unit(1.1e9f, v));
 }
+
+// order_key orders and equates as the floats do (finite ones, -0 as +0).
+TEST(Fmath, OrderKeyComparesAsTheFloats) {
+    uint32_t seed = 777;
+    auto next = [&] { return seed = seed * 1664525u + 1013904223u; };
+    auto any = [&] { // finite floats of every size and sign, zeros and near-equals among them
+        const uint32_t r = next();
+        if (r % 16 == 0) return (r & 32) ? -0.0f : 0.0f;
+        return std::bit_cast<float>(((next() & 0x807FFFFFu) | (uint32_t(next() % 254 + 1) << 23)) & ~(r % 8 == 1 ? 0xFFu : 0u));
+    };
+    for (int i = 0; i < 500000; ++i) {
+        const float a = any(), b = (i % 4 == 0) ? a : any();
+        ASSERT_EQ(order_key(a) < order_key(b), a < b) << a << " " << b;
+        ASSERT_EQ(order_key(a) == order_key(b), a == b) << a << " " << b;
+    }
+}
