@@ -25,6 +25,13 @@ inline float per_span(float h) {
 inline uint32_t exponent_bits(int e, int d) { return uint32_t(uint8_t(int8_t(e))) << (8 * d); }
 inline int exponent_at(uint32_t exps, int d) { return int8_t(uint8_t(exps >> (8 * d))); }
 
+// Whether x lies in the span [knots[s], knots[s+1]), by order_key (the knots are finite, the
+// pack's check; a NaN is in no span, as by float compares).
+inline bool in_span(float x, const float* knots, int s) {
+    const int32_t k = order_key(x);
+    return k >= order_key(knots[s]) && k < order_key(knots[s + 1]);
+}
+
 // a x t / 2^30 for t in [0, 2^30]: |result| <= |a|.
 inline int32_t mulq(int32_t a, int32_t t) { return int32_t((int64_t(a) * t) >> 30); }
 
@@ -371,11 +378,6 @@ void PatchCache::convert_bezier(int su, int sv, PatchHead* slot) {
 const PatchCache::PatchHead* PatchCache::locate(float& u, float& v, int32_t& qs, int32_t& qt) {
     // The spans: the last point's if u and v are still in them, else found (and wrapped or
     // clamped as the B-spline's own evaluation does).
-    // (Compared by order_key: a NaN is in no span, as by float compares.)
-    const auto in_span = [](float x, const float* knots, int s) {
-        const int32_t k = order_key(x);
-        return k >= order_key(knots[s]) && k < order_key(knots[s + 1]);
-    };
     int su = last_su_, sv = last_sv_;
     if (su < 0 || !in_span(u, uk_, su)) su = detail::find_span(uk_, nu_, pu_, u, u_periodic_);
     if (sv < 0 || !in_span(v, vk_, sv)) sv = detail::find_span(vk_, nv_, pv_, v, v_periodic_);
@@ -529,7 +531,7 @@ void CurveSpans::extract(int span, Slot& slot) const {
 
 const CurveSpans::Slot& CurveSpans::slot_of(float& t, int32_t& q) {
     int at = last_;
-    if (at < 0 || !(t >= knots_[slots_[at].span] && t < knots_[slots_[at].span + 1])) {
+    if (at < 0 || !in_span(t, knots_, slots_[at].span)) {
         const int span = detail::find_span(knots_, n_, p_, t, periodic_);
         at = span % kSlots;
         if (slots_[at].span != span) extract(span, slots_[at]);
