@@ -249,23 +249,6 @@ float SphereView::mm_per_pixel(const float p[3], float r) const {
 
 // Each side test is conservative: the sphere's distance to a side plane is compared with its
 // radius times a bound on the plane normal's length.
-Transform::Sight Transform::sight(const int32_t centre[3], int32_t radius, Rows rows) const {
-    if (!visible(centre, radius, rows)) return Sight::Out;
-    int32_t cx, cy, d;
-    to_view(centre, cx, cy, d);
-    const int64_t rv = (int64_t(radius) * k16) >> 16;
-    const int64_t r = rv + rv / 8 + 2;
-    if (d - r <= near) return Sight::Across;
-    // Each side as visible() writes it, the sphere now wholly on the inner side (by r times a
-    // bound of the side's normal: f + w over sqrt(f^2 + w^2)).
-    const int64_t f = f16, w = cx16, X = cx, Y = cy, D = ortho ? dist : d;
-    if (X * f - w * D >= -r * (f + w) || -X * f - w * D >= -r * (f + w)) return Sight::Across;
-    const int64_t top = rows.top16, bottom = rows.bottom16;
-    const int64_t top_n = top < 0 ? -top : top, bottom_n = bottom < 0 ? -bottom : bottom;
-    if (Y * f - top * D >= -r * (f + top_n) || -Y * f - bottom * D >= -r * (f + bottom_n)) return Sight::Across;
-    return Sight::In;
-}
-
 bool Transform::visible(const int32_t centre[3], int32_t radius, Rows rows) const {
     if (radius <= 0) return true;
     int32_t cx, cy, d;
@@ -281,6 +264,24 @@ bool Transform::visible(const int32_t centre[3], int32_t radius, Rows rows) cons
     const int64_t top_n = top < 0 ? -top : top, bottom_n = bottom < 0 ? -bottom : bottom;
     if (Y * f - top * D > r * (f + top_n) || -Y * f - bottom * D > r * (f + bottom_n)) return false;
     return true;
+}
+
+// The same sides as visible(), each now asking whether the sphere lies wholly on its inner side.
+Transform::Sight Transform::sight(const int32_t centre[3], int32_t radius, Rows rows) const {
+    if (!visible(centre, radius, rows)) return Sight::Out;
+    int32_t cx, cy, d;
+    to_view(centre, cx, cy, d);
+    const int64_t rv = (int64_t(radius) * k16) >> 16;
+    const int64_t r = rv + rv / 8 + 2;
+    if (d - r <= near) return Sight::Across;
+    // Each side as visible() writes it, the sphere now wholly on the inner side (by r times a
+    // bound of the side's normal: f + w over sqrt(f^2 + w^2)).
+    const int64_t f = f16, w = cx16, X = cx, Y = cy, D = ortho ? dist : d;
+    if (X * f - w * D >= -r * (f + w) || -X * f - w * D >= -r * (f + w)) return Sight::Across;
+    const int64_t top = rows.top16, bottom = rows.bottom16;
+    const int64_t top_n = top < 0 ? -top : top, bottom_n = bottom < 0 ? -bottom : bottom;
+    if (Y * f - top * D >= -r * (f + top_n) || -Y * f - bottom * D >= -r * (f + bottom_n)) return Sight::Across;
+    return Sight::In;
 }
 
 } // namespace facet::module
