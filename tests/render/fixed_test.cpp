@@ -44,3 +44,13 @@ TEST(Fixed, IsqrtIsFloorOfSquareRoot) {
 TEST(Fixed, ReciprocalIsTheExactFloorEverywhere) {
     for (uint32_t d = 1u << 15; d < 1u << 16; ++d) ASSERT_EQ(recip31(d), uint32_t((uint64_t(1) << 31) / d)) << d;
 }
+
+// A line whose length is a power of two steps by shifts (render/src/lines.cpp): the same steps
+// as the reciprocal's, over the range lines take (a difference of 2^14 pixels, shifted by 16).
+TEST(Fixed, ThePowersOfTwoDivideAsShifts) {
+    for (int k = 0; k <= 13; ++k) {
+        const Reciprocal r = reciprocal(uint32_t(1) << k);
+        for (int64_t x = -(int64_t(1) << 30); x <= (int64_t(1) << 30); x += 9973 + (x & 63))
+            ASSERT_EQ(divide(x, r), int32_t(x >> k)) << x << " / 2^" << k;
+    }
+}

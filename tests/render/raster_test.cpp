@@ -340,3 +340,34 @@ TEST(Raster, ATriangleCalledHiddenDrawsNothing) {
     EXPECT_GT(said_hidden, 50);
     EXPECT_GT(said_shown, 50);
 }
+
+// A splat: a square of size x size pixels around its centre's pixel, each depth-tested at the
+// centre's depth and drawn where nearer, clipped to the screen and the band; a size out of
+// range or a centre past the guard band draws nothing.
+TEST(Raster, ASplatIsADepthTestedSquareClippedToTheBand) {
+    constexpr uint16_t W = 20, H = 12;
+    for (const uint16_t band : {H, uint16_t(5)}) {
+        std::vector<Rgb565> screen(W * H, 0);
+        for (uint16_t y0 = 0; y0 < H; y0 += band) {
+            const uint16_t rows = uint16_t(std::min<int>(band, H - y0));
+            std::vector<Rgb565> px(W * rows, 0);
+            std::vector<uint16_t> depth(W * rows, 0xFFFF);
+            if (3 >= y0 && 3 < y0 + rows) depth[size_t(3 - y0) * W + 10] = 100; // pixel (10, 3): nearer than the splats
+            Rasterizer r(render::Target{px.data(), depth.data(), W, H, y0, rows});
+            const auto at = [](int x, int y, uint16_t z) { return ScreenVertex{x * 16 + 8, y * 16 + 8, z, 0}; };
+            EXPECT_EQ(r.splat(at(10, 4, 500), 3, 7), Status::Ok); // pixels 9..11 x 3..5
+            EXPECT_EQ(r.splat(at(0, 11, 500), 4, 9), Status::Ok);  // pixels -1..2 x 10..13: clipped
+            EXPECT_EQ(r.splat(at(5, 5, 500), 0, 3), Status::OutOfRange);
+            EXPECT_EQ(r.splat(at(5, 5, 500), Rasterizer::kMaxSplat + 1, 3), Status::OutOfRange);
+            EXPECT_EQ(r.splat({1 << 20, 0, 500, 0}, 2, 3), Status::OutOfRange);
+            std::copy(px.begin(), px.end(), screen.begin() + W * y0);
+        }
+        for (int y = 0; y < H; ++y)
+            for (int x = 0; x < W; ++x) {
+                Rgb565 want = 0;
+                if (x >= 9 && x <= 11 && y >= 3 && y <= 5 && !(x == 10 && y == 3)) want = 7;
+                if (x <= 2 && y >= 10) want = 9;
+                EXPECT_EQ(screen[size_t(y) * W + x], want) << x << "," << y << " band " << band;
+            }
+    }
+}
