@@ -203,7 +203,8 @@ uint32_t Painter::face(uint32_t f, const Transform& t, Rows rows, uint32_t from,
                 return F.triangle_count;
             }
         }
-        if (!dragging_ && shown_small(f, t)) return F.triangle_count; // (its speck: face_edges)
+        Projected centre;
+        if (!dragging_ && far_copy_specks(f, t) && under(F.centre, F.radius, t, kShownPixels, centre)) return F.triangle_count; // (its speck: face_edges)
         for (uint32_t v = 0; v < F.vertex_count; ++v) {
             t.project(verts[v].p, P[v]);
             if (t.cut.on && t.cut.side(P[v].x, P[v].y, P[v].d) > 0) P[v].out |= kOutCut;
@@ -280,11 +281,12 @@ uint32_t Painter::silhouette(const FaceInfo& F, const Transform& t) {
 uint32_t Painter::face_edges(uint32_t f, const Transform& t, Rows rows, bool once) {
     // Its edges lie in its sphere; a plane facing away hides them unless a neighbour shows them.
     const FaceInfo& info = scene_.face(f);
-    if (info.state == FaceState::Done && !dragging_ && shown_small(f, t)) return speck(f, t, kShownPixels);
+    if (info.state == FaceState::Done && !dragging_ && far_copy_specks(f, t)) { // (as face() judged it)
+        if (const uint32_t work = speck(f, t, kShownPixels)) return work;
+    }
     if (mode_ == DisplayMode::Shaded && info.state == FaceState::Done) return 0; // a face not in yet shows its edges
     if (dragging_ && mode_ == DisplayMode::ShadedEdges && info.state == FaceState::Done) return 0; // back when the view rests
-    const bool solid = mode_ != DisplayMode::Wireframe && mode_ != DisplayMode::SeeThrough; // faces hide what lies behind
-    if (solid && info.state == FaceState::Deferred && !t.cut.on) {
+    if (info.state == FaceState::Deferred && speckable(t)) {
         if (const uint32_t work = speck(f, t, kSpeckPixels)) return work;
     }
     if (!inside_ && !t.visible(info.centre, info.radius, rows)) return 0;
@@ -344,7 +346,8 @@ int32_t Painter::across(const int32_t sphere_centre[3], int32_t radius, const Tr
     return render::divide(size, render::reciprocal(uint32_t(over)));
 }
 
-// A deferred face a few pixels across shows as a speck: the pixel of its sphere's centre
+// A face a few pixels across, left out by the view (or tessellated for a nearer copy of its
+// part), shows as a speck: the pixel of its sphere's centre
 // (within a pixel of the surface), depth-tested like an edge, in the edges' colour (the face's
 // own where edges are not drawn). Its edges would be a knot of lines a pixel long, a
 // projection per sample for the same few pixels. Returns the work, or 0 when the face is
@@ -353,31 +356,30 @@ int32_t Painter::across(const int32_t sphere_centre[3], int32_t radius, const Tr
 uint32_t Painter::speck(uint32_t f, const Transform& t, int32_t pixels) {
     const FaceInfo& info = scene_.face(f);
     Projected centre;
-    const int32_t size = across(info.centre, info.radius, t, centre);
-    if (size < 0 || size >= pixels * render::subpixel::kPerPixel) return 0;
+    if (!under(info.centre, info.radius, t, pixels, centre)) return 0;
     const Rgb565 colour = mode_ == DisplayMode::Shaded ? Rgb565(palette(info.rgb).colour[kSpeckShade]) : kEdgeColour;
     refused_ += !ok(raster_.line(centre.s, centre.s, colour, kLineBias));
     return 1;
 }
 
-// A face in this instance under the size the view tessellates a face for (detail.cpp), drawn
-// as its speck instead of its triangles and edges (at rest, in the solid modes; not picked,
-// no section): the view judged it by its nearest instance, and an instance further off shows
-// it as the view shows a face it left out. The same test in face() and face_edges(). (A model
-// whose every part is placed once has none: its faces were judged where they are.)
-bool Painter::shown_small(uint32_t f, const Transform& t) {
-    if (scene_.instances().size() <= scene_.part_count()) return false;
-    const FaceInfo& F = scene_.face(f);
-    if (mode_ == DisplayMode::Wireframe || mode_ == DisplayMode::SeeThrough || t.cut.on || F.radius <= 0 || lit(f)) return false;
-    Projected centre;
-    const int32_t size = across(F.centre, F.radius, t, centre);
-    return size >= 0 && size < kShownPixels * render::subpixel::kPerPixel;
+bool Painter::under(const int32_t sphere_centre[3], int32_t radius, const Transform& t, int32_t pixels, Projected& centre) {
+    const int32_t size = across(sphere_centre, radius, t, centre);
+    return size >= 0 && size < pixels * render::subpixel::kPerPixel;
+}
+
+// Whether a tessellated face may be a speck in this instance: one under the size the view
+// tessellates a face for (kShownPixels; detail.cpp) is drawn as its speck instead of its
+// triangles and edges, at rest (face() and face_edges() test its size alike): the view
+// judged it by its part's nearest instance, and one further off shows it as the view shows a
+// face it left out. Not a picked or chosen face; and a model whose every part is placed once
+// has none (its faces were judged where they are).
+bool Painter::far_copy_specks(uint32_t f, const Transform& t) const {
+    return scene_.instances().size() > scene_.part_count() && speckable(t) && !lit(f);
 }
 
 bool Painter::tiny(const int32_t sphere_centre[3], int32_t radius, const Transform& t) {
     Projected centre;
-    const int32_t size = across(sphere_centre, radius, t, centre);
-    return size >= 0 && size < kTinyPartPixels * render::subpixel::kPerPixel;
+    return under(sphere_centre, radius, t, kTinyPartPixels, centre);
 }
 
 uint32_t Painter::part_box(uint32_t part, const Transform& t) {

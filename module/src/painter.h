@@ -74,7 +74,12 @@ private:
         return (hl_[0].face == f && hl_[0].instance == instance_) || (hl_[1].face == f && hl_[1].instance == instance_) || part_ == instance_;
     }
     uint32_t speck(uint32_t f, const Transform& t, int32_t pixels); // a face under `pixels` across: the work (0: not one)
-    bool shown_small(uint32_t f, const Transform& t); // a face in this instance under 2 pixels: its speck
+    // Whether a sphere is under `pixels` across on the screen (its centre projected into `centre`).
+    bool under(const int32_t sphere_centre[3], int32_t radius, const Transform& t, int32_t pixels, Projected& centre);
+    // Specks in the solid modes (faces hide what lies behind) and with no section (a face the
+    // cut crosses shows its edges).
+    bool speckable(const Transform& t) const { return mode_ != DisplayMode::Wireframe && mode_ != DisplayMode::SeeThrough && !t.cut.on; }
+    bool far_copy_specks(uint32_t f, const Transform& t) const; // a tessellated face that may be a speck here
     bool waiting_plane_hidden(uint32_t f, const Transform& t) const; // a deferred plane turned away
     uint32_t silhouette(const FaceInfo& F, const Transform& t); // hidden line: a curved face's outline; the work
 

@@ -11,6 +11,23 @@ namespace {
 constexpr float kUnitsPerDiagonal = 1048576.0f; // 2^20: mesh quantum = diagonal / 2^20
 constexpr uint32_t kDefaultRgb = 0x00CDBEB4;    // light warm grey (B,G,R bytes)
 
+// The sphere around a box (lo <= hi, mesh units): its centre, and half its diagonal rounded up
+// (a unit for the centre's rounding, two more) -- as tight as a sphere holding the box can be,
+// so a size on the screen is not overstated. False (no sphere) past 1e9 units.
+bool sphere_around(const int32_t lo[3], const int32_t hi[3], int32_t centre[3], int32_t& radius) {
+    float r2 = 0;
+    for (int i = 0; i < 3; ++i) {
+        centre[i] = int32_t((int64_t(lo[i]) + hi[i]) / 2);
+        // (hi >= lo: the span fits 32 unsigned bits, and converts without the 64-bit routine)
+        const float half = 0.5f * float(uint32_t(hi[i]) - uint32_t(lo[i])) + 1.0f;
+        r2 += half * half;
+    }
+    const float r = std::sqrt(r2) + 2.0f;
+    if (!(r < 1e9f)) return false;
+    radius = int32_t(r);
+    return true;
+}
+
 } // namespace
 
 Result Scene::open(const geom::Pack& pack) {
@@ -178,17 +195,7 @@ bool Scene::part_corners(uint32_t s, int32_t corners[8][3]) const {
 
 bool Scene::part_sphere(uint32_t s, int32_t centre[3], int32_t& radius) const {
     int32_t lo[3], hi[3];
-    if (!part_box(s, lo, hi)) return false;
-    float r2 = 0;
-    for (int k = 0; k < 3; ++k) {
-        centre[k] = int32_t((int64_t(lo[k]) + hi[k]) / 2);
-        const float half = 0.5f * (float(hi[k]) - float(lo[k])) + 1.0f; // (the centre's rounding)
-        r2 += half * half;
-    }
-    const float r = std::sqrt(r2) + 2.0f;
-    if (!(r < 1e9f)) return false;
-    radius = int32_t(r);
-    return true;
+    return part_box(s, lo, hi) && sphere_around(lo, hi, centre, radius);
 }
 
 bool Scene::part_edges(uint32_t s, uint32_t& first, uint32_t& count) const {
@@ -395,18 +402,8 @@ void Scene::bound_by_edges(uint32_t f) {
     info.planar = surface_type(f) == uint8_t(pack::SurfaceType::Plane);
     info.radius = 0;
     if (box.empty()) return;
-    const int32_t *lo = box.lo, *hi = box.hi;
-    // The sphere around the box (its centre, half its diagonal, rounded up): as tight as a
-    // sphere holding the box can be, so a face's size on the screen is not overstated (append()
-    // bounds a mesh by half the box's edges summed, which needs no root).
-    float r2 = 0;
-    for (int i = 0; i < 3; ++i) {
-        info.centre[i] = int32_t((int64_t(lo[i]) + hi[i]) / 2);
-        // (hi >= lo: the span fits 32 unsigned bits, and converts without the 64-bit routine)
-        const float half = 0.5f * float(uint32_t(hi[i]) - uint32_t(lo[i])) + 1.0f; // (the centre's rounding)
-        r2 += half * half;
-    }
-    info.radius = int32_t(std::sqrt(r2)) + 2;
+    // (append() bounds a mesh by half the box's edges summed, which needs no root)
+    if (!sphere_around(box.lo, box.hi, info.centre, info.radius)) info.radius = 0;
 }
 
 void Scene::defer(uint32_t f) {

@@ -140,6 +140,12 @@ struct App {
             if (it->kind == k) return &*it;
         return nullptr;
     }
+    // The last whole frame's (FrameDone with full), or null.
+    const Event* last_full_frame() const {
+        for (auto it = events.rbegin(); it != events.rend(); ++it)
+            if (it->kind == Event::Kind::FrameDone && it->frame.full) return &*it;
+        return nullptr;
+    }
 };
 
 // The screen box of one instance's faces (pixels), from the camera; face: one of them only.

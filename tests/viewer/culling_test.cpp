@@ -64,11 +64,7 @@ TEST(Culling, APartAFewPixelsAcrossIsDrawnAsItsBox) {
     ASSERT_TRUE(app.create().ok());
     ASSERT_TRUE(app.load(blocked(assembly())).ok());
     app.run();
-    auto last_full = [&] {
-        for (auto e = app.events.rbegin(); e != app.events.rend(); ++e)
-            if (e->kind == Event::Kind::FrameDone && e->frame.full) return e->frame;
-        return Event{}.frame;
-    };
+    auto last_full = [&] { return app.last_full_frame() ? app.last_full_frame()->frame : Event{}.frame; };
     auto box_pixels = [&] {
         uint32_t n = 0;
         for (Rgb565 p : app.screen()) n += p == rgb565(96, 104, 128);

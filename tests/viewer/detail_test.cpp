@@ -92,25 +92,35 @@ void expect_deferred_only_small(const App& app, const char* when) {
     EXPECT_EQ(deferred, s.deferred) << when;
 }
 
-// Each deferred face on the screen shows as its speck (painter.cpp): the pixel of its sphere's
-// centre in the edges' colour, not the knot of edges a pixel long it was drawn as before.
-uint32_t expect_specks(const App& app) {
-    const Core& core = *static_cast<const Core*>(app.v);
-    const module::Scene& scene = core.scene();
-    const module::Transform t = core.camera().transform(scene, 0, app.w, app.h);
+constexpr Rgb565 kEdge = rgb565(28, 30, 38); // the edges' colour, and the specks'
+
+// For each face in `state` whose sphere's centre projects onto the screen (the first instance's
+// view), visit(face, its info, the transform, the screen's pixel there); returns how many.
+template <typename Visit>
+uint32_t at_face_centres(const App& app, module::FaceState state, Visit visit) {
+    const module::Scene& scene = static_cast<const Core*>(app.v)->scene();
+    const module::Transform t = static_cast<const Core*>(app.v)->camera().transform(scene, 0, app.w, app.h);
     const std::vector<Rgb565> screen = app.screen();
-    uint32_t specks = 0;
+    uint32_t n = 0;
     for (uint32_t f = 0; f < scene.face_count(); ++f) {
         const module::FaceInfo& info = scene.face(f);
-        if (info.state != module::FaceState::Deferred) continue;
+        if (info.state != state) continue;
         module::Projected p{};
         t.project(info.centre, p);
         const int32_t x = p.s.x >> 4, y = p.s.y >> 4;
         if (p.out || x < 0 || x >= app.w || y < 0 || y >= app.h) continue;
-        EXPECT_EQ(screen[size_t(y) * app.w + x], rgb565(28, 30, 38)) << "face " << f << " at " << x << ", " << y;
-        ++specks;
+        visit(f, info, t, screen[size_t(y) * app.w + x]);
+        ++n;
     }
-    return specks;
+    return n;
+}
+
+// Each deferred face on the screen shows as its speck (painter.cpp): the pixel of its sphere's
+// centre in the edges' colour, not the knot of edges a pixel long it was drawn as before.
+uint32_t expect_specks(const App& app) {
+    return at_face_centres(app, module::FaceState::Deferred, [](uint32_t f, const module::FaceInfo&, const module::Transform&, Rgb565 at) {
+        EXPECT_EQ(at, kEdge) << "face " << f;
+    });
 }
 
 // A section turned on (the viewer's cycle from off: across x) and the work done, then off
@@ -282,40 +292,25 @@ TEST(Detail, ADragDrawsFacesAFewPixelsAcrossAsSplats) {
     ASSERT_TRUE(app.load(squares(1600, 40)).ok());
     app.run(); // the squares about two pixels across: those nearer the eye in, the rest specks
     ASSERT_EQ(app.v->step(1000), Activity::Idle);
-    auto full_frame = [&] { // the last whole frame's triangles
-        for (auto e = app.events.rbegin(); e != app.events.rend(); ++e)
-            if (e->kind == Event::Kind::FrameDone && e->frame.full) return e->frame.triangles;
-        return 0u;
-    };
+    auto full_frame = [&] { return app.last_full_frame() ? app.last_full_frame()->frame.triangles : 0u; };
     app.v->pointer(0, 0, 1); // the left button down, then moved past a tap's slop: an orbit
     for (int k = 0; k < 2; ++k) {
         app.v->pointer(6, 0, 1);
         app.run();
     }
     const uint32_t dragged = full_frame();
-    const Core& core = *static_cast<const Core*>(app.v);
-    const module::Scene& scene = core.scene();
-    const module::Transform t = core.camera().transform(scene, 0, app.w, app.h);
-    const std::vector<Rgb565> screen = app.screen();
+    const module::Scene& scene = static_cast<const Core*>(app.v)->scene();
     uint32_t splats = 0;
-    for (uint32_t f = 0; f < scene.face_count(); ++f) {
-        const module::FaceInfo& info = scene.face(f);
-        if (info.state != module::FaceState::Done) continue;
-        module::Projected centre{};
-        t.project(info.centre, centre);
-        const int32_t x = centre.s.x >> 4, y = centre.s.y >> 4;
-        if (centre.out || x < 0 || x >= app.w || y < 0 || y >= app.h) continue;
+    at_face_centres(app, module::FaceState::Done, [&](uint32_t f, const module::FaceInfo& info, const module::Transform& t, Rgb565 at) {
         // Every square the same colour and normal: its splat's colour, or its triangles'.
-        const uint32_t rgb = info.rgb;
         render::Palette palette;
-        render::make_palette(palette, uint8_t(rgb & 255), uint8_t((rgb >> 8) & 255), uint8_t((rgb >> 16) & 255));
+        render::make_palette(palette, uint8_t(info.rgb & 255), uint8_t((info.rgb >> 8) & 255), uint8_t((info.rgb >> 16) & 255));
         const Rgb565 lit = Rgb565(palette.colour[t.shade(scene.vertices()[info.first_vertex].n)]);
         // (A square the drag brought over two pixels came in after the frame drew its speck:
         // over it, its splat (not pulled toward the eye as the speck is) leaves the speck.)
-        const Rgb565 at = screen[size_t(y) * app.w + x];
-        EXPECT_TRUE(at == lit || at == rgb565(28, 30, 38)) << "face " << f;
+        EXPECT_TRUE(at == lit || at == kEdge) << "face " << f;
         splats += at == lit;
-    }
+    });
     EXPECT_GT(splats, 100u);
     app.v->pointer(0, 0, 0); // released: at rest, the triangles again
     app.run();
@@ -326,31 +321,13 @@ TEST(Detail, ADragDrawsFacesAFewPixelsAcrossAsSplats) {
 // tessellated for the nearer copy, and the farther one, where they are under two pixels, draws
 // them as specks as the view draws a face it left out (issue 25: a frame follows the screen).
 TEST(Detail, AFaceUnderTwoPixelsInAFartherInstanceIsDrawnAsASpeck) {
-    PackWriter w;
-    const uint32_t plane = w.add_surface(pack::SurfaceType::Plane, {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1});
-    constexpr uint32_t kSquares = 100;
-    for (uint32_t i = 0; i < kSquares; ++i) {
-        const float x = float(2 * (i % 10)), y = float(2 * (i / 10));
-        const uint32_t v[4] = {w.add_vertex(x, y, 0), w.add_vertex(x + 1, y, 0), w.add_vertex(x + 1, y + 1, 0), w.add_vertex(x, y + 1, 0)};
-        uint32_t e[4];
-        for (int k = 0; k < 4; ++k) e[k] = w.add_edge({pack::kStraight, 0, 1, v[k], v[(k + 1) % 4], 1e-7f, 0});
-        const uint32_t first = w.coedge_count();
-        for (int k = 0; k < 4; ++k) w.add_coedge(pack::Coedge::make(e[k], false, pack::Seam::None));
-        const uint32_t loop = w.add_loop({first, 4});
-        w.add_face({plane, loop, 1, pack::kNoIndex, pack::kNoIndex, 0, {0, 0, 0}, {x, y}, {x + 1, y + 1}});
-    }
-    const uint32_t shell = w.add_shell({0, kSquares, pack::kNoIndex, 0});
-    w.add_instance({shell, {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0}});
-    w.add_instance({shell, {1, 0, 0, 30, 0, 1, 0, 0, 0, 0, 1, -120}}); // beside it and below
     App app;
     ASSERT_TRUE(app.create().ok());
-    ASSERT_TRUE(app.load(w.finish()).ok());
+    ASSERT_TRUE(app.load(squares(100, 10, {{0, 0, 0}, {30, 0, -120}})).ok()); // the second beside the first and below
     app.run();
     ASSERT_EQ(app.v->step(1000), Activity::Idle);
     const Stats s = app.v->stats();
-    const Event* frame = nullptr;
-    for (auto e = app.events.rbegin(); e != app.events.rend() && !frame; ++e)
-        if (e->kind == Event::Kind::FrameDone && e->frame.full) frame = &*e;
+    const Event* frame = app.last_full_frame();
     ASSERT_NE(frame, nullptr);
     // Both copies on the screen (framed): the nearer draws the faces it has over two pixels, the
     // farther only specks (every square there under two pixels: none would be in for it).

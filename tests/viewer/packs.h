@@ -5,8 +5,10 @@
 #include "pack_writer.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
+#include <initializer_list>
 #include <vector>
 
 namespace facet::test {
@@ -141,8 +143,8 @@ inline Bytes tube() {
 }
 
 // A grid of `count` unit squares 2 mm apart in z = 0, `columns` a row, one face each (their own
-// four edges), in one shell.
-inline Bytes squares(uint32_t count, uint32_t columns = 100) {
+// four edges), in one shell, placed once at each offset (mm).
+inline Bytes squares(uint32_t count, uint32_t columns = 100, std::initializer_list<std::array<float, 3>> offsets = {{0, 0, 0}}) {
     PackWriter w;
     const uint32_t plane = w.add_surface(pack::SurfaceType::Plane, {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1});
     for (uint32_t i = 0; i < count; ++i) {
@@ -156,7 +158,7 @@ inline Bytes squares(uint32_t count, uint32_t columns = 100) {
         w.add_face({plane, loop, 1, pack::kNoIndex, pack::kNoIndex, 0, {0, 0, 0}, {x, y}, {x + 1, y + 1}});
     }
     const uint32_t shell = w.add_shell({0, count, pack::kNoIndex, 0});
-    w.add_instance({shell, {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0}});
+    for (const std::array<float, 3>& o : offsets) w.add_instance({shell, {1, 0, 0, o[0], 0, 1, 0, o[1], 0, 0, 1, o[2]}});
     return w.finish();
 }
 
