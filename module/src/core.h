@@ -51,6 +51,7 @@ public:
     const module::Scene& scene() const { return scene_; }
     const Display& display() const { return config_.display; }
     const module::Overlay& overlay() const { return presenter_.overlay(); }
+    module::Painter& painter() { return painter_; }
 
     // Tools (tools.cpp): the section plane and the parts.
     void tool(Action a);

@@ -183,6 +183,7 @@ uint32_t Painter::face(uint32_t f, const Transform& t, Rows rows, uint32_t from,
     Projected* P = mem_.projected.data();
     const DrawVertex* verts = scene_.vertices() + F.first_vertex;
     spent = 0;
+    if (from == 0) projected_face_ = ~0u;
     if (mode_ == DisplayMode::Wireframe) return F.triangle_count; // edges only
     const bool white = mode_ == DisplayMode::HiddenLine; // faces mostly hide what is behind them
     const bool inside = t.closed && t.inside_shows();    // its back faces may show through a section
@@ -205,6 +206,7 @@ uint32_t Painter::face(uint32_t f, const Transform& t, Rows rows, uint32_t from,
         }
         Projected centre;
         if (!dragging_ && far_copy_specks(f, t) && under(F.centre, F.radius, t, kShownPixels, centre)) return F.triangle_count; // (its speck: face_edges)
+        const bool places = reuse_ && done_faces_show_edges(); // (its edges will be drawn from its vertices)
         for (uint32_t v = 0; v < F.vertex_count; ++v) {
             t.project(verts[v].p, P[v]);
             if (t.cut.on && t.cut.side(P[v].x, P[v].y, P[v].d) > 0) P[v].out |= kOutCut;
@@ -212,7 +214,9 @@ uint32_t Painter::face(uint32_t f, const Transform& t, Rows rows, uint32_t from,
             // edge: a cylinder's silhouette) still read against each other.
             P[v].s.shade = white ? uint8_t(200 + ((t.shade(verts[v].n) * 55) >> 8)) : t.shade(verts[v].n);
             if (outlines) P[v].front = t.facing(verts[v].p, verts[v].n) > 0;
+            if (places && verts[v].place < mem_.vertex_at.size()) mem_.vertex_at[verts[v].place] = uint16_t(v);
         }
+        if (places) projected_face_ = f;
         spent = 1 + (F.vertex_count >> (outlines ? 1 : 2));
     }
     const render::Palette& pal = palette(lit(f) ? (hl_[1].face == f && hl_[1].instance == instance_ ? kPicked2 : kPicked) : white ? kPaper : F.rgb);
@@ -284,8 +288,7 @@ uint32_t Painter::face_edges(uint32_t f, const Transform& t, Rows rows, bool onc
     if (info.state == FaceState::Done && !dragging_ && far_copy_specks(f, t)) { // (as face() judged it)
         if (const uint32_t work = speck(f, t, kShownPixels)) return work;
     }
-    if (mode_ == DisplayMode::Shaded && info.state == FaceState::Done) return 0; // a face not in yet shows its edges
-    if (dragging_ && mode_ == DisplayMode::ShadedEdges && info.state == FaceState::Done) return 0; // back when the view rests
+    if (info.state == FaceState::Done && !done_faces_show_edges()) return 0; // (a face not in yet shows its edges)
     if (info.state == FaceState::Deferred && speckable(t)) {
         if (const uint32_t work = speck(f, t, kSpeckPixels)) return work;
     }
@@ -303,9 +306,13 @@ uint32_t Painter::face_edges(uint32_t f, const Transform& t, Rows rows, bool onc
     const geom::Pack& pack = block.pack;
     const pack::Face& F = pack.faces()[f - block.first_face];
     uint32_t work = 1;
+    Along along;
+    along.face = reuse_ && projected_face_ == f ? &info : nullptr;
+    const std::span<const uint16_t> counts = scene_.samples().count;
     for (uint32_t l = F.first_loop; l < F.first_loop + F.loop_count; ++l) {
         const pack::Loop& L = pack.loops()[l];
-        for (uint32_t c = L.first_coedge; c < L.first_coedge + L.coedge_count; ++c) {
+        along.loop_place = along.place;
+        for (uint32_t c = L.first_coedge; c < L.first_coedge + L.coedge_count; along.place += counts[block.first_edge + pack.coedges()[c].edge()], ++c) {
             const pack::Coedge& C = pack.coedges()[c];
             if (C.seam() != pack::Seam::None) continue; // a periodic surface's seam is no B-rep edge to the eye
             const uint32_t local = C.edge(), e = block.first_edge + local;
@@ -314,7 +321,8 @@ uint32_t Painter::face_edges(uint32_t f, const Transform& t, Rows rows, bool onc
                 if (mem_.edge_drawn[e]) continue;
                 mem_.edge_drawn[e] = 1;
             }
-            work += edge(e, t);
+            along.reversed = C.reversed();
+            work += edge(e, t, along);
         }
     }
     return work;
@@ -397,26 +405,52 @@ uint32_t Painter::part_box(uint32_t part, const Transform& t) {
     return 4;
 }
 
-uint32_t Painter::edge(uint32_t e, const Transform& t) {
+const Projected* Painter::vertex_at_sample(const Along& along, uint32_t place, uint32_t s) const {
+    const FaceInfo& F = *along.face;
+    const int32_t* q = scene_.sample_q(s);
+    auto at = [&](uint32_t where) -> const Projected* {
+        if (where >= mem_.vertex_at.size()) return nullptr;
+        const uint32_t v = mem_.vertex_at[where];
+        if (v >= F.vertex_count) return nullptr;
+        const int32_t* p = scene_.vertices()[F.first_vertex + v].p;
+        return p[0] == q[0] && p[1] == q[1] && p[2] == q[2] ? &mem_.projected[v] : nullptr;
+    };
+    const Projected* v = at(place);
+    if (!v && place > along.loop_place) v = at(place - 1);
+    if (!v) v = at(along.loop_place);
+    return v;
+}
+
+
+uint32_t Painter::edge(uint32_t e, const Transform& t, const Along& along) {
     const geom::EdgeSamples& samples = scene_.samples();
     const uint32_t first = samples.first[e], n = samples.count[e];
-    Projected prev{}, cur{};
+    Projected own[2]; // samples no vertex of the face lies at, projected here (this one and the last)
+    const Projected* prev = nullptr;
     int64_t prev_side = 0, side = 0;
     for (uint32_t k = 0; k < n; ++k) {
-        t.project(scene_.sample_q(first + k), cur);
-        if (t.cut.on) side = t.cut.side(cur.x, cur.y, cur.d);
+        const Projected* cur = along.face ? vertex_at_sample(along, along.place + (along.reversed ? n - 1 - k : k), first + k) : nullptr;
+        if (!cur) {
+            t.project(scene_.sample_q(first + k), own[k & 1]);
+            cur = &own[k & 1];
+            ++edge_samples_.projected;
+        } else {
+            ++edge_samples_.from_vertices;
+        }
+        if (t.cut.on) side = t.cut.side(cur->x, cur->y, cur->d);
         // Segments that leave the view volume are left out (edges are not clipped); a section
-        // keeps the part of a segment on its side.
-        if (k > 0 && !(prev.out | cur.out)) {
+        // keeps the part of a segment on its side. (A face's vertices may carry its cut flag:
+        // the segment's side is measured here.)
+        if (prev && !((prev->out | cur->out) & (kOutNear | kOutGuard))) {
             if (!t.cut.on || (prev_side <= 0 && side <= 0)) {
-                refused_ += !ok(raster_.line(prev.s, cur.s, kEdgeColour, kLineBias));
+                refused_ += !ok(raster_.line(prev->s, cur->s, kEdgeColour, kLineBias));
             } else if (prev_side <= 0 || side <= 0) {
                 const float u = float(prev_side) / float(prev_side - side); // where the segment meets the plane
-                const Projected& in = prev_side <= 0 ? prev : cur;
+                const Projected& in = prev_side <= 0 ? *prev : *cur;
                 Projected at{};
-                at.x = round_to_int(float(prev.x) + float(cur.x - prev.x) * u);
-                at.y = round_to_int(float(prev.y) + float(cur.y - prev.y) * u);
-                at.d = round_to_int(float(prev.d) + float(cur.d - prev.d) * u);
+                at.x = round_to_int(float(prev->x) + float(cur->x - prev->x) * u);
+                at.y = round_to_int(float(prev->y) + float(cur->y - prev->y) * u);
+                at.d = round_to_int(float(prev->d) + float(cur->d - prev->d) * u);
                 if (to_screen(t, at)) refused_ += !ok(raster_.line(in.s, at.s, kEdgeColour, kLineBias));
             }
         }

@@ -121,7 +121,6 @@ bool Presenter::full_pieces(uint32_t units) {
         if (job_.sight == Transform::Sight::Out) { // the whole part off the view (or the band): none of it
             ++job_.instance;
             job_.face = 0;
-            job_.stage = Job::Stage::Faces;
             job_.have_transform = false;
             ++spent;
             if (spent >= units) return false;
@@ -135,28 +134,25 @@ bool Presenter::full_pieces(uint32_t units) {
             if (spent >= units) return false;
             continue;
         }
-        if (job_.stage == Job::Stage::Faces) {
-            while (job_.face < sh.face_count && spent < units) {
-                const uint32_t f = sh.first_face + job_.face;
-                uint32_t used;
-                job_.tri = painter_.face(f, t, rows, job_.tri, units - spent, used);
-                spent += used + 1;
-                if (job_.tri < scene_.face(f).triangle_count) return false; // more of this face next time
-                job_.tri = 0;
-                ++job_.face;
-            }
-            if (job_.face < sh.face_count) return false;
-            // Then each edge once in this instance (an edge has two faces).
-            job_.stage = Job::Stage::Edges;
-            job_.face = 0;
+        if (job_.face == 0 && job_.tri == 0) { // each edge once in this instance (an edge has two faces)
             painter_.reset_edges(shell);
-            spent += sh.face_count / 256;
+            spent += 1 + sh.face_count / 256;
         }
-        for (; job_.face < sh.face_count && spent < units; ++job_.face) spent += painter_.face_edges(sh.first_face + job_.face, t, rows, true);
+        // Each face's triangles, then its edges not drawn yet over them (from its projected
+        // vertices: Painter::face_edges).
+        while (job_.face < sh.face_count && spent < units) {
+            const uint32_t f = sh.first_face + job_.face;
+            uint32_t used;
+            job_.tri = painter_.face(f, t, rows, job_.tri, units - spent, used);
+            spent += used + 1;
+            if (job_.tri < scene_.face(f).triangle_count) return false; // more of this face next time
+            job_.tri = 0;
+            spent += painter_.face_edges(f, t, rows, true);
+            ++job_.face;
+        }
         if (job_.face < sh.face_count) return false;
         ++job_.instance;
         job_.face = 0;
-        job_.stage = Job::Stage::Faces;
         job_.have_transform = false;
     }
     return true;
@@ -272,7 +268,7 @@ void Presenter::run_piece(uint32_t units, uint32_t pass) {
         if (spent * 2 >= units) return;
         units -= spent;
     }
-    if (job_.stage == Job::Stage::Faces || job_.stage == Job::Stage::Edges) {
+    if (job_.stage == Job::Stage::Faces) {
         if (!(job_.full ? full_pieces(units) : update_pieces(units))) return;
         job_.stage = Job::Stage::Overlay;
         return; // the overlay is a piece of its own (Work::Overlay: its cost is measured apart)

@@ -60,14 +60,14 @@ public:
     void flush_done() { done_count_ = done_count_ + 1; } // any context: only interrupts and this write it
     // Something else projected vertices into the painter's scratch (a pick): the face being
     // drawn starts over (its pixels drawn so far are drawn again, the same).
-    void projected_reused() { job_.tri = 0; }
+    void projected_reused() { job_.tri = 0, painter_.forget_projection(); }
 
 private:
     struct Job {
         bool active = false, full = false, boxes = false, dragging = false;
         uint8_t buffer = 0;
         uint16_t band = 0;            // full frames: the band being drawn
-        enum class Stage : uint8_t { Begin, Faces, Edges, Overlay, Flush } stage = Stage::Begin;
+        enum class Stage : uint8_t { Begin, Faces, Overlay, Flush } stage = Stage::Begin;
         uint32_t instance = 0, face = 0; // cursor: the instance, and the face within its shell (or done_order index)
         uint32_t tri = 0;             // and the next triangle of that face
         bool have_transform = false;
@@ -84,7 +84,7 @@ private:
     void take_done();
     bool buffer_free(uint8_t b) const;
     void judge_part(uint32_t part, const Transform& t); // job_.sight and job_.tiny, by its sphere (none known: Across)
-    bool full_pieces(uint32_t units);   // faces then edges, instance by instance; true when done
+    bool full_pieces(uint32_t units);   // each face and its edges, instance by instance; true when done
     bool update_pieces(uint32_t units); // the faces since the buffer was last drawn
     void flush(uint32_t pass);
 

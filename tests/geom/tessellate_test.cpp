@@ -33,6 +33,9 @@ struct Tessellated {
     std::vector<Vec2> uv;
     std::vector<uint32_t> indices;  // three per triangle
     std::vector<uint32_t> face_of;  // per triangle
+    std::vector<uint16_t> places;   // per vertex: its place along its face's boundary
+    std::vector<uint32_t> first_vertex; // per face: its first vertex (then the next face's)
+    std::vector<uint32_t> sample_first, sample_count; // per edge: its samples in `samples`
     std::vector<Vec3> samples;      // every edge sample's point
     uint32_t boundary_samples = 0;  // samples around the loops (each coedge's, its ends once)
 };
@@ -50,6 +53,8 @@ std::string tessellate(const Pack& pack, float tolerance, uint32_t units, Tessel
     EdgeSamples samples{first, count, t, p};
     if (!sample_edges(pack, opt, samples).ok()) return "edge sampling failed";
     out.samples.assign(p.begin(), p.begin() + samples.used);
+    out.sample_first.assign(first.begin(), first.end());
+    out.sample_count.assign(count.begin(), count.end());
     for (const pack::Coedge& c : pack.coedges()) out.boundary_samples += count[c.edge()] ? count[c.edge()] - 1 : 0;
     const FaceCapacity capacity{};
     std::vector<uint64_t> memory(face_storage_bytes(capacity) / 8 + 1);
@@ -58,9 +63,11 @@ std::string tessellate(const Pack& pack, float tolerance, uint32_t units, Tessel
     std::vector<MeshVertex> mv(1 << 17);
     std::vector<uint32_t> mi(3 << 18);
     std::vector<Vec2> muv(1 << 17);
-    Mesh mesh{mv, mi, muv};
+    std::vector<uint16_t> places(1 << 17);
+    Mesh mesh{mv, mi, muv, places};
     for (uint32_t f = 0; f < pack.faces().size(); ++f) {
         const uint32_t before = mesh.triangle_count;
+        out.first_vertex.push_back(mesh.vertex_count);
         FaceJob job;
         job.start(pack, f, samples, opt, storage, mesh);
         Result r;
@@ -69,6 +76,8 @@ std::string tessellate(const Pack& pack, float tolerance, uint32_t units, Tessel
         if (!r.ok()) return "face " + std::to_string(f) + ": " + r.what;
         out.face_of.insert(out.face_of.end(), mesh.triangle_count - before, f);
     }
+    out.first_vertex.push_back(mesh.vertex_count);
+    out.places.assign(places.begin(), places.begin() + mesh.vertex_count);
     out.vertices.assign(mv.begin(), mv.begin() + mesh.vertex_count);
     out.uv.assign(muv.begin(), muv.begin() + mesh.vertex_count);
     out.indices.assign(mi.begin(), mi.begin() + 3 * mesh.triangle_count);
@@ -205,6 +214,68 @@ TEST(Tessellation, AFinerToleranceGivesNoFewerTriangles) {
             ASSERT_EQ(tessellate(pack, tol, 0, m), "") << s.name;
             EXPECT_GE(m.face_of.size(), last) << s.name << " at " << tol << " mm";
             last = m.face_of.size();
+        }
+    }
+}
+
+// A vertex on a face's boundary says where along it (geom::Mesh::places): the place of its edge
+// sample in the walk over the face's loops, coedges and samples that a drawing of the face's
+// edges takes to find a vertex at each sample instead of projecting it again. Every placed
+// vertex lies exactly at that sample, and every sample of a drawn coedge (not a seam, not a
+// pole) has a vertex of its face at its place, or at the place before it (the coedges' shared
+// end, kept once) or at its loop's first place (where the loop closes).
+TEST(Tessellation, BoundaryVerticesSayWhichSampleTheyAre) {
+    for (const Shape& s : shapes()) {
+        for (float tol : {3.0f, 0.5f, 0.05f}) {
+            SCOPED_TRACE(std::string(s.name) + " at " + std::to_string(tol) + " mm");
+            std::vector<uint32_t> words;
+            copy_aligned(s.bytes, words);
+            Pack pack;
+            ASSERT_TRUE(pack.open(words.data(), uint32_t(s.bytes.size())).ok());
+            Tessellated m;
+            ASSERT_EQ(tessellate(pack, tol, 0, m), "");
+            auto same = [](Vec3 a, Vec3 b) { return std::memcmp(&a, &b, sizeof a) == 0; };
+            uint32_t placed = 0;
+            for (uint32_t f = 0; f < pack.faces().size(); ++f) {
+                const pack::Face& F = pack.faces()[f];
+                std::map<uint32_t, uint32_t> sample_at; // place -> sample
+                std::map<uint32_t, uint32_t> loop_of;   // place -> its loop's first place
+                std::set<uint32_t> drawn_places;        // of the coedges drawn as edges
+                uint32_t place = 0;
+                for (uint32_t l = F.first_loop; l < F.first_loop + F.loop_count; ++l) {
+                    const pack::Loop& L = pack.loops()[l];
+                    const uint32_t loop_place = place;
+                    for (uint32_t c = L.first_coedge; c < L.first_coedge + L.coedge_count; ++c) {
+                        const pack::Coedge& C = pack.coedges()[c];
+                        const uint32_t e = C.edge(), n = m.sample_count[e];
+                        // (A seam or a pole is drawn as no edge; their samples count all the same.)
+                        const bool drawn = C.seam() == pack::Seam::None && pack.edges()[e].curve != pack::kNoIndex;
+                        for (uint32_t k = 0; k < n; ++k, ++place) {
+                            sample_at[place] = m.sample_first[e] + (C.reversed() ? n - 1 - k : k);
+                            loop_of[place] = loop_place;
+                            if (drawn) drawn_places.insert(place);
+                        }
+                    }
+                }
+                std::map<uint32_t, uint32_t> vertex_at; // place -> a vertex there
+                for (uint32_t v = m.first_vertex[f]; v < m.first_vertex[f + 1]; ++v) {
+                    if (m.places[v] == kNotOnBoundary) continue;
+                    ASSERT_TRUE(sample_at.count(m.places[v])) << "face " << f << ": a place past its boundary";
+                    EXPECT_TRUE(same(m.vertices[v].p, m.samples[sample_at[m.places[v]]])) << "face " << f << ", place " << m.places[v];
+                    vertex_at[m.places[v]] = v;
+                    ++placed;
+                }
+                for (const auto& [at, sample] : sample_at) {
+                    if (!drawn_places.count(at)) continue;
+                    bool found = false;
+                    for (uint32_t where : {at, at - 1, loop_of[at]}) {
+                        const auto v = vertex_at.find(where);
+                        found = found || (where <= at && v != vertex_at.end() && same(m.vertices[v->second].p, m.samples[sample]));
+                    }
+                    EXPECT_TRUE(found) << "face " << f << ": no vertex found for the sample at place " << at;
+                }
+            }
+            EXPECT_GT(placed, 0u);
         }
     }
 }

@@ -8,6 +8,7 @@
 #include <cstring>
 #include <map>
 #include <memory>
+#include <utility>
 
 using namespace facet;
 using namespace facet::geom;
@@ -225,4 +226,41 @@ TEST(Viewer, ASectionCutsTheModelAndShowsTheSolidsInside) {
     const std::vector<Rgb565> after = app.screen();
     const size_t bar = size_t(core.overlay().taken().top) * app.w;
     EXPECT_TRUE(std::equal(after.begin() + bar, after.end(), whole.begin() + bar));
+}
+
+// A tessellated face's B-rep edges are drawn from its projected vertices wherever one lies at
+// an edge sample (Painter::face_edges): the same points, so the same pixels as projecting every
+// sample again, in each display mode, turned, and through a section (whose side is measured per
+// segment, not taken from the face's cut vertices); and nearly every sample is one of them.
+TEST(Viewer, EdgesDrawnFromTheFacesVerticesMatchTheirSamplesProjected) {
+    const std::pair<const char*, Bytes> models[] = {{"polygon and triangle", polygon_and_triangle(40)}, {"disc", disc()},
+                                                    {"tube", tube()}, {"two blocks", two_blocks()}};
+    for (const auto& [name, bytes] : models) {
+        SCOPED_TRACE(name);
+        std::vector<std::vector<Rgb565>> screens[2];
+        module::Painter::EdgeSampleCounts counts[2], tally[2]; // (tally: the turned frame's)
+        for (int reuse = 0; reuse < 2; ++reuse) {
+            App app;
+            ASSERT_TRUE(app.create().ok());
+            Core& core = *static_cast<Core*>(app.v);
+            core.painter().set_vertex_reuse(reuse == 1);
+            ASSERT_TRUE(app.load(bytes).ok());
+            app.run();
+            auto look = [&]() {
+                app.run();
+                screens[reuse].push_back(app.screen());
+                const module::Painter::EdgeSampleCounts c = core.painter().take_edge_sample_counts();
+                counts[reuse].from_vertices += c.from_vertices, counts[reuse].projected += c.projected;
+            };
+            (void)core.painter().take_edge_sample_counts(); // (the wireframe while the faces came in)
+            app.v->key('d'), look(); // shaded with edges, turned: counted
+            tally[reuse] = std::exchange(counts[reuse], {});
+            for (int mode = 0; mode < 4; ++mode) app.v->key('m'), look();
+            app.v->key('m'), app.v->set_section({true, {0.6f, 0.0f, 0.8f}, 10.0f}), look();
+        }
+        ASSERT_EQ(screens[0].size(), screens[1].size());
+        for (size_t k = 0; k < screens[0].size(); ++k) EXPECT_TRUE(screens[0][k] == screens[1][k]) << "picture " << k;
+        EXPECT_EQ(tally[0].from_vertices, 0u);
+        EXPECT_GT(tally[1].from_vertices, 9 * tally[1].projected) << "the samples of tessellated faces' edges are their vertices";
+    }
 }
