@@ -1,5 +1,7 @@
 #include "presenter.h"
 
+#include "render/text.h"
+
 namespace facet::module {
 
 Result Presenter::configure(const Display& d, uint32_t frame_budget_us, bool interface) {
@@ -90,6 +92,22 @@ void Presenter::set_band() {
     const uint16_t rows = uint16_t(display_.height - y0 < display_.band_lines ? display_.height - y0 : display_.band_lines);
     uint16_t* depth = incremental_ && buffers_ == 2 ? display_.depth[job_.buffer] : display_.depth[0];
     raster_.set_target({display_.buffers[job_.buffer], depth, display_.width, display_.height, y0, rows});
+}
+
+void Presenter::catch_up() {
+    const uint8_t b = job_.buffer, o = uint8_t(b ^ 1);
+    if (buffers_ != 2 || buf_[o].version != version_ || buf_[o].applied <= buf_[b].applied) return;
+    // The faces the other buffer has and this one lacks, drawn again, against a copy of its
+    // colour and depth: copying costs about an instruction for two pixels, a triangle's
+    // set-up (its vertices and edges with it) a few hundred: the copy wins from a triangle
+    // for every 512 pixels.
+    const uint32_t pixels = uint32_t(display_.width) * display_.height, worth = pixels / 512;
+    uint32_t triangles = 0;
+    for (uint32_t k = buf_[b].applied; k < buf_[o].applied && triangles < worth; ++k) triangles += scene_.face(scene_.done_face(k)).triangle_count;
+    if (triangles < worth) return;
+    render::copy_pixels(display_.buffers[b], display_.buffers[o], pixels);
+    render::copy_pixels(display_.depth[b], display_.depth[o], pixels);
+    buf_[b].applied = buf_[o].applied;
 }
 
 void Presenter::judge_part(uint32_t part, const Transform& t) {
@@ -256,6 +274,8 @@ void Presenter::run_piece(uint32_t units, uint32_t pass) {
         if (job_.full) {
             painter_.background();
             raster_.clear_depth();
+        } else {
+            catch_up();
         }
         job_.stage = Job::Stage::Faces;
         job_.instance = 0;

@@ -81,6 +81,9 @@ private:
     };
     void start(uint32_t finished);
     void set_band();
+    // An update of one of two buffers that lags the other by many faces: the other's picture
+    // copied in (its faces then applied), instead of drawing them all again.
+    void catch_up();
     void take_done();
     bool buffer_free(uint8_t b) const;
     void judge_part(uint32_t part, const Transform& t); // job_.sight and job_.tiny, by its sphere (none known: Across)

@@ -30,6 +30,24 @@ void fill_pixels(Rgb565* p, uint32_t n, Rgb565 c) {
     if (n & 1) *reinterpret_cast<Rgb565*>(w) = c;
 }
 
+void copy_pixels(Rgb565* to, const Rgb565* from, uint32_t n) {
+    using Word = uint32_t __attribute__((may_alias, aligned(4)));
+    if (((reinterpret_cast<uintptr_t>(to) ^ reinterpret_cast<uintptr_t>(from)) & 2) == 0) {
+        if ((reinterpret_cast<uintptr_t>(to) & 2) && n) *to++ = *from++, --n;
+        Word* w = reinterpret_cast<Word*>(to);
+        const Word* r = reinterpret_cast<const Word*>(from);
+        uint32_t words = n / 2;
+        for (; words >= 8; words -= 8, w += 8, r += 8) {
+            const uint32_t a = r[0], b = r[1], c = r[2], d = r[3], e = r[4], f = r[5], g = r[6], h = r[7];
+            w[0] = a, w[1] = b, w[2] = c, w[3] = d, w[4] = e, w[5] = f, w[6] = g, w[7] = h;
+        }
+        while (words--) *w++ = *r++;
+        to = reinterpret_cast<Rgb565*>(w), from = reinterpret_cast<const Rgb565*>(r);
+        n &= 1;
+    }
+    while (n--) *to++ = *from++;
+}
+
 int32_t text_width(const char* text, int32_t scale) {
     int32_t n = 0;
     while (text[n]) ++n;

@@ -14,6 +14,9 @@ constexpr int32_t kCellWidth = 6, kLineHeight = 10;  // a character's advance, a
 
 // n pixels of one colour from p (two a word store).
 void fill_pixels(Rgb565* p, uint32_t n, Rgb565 colour);
+// n pixels (or 16-bit depths) from `from` to `to`, which do not overlap: eight words a round
+// where both lie alike in their words.
+void copy_pixels(Rgb565* to, const Rgb565* from, uint32_t n);
 
 // The text's width in pixels at `scale` (1 or more: each font pixel scale x scale).
 int32_t text_width(const char* text, int32_t scale = 1);
