@@ -52,6 +52,7 @@ public:
     const Display& display() const { return config_.display; }
     const module::Overlay& overlay() const { return presenter_.overlay(); }
     module::Painter& painter() { return painter_; }
+    module::Presenter& presenter() { return presenter_; }
 
     // Tools (tools.cpp): the section plane and the parts.
     void tool(Action a);

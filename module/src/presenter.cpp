@@ -96,7 +96,7 @@ void Presenter::set_band() {
 
 void Presenter::catch_up() {
     const uint8_t b = job_.buffer, o = uint8_t(b ^ 1);
-    if (buffers_ != 2 || buf_[o].version != version_ || buf_[o].applied <= buf_[b].applied) return;
+    if (!catch_up_ || buffers_ != 2 || buf_[o].version != version_ || buf_[o].applied <= buf_[b].applied) return;
     // The faces the other buffer has and this one lacks, drawn again, against a copy of its
     // colour and depth: copying costs about an instruction for two pixels, a triangle's
     // set-up (its vertices and edges with it) a few hundred: the copy wins from a triangle

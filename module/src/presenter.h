@@ -61,6 +61,9 @@ public:
     // Something else projected vertices into the painter's scratch (a pick): the face being
     // drawn starts over (its pixels drawn so far are drawn again, the same).
     void projected_reused() { job_.tri = 0, painter_.forget_projection(); }
+    // Off: a lagging buffer draws the faces it lacks again (the reference catch_up() must
+    // match, for tests).
+    void set_catch_up(bool on) { catch_up_ = on; }
 
 private:
     struct Job {
@@ -100,6 +103,7 @@ private:
     Display display_{};
     uint8_t buffers_ = 1;
     bool incremental_ = false; // full frames with a depth buffer per draw buffer
+    bool catch_up_ = true;     // set_catch_up()
     bool boxes_ = false;       // set_boxes()
     bool dragging_ = false;    // set_dragging()
     uint16_t bands_ = 1;
