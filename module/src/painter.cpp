@@ -421,7 +421,6 @@ const Projected* Painter::vertex_at_sample(const Along& along, uint32_t place, u
     return v;
 }
 
-
 uint32_t Painter::edge(uint32_t e, const Transform& t, const Along& along) {
     const geom::EdgeSamples& samples = scene_.samples();
     const uint32_t first = samples.first[e], n = samples.count[e];
