@@ -78,7 +78,7 @@ void Presenter::start(uint32_t finished) {
     job_.buffer = b;
     job_.boxes = boxes_;
     job_.dragging = dragging_;
-    job_.full = boxes_ || !(incremental_ && buf_[b].version == version_);
+    job_.full = !updates(b);
     job_.version = version_;
     job_.finished = finished;
     job_.applied_to = scene_.totals().done;
@@ -94,19 +94,31 @@ void Presenter::set_band() {
     raster_.set_target({display_.buffers[job_.buffer], depth, display_.width, display_.height, y0, rows});
 }
 
+bool Presenter::updates(uint8_t b) const {
+    if (boxes_ || !incremental_) return false;
+    if (buf_[b].version == version_) return true;
+    // Drawn for an earlier state, the other buffer for this one: a copy of it, then updates.
+    return catch_up_ && buffers_ == 2 && buf_[b ^ 1].version == version_;
+}
+
 void Presenter::catch_up() {
     const uint8_t b = job_.buffer, o = uint8_t(b ^ 1);
-    if (!catch_up_ || buffers_ != 2 || buf_[o].version != version_ || buf_[o].applied <= buf_[b].applied) return;
-    // The faces the other buffer has and this one lacks, drawn again, against a copy of its
-    // colour and depth: copying costs about an instruction for two pixels, a triangle's
-    // set-up (its vertices and edges with it) a few hundred: the copy wins from a triangle
-    // for every 512 pixels.
-    const uint32_t pixels = uint32_t(display_.width) * display_.height, worth = pixels / 512;
-    uint32_t triangles = 0;
-    for (uint32_t k = buf_[b].applied; k < buf_[o].applied && triangles < worth; ++k) triangles += scene_.face(scene_.done_face(k)).triangle_count;
-    if (triangles < worth) return;
+    if (buffers_ != 2) return;
+    if (buf_[b].version == version_) { // (else updates() chose the copy: a whole frame costs far more)
+        if (!catch_up_ || buf_[o].version != version_ || buf_[o].applied <= buf_[b].applied) return;
+        // The faces the other buffer has and this one lacks, drawn again, against a copy of its
+        // colour and depth: copying costs about an instruction for two pixels, a triangle's
+        // set-up (its vertices and edges with it) a few hundred: the copy wins from a triangle
+        // for every 512 pixels.
+        const uint32_t worth = uint32_t(display_.width) * display_.height / 512;
+        uint32_t triangles = 0;
+        for (uint32_t k = buf_[b].applied; k < buf_[o].applied && triangles < worth; ++k) triangles += scene_.face(scene_.done_face(k)).triangle_count;
+        if (triangles < worth) return;
+    }
+    const uint32_t pixels = uint32_t(display_.width) * display_.height;
     render::copy_pixels(display_.buffers[b], display_.buffers[o], pixels);
     render::copy_pixels(display_.depth[b], display_.depth[o], pixels);
+    buf_[b].version = version_;
     buf_[b].applied = buf_[o].applied;
 }
 
@@ -252,7 +264,7 @@ Work Presenter::work() const {
         return job_.full ? Work::Frame : Work::Update;
     }
     const uint8_t b = buffers_ == 2 ? uint8_t(next_ & 1) : 0;
-    return incremental_ && buf_[b].version == version_ ? Work::Update : Work::Frame;
+    return updates(b) ? Work::Update : Work::Frame;
 }
 
 void Presenter::run(uint32_t units, uint32_t pass) {

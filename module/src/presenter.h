@@ -84,8 +84,11 @@ private:
     };
     void start(uint32_t finished);
     void set_band();
-    // An update of one of two buffers that lags the other by many faces: the other's picture
-    // copied in (its faces then applied), instead of drawing them all again.
+    // Whether buffer b's next frame is an update (the faces since it was drawn), not a whole
+    // frame: drawn for the picture's state, or the other buffer is (a copy of it, then updates).
+    bool updates(uint8_t b) const;
+    // An update of one of two buffers that is stale, or lags the other by many faces: the
+    // other's picture copied in (its faces then applied), instead of drawing them all again.
     void catch_up();
     void take_done();
     bool buffer_free(uint8_t b) const;

@@ -49,9 +49,10 @@ TEST(Viewer, BandsGiveTheSamePixelsAsFullFrames) {
     }
 }
 
-// While the faces fill in, a draw buffer that lags the other by many faces takes a copy of
-// it (Presenter::catch_up) instead of drawing those faces again: the pictures flushed are the
-// ones drawing them again gives, with far fewer triangles drawn.
+// While the faces fill in, a draw buffer that lags the other by many faces, or was drawn for
+// an earlier state than the other, takes a copy of it (Presenter::catch_up) instead of drawing
+// those faces again or a whole frame: the pictures flushed are the ones drawing them gives,
+// with far fewer triangles drawn and one whole frame fewer.
 TEST(Viewer, ABufferLaggingTheOtherCatchesUpByACopy) {
     // Two layers of squares, the second behind and a little aside (depth decides what shows of
     // each square's two copies); a progress frame every 21 faces (42 triangles, over the
@@ -61,6 +62,7 @@ TEST(Viewer, ABufferLaggingTheOtherCatchesUpByACopy) {
     const Bytes pack = squares(700, 25, {{0, 0, 0}, {0.6f, 0.6f, -1}});
     std::vector<std::vector<Rgb565>> pictures[2];
     uint32_t updated[2] = {}; // triangles the updates drew
+    uint32_t whole[2] = {};   // whole frames
     for (int copy = 0; copy < 2; ++copy) {
         App app;
         app.mode = Flush::Scanout;
@@ -74,6 +76,7 @@ TEST(Viewer, ABufferLaggingTheOtherCatchesUpByACopy) {
                 if (e.kind != Event::Kind::FrameDone) continue;
                 pictures[copy].push_back(app.screen());
                 if (!e.frame.full) updated[copy] += e.frame.triangles;
+                whole[copy] += e.frame.full;
             }
         }
     }
@@ -82,6 +85,7 @@ TEST(Viewer, ABufferLaggingTheOtherCatchesUpByACopy) {
     for (size_t k = 0; k < pictures[0].size(); ++k) EXPECT_TRUE(pictures[0][k] == pictures[1][k]) << "picture " << k;
     EXPECT_GT(updated[0], 1400u) << "the faces came in as updates";
     EXPECT_LT(updated[1] * 3, updated[0] * 2) << "the lagging buffer's faces not drawn again";
+    EXPECT_EQ(whole[1] + 1, whole[0]) << "the second buffer's first frame a copy of the first's wireframe, then its faces";
 }
 
 TEST(Viewer, WithoutAClockEachStepIsOnePieceOfWork) {
