@@ -107,9 +107,9 @@ void Presenter::catch_up() {
     if (buf_[b].version == version_) { // (else updates() chose the copy: a whole frame costs far more)
         if (!catch_up_ || buf_[o].version != version_ || buf_[o].applied <= buf_[b].applied) return;
         // The faces the other buffer has and this one lacks, drawn again, against a copy of its
-        // colour and depth: copying costs about an instruction for two pixels, a triangle's
-        // set-up (its vertices and edges with it) a few hundred: the copy wins from a triangle
-        // for every 512 pixels.
+        // colour and depth: a copy costs about an instruction and a half a pixel on the ARM926,
+        // a triangle drawn about a thousand with its vertices and edges, so the copy wins once
+        // they hold a triangle for every 700 pixels or so (taken from one for every 512).
         const uint32_t worth = uint32_t(display_.width) * display_.height / 512;
         uint32_t triangles = 0;
         for (uint32_t k = buf_[b].applied; k < buf_[o].applied && triangles < worth; ++k) triangles += scene_.face(scene_.done_face(k)).triangle_count;
