@@ -164,23 +164,34 @@ bool Presenter::full_pieces(uint32_t units) {
             if (spent >= units) return false;
             continue;
         }
-        if (job_.face == 0 && job_.tri == 0) { // each edge once in this instance (an edge has two faces)
-            painter_.reset_edges(shell);
-            spent += 1 + sh.face_count / 256;
-        }
         // Each face's triangles, then its edges not drawn yet over them (from its projected
-        // vertices: Painter::face_edges).
-        while (job_.face < sh.face_count && spent < units) {
-            const uint32_t f = sh.first_face + job_.face;
-            uint32_t used;
-            job_.tri = painter_.face(f, t, rows, job_.tri, units - spent, used);
-            spent += used + 1;
-            if (job_.tri < scene_.face(f).triangle_count) return false; // more of this face next time
-            job_.tri = 0;
-            spent += painter_.face_edges(f, t, rows, true);
-            ++job_.face;
+        // vertices: Painter::face_edges). In hidden line, the edges after all of the part's
+        // faces: a curved face's outline is tested against the depth beside it, which an edge
+        // drawn first would hold (a pixel of the outline lost where it meets an edge).
+        const bool edges_after = painter_.mode() == DisplayMode::HiddenLine;
+        if (job_.stage == Job::Stage::Faces) {
+            if (job_.face == 0 && job_.tri == 0) { // each edge once in this instance (an edge has two faces)
+                painter_.reset_edges(shell);
+                spent += 1 + sh.face_count / 256;
+            }
+            while (job_.face < sh.face_count && spent < units) {
+                const uint32_t f = sh.first_face + job_.face;
+                uint32_t used;
+                job_.tri = painter_.face(f, t, rows, job_.tri, units - spent, used);
+                spent += used + 1;
+                if (job_.tri < scene_.face(f).triangle_count) return false; // more of this face next time
+                job_.tri = 0;
+                if (!edges_after) spent += painter_.face_edges(f, t, rows, true);
+                ++job_.face;
+            }
+            if (job_.face < sh.face_count) return false;
+            if (edges_after) job_.stage = Job::Stage::Edges, job_.face = 0;
         }
-        if (job_.face < sh.face_count) return false;
+        if (job_.stage == Job::Stage::Edges) {
+            for (; job_.face < sh.face_count && spent < units; ++job_.face) spent += painter_.face_edges(sh.first_face + job_.face, t, rows, true);
+            if (job_.face < sh.face_count) return false;
+            job_.stage = Job::Stage::Faces;
+        }
         ++job_.instance;
         job_.face = 0;
         job_.have_transform = false;
@@ -300,7 +311,7 @@ void Presenter::run_piece(uint32_t units, uint32_t pass) {
         if (spent * 2 >= units) return;
         units -= spent;
     }
-    if (job_.stage == Job::Stage::Faces) {
+    if (job_.stage == Job::Stage::Faces || job_.stage == Job::Stage::Edges) {
         if (!(job_.full ? full_pieces(units) : update_pieces(units))) return;
         job_.stage = Job::Stage::Overlay;
         return; // the overlay is a piece of its own (Work::Overlay: its cost is measured apart)

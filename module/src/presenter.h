@@ -70,7 +70,7 @@ private:
         bool active = false, full = false, boxes = false, dragging = false;
         uint8_t buffer = 0;
         uint16_t band = 0;            // full frames: the band being drawn
-        enum class Stage : uint8_t { Begin, Faces, Overlay, Flush } stage = Stage::Begin;
+        enum class Stage : uint8_t { Begin, Faces, Edges, Overlay, Flush } stage = Stage::Begin;
         uint32_t instance = 0, face = 0; // cursor: the instance, and the face within its shell (or done_order index)
         uint32_t tri = 0;             // and the next triangle of that face
         bool have_transform = false;
@@ -93,7 +93,7 @@ private:
     void take_done();
     bool buffer_free(uint8_t b) const;
     void judge_part(uint32_t part, const Transform& t); // job_.sight and job_.tiny, by its sphere (none known: Across)
-    bool full_pieces(uint32_t units);   // each face and its edges, instance by instance; true when done
+    bool full_pieces(uint32_t units);   // each face and its edges (hidden line: the edges after the faces), instance by instance; true when done
     bool update_pieces(uint32_t units); // the faces since the buffer was last drawn
     void flush(uint32_t pass);
 
