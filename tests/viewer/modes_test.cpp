@@ -238,7 +238,7 @@ TEST(Viewer, EdgesDrawnFromTheFacesVerticesMatchTheirSamplesProjected) {
     for (const auto& [name, bytes] : models) {
         SCOPED_TRACE(name);
         std::vector<std::vector<Rgb565>> screens[2];
-        module::Painter::EdgeSampleCounts counts[2], tally[2]; // (tally: the turned frame's)
+        module::Painter::EdgeSampleCounts tally[2]; // the turned frame's
         for (int reuse = 0; reuse < 2; ++reuse) {
             App app;
             ASSERT_TRUE(app.create().ok());
@@ -249,12 +249,10 @@ TEST(Viewer, EdgesDrawnFromTheFacesVerticesMatchTheirSamplesProjected) {
             auto look = [&]() {
                 app.run();
                 screens[reuse].push_back(app.screen());
-                const module::Painter::EdgeSampleCounts c = core.painter().take_edge_sample_counts();
-                counts[reuse].from_vertices += c.from_vertices, counts[reuse].projected += c.projected;
             };
             (void)core.painter().take_edge_sample_counts(); // (the wireframe while the faces came in)
             app.v->key('d'), look(); // shaded with edges, turned: counted
-            tally[reuse] = std::exchange(counts[reuse], {});
+            tally[reuse] = core.painter().take_edge_sample_counts();
             for (int mode = 0; mode < 4; ++mode) app.v->key('m'), look();
             app.v->key('m'), app.v->set_section({true, {0.6f, 0.0f, 0.8f}, 10.0f}), look();
         }
