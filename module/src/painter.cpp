@@ -307,7 +307,7 @@ uint32_t Painter::face_edges(uint32_t f, const Transform& t, Rows rows, bool onc
     const pack::Face& F = pack.faces()[f - block.first_face];
     uint32_t work = 1;
     Along along;
-    along.face = reuse_ && projected_face_ == f ? &info : nullptr;
+    along.face = projected_face_ == f ? &info : nullptr; // (set by face() only when the reuse is on)
     const std::span<const uint16_t> counts = scene_.samples().count;
     for (uint32_t l = F.first_loop; l < F.first_loop + F.loop_count; ++l) {
         const pack::Loop& L = pack.loops()[l];

@@ -16,7 +16,7 @@ namespace facet::module {
 class Painter {
 public:
     struct Memory {
-        std::span<Projected> projected;       // one face's vertices (or one edge's samples)
+        std::span<Projected> projected;       // one face's vertices
         std::span<uint16_t> vertex_at;        // per place along that face's boundary: a vertex of it there (a hint, checked)
         std::span<uint8_t> edge_drawn;        // per pack edge: drawn in this instance already
         std::span<render::Palette> palettes;  // the shades of recently drawn face colours

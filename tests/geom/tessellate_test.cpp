@@ -84,11 +84,16 @@ std::string tessellate(const Pack& pack, float tolerance, uint32_t units, Tessel
     return "";
 }
 
-Bytes copy_aligned(const Bytes& b, std::vector<uint32_t>& words) {
-    words.assign(b.size() / 4 + 1, 0);
-    std::memcpy(words.data(), b.data(), b.size());
-    return b;
-}
+// A shape's pack, opened from word-aligned memory it keeps (the pack reads it in place).
+struct OpenedPack {
+    std::vector<uint32_t> words;
+    Pack pack;
+    bool open(const Bytes& b) {
+        words.assign(b.size() / 4 + 1, 0);
+        std::memcpy(words.data(), b.data(), b.size());
+        return pack.open(words.data(), uint32_t(b.size())).ok();
+    }
+};
 
 struct Shape {
     const char* name;
@@ -117,10 +122,9 @@ TEST_P(Tessellation, ShapesAreWatertightWithinToleranceAndSized) {
     const float tol = GetParam();
     for (const Shape& s : shapes()) {
         SCOPED_TRACE(std::string(s.name) + " at " + std::to_string(tol) + " mm");
-        std::vector<uint32_t> words;
-        copy_aligned(s.bytes, words);
-        Pack pack;
-        ASSERT_TRUE(pack.open(words.data(), uint32_t(s.bytes.size())).ok());
+        OpenedPack opened;
+        ASSERT_TRUE(opened.open(s.bytes));
+        const Pack& pack = opened.pack;
         Tessellated m;
         ASSERT_EQ(tessellate(pack, tol, 0, m), "");
         const uint32_t triangles = uint32_t(m.face_of.size());
@@ -204,10 +208,9 @@ INSTANTIATE_TEST_SUITE_P(AtThreeTolerances, Tessellation, ::testing::Values(0.5f
 // the edges are sampled at least as finely).
 TEST(Tessellation, AFinerToleranceGivesNoFewerTriangles) {
     for (const Shape& s : shapes()) {
-        std::vector<uint32_t> words;
-        copy_aligned(s.bytes, words);
-        Pack pack;
-        ASSERT_TRUE(pack.open(words.data(), uint32_t(s.bytes.size())).ok());
+        OpenedPack opened;
+        ASSERT_TRUE(opened.open(s.bytes));
+        const Pack& pack = opened.pack;
         size_t last = 0;
         for (float tol : {1.0f, 0.3f, 0.1f, 0.03f}) {
             Tessellated m;
@@ -228,10 +231,9 @@ TEST(Tessellation, BoundaryVerticesSayWhichSampleTheyAre) {
     for (const Shape& s : shapes()) {
         for (float tol : {3.0f, 0.5f, 0.05f}) {
             SCOPED_TRACE(std::string(s.name) + " at " + std::to_string(tol) + " mm");
-            std::vector<uint32_t> words;
-            copy_aligned(s.bytes, words);
-            Pack pack;
-            ASSERT_TRUE(pack.open(words.data(), uint32_t(s.bytes.size())).ok());
+            OpenedPack opened;
+            ASSERT_TRUE(opened.open(s.bytes));
+            const Pack& pack = opened.pack;
             Tessellated m;
             ASSERT_EQ(tessellate(pack, tol, 0, m), "");
             auto same = [](Vec3 a, Vec3 b) { return std::memcmp(&a, &b, sizeof a) == 0; };
