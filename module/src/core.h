@@ -106,7 +106,7 @@ private:
     float default_tolerance_ = 0;
     // The level of detail the view asks for (detail.cpp): a face under kMinFacePixels across in
     // every instance of its part, or off the screen, is left to its edges until the view changes.
-    static constexpr float kMinFacePixels = 2.0f;
+    static constexpr float kMinFacePixels = float(module::kFacePixels);
     static bool wants_face(void* self, uint32_t face);
     // Each block's tolerance in a pass: Config::screen_error_px at its nearest point (detail.cpp).
     static constexpr float kCoarsest = 4.0f;

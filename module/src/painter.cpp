@@ -17,16 +17,13 @@ constexpr uint32_t kPicked = 0x00C830FFu;   // the picked face (B, G, R bytes: m
 constexpr uint32_t kPicked2 = 0x00FFD020u;  // the second one (measuring: cyan)
 constexpr uint32_t kCap = 0x003C46CDu;      // the inside of a cut solid (a section): brick red
 constexpr uint8_t kCapShade = 255;          // drawn flat, in that colour
-// A face left untessellated for its size (detail.cpp: under 2 pixels across) and under this
-// across now is drawn as a speck, not as its edges.
-constexpr int32_t kSpeckPixels = 3;
+// A face left untessellated for its size (under kFacePixels across) and under this across now
+// is drawn as a speck, not as its edges.
+constexpr int32_t kSpeckPixels = kFacePixels + 1;
 // A face tessellated for another instance of its part and under this across in this one is
-// drawn as a speck too (detail.cpp's kMinFacePixels: the size the view tessellates a face for).
-constexpr int32_t kShownPixels = 2;
+// drawn as a speck too (the size the view tessellates a face for).
+constexpr int32_t kShownPixels = kFacePixels;
 constexpr uint8_t kSpeckShade = 200;        // a speck in the face's colour: lit about halfway
-// While the view is dragged, a face under this across is drawn as a splat in its colour, not
-// as its triangles (issue 25: coarser detail while dragging, for the frame rate).
-constexpr int32_t kSplatPixels = 4;
 // A part under this across (its sphere's) is drawn as its box until it grows (issue 25).
 constexpr int32_t kTinyPartPixels = 5;
 
@@ -198,7 +195,7 @@ uint32_t Painter::face(uint32_t f, const Transform& t, Rows rows, uint32_t from,
             Projected centre;
             const int32_t size = across(F.centre, F.radius, t, centre);
             if (size >= 0 && size < kSplatPixels * render::subpixel::kPerPixel) {
-                const int32_t side = std::clamp<int32_t>((size * 11 / 16 + render::subpixel::kHalfPixel) >> render::subpixel::kFractionBits, 1, 3);
+                const int32_t side = std::clamp<int32_t>((size * 11 / 16 + render::subpixel::kHalfPixel) >> render::subpixel::kFractionBits, 1, kSplatPixels * 11 / 16);
                 refused_ += !ok(raster_.splat(centre.s, side, Rgb565(palette(F.rgb).colour[t.shade(verts[0].n)])));
                 spent = 1;
                 return F.triangle_count;

@@ -13,6 +13,16 @@
 
 namespace facet::module {
 
+// The smallest face worth its triangles: one under this many pixels across (its sphere's
+// diameter) wherever the view shows it is left untessellated, drawn by its edges or as a speck
+// until the view makes it larger (detail.cpp, painter.cpp). Its edges, a pixel wide, cover
+// most of what such a face would show (issue 25: the frames and the first view follow the
+// screen, not the model's count of small features).
+constexpr int32_t kFacePixels = 4;
+// While the view is dragged, a face under this across is drawn as a splat in its colour, not
+// as its triangles (coarser detail while dragging, for the frame rate).
+constexpr int32_t kSplatPixels = 2 * kFacePixels;
+
 class Painter {
 public:
     struct Memory {

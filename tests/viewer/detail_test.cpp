@@ -1,8 +1,10 @@
-// The level of detail the view asks for (issue 25): a face under two pixels across on the screen,
-// or off it, is left untessellated (deferred: a speck, or its edges); when the view changes, the
-// deferred faces are judged again and those it makes large enough come in, in the background.
-// Checked against the projection the frames use: at rest, no deferred face shows two pixels
-// across anywhere on the screen, every face is either in or deferred, and the work ends.
+// The level of detail the view asks for (issue 25): a face under module::kFacePixels across on
+// the screen, or off it, is left untessellated (deferred: a speck, or its edges); when the view
+// changes, the deferred faces are judged again and those it makes large enough come in, in the
+// background. Checked against the projection the frames use: at rest, no deferred face shows
+// kFacePixels across anywhere on the screen, every face is either in or deferred, and the work
+// ends. The test screens are sized from kFacePixels: their grids of 1 mm squares 2 mm apart put
+// each square about that size (a square's sphere is 1.4 times its side).
 #include "../geom/shapes.h"
 #include "app.h"
 
@@ -71,7 +73,7 @@ bool hidden_plane(const Core& core, uint32_t face, uint16_t w, uint16_t h) {
     return true;
 }
 
-// At rest: every face in or deferred, and no deferred face two pixels across on the screen
+// At rest: every face in or deferred, and no deferred face kFacePixels across on the screen
 // unless the frames leave it out whole (a solid's plane turned away).
 void expect_deferred_only_small(const App& app, const char* when) {
     const Core& core = *static_cast<const Core*>(app.v);
@@ -85,9 +87,9 @@ void expect_deferred_only_small(const App& app, const char* when) {
         ++deferred;
         const Extent x = boundary_extent(core, f, app.w, app.h);
         if (!x.on_screen || hidden_plane(core, f, app.w, app.h)) continue;
-        // Two pixels, and the rounding of its two ends to sub-pixels by the projection.
-        EXPECT_LE(x.width16, 32 + 2) << when << ": face " << f << " deferred";
-        EXPECT_LE(x.height16, 32 + 2) << when << ": face " << f << " deferred";
+        // kFacePixels, and the rounding of its two ends to sub-pixels by the projection.
+        EXPECT_LE(x.width16, 16 * module::kFacePixels + 2) << when << ": face " << f << " deferred";
+        EXPECT_LE(x.height16, 16 * module::kFacePixels + 2) << when << ": face " << f << " deferred";
     }
     EXPECT_EQ(deferred, s.deferred) << when;
 }
@@ -139,10 +141,14 @@ Stats with_a_section_and_without(App& app) {
 
 } // namespace
 
-TEST(Detail, FacesUnderTwoPixelsAreLeftToTheirEdgesUntilTheViewMakesThemLarger) {
-    // 1,600 squares of 1 mm, 2 mm apart, on a 160 x 120 screen: about two pixels each, those
-    // further from the eye under.
+// A screen of w x h at two pixels a face's threshold, scaled to kFacePixels (each way).
+constexpr uint16_t scaled(int pixels) { return uint16_t(pixels * module::kFacePixels / 2); }
+
+TEST(Detail, FacesUnderAFewPixelsAreLeftToTheirEdgesUntilTheViewMakesThemLarger) {
+    // 1,600 squares of 1 mm, 2 mm apart, on a 160 x 120 screen at a threshold of two pixels
+    // (scaled): about the threshold each, those further from the eye under.
     App app;
+    app.w = scaled(160), app.h = app.lines = scaled(120);
     ASSERT_TRUE(app.create().ok());
     ASSERT_TRUE(app.load(squares(1600, 40)).ok());
     app.run();
@@ -155,7 +161,7 @@ TEST(Detail, FacesUnderTwoPixelsAreLeftToTheirEdgesUntilTheViewMakesThemLarger) 
     expect_deferred_only_small(app, "fitted");
     EXPECT_GT(expect_specks(app), 100u);
 
-    // Zoomed in (each step 0.8 of the distance): the squares grow over two pixels and come in
+    // Zoomed in (each step 0.8 of the distance): the squares grow over the threshold and come in
     // (each while it is still on the screen).
     uint32_t done = fitted.done;
     for (int zoom = 1; zoom <= 12; ++zoom) {
@@ -182,18 +188,18 @@ TEST(Detail, FacesUnderTwoPixelsAreLeftToTheirEdgesUntilTheViewMakesThemLarger) 
 
 TEST(Detail, ANewLevelOfDetailJudgesEveryFaceAgain) {
     App app;
-    app.w = 320, app.h = 240, app.lines = 240;
+    app.w = scaled(320), app.h = app.lines = scaled(240);
     ASSERT_TRUE(app.create().ok());
     ASSERT_TRUE(app.load(squares(400, 20)).ok());
     app.run();
-    EXPECT_EQ(app.v->stats().deferred, 0u) << "a square is about 4 pixels across";
+    EXPECT_EQ(app.v->stats().deferred, 0u) << "a square is about twice the threshold across";
     EXPECT_EQ(app.v->stats().done, 400u);
     for (int zoom = 0; zoom < 8; ++zoom) app.v->act(Action::ZoomOut);
     app.run();
     // Zoomed out, the model is judged again at a coarser level (Core::refine_for_view): the
-    // squares now under two pixels are left to their edges.
+    // squares now under the threshold are left to their edges.
     const Stats out = app.v->stats();
-    EXPECT_GT(out.deferred, 0u) << "zoomed out, the squares under two pixels are evicted";
+    EXPECT_GT(out.deferred, 0u) << "zoomed out, the squares under the threshold are evicted";
     EXPECT_EQ(out.done + out.deferred, 400u);
     expect_deferred_only_small(app, "zoomed out");
     app.v->act(Action::Coarser); // a new pass, at this view
@@ -283,14 +289,18 @@ TEST(Detail, ASolidsRoundFaceTurnedAwayWaitsAndDrawsWhatEveryFaceIn) {
     EXPECT_GT(shown, 0u);
 }
 
-// While the view is dragged, a face under four pixels across is drawn as a splat of its colour
+// While the view is dragged, a face under module::kSplatPixels across is drawn as a splat of its colour
 // (painter.cpp), not as its triangles (coarser detail while the view moves, issue 25): fewer
 // triangles, and each such square still shows where its centre is.
 TEST(Detail, ADragDrawsFacesAFewPixelsAcrossAsSplats) {
+    // The squares between kFacePixels and the splats' size across: those nearer the eye in,
+    // the rest specks.
     App app;
+    app.w = uint16_t(160 * (module::kFacePixels + module::kSplatPixels) / 5);
+    app.h = app.lines = uint16_t(120 * (module::kFacePixels + module::kSplatPixels) / 5);
     ASSERT_TRUE(app.create().ok());
     ASSERT_TRUE(app.load(squares(1600, 40)).ok());
-    app.run(); // the squares about two pixels across: those nearer the eye in, the rest specks
+    app.run();
     ASSERT_EQ(app.v->step(1000), Activity::Idle);
     auto full_frame = [&] { return app.last_full_frame() ? app.last_full_frame()->frame.triangles : 0u; };
     app.v->pointer(0, 0, 1); // the left button down, then moved past a tap's slop: an orbit
@@ -306,7 +316,7 @@ TEST(Detail, ADragDrawsFacesAFewPixelsAcrossAsSplats) {
         render::Palette palette;
         render::make_palette(palette, uint8_t(info.rgb & 255), uint8_t((info.rgb >> 8) & 255), uint8_t((info.rgb >> 16) & 255));
         const Rgb565 lit = Rgb565(palette.colour[t.shade(scene.vertices()[info.first_vertex].n)]);
-        // (A square the drag brought over two pixels came in after the frame drew its speck:
+        // (A square the drag brought over the threshold came in after the frame drew its speck:
         // over it, its splat (not pulled toward the eye as the speck is) leaves the speck.)
         EXPECT_TRUE(at == lit || at == kEdge) << "face " << f;
         splats += at == lit;
@@ -318,10 +328,11 @@ TEST(Detail, ADragDrawsFacesAFewPixelsAcrossAsSplats) {
 }
 
 // A part placed twice, one copy far below the other (the view looks down): its faces are
-// tessellated for the nearer copy, and the farther one, where they are under two pixels, draws
+// tessellated for the nearer copy, and the farther one, where they are under kFacePixels, draws
 // them as specks as the view draws a face it left out (issue 25: a frame follows the screen).
-TEST(Detail, AFaceUnderTwoPixelsInAFartherInstanceIsDrawnAsASpeck) {
+TEST(Detail, AFaceUnderAFewPixelsInAFartherInstanceIsDrawnAsASpeck) {
     App app;
+    app.w = scaled(160), app.h = app.lines = scaled(120);
     ASSERT_TRUE(app.create().ok());
     ASSERT_TRUE(app.load(squares(100, 10, {{0, 0, 0}, {30, 0, -120}})).ok()); // the second beside the first and below
     app.run();
@@ -329,8 +340,8 @@ TEST(Detail, AFaceUnderTwoPixelsInAFartherInstanceIsDrawnAsASpeck) {
     const Stats s = app.v->stats();
     const Event* frame = app.last_full_frame();
     ASSERT_NE(frame, nullptr);
-    // Both copies on the screen (framed): the nearer draws the faces it has over two pixels, the
-    // farther only specks (every square there under two pixels: none would be in for it).
+    // Both copies on the screen (framed): the nearer draws the faces it has over the threshold,
+    // the farther only specks (every square there under it: none would be in for it).
     ASSERT_GT(s.done, 0u);
     EXPECT_GT(frame->frame.triangles, 0u);
     EXPECT_LE(frame->frame.triangles + frame->frame.culled, s.triangles) << "the farther copy's faces drawn as specks";

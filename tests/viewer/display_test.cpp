@@ -55,11 +55,12 @@ TEST(Viewer, BandsGiveTheSamePixelsAsFullFrames) {
 // with far fewer triangles drawn and one whole frame fewer.
 TEST(Viewer, ABufferLaggingTheOtherCatchesUpByACopy) {
     // Two layers of squares, the second behind and a little aside (depth decides what shows of
-    // each square's two copies); a progress frame every 21 faces (42 triangles, over the
-    // copy's worth at 160 x 120). (Where faces of different progress frames overlap, a two-
-    // buffer display's pictures differed by a pixel or so before the copy: a buffer's first
-    // whole frame shows the model at its own moment, and its updates build on it.)
-    const Bytes pack = squares(700, 25, {{0, 0, 0}, {0.6f, 0.6f, -1}});
+    // each square's two copies), close enough together that each square is over the size a
+    // face is tessellated for; a progress frame every 21 faces (42 triangles, over the copy's
+    // worth at 160 x 120). (Where faces of different progress frames overlap, a two-buffer
+    // display's pictures differed by a pixel or so before the copy: a buffer's first whole
+    // frame shows the model at its own moment, and its updates build on it.)
+    const Bytes pack = squares(700, 25, {{0, 0, 0}, {0.6f, 0.6f, -1}}, 1.1f);
     std::vector<std::vector<Rgb565>> pictures[2];
     uint32_t updated[2] = {}; // triangles the updates drew
     uint32_t whole[2] = {};   // whole frames

@@ -142,13 +142,14 @@ inline Bytes tube() {
     return w.finish();
 }
 
-// A grid of `count` unit squares 2 mm apart in z = 0, `columns` a row, one face each (their own
-// four edges), in one shell, placed once at each offset (mm).
-inline Bytes squares(uint32_t count, uint32_t columns = 100, std::initializer_list<std::array<float, 3>> offsets = {{0, 0, 0}}) {
+// A grid of `count` unit squares `pitch` mm apart (their corners) in z = 0, `columns` a row, one
+// face each (their own four edges), in one shell, placed once at each offset (mm).
+inline Bytes squares(uint32_t count, uint32_t columns = 100, std::initializer_list<std::array<float, 3>> offsets = {{0, 0, 0}},
+                     float pitch = 2) {
     PackWriter w;
     const uint32_t plane = w.add_surface(pack::SurfaceType::Plane, {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1});
     for (uint32_t i = 0; i < count; ++i) {
-        const float x = float(2 * (i % columns)), y = float(2 * (i / columns));
+        const float x = pitch * float(i % columns), y = pitch * float(i / columns);
         const uint32_t v[4] = {w.add_vertex(x, y, 0), w.add_vertex(x + 1, y, 0), w.add_vertex(x + 1, y + 1, 0), w.add_vertex(x, y + 1, 0)};
         uint32_t e[4];
         for (int k = 0; k < 4; ++k) e[k] = w.add_edge({pack::kStraight, 0, 1, v[k], v[(k + 1) % 4], 1e-7f, 0});

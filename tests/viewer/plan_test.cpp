@@ -25,7 +25,7 @@ struct Aligned {
 
 TEST(Plan, AModelOverTheOldCapacitiesOpensInTheWorkspaceItNeeds) {
     const uint32_t kFaces = 8400; // over the 8,192 faces a default workspace held before
-    const Aligned file(squares(kFaces));
+    const Aligned file(squares(kFaces, 100, {{0, 0, 0}}, 1.1f)); // (1.1 mm apart: each over kFacePixels below)
     ModelNeeds needs{};
     ASSERT_TRUE(model_needs(file.data(), file.bytes, needs).ok());
     EXPECT_EQ(needs.faces, kFaces);
@@ -36,9 +36,9 @@ TEST(Plan, AModelOverTheOldCapacitiesOpensInTheWorkspaceItNeeds) {
     EXPECT_GE(needs.workspace_bytes, needs.least_workspace_bytes);
 
     // The workspace it needs: every face shaded (a screen where each square is over the
-    // detail's two pixels, so none is left to its edges).
+    // size a face is tessellated for, module::kFacePixels, so none is left to its edges).
     App app;
-    app.w = 640, app.h = 480;
+    app.w = 800, app.h = 600;
     app.workspace_size = needs.workspace_bytes;
     ASSERT_TRUE(app.create().ok());
     Result r = app.v->load(file.data(), file.bytes);

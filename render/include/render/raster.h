@@ -104,7 +104,7 @@ public:
     // A square `size` pixels a side (1 to kMaxSplat) around c's pixel, at c's depth, each pixel
     // depth-tested and drawn in one colour where nearer: a surface too small on the screen for
     // its triangles, while the view moves. OutOfRange (nothing drawn) outside the guard band.
-    static constexpr int32_t kMaxSplat = 4;
+    static constexpr int32_t kMaxSplat = 6;
     Status splat(const ScreenVertex& c, int32_t size, Rgb565 colour);
 
     RasterStats stats;
