@@ -2,6 +2,7 @@
 #include "facet/facet.h"
 
 #include "facet/viewer.h"
+#include "workspace.h"
 #include "core/format.h"
 
 #include <cstring>
@@ -120,7 +121,15 @@ facet_viewer* facet_create(const facet_config* c, void* workspace, size_t bytes,
         return nullptr;
     };
     if (!c) return refuse(Result::fail(Status::OutOfRange, "no configuration"));
-    if (bytes < sizeof(Bridge) + 8) return refuse(Result::fail(Status::Full, "the workspace is smaller than facet_workspace_bytes()"));
+    // Checked before the bridge is stored there: a null or misaligned workspace is refused, as
+    // is one under facet_workspace_bytes() (sizes.h), whose slack then holds the bridge.
+    if (!workspace || (reinterpret_cast<uintptr_t>(workspace) & 7)) {
+        return refuse(Result::fail(Status::OutOfRange, "the workspace must be 8-byte aligned", {"workspace"}));
+    }
+    const size_t least = facet_workspace_bytes(&c->capacity);
+    if (bytes < least || bytes < sizeof(Bridge) + 8) {
+        return refuse(Result::fail(Status::Full, "the workspace is smaller than facet_workspace_bytes()", {"bytes needed", uint32_t(least)}));
+    }
     // The bridge at the workspace's end (8-byte aligned), the viewer before it.
     const size_t viewer_bytes = (bytes - sizeof(Bridge)) & ~size_t(7);
     auto* bridge = reinterpret_cast<Bridge*>(static_cast<uint8_t*>(workspace) + viewer_bytes);
@@ -143,7 +152,7 @@ facet_viewer* facet_create(const facet_config* c, void* workspace, size_t bytes,
     cfg.interface = c->interface != 0;
     cfg.screen_error_px = c->screen_error_px;
     Result r;
-    Viewer* v = Viewer::create(cfg, workspace, viewer_bytes, &r);
+    Viewer* v = create_viewer(cfg, workspace, viewer_bytes, 0, &r);
     if (why) *why = to_c(r);
     return reinterpret_cast<facet_viewer*>(v);
 }

@@ -133,6 +133,8 @@ Result model_needs(const void* file, uint32_t file_bytes, ModelNeeds& needs) {
     // (+ the alignment the base's end and the model's arrays may lose, to 8 bytes)
     needs.least_workspace_bytes = (base + module::plan_model(needs.faces, needs.edges, 0, Capacity{}).need + 64 + 7) / 8 * 8;
     const size_t roomy = base + module::model_room_bytes(needs.faces, needs.edges, kSamplesPerEdge, 0);
+    // (never under what create() takes: facet/sizes.h's formula)
+    needs.least_workspace_bytes = std::max(needs.least_workspace_bytes, workspace_bytes(Capacity{}));
     needs.workspace_bytes = std::max(roomy, needs.least_workspace_bytes);
     return {};
 }
@@ -235,6 +237,10 @@ Result Core::plan(uint32_t faces, uint32_t edges, uint8_t* end) {
 }
 
 Viewer* Viewer::create(const Config& config, void* workspace, size_t bytes, Result* why) {
+    return create_viewer(config, workspace, bytes, workspace_bytes(config.capacity), why);
+}
+
+Viewer* create_viewer(const Config& config, void* workspace, size_t bytes, size_t least, Result* why) {
     auto refuse = [&](Result r) -> Viewer* {
         if (why) *why = r;
         return nullptr;
@@ -246,8 +252,9 @@ Viewer* Viewer::create(const Config& config, void* workspace, size_t bytes, Resu
     if (c.face_points < 8 || c.face_points > 32760 || c.loops == 0) {
         return refuse(Result::fail(Status::OutOfRange, "a capacity is out of range (face_points 8 to 32,760, loops above 0)", {"capacity"}));
     }
-    if (bytes < layout_bytes(c)) {
-        return refuse(Result::fail(Status::Full, "the workspace is smaller than workspace_bytes(capacity)", {"bytes", uint32_t(bytes)}));
+    if (bytes < least || bytes < layout_bytes(c)) {
+        return refuse(Result::fail(Status::Full, "the workspace is smaller than workspace_bytes(capacity)",
+                                   {"bytes needed", uint32_t(std::max(least, layout_bytes(c)))}));
     }
     Carver k(static_cast<uint8_t*>(workspace) + core_bytes(), bytes - core_bytes());
     Core* core = new (workspace) Core(config, k, static_cast<uint8_t*>(workspace) + bytes);

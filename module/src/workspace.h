@@ -181,3 +181,10 @@ private:
 };
 
 } // namespace facet::module
+
+namespace facet {
+// Viewer::create() past its check of `bytes` against facet/sizes.h's formula (`least`; the C
+// API checks its callers' bytes against it and keeps its bridge in the formula's slack, so it
+// gives 0): the workspace's alignment, the capacity's range and the layout's own need.
+Viewer* create_viewer(const Config& config, void* workspace, size_t bytes, size_t least, Result* why);
+} // namespace facet

@@ -77,8 +77,16 @@ int main(int argc, char **argv) {
     cfg.on_event = on_event;
     cfg.now_us = clock_us;
 
-    /* Refused: a workspace too small, a scan-out display in bands. */
+    /* Refused before anything is stored in it: a workspace too small (by a byte too), none, one
+     * not 8-byte aligned; then a scan-out display in bands. The least the formula says opens. */
     CHECK(facet_create(&cfg, workspace, 1024, &why) == NULL && why.status == FACET_FULL);
+    CHECK(facet_create(&cfg, workspace, FACET_WORKSPACE_BASE_BYTES - 1, &why) == NULL && why.status == FACET_FULL);
+    CHECK(facet_create(&cfg, NULL, sizeof workspace, &why) == NULL && why.status == FACET_OUT_OF_RANGE);
+    memset(workspace, 0xA5, 64);
+    CHECK(facet_create(&cfg, workspace + 4, sizeof workspace - 4, &why) == NULL && why.status == FACET_OUT_OF_RANGE);
+    CHECK(workspace[4] == 0xA5);
+    viewer = facet_create(&cfg, workspace, FACET_WORKSPACE_BASE_BYTES, &why);
+    CHECK(viewer != NULL && why.status == FACET_OK);
     cfg.display.mode = FACET_FLUSH_SCANOUT;
     CHECK(facet_create(&cfg, workspace, sizeof workspace, &why) == NULL && why.status == FACET_OUT_OF_RANGE);
     facet_describe(&why, text, sizeof text);

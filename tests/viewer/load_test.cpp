@@ -109,6 +109,9 @@ TEST(Viewer, CreateRefusesMissingOrSmallBuffers) {
     ASSERT_NE(Viewer::create(c, ws.data(), ws.size() * 8, &why), nullptr) << text(why);
     EXPECT_EQ(Viewer::create(c, ws.data(), workspace_bytes() / 2, &why), nullptr); // under one face's working memory
     EXPECT_EQ(why.status, Status::Full);
+    EXPECT_EQ(Viewer::create(c, ws.data(), workspace_bytes() - 1, &why), nullptr) << "a byte under facet/sizes.h's formula";
+    EXPECT_EQ(why.status, Status::Full);
+    EXPECT_NE(Viewer::create(c, ws.data(), workspace_bytes(), &why), nullptr) << "the formula's bytes: " << text(why);
     EXPECT_EQ(Viewer::create(c, reinterpret_cast<uint8_t*>(ws.data()) + 4, ws.size() * 8 - 8, &why), nullptr);
     EXPECT_NE(text(why).find("aligned"), std::string::npos);
     c = config(), c.display.buffers[0] = nullptr;
