@@ -16,7 +16,8 @@ def main():
     args = ap.parse_args()
     r = subprocess.run([sys.executable, os.path.join(ROOT, 'tools', 'qemu', 'run.py'),
                         '--board', 'qemu-versatilepb', '--elf', args.elf, '--out', args.work,
-                        '--timeout', '60'], capture_output=True, text=True)
+                        '--timeout', '60', '--send', 'keys \\n'],  # Enter: the default address at once (no
+                       capture_output=True, text=True)                # two seconds of the guest's polling)
     print(r.stdout)
     print(r.stderr, file=sys.stderr)
     checks = [
