@@ -165,24 +165,22 @@ void Overlay::draw(const render::Target& t, const StatusInfo& info) const {
 
 void Overlay::status(const render::Target& t, const StatusInfo& s) const {
     render::fill_rect(t, 0, 0, width_, status_rows_, kBar);
-    char text[96];
+    char text[160];
     // "faces 87/87  1594 tri  lod 0.504 mm  shaded+edges  persp", and the frame's cost in its
     // own field at the right end (the one value that differs between a board and the host).
     const int64_t tol = int64_t(s.tolerance_mm * 1000 + 0.5f);
-    // The model's name first (its first 16 characters; the font draws any but ASCII as '?').
-    char name[17];
-    uint32_t k = 0;
-    for (const char* c = s.name; *c && k < 16; ++c)
-        if ((uint8_t(*c) & 0xC0) != 0x80) name[k++] = *c; // a UTF-8 character's first byte only
-    name[k] = 0;
+    // The model's name first: its first 16 characters (UTF-8, up to 4 bytes each).
+    char name[16 * 4 + 1];
+    format(name, sizeof name, "{}", s.name);
+    render::cut_text(name, 16);
+    const uint32_t k = uint32_t(name[0] != 0);
     // A model larger than the memory: "faces 900/900 +4100 boxed" (the parts left out).
     char boxed[24] = "";
     if (s.boxed_faces) format(boxed, sizeof boxed, " +{} boxed", s.boxed_faces);
     format(text, sizeof text, "{}{}faces {}/{}{}  {} tri  lod {} mm  {}  {}", name, k ? "  " : "", s.finished, s.total, boxed,
            s.triangles, fixed(tol, 3), mode_name(s.mode), s.ortho ? "parallel" : "persp");
     const TimeField f = time_field();
-    const int32_t room = (f.x0 - 6 - 3) / render::kCellWidth; // characters before the field
-    if (room < int32_t(sizeof text)) text[room > 0 ? room : 0] = 0;
+    render::cut_text(text, (f.x0 - 6 - 3) / render::kCellWidth); // the characters before the field
     render::draw_text(t, 3, 2, text, s.finished < s.total ? kDim : kText);
     if (s.frame_us) {
         format(text, sizeof text, "{} ms", fixed((s.frame_us + 50) / 100, 1));
@@ -245,7 +243,7 @@ void Overlay::parts_list(const render::Target& t) const {
     const uint32_t count = uint32_t(scene_->instances().size());
     render::fill_rect(t, p.x, p.y, p.width, p.height, kEdge);
     render::fill_rect(t, p.x, p.y, p.width - 1, p.height, kBar);
-    char text[48];
+    char text[128];
     format(text, sizeof text, "PARTS {}", count);
     render::draw_text(t, p.x + 4, p.y + (kRow - render::kGlyphHeight) / 2, text, kText);
     for (int i = 0; i < 2; ++i) { // scroll up, down
@@ -264,8 +262,7 @@ void Overlay::parts_list(const render::Target& t) const {
         if (!shown) render::fill_rect(t, p.x + 7, y + 6, 8, 8, part == chosen_ ? kButtonOn : kBar);
         const char* name = scene_->part_name(scene_->instances()[part].shell);
         format(text, sizeof text, "{} {}", part + 1, *name ? name : "(unnamed)");
-        const int32_t room = (p.width - 26) / render::kCellWidth;
-        if (room < int32_t(sizeof text)) text[room > 0 ? room : 0] = 0;
+        render::cut_text(text, (p.width - 26) / render::kCellWidth);
         render::draw_text(t, p.x + 22, y + (kRow - render::kGlyphHeight) / 2, text, shown ? kText : kDim);
     }
     static constexpr const char* kLabels[3] = {"HIDE", "ISOL", "ALL"};

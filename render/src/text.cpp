@@ -3,9 +3,18 @@
 namespace facet::render {
 namespace {
 
-constexpr uint8_t kFont[95][8] = {
-#include "font_5x8.inc"
+struct GlyphRange {
+    uint32_t first, last, glyph; // code points first..last take glyphs glyph...
 };
+#include "font_5x8.inc"
+
+// A code point's glyph: the replacement mark (the last range's) for one the font lacks.
+const uint8_t* glyph_of(uint32_t c) {
+    for (const GlyphRange& r : kGlyphRanges) {
+        if (c >= r.first && c <= r.last) return kGlyphs[r.glyph + (c - r.first)];
+    }
+    return kGlyphs[kGlyphRanges[sizeof kGlyphRanges / sizeof kGlyphRanges[0] - 1].glyph];
+}
 
 // The rectangle's part within the target's band and screen.
 bool clip(const Target& t, int32_t& x, int32_t& y, int32_t& w, int32_t& h) {
@@ -48,22 +57,56 @@ void copy_pixels(Rgb565* to, const Rgb565* from, uint32_t n) {
     while (n--) *to++ = *from++;
 }
 
-int32_t text_width(const char* text, int32_t scale) {
+uint32_t next_code_point(const char*& text) {
+    const auto* s = reinterpret_cast<const uint8_t*>(text);
+    const uint32_t b = s[0];
+    uint32_t length, c, least;
+    if (b < 0x80) length = 1, c = b, least = 0;
+    else if ((b & 0xE0) == 0xC0) length = 2, c = b & 0x1F, least = 0x80;
+    else if ((b & 0xF0) == 0xE0) length = 3, c = b & 0x0F, least = 0x800;
+    else if ((b & 0xF8) == 0xF0) length = 4, c = b & 0x07, least = 0x10000;
+    else { // a continuation byte, or no UTF-8 lead byte: one mark for it
+        text += 1;
+        return kReplacement;
+    }
+    for (uint32_t k = 1; k < length; ++k) {
+        if ((s[k] & 0xC0) != 0x80) { // cut short (by the string's end too): one mark for the bytes read
+            text += k;
+            return kReplacement;
+        }
+        c = (c << 6) | (s[k] & 0x3F);
+    }
+    text += length;
+    // Overlong forms, UTF-16 surrogates and code points past Unicode's: no character.
+    return c < least || (c >= 0xD800 && c <= 0xDFFF) || c > 0x10FFFF ? kReplacement : c;
+}
+
+int32_t text_length(const char* text) {
     int32_t n = 0;
-    while (text[n]) ++n;
+    while (*text) (void)next_code_point(text), ++n;
+    return n;
+}
+
+void cut_text(char* text, int32_t characters) {
+    const char* at = text;
+    for (int32_t k = 0; k < characters && *at; ++k) (void)next_code_point(at);
+    text[at - text] = 0;
+}
+
+int32_t text_width(const char* text, int32_t scale) {
+    const int32_t n = text_length(text);
     return n ? (n * kCellWidth - 1) * scale : 0;
 }
 
 int32_t draw_text(const Target& t, int32_t x, int32_t y, const char* text, Rgb565 colour, int32_t scale) {
     const int32_t top = t.y0, bottom = t.y0 + t.rows;
-    for (; *text; ++text, x += kCellWidth * scale) {
+    for (; *text; x += kCellWidth * scale) {
         if (x >= t.width) { // the rest is off the screen: only the advance counts
-            while (*text) ++text, x += kCellWidth * scale;
-            break;
+            return x + text_length(text) * kCellWidth * scale;
         }
+        const uint32_t c = next_code_point(text);
         if (y >= bottom || y + kGlyphHeight * scale <= top || x + kGlyphWidth * scale <= 0) continue;
-        const unsigned char c = static_cast<unsigned char>(*text);
-        const uint8_t* glyph = kFont[(c >= 32 && c < 127 ? c : '?') - 32];
+        const uint8_t* glyph = glyph_of(c);
         // Each glyph row `scale` screen rows high, each set bit `scale` pixels wide (no
         // division per pixel: the ARM926 has no divide instruction).
         for (int32_t gr = 0; gr < kGlyphHeight; ++gr) {

@@ -125,7 +125,7 @@ TEST(Overlay, StatusToolbarPanelAndHelpDrawTheSameInBands) {
     EXPECT_EQ(touched(40, 40, 300, 50), 260 * 10) << "the help panel covers the upper middle";
 }
 
-// The font: a glyph drawn is its pixel art (tools/font/make_font.py), scaled; unknown bytes are '?'.
+// The font: a glyph drawn is its pixel art (tools/font/make_font.py), scaled.
 TEST(Overlay, TextIsTheFontsPixelArt) {
     constexpr uint16_t W = 40, H = 20;
     std::vector<Rgb565> px(W * H, 0);
@@ -139,10 +139,88 @@ TEST(Overlay, TextIsTheFontsPixelArt) {
     }
     EXPECT_EQ(render::text_width("T"), 5);
     EXPECT_EQ(render::text_width("TT", 2), 22);
-    std::vector<Rgb565> a(W * H, 0), b(W * H, 0);
-    render::draw_text({a.data(), z.data(), W, H, 0, H}, 0, 0, "\x01", 1);
-    render::draw_text({b.data(), z.data(), W, H, 0, H}, 0, 0, "?", 1);
-    EXPECT_EQ(a, b);
+}
+
+// Text is UTF-8: Latin-1, Latin Extended-A, Greek and Cyrillic are the font's (Debian's
+// misc-fixed 5x8); a character the font lacks, and each run of bytes that is no UTF-8, is one
+// replacement mark (issue 27: names as the CAD system wrote them, not "?" a byte).
+TEST(Overlay, TextIsUtf8AndACharacterTheFontLacksIsOneMark) {
+    constexpr uint16_t W = 40, H = 10;
+    std::vector<uint16_t> z(W * H);
+    auto drawn = [&](const char* text, int32_t* end = nullptr) {
+        std::vector<Rgb565> px(W * H, 0);
+        const int32_t x = render::draw_text({px.data(), z.data(), W, H, 0, H}, 0, 0, text, 1);
+        if (end) *end = x;
+        return px;
+    };
+    auto code = [](const char* text) { return render::next_code_point(text); };
+    EXPECT_EQ(code("A"), 0x41u);
+    EXPECT_EQ(code("\xC3\xA9"), 0xE9u);             // e acute
+    EXPECT_EQ(code("\xCE\xA9"), 0x3A9u);            // Omega
+    EXPECT_EQ(code("\xD0\x96"), 0x416u);            // Zhe
+    EXPECT_EQ(code("\xE3\x83\x96"), 0x30D6u);       // katakana bu (io1_cm_214's part name)
+    EXPECT_EQ(code("\xF0\x9F\x98\x80"), 0x1F600u);   // four bytes
+    for (const char* bad : {"\x80", "\xC3", "\xE3\x83", "\xC0\xAF", "\xED\xA0\x80", "\xFF"}) {
+        const char* at = bad;
+        EXPECT_EQ(render::next_code_point(at), render::kReplacement) << bad;
+        EXPECT_GT(at, bad);
+    }
+    const char* cut = "\xE3\x83" "A"; // a sequence cut short: its bytes one mark, then the A
+    EXPECT_EQ(render::next_code_point(cut), render::kReplacement);
+    EXPECT_EQ(*cut, 'A');
+    EXPECT_EQ(render::text_length("\xD0\x96\xD1\x83\xD0\xBA"), 3); // three Cyrillic letters
+    EXPECT_EQ(render::text_width("\xD0\x96\xD1\x83\xD0\xBA"), 3 * render::kCellWidth - 1);
+    char name[] = "\xD0\x96\xD1\x83\xD0\xBA" "1";
+    render::cut_text(name, 2);
+    EXPECT_STREQ(name, "\xD0\x96\xD1\x83") << "cut after whole characters";
+
+    // The mark: for a control character, a character the font lacks, bad bytes; one cell each.
+    const std::vector<Rgb565> mark = drawn("\xEF\xBF\xBD");
+    int32_t end = 0;
+    EXPECT_EQ(drawn("\x01"), mark);
+    EXPECT_EQ(drawn("\xE3\x83\x96", &end), mark);
+    EXPECT_EQ(end, render::kCellWidth) << "one cell for the three bytes";
+    EXPECT_EQ(drawn("\xE3\x83", &end), mark);
+    EXPECT_EQ(end, render::kCellWidth);
+    EXPECT_NE(mark, drawn("?")) << "the mark reads apart from a question mark";
+    EXPECT_NE(mark, drawn(" "));
+    // Zhe, from the font: its middle column from row 1 to 6, mirror-symmetric, not the mark.
+    const std::vector<Rgb565> zhe = drawn("\xD0\x96");
+    EXPECT_NE(zhe, mark);
+    for (int y = 1; y < 7; ++y) {
+        EXPECT_NE(zhe[size_t(y) * W + 2], 0) << y;
+        for (int x = 0; x < 2; ++x) EXPECT_EQ(zhe[size_t(y) * W + x], zhe[size_t(y) * W + 4 - x]) << x << "," << y;
+    }
+    for (const char* letter : {"\xC3\xA9", "\xC5\xA0", "\xCE\xB1", "\xD0\xB1", "\xD1\x8F"}) { // e acute, S caron, alpha, be, ya
+        EXPECT_NE(drawn(letter), mark) << letter;
+        EXPECT_NE(drawn(letter), drawn(" ")) << letter;
+    }
+}
+
+// A Cyrillic model name in the status bar: the font's letters, not "?" a byte.
+TEST(Overlay, TheStatusBarShowsANameInCyrillic) {
+    constexpr uint16_t W = 480, H = 272;
+    Overlay o;
+    o.layout(W, H);
+    StatusInfo s;
+    const char* name = "\xD0\x94\xD0\xB5\xD1\x82\xD0\xB0\xD0\xBB\xD1\x8C" "1"; // "Detal'1" in Russian
+    s.name = name, s.finished = 87, s.total = 87;
+    const std::vector<Rgb565> screen = draw(o, W, H, H, s);
+    std::vector<Rgb565> text(size_t(W) * H, 0);
+    std::vector<uint16_t> z(size_t(W) * H);
+    render::draw_text({text.data(), z.data(), W, H, 0, H}, 3, 2, name, 0xFFFF);
+    const Rgb565 bar = screen[0];
+    const int32_t width = render::text_width(name);
+    EXPECT_EQ(width, 7 * render::kCellWidth - 1);
+    int32_t set = 0;
+    for (int y = 2; y < 2 + render::kGlyphHeight; ++y) {
+        for (int x = 3; x < 3 + width; ++x) {
+            const size_t at = size_t(y) * W + size_t(x);
+            EXPECT_EQ(screen[at] != bar, text[at] != 0) << x << "," << y;
+            set += text[at] != 0;
+        }
+    }
+    EXPECT_GT(set, 7 * 8);
 }
 
 // The frame-time field is where tools/img.py's frame_time_field() says (the screenshot

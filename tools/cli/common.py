@@ -21,6 +21,7 @@ PACKAGES = [
     'libgtest-dev', 'libbenchmark-dev', 'libgmp-dev', 'zlib1g-dev', 'liblzma-dev',
     'clang', 'libclang-rt-14-dev',
     'libcgal-dev', 'gnuplot-nox', 'libsdl2-dev',
+    'xfonts-base',  # the X11 misc-fixed 5x8 font: tools/font/make_font.py's letters beyond ASCII
     'libocct-data-exchange-dev', 'libocct-modeling-algorithms-dev', 'libocct-modeling-data-dev',
     'libocct-foundation-dev', 'libocct-ocaf-dev', 'libocct-visualization-dev', 'libtbb-dev',
 ]
