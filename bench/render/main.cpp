@@ -152,7 +152,7 @@ int facet_main(hal::Board& board) {
         cfg.display.mode = Flush::Copy;
         cfg.display.flush = flush;
         cfg.on_event = on_event;
-        cfg.interface = false; // the model alone: what the peer draws too
+        cfg.interface = Interface::Off; // the model alone: what the peer draws too
         cfg.screen_error_px = 0; // every face, as the peer's mesh has them (none left waiting by the view)
         Result why;
         state.viewer = Viewer::create(cfg, workspace, sizeof workspace, &why);

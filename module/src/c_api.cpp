@@ -149,7 +149,7 @@ facet_viewer* facet_create(const facet_config* c, void* workspace, size_t bytes,
     cfg.clock_user = c->clock_user;
     cfg.frame_budget_us = c->frame_budget_us;
     cfg.step_slack_us = c->step_slack_us;
-    cfg.interface = c->interface != 0;
+    cfg.interface = c->interface == 0 ? Interface::Off : c->interface == 2 ? Interface::StatusLine : Interface::Full;
     cfg.screen_error_px = c->screen_error_px;
     Result r;
     Viewer* v = create_viewer(cfg, workspace, viewer_bytes, 0, &r);

@@ -24,12 +24,13 @@ const char* mode_name(DisplayMode m) {
 
 } // namespace
 
-void Overlay::layout(uint16_t width, uint16_t height) {
+void Overlay::layout(uint16_t width, uint16_t height, bool status_only) {
     width_ = width, height_ = height;
     button_count_ = 0;
     status_rows_ = 0, toolbar_x_ = int16_t(width);
     if (width < 160 || height < 96) return; // too small for a toolbar: the progress bar only
     status_rows_ = int16_t(render::kLineHeight + 2);
+    if (status_only) return;
     // Buttons down the right side, as tall as a finger needs (at least 28 pixels).
     const int16_t w = int16_t(width >= 600 ? 56 : 44);
     toolbar_x_ = int16_t(width - w);
@@ -152,8 +153,8 @@ Overlay::PartsHit Overlay::parts_at(int16_t x, int16_t y) const {
 }
 
 void Overlay::draw(const render::Target& t, const StatusInfo& info) const {
+    if (status_rows_) status(t, info);
     if (button_count_) {
-        status(t, info);
         toolbar(t);
         if (line_count_) panel(t);
         if (slider_on_) slider_bar(t);

@@ -38,8 +38,9 @@ public:
     static constexpr uint32_t kLines = 3, kLineChars = 80; // the measurement panel
 
     // The screen's size: where the bars and the buttons go (480 x 272 and larger; a screen
-    // under 160 x 96 gets no toolbar, only the progress bar).
-    void layout(uint16_t width, uint16_t height);
+    // under 160 x 96 gets no toolbar, only the progress bar). `status_only`: the status bar
+    // and the progress bar, no toolbar (the application's own buttons drive the viewer).
+    void layout(uint16_t width, uint16_t height, bool status_only = false);
     FreeArea taken() const;
     // The status bar's frame-time field: pixels [x0, x1) of rows [0, rows) (tools/img.py's
     // frame_time_field() says the same, for comparing a board's screenshots with the host's).

@@ -58,7 +58,7 @@ Result Core::describe(const Picked& p, geom::FaceGeometry& g) const {
 }
 
 void Core::show_measurement() {
-    if (!config_.interface || picked_count_ == 0) {
+    if (config_.interface != Interface::Full || picked_count_ == 0) {
         presenter_.overlay().set_lines(nullptr, 0);
         return;
     }

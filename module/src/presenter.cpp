@@ -4,7 +4,7 @@
 
 namespace facet::module {
 
-Result Presenter::configure(const Display& d, uint32_t frame_budget_us, bool interface) {
+Result Presenter::configure(const Display& d, uint32_t frame_budget_us, Interface interface) {
     auto bad = [](const char* what) { return Result::fail(Status::OutOfRange, what, {"display"}); };
     if (d.width == 0 || d.height == 0 || d.width > 4096 || d.height > 4096) return bad("width and height must be 1 to 4096");
     if (d.band_lines == 0 || d.band_lines > d.height) return bad("band_lines must be 1 to the height (the height: full frames)");
@@ -14,7 +14,8 @@ Result Presenter::configure(const Display& d, uint32_t frame_budget_us, bool int
     if (d.mode == Flush::Scanout && d.band_lines != d.height) return bad("scan-out displays take full frames (band_lines = height)");
     display_ = d;
     budget_us_ = frame_budget_us;
-    overlay_.layout(interface ? d.width : 0, interface ? d.height : 0);
+    const bool on = interface != Interface::Off;
+    overlay_.layout(on ? d.width : 0, on ? d.height : 0, interface == Interface::StatusLine);
     buffers_ = d.buffers[1] ? 2 : 1;
     const bool full = d.band_lines == d.height;
     incremental_ = full && (buffers_ == 1 || d.depth[1] != nullptr);

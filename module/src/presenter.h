@@ -31,7 +31,7 @@ public:
         : scene_(scene), camera_(camera), painter_(painter), raster_(raster), emit_(emit), clock_(clock) {}
 
     // Checks the display's buffers; nothing is drawn before a model is loaded.
-    Result configure(const Display& display, uint32_t frame_budget_us, bool interface);
+    Result configure(const Display& display, uint32_t frame_budget_us, Interface interface);
     Overlay& overlay() { return overlay_; }
     const Overlay& overlay() const { return overlay_; }
     // What the status bar shows that the presenter does not know (the level of detail).

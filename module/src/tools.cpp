@@ -25,7 +25,7 @@ void Core::section_changed() {
     const module::Section& s = camera_.section();
     float lo, hi;
     section_range(s, lo, hi);
-    presenter_.overlay().set_slider(s.on && config_.interface, hi > lo ? (s.offset - lo) / (hi - lo) : 0.5f);
+    presenter_.overlay().set_slider(s.on && config_.interface == Interface::Full, hi > lo ? (s.offset - lo) / (hi - lo) : 0.5f);
     presenter_.invalidate();
 }
 

@@ -43,7 +43,7 @@ Fit check(const std::vector<uint8_t>& file, Screen s) {
     std::vector<Rgb565> frame(size_t(s.w) * s.h);
     std::vector<uint16_t> depth(size_t(s.w) * s.h);
     cfg.display = {s.w, s.h, s.h, {frame.data(), nullptr}, {depth.data(), nullptr}, Flush::Copy, flush, nullptr};
-    cfg.interface = true; // framed in the screen less the status bar and the toolbar, as a user sees it
+    cfg.interface = Interface::Full; // framed in the screen less the status bar and the toolbar, as a user sees it
     std::vector<uint64_t> workspace(FACET_WORKSPACE_BYTES_DEFAULT / 8 + 1);
     Result why;
     Viewer* v = Viewer::create(cfg, workspace.data(), workspace.size() * 8, &why);

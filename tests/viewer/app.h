@@ -54,7 +54,7 @@ struct App {
     uint32_t flushes = 0, pending = 0;
     uint32_t clock_us = 0, tick_us = 0; // a fake clock: each read advances it
     bool use_clock = false;
-    bool interface = false; // the model alone (the on-screen interface has tests of its own)
+    Interface interface = Interface::Off; // the model alone (the on-screen interface has tests of its own)
     float screen_error_px = Config{}.screen_error_px;
 
     Capacity capacity;

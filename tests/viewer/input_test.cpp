@@ -18,7 +18,7 @@ using namespace facet::test;
 // is described with its exact values, and with MEAS on a second one gives the relation.
 TEST(Viewer, TheToolbarAndTheMeasurementPanelWorkByTouch) {
     App app;
-    app.w = 480, app.h = 272, app.lines = 272, app.interface = true;
+    app.w = 480, app.h = 272, app.lines = 272, app.interface = Interface::Full;
     ASSERT_TRUE(app.create().ok());
     ASSERT_TRUE(app.load(polygon_and_triangle(40)).ok());
     app.run();
@@ -172,7 +172,7 @@ TEST(Viewer, ALevelOfDetailWhoseEdgesDoNotFitGoesBackToThePreviousOne) {
 // on its box hides it (gone from the screen, not pickable), ISOL shows it alone, ALL shows all.
 TEST(Viewer, ThePartsListHidesShowsAndIsolatesByTouch) {
     App app;
-    app.w = 480, app.h = 272, app.lines = 272, app.interface = true;
+    app.w = 480, app.h = 272, app.lines = 272, app.interface = Interface::Full;
     ASSERT_TRUE(app.create().ok());
     ASSERT_TRUE(app.load(two_blocks()).ok());
     app.run();
@@ -246,4 +246,50 @@ TEST(Viewer, ADragDrawsTheFacesAloneAndTheEdgesComeBackWhenItRests) {
     app.v->pointer(0, 0, 0);
     app.run();
     EXPECT_GT(edge_pixels(), 100u);
+}
+
+// The interface reduced to the status line (Interface::StatusLine, facet_config.interface 2):
+// the status bar as the whole interface draws it, no toolbar (its place shows the model and
+// the background, and a tap there acts on the model), no panels; the model framed in the
+// screen less the status bar. The product's own buttons drive the viewer with act().
+TEST(Viewer, TheInterfaceReducedToTheStatusLine) {
+    auto shown = [](Interface interface, App& app) {
+        app.w = 480, app.h = 272, app.lines = 272, app.interface = interface;
+        EXPECT_TRUE(app.create().ok());
+        EXPECT_TRUE(app.load(polygon_and_triangle(40)).ok());
+        app.run();
+        return app.screen();
+    };
+    App full, line;
+    const std::vector<Rgb565> with_all = shown(Interface::Full, full), status_only = shown(Interface::StatusLine, line);
+    const module::Overlay& all = static_cast<const Core*>(full.v)->overlay();
+    const module::Overlay& reduced = static_cast<const Core*>(line.v)->overlay();
+    EXPECT_EQ(reduced.taken().top, all.taken().top) << "the status bar's rows";
+    EXPECT_EQ(reduced.taken().right, 0) << "no toolbar";
+    EXPECT_EQ(reduced.button_at(int16_t(line.w - 20), int16_t(line.button_row(all, Action::NextDisplayMode))), Action::None);
+    // The status bar's left part (the model's name and counts) drawn alike; the toolbar's
+    // place differs (the model's background, not the buttons).
+    const int32_t rows = all.taken().top, left = all.time_field().x0 - 6;
+    for (int32_t y = 0; y < rows; ++y) {
+        for (int32_t x = 0; x < left; ++x) {
+            const size_t at = size_t(y) * line.w + size_t(x);
+            ASSERT_EQ(status_only[at], with_all[at]) << x << "," << y;
+        }
+    }
+    uint32_t differ = 0;
+    for (int32_t y = rows; y < line.h; ++y) {
+        for (int32_t x = line.w - 40; x < line.w; ++x) differ += status_only[size_t(y) * line.w + size_t(x)] != with_all[size_t(y) * line.w + size_t(x)];
+    }
+    EXPECT_GT(differ, uint32_t(40 * (line.h - rows) / 2)) << "no toolbar drawn";
+    // A tap where MODE would be acts on the model (a pick), not on the display mode; keys
+    // that open panels draw none.
+    const int picks = line.count(Event::Kind::Picked);
+    line.tap(line.w - 20, line.button_row(all, Action::NextDisplayMode));
+    EXPECT_EQ(line.v->display_mode(), DisplayMode::ShadedEdges);
+    EXPECT_EQ(line.count(Event::Kind::Picked), picks + 1);
+    const std::vector<Rgb565> before = line.screen();
+    line.v->act(Action::Help);
+    line.v->act(Action::Parts);
+    line.run();
+    EXPECT_EQ(line.screen(), before) << "no help panel, no parts list";
 }

@@ -160,7 +160,7 @@ TEST(Viewer, SeeThroughDrawsTheOtherPartsAsAScreenDoor) {
 // not picked.
 TEST(Viewer, ASectionCutsTheModelAndShowsTheSolidsInside) {
     App app;
-    app.w = 480, app.h = 272, app.lines = 272, app.interface = true;
+    app.w = 480, app.h = 272, app.lines = 272, app.interface = Interface::Full;
     ASSERT_TRUE(app.create().ok());
     ASSERT_TRUE(app.load(two_blocks()).ok());
     app.run();

@@ -100,7 +100,7 @@ typedef struct {
     uint32_t (*now_us)(void *user);
     void *clock_user;
     uint32_t frame_budget_us, step_slack_us;
-    int interface; /* facet's own on-screen interface (facet_config_init: 1) */
+    int interface; /* facet's own on-screen interface: 0 none, 1 all (facet_config_init), 2 the status line alone */
     float screen_error_px; /* a far part's chordal error at rest (facet_config_init: 0.5); 0: every face, one tolerance */
 } facet_config;
 

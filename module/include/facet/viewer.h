@@ -58,8 +58,7 @@ Result model_needs(const void* file, uint32_t file_bytes, ModelNeeds& needs);
 
 // How the application's display takes a finished area.
 enum class Flush : uint8_t {
-    Copy,    // the pixels are copied out (SPI, DMA, memcpy into the panel's frame): flush_done()
-             // once the copy has finished; the buffer is then drawn into again
+    Copy,    // the pixels are copied out (SPI, DMA, memcpy): flush_done() once copied (then drawn into again)
     Scanout, // full frames the LCD controller reads in place: show the buffer from the next
              // refresh on, and flush_done() once it is shown (the previous frame is then free)
 };
@@ -68,9 +67,8 @@ struct Display {
     uint16_t width = 0, height = 0;
     uint16_t band_lines = 0;          // = height: full frames; fewer: the screen in bands of these
     Rgb565* buffers[2] = {};          // draw buffers, width * band_lines pixels; the second may be null
-    uint16_t* depth[2] = {};          // depth buffers, width * band_lines entries: one, or (full
-                                      // frames) one per draw buffer: faces then fill in without
-                                      // redrawing the whole frame
+    uint16_t* depth[2] = {};          // depth buffers, width * band_lines entries: one, or one per draw
+                                      // buffer (full frames: faces fill in without redrawing it whole)
     Flush mode = Flush::Copy;
     // The area of the screen in `pixels` (area.width * area.height, row after row) is ready.
     void (*flush)(void* user, const Area& area, const Rgb565* pixels) = nullptr;
@@ -112,6 +110,9 @@ struct Event {
     Result why; // FaceFailed, PassFailed
 };
 
+// facet's own on-screen interface: none (the application's own drives act()), the status line, or all.
+enum class Interface : uint8_t { Off, StatusLine, Full };
+
 struct Config {
     Display display;
     Capacity capacity;
@@ -121,8 +122,7 @@ struct Config {
     void* clock_user = nullptr;               // without one, step() does one piece of work per call
     uint32_t frame_budget_us = 0, step_slack_us = 2000; // BudgetExceeded past these (0: never)
     float screen_error_px = 0.5f; // a far part's chordal error at rest, pixels; 0: no view-dependent detail (every face, one tolerance)
-    bool interface = true; // facet's own on-screen interface (status bar, toolbar, panels); false:
-                           // the application draws its own and drives the viewer with act()
+    Interface interface = Interface::Full; // facet's own on-screen interface (Interface)
 };
 
 enum class Activity : uint8_t {
