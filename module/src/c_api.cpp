@@ -137,6 +137,7 @@ facet_viewer* facet_create(const facet_config* c, void* workspace, size_t bytes,
     Config cfg;
     const facet_display& d = c->display;
     cfg.display.width = d.width, cfg.display.height = d.height, cfg.display.band_lines = d.band_lines;
+    cfg.display.x = d.x, cfg.display.y = d.y;
     cfg.display.buffers[0] = d.buffers[0], cfg.display.buffers[1] = d.buffers[1];
     cfg.display.depth[0] = d.depth[0], cfg.display.depth[1] = d.depth[1];
     cfg.display.mode = Flush(d.mode);

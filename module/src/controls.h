@@ -34,6 +34,7 @@ public:
     uint32_t touch(uint8_t id, int16_t x, int16_t y, bool down, Command out[2]);
     // A drag under way: a mouse button held, or a finger down, past a tap's slop.
     bool dragging() const { return (buttons_ && travel_ > kTapSlop) || (fingers_[0].down && fingers_[0].moved) || fingers_[1].down; }
+    bool finger_down(uint8_t id) const { return id < 2 && fingers_[id].down; }
 
 private:
     struct Finger {

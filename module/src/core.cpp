@@ -1,5 +1,7 @@
 #include "core.h"
 
+#include <algorithm>
+
 #include "geom/pack_file.h"
 #include "loader.h"
 
@@ -312,6 +314,12 @@ void Viewer::wheel(int16_t clicks) {
 }
 void Viewer::touch(uint8_t id, int16_t x, int16_t y, bool down) {
     Core& c = *static_cast<Core*>(this);
+    // The screen's coordinates to facet's rectangle's; a finger coming down outside it is the
+    // product's (one already down may move out and back).
+    const Display& d = c.display();
+    const int32_t rx = int32_t(x) - d.x, ry = int32_t(y) - d.y;
+    if (down && !c.controls().finger_down(id) && (rx < 0 || ry < 0 || rx >= d.width || ry >= d.height)) return;
+    x = int16_t(std::clamp<int32_t>(rx, INT16_MIN, INT16_MAX)), y = int16_t(std::clamp<int32_t>(ry, INT16_MIN, INT16_MAX));
     module::Command out[2];
     const bool dragging = c.controls().dragging();
     const uint32_t n = c.controls().touch(id, x, y, down, out);

@@ -12,6 +12,8 @@ Result Presenter::configure(const Display& d, uint32_t frame_budget_us, Interfac
     if (!d.depth[0]) return bad("no depth buffer (depth[0])");
     if (!d.flush) return bad("no flush callback");
     if (d.mode == Flush::Scanout && d.band_lines != d.height) return bad("scan-out displays take full frames (band_lines = height)");
+    if (d.mode == Flush::Scanout && (d.x || d.y)) return bad("a scan-out display is the whole screen (x and y 0)");
+    if (d.x + uint32_t(d.width) > 65535 || d.y + uint32_t(d.height) > 65535) return bad("the rectangle must lie within 65,535 pixels");
     display_ = d;
     budget_us_ = frame_budget_us;
     const bool on = interface != Interface::Off;
@@ -244,7 +246,8 @@ void Presenter::flush(uint32_t pass) {
         buf_[b].version = job_.full || buf_[b].version == job_.version ? job_.version : 0;
         buf_[b].applied = job_.applied_to;
     }
-    display_.flush(display_.user, Area{0, t.y0, t.width, t.rows}, t.pixels); // may call flush_done()
+    // (in the screen's coordinates: facet's rectangle at (x, y) of it)
+    display_.flush(display_.user, Area{display_.x, uint16_t(display_.y + t.y0), t.width, t.rows}, t.pixels); // may call flush_done()
     if (!last) {
         ++job_.band;
         job_.stage = Job::Stage::Begin;

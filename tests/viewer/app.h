@@ -55,6 +55,9 @@ struct App {
     uint32_t clock_us = 0, tick_us = 0; // a fake clock: each read advances it
     bool use_clock = false;
     Interface interface = Interface::Off; // the model alone (the on-screen interface has tests of its own)
+    // facet's rectangle on a larger screen (Display::x, y): the screen's size (0: w x h) and where.
+    uint16_t screen_w = 0, screen_h = 0, at_x = 0, at_y = 0;
+    uint16_t stride() const { return screen_w ? screen_w : w; }
     float screen_error_px = Config{}.screen_error_px;
 
     Capacity capacity;
@@ -65,7 +68,7 @@ struct App {
             buf[b].assign(size_t(w) * lines, 0);
             depth[b].assign(size_t(w) * lines, 0);
         }
-        panel.assign(size_t(w) * h, 0);
+        panel.assign(size_t(stride()) * (screen_h ? screen_h : h), 0);
         Config cfg;
         cfg.display.width = w, cfg.display.height = h, cfg.display.band_lines = lines;
         cfg.display.buffers[0] = buf[0].data();
@@ -75,6 +78,7 @@ struct App {
         cfg.display.mode = mode;
         cfg.display.flush = [](void* self, const Area& a, const Rgb565* px) { static_cast<App*>(self)->flushed(a, px); };
         cfg.display.user = this;
+        cfg.display.x = at_x, cfg.display.y = at_y;
         cfg.on_event = [](void* self, const Event& e) { static_cast<App*>(self)->events.push_back(e); };
         cfg.event_user = this;
         if (use_clock) {
@@ -99,7 +103,7 @@ struct App {
             shown = px;
         } else {
             for (uint16_t y = 0; y < a.height; ++y)
-                std::memcpy(&panel[size_t(a.y + y) * w + a.x], px + size_t(y) * a.width, size_t(a.width) * 2);
+                std::memcpy(&panel[size_t(a.y + y) * stride() + a.x], px + size_t(y) * a.width, size_t(a.width) * 2);
         }
         if (late_done) ++pending;
         else v->flush_done();

@@ -190,3 +190,49 @@ TEST(Viewer, ADmaDisplayGetsNoDrawingIntoABufferInFlight) {
         EXPECT_EQ(app.screen(), ref.screen()) << buffers << " buffers";
     }
 }
+
+// facet in a rectangle of the product's screen (Display::x, y): the same pixels as on a screen
+// of the rectangle's size, in full frames and in bands, and nothing outside it; touch in the
+// screen's coordinates (a tap on a face picks it, a finger landing outside is the product's).
+TEST(Viewer, AViewportInTheProductsScreenDrawsWhatItsOwnScreenWould) {
+    constexpr uint16_t W = 200, H = 150, kScreenW = 320, kScreenH = 240, kX = 90, kY = 60;
+    constexpr Rgb565 kProduct = 0x1234; // what the product drew around it
+    for (const uint16_t lines : {H, uint16_t(40)}) {
+        App own, inside;
+        own.w = inside.w = W, own.h = inside.h = H, own.lines = inside.lines = lines;
+        inside.screen_w = kScreenW, inside.screen_h = kScreenH, inside.at_x = kX, inside.at_y = kY;
+        ASSERT_TRUE(own.create().ok());
+        ASSERT_TRUE(inside.create().ok());
+        std::fill(inside.panel.begin(), inside.panel.end(), kProduct);
+        ASSERT_TRUE(own.load(polygon_and_triangle(40)).ok());
+        ASSERT_TRUE(inside.load(polygon_and_triangle(40)).ok());
+        own.run(), inside.run();
+        const std::vector<Rgb565> a = own.screen(), b = inside.screen();
+        ASSERT_EQ(b.size(), size_t(kScreenW) * kScreenH);
+        uint32_t outside_changed = 0;
+        for (uint32_t y = 0; y < kScreenH; ++y) {
+            for (uint32_t x = 0; x < kScreenW; ++x) {
+                const Rgb565 p = b[size_t(y) * kScreenW + x];
+                const bool in = x >= kX && x < kX + W && y >= kY && y < kY + H;
+                if (in) ASSERT_EQ(p, a[size_t(y - kY) * W + (x - kX)]) << x << "," << y << " (bands of " << lines << ")";
+                else outside_changed += p != kProduct;
+            }
+        }
+        EXPECT_EQ(outside_changed, 0u) << "bands of " << lines;
+        // A tap at the middle of the rectangle picks what the middle of its own screen does.
+        own.tap(W / 2, H / 2);
+        inside.tap(kX + W / 2, kY + H / 2);
+        ASSERT_NE(own.last(Event::Kind::Picked), nullptr);
+        ASSERT_NE(inside.last(Event::Kind::Picked), nullptr);
+        EXPECT_TRUE(own.last(Event::Kind::Picked)->pick.hit) << "the model fills the middle";
+        EXPECT_EQ(inside.last(Event::Kind::Picked)->pick.hit, own.last(Event::Kind::Picked)->pick.hit);
+        EXPECT_EQ(inside.last(Event::Kind::Picked)->pick.face, own.last(Event::Kind::Picked)->pick.face);
+        const int picks = inside.count(Event::Kind::Picked);
+        inside.tap(10, 10); // the product's part of the screen
+        EXPECT_EQ(inside.count(Event::Kind::Picked), picks);
+    }
+    // A scan-out display is the whole screen.
+    App scanout;
+    scanout.mode = Flush::Scanout, scanout.at_x = 8;
+    EXPECT_EQ(scanout.create().status, Status::OutOfRange);
+}

@@ -64,6 +64,7 @@ typedef struct {
     facet_flush_mode mode;
     void (*flush)(void *user, const facet_area *area, const facet_rgb565 *pixels);
     void *user;
+    uint16_t x, y; /* facet's rectangle at (x, y) of the screen (copy mode): flush areas and touch in the screen's */
 } facet_display;
 
 typedef enum {

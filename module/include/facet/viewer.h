@@ -73,10 +73,10 @@ struct Display {
     // The area of the screen in `pixels` (area.width * area.height, row after row) is ready.
     void (*flush)(void* user, const Area& area, const Rgb565* pixels) = nullptr;
     void* user = nullptr;
+    uint16_t x = 0, y = 0; // facet's rectangle at (x, y) of the screen (Copy): flush areas and touch in the screen's
 };
 
-// Pieces of work (for profiling). Overlay: the on-screen interface over a frame, a piece of its own.
-enum class Work : uint8_t { Unpack, Sampling, Face, Frame, Update, Fit, Overlay };
+enum class Work : uint8_t { Unpack, Sampling, Face, Frame, Update, Fit, Overlay }; // pieces of work (profiling)
 
 struct Event {
     enum class Kind : uint8_t {
