@@ -19,6 +19,7 @@ static uint16_t depth[W * LINES];
 static facet_rgb565 screen[W * H];
 static int events[FACET_EVENT_WORK_END + 1];
 static int pending, failures;
+static int origin_x, origin_y; /* the viewer's rectangle on the screen (facet_display.x, y) */
 static facet_viewer *viewer;
 
 #define CHECK(cond)                                                                                 \
@@ -32,8 +33,8 @@ static facet_viewer *viewer;
 static void flush(void *user, const facet_area *a, const facet_rgb565 *pixels) {
     int y;
     CHECK(user == (void *)screen);
-    CHECK(a->x == 0 && a->width == W && a->height <= LINES && a->y + a->height <= H);
-    for (y = 0; y < a->height; ++y) memcpy(&screen[(a->y + y) * W], pixels + y * W, W * 2);
+    CHECK(a->x == origin_x && a->width == W && a->height <= LINES && a->y >= origin_y && a->y + a->height <= origin_y + H);
+    for (y = 0; y < a->height; ++y) memcpy(&screen[(a->y - origin_y + y) * W], pixels + y * W, W * 2);
     ++pending; /* done later, as a DMA would */
 }
 
@@ -58,7 +59,7 @@ int main(int argc, char **argv) {
     FILE *f;
     long size;
     uint32_t *file, *memory, need;
-    int i;
+    int i, n;
 
     if (argc != 2) return 2;
     facet_config_init(&cfg);
@@ -149,6 +150,29 @@ int main(int argc, char **argv) {
         if (a == FACET_ACTIVITY_IDLE && !pending) break;
         for (; pending; --pending) facet_flush_done(viewer);
     }
+    /* Anew in the same workspace: in a rectangle at (7, 5) of a larger screen, the interface
+     * reduced to the status line. Flush areas come in the screen's coordinates (flush()
+     * checks), and so do touches: one in the rectangle picks, one outside it is the product's. */
+    origin_x = cfg.display.x = 7, origin_y = cfg.display.y = 5;
+    cfg.interface = 2;
+    viewer = facet_create(&cfg, workspace, sizeof workspace, &why);
+    CHECK(viewer != NULL && why.status == FACET_OK);
+    if (!viewer) return 1;
+    CHECK(facet_load(viewer, file, (uint32_t)size, memory, need).status == FACET_OK);
+    i = events[FACET_EVENT_FRAME_DONE];
+    for (; pending; --pending) facet_flush_done(viewer);
+    for (n = 0; n < 200000 && (facet_step(viewer, 2000) != FACET_ACTIVITY_IDLE || pending); ++n)
+        for (; pending; --pending) facet_flush_done(viewer);
+    CHECK(events[FACET_EVENT_FRAME_DONE] > i);
+    i = events[FACET_EVENT_PICKED];
+    facet_touch(viewer, 0, 2, 2, 1); /* outside the rectangle */
+    facet_touch(viewer, 0, 2, 2, 0);
+    CHECK(events[FACET_EVENT_PICKED] == i);
+    facet_touch(viewer, 0, 7 + W / 2, 5 + H / 2, 1);
+    facet_touch(viewer, 0, 7 + W / 2, 5 + H / 2, 0);
+    CHECK(events[FACET_EVENT_PICKED] == i + 1);
+    for (n = 0; n < 200000 && (facet_step(viewer, 2000) != FACET_ACTIVITY_IDLE || pending); ++n)
+        for (; pending; --pending) facet_flush_done(viewer);
     free(file);
     free(memory);
     if (failures) return 1;
