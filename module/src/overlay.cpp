@@ -174,11 +174,10 @@ void Overlay::status(const render::Target& t, const StatusInfo& s) const {
     char name[16 * 4 + 1];
     format(name, sizeof name, "{}", s.name);
     render::cut_text(name, 16);
-    const uint32_t k = uint32_t(name[0] != 0);
     // A model larger than the memory: "faces 900/900 +4100 boxed" (the parts left out).
     char boxed[24] = "";
     if (s.boxed_faces) format(boxed, sizeof boxed, " +{} boxed", s.boxed_faces);
-    format(text, sizeof text, "{}{}faces {}/{}{}  {} tri  lod {} mm  {}  {}", name, k ? "  " : "", s.finished, s.total, boxed,
+    format(text, sizeof text, "{}{}faces {}/{}{}  {} tri  lod {} mm  {}  {}", name, name[0] ? "  " : "", s.finished, s.total, boxed,
            s.triangles, fixed(tol, 3), mode_name(s.mode), s.ortho ? "parallel" : "persp");
     const TimeField f = time_field();
     render::cut_text(text, (f.x0 - 6 - 3) / render::kCellWidth); // the characters before the field

@@ -24,6 +24,8 @@ constexpr int32_t kSpeckPixels = kFacePixels + 1;
 // drawn as a speck too (the size the view tessellates a face for).
 constexpr int32_t kShownPixels = kFacePixels;
 constexpr uint8_t kSpeckShade = 200;        // a speck in the face's colour: lit about halfway
+// A splat's side: about 0.7 of the face's size across (a disc of diameter D holds a square of 0.7 D).
+static_assert(kSplatPixels * 11 / 16 <= render::Rasterizer::kMaxSplat, "the largest splat is one the rasterizer draws");
 // A part under this across (its sphere's) is drawn as its box until it grows (issue 25).
 constexpr int32_t kTinyPartPixels = 5;
 

@@ -107,18 +107,18 @@ bool Presenter::updates(uint8_t b) const {
 void Presenter::catch_up() {
     const uint8_t b = job_.buffer, o = uint8_t(b ^ 1);
     if (buffers_ != 2) return;
+    const uint32_t pixels = uint32_t(display_.width) * display_.height;
     if (buf_[b].version == version_) { // (else updates() chose the copy: a whole frame costs far more)
         if (!catch_up_ || buf_[o].version != version_ || buf_[o].applied <= buf_[b].applied) return;
         // The faces the other buffer has and this one lacks, drawn again, against a copy of its
         // colour and depth: a copy costs about an instruction and a half a pixel on the ARM926,
         // a triangle drawn about a thousand with its vertices and edges, so the copy wins once
         // they hold a triangle for every 700 pixels or so (taken from one for every 512).
-        const uint32_t worth = uint32_t(display_.width) * display_.height / 512;
+        const uint32_t worth = pixels / 512;
         uint32_t triangles = 0;
         for (uint32_t k = buf_[b].applied; k < buf_[o].applied && triangles < worth; ++k) triangles += scene_.face(scene_.done_face(k)).triangle_count;
         if (triangles < worth) return;
     }
-    const uint32_t pixels = uint32_t(display_.width) * display_.height;
     render::copy_pixels(display_.buffers[b], display_.buffers[o], pixels);
     render::copy_pixels(display_.depth[b], display_.depth[o], pixels);
     buf_[b].version = version_;
