@@ -58,6 +58,8 @@ void Core::work(Event::Kind kind, Work what, uint32_t item) {
 Result Core::load(const void* file, uint32_t file_bytes, void* memory, uint32_t memory_bytes) {
     scheduler_.stop();
     framer_.stop();
+    swap_.block = kNoBlock, swap_check_ = false;
+    unpacked_ = {};
     glide_.phase = Glide::Phase::None;
     presenter_.reset();
     scene_.close();
@@ -77,7 +79,8 @@ Result Core::load(const void* file, uint32_t file_bytes, void* memory, uint32_t 
     if (decoding) work(Event::Kind::WorkEnd, Work::Unpack, 0);
     if (!decoded.ok()) return decoded;
     if (Result r = module::open_unpacked(unpacked, scene_); !r.ok()) return r;
-    if (Result r = plan(scene_.face_count(), scene_.edge_count(), model_end); !r.ok()) return r;
+    unpacked_ = unpacked;
+    if (Result r = plan(scene_.face_count(), scene_.edge_count(), scene_.edge_count() - scene_.left_out().edges, model_end); !r.ok()) return r;
     pack_file_bytes_ = file_size;
     pack_bytes_ = unpacked.bytes;
     const uint32_t bytes = pack_bytes_;
@@ -95,7 +98,8 @@ Result Core::load(const void* file, uint32_t file_bytes, void* memory, uint32_t 
     presenter_.overlay().set_lines(nullptr, 0);
     Event e{};
     e.kind = Event::Kind::Loaded;
-    e.loaded = {scene_.face_count(), scene_.edge_count(), scene_.part_count(), uint32_t(scene_.instances().size()), bytes,
+    e.loaded = {scene_.face_count() - scene_.left_out().faces, scene_.edge_count() - scene_.left_out().edges, scene_.part_count(),
+                uint32_t(scene_.instances().size()), bytes,
                 pack_file_bytes_, scene_.left_out().parts, scene_.left_out().faces};
     emit(e);
     scheduler_.begin_pass(default_tolerance_);
@@ -163,7 +167,11 @@ Activity Core::step(uint32_t budget_us) {
                 presenter_.invalidate();
             }
             work(Event::Kind::WorkEnd, w, item);
-        } else if (mid_bands || !refine_for_view()) {
+        } else if (swap_.block != kNoBlock && !mid_bands) {
+            work(Event::Kind::WorkBegin, Work::Unpack, swap_.block);
+            swap_step();
+            work(Event::Kind::WorkEnd, Work::Unpack, swap_.block);
+        } else if (mid_bands || (!swap_for_view() && !refine_for_view())) {
             break;
         }
         if (!config_.now_us || now() - t0 >= budget_us) break;
@@ -179,9 +187,10 @@ Activity Core::step(uint32_t budget_us) {
     const bool mid_bands = presenter_.drawing() && config_.display.band_lines < config_.display.height;
     // Nothing else left: a block the view wants at another level is begun now, so that the
     // next step has its work (a step without a clock is one piece of work).
-    if (!mid_bands && !frame_wanted() && !scheduler_.busy()) (void)refine_for_view();
+    if (!mid_bands && !frame_wanted() && !scheduler_.busy() && swap_.block == kNoBlock && !swap_for_view()) (void)refine_for_view();
     if ((frame_wanted() && presenter_.can_draw()) ||
-        ((scheduler_.busy() || scene_.bounding() || framer_.busy() || glide_.phase != Glide::Phase::None) && !mid_bands)) {
+        ((scheduler_.busy() || swap_.block != kNoBlock || swap_pending() || scene_.bounding() || framer_.busy() || glide_.phase != Glide::Phase::None) &&
+         !mid_bands)) {
         return Activity::Busy;
     }
     if (frame_wanted()) return Activity::Waiting;

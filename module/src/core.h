@@ -96,7 +96,9 @@ private:
     // The workspace past the base arrays: the model's arrays from model_start_ (planned at
     // load), the pack's decoded blocks at its end (end_) when load() is given no memory.
     uint8_t *model_start_ = nullptr, *end_ = nullptr;
-    Result plan(uint32_t faces, uint32_t edges, uint8_t* end); // the model's arrays in [model_start_, end)
+    // The model's arrays in [model_start_, end): every face and edge numbered, room at least for
+    // the wireframe of `sampled_edges` (those of the blocks opened).
+    Result plan(uint32_t faces, uint32_t edges, uint32_t sampled_edges, uint8_t* end);
     // Where the pack memory goes: `need` bytes (pack_memory_need()).
     Result place_pack(const void* file, uint32_t file_size, uint32_t need, void*& memory, uint32_t& memory_bytes,
                       uint8_t*& model_end) const;
@@ -118,6 +120,30 @@ private:
     static constexpr float kFinest = 16.0f, kRefineStep = 2.0f;
     bool refine_for_view(); // true when it started (or tried) a refinement (detail.cpp)
     bool refine_check_ = false;
+    // Blocks of a model larger than the memory brought in as the view nears them (swap.cpp).
+    static constexpr uint32_t kNoBlock = ~0u;
+    static constexpr float kSwapPixels = 32.0f;     // a left-out block this large on the screen comes in
+    static constexpr uint32_t kSwapBytes = 16384;   // decoded a piece at a time
+    bool swap_for_view();                           // true when it began one
+    bool swap_in(uint32_t b);                       // block b (left out; Block::pixels set): true when begun
+    bool swap_pending() const {                     // blocks still to look at, nothing else under way
+        return swap_check_ && scene_.blocked() && scene_.left_out().blocks > 0 && unpacked_.memory && !controls_.dragging();
+    }
+    void swap_step();                               // a piece of the block's decoding
+    void swap_finish(const geom::PackDecoder* decoder);
+    bool swap_failed(uint32_t b, const Result& why);
+    float block_pixels(uint32_t b);                 // its box's sphere across on the screen
+    uint32_t block_samples(uint32_t b) const;       // the samples its edges hold
+    static constexpr float kBackPixels = 5.0f;      // one this large comes back where there is room (as tiny parts are boxes)
+    // Room for a refinement of block `keep`: every held block off the screen left out (a model
+    // read block by block, whose blocks can come back). True when some were.
+    bool leave_out_unseen(uint32_t keep);
+    bool swap_check_ = false;
+    struct Swap {
+        uint32_t block = kNoBlock; // being decoded
+        geom::PackDecoder decoder;
+    } swap_;
+    module::Unpacked unpacked_; // a blocked pack's blocks and pack memory
     uint32_t seen_moves_ = 0, seen_refined_ = 0; // the scene's moves and refinements the frames know of
     void detail_view_changed(); // when the view moved since the faces were last judged: judged again
     bool judge_with_view();     // the spheres' view from the camera's, if it moved (true then)

@@ -154,6 +154,15 @@ bool Core::refine_for_view() {
             return false;
         }
         if (scheduler_.begin_refine(best, best_tolerance)) return true;
+        // No room: blocks off the screen make it, where they can come back (swap.cpp); short
+        // of it still, a finer level part of the way (kRefineStep at a time from the wanted).
+        const float now = scene_.block(best).tolerance;
+        const bool left = leave_out_unseen(best);
+        for (float t = best_tolerance * (left ? 1 : kRefineStep); t < now / kRefineStep * 1.001f; t *= kRefineStep) {
+            scene_.block(best).refused = false;
+            if (scheduler_.begin_refine(best, t)) return true;
+        }
+        scene_.block(best).refused = true;
     }
 }
 
@@ -167,7 +176,7 @@ bool Core::judge_with_view() {
 
 void Core::detail_view_changed() {
     if (!judge_with_view()) return;
-    refine_check_ = true;
+    refine_check_ = swap_check_ = true;
     for (uint32_t b = 0; b < scene_.block_count(); ++b) scene_.block(b).refused = false; // (the room may differ now)
     if (scene_.totals().deferred > 0) scheduler_.revisit();
 }

@@ -83,6 +83,7 @@ Result unpack_blocked(const uint8_t* in, uint32_t file_bytes, uint8_t* mem, uint
     out.blocks = {table, count};
     out.pack = mem;
     out.bytes = at;
+    out.memory = mem, out.limit = end, out.probs = &probs;
     return {};
 }
 
@@ -194,6 +195,67 @@ Result open_unpacked(Unpacked& u, Scene& scene) {
         if (Result r = u.blocks[b].pack.open(u.blocks[b].data, bytes); !r.ok()) return r.within({"block", b});
     }
     return scene.open(u.index, u.blocks);
+}
+
+uint32_t block_memory(const Unpacked& u, uint32_t b) {
+    return in_place(u.index, b) ? 0 : align4(u.index.blocks()[b].pack_bytes);
+}
+
+Result compact_blocks(Unpacked& u) {
+    const uint32_t count = uint32_t(u.blocks.size());
+    uint32_t top = table_bytes(count);
+    const uint8_t* last = nullptr; // the last block moved (by where it lay)
+    for (;;) {
+        uint32_t next = count; // the decoded block lying lowest past `last`
+        for (uint32_t b = 0; b < count; ++b) {
+            const Block& block = u.blocks[b];
+            if (block.left_out || block_memory(u, b) == 0 || block.data <= last) continue;
+            if (next == count || block.data < u.blocks[next].data) next = b;
+        }
+        if (next == count) break;
+        Block& block = u.blocks[next];
+        last = block.data;
+        const uint32_t bytes = u.index.blocks()[next].pack_bytes;
+        if (block.data != u.memory + top) {
+            std::memmove(u.memory + top, block.data, bytes);
+            block.data = u.memory + top;
+            if (Result r = block.pack.open(block.data, bytes); !r.ok()) return r.within({"block", next});
+            last = block.data + bytes - 1; // (past it, as the blocks lying higher were)
+        }
+        top += align4(bytes);
+    }
+    u.bytes = top;
+    return {};
+}
+
+Result start_block(Unpacked& u, uint32_t b, geom::PackDecoder& decoder) {
+    const uint32_t bytes = u.index.blocks()[b].pack_bytes, room = block_memory(u, b);
+    if (room == 0) return {};
+    if (uint64_t(u.bytes) + room > u.limit) return Result::fail(Status::Full, "no room in the pack memory for the block", {"block", b});
+    return decoder.start(u.index.block_file(b), {u.memory + u.bytes, bytes}, *u.probs).within({"block", b});
+}
+
+Result finish_block(Unpacked& u, uint32_t b, const geom::PackDecoder* decoder, Scene& scene) {
+    const uint32_t bytes = u.index.blocks()[b].pack_bytes;
+    Block& block = u.blocks[b];
+    const Place here{"block", b};
+    if (block_memory(u, b) == 0) {
+        if (u.index.block_file(b).size() < bytes) return Result::fail(Status::Corrupt, "a plain block is shorter than the index says", here);
+        block.data = u.index.block_file(b).data();
+    } else {
+        if (!decoder || decoder->pack_bytes() != bytes) return Result::fail(Status::Corrupt, "the block's size is not the index's", here);
+        block.data = u.memory + u.bytes;
+    }
+    if (Result r = block.pack.open(block.data, bytes); !r.ok()) {
+        block.pack = {}, block.data = nullptr;
+        return r.within(here);
+    }
+    if (Result r = scene.take_block(b); !r.ok()) {
+        block.data = nullptr;
+        return r;
+    }
+    u.bytes += block_memory(u, b);
+    return {};
 }
 
 } // namespace facet::module

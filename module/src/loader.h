@@ -4,6 +4,7 @@
 // one's blocks decoded there one after the other behind a table of them (the index and plain
 // blocks read in place). When the file itself lies inside the pack memory, it is first moved to the memory's
 // end and decoded from there.
+#include "geom/pack_file.h"
 #include "scene.h"
 
 #include <cstdint>
@@ -36,7 +37,27 @@ struct Unpacked {
     std::span<Block> blocks;       // a blocked pack's, in the pack memory: each compressed block decoded
                                    // after the table and the blocks before it (4-byte aligned); a plain
                                    // block read in place
+    // A blocked pack's pack memory, for the blocks the view brings in later: the table at
+    // `memory`, the decoded blocks after it up to `bytes`, room for more up to `limit` (where
+    // the file, moved there, or the decoder's state begins), and the decoder's state.
+    uint8_t* memory = nullptr;
+    uint32_t limit = 0;
+    geom::LzmaProbs* probs = nullptr;
 };
+
+// Blocks brought in and left out as the view asks (a model larger than the memory):
+// The pack memory block b takes decoded (0 when it is read in place from the file).
+uint32_t block_memory(const Unpacked& u, uint32_t b);
+// The decoded blocks moved down over those left out since, in the order they lie, each one
+// moved opened again where it now lies (a block's pack reads its bytes in place): u.bytes then
+// ends the last. Corrupt only if a block no longer opens (it did before).
+Result compact_blocks(Unpacked& u);
+// Block b (left out) begun: decoded at u.bytes by `decoder` (its run() to go on until done), or
+// at once when read in place. Full when the room up to u.limit is short.
+Result start_block(Unpacked& u, uint32_t b, geom::PackDecoder& decoder);
+// Block b decoded (`decoder` done; none for one read in place): opened, checked against the
+// index and taken into the scene; u.bytes past it.
+Result finish_block(Unpacked& u, uint32_t b, const geom::PackDecoder* decoder, Scene& scene);
 
 // Decodes `file` into the pack memory as its form asks (the work a profile calls unpacking); a
 // blocked pack's blocks `cut` does not keep are left out.

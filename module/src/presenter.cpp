@@ -159,8 +159,8 @@ bool Presenter::full_pieces(uint32_t units) {
             if (spent >= units) return false;
             continue;
         }
-        if (job_.boxes || scene_.part_left_out(shell) || job_.tiny) {
-            // (a part left out: always its box; a tiny one until it grows)
+        if (job_.boxes || scene_.part_boxed(shell) || job_.tiny) {
+            // (a part left out, or brought in and not sampled yet: its box; a tiny one until it grows)
             spent += painter_.part_box(shell, t);
             ++job_.instance;
             job_.have_transform = false;

@@ -38,6 +38,7 @@ Result Scene::open(const geom::Pack& pack) {
     left_out_ = {};
     instances_ = pack.instances();
     faces_ = uint32_t(pack.faces().size()), edges_ = uint32_t(pack.edges().size()), parts_ = uint32_t(pack.shells().size());
+    whole_.faces = faces_, whole_.edges = edges_;
     const pack::Header& h = pack.header();
     source_unit_mm_ = h.source_unit_mm;
     for (int k = 0; k < 3; ++k) box_min_[k] = h.bbox_min[k], box_max_[k] = h.bbox_max[k];
@@ -52,48 +53,64 @@ Result Scene::open(const geom::PackIndex& index, std::span<Block> blocks) {
     }
     uint32_t faces = 0, edges = 0;
     left_out_ = {};
+    index_ = index;
+    blocks_ = blocks;
     for (uint32_t k = 0; k < 3; ++k) box_min_[k] = INFINITY, box_max_[k] = -INFINITY;
     for (uint32_t b = 0; b < blocks.size(); ++b) {
         const pack::Block& entry = index.blocks()[b];
         Block& block = blocks[b];
-        const geom::Pack& p = block.pack;
         const Place here{"block", b};
         block.first_face = faces, block.first_edge = edges, block.first_part = entry.first_part;
-        if (block.left_out) ++left_out_.blocks;
-        else if (p.shells().size() != entry.part_count) return Result::fail(Status::Corrupt, "its shells are not its parts", here);
-        uint32_t block_edges = 0;
+        uint64_t block_faces = 0, block_edges = 0;
         for (uint32_t s = 0; s < entry.part_count; ++s) {
             const pack::Part& part = parts[entry.first_part + s];
             for (int k = 0; k < 3; ++k) {
                 box_min_[k] = part.box_min[k] < box_min_[k] ? part.box_min[k] : box_min_[k];
                 box_max_[k] = part.box_max[k] > box_max_[k] ? part.box_max[k] : box_max_[k];
             }
-            if (block.left_out) { // no faces, no edges: its parts are boxes
-                ++left_out_.parts, left_out_.faces += part.face_count;
-                continue;
-            }
-            const pack::Shell& shell = p.shells()[s];
-            if (shell.face_count != part.face_count || (shell.closed != 0) != (part.closed != 0)) {
-                return Result::fail(Status::Corrupt, "a shell is not its part of the index", here);
-            }
-            block_edges += part.edge_count;
+            block_faces += part.face_count, block_edges += part.edge_count;
         }
-        if (block.left_out) continue;
-        if (block_edges != p.edges().size() || p.faces().size() != p.shells().back().first_face + p.shells().back().face_count) {
-            return Result::fail(Status::Corrupt, "its faces or edges are not its parts'", here);
+        if (faces + block_faces > UINT32_MAX / 2 || edges + block_edges > UINT32_MAX / 2) {
+            return Result::fail(Status::Corrupt, "more faces or edges than a model can number", here);
         }
-        faces += uint32_t(p.faces().size()), edges += block_edges;
+        block.faces = uint32_t(block_faces), block.edges = uint32_t(block_edges);
+        faces += block.faces, edges += block.edges;
+        if (block.left_out) {
+            block.pack = {};
+            ++left_out_.blocks, left_out_.parts += entry.part_count, left_out_.faces += block.faces, left_out_.edges += block.edges;
+        } else if (Result r = check_block(index, b); !r.ok()) {
+            return r;
+        }
     }
     if (!(box_min_[0] <= box_max_[0])) {
         for (int k = 0; k < 3; ++k) box_min_[k] = box_max_[k] = 0;
     }
-    index_ = index;
-    blocks_ = blocks;
     blocked_ = true;
     instances_ = index.instances();
     faces_ = faces, edges_ = edges, parts_ = uint32_t(parts.size());
     source_unit_mm_ = index.header().source_unit_mm;
     return start();
+}
+
+// A block's pack against its parts in the index: its shells, faces and edges theirs.
+Result Scene::check_block(const geom::PackIndex& index, uint32_t b) const {
+    const pack::Block& entry = index.blocks()[b];
+    const Block& block = blocks_[b];
+    const geom::Pack& p = block.pack;
+    const Place here{"block", b};
+    if (p.shells().size() != entry.part_count || entry.part_count == 0) return Result::fail(Status::Corrupt, "its shells are not its parts", here);
+    for (uint32_t s = 0; s < entry.part_count; ++s) {
+        const pack::Part& part = index.parts()[entry.first_part + s];
+        const pack::Shell& shell = p.shells()[s];
+        if (shell.face_count != part.face_count || (shell.closed != 0) != (part.closed != 0)) {
+            return Result::fail(Status::Corrupt, "a shell is not its part of the index", here);
+        }
+    }
+    if (block.edges != p.edges().size() || block.faces != p.faces().size() ||
+        p.faces().size() != p.shells().back().first_face + p.shells().back().face_count) {
+        return Result::fail(Status::Corrupt, "its faces or edges are not its parts'", here);
+    }
+    return {};
 }
 
 Result Scene::start() {
@@ -365,9 +382,13 @@ void Scene::quantize_samples(uint32_t from, uint32_t to) {
 
 void Scene::reset_mesh(bool keep_peaks) {
     for (uint32_t f = 0; f < face_count(); ++f) mem_.faces[f] = {0, 0, 0, 0, 0, {0, 0, 0}, 0, FaceState::Pending, false};
+    for (const Block& b : blocks_) {
+        if (!b.left_out) continue;
+        for (uint32_t f = b.first_face; f < b.first_face + b.faces; ++f) mem_.faces[f].state = FaceState::Absent;
+    }
     const Totals before = totals_;
     totals_ = {};
-    totals_.faces = face_count();
+    totals_.faces = face_count() - left_out_.faces;
     vertex_top_ = triangle_top_ = 0;
     if (keep_peaks) {
         totals_.arena_peak_bytes = before.arena_peak_bytes;

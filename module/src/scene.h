@@ -25,7 +25,9 @@ static_assert(sizeof(DrawVertex) == FACET_BYTES_PER_MESH_VERTEX);
 
 // Deferred: too small on the screen (or off it) to be worth its triangles for now; drawn by its
 // edges, its sphere bounded from them, tessellated when the view makes it large enough.
-enum class FaceState : uint8_t { Pending, Done, Failed, Deferred };
+// Absent: its block is left out of a model larger than the memory (not decoded; its parts
+// drawn as their boxes), outside the totals until the view brings the block in.
+enum class FaceState : uint8_t { Pending, Done, Failed, Deferred, Absent };
 
 // +1 for a right-handed frame (x cross y along z), -1 for a left-handed one: a surface's du x dv
 // (its own normal) goes with it (geom/src/elementary.h).
@@ -56,9 +58,15 @@ struct Block {
     // A refinement it could not make (no room for its samples or its mesh): not tried again
     // until the view changes or a new pass begins.
     bool refused = false;
-    // Left out of a model larger than the memory (loader.h): not decoded, no faces or edges;
-    // its parts are drawn as their boxes.
+    // Left out of a model larger than the memory (loader.h): not decoded (its pack empty), its
+    // faces absent and its edges unsampled; its parts are drawn as their boxes. Numbered all
+    // the same (`faces`, `edges`: its parts' counts in the index), so that it can come in and
+    // go out again as the view asks (Scene::take_block, drop_block) without renumbering.
     bool left_out = false;
+    bool leaving = false; // chosen to make room for a block the view brings in (swap.cpp)
+    bool broken = false;  // found corrupt as it was brought in: left out for good
+    float pixels = 0;     // its box's size on the screen when last judged (swap.cpp)
+    uint32_t faces = 0, edges = 0;
 };
 
 // A part (a shell): its faces in the model's numbering, and its block.
@@ -126,10 +134,18 @@ public:
     // What a model larger than the memory left out (its blocks not decoded, loader.h): its
     // parts are drawn as their boxes.
     struct LeftOut {
-        uint32_t blocks = 0, parts = 0, faces = 0;
+        uint32_t blocks = 0, parts = 0, faces = 0, edges = 0;
     };
     const LeftOut& left_out() const { return left_out_; }
+    // A left-out block brought in: its pack opened (Block::pack, checked against the index),
+    // its faces pending, counted in the totals (its edges to be sampled: Scheduler::begin_refine).
+    Result take_block(uint32_t b);
+    // A block left out again (the view wants its memory for another): its meshes and samples
+    // garbage, its faces absent, its pack closed (the caller moves the decoded packs after it).
+    void drop_block(uint32_t b);
     bool part_left_out(uint32_t s) const { return blocked_ && blocks_[find(s, &Block::first_part)].left_out; }
+    // Drawn as its box: left out, or its block just brought in and not sampled yet (no level).
+    bool part_boxed(uint32_t s) const { return blocked_ && !(blocks_[find(s, &Block::first_part)].tolerance > 0); }
     // A part's edges in the model's numbering, each once, where they are known to be together:
     // a blocked pack's part (its block's edges are its parts' in order), or a whole pack's only
     // part. False otherwise.
@@ -194,7 +210,7 @@ public:
     // Quantizes samples [from, to) of the pool for drawing.
     void quantize_samples(uint32_t from, uint32_t to);
 
-    // A new pass: no face done, the samples' peak carried over.
+    // A new pass: no face done (a left-out block's absent), the samples' peak carried over.
     void reset_mesh(bool keep_peaks);
     // Appends a tessellated face (its float mesh) to the drawing mesh; a face already done (its
     // block refined) gets the new mesh, and its old one is garbage until compact(). Full when the
@@ -233,6 +249,7 @@ public:
 
 private:
     Result start(); // after the blocks are set: the model's counts, box and quantum
+    Result check_block(const geom::PackIndex& index, uint32_t b) const; // its pack is its parts'
     // The block holding item k of a numbering (binary search on the blocks' firsts).
     uint32_t find(uint32_t k, uint32_t Block::*first) const {
         uint32_t lo = 0, hi = uint32_t(blocks_.size());

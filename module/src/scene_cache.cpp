@@ -2,7 +2,9 @@
 // face tessellated again (its block refined as the view came nearer) takes new room and leaves
 // its old mesh behind; a block's edges sampled again leave their old samples behind. Nothing
 // points into either but the faces' FaceInfo and the edges' first sample, so the live parts
-// can be moved down over what was left behind, in the order they lie.
+// can be moved down over what was left behind, in the order they lie. And the blocks of a
+// model larger than the memory, in and out as the view asks (swap.cpp): a block brought in
+// numbered as it was at load, one left out leaving its meshes and samples behind.
 #include "scene.h"
 
 #include <cstring>
@@ -101,6 +103,53 @@ bool Scene::compact_samples(std::span<uint32_t> scratch) {
     s.used = top;
     ++moves_;
     return true;
+}
+
+Result Scene::take_block(uint32_t b) {
+    Block& block = blocks_[b];
+    if (!blocked_ || !block.left_out) return Result::fail(Status::OutOfRange, "the block is not left out", {"block", b});
+    if (Result r = check_block(index_, b); !r.ok()) {
+        block.pack = {};
+        return r;
+    }
+    block.left_out = false, block.refused = false;
+    block.tolerance = block.previous_tolerance = 0;
+    for (uint32_t e = block.first_edge; e < block.first_edge + block.edges; ++e) mem_.samples.first[e] = 0, mem_.samples.count[e] = 0;
+    for (uint32_t f = block.first_face; f < block.first_face + block.faces; ++f) {
+        mem_.faces[f] = {0, 0, 0, 0, 0, {0, 0, 0}, 0, FaceState::Pending, false};
+    }
+    const uint32_t parts = index_.blocks()[b].part_count;
+    --left_out_.blocks, left_out_.parts -= parts, left_out_.faces -= block.faces, left_out_.edges -= block.edges;
+    totals_.faces += block.faces;
+    ++moves_;
+    return {};
+}
+
+void Scene::drop_block(uint32_t b) {
+    Block& block = blocks_[b];
+    if (!blocked_ || block.left_out) return;
+    Totals& t = totals_;
+    const uint32_t first = block.first_face, end = block.first_face + block.faces;
+    for (uint32_t f = first; f < end; ++f) { // (a done face's mesh garbage until compact())
+        FaceInfo& info = mem_.faces[f];
+        if (info.state == FaceState::Done) t.vertices -= info.vertex_count, t.triangles -= info.triangle_count;
+        if (info.state == FaceState::Deferred) --t.deferred;
+        if (info.state == FaceState::Failed) --t.failed;
+        info = {0, 0, 0, 0, 0, {0, 0, 0}, 0, FaceState::Absent, false};
+    }
+    t.mesh_bytes = t.vertices * uint32_t(sizeof(DrawVertex)) + t.triangles * 3 * uint32_t(sizeof(uint16_t));
+    uint32_t kept = 0;
+    for (uint32_t k = 0; k < t.done; ++k) {
+        const uint32_t f = mem_.done_order[k];
+        if (f < first || f >= end) mem_.done_order[kept++] = f;
+    }
+    t.done = kept;
+    for (uint32_t e = block.first_edge; e < block.first_edge + block.edges; ++e) mem_.samples.count[e] = 0; // (garbage in the pool)
+    block.left_out = true, block.pack = {}, block.data = nullptr, block.tolerance = block.previous_tolerance = 0;
+    const uint32_t parts = index_.blocks()[b].part_count;
+    ++left_out_.blocks, left_out_.parts += parts, left_out_.faces += block.faces, left_out_.edges += block.edges;
+    totals_.faces -= block.faces;
+    ++moves_;
 }
 
 } // namespace facet::module

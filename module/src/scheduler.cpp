@@ -81,6 +81,11 @@ Result Scheduler::sample_edges(uint32_t end, uint32_t units) {
                 sampler_.start(scene_.block(refine_block_).pack, options_at(refine_tolerance_), view_, next_edge_);
             } else {
                 Block& b = scene_.block_of_edge(next_edge_);
+                if (b.left_out) { // (its edges none: a block the view brings in is sampled then)
+                    for (uint32_t e = b.first_edge; e < b.first_edge + b.edges; ++e) s.first[e] = 0, s.count[e] = 0;
+                    next_edge_ = b.first_edge + b.edges;
+                    continue;
+                }
                 view_ = scene_.samples_of(b);
                 set_level(b);
                 sampler_.start(b.pack, options(b), view_, next_edge_ - b.first_edge);
@@ -164,7 +169,7 @@ void Scheduler::revisit() {
 bool Scheduler::next_face() {
     for (uint32_t checked = 0; face_ < face_end_; ++face_) {
         const FaceState state = scene_.face(face_).state;
-        if (state == FaceState::Failed || (state == FaceState::Done && !refining())) continue;
+        if (state == FaceState::Failed || state == FaceState::Absent || (state == FaceState::Done && !refining())) continue;
         if (state == FaceState::Pending || refining()) scene_.bound_by_edges(face_); // (a refined block's by its new samples)
         if (filter_(face_)) return true;
         scene_.evict(face_); // (a refined block's face the view no longer wants: its old mesh would not meet the new ones)
@@ -202,6 +207,7 @@ void Scheduler::finish_face(const Result& done) {
             r = Result::fail(Status::Full, "no room for the face's finer mesh: kept at its previous level", {"face", face_});
         } else if (later) {
             r = Result::fail(Status::Full, "no room in the mesh: left to its edges until there is", {"face", face_});
+            scene_.defer(face_); // (a face of a block just brought in was pending)
         } else {
             scene_.evict(face_);
             scene_.mark_failed(face_);
@@ -248,6 +254,14 @@ bool Scheduler::evict_unwanted() {
     return evicted > 0;
 }
 
+bool Scheduler::make_sample_room(uint32_t need) {
+    if (scene_.samples_room() >= need) return true;
+    if (stage_ != Stage::Idle) return false;
+    std::span<uint32_t> words(reinterpret_cast<uint32_t*>(mem_.scratch.data()), mem_.scratch.size() / 4);
+    (void)scene_.compact_samples(words);
+    return scene_.samples_room() >= need;
+}
+
 bool Scheduler::begin_refine(uint32_t b, float tolerance) {
     Block& block = scene_.block(b);
     if (stage_ != Stage::Idle || !started_) return false;
@@ -265,7 +279,9 @@ bool Scheduler::begin_refine(uint32_t b, float tolerance) {
     // goes as the square of their steps), and a fifth more for the angle's limit.
     uint32_t now = 0;
     for (uint32_t e = block.first_edge; e < block.first_edge + edges; ++e) now += s.count[e];
-    const uint32_t need = uint32_t(float(now) * 1.2f * std::sqrt(block.tolerance / tolerance)) + 2 * edges;
+    // (A block just brought in has none: room for six an edge, what load plans for a block.)
+    const uint32_t need = block.tolerance > 0 ? uint32_t(float(now) * 1.2f * std::sqrt(block.tolerance / tolerance)) + 2 * edges
+                                              : kNewBlockSamplesPerEdge * edges + 2;
     std::span<uint32_t> words(reinterpret_cast<uint32_t*>(mem_.scratch.data()), mem_.scratch.size() / 4);
     if (scene_.samples_room() < need) scene_.compact_samples(words);
     // The mesh's room, counting what compaction would give back: the block's faces grow about

@@ -59,7 +59,12 @@ public:
     // again, each replacing its mesh, or left to their edges where the view no longer wants
     // them. Each part stays at one level, as in a pass, but for the moments its faces are
     // swapped. False when it cannot start (busy; no room to try); Block::refused then says so.
+    // A block brought in (Scene::take_block; no tolerance yet) is begun alike: sampled, then
+    // its faces tessellated or deferred.
     bool begin_refine(uint32_t b, float tolerance);
+    static constexpr uint32_t kNewBlockSamplesPerEdge = 6;
+    // Whether the samples' pool has room for `need` more (compacted first if short; not while busy).
+    bool make_sample_room(uint32_t need);
     bool refining() const { return refine_block_ != kNoBlock; }
     uint32_t refined() const { return refined_; } // refinements finished
     void stop() { stage_ = Stage::Idle, started_ = false; }

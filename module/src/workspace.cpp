@@ -191,6 +191,8 @@ Result Core::place_pack(const void* file, uint32_t file_size, uint32_t need, voi
 module::BlockCut Core::cut_blocks(const void* file, uint32_t file_bytes, uint32_t file_size, void* memory, uint32_t memory_bytes) const {
     geom::PackIndex index;
     if ((reinterpret_cast<uintptr_t>(file) & 3) || !index.open(file, file_bytes).ok()) return {}; // (load() says why)
+    uint32_t all_faces, all_edges;
+    module::kept_counts(index, {}, all_faces, all_edges);
     auto fits = [&](const module::BlockCut& cut) {
         void* mem = memory;
         uint32_t mem_bytes = memory_bytes;
@@ -198,11 +200,14 @@ module::BlockCut Core::cut_blocks(const void* file, uint32_t file_bytes, uint32_
         const uint32_t need = module::pack_memory_need(index, cut);
         if (!place_pack(file, file_size, need, mem, mem_bytes, model_end).ok()) return false;
         if (memory && need > memory_bytes) return false;
+        // Every face and edge has its place in the arrays (a block left out may come in later);
+        // the room for samples and meshes is the kept blocks'.
         uint32_t faces, edges;
         module::kept_counts(index, cut, faces, edges);
         const size_t room = model_end > model_start_ ? size_t(model_end - model_start_) : 0;
-        return module::plan_model(faces, edges, room, config_.capacity).fits &&
-               (cut.above <= 0 || room >= module::model_room_bytes(faces, edges, kSamplesPerEdge, kVerticesPerFace));
+        const size_t numbered = module::model_bytes({all_faces, all_edges, 0, 0, 0}) - module::model_bytes({faces, edges, 0, 0, 0});
+        return module::plan_model(all_faces, all_edges, room, config_.capacity, edges).fits &&
+               (cut.above <= 0 || room >= numbered + module::model_room_bytes(faces, edges, kSamplesPerEdge, kVerticesPerFace));
     };
     if (fits({})) return {}; // the whole model
     float lo = 0, hi = 0; // lo: too many kept; hi: fits
@@ -221,9 +226,9 @@ module::BlockCut Core::cut_blocks(const void* file, uint32_t file_bytes, uint32_
     return none ? module::BlockCut{hi, lo, none - 1} : module::BlockCut{hi, hi, 0};
 }
 
-Result Core::plan(uint32_t faces, uint32_t edges, uint8_t* end) {
+Result Core::plan(uint32_t faces, uint32_t edges, uint32_t sampled_edges, uint8_t* end) {
     const size_t room = end > model_start_ ? size_t(end - model_start_) : 0;
-    const module::ModelPlan p = module::plan_model(faces, edges, room, config_.capacity);
+    const module::ModelPlan p = module::plan_model(faces, edges, room, config_.capacity, sampled_edges);
     if (!p.fits) {
         return Result::fail(Status::Full, "the workspace is too small for this model's faces, edges and their samples",
                             {"bytes needed", uint32_t(p.need > room ? p.need - room : 0)});

@@ -122,7 +122,8 @@ constexpr size_t model_bytes(const ModelCapacity& m) {
 // 29,502 samples, 41,068 vertices, 35,268 triangles; finer detail takes more of each). Counts
 // the application fixed (Capacity's nonzero ones) are taken as they are, and the shares are of
 // the room after them. `need`: the room the model needs at least (planned samples: two an
-// edge, its wireframe at the coarsest); fits: room >= need.
+// edge of the `sampled` edges, those of the blocks opened: its wireframe at the coarsest);
+// fits: room >= need.
 struct ModelPlan {
     ModelCapacity capacity;
     size_t need = 0;
@@ -132,7 +133,8 @@ constexpr size_t kSampleBytes = sizeof(float) + sizeof(geom::Vec3) + 3 * sizeof(
 constexpr uint32_t kSampleShare = 30, kVertexShare = 45, kTriangleShare = 25; // percent of the room left
 // The room left whose sample share holds `samples`.
 constexpr size_t sample_share_room(size_t samples) { return (samples * kSampleBytes * 100 + kSampleShare - 1) / kSampleShare; }
-constexpr ModelPlan plan_model(uint32_t faces, uint32_t edges, size_t room, const Capacity& given) {
+constexpr ModelPlan plan_model(uint32_t faces, uint32_t edges, size_t room, const Capacity& given, uint32_t sampled = ~0u) {
+    if (sampled > edges) sampled = edges;
     ModelPlan p;
     const ModelCapacity fixed_counts{given.faces ? given.faces : faces, given.edges ? given.edges : edges, given.samples,
                                      given.mesh_vertices, given.mesh_triangles};
@@ -143,7 +145,7 @@ constexpr ModelPlan plan_model(uint32_t faces, uint32_t edges, size_t room, cons
     if (!given.samples) m.samples = uint32_t(room_left * kSampleShare / 100 / kSampleBytes);
     if (!given.mesh_vertices) m.mesh_vertices = uint32_t(room_left * kVertexShare / 100 / sizeof(DrawVertex));
     if (!given.mesh_triangles) m.mesh_triangles = uint32_t(room_left * kTriangleShare / 100 / (3 * sizeof(uint16_t)));
-    p.need = fixed + (given.samples ? 0 : sample_share_room(2 * size_t(edges) + 2));
+    p.need = fixed + (given.samples ? 0 : sample_share_room(2 * size_t(sampled) + 2));
     p.fits = room >= p.need && model_bytes(m) <= room;
     return p;
 }

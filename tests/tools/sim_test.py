@@ -9,6 +9,8 @@ three ways on the sample part, at both screen sizes:
     events a user's hands would make and goes through the simulator's event handling;
   * headless in bands of 16 lines (partial rendering, one band-sized depth buffer).
 
+And `--ram 4` (the module in 4 MiB, the pack at its end) gives the same pictures for the part.
+
 Every screenshot must be pixel-identical across the three (bands: every full redraw; the
 "half" screenshot is taken at a different moment when bands refresh progress every sixteenth
 of the faces), the picks must name the same faces, and the session must change the picture.
@@ -106,6 +108,25 @@ def main():
         else:
             print(f'facet-sim {size}: {len(SHOTS)} screenshots identical headless, in an SDL window (dummy driver) '
                   f'and in bands of 16 lines; picks {picks["headless"]}')
+    # --ram: the module in that much RAM, the pack decoded at its end (as the boards do): the
+    # sample part fits 4 MiB, so the same pictures; out of range, a usage error.
+    ram_out = os.path.join(args.work, 'ram')
+    os.makedirs(ram_out, exist_ok=True)
+    r = subprocess.run([args.sim, '--pack', fpk, '--out', ram_out, '--size', '640x480', '--no-clock', '--headless', '--ram', '4',
+                        '--send', 'keys dd!shot turned\\n'], capture_output=True, text=True, timeout=300)
+    ref = os.path.join(args.work, '640x480-headless', 'turned.f565')
+    got = os.path.join(ram_out, 'turned.f565')
+    n, msg = img.compare(ref, got) if r.returncode == 0 and os.path.exists(got) else (1, f'exit {r.returncode}: {r.stderr.strip()[-200:]}')
+    if n:
+        failed = True
+        print(f'FAIL facet-sim --ram 4: {msg}')
+    for bad in ('0', '5000', 'x'):
+        r = subprocess.run([args.sim, '--pack', fpk, '--ram', bad, '--headless'], capture_output=True, text=True, timeout=60)
+        if r.returncode != 2 or '--ram' not in r.stderr:
+            failed = True
+            print(f'FAIL facet-sim --ram {bad}: exit {r.returncode}, {r.stderr.strip()[-200:]} (a usage error, exit 2)')
+    if not failed:
+        print('facet-sim --ram 4: the same pictures; --ram 0, 5000 and x refused (exit 2)')
     return 1 if failed else 0
 
 

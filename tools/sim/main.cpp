@@ -3,8 +3,11 @@
 // The same module code the boards run, so the same input gives the same pixels.
 //
 //   facet-sim --pack MODEL.fpk [--size WxH] [--bands N] [--out DIR] [--headless] [--quiet]
-//             [--scale K] [--send ENTRY]...
+//             [--scale K] [--ram MIB] [--send ENTRY]...
 //
+// --ram MIB: the module gets that much RAM, the pack decoded at its end, as on a board (a model
+// larger than it opens in part, its other parts as boxes until the view brings them in);
+// without it, what the model asks for.
 // --send ENTRY: a scripted session (sim/session.h lists the entries), played one entry per
 // idle moment like tools/qemu/run.py does; the program ends when the entries run out. In the
 // window, entries arrive as SDL events (the path a user's input takes); headless, they go to
@@ -28,7 +31,7 @@ constexpr uint32_t kStepUs = 8000;
 
 int usage() {
     std::fprintf(stderr, "usage: facet-sim --pack MODEL.fpk [--size WxH] [--bands N] [--out DIR] [--headless] [--no-clock] [--verbose] [--quiet] "
-                         "[--scale K] [--send ENTRY]...\n");
+                         "[--scale K] [--ram MIB] [--send ENTRY]...\n");
     return 2;
 }
 
@@ -283,6 +286,13 @@ int main(int argc, char** argv) {
             script.push_back(argv[++i]);
         } else if (a == "--scale" && i + 1 < argc) {
             scale = std::atoi(argv[++i]);
+        } else if (a == "--ram" && i + 1 < argc) {
+            const int mib = std::atoi(argv[++i]);
+            if (mib < 1 || mib > 1024) {
+                std::fprintf(stderr, "facet-sim: --ram must be 1 to 1024 (MiB)\n");
+                return 2;
+            }
+            opt.ram_bytes = size_t(mib) << 20;
         } else if (a == "--headless") {
             headless = true;
         } else if (a == "--verbose") {

@@ -149,6 +149,7 @@ bool Session::open(const Options& o, std::string& error) {
     if (facet::model_needs(file_.data(), uint32_t(bytes.size()), needs).ok() && needs.workspace_bytes > ws_bytes) {
         ws_bytes = (needs.workspace_bytes + 7) / 8 * 8;
     }
+    if (opt_.ram_bytes) ws_bytes = opt_.ram_bytes / 8 * 8;
     workspace_storage_.assign(ws_bytes + 8, 0);
     void* ws = workspace_storage_.data() + ((8 - reinterpret_cast<uintptr_t>(workspace_storage_.data()) % 8) % 8);
     facet::Result why;
@@ -158,9 +159,9 @@ bool Session::open(const Options& o, std::string& error) {
         error = std::string("the viewer: ") + text;
         return false;
     }
-    const uint32_t need = facet::pack_memory_bytes(file_.data(), uint32_t(bytes.size()));
-    memory_.assign(need / 4 + 1, 0);
-    const facet::Result r = viewer_->load(file_.data(), uint32_t(bytes.size()), memory_.data(), uint32_t(memory_.size() * 4));
+    const uint32_t need = opt_.ram_bytes ? 0 : facet::pack_memory_bytes(file_.data(), uint32_t(bytes.size()));
+    memory_.assign(need ? need / 4 + 1 : 0, 0);
+    const facet::Result r = viewer_->load(file_.data(), uint32_t(bytes.size()), need ? memory_.data() : nullptr, uint32_t(memory_.size() * 4));
     if (!r.ok()) {
         facet::describe(r, text, sizeof text);
         error = o.pack + ": " + text;

@@ -37,6 +37,9 @@ struct Options {
     bool quiet = false;
     bool verbose = false; // every view change too (@view)
     bool clock = true; // false: no clock (each step one piece of work; no frame times on the status bar)
+    // A device's RAM for the module (bytes; 0: what the model asks for): the workspace, with the
+    // pack decoded at its end, as the boards hand it (a model larger opens in part).
+    size_t ram_bytes = 0;
 };
 
 class Session {

@@ -1,0 +1,245 @@
+// Blocks brought in as the view nears them (issue 25): a model larger than the memory opens
+// with its largest blocks and the rest as boxes; zooming into a part left out brings its block
+// in (decoded into the pack memory in place of blocks the view no longer shows), watertight at
+// the view's level, and zooming into another swaps again, the decoded blocks never overlapping
+// nor leaving the workspace.
+#include "../geom/shapes.h"
+#include "app.h"
+#include "loader.h"
+#include "pack_blocks.h"
+#include "watertight.h"
+
+#include <algorithm>
+#include <vector>
+
+using namespace facet;
+using namespace facet::geom;
+using namespace facet::test;
+
+namespace {
+
+constexpr Rgb565 kBoxColour = rgb565(96, 104, 128); // (painter.cpp)
+
+// Three copies of the four shapes, a part a block (LZMA).
+struct Model {
+    std::vector<uint64_t> file;
+    uint32_t bytes = 0;
+};
+Model twelve_parts() {
+    const Bytes shapes[] = {plate_with_holes(), sphere(), torus(), trimmed_bspline()};
+    std::vector<Pack> packs(12);
+    for (uint32_t k = 0; k < 12; ++k) EXPECT_TRUE(packs[k].open(shapes[k % 4].data(), uint32_t(shapes[k % 4].size())).ok());
+    Pack whole_pack;
+    const Bytes combined = combine_packs(packs, 150.0f);
+    EXPECT_TRUE(whole_pack.open(combined.data(), uint32_t(combined.size())).ok());
+    Bytes file;
+    std::string error;
+    EXPECT_TRUE(make_blocked(whole_pack, {}, {1, BlockStore::Lzma}, file, error)) << error;
+    Model m;
+    m.file.assign(file.size() / 8 + 1, 0);
+    std::memcpy(m.file.data(), file.data(), file.size());
+    m.bytes = uint32_t(file.size());
+    return m;
+}
+
+// Part s's box centre on the screen (pixels) in its first instance; false when off it.
+bool on_screen(const App& app, uint32_t s, int32_t& x, int32_t& y) {
+    const Core& core = *static_cast<const Core*>(app.v);
+    const module::Scene& scene = core.scene();
+    int32_t lo[3], hi[3];
+    if (!scene.part_box(s, lo, hi)) return false;
+    for (uint32_t i = 0; i < scene.instances().size(); ++i) {
+        if (scene.instances()[i].shell != s) continue;
+        const module::Transform t = core.camera().transform(scene, i, app.w, app.h);
+        const int32_t centre[3] = {int32_t((int64_t(lo[0]) + hi[0]) / 2), int32_t((int64_t(lo[1]) + hi[1]) / 2),
+                                   int32_t((int64_t(lo[2]) + hi[2]) / 2)};
+        module::Projected p;
+        t.project(centre, p);
+        if (p.out) return false;
+        x = render::subpixel::pixel_of(p.s.x), y = render::subpixel::pixel_of(p.s.y);
+        return true;
+    }
+    return false;
+}
+
+// The view brought onto part s and zoomed in (a drag with the second button, the wheel) until
+// its block is in and its faces done, or the tries run out.
+bool zoom_into(App& app, uint32_t s) {
+    const Core& core = *static_cast<const Core*>(app.v);
+    const module::Scene& scene = core.scene();
+    int in_steps = 0;
+    float gain = 1; // pixels the part moves for a pixel dragged (more as the view nears it)
+    for (int k = 0; k < 60; ++k) {
+        int32_t x = 0, y = 0;
+        if (!on_screen(app, s, x, y)) return false;
+        const int32_t ox = app.w / 2 - x, oy = app.h / 2 - y;
+        const int32_t dx = std::clamp<int32_t>(int32_t(float(ox) / gain), -40, 40), dy = std::clamp<int32_t>(int32_t(float(oy) / gain), -40, 40);
+        const bool centred = std::abs(ox) < 8 && std::abs(oy) < 8;
+        if (!centred) {
+            app.v->pointer(0, 0, 2);
+            app.v->pointer(int16_t(dx), int16_t(dy), 2);
+            app.v->pointer(0, 0, 0);
+        } else {
+            app.v->wheel(1);
+        }
+        app.run();
+        // In, and five zoom steps nearer (faces the full mesh left to their edges come in as
+        // the view leaves the others).
+        if (!scene.part_left_out(s) && whole(scene, s) && centred && ++in_steps > 5) return true;
+        int32_t nx = 0, ny = 0;
+        if ((dx || dy) && on_screen(app, s, nx, ny) && std::abs(dx) + std::abs(dy) > 0) {
+            const float moved = float(std::abs(nx - x) + std::abs(ny - y)), dragged = float(std::abs(dx) + std::abs(dy));
+            if (moved > 0) gain = moved / dragged;
+        }
+    }
+    return false;
+}
+
+// The decoded blocks held: each inside the workspace, none overlapping another.
+void expect_blocks_apart(const App& app, const PackIndex& index) {
+    const module::Scene& scene = static_cast<const Core*>(app.v)->scene();
+    const auto* lo = reinterpret_cast<const uint8_t*>(app.workspace.data());
+    const auto* hi = lo + app.workspace.size() * 8;
+    std::vector<std::pair<const uint8_t*, const uint8_t*>> held;
+    for (uint32_t b = 0; b < scene.block_count(); ++b) {
+        const module::Block& block = scene.block(b);
+        if (block.left_out) {
+            EXPECT_EQ(block.pack.faces().size(), 0u) << "block " << b;
+            continue;
+        }
+        ASSERT_NE(block.data, nullptr);
+        EXPECT_GE(block.data, lo) << "block " << b;
+        const uint32_t bytes = index.blocks()[b].pack_bytes;
+        EXPECT_LE(block.data + bytes, hi) << "block " << b;
+        held.push_back({block.data, block.data + bytes});
+    }
+    std::sort(held.begin(), held.end());
+    for (size_t k = 1; k < held.size(); ++k) EXPECT_LE(held[k - 1].second, held[k].first) << "decoded blocks overlap";
+}
+
+void expect_counts(const App& app) {
+    const Stats s = app.v->stats();
+    const module::Scene& scene = static_cast<const Core*>(app.v)->scene();
+    EXPECT_EQ(s.done + s.deferred + s.failed, s.faces);
+    EXPECT_EQ(s.faces + scene.left_out().faces, scene.face_count());
+    for (uint32_t p = 0; p < scene.part_count(); ++p) {
+        if (!scene.part_left_out(p) && whole(scene, p)) {
+            EXPECT_EQ(open_sides(scene, p), 0u) << "part " << p;
+        }
+    }
+}
+
+} // namespace
+
+TEST(Swap, ZoomingIntoAPartLeftOutBringsItsBlockInInPlaceOfWhatTheViewLeaves) {
+    Model m = twelve_parts();
+    ModelNeeds needs;
+    ASSERT_TRUE(model_needs(m.file.data(), m.bytes, needs).ok());
+    PackIndex index;
+    ASSERT_TRUE(index.open(m.file.data(), m.bytes).ok());
+    // The largest workspace under the whole model's that leaves at least four parts out.
+    const size_t base = workspace_bytes();
+    size_t room = needs.least_workspace_bytes + needs.pack_memory_bytes - base;
+    App app;
+    for (; room > 4096; room = room * 31 / 32) {
+        app = App{};
+        app.w = 320, app.h = 240;
+        app.workspace_size = base + room;
+        ASSERT_TRUE(app.create().ok());
+        const Result r = app.v->load(m.file.data(), m.bytes);
+        ASSERT_TRUE(r.ok()) << text(r);
+        const uint32_t boxed = app.last(Event::Kind::Loaded)->loaded.boxed_parts;
+        if (boxed >= 4 && boxed < 12) break;
+    }
+    ASSERT_GT(room, 4096u);
+    app.run();
+    const Core& core = *static_cast<const Core*>(app.v);
+    const module::Scene& scene = core.scene();
+    expect_blocks_apart(app, index);
+    expect_counts(app);
+    std::vector<uint32_t> left;
+    for (uint32_t p = 0; p < scene.part_count(); ++p)
+        if (scene.part_left_out(p)) left.push_back(p);
+    ASSERT_GE(left.size(), 2u);
+
+    // Into the first part left out: its block comes in, others go out to make room.
+    const uint32_t first = left[0];
+    ASSERT_TRUE(zoom_into(app, first)) << "part " << first << " brought in";
+    EXPECT_GT(scene.left_out().parts, 0u) << "room made by leaving others out";
+    EXPECT_EQ(app.count(Event::Kind::PassFailed), 0);
+    expect_blocks_apart(app, index);
+    expect_counts(app);
+    size_t shaded = 0; // pixels neither the background (a row's colour at its left end) nor a box
+    const std::vector<Rgb565> screen = app.screen();
+    for (size_t i = 0; i < screen.size(); ++i) shaded += screen[i] != screen[i - i % app.w] && screen[i] != kBoxColour;
+    EXPECT_GT(shaded, size_t(app.w) * app.h / 8) << "the part drawn shaded, filling the view";
+
+    // Back out and into another: swapped again.
+    app.v->act(Action::Fit);
+    app.run();
+    uint32_t second = ~0u;
+    for (uint32_t p : left)
+        if (p != first && scene.part_left_out(p)) second = p;
+    if (second == ~0u) {
+        for (uint32_t p = 0; p < scene.part_count(); ++p)
+            if (scene.part_left_out(p)) second = p;
+    }
+    ASSERT_NE(second, ~0u);
+    ASSERT_TRUE(zoom_into(app, second)) << "part " << second << " brought in";
+    EXPECT_EQ(app.count(Event::Kind::PassFailed), 0);
+    expect_blocks_apart(app, index);
+    expect_counts(app);
+    // And back to the whole model: every part held or a box, the counts whole.
+    app.v->act(Action::Fit);
+    app.run();
+    expect_blocks_apart(app, index);
+    expect_counts(app);
+}
+
+// A block left out whose bytes are corrupt is found so only when the view brings it in: said by
+// a PassFailed event naming it, drawn as its box, and the other blocks still come in.
+TEST(Swap, ACorruptBlockIsReportedWhenTheViewBringsItInAndTheOthersStillCome) {
+    Model m = twelve_parts();
+    PackIndex index;
+    ASSERT_TRUE(index.open(m.file.data(), m.bytes).ok());
+    ModelNeeds needs;
+    ASSERT_TRUE(model_needs(m.file.data(), m.bytes, needs).ok());
+    const size_t base = workspace_bytes();
+    size_t room = needs.least_workspace_bytes + needs.pack_memory_bytes - base;
+    App app;
+    for (; room > 4096; room = room * 31 / 32) {
+        app = App{};
+        app.w = 320, app.h = 240;
+        app.workspace_size = base + room;
+        ASSERT_TRUE(app.create().ok());
+        ASSERT_TRUE(app.v->load(m.file.data(), m.bytes).ok());
+        const uint32_t boxed = app.last(Event::Kind::Loaded)->loaded.boxed_parts;
+        if (boxed >= 4 && boxed < 12) break;
+    }
+    ASSERT_GT(room, 4096u);
+    app.run();
+    const module::Scene& scene = static_cast<const Core*>(app.v)->scene();
+    std::vector<uint32_t> left;
+    for (uint32_t p = 0; p < scene.part_count(); ++p)
+        if (scene.part_left_out(p)) left.push_back(p);
+    ASSERT_GE(left.size(), 2u);
+    // The first one's compressed bytes garbled past its head (the file stays where it was loaded).
+    const uint32_t bad = scene.part(left[0]).block;
+    const auto file = index.block_file(bad);
+    auto* bytes = const_cast<uint8_t*>(file.data());
+    for (size_t k = 24; k < file.size(); k += 3) bytes[k] ^= 0x5A;
+    EXPECT_FALSE(zoom_into(app, left[0]));
+    bool said = false;
+    for (const Event& e : app.events) {
+        if (e.kind != Event::Kind::PassFailed) continue;
+        said = said || text(e.why).find("block " + std::to_string(bad)) != std::string::npos;
+    }
+    EXPECT_TRUE(said) << "a PassFailed event names the corrupt block";
+    EXPECT_TRUE(scene.part_left_out(left[0])) << "still a box";
+    expect_counts(app);
+    app.v->act(Action::Fit);
+    app.run();
+    ASSERT_TRUE(zoom_into(app, left[1])) << "another part left out still comes in";
+    expect_blocks_apart(app, index);
+    expect_counts(app);
+}
