@@ -113,6 +113,9 @@ private:
     // Each block's tolerance in a pass: Config::screen_error_px at its nearest point (detail.cpp).
     static constexpr float kCoarsest = 4.0f;
     static float block_tolerance(void* self, uint32_t block, float pass_tolerance);
+    // The blocks a pass or a sweep takes, largest on the screen first (detail.cpp).
+    static uint32_t block_order(void* self);
+    uint32_t sort_blocks(uint32_t& head, uint32_t count);
     // The tolerance the view asks of block b (mm): between the finer of pass_tolerance / finest
     // and the block's own share of it (its size over the model's) and kCoarsest times it;
     // on_screen (if given): whether its box shows.

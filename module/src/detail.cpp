@@ -166,6 +166,40 @@ bool Core::refine_for_view() {
     }
 }
 
+// Work in screen order: a pass or a sweep takes the blocks largest on the screen first (their
+// boxes' spheres; off the screen last), so what the view shows large is shaded first. A merge
+// sort of the chain (Block::next), stable: equal ones keep the pack's order.
+uint32_t Core::block_order(void* self) {
+    Core& c = *static_cast<Core*>(self);
+    module::Scene& scene = c.scene_;
+    const uint32_t n = scene.block_count();
+    for (uint32_t b = 0; b < n; ++b) {
+        module::Block& block = scene.block(b);
+        block.pixels = block.left_out ? 0 : c.block_pixels(b);
+        block.next = b + 1 < n ? b + 1 : kNoBlock;
+    }
+    uint32_t head = n ? 0 : kNoBlock;
+    return n ? c.sort_blocks(head, n) : kNoBlock;
+}
+
+// The first `count` blocks of the chain from `head` sorted (largest first); head moves past them.
+uint32_t Core::sort_blocks(uint32_t& head, uint32_t count) {
+    if (count == 1) {
+        const uint32_t one = head;
+        head = scene_.block(one).next;
+        scene_.block(one).next = kNoBlock;
+        return one;
+    }
+    uint32_t a = sort_blocks(head, count / 2), b = sort_blocks(head, count - count / 2);
+    uint32_t first = kNoBlock, *tail = &first;
+    while (a != kNoBlock && b != kNoBlock) {
+        uint32_t& take = scene_.block(b).pixels > scene_.block(a).pixels ? b : a;
+        *tail = take, tail = &scene_.block(take).next, take = scene_.block(take).next;
+    }
+    *tail = a != kNoBlock ? a : b;
+    return first;
+}
+
 bool Core::judge_with_view() {
     const bool section = camera_.section().on;
     if (detail_radius_ == scene_.radius() && section == detail_section_ && module::same_view(camera_.view(), detail_view_)) return false;

@@ -66,6 +66,7 @@ struct Block {
     bool leaving = false; // chosen to make room for a block the view brings in (swap.cpp)
     bool broken = false;  // found corrupt as it was brought in: left out for good
     float pixels = 0;     // its box's size on the screen when last judged (swap.cpp)
+    uint32_t next = ~0u;  // the next block a pass takes (Scheduler's BlockOrder)
     uint32_t faces = 0, edges = 0;
 };
 

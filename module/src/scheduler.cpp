@@ -146,7 +146,7 @@ void Scheduler::sample(uint32_t units) {
     }
     scene_.reset_mesh(pass_ > 0);
     stage_ = scene_.face_count() ? Stage::Faces : Stage::Idle;
-    face_end_ = scene_.face_count();
+    all_blocks();
     Event e{};
     e.kind = Event::Kind::Sampled;
     e.pass = {pass_, opt_.tolerance, s.used};
@@ -157,7 +157,8 @@ void Scheduler::revisit() {
     if (!started_ || stage_ == Stage::Sampling) return; // the pass's faces meet the view as it is then
     if (stage_ == Stage::Idle) {
         if (scene_.totals().deferred == 0) return;
-        stage_ = Stage::Faces, sweep_ = true, face_ = 0, face_end_ = scene_.face_count(), in_face_ = false;
+        stage_ = Stage::Faces, sweep_ = true, in_face_ = false;
+        all_blocks();
         return;
     }
     revisit_ = true;
@@ -166,8 +167,30 @@ void Scheduler::revisit() {
 // Faces already in (a sweep) are passed; a face the view does not want now is bounded by its
 // edges and deferred. True at a face to tessellate; false when this piece's checks are spent
 // or the faces are done.
+void Scheduler::all_blocks() {
+    face_ = face_end_ = 0, next_block_ = kNoBlock, ordered_ = false;
+}
+
+bool Scheduler::next_block() {
+    if (!ordered_) { // (once the pass or sweep reaches its first face: the view framed by then)
+        ordered_ = true;
+        next_block_ = order_.fn ? order_.fn(order_.user) : 0;
+        if (!order_.fn) {
+            for (uint32_t b = 0; b < scene_.block_count(); ++b) scene_.block(b).next = b + 1 < scene_.block_count() ? b + 1 : kNoBlock;
+        }
+    }
+    while (next_block_ != kNoBlock) {
+        const Block& b = scene_.block(next_block_);
+        next_block_ = b.next;
+        if (b.left_out || b.faces == 0) continue;
+        face_ = b.first_face, face_end_ = b.first_face + b.faces;
+        return true;
+    }
+    return false;
+}
+
 bool Scheduler::next_face() {
-    for (uint32_t checked = 0; face_ < face_end_; ++face_) {
+    for (uint32_t checked = 0; face_ < face_end_ || (!refining() && next_block()); ++face_) {
         const FaceState state = scene_.face(face_).state;
         if (state == FaceState::Failed || state == FaceState::Absent || (state == FaceState::Done && !refining())) continue;
         if (state == FaceState::Pending || refining()) scene_.bound_by_edges(face_); // (a refined block's by its new samples)
@@ -223,7 +246,7 @@ void Scheduler::finish_face(const Result& done) {
     p.progress = {t.done, t.failed, t.faces, t.triangles};
     emit_(p);
     in_face_ = false;
-    if (++face_ < face_end_) return;
+    if (++face_ < face_end_ || (!refining() && next_block())) return;
     end_faces();
 }
 
@@ -235,7 +258,7 @@ void Scheduler::end_faces() {
     if (was_refine) refine_block_ = kNoBlock, ++refined_;
     stage_ = Stage::Idle, sweep_ = false;
     // A sweep follows a view change, and a refinement (what it freed may bring faces in).
-    if ((revisit_ || was_refine) && t.deferred > 0) stage_ = Stage::Faces, sweep_ = true, face_ = 0, face_end_ = scene_.face_count();
+    if ((revisit_ || was_refine) && t.deferred > 0) stage_ = Stage::Faces, sweep_ = true, all_blocks();
     revisit_ = false;
     if (was_sweep) return;
     Event e{};

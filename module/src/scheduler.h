@@ -31,6 +31,13 @@ struct BlockTolerance {
     void* user = nullptr;
 };
 
+// The order a pass or a sweep takes the blocks in (what shows largest first): the first block,
+// the others chained by Block::next (kNoBlock ends it). None given: the pack's order.
+struct BlockOrder {
+    uint32_t (*fn)(void* user) = nullptr;
+    void* user = nullptr;
+};
+
 class Scheduler {
 public:
     struct Memory {
@@ -47,6 +54,7 @@ public:
     // The faces a pass leaves to their edges (FaceState::Deferred) are those `filter` turns down.
     void set_filter(const FaceFilter& filter) { filter_ = filter; }
     void set_block_tolerance(const BlockTolerance& t) { block_tolerance_ = t; }
+    void set_block_order(const BlockOrder& o) { order_ = o; }
     // The view changed: the deferred faces are looked at again once the pass is over (a sweep:
     // those the view now wants are tessellated and appended), or again from the first.
     void revisit();
@@ -88,6 +96,10 @@ private:
     bool evict_unwanted(); // the meshes of done faces the view does not want now (true: some)
     static constexpr uint32_t kNoBlock = ~0u;
     bool next_face(); // past faces not to tessellate now; false when the piece is spent on them
+    // A pass's or a sweep's faces: every block's, block after block in order_'s order (asked for
+    // when the first face is reached), face_ .. face_end_ the current block's.
+    void all_blocks();
+    bool next_block(); // face_ and face_end_ at the next block in order with faces; false past the last
     void finish_face(const Result& r);
     void end_faces();
     static constexpr uint32_t kChecksPerPiece = 48;
@@ -114,7 +126,10 @@ private:
                                // (refining: with the block's edges' new (first, count) in the scratch)
     geom::EdgeSampler sampler_;
     uint32_t face_ = 0;        // the face being tessellated
-    uint32_t face_end_ = 0;    // past the faces of this pass, sweep or refinement
+    uint32_t face_end_ = 0;    // past the faces of this block (a pass, a sweep) or refinement
+    uint32_t next_block_ = kNoBlock; // the block after this one in order (a pass, a sweep)
+    bool ordered_ = false;     // the order asked for in this pass or sweep
+    BlockOrder order_;
     bool in_face_ = false;
     uint32_t refine_block_ = kNoBlock; // the block being refined
     float refine_tolerance_ = 0;

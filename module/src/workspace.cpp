@@ -152,6 +152,7 @@ Core::Core(const Config& config, Carver& k, uint8_t* end)
     scheduler_.init(c.scheduler);
     scheduler_.set_filter({&Core::wants_face, this});
     scheduler_.set_block_tolerance({&Core::block_tolerance, this});
+    scheduler_.set_block_order({&Core::block_order, this});
     painter_.init(c.painter);
     projected_ = c.projected;
     controls_.set_screen(config.display.width, config.display.height);

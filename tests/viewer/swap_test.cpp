@@ -1,8 +1,8 @@
-// Blocks brought in as the view nears them (issue 25): a model larger than the memory opens
-// with its largest blocks and the rest as boxes; zooming into a part left out brings its block
-// in (decoded into the pack memory in place of blocks the view no longer shows), watertight at
-// the view's level, and zooming into another swaps again, the decoded blocks never overlapping
-// nor leaving the workspace.
+// Blocks and the view (issue 25): a pass takes the blocks largest on the screen first; a model
+// larger than the memory opens with its largest blocks and the rest as boxes, and zooming into a
+// part left out brings its block in (decoded into the pack memory in place of blocks the view
+// no longer shows), watertight at the view's level, and zooming into another swaps again, the
+// decoded blocks never overlapping nor leaving the workspace.
 #include "../geom/shapes.h"
 #include "app.h"
 #include "loader.h"
@@ -10,6 +10,7 @@
 #include "watertight.h"
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 using namespace facet;
@@ -242,4 +243,43 @@ TEST(Swap, ACorruptBlockIsReportedWhenTheViewBringsItInAndTheOthersStillCome) {
     ASSERT_TRUE(zoom_into(app, left[1])) << "another part left out still comes in";
     expect_blocks_apart(app, index);
     expect_counts(app);
+}
+
+// Work in screen order: a pass tessellates the blocks largest on the screen first, so what the
+// view shows large is shaded first (the faces finished, in order). Seen
+// here in a pass of finer detail begun from a view zoomed into the assembly's near end.
+TEST(Swap, APassTakesTheBlocksLargestOnTheScreenFirst) {
+    Model m = twelve_parts();
+    App app;
+    app.w = 320, app.h = 240;
+    ASSERT_TRUE(app.create().ok());
+    ASSERT_TRUE(app.v->load(m.file.data(), m.bytes).ok());
+    app.run();
+    for (int k = 0; k < 3; ++k) app.v->act(Action::ZoomIn);
+    app.run();
+    app.v->act(Action::Finer); // a new pass, the view as it is
+    app.run();
+    const Core& core = *static_cast<const Core*>(app.v);
+    const module::Scene& scene = core.scene();
+    ASSERT_EQ(scene.left_out().blocks, 0u);
+    const module::SphereView view = core.camera().sphere_view(scene, app.w, app.h);
+    auto pixels = [&](uint32_t b) {
+        float lo[3], hi[3], c[3], r2 = 0;
+        scene.block_box(b, lo, hi);
+        for (int k = 0; k < 3; ++k) c[k] = 0.5f * (lo[k] + hi[k]), r2 += 0.25f * (hi[k] - lo[k]) * (hi[k] - lo[k]);
+        return view.pixels(c, std::sqrt(r2));
+    };
+    ASSERT_EQ(app.count(Event::Kind::Tessellated), 2) << "the pass done, no sweep after it";
+    std::vector<uint32_t> order; // blocks as the pass finished their faces (the faces finished, in order)
+    for (uint32_t k = 0; k < scene.totals().done; ++k) {
+        const uint32_t b = scene.block_index(scene.block_of_face(scene.done_face(k)));
+        if (std::find(order.begin(), order.end(), b) == order.end()) order.push_back(b);
+    }
+    ASSERT_GE(order.size(), 4u) << "blocks with faces to tessellate";
+    float smallest = 1e30f, largest = 0;
+    for (uint32_t b : order) smallest = std::min(smallest, pixels(b)), largest = std::max(largest, pixels(b));
+    EXPECT_GT(largest, 1.5f * smallest) << "sizes that differ on the screen";
+    for (size_t k = 1; k < order.size(); ++k) {
+        EXPECT_LE(pixels(order[k]), pixels(order[k - 1])) << "block " << order[k] << " after block " << order[k - 1];
+    }
 }
