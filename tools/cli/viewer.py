@@ -33,6 +33,8 @@ def add(sub):
     p.add_argument('--size', metavar='WxH', help='the screen: 480x272 (the EVKB) or 640x480')
     p.add_argument('--bands', metavar='N', help='draw in bands of N lines')
     p.add_argument('--scale', metavar='K', help='window pixels per screen pixel')
+    p.add_argument('--ram', metavar='MIB', help="the module in that much RAM, as a device (a model larger opens in "
+                   'part; its other parts come in as the view nears them)')
     p.add_argument('--headless', action='store_true', help='no window: screenshots to out/sim')
     p.set_defaults(run=cmd_sim)
 
@@ -98,7 +100,7 @@ def cmd_sim(args, parser):
     build('host', quiet=True)
     fpk = model_pack(model, os.path.join(ROOT, 'out', 'sim'))
     extra = []
-    for opt in ('size', 'bands', 'scale'):
+    for opt in ('size', 'bands', 'scale', 'ram'):
         if getattr(args, opt):
             extra += [f'--{opt}', getattr(args, opt)]
     if args.headless:
