@@ -141,6 +141,7 @@ private:
     // Room for a refinement of block `keep`: every held block off the screen left out (a model
     // read block by block, whose blocks can come back). True when some were.
     bool leave_out_unseen(uint32_t keep);
+    void forget_left_out_picks();
     bool swap_check_ = false;
     struct Swap {
         uint32_t block = kNoBlock; // being decoded

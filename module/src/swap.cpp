@@ -89,6 +89,7 @@ bool Core::swap_in(uint32_t best) {
         scene_.block(best).refused = true;
         return false;
     }
+    if (victims) forget_left_out_picks();
     presenter_.invalidate();
     if (Result r = module::compact_blocks(unpacked_); !r.ok()) return swap_failed(best, r);
     swap_.block = best;
@@ -133,9 +134,23 @@ bool Core::leave_out_unseen(uint32_t keep) {
         ++dropped;
     }
     if (!dropped) return false;
+    forget_left_out_picks();
     if (Result r = module::compact_blocks(unpacked_); !r.ok()) (void)swap_failed(keep, r);
     presenter_.invalidate();
     return true;
+}
+
+// A face picked in a block left out is no longer there to describe or highlight: the
+// selection and the measurement go (as after a tap on nothing).
+void Core::forget_left_out_picks() {
+    uint32_t kept = 0;
+    for (uint32_t i = 0; i < picked_count_; ++i) {
+        if (!scene_.block_of_face(picked_[i].face).left_out) picked_[kept++] = picked_[i];
+    }
+    if (kept == picked_count_) return;
+    picked_count_ = kept;
+    highlight();
+    show_measurement();
 }
 
 // A block that could not come in: said by a PassFailed event naming it, and left out (a box)

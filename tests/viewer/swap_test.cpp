@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 using namespace facet;
@@ -130,30 +131,35 @@ void expect_counts(const App& app) {
     }
 }
 
+// The model in the largest workspace under the whole model's that leaves at least four of its
+// twelve parts out, run until idle; false when none does.
+bool open_in_part(App& app, const Model& m, Interface ui = Interface::Off) {
+    ModelNeeds needs;
+    if (!model_needs(m.file.data(), m.bytes, needs).ok()) return false;
+    const size_t base = workspace_bytes();
+    for (size_t room = needs.least_workspace_bytes + needs.pack_memory_bytes - base; room > 4096; room = room * 31 / 32) {
+        app = App{};
+        app.w = 320, app.h = 240;
+        app.interface = ui;
+        app.workspace_size = base + room;
+        if (!app.create().ok() || !app.v->load(m.file.data(), m.bytes).ok()) return false;
+        const uint32_t boxed = app.last(Event::Kind::Loaded)->loaded.boxed_parts;
+        if (boxed >= 4 && boxed < 12) {
+            app.run();
+            return true;
+        }
+    }
+    return false;
+}
+
 } // namespace
 
 TEST(Swap, ZoomingIntoAPartLeftOutBringsItsBlockInInPlaceOfWhatTheViewLeaves) {
     Model m = twelve_parts();
-    ModelNeeds needs;
-    ASSERT_TRUE(model_needs(m.file.data(), m.bytes, needs).ok());
     PackIndex index;
     ASSERT_TRUE(index.open(m.file.data(), m.bytes).ok());
-    // The largest workspace under the whole model's that leaves at least four parts out.
-    const size_t base = workspace_bytes();
-    size_t room = needs.least_workspace_bytes + needs.pack_memory_bytes - base;
     App app;
-    for (; room > 4096; room = room * 31 / 32) {
-        app = App{};
-        app.w = 320, app.h = 240;
-        app.workspace_size = base + room;
-        ASSERT_TRUE(app.create().ok());
-        const Result r = app.v->load(m.file.data(), m.bytes);
-        ASSERT_TRUE(r.ok()) << text(r);
-        const uint32_t boxed = app.last(Event::Kind::Loaded)->loaded.boxed_parts;
-        if (boxed >= 4 && boxed < 12) break;
-    }
-    ASSERT_GT(room, 4096u);
-    app.run();
+    ASSERT_TRUE(open_in_part(app, m));
     const Core& core = *static_cast<const Core*>(app.v);
     const module::Scene& scene = core.scene();
     expect_blocks_apart(app, index);
@@ -203,22 +209,8 @@ TEST(Swap, ACorruptBlockIsReportedWhenTheViewBringsItInAndTheOthersStillCome) {
     Model m = twelve_parts();
     PackIndex index;
     ASSERT_TRUE(index.open(m.file.data(), m.bytes).ok());
-    ModelNeeds needs;
-    ASSERT_TRUE(model_needs(m.file.data(), m.bytes, needs).ok());
-    const size_t base = workspace_bytes();
-    size_t room = needs.least_workspace_bytes + needs.pack_memory_bytes - base;
     App app;
-    for (; room > 4096; room = room * 31 / 32) {
-        app = App{};
-        app.w = 320, app.h = 240;
-        app.workspace_size = base + room;
-        ASSERT_TRUE(app.create().ok());
-        ASSERT_TRUE(app.v->load(m.file.data(), m.bytes).ok());
-        const uint32_t boxed = app.last(Event::Kind::Loaded)->loaded.boxed_parts;
-        if (boxed >= 4 && boxed < 12) break;
-    }
-    ASSERT_GT(room, 4096u);
-    app.run();
+    ASSERT_TRUE(open_in_part(app, m));
     const module::Scene& scene = static_cast<const Core*>(app.v)->scene();
     std::vector<uint32_t> left;
     for (uint32_t p = 0; p < scene.part_count(); ++p)
@@ -282,4 +274,56 @@ TEST(Swap, APassTakesTheBlocksLargestOnTheScreenFirst) {
     for (size_t k = 1; k < order.size(); ++k) {
         EXPECT_LE(pixels(order[k]), pixels(order[k - 1])) << "block " << order[k] << " after block " << order[k - 1];
     }
+}
+
+// A face picked in a part whose block the view then leaves out is no longer there: the
+// selection and the measurement go with it (its block's records are gone until it comes back).
+TEST(Swap, AFacePickedInABlockLeftOutIsForgotten) {
+    Model m = twelve_parts();
+    App app;
+    ASSERT_TRUE(open_in_part(app, m, Interface::Full));
+    const module::Scene& scene = static_cast<const Core*>(app.v)->scene();
+    std::vector<uint32_t> held, left;
+    for (uint32_t p = 0; p < scene.part_count(); ++p) (scene.part_left_out(p) ? left : held).push_back(p);
+    ASSERT_FALSE(left.empty());
+    // Taps about a held part's box centre until one picks a face of it (a torus's centre is its hole).
+    uint32_t picked = ~0u;
+    for (uint32_t p : held) {
+        int32_t x = 0, y = 0;
+        if (!on_screen(app, p, x, y)) continue;
+        for (int k = 0; k < 49 && picked == ~0u; ++k) {
+            const int16_t tx = int16_t(x + 3 * (k % 7 - 3)), ty = int16_t(y + 3 * (k / 7 - 3));
+            app.v->touch(0, 2, int16_t(app.h - 3), true); // (elsewhere first: two taps on one spot frame the face)
+            app.v->touch(0, 2, int16_t(app.h - 3), false);
+            app.v->touch(0, tx, ty, true);
+            app.v->touch(0, tx, ty, false);
+            app.run();
+            const Event* e = app.last(Event::Kind::Picked);
+            if (e && e->pick.hit && e->pick.shell == p) picked = p;
+        }
+        if (picked != ~0u) break;
+    }
+    ASSERT_NE(picked, ~0u) << "a tap picks a held part";
+    const char* lines[3];
+    ASSERT_GT(app.v->measurement(lines), 0u) << "the picked face described";
+    // Into the part left out farthest from it on the screen, until the picked one is left out too.
+    int32_t px = 0, py = 0;
+    ASSERT_TRUE(on_screen(app, picked, px, py));
+    uint32_t target = left[0];
+    float far = -1;
+    for (uint32_t p : left) {
+        int32_t x = 0, y = 0;
+        if (!on_screen(app, p, x, y)) continue;
+        const float d = std::hypot(float(x - px), float(y - py));
+        if (d > far) far = d, target = p;
+    }
+    (void)zoom_into(app, target);
+    if (scene.part_left_out(picked)) {
+        EXPECT_EQ(app.v->measurement(lines), 0u) << "the picked face went with its block";
+    } else {
+        EXPECT_GT(app.v->measurement(lines), 0u) << "still held: still described";
+    }
+    app.v->act(Action::Measure); // (describes the selection again: none of it left out)
+    app.run();
+    expect_counts(app);
 }
