@@ -351,6 +351,8 @@ void Scheduler::refine_sample(uint32_t units) {
     if (!r.ok()) { // the pool is full: the new samples dropped, the block as it was
         s.used = refine_from_;
         b.refused = true;
+        // (A block just brought in has no level to go back to: left out again, its parts boxes.)
+        if (!(b.tolerance > 0)) scene_.drop_block(refine_block_);
         Event e{};
         e.kind = Event::Kind::PassFailed;
         e.pass = {pass_, refine_tolerance_, s.used};

@@ -327,3 +327,43 @@ TEST(Swap, AFacePickedInABlockLeftOutIsForgotten) {
     app.run();
     expect_counts(app);
 }
+
+// A walk of the view over a model larger than the memory (turns, zooms, pans, fits, levels of
+// detail, display modes, picks; a fixed seed): after each step, the counts whole, every part
+// held watertight, the decoded blocks apart inside the workspace, nothing refused by the
+// rasterizer. (It found a block brought in whose samples then did not fit left pending.)
+TEST(Swap, AWalkOfTheViewKeepsTheBlocksAndTheCountsWhole) {
+    Model m = twelve_parts();
+    PackIndex index;
+    ASSERT_TRUE(index.open(m.file.data(), m.bytes).ok());
+    App app;
+    ASSERT_TRUE(open_in_part(app, m, Interface::Full));
+    const module::Scene& scene = static_cast<const Core*>(app.v)->scene();
+    constexpr Action kSteps[] = {Action::ZoomIn,  Action::ZoomIn,   Action::ZoomIn,    Action::ZoomOut, Action::PanLeft,
+                                 Action::PanRight, Action::PanUp,   Action::PanDown,   Action::TurnLeft, Action::TiltUp,
+                                 Action::Fit,     Action::NextDetail, Action::PanLeft, Action::Measure, Action::NextDisplayMode};
+    uint32_t rng = 2026, swaps = 0, was_boxed = scene.left_out().parts;
+    for (int step = 0; step < 150; ++step) {
+        rng = rng * 1664525u + 1013904223u;
+        const uint32_t pick = rng >> 24;
+        if (pick % 7 == 0) { // a tap somewhere
+            const int16_t x = int16_t((rng >> 8) % app.w), y = int16_t((rng >> 16) % app.h);
+            app.v->touch(0, x, y, true);
+            app.v->touch(0, x, y, false);
+        } else {
+            app.v->act(kSteps[pick % (sizeof kSteps / sizeof kSteps[0])]);
+        }
+        app.run();
+        swaps += scene.left_out().parts != was_boxed;
+        was_boxed = scene.left_out().parts;
+        expect_blocks_apart(app, index);
+        expect_counts(app);
+        if (::testing::Test::HasFailure()) FAIL() << "after step " << step;
+    }
+    EXPECT_GT(swaps, 0u) << "the walk brought blocks in and left others out";
+    for (const Event& e : app.events) {
+        if (e.kind == Event::Kind::PassFailed) {
+            EXPECT_EQ(e.why.status, Status::Full) << text(e.why);
+        }
+    }
+}
