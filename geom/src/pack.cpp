@@ -161,6 +161,23 @@ Result Pack::fail(const char* what, uint32_t section, uint32_t index) {
     return Result::fail(Status::Corrupt, what, section_place(section, index));
 }
 
+namespace {
+template <typename T>
+void rebase(std::span<const T>& view, uintptr_t from, uintptr_t to) {
+    if (view.data()) view = {reinterpret_cast<const T*>(reinterpret_cast<uintptr_t>(view.data()) - from + to), view.size()};
+}
+} // namespace
+
+void Pack::moved(const void* to) {
+    if (!header_) return;
+    const uintptr_t from = reinterpret_cast<uintptr_t>(header_), at = reinterpret_cast<uintptr_t>(to);
+    header_ = static_cast<const pack::Header*>(to);
+    rebase(floats_, from, at), rebase(surfaces_, from, at), rebase(curves3_, from, at), rebase(curves2_, from, at);
+    rebase(vertices_, from, at), rebase(edges_, from, at), rebase(coedges_, from, at), rebase(loops_, from, at);
+    rebase(faces_, from, at), rebase(shells_, from, at), rebase(instances_, from, at), rebase(colours_, from, at);
+    rebase(names_, from, at), rebase(shell_names_, from, at), rebase(instance_names_, from, at);
+}
+
 Result Pack::open(const void* data, uint32_t size) {
     *this = Pack{};
     const uint8_t* base = static_cast<const uint8_t*>(data);

@@ -128,6 +128,7 @@ private:
     static constexpr float kSwapPixels = 32.0f;     // a left-out block this large on the screen comes in
     static constexpr uint32_t kSwapBytes = 16384;   // decoded a piece at a time
     bool swap_for_view();                           // true when it began one
+    bool swap_piece();                              // swap_for_view() as a piece of work (Work::Unpack)
     bool swap_in(uint32_t b);                       // block b (left out; Block::pixels set): true when begun
     bool swap_pending() const {                     // blocks still to look at, nothing else under way
         return swap_check_ && scene_.blocked() && scene_.left_out().blocks > 0 && unpacked_.memory && !controls_.dragging();
@@ -145,6 +146,7 @@ private:
     bool swap_check_ = false;
     struct Swap {
         uint32_t block = kNoBlock; // being decoded
+        bool decoded = false;      // (opened and begun in the next piece)
         geom::PackDecoder decoder;
     } swap_;
     module::Unpacked unpacked_; // a blocked pack's blocks and pack memory

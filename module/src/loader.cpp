@@ -219,7 +219,7 @@ Result compact_blocks(Unpacked& u) {
         if (block.data != u.memory + top) {
             std::memmove(u.memory + top, block.data, bytes);
             block.data = u.memory + top;
-            if (Result r = block.pack.open(block.data, bytes); !r.ok()) return r.within({"block", next});
+            block.pack.moved(block.data); // (the same bytes: checked when they were decoded)
             last = block.data + bytes - 1; // (past it, as the blocks lying higher were)
         }
         top += align4(bytes);

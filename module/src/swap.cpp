@@ -30,6 +30,16 @@ uint32_t Core::block_samples(uint32_t b) const {
     return n;
 }
 
+// The choice and the room made (blocks left out, the pack memory compacted) as a piece of
+// unpacking work, when there is a choice to make.
+bool Core::swap_piece() {
+    if (!swap_pending() || swap_.block != kNoBlock) return false;
+    work(Event::Kind::WorkBegin, Work::Unpack, 0);
+    const bool begun = swap_for_view();
+    work(Event::Kind::WorkEnd, Work::Unpack, 0);
+    return begun;
+}
+
 bool Core::swap_for_view() {
     if (!swap_check_ || !scene_.blocked() || scene_.left_out().blocks == 0 || swap_.block != kNoBlock || scheduler_.busy() ||
         controls_.dragging() || scene_.bounding() || framer_.busy() || glide_.phase != Glide::Phase::None || !unpacked_.memory) {
@@ -92,20 +102,26 @@ bool Core::swap_in(uint32_t best) {
     if (victims) forget_left_out_picks();
     presenter_.invalidate();
     if (Result r = module::compact_blocks(unpacked_); !r.ok()) return swap_failed(best, r);
-    swap_.block = best;
+    swap_.block = best, swap_.decoded = false;
     if (Result r = module::start_block(unpacked_, best, swap_.decoder); !r.ok() && r.status != Status::Busy) return swap_failed(best, r);
     if (need == 0) swap_finish(nullptr); // read in place
     return true;
 }
 
+// A piece of decoding (LZMA: kSwapBytes; DEFLATE: the block at once, up to about 64 KB), then
+// in a piece of its own the block opened (checked) and begun.
 void Core::swap_step() {
+    if (swap_.decoded) {
+        swap_finish(&swap_.decoder);
+        return;
+    }
     const Result r = swap_.decoder.run(kSwapBytes);
     if (r.status == Status::Busy) return;
     if (!r.ok()) {
         (void)swap_failed(swap_.block, r.within({"block", swap_.block}));
         return;
     }
-    swap_finish(&swap_.decoder);
+    swap_.decoded = true;
 }
 
 void Core::swap_finish(const geom::PackDecoder* decoder) {

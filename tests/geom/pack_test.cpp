@@ -105,6 +105,37 @@ TEST(Pack, ValidCubeReadsInPlace) {
     EXPECT_EQ(reinterpret_cast<const uint8_t*>(p.faces().data()), b.bytes() + b.section(SectionId::Faces).offset) << "zero-copy";
 }
 
+// A pack's bytes moved elsewhere (the viewer compacts its decoded blocks): moved() reads every
+// record where they now lie, as an open() there would, with no check again.
+TEST(Pack, MovedBytesReadWhereTheyNowLie) {
+    Buf a(cube_pack());
+    Pack p;
+    ASSERT_TRUE(a.open(p).ok());
+    Buf b(cube_pack());
+    Pack there;
+    ASSERT_TRUE(b.open(there).ok());
+    p.moved(b.bytes());
+    EXPECT_EQ(&p.header(), &there.header());
+    auto same = [](auto x, auto y) { return x.data() == y.data() && x.size() == y.size(); };
+    EXPECT_TRUE(same(p.floats(), there.floats()));
+    EXPECT_TRUE(same(p.surfaces(), there.surfaces()));
+    EXPECT_TRUE(same(p.curves3(), there.curves3()));
+    EXPECT_TRUE(same(p.curves2(), there.curves2()));
+    EXPECT_TRUE(same(p.vertices(), there.vertices()));
+    EXPECT_TRUE(same(p.edges(), there.edges()));
+    EXPECT_TRUE(same(p.coedges(), there.coedges()));
+    EXPECT_TRUE(same(p.loops(), there.loops()));
+    EXPECT_TRUE(same(p.faces(), there.faces()));
+    EXPECT_TRUE(same(p.shells(), there.shells()));
+    EXPECT_TRUE(same(p.instances(), there.instances()));
+    EXPECT_TRUE(same(p.colours(), there.colours()));
+    EXPECT_STREQ(p.model_name(), there.model_name());
+    EXPECT_EQ(p.shell_name(0), there.shell_name(0));
+    Pack none;
+    none.moved(b.bytes()); // (nothing open: nothing to move)
+    EXPECT_TRUE(none.faces().empty());
+}
+
 TEST(Pack, CrcOfAKnownString) { EXPECT_EQ(crc32("123456789", 9), 0xCBF43926u); }
 
 TEST(Pack, TruncatedAtEverySizeIsRefused) {
