@@ -136,6 +136,7 @@ private:
     void swap_step();                               // a piece of the block's decoding
     void swap_finish(const geom::PackDecoder* decoder);
     bool swap_failed(uint32_t b, const Result& why);
+    bool block_sphere(uint32_t b, float centre[3], float& radius) const; // around its box (mm); false: empty
     float block_pixels(uint32_t b);                 // its box's sphere across on the screen
     uint32_t block_samples(uint32_t b) const;       // the samples its edges hold
     static constexpr float kBackPixels = 5.0f;      // one this large comes back where there is room (as tiny parts are boxes)

@@ -107,13 +107,9 @@ float Core::block_tolerance(void* self, uint32_t b, float pass_tolerance) {
 float Core::wanted_tolerance(uint32_t b, float pass_tolerance, float finest, bool* on_screen) {
     if (on_screen) *on_screen = true;
     if (default_tolerance_ <= 0 || !(config_.screen_error_px > 0)) return pass_tolerance;
-    float lo[3], hi[3];
-    scene_.block_box(b, lo, hi);
-    if (!(lo[0] <= hi[0])) return pass_tolerance;
-    float centre[3], r2 = 0;
-    for (int k = 0; k < 3; ++k) centre[k] = 0.5f * (lo[k] + hi[k]), r2 += 0.25f * (hi[k] - lo[k]) * (hi[k] - lo[k]);
+    float centre[3], r;
+    if (!block_sphere(b, centre, r)) return pass_tolerance;
     (void)judge_with_view();
-    const float r = std::sqrt(r2);
     if (on_screen) *on_screen = detail_.pixels(centre, r) > 0;
     const float bias = pass_tolerance / default_tolerance_;
     float t = bias * config_.screen_error_px * detail_.mm_per_pixel(centre, r);

@@ -1,26 +1,32 @@
 // Blocks brought in as the view comes near them (issue 25): a model larger than the memory is
 // opened with its largest blocks, the rest left out and drawn as their boxes (loader.h). When
 // the view has changed and nothing else is under way, the left-out block largest on the screen
-// (kSwapPixels across at least) is brought in: held blocks under half its size on the screen
-// (off it first, then the smallest) are left out to make room for its decoded pack, the packs
-// held are moved down over theirs, and it is decoded in pieces at the end (kSwapBytes a piece,
-// as load does at once). Then it is sampled and its faces tessellated at the level the view
-// asks, as a refinement is (Scheduler::begin_refine): each part stays at one level, watertight.
-// Its parts' boxes stay on the screen until its edges are in.
+// is brought in: where there is room for its decoded pack and its samples (kBackPixels across
+// at least), or, for one kSwapPixels across or more, where held blocks under half its size on
+// the screen (off it first, then the smallest) make the room when they are left out. The packs
+// held are moved down over theirs, it is decoded at the end in pieces, and then sampled and its
+// faces tessellated at the level the view asks, as a refinement is (Scheduler::begin_refine):
+// each part stays at one level, watertight. Its parts' boxes stay until its edges are in.
 #include "core.h"
 
 #include <cmath>
 
 namespace facet {
 
-float Core::block_pixels(uint32_t b) {
-    float lo[3], hi[3];
+bool Core::block_sphere(uint32_t b, float centre[3], float& radius) const {
+    float lo[3], hi[3], r2 = 0;
     scene_.block_box(b, lo, hi);
-    if (!(lo[0] <= hi[0])) return 0;
-    float centre[3], r2 = 0;
+    if (!(lo[0] <= hi[0])) return false;
     for (int k = 0; k < 3; ++k) centre[k] = 0.5f * (lo[k] + hi[k]), r2 += 0.25f * (hi[k] - lo[k]) * (hi[k] - lo[k]);
+    radius = std::sqrt(r2);
+    return true;
+}
+
+float Core::block_pixels(uint32_t b) {
+    float centre[3], r;
+    if (!block_sphere(b, centre, r)) return 0;
     (void)judge_with_view();
-    return detail_.pixels(centre, std::sqrt(r2));
+    return detail_.pixels(centre, r);
 }
 
 uint32_t Core::block_samples(uint32_t b) const {
