@@ -164,9 +164,6 @@ void Scheduler::revisit() {
     revisit_ = true;
 }
 
-// Faces already in (a sweep) are passed; a face the view does not want now is bounded by its
-// edges and deferred. True at a face to tessellate; false when this piece's checks are spent
-// or the faces are done.
 void Scheduler::all_blocks() {
     face_ = face_end_ = 0, next_block_ = kNoBlock, ordered_ = false;
 }
@@ -174,7 +171,7 @@ void Scheduler::all_blocks() {
 bool Scheduler::next_block() {
     if (!ordered_) { // (once the pass or sweep reaches its first face: the view framed by then)
         ordered_ = true;
-        next_block_ = order_.fn ? order_.fn(order_.user) : 0;
+        next_block_ = order_.fn ? order_.fn(order_.user) : scene_.block_count() ? 0 : kNoBlock;
         if (!order_.fn) {
             for (uint32_t b = 0; b < scene_.block_count(); ++b) scene_.block(b).next = b + 1 < scene_.block_count() ? b + 1 : kNoBlock;
         }
@@ -189,6 +186,9 @@ bool Scheduler::next_block() {
     return false;
 }
 
+// Faces already in (a sweep) are passed; a face the view does not want now is bounded by its
+// edges and deferred. True at a face to tessellate; false when this piece's checks are spent
+// or the faces are done.
 bool Scheduler::next_face() {
     for (uint32_t checked = 0; face_ < face_end_ || (!refining() && next_block()); ++face_) {
         const FaceState state = scene_.face(face_).state;
