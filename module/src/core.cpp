@@ -187,7 +187,7 @@ Activity Core::step(uint32_t budget_us) {
     const bool mid_bands = presenter_.drawing() && config_.display.band_lines < config_.display.height;
     // Nothing else left: a block the view wants at another level is begun now, so that the
     // next step has its work (a step without a clock is one piece of work).
-    if (!mid_bands && !frame_wanted() && !scheduler_.busy() && swap_.block == kNoBlock && !swap_piece()) (void)refine_for_view();
+    if (!mid_bands && !frame_wanted() && !scheduler_.busy() && !swap_piece()) (void)refine_for_view();
     if ((frame_wanted() && presenter_.can_draw()) ||
         ((scheduler_.busy() || swap_.block != kNoBlock || swap_pending() || scene_.bounding() || framer_.busy() || glide_.phase != Glide::Phase::None) &&
          !mid_bands)) {

@@ -158,7 +158,7 @@ bool Core::refine_for_view() {
             scene_.block(best).refused = false;
             if (scheduler_.begin_refine(best, t)) return true;
         }
-        scene_.block(best).refused = true;
+        scene_.block(best).refused = true; // (passed over the next time round, whatever refused it)
     }
 }
 

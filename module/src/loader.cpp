@@ -201,7 +201,13 @@ uint32_t block_memory(const Unpacked& u, uint32_t b) {
     return in_place(u.index, b) ? 0 : align4(u.index.blocks()[b].pack_bytes);
 }
 
-Result compact_blocks(Unpacked& u) {
+uint32_t free_block_memory(const Unpacked& u) {
+    uint64_t used = table_bytes(uint32_t(u.blocks.size()));
+    for (uint32_t b = 0; b < u.blocks.size(); ++b) used += u.blocks[b].left_out ? 0 : block_memory(u, b);
+    return used < u.limit ? uint32_t(u.limit - used) : 0;
+}
+
+void compact_blocks(Unpacked& u) {
     const uint32_t count = uint32_t(u.blocks.size());
     uint32_t top = table_bytes(count);
     const uint8_t* last = nullptr; // the last block moved (by where it lay)
@@ -225,7 +231,6 @@ Result compact_blocks(Unpacked& u) {
         top += align4(bytes);
     }
     u.bytes = top;
-    return {};
 }
 
 Result start_block(Unpacked& u, uint32_t b, geom::PackDecoder& decoder) {

@@ -48,10 +48,12 @@ struct Unpacked {
 // Blocks brought in and left out as the view asks (a model larger than the memory):
 // The pack memory block b takes decoded (0 when it is read in place from the file).
 uint32_t block_memory(const Unpacked& u, uint32_t b);
-// The decoded blocks moved down over those left out since, in the order they lie, each one
-// moved opened again where it now lies (a block's pack reads its bytes in place): u.bytes then
-// ends the last. Corrupt only if a block no longer opens (it did before).
-Result compact_blocks(Unpacked& u);
+// The pack memory free for decoded blocks: what the table and the blocks held leave up to
+// u.limit (once compact_blocks() has moved them together).
+uint32_t free_block_memory(const Unpacked& u);
+// The decoded blocks moved down over those left out since, in the order they lie, each pack's
+// views moved with its bytes: u.bytes then ends the last.
+void compact_blocks(Unpacked& u);
 // Block b (left out) begun: decoded at u.bytes by `decoder` (its run() to go on until done), or
 // at once when read in place. Full when the room up to u.limit is short.
 Result start_block(Unpacked& u, uint32_t b, geom::PackDecoder& decoder);

@@ -77,7 +77,7 @@ Result Scene::open(const geom::PackIndex& index, std::span<Block> blocks) {
         faces += block.faces, edges += block.edges;
         if (block.left_out) {
             block.pack = {};
-            ++left_out_.blocks, left_out_.parts += entry.part_count, left_out_.faces += block.faces, left_out_.edges += block.edges;
+            tally_left_out(b, true);
         } else if (Result r = check_block(index, b); !r.ok()) {
             return r;
         }
@@ -111,6 +111,13 @@ Result Scene::check_block(const geom::PackIndex& index, uint32_t b) const {
         return Result::fail(Status::Corrupt, "its faces or edges are not its parts'", here);
     }
     return {};
+}
+
+void Scene::tally_left_out(uint32_t b, bool out) {
+    const Block& block = blocks_[b];
+    const uint32_t parts = index_.blocks()[b].part_count;
+    if (out) ++left_out_.blocks, left_out_.parts += parts, left_out_.faces += block.faces, left_out_.edges += block.edges;
+    else --left_out_.blocks, left_out_.parts -= parts, left_out_.faces -= block.faces, left_out_.edges -= block.edges;
 }
 
 Result Scene::start() {
@@ -381,7 +388,7 @@ void Scene::quantize_samples(uint32_t from, uint32_t to) {
 }
 
 void Scene::reset_mesh(bool keep_peaks) {
-    for (uint32_t f = 0; f < face_count(); ++f) mem_.faces[f] = {0, 0, 0, 0, 0, {0, 0, 0}, 0, FaceState::Pending, false};
+    for (uint32_t f = 0; f < face_count(); ++f) mem_.faces[f] = no_mesh(FaceState::Pending);
     for (const Block& b : blocks_) {
         if (!b.left_out) continue;
         for (uint32_t f = b.first_face; f < b.first_face + b.faces; ++f) mem_.faces[f].state = FaceState::Absent;
@@ -401,7 +408,7 @@ void Scene::reset_mesh(bool keep_peaks) {
 
 void Scene::mark_failed(uint32_t f) {
     if (mem_.faces[f].state == FaceState::Deferred) --totals_.deferred, ++totals_.undeferred;
-    mem_.faces[f] = {0, 0, 0, 0, colour_of(f), {0, 0, 0}, 0, FaceState::Failed, false};
+    mem_.faces[f] = no_mesh(FaceState::Failed, colour_of(f));
     ++totals_.failed;
 }
 
@@ -478,7 +485,6 @@ Result Scene::append(uint32_t f, const geom::Mesh& fm, const geom::FaceStats& st
     vertex_top_ += fm.vertex_count, triangle_top_ += fm.triangle_count;
     t.vertices += fm.vertex_count;
     t.triangles += fm.triangle_count;
-    t.mesh_bytes = t.vertices * uint32_t(sizeof(DrawVertex)) + t.triangles * 3 * uint32_t(sizeof(uint16_t));
     const uint32_t arena = uint32_t(geom::face_arena_bytes(stats.points));
     if (arena > t.arena_peak_bytes) t.arena_peak_bytes = arena;
     if (stats.points > t.face_points_peak) t.face_points_peak = stats.points;

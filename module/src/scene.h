@@ -45,6 +45,8 @@ struct FaceInfo {
     bool planar;       // one normal: a closed shell's plane facing away is skipped whole
 };
 static_assert(sizeof(FaceInfo) + sizeof(uint32_t) == FACET_BYTES_PER_FACE); // with its done_order entry
+// A face with no mesh and no sphere in that state.
+constexpr FaceInfo no_mesh(FaceState state, uint32_t rgb = 0) { return {0, 0, 0, 0, rgb, {0, 0, 0}, 0, state, false}; }
 
 // A pack of whole parts (a whole pack's shells, or one block of a blocked pack), and where its
 // faces, edges and parts start in the model's numbering.
@@ -84,7 +86,7 @@ struct Totals {
     // again each deferred face as it is done (so faces a sweep adds show as they come).
     uint32_t finished() const { return done + failed + deferred + undeferred; }
     uint32_t arena_peak_bytes = 0; // largest CDT use of one face (vertices + triangles)
-    uint32_t mesh_bytes = 0;       // vertices + indices in use
+    uint32_t mesh_bytes() const { return vertices * uint32_t(sizeof(DrawVertex)) + triangles * 3 * uint32_t(sizeof(uint16_t)); } // in use
     uint32_t samples_peak = 0, face_points_peak = 0, slivers_peak = 0, vertices_peak = 0, triangles_peak = 0;
 };
 
@@ -251,6 +253,7 @@ public:
 private:
     Result start(); // after the blocks are set: the model's counts, box and quantum
     Result check_block(const geom::PackIndex& index, uint32_t b) const; // its pack is its parts'
+    void tally_left_out(uint32_t b, bool out); // block b counted in (out) or out of left_out_
     // The block holding item k of a numbering (binary search on the blocks' firsts).
     uint32_t find(uint32_t k, uint32_t Block::*first) const {
         uint32_t lo = 0, hi = uint32_t(blocks_.size());

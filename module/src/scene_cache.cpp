@@ -16,7 +16,6 @@ void Scene::evict(uint32_t f) {
     if (info.state != FaceState::Done) return;
     Totals& t = totals_;
     t.vertices -= info.vertex_count, t.triangles -= info.triangle_count;
-    t.mesh_bytes = t.vertices * uint32_t(sizeof(DrawVertex)) + t.triangles * 3 * uint32_t(sizeof(uint16_t));
     uint32_t* order = mem_.done_order.data();
     for (uint32_t k = 0; k < t.done; ++k) {
         if (order[k] != f) continue;
@@ -115,11 +114,8 @@ Result Scene::take_block(uint32_t b) {
     block.left_out = false, block.refused = false;
     block.tolerance = block.previous_tolerance = 0;
     for (uint32_t e = block.first_edge; e < block.first_edge + block.edges; ++e) mem_.samples.first[e] = 0, mem_.samples.count[e] = 0;
-    for (uint32_t f = block.first_face; f < block.first_face + block.faces; ++f) {
-        mem_.faces[f] = {0, 0, 0, 0, 0, {0, 0, 0}, 0, FaceState::Pending, false};
-    }
-    const uint32_t parts = index_.blocks()[b].part_count;
-    --left_out_.blocks, left_out_.parts -= parts, left_out_.faces -= block.faces, left_out_.edges -= block.edges;
+    for (uint32_t f = block.first_face; f < block.first_face + block.faces; ++f) mem_.faces[f] = no_mesh(FaceState::Pending);
+    tally_left_out(b, false);
     totals_.faces += block.faces;
     ++moves_;
     return {};
@@ -135,9 +131,8 @@ void Scene::drop_block(uint32_t b) {
         if (info.state == FaceState::Done) t.vertices -= info.vertex_count, t.triangles -= info.triangle_count;
         if (info.state == FaceState::Deferred) --t.deferred;
         if (info.state == FaceState::Failed) --t.failed;
-        info = {0, 0, 0, 0, 0, {0, 0, 0}, 0, FaceState::Absent, false};
+        info = no_mesh(FaceState::Absent);
     }
-    t.mesh_bytes = t.vertices * uint32_t(sizeof(DrawVertex)) + t.triangles * 3 * uint32_t(sizeof(uint16_t));
     uint32_t kept = 0;
     for (uint32_t k = 0; k < t.done; ++k) {
         const uint32_t f = mem_.done_order[k];
@@ -146,8 +141,7 @@ void Scene::drop_block(uint32_t b) {
     t.done = kept;
     for (uint32_t e = block.first_edge; e < block.first_edge + block.edges; ++e) mem_.samples.count[e] = 0; // (garbage in the pool)
     block.left_out = true, block.pack = {}, block.data = nullptr, block.tolerance = block.previous_tolerance = 0;
-    const uint32_t parts = index_.blocks()[b].part_count;
-    ++left_out_.blocks, left_out_.parts += parts, left_out_.faces += block.faces, left_out_.edges += block.edges;
+    tally_left_out(b, true);
     totals_.faces -= block.faces;
     ++moves_;
 }

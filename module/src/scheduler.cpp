@@ -263,7 +263,7 @@ void Scheduler::end_faces() {
     if (was_sweep) return;
     Event e{};
     e.kind = Event::Kind::Tessellated;
-    e.tessellated = {pass_, t.faces, t.failed, t.triangles, t.vertices, t.mesh_bytes, t.arena_peak_bytes, opt_.tolerance};
+    e.tessellated = {pass_, t.faces, t.failed, t.triangles, t.vertices, t.mesh_bytes(), t.arena_peak_bytes, opt_.tolerance};
     emit_(e);
 }
 

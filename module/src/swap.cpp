@@ -47,8 +47,8 @@ bool Core::swap_piece() {
 }
 
 bool Core::swap_for_view() {
-    if (!swap_check_ || !scene_.blocked() || scene_.left_out().blocks == 0 || swap_.block != kNoBlock || scheduler_.busy() ||
-        controls_.dragging() || scene_.bounding() || framer_.busy() || glide_.phase != Glide::Phase::None || !unpacked_.memory) {
+    if (!swap_pending() || swap_.block != kNoBlock || scheduler_.busy() || scene_.bounding() || framer_.busy() ||
+        glide_.phase != Glide::Phase::None) {
         return false;
     }
     swap_check_ = false;
@@ -74,11 +74,7 @@ bool Core::swap_in(uint32_t best) {
     const uint32_t need = module::block_memory(unpacked_, best);
     const uint32_t need_samples = module::Scheduler::kNewBlockSamplesPerEdge * scene_.block(best).edges + 2;
     (void)scheduler_.make_sample_room(need_samples);
-    uint64_t held = 0;
-    for (uint32_t b = 0; b < blocks; ++b) held += scene_.block(b).left_out ? 0 : module::block_memory(unpacked_, b);
-    const uint32_t table = uint32_t(unpacked_.blocks.size() * sizeof(module::Block) + 3) & ~3u;
-    uint64_t room = unpacked_.limit > table + held ? unpacked_.limit - table - held : 0;
-    uint64_t samples = scene_.samples_room();
+    uint64_t room = module::free_block_memory(unpacked_), samples = scene_.samples_room();
     // The victims chosen first (Block::leaving), left out only if together they make the room.
     uint32_t victims = 0;
     while ((room < need || samples < need_samples) && best_pixels >= kSwapPixels) {
@@ -107,7 +103,7 @@ bool Core::swap_in(uint32_t best) {
     }
     if (victims) forget_left_out_picks();
     presenter_.invalidate();
-    if (Result r = module::compact_blocks(unpacked_); !r.ok()) return swap_failed(best, r);
+    module::compact_blocks(unpacked_); // (the free room after the blocks held)
     swap_.block = best, swap_.decoded = false;
     if (Result r = module::start_block(unpacked_, best, swap_.decoder); !r.ok() && r.status != Status::Busy) return swap_failed(best, r);
     if (need == 0) swap_finish(nullptr); // read in place
@@ -143,7 +139,6 @@ void Core::swap_finish(const geom::PackDecoder* decoder) {
         // No room for its samples even after the caches made some: a box again until the view changes.
         scene_.drop_block(b);
         scene_.block(b).refused = true;
-        if (Result r = module::compact_blocks(unpacked_); !r.ok()) (void)swap_failed(b, r);
     }
 }
 
@@ -157,7 +152,6 @@ bool Core::leave_out_unseen(uint32_t keep) {
     }
     if (!dropped) return false;
     forget_left_out_picks();
-    if (Result r = module::compact_blocks(unpacked_); !r.ok()) (void)swap_failed(keep, r);
     presenter_.invalidate();
     return true;
 }

@@ -280,7 +280,7 @@ Stats Core::stats() const {
         for (const pack::Surface& s : scene_.block(b).pack.surfaces()) free_form = free_form || s.type == uint8_t(pack::SurfaceType::BSpline);
     }
     const uint64_t peak = scene_.loaded() ? layout_bytes(used, free_form ? geom::kPatchCacheWords : 0) : core_bytes();
-    return {t.faces, t.done, t.failed, t.deferred, t.triangles, t.vertices, scheduler_.pass(), t.mesh_bytes, t.arena_peak_bytes,
+    return {t.faces, t.done, t.failed, t.deferred, t.triangles, t.vertices, scheduler_.pass(), t.mesh_bytes(), t.arena_peak_bytes,
             pack_bytes_, pack_file_bytes_, uint32_t(peak), scheduler_.tolerance(), painter_.refused()};
 }
 

@@ -97,6 +97,13 @@ bool zoom_into(App& app, uint32_t s) {
     return false;
 }
 
+std::vector<uint32_t> parts_left_out(const module::Scene& scene) {
+    std::vector<uint32_t> left;
+    for (uint32_t p = 0; p < scene.part_count(); ++p)
+        if (scene.part_left_out(p)) left.push_back(p);
+    return left;
+}
+
 // The decoded blocks held: each inside the workspace, none overlapping another.
 void expect_blocks_apart(const App& app, const PackIndex& index) {
     const module::Scene& scene = static_cast<const Core*>(app.v)->scene();
@@ -164,9 +171,7 @@ TEST(Swap, ZoomingIntoAPartLeftOutBringsItsBlockInInPlaceOfWhatTheViewLeaves) {
     const module::Scene& scene = core.scene();
     expect_blocks_apart(app, index);
     expect_counts(app);
-    std::vector<uint32_t> left;
-    for (uint32_t p = 0; p < scene.part_count(); ++p)
-        if (scene.part_left_out(p)) left.push_back(p);
+    const std::vector<uint32_t> left = parts_left_out(scene);
     ASSERT_GE(left.size(), 2u);
 
     // Into the first part left out: its block comes in, others go out to make room.
@@ -212,9 +217,7 @@ TEST(Swap, ACorruptBlockIsReportedWhenTheViewBringsItInAndTheOthersStillCome) {
     App app;
     ASSERT_TRUE(open_in_part(app, m));
     const module::Scene& scene = static_cast<const Core*>(app.v)->scene();
-    std::vector<uint32_t> left;
-    for (uint32_t p = 0; p < scene.part_count(); ++p)
-        if (scene.part_left_out(p)) left.push_back(p);
+    const std::vector<uint32_t> left = parts_left_out(scene);
     ASSERT_GE(left.size(), 2u);
     // The first one's compressed bytes garbled past its head (the file stays where it was loaded).
     const uint32_t bad = scene.part(left[0]).block;
