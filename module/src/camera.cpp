@@ -46,8 +46,8 @@ void Camera::orbit(float d_yaw, float d_pitch) {
 
 void Camera::dolly(float factor) {
     view_.zoom *= factor;
-    if (view_.zoom < 0.05f) view_.zoom = 0.05f;
-    if (view_.zoom > 20.0f) view_.zoom = 20.0f;
+    if (view_.zoom < kNearest) view_.zoom = kNearest;
+    if (view_.zoom > kFarthest) view_.zoom = kFarthest;
 }
 
 void Camera::pan(float dx_mm, float dy_mm) {

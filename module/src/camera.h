@@ -190,6 +190,7 @@ View standard_view(Standard s, const View& from); // the angles of s, the rest o
 class Camera {
 public:
     static constexpr float kTurn = 0.2617993878f; // a key turns by 15 degrees
+    static constexpr float kNearest = 0.05f, kFarthest = 20.0f; // the dolly's range
 
     void fit() { view_ = View{}; } // the whole model's sphere, from the default direction
     // The sphere framed again from the current direction (before Framing adjusts it).
@@ -199,7 +200,7 @@ public:
     void toggle_projection() { view_.ortho = !view_.ortho; }
     const Section& section() const { return section_; }
     void set_section(const Section& s) { section_ = s; }
-    // Orbit by angles (rad), dolly by a factor (< 1: closer; kept within 0.05 and 20), pan by
+    // Orbit by angles (rad), dolly by a factor (< 1: closer; kept within kNearest and kFarthest), pan by
     // millimetres, or by screen pixels (the model's centre follows the pointer).
     void orbit(float d_yaw, float d_pitch);
     void dolly(float factor);

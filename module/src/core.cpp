@@ -206,7 +206,7 @@ void Core::command(const module::Command& c) {
     case Kind::Orbit: camera_.orbit(c.yaw, c.pitch); break;
     case Kind::Pan: camera_.pan_pixels(c.dx, c.dy, scene_.radius(), d.width, d.height); break;
     case Kind::Dolly: camera_.dolly(c.factor); break;
-    case Kind::Pick: pick(c.x, c.y); return;
+    case Kind::Pick: tap(c.x, c.y); return;
     case Kind::Slide: section_at(presenter_.overlay().slider_at(c.y), false); return;
     }
     view_changed();
@@ -237,18 +237,14 @@ void Core::act(Action a) {
     case Action::PanRight: camera_.pan(pan, 0); break;
     case Action::PanUp: camera_.pan(0, pan); break;
     case Action::PanDown: camera_.pan(0, -pan); break;
-    case Action::Fit:
-        fit_view(true);
-        view_changed();
-        user_moved_ = false; // framed again once the faces are in
-        return;
-    case Action::ViewFront: glide_to(module::standard_view(module::Standard::Front, camera_.view())); return;
-    case Action::ViewBack: glide_to(module::standard_view(module::Standard::Back, camera_.view())); return;
-    case Action::ViewRight: glide_to(module::standard_view(module::Standard::Right, camera_.view())); return;
-    case Action::ViewLeft: glide_to(module::standard_view(module::Standard::Left, camera_.view())); return;
-    case Action::ViewTop: glide_to(module::standard_view(module::Standard::Top, camera_.view())); return;
-    case Action::ViewBottom: glide_to(module::standard_view(module::Standard::Bottom, camera_.view())); return;
-    case Action::ViewIso: glide_to(module::standard_view(module::Standard::Iso, camera_.view())); return;
+    case Action::Fit: fit(); return;
+    case Action::ViewFront: show_view(StandardView::Front); return;
+    case Action::ViewBack: show_view(StandardView::Back); return;
+    case Action::ViewRight: show_view(StandardView::Right); return;
+    case Action::ViewLeft: show_view(StandardView::Left); return;
+    case Action::ViewTop: show_view(StandardView::Top); return;
+    case Action::ViewBottom: show_view(StandardView::Bottom); return;
+    case Action::ViewIso: show_view(StandardView::Iso); return;
     case Action::NextDisplayMode: set_mode(DisplayMode((uint8_t(painter_.mode()) + 1) % 5)); return;
     case Action::Section:
     case Action::SectionIn:
@@ -259,90 +255,31 @@ void Core::act(Action a) {
     case Action::IsolatePart:
     case Action::ShowAllParts: tool(a); return;
     case Action::NextView: {
-        static constexpr module::Standard kOrder[] = {module::Standard::Iso,  module::Standard::Front, module::Standard::Right,
-                                                      module::Standard::Top,  module::Standard::Back,  module::Standard::Left,
-                                                      module::Standard::Bottom};
-        glide_to(module::standard_view(kOrder[next_view_], camera_.view()));
+        static constexpr StandardView kOrder[] = {StandardView::Iso, StandardView::Front, StandardView::Right, StandardView::Top,
+                                                  StandardView::Back, StandardView::Left, StandardView::Bottom};
+        show_view(kOrder[next_view_]);
         next_view_ = uint8_t((next_view_ + 1) % 7);
         return;
     }
-    case Action::Measure:
-        presenter_.overlay().set_measuring(!presenter_.overlay().measuring());
-        if (picked_count_ > 1) picked_count_ = 1; // measuring starts from the face picked, if any
-        show_measurement();
-        highlight();
-        presenter_.invalidate();
-        return;
+    case Action::Measure: set_measuring(!measuring()); return;
     case Action::Help:
         presenter_.overlay().toggle_help();
         presenter_.invalidate();
         return;
-    case Action::Projection: {
-        // The view under way if a glide is (a standard view asked for just before stays asked for).
-        module::View v = glide_.phase != Glide::Phase::None ? glide_.target.view() : camera_.view();
-        v.ortho = !v.ortho;
-        glide_to(v); // framed again: a parallel view of the same zoom is not the same size
+    case Action::Projection:
+        set_parallel(!(glide_.phase != Glide::Phase::None ? glide_.target.view() : camera_.view()).ortho);
         return;
-    }
     case Action::Coarser:
     case Action::Finer:
     case Action::NextDetail: {
-        float t = a == Action::Coarser ? scheduler_.tolerance() * 2 : scheduler_.tolerance() * 0.5f;
-        if (a == Action::NextDetail) { // x1 -> x1/2 -> x1/4 -> x2 -> x1
-            const float r = scheduler_.tolerance() / default_tolerance_;
-            t = default_tolerance_ * (r > 0.99f && r < 1.01f ? 0.5f : r > 0.49f && r < 0.51f ? 0.25f : r > 0.24f && r < 0.26f ? 2.0f : 1.0f);
-        }
-        if (t > default_tolerance_ * 16.01f || t < default_tolerance_ / 8.01f) return; // at its limit
-        scheduler_.begin_pass(t);
+        const float r = detail();
+        float f = a == Action::Coarser ? r * 2 : r * 0.5f;
+        if (a == Action::NextDetail) f = r > 0.99f && r < 1.01f ? 0.5f : r > 0.49f && r < 0.51f ? 0.25f : r > 0.24f && r < 0.26f ? 2.0f : 1.0f; // x1 -> x1/2 -> x1/4 -> x2 -> x1
+        (void)set_detail(f); // refused at its limits: stays
         return;
     }
     }
     view_changed();
 }
-
-
-// The viewer's public face: each call goes to the Core the workspace holds.
-Result Viewer::load(const void* file, uint32_t file_bytes, void* memory, uint32_t memory_bytes) {
-    return static_cast<Core*>(this)->load(file, file_bytes, memory, memory_bytes);
-}
-Activity Viewer::step(uint32_t budget_us) { return static_cast<Core*>(this)->step(budget_us); }
-void Viewer::flush_done() { static_cast<Core*>(this)->flush_done(); }
-void Viewer::key(uint32_t k) {
-    Core& c = *static_cast<Core*>(this);
-    c.command(c.controls().key(k));
-}
-void Viewer::pointer(int16_t dx, int16_t dy, uint8_t buttons) {
-    Core& c = *static_cast<Core*>(this);
-    const bool dragging = c.controls().dragging();
-    c.command(c.controls().pointer(dx, dy, buttons));
-    c.drag_ended(dragging);
-}
-void Viewer::wheel(int16_t clicks) {
-    Core& c = *static_cast<Core*>(this);
-    c.command(c.controls().wheel(clicks));
-}
-void Viewer::touch(uint8_t id, int16_t x, int16_t y, bool down) {
-    Core& c = *static_cast<Core*>(this);
-    // The screen's coordinates to facet's rectangle's; a finger coming down outside it is the
-    // product's (one already down may move out and back).
-    const Display& d = c.display();
-    const int32_t rx = int32_t(x) - d.x, ry = int32_t(y) - d.y;
-    if (down && !c.controls().finger_down(id) && (rx < 0 || ry < 0 || rx >= d.width || ry >= d.height)) return;
-    x = int16_t(std::clamp<int32_t>(rx, INT16_MIN, INT16_MAX)), y = int16_t(std::clamp<int32_t>(ry, INT16_MIN, INT16_MAX));
-    module::Command out[2];
-    const bool dragging = c.controls().dragging();
-    const uint32_t n = c.controls().touch(id, x, y, down, out);
-    for (uint32_t i = 0; i < n; ++i) c.command(out[i]);
-    c.drag_ended(dragging);
-}
-void Viewer::act(Action a) { static_cast<Core*>(this)->act(a); }
-Stats Viewer::stats() const { return static_cast<const Core*>(this)->stats(); }
-uint32_t Viewer::measurement(const char* lines[3]) const {
-    const module::Overlay& o = static_cast<const Core*>(this)->overlay();
-    for (uint32_t i = 0; i < o.line_count(); ++i) lines[i] = o.line(i);
-    return o.line_count();
-}
-DisplayMode Viewer::display_mode() const { return static_cast<const Core*>(this)->mode(); }
-void Viewer::set_display_mode(DisplayMode m) { static_cast<Core*>(this)->set_mode(m); }
 
 } // namespace facet

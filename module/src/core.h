@@ -54,6 +54,34 @@ public:
     module::Painter& painter() { return painter_; }
     module::Presenter& presenter() { return presenter_; }
 
+    // The public API's calls (api.cpp: the Viewer's calls; views.cpp, pick.cpp, tools.cpp):
+    // the built-in interface's buttons, keys and taps use these too.
+    Orbit orbit() const;
+    Result set_orbit(const Orbit& o);
+    void show_view(StandardView v);
+    void fit();
+    Result fit_part(uint32_t part, uint32_t face = ~0u); // a face of it, or the whole part
+    void set_parallel(bool parallel);
+    float detail() const;
+    Result set_detail(float factor);
+    FaceFacts pick(int16_t x, int16_t y); // facet's rectangle
+    Result facts(uint32_t part, uint32_t face, FaceFacts& out) const;
+    Result select(uint32_t part, uint32_t face);
+    void clear_selection();
+    uint32_t selection(FaceFacts out[2]) const;
+    void set_measuring(bool on);
+    bool measuring() const { return presenter_.overlay().measuring(); }
+    Measurement measure(const FaceFacts& a, const FaceFacts& b) const;
+    Result isolate(uint32_t part);
+    void show_all();
+    Result section_through(uint32_t part, uint32_t face);
+    Result section_across(uint8_t axis);
+    Result move_section(float by_mm);
+    ModelInfo model() const;
+    // Ok when `face` is a face of `part` whose exact geometry is at hand (its block decoded).
+    Result check_face(uint32_t part, uint32_t face) const;
+    Result check_part(uint32_t part) const;
+
     // Tools (tools.cpp): the section plane and the parts.
     void tool(Action a);
     Result show(uint32_t part, bool shown);
@@ -73,8 +101,8 @@ private:
     uint32_t now() const { return config_.now_us ? config_.now_us(config_.clock_user) : 0; }
     bool frame_wanted() const;
     bool boxes_while_sampling() const;
-    void pick(int16_t x, int16_t y);
-    Event pick_at(int16_t x, int16_t y); // the Picked event of the face under (x, y)
+    void tap(int16_t x, int16_t y);      // a tap or click on facet's rectangle: a button, the parts list, or a pick
+    Event pick_at(int16_t x, int16_t y); // the Picked event of the face under (x, y) (facet's rectangle)
     void view_changed();
     // Frame the placed model (from the default direction, or this one; from_here: starting from
     // the view as it is, framed already for a nearly equal outline).
@@ -106,6 +134,7 @@ private:
     // decoded packs and arrays fit with room to tessellate; the default (all) when all fit.
     module::BlockCut cut_blocks(const void* file, uint32_t file_bytes, uint32_t file_size, void* memory, uint32_t memory_bytes) const;
     float default_tolerance_ = 0;
+    static constexpr float kFinerDetail = 8.0f, kCoarserDetail = 16.0f; // set_detail()'s range about the default
     // The level of detail the view asks for (detail.cpp): a face under kMinFacePixels across in
     // every instance of its part, or off the screen, is left to its edges until the view changes.
     static constexpr float kMinFacePixels = float(module::kFacePixels);

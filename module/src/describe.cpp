@@ -3,7 +3,6 @@
 #include "core/format.h"
 
 namespace facet::module {
-namespace {
 
 const char* unit_name(float mm) {
     if (mm > 0.999f && mm < 1.001f) return "mm";
@@ -13,6 +12,8 @@ const char* unit_name(float mm) {
     if (mm > 304.7f && mm < 304.9f) return "ft";
     return "units";
 }
+
+namespace {
 
 // A length in the file's unit: 3 decimals (4 in inches and feet, whose units are larger).
 Fixed length(double mm, float unit_mm) {

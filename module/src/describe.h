@@ -9,6 +9,7 @@
 
 namespace facet::module {
 
+const char* unit_name(float mm); // a file's length unit (mm in it) as its short name: mm, cm, m, in, ft, units
 void describe(const geom::FaceGeometry& g, uint32_t face, float unit_mm, char* out, size_t size);
 void describe(const geom::Relation& r, float unit_mm, char* out, size_t size);
 

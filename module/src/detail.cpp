@@ -211,4 +211,17 @@ void Core::detail_view_changed() {
     if (scene_.totals().deferred > 0) scheduler_.revisit();
 }
 
+// The level of detail as a factor of the default tolerance (the screen error scales with it).
+float Core::detail() const { return default_tolerance_ > 0 ? scheduler_.tolerance() / default_tolerance_ : 1.0f; }
+
+Result Core::set_detail(float factor) {
+    if (!scene_.loaded()) return Result::fail(Status::NotFound, "no model is loaded");
+    if (!(factor >= 1.0f / kFinerDetail && factor <= kCoarserDetail)) { // (NaN too)
+        return Result::fail(Status::OutOfRange, "the detail factor is outside 1/8 to 16");
+    }
+    if (factor == detail()) return {};
+    scheduler_.begin_pass(default_tolerance_ * factor);
+    return {};
+}
+
 } // namespace facet

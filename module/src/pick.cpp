@@ -9,7 +9,7 @@
 
 namespace facet {
 
-void Core::pick(int16_t x, int16_t y) {
+void Core::tap(int16_t x, int16_t y) {
     // A tap on a toolbar button is the button's.
     if (const Action a = presenter_.overlay().button_at(x, y); a != Action::None) {
         act(a);
@@ -17,7 +17,8 @@ void Core::pick(int16_t x, int16_t y) {
     }
     if (tap_parts(x, y)) return; // the parts list's
     const Event e = pick_at(x, y);
-    picked(e);
+    if (e.pick.hit) (void)select(e.pick.instance, e.pick.face); // (a face drawn is one select() takes)
+    else clear_selection();
     // A second tap where the first one was, soon after (or, without a clock, right after):
     // frame the tapped face.
     const uint32_t t = now();
@@ -75,6 +76,95 @@ void Core::show_measurement() {
     if (picked_count_ == 2) module::describe(geom::relate(g[0], g[1]), unit, lines[n++], sizeof lines[0]);
     else if (presenter_.overlay().measuring()) format(lines[n++], sizeof lines[0], "MEAS: tap a second face");
     presenter_.overlay().set_lines(ptrs, n);
+}
+
+Result Core::check_part(uint32_t part) const {
+    if (!scene_.loaded()) return Result::fail(Status::NotFound, "no model is loaded");
+    if (part >= scene_.instances().size()) return Result::fail(Status::OutOfRange, "no such part", {"part", part});
+    return {};
+}
+
+Result Core::check_face(uint32_t part, uint32_t face) const {
+    if (const Result r = check_part(part); !r.ok()) return r;
+    const module::Part sh = scene_.part(scene_.instances()[part].shell);
+    if (face < sh.first_face || face >= sh.first_face + sh.face_count) {
+        return Result::fail(Status::OutOfRange, "the face is not one of the part's", {"face", face}, {"part", part});
+    }
+    if (scene_.face(face).state == module::FaceState::Absent) { // its block is not decoded: no exact geometry at hand
+        return Result::fail(Status::NotFound, "the face's part is left out (drawn as its box) until the view brings it in", {"face", face});
+    }
+    return {};
+}
+
+Result Core::facts(uint32_t part, uint32_t face, FaceFacts& out) const {
+    out = {};
+    if (const Result r = check_face(part, face); !r.ok()) return r;
+    geom::FaceGeometry g;
+    if (const Result r = describe({face, part}, g); !r.ok()) return r;
+    static_assert(uint8_t(Surface::Extrusion) == uint8_t(pack::SurfaceType::Extrusion) && uint8_t(Surface::Plane) == uint8_t(pack::SurfaceType::Plane),
+                  "Surface is pack::SurfaceType");
+    out.hit = true, out.part = part, out.face = face;
+    out.surface = Surface(uint8_t(g.type));
+    out.hole = g.hole;
+    const geom::D3 o = g.origin, a = g.axis;
+    out.origin_mm[0] = o.x, out.origin_mm[1] = o.y, out.origin_mm[2] = o.z;
+    out.axis[0] = a.x, out.axis[1] = a.y, out.axis[2] = a.z;
+    out.offset_mm = g.offset, out.radius_mm = g.radius, out.minor_mm = g.minor;
+    out.half_angle_deg = g.half_angle * 57.29577951308232;
+    return {};
+}
+
+FaceFacts Core::pick(int16_t x, int16_t y) {
+    const Event e = pick_at(x, y);
+    FaceFacts f;
+    if (e.pick.hit) (void)facts(e.pick.instance, e.pick.face, f); // (a face drawn is one whose block is in)
+    f.x = x, f.y = y;
+    return f;
+}
+
+Result Core::select(uint32_t part, uint32_t face) {
+    if (const Result r = check_face(part, face); !r.ok()) return r;
+    Event e{};
+    e.kind = Event::Kind::Picked;
+    e.pick = {true, face, part, scene_.instances()[part].shell, scene_.surface_type(face), 0, 0};
+    picked(e);
+    return {};
+}
+
+void Core::clear_selection() {
+    if (picked_count_ == 0) return;
+    Event e{};
+    e.kind = Event::Kind::Picked; // (a pick of nothing)
+    picked(e);
+}
+
+uint32_t Core::selection(FaceFacts out[2]) const {
+    for (uint32_t i = 0; i < picked_count_; ++i) (void)facts(picked_[i].instance, picked_[i].face, out[i]); // (forgotten when left out)
+    return picked_count_;
+}
+
+void Core::set_measuring(bool on) {
+    if (!scene_.loaded() || on == measuring()) return;
+    presenter_.overlay().set_measuring(on);
+    if (picked_count_ > 1) picked_count_ = 1; // measuring starts from the face picked, if any
+    show_measurement();
+    highlight();
+    presenter_.invalidate();
+}
+
+Measurement Core::measure(const FaceFacts& a, const FaceFacts& b) const {
+    Measurement m;
+    geom::FaceGeometry g[2];
+    if (!a.hit || !b.hit || !check_face(a.part, a.face).ok() || !check_face(b.part, b.face).ok() ||
+        !describe({a.face, a.part}, g[0]).ok() || !describe({b.face, b.part}, g[1]).ok()) {
+        return m;
+    }
+    const geom::Relation r = geom::relate(g[0], g[1]);
+    static_assert(uint8_t(Measurement::Kind::Points) == uint8_t(geom::Relation::Kind::Points), "Measurement::Kind is geom's");
+    m.kind = Measurement::Kind(uint8_t(r.kind));
+    m.parallel = r.parallel, m.has_distance = r.has_distance;
+    m.distance_mm = r.distance, m.angle_deg = r.angle * 57.29577951308232;
+    return m;
 }
 
 Event Core::pick_at(int16_t x, int16_t y) {

@@ -31,28 +31,51 @@ void Core::section_changed() {
 
 void Core::section_next() {
     // off -> the picked planar face's plane (when one is picked) -> x -> y -> z -> off
-    module::Section s = camera_.section();
-    geom::FaceGeometry g;
-    const bool plane = picked_count_ > 0 &&
-                       describe(picked_[0], g).ok() &&
-                       g.type == pack::SurfaceType::Plane;
-    uint8_t kind = section_kind_;
-    do {
-        kind = uint8_t((kind + 1) % 5);
-    } while (kind == 1 && !plane);
-    section_kind_ = kind;
-    s.on = kind != 0;
-    if (kind == 1) {
-        // Through the face, cutting away what lies beyond it (its outward side): the slider then
-        // moves the plane into the part.
-        s.n[0] = float(g.axis.x), s.n[1] = float(g.axis.y), s.n[2] = float(g.axis.z);
-        s.offset = float(g.offset);
-    } else if (kind > 1) {
-        s.n[0] = kind == 2, s.n[1] = kind == 3, s.n[2] = kind == 4;
-        s.offset = scene_.centre()[kind - 2]; // through the model's middle
+    for (uint8_t kind = uint8_t((section_kind_ + 1) % 5);; kind = uint8_t((kind + 1) % 5)) {
+        if (kind == 0) {
+            set_section(module::Section{});
+            section_kind_ = 0;
+            return;
+        }
+        if (kind == 1 ? picked_count_ > 0 && section_through(picked_[0].instance, picked_[0].face).ok() : section_across(uint8_t(kind - 2)).ok()) return;
     }
-    camera_.set_section(s);
-    section_changed();
+}
+
+// Through a planar face, cutting away what lies beyond it (its outward side): the slider then
+// moves the plane into the part.
+Result Core::section_through(uint32_t part, uint32_t face) {
+    FaceFacts f;
+    if (const Result r = facts(part, face, f); !r.ok()) return r;
+    if (f.surface != Surface::Plane) return Result::fail(Status::Unsupported, "a section goes through a planar face only", {"face", face});
+    module::Section s;
+    s.on = true;
+    for (int k = 0; k < 3; ++k) s.n[k] = float(f.axis[k]);
+    s.offset = float(f.offset_mm);
+    set_section(s);
+    section_kind_ = 1;
+    return {};
+}
+
+Result Core::section_across(uint8_t axis) {
+    if (!scene_.loaded()) return Result::fail(Status::NotFound, "no model is loaded");
+    if (axis > 2) return Result::fail(Status::OutOfRange, "the axis is 0 (x), 1 (y) or 2 (z)", {"axis", axis});
+    module::Section s;
+    s.on = true;
+    s.n[0] = axis == 0, s.n[1] = axis == 1, s.n[2] = axis == 2;
+    s.offset = scene_.centre()[axis]; // through the model's middle
+    set_section(s);
+    section_kind_ = uint8_t(axis + 2);
+    return {};
+}
+
+Result Core::move_section(float by_mm) {
+    const module::Section& s = camera_.section();
+    if (!scene_.loaded() || !s.on) return Result::fail(Status::NotFound, "no section is on");
+    if (!std::isfinite(by_mm)) return Result::fail(Status::OutOfRange, "the distance must be finite");
+    float lo, hi;
+    section_range(s, lo, hi);
+    section_at(hi > lo ? by_mm / (hi - lo) : 0, true);
+    return {};
 }
 
 // The plane moved to `at` of its range (0: the near end, 1: the far end; clamped), or by
@@ -98,6 +121,22 @@ Result Core::show(uint32_t part, bool shown) {
     return {};
 }
 
+Result Core::isolate(uint32_t part) {
+    if (const Result r = check_part(part); !r.ok()) return r;
+    if (part >= module::Scene::kMaxHideable) {
+        return Result::fail(Status::OutOfRange, "only the first parts can be hidden (Viewer::kMaxHideableParts)", {"part", part});
+    }
+    const uint32_t parts = uint32_t(scene_.instances().size());
+    for (uint32_t i = 0; i < parts && i < module::Scene::kMaxHideable; ++i) (void)show(i, i == part); // (each one hideable)
+    return {};
+}
+
+void Core::show_all() {
+    if (!scene_.loaded()) return;
+    scene_.show_all();
+    presenter_.invalidate();
+}
+
 void Core::tool(Action a) {
     if (!scene_.loaded()) return;
     const uint32_t parts = uint32_t(scene_.instances().size());
@@ -115,14 +154,9 @@ void Core::tool(Action a) {
         if (chosen_part_ != ~0u) (void)show(chosen_part_, false); // past kMaxHideable: stays shown (show() says why)
         return;
     case Action::IsolatePart:
-        if (chosen_part_ == ~0u || chosen_part_ >= module::Scene::kMaxHideable) return;
-        for (uint32_t i = 0; i < parts && i < module::Scene::kMaxHideable; ++i) scene_.set_shown(i, i == chosen_part_);
-        presenter_.invalidate();
+        if (chosen_part_ != ~0u) (void)isolate(chosen_part_); // (likewise)
         return;
-    case Action::ShowAllParts:
-        scene_.show_all();
-        presenter_.invalidate();
-        return;
+    case Action::ShowAllParts: show_all(); return;
     default: return;
     }
 }
@@ -144,61 +178,6 @@ bool Core::tap_parts(int16_t x, int16_t y) {
     }
     presenter_.invalidate();
     return true;
-}
-
-// The public face of the tools.
-uint32_t Viewer::part_count() const {
-    const Core& c = *static_cast<const Core*>(this);
-    return c.scene().loaded() ? uint32_t(c.scene().instances().size()) : 0;
-}
-
-Viewer::Part Viewer::part(uint32_t i) const {
-    const Core& c = *static_cast<const Core*>(this);
-    if (i >= part_count()) return {"", "", 0, false};
-    const module::Scene& s = c.scene();
-    const uint32_t shell = s.instances()[i].shell;
-    return {s.part_name(shell), s.instance_name(i), s.part(shell).face_count, s.shown(i)};
-}
-
-Result Viewer::show_part(uint32_t i, bool shown) { return static_cast<Core*>(this)->show(i, shown); }
-void Viewer::choose_part(uint32_t i) { static_cast<Core*>(this)->choose(i); }
-uint32_t Viewer::chosen_part() const { return static_cast<const Core*>(this)->chosen_part(); }
-const char* Viewer::model_name() const {
-    const Core& c = *static_cast<const Core*>(this);
-    return c.scene().loaded() ? c.scene().model_name() : "";
-}
-
-Viewer::SectionPlane Viewer::section() const {
-    const module::Section& s = static_cast<const Core*>(this)->camera().section();
-    return {s.on, {s.n[0], s.n[1], s.n[2]}, s.offset};
-}
-
-void Viewer::set_section(const SectionPlane& p) {
-    Core& c = *static_cast<Core*>(this);
-    module::Section s;
-    const float len = std::sqrt(p.normal[0] * p.normal[0] + p.normal[1] * p.normal[1] + p.normal[2] * p.normal[2]);
-    s.on = p.on && len > 0 && std::isfinite(len) && std::isfinite(p.offset_mm);
-    if (s.on) {
-        for (int k = 0; k < 3; ++k) s.n[k] = p.normal[k] / len;
-        s.offset = p.offset_mm;
-    }
-    c.set_section(s);
-}
-
-Viewer::CameraView Viewer::camera() const {
-    const Core& c = *static_cast<const Core*>(this);
-    CameraView v{};
-    if (!c.scene().loaded()) return v;
-    const module::Camera& cam = c.camera();
-    cam.rotation(v.rotation);
-    // The view is R (p - centre) + pan: the target is the centre less the pan turned back.
-    const float* centre = c.scene().centre();
-    const module::View& view = cam.view();
-    for (int k = 0; k < 3; ++k) v.target_mm[k] = centre[k] - (v.rotation[k] * view.pan_x + v.rotation[3 + k] * view.pan_y);
-    v.distance_mm = cam.distance_mm(c.scene());
-    v.focal_px = module::Camera::focal_px(c.display().width, c.display().height);
-    v.parallel = view.ortho;
-    return v;
 }
 
 } // namespace facet

@@ -1,6 +1,8 @@
-// The viewer's views: framing the model (or a face), the standard views and the glide to them,
-// the display mode.
+// The viewer's views: framing the model (or a part, or a face), the standard views and the
+// glide to them, the orbit set at once, the projection, the display mode.
 #include "core.h"
+
+#include <cmath>
 
 namespace facet {
 
@@ -64,6 +66,56 @@ void Core::fit_view(bool keep_direction, bool from_here) {
         camera_.fit();
     }
     if (sampled) framer_.start(config_.display.width, config_.display.height, presenter_.overlay().taken());
+}
+
+namespace {
+constexpr float kDegrees = 57.2957795f;
+static_assert(uint8_t(StandardView::Iso) == uint8_t(module::Standard::Iso) && uint8_t(StandardView::Top) == uint8_t(module::Standard::Top),
+              "StandardView is module::Standard");
+} // namespace
+
+Orbit Core::orbit() const {
+    const module::View& v = camera_.view();
+    return {v.yaw * kDegrees, v.pitch * kDegrees, v.zoom, {v.pan_x, v.pan_y}, v.ortho};
+}
+
+Result Core::set_orbit(const Orbit& o) {
+    if (!scene_.loaded()) return Result::fail(Status::NotFound, "no model is loaded");
+    const float values[] = {o.yaw_deg, o.pitch_deg, o.dolly, o.pan_mm[0], o.pan_mm[1]};
+    for (const float x : values) {
+        if (!std::isfinite(x)) return Result::fail(Status::OutOfRange, "an orbit's values must be finite");
+    }
+    if (!(o.dolly >= module::Camera::kNearest && o.dolly <= module::Camera::kFarthest)) {
+        return Result::fail(Status::OutOfRange, "the orbit's dolly is outside 0.05 to 20");
+    }
+    glide_.phase = Glide::Phase::None;
+    framer_.stop();
+    camera_.set_view({o.yaw_deg / kDegrees, o.pitch_deg / kDegrees, o.dolly, o.pan_mm[0], o.pan_mm[1], o.parallel});
+    view_changed();
+    return {};
+}
+
+void Core::show_view(StandardView v) { glide_to(module::standard_view(module::Standard(uint8_t(v)), camera_.view())); }
+
+void Core::fit() {
+    if (!scene_.loaded()) return;
+    fit_view(true);
+    view_changed();
+    user_moved_ = false; // framed again once the faces are in
+}
+
+Result Core::fit_part(uint32_t part, uint32_t face) {
+    if (const Result r = face == ~0u ? check_part(part) : check_face(part, face); !r.ok()) return r;
+    glide_to(camera_.view(), part, face);
+    return {};
+}
+
+void Core::set_parallel(bool parallel) {
+    // From the view under way if a glide is (a standard view asked for just before stays asked for).
+    module::View v = glide_.phase != Glide::Phase::None ? glide_.target.view() : camera_.view();
+    if (v.ortho == parallel) return;
+    v.ortho = parallel;
+    glide_to(v); // framed again: a parallel view of the same zoom is not the same size
 }
 
 void Core::set_mode(DisplayMode m) {
