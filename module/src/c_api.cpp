@@ -21,6 +21,13 @@ static_assert(int(Activity::Idle) == FACET_ACTIVITY_IDLE && int(Flush::Scanout) 
               "the C enums are the C++ ones");
 static_assert(uint32_t(KeyHome) == uint32_t(FACET_KEY_HOME), "the C keys are facet::Key");
 static_assert(sizeof(facet_area) == sizeof(Area), "facet_area is facet::Area");
+static_assert(int(Action::ShowAllParts) == FACET_ACTION_SHOW_ALL_PARTS && int(Action::Measure) == FACET_ACTION_MEASURE &&
+                  int(Action::Projection) == FACET_ACTION_PROJECTION, "the C actions are facet::Action");
+static_assert(int(DisplayMode::SeeThrough) == FACET_MODE_SEE_THROUGH, "the C display modes are facet::DisplayMode");
+static_assert(int(StandardView::Iso) == FACET_VIEW_ISO, "the C standard views are facet::StandardView");
+static_assert(int(Surface::Extrusion) == FACET_SURFACE_EXTRUSION && int(Surface::BSpline) == FACET_SURFACE_BSPLINE,
+              "the C surfaces are facet::Surface");
+static_assert(int(Measurement::Kind::Points) == FACET_MEASURE_POINTS, "the C measurement kinds are facet::Measurement's");
 
 facet_result to_c(const Result& r) {
     return {facet_status(r.status), r.what, r.where.kind, r.where.index, r.at.kind, r.at.index};
@@ -82,6 +89,22 @@ void event_thunk(void* user, const Event& e) {
     }
     c.why = to_c(e.why);
     b.on_event(b.event_user, &c);
+}
+
+facet_face_facts facts_to_c(const FaceFacts& f) {
+    facet_face_facts c;
+    std::memset(&c, 0, sizeof c);
+    c.hit = f.hit, c.part = f.part, c.face = f.face, c.surface = facet_surface(f.surface), c.hole = f.hole;
+    std::memcpy(c.origin_mm, f.origin_mm, sizeof c.origin_mm);
+    std::memcpy(c.axis, f.axis, sizeof c.axis);
+    c.offset_mm = f.offset_mm, c.radius_mm = f.radius_mm, c.minor_mm = f.minor_mm, c.half_angle_deg = f.half_angle_deg;
+    c.x = f.x, c.y = f.y;
+    return c;
+}
+FaceFacts facts_from_c(const facet_face_facts& c) { // (measure() reads the part and the face alone)
+    FaceFacts f;
+    f.hit = c.hit != 0, f.part = c.part, f.face = c.face;
+    return f;
 }
 
 Viewer* cpp(facet_viewer* v) { return reinterpret_cast<Viewer*>(v); }
@@ -158,20 +181,195 @@ facet_viewer* facet_create(const facet_config* c, void* workspace, size_t bytes,
     return reinterpret_cast<facet_viewer*>(v);
 }
 
+// A NULL viewer: a call with a result says so; the others do nothing or return zeros.
+#define FACET_NEED_VIEWER(v)                                                    \
+    do {                                                                        \
+        if (!(v)) return to_c(Result::fail(Status::OutOfRange, "no viewer")); \
+    } while (0)
+
 facet_result facet_load(facet_viewer* v, const void* file, uint32_t file_bytes, void* memory, uint32_t memory_bytes) {
+    FACET_NEED_VIEWER(v);
     return to_c(cpp(v)->load(file, file_bytes, memory, memory_bytes));
 }
-facet_activity facet_step(facet_viewer* v, uint32_t budget_us) { return facet_activity(cpp(v)->step(budget_us)); }
-void facet_flush_done(facet_viewer* v) { cpp(v)->flush_done(); }
-void facet_key(facet_viewer* v, uint32_t key) { cpp(v)->key(key); }
-void facet_pointer(facet_viewer* v, int16_t dx, int16_t dy, uint8_t buttons) { cpp(v)->pointer(dx, dy, buttons); }
-void facet_wheel(facet_viewer* v, int16_t clicks) { cpp(v)->wheel(clicks); }
-void facet_touch(facet_viewer* v, uint8_t id, int16_t x, int16_t y, int down) { cpp(v)->touch(id, x, y, down != 0); }
+facet_activity facet_step(facet_viewer* v, uint32_t budget_us) { return v ? facet_activity(cpp(v)->step(budget_us)) : FACET_ACTIVITY_IDLE; }
+void facet_flush_done(facet_viewer* v) {
+    if (v) cpp(v)->flush_done();
+}
+void facet_key(facet_viewer* v, uint32_t key) {
+    if (v) cpp(v)->key(key);
+}
+void facet_pointer(facet_viewer* v, int16_t dx, int16_t dy, uint8_t buttons) {
+    if (v) cpp(v)->pointer(dx, dy, buttons);
+}
+void facet_wheel(facet_viewer* v, int16_t clicks) {
+    if (v) cpp(v)->wheel(clicks);
+}
+void facet_touch(facet_viewer* v, uint8_t id, int16_t x, int16_t y, int down) {
+    if (v) cpp(v)->touch(id, x, y, down != 0);
+}
 
 facet_stats facet_get_stats(const facet_viewer* v) {
+    if (!v) return facet_stats{};
     const Stats s = cpp(v)->stats();
     return {s.faces, s.done, s.failed, s.triangles, s.vertices, s.pass, s.mesh_bytes, s.arena_peak_bytes, s.pack_bytes,
             s.pack_file_bytes, s.workspace_peak_bytes, s.tolerance_mm, s.refused, s.deferred};
+}
+
+void facet_act(facet_viewer* v, facet_action a) {
+    if (v && unsigned(a) <= unsigned(FACET_ACTION_SHOW_ALL_PARTS)) cpp(v)->act(Action(a));
+}
+uint32_t facet_key_binding_count(void) { return key_bindings().count; }
+facet_key_binding facet_get_key_binding(uint32_t i) {
+    const KeyBindings k = key_bindings();
+    if (i >= k.count) return {0, FACET_ACTION_NONE, nullptr};
+    return {k.table[i].key, facet_action(k.table[i].action), k.table[i].help};
+}
+
+facet_model_info facet_get_model(const facet_viewer* v) {
+    const ModelInfo m = v ? cpp(v)->model() : ModelInfo{};
+    return {m.name, m.unit, m.unit_mm, m.parts, m.faces, m.edges, m.boxed_parts, m.boxed_faces,
+            {m.centre_mm[0], m.centre_mm[1], m.centre_mm[2]}, m.radius_mm};
+}
+
+facet_orbit facet_get_orbit(const facet_viewer* v) {
+    facet_orbit z;
+    std::memset(&z, 0, sizeof z);
+    if (!v) return z;
+    const Orbit o = cpp(v)->orbit();
+    return {o.yaw_deg, o.pitch_deg, o.dolly, {o.pan_mm[0], o.pan_mm[1]}, uint8_t(o.parallel)};
+}
+facet_result facet_set_orbit(facet_viewer* v, const facet_orbit* o) {
+    FACET_NEED_VIEWER(v);
+    if (!o) return to_c(Result::fail(Status::OutOfRange, "no orbit"));
+    return to_c(cpp(v)->set_orbit({o->yaw_deg, o->pitch_deg, o->dolly, {o->pan_mm[0], o->pan_mm[1]}, o->parallel != 0}));
+}
+facet_camera facet_get_camera(const facet_viewer* v) {
+    facet_camera c;
+    std::memset(&c, 0, sizeof c);
+    if (!v) return c;
+    const Viewer::CameraView k = cpp(v)->camera();
+    std::memcpy(c.rotation, k.rotation, sizeof c.rotation);
+    std::memcpy(c.target_mm, k.target_mm, sizeof c.target_mm);
+    c.distance_mm = k.distance_mm, c.focal_px = k.focal_px, c.parallel = k.parallel;
+    return c;
+}
+void facet_show_view(facet_viewer* v, facet_standard_view view) {
+    if (v && unsigned(view) <= unsigned(FACET_VIEW_ISO)) cpp(v)->show_view(StandardView(view));
+}
+void facet_fit(facet_viewer* v) {
+    if (v) cpp(v)->fit();
+}
+facet_result facet_fit_part(facet_viewer* v, uint32_t part) {
+    FACET_NEED_VIEWER(v);
+    return to_c(cpp(v)->fit_part(part));
+}
+facet_result facet_fit_face(facet_viewer* v, uint32_t part, uint32_t face) {
+    FACET_NEED_VIEWER(v);
+    return to_c(cpp(v)->fit_face(part, face));
+}
+void facet_set_parallel(facet_viewer* v, int parallel) {
+    if (v) cpp(v)->set_parallel(parallel != 0);
+}
+
+facet_display_mode facet_get_display_mode(const facet_viewer* v) {
+    return v ? facet_display_mode(cpp(v)->display_mode()) : FACET_MODE_SHADED_EDGES;
+}
+facet_result facet_set_display_mode(facet_viewer* v, facet_display_mode mode) {
+    FACET_NEED_VIEWER(v);
+    if (unsigned(mode) > unsigned(FACET_MODE_SEE_THROUGH)) return to_c(Result::fail(Status::OutOfRange, "no such display mode"));
+    cpp(v)->set_display_mode(DisplayMode(mode));
+    return {};
+}
+float facet_get_detail(const facet_viewer* v) { return v ? cpp(v)->detail() : 0.0f; }
+facet_result facet_set_detail(facet_viewer* v, float factor) {
+    FACET_NEED_VIEWER(v);
+    return to_c(cpp(v)->set_detail(factor));
+}
+
+facet_face_facts facet_pick(facet_viewer* v, int16_t x, int16_t y) {
+    if (!v) return facts_to_c(FaceFacts{});
+    return facts_to_c(cpp(v)->pick(x, y));
+}
+facet_result facet_get_face(const facet_viewer* v, uint32_t part, uint32_t face, facet_face_facts* out) {
+    FACET_NEED_VIEWER(v);
+    if (!out) return to_c(Result::fail(Status::OutOfRange, "no facet_face_facts to fill"));
+    FaceFacts f;
+    const Result r = cpp(v)->facts(part, face, f);
+    *out = facts_to_c(f);
+    return to_c(r);
+}
+facet_result facet_select(facet_viewer* v, uint32_t part, uint32_t face) {
+    FACET_NEED_VIEWER(v);
+    return to_c(cpp(v)->select(part, face));
+}
+void facet_clear_selection(facet_viewer* v) {
+    if (v) cpp(v)->clear_selection();
+}
+uint32_t facet_get_selection(const facet_viewer* v, facet_face_facts out[2]) {
+    if (!v || !out) return 0;
+    FaceFacts f[2];
+    const uint32_t n = cpp(v)->selection(f);
+    for (uint32_t i = 0; i < n; ++i) out[i] = facts_to_c(f[i]);
+    return n;
+}
+void facet_set_measuring(facet_viewer* v, int on) {
+    if (v) cpp(v)->set_measuring(on != 0);
+}
+int facet_get_measuring(const facet_viewer* v) { return v && cpp(v)->measuring(); }
+facet_measurement facet_measure(const facet_viewer* v, const facet_face_facts* a, const facet_face_facts* b) {
+    facet_measurement m;
+    std::memset(&m, 0, sizeof m);
+    if (!v || !a || !b) return m;
+    const Measurement r = cpp(v)->measure(facts_from_c(*a), facts_from_c(*b));
+    m.kind = facet_measure_kind(r.kind), m.parallel = r.parallel, m.has_distance = r.has_distance;
+    m.distance_mm = r.distance_mm, m.angle_deg = r.angle_deg;
+    return m;
+}
+uint32_t facet_get_measurement_lines(const facet_viewer* v, const char* lines[3]) { return v && lines ? cpp(v)->measurement(lines) : 0; }
+
+uint32_t facet_part_count(const facet_viewer* v) { return v ? cpp(v)->part_count() : 0; }
+facet_part facet_get_part(const facet_viewer* v, uint32_t i) {
+    if (!v) return {"", "", 0, 0};
+    const Viewer::Part p = cpp(v)->part(i);
+    return {p.name, p.instance, p.faces, uint8_t(p.shown)};
+}
+facet_result facet_show_part(facet_viewer* v, uint32_t i, int shown) {
+    FACET_NEED_VIEWER(v);
+    return to_c(cpp(v)->show_part(i, shown != 0));
+}
+facet_result facet_isolate_part(facet_viewer* v, uint32_t i) {
+    FACET_NEED_VIEWER(v);
+    return to_c(cpp(v)->isolate_part(i));
+}
+void facet_show_all_parts(facet_viewer* v) {
+    if (v) cpp(v)->show_all_parts();
+}
+void facet_choose_part(facet_viewer* v, uint32_t i) {
+    if (v) cpp(v)->choose_part(i);
+}
+uint32_t facet_chosen_part(const facet_viewer* v) { return v ? cpp(v)->chosen_part() : ~0u; }
+
+facet_section facet_get_section(const facet_viewer* v) {
+    const Viewer::SectionPlane p = v ? cpp(v)->section() : Viewer::SectionPlane{};
+    return {uint8_t(p.on), {p.normal[0], p.normal[1], p.normal[2]}, p.offset_mm};
+}
+facet_result facet_set_section(facet_viewer* v, const facet_section* p) {
+    FACET_NEED_VIEWER(v);
+    if (!p) return to_c(Result::fail(Status::OutOfRange, "no facet_section"));
+    cpp(v)->set_section({p->on != 0, {p->normal[0], p->normal[1], p->normal[2]}, p->offset_mm});
+    return {};
+}
+facet_result facet_section_through(facet_viewer* v, uint32_t part, uint32_t face) {
+    FACET_NEED_VIEWER(v);
+    return to_c(cpp(v)->section_through(part, face));
+}
+facet_result facet_section_across(facet_viewer* v, uint8_t axis) {
+    FACET_NEED_VIEWER(v);
+    return to_c(cpp(v)->section_across(axis));
+}
+facet_result facet_move_section(facet_viewer* v, float by_mm) {
+    FACET_NEED_VIEWER(v);
+    return to_c(cpp(v)->move_section(by_mm));
 }
 
 } // extern "C"

@@ -1,8 +1,9 @@
-/* facet: the C API, a thin layer over part of the C++ one (facet/viewer.h): creating a viewer,
- * loading a pack, stepping, input (keys, the pointer, the wheel, touch), flush_done and the
- * statistics, under the same rules for memory, threads and interrupts (read viewer.h's head).
- * The C++ API has more (display modes, parts, the section plane, the camera, measurements);
- * they are not in C yet. C99.
+/* facet: the C API, a thin layer over the C++ one (facet/viewer.h), call for call: creating a
+ * viewer, loading a pack, stepping, input (keys, the pointer, the wheel, touch), and every action
+ * of the built-in interface (the camera and the standard views, fitting, the projection, display
+ * modes, detail, picking, the selection and measuring, parts, the section plane), under the same
+ * rules for memory, threads and interrupts (read viewer.h's head). Every call takes a NULL viewer
+ * (a call that returns a facet_result says so; the others do nothing or return zeros). C99.
  *
  *   static uint8_t workspace[FACET_WORKSPACE_BYTES_DEFAULT] __attribute__((aligned(8)));
  *   facet_config cfg;
@@ -142,6 +143,117 @@ void facet_pointer(facet_viewer *viewer, int16_t dx, int16_t dy, uint8_t buttons
 void facet_wheel(facet_viewer *viewer, int16_t clicks);
 void facet_touch(facet_viewer *viewer, uint8_t id, int16_t x, int16_t y, int down);
 facet_stats facet_get_stats(const facet_viewer *viewer);
+
+/* Every action of the built-in interface, as its keys and buttons do it (facet::Action). */
+typedef enum {
+    FACET_ACTION_NONE, FACET_ACTION_TURN_LEFT, FACET_ACTION_TURN_RIGHT, FACET_ACTION_TILT_UP, FACET_ACTION_TILT_DOWN,
+    FACET_ACTION_ZOOM_IN, FACET_ACTION_ZOOM_OUT, FACET_ACTION_PAN_LEFT, FACET_ACTION_PAN_RIGHT, FACET_ACTION_PAN_UP,
+    FACET_ACTION_PAN_DOWN, FACET_ACTION_FIT, FACET_ACTION_COARSER, FACET_ACTION_FINER, FACET_ACTION_NEXT_DETAIL,
+    FACET_ACTION_VIEW_FRONT, FACET_ACTION_VIEW_BACK, FACET_ACTION_VIEW_RIGHT, FACET_ACTION_VIEW_LEFT, FACET_ACTION_VIEW_TOP,
+    FACET_ACTION_VIEW_BOTTOM, FACET_ACTION_VIEW_ISO, FACET_ACTION_PROJECTION, FACET_ACTION_NEXT_DISPLAY_MODE,
+    FACET_ACTION_NEXT_VIEW, FACET_ACTION_MEASURE, FACET_ACTION_HELP, FACET_ACTION_SECTION, FACET_ACTION_SECTION_IN,
+    FACET_ACTION_SECTION_OUT, FACET_ACTION_PARTS, FACET_ACTION_NEXT_PART, FACET_ACTION_HIDE_PART, FACET_ACTION_ISOLATE_PART,
+    FACET_ACTION_SHOW_ALL_PARTS
+} facet_action;
+void facet_act(facet_viewer *viewer, facet_action action); /* as if its key were pressed */
+/* The keys' table, for a help screen: how many, and each (NULL help past the last). */
+typedef struct { uint32_t key; facet_action action; const char *help; } facet_key_binding;
+uint32_t facet_key_binding_count(void);
+facet_key_binding facet_get_key_binding(uint32_t index);
+
+/* The loaded model (zeros and "" before a load). */
+typedef struct {
+    const char *name, *unit; /* the STEP file's top product; its length unit: mm, cm, m, in, ft or units */
+    float unit_mm;
+    uint32_t parts, faces, edges;
+    uint32_t boxed_parts, boxed_faces; /* larger than the memory: parts left out now (drawn as boxes) */
+    float centre_mm[3], radius_mm;     /* the placed model's sphere */
+} facet_model_info;
+facet_model_info facet_get_model(const facet_viewer *viewer);
+
+/* The camera: an orbit about the model's centre (yaw about z, then pitch, degrees; the eye's
+ * distance as a factor of the fitted one, < 1 closer, 0.05 to 20; a pan in mm along the screen's
+ * right and up; parallel or perspective), set at once; the standard views and fits glide. */
+typedef struct { float yaw_deg, pitch_deg, dolly, pan_mm[2]; uint8_t parallel; } facet_orbit;
+typedef enum {
+    FACET_VIEW_FRONT, FACET_VIEW_BACK, FACET_VIEW_RIGHT, FACET_VIEW_LEFT, FACET_VIEW_TOP, FACET_VIEW_BOTTOM, FACET_VIEW_ISO
+} facet_standard_view;
+/* For marks of one's own over the model (facet::Viewer::CameraView says how to project). */
+typedef struct { float rotation[9], target_mm[3], distance_mm, focal_px; uint8_t parallel; } facet_camera;
+facet_orbit facet_get_orbit(const facet_viewer *viewer);
+facet_result facet_set_orbit(facet_viewer *viewer, const facet_orbit *orbit);
+facet_camera facet_get_camera(const facet_viewer *viewer);
+void facet_show_view(facet_viewer *viewer, facet_standard_view view);
+void facet_fit(facet_viewer *viewer);
+facet_result facet_fit_part(facet_viewer *viewer, uint32_t part);
+facet_result facet_fit_face(facet_viewer *viewer, uint32_t part, uint32_t face);
+void facet_set_parallel(facet_viewer *viewer, int parallel);
+
+typedef enum {
+    FACET_MODE_SHADED_EDGES, FACET_MODE_SHADED, FACET_MODE_WIREFRAME, FACET_MODE_HIDDEN_LINE, FACET_MODE_SEE_THROUGH
+} facet_display_mode;
+facet_display_mode facet_get_display_mode(const facet_viewer *viewer);
+facet_result facet_set_display_mode(facet_viewer *viewer, facet_display_mode mode);
+/* The level of detail as a factor of the default tolerance: 1/8 (finest) to 16. */
+float facet_get_detail(const facet_viewer *viewer);
+facet_result facet_set_detail(facet_viewer *viewer, float factor);
+
+/* A face and its surface's exact values, placed (facet::FaceFacts). */
+typedef enum {
+    FACET_SURFACE_NONE, FACET_SURFACE_PLANE, FACET_SURFACE_CYLINDER, FACET_SURFACE_CONE, FACET_SURFACE_SPHERE,
+    FACET_SURFACE_TORUS, FACET_SURFACE_BSPLINE, FACET_SURFACE_REVOLUTION, FACET_SURFACE_EXTRUSION
+} facet_surface;
+typedef struct {
+    uint8_t hit;
+    uint32_t part, face;
+    facet_surface surface;
+    uint8_t hole;
+    double origin_mm[3], axis[3], offset_mm, radius_mm, minor_mm, half_angle_deg;
+    int16_t x, y;
+} facet_face_facts;
+typedef enum {
+    FACET_MEASURE_NONE, FACET_MEASURE_PLANES, FACET_MEASURE_PLANE_AXIS, FACET_MEASURE_AXES, FACET_MEASURE_PLANE_POINT,
+    FACET_MEASURE_AXIS_POINT, FACET_MEASURE_POINTS
+} facet_measure_kind;
+typedef struct {
+    facet_measure_kind kind;
+    uint8_t parallel, has_distance;
+    double distance_mm, angle_deg;
+} facet_measurement;
+/* The face drawn at a screen point (the screen's coordinates, as facet_touch), selecting nothing. */
+facet_face_facts facet_pick(facet_viewer *viewer, int16_t x, int16_t y);
+facet_result facet_get_face(const facet_viewer *viewer, uint32_t part, uint32_t face, facet_face_facts *out);
+/* The selection (highlighted; measuring: the second face selected joins the first). */
+facet_result facet_select(facet_viewer *viewer, uint32_t part, uint32_t face);
+void facet_clear_selection(facet_viewer *viewer);
+uint32_t facet_get_selection(const facet_viewer *viewer, facet_face_facts out[2]);
+void facet_set_measuring(facet_viewer *viewer, int on);
+int facet_get_measuring(const facet_viewer *viewer);
+facet_measurement facet_measure(const facet_viewer *viewer, const facet_face_facts *a, const facet_face_facts *b);
+/* The measurement panel's lines (up to 3, valid until the next input or load). */
+uint32_t facet_get_measurement_lines(const facet_viewer *viewer, const char *lines[3]);
+
+/* The parts (the pack's instances, in pack order). */
+typedef struct {
+    const char *name, *instance; /* the part's and the occurrence's own ("" when none) */
+    uint32_t faces;
+    uint8_t shown;
+} facet_part;
+uint32_t facet_part_count(const facet_viewer *viewer);
+facet_part facet_get_part(const facet_viewer *viewer, uint32_t index); /* "" and zeros past the last */
+facet_result facet_show_part(facet_viewer *viewer, uint32_t index, int shown);
+facet_result facet_isolate_part(facet_viewer *viewer, uint32_t index);
+void facet_show_all_parts(facet_viewer *viewer);
+void facet_choose_part(facet_viewer *viewer, uint32_t index); /* 0xFFFFFFFF: none */
+uint32_t facet_chosen_part(const facet_viewer *viewer);
+
+/* The section plane: normal . p = offset_mm; the side the normal points to is cut away. */
+typedef struct { uint8_t on; float normal[3], offset_mm; } facet_section;
+facet_section facet_get_section(const facet_viewer *viewer);
+facet_result facet_set_section(facet_viewer *viewer, const facet_section *plane);
+facet_result facet_section_through(facet_viewer *viewer, uint32_t part, uint32_t face); /* a planar face */
+facet_result facet_section_across(facet_viewer *viewer, uint8_t axis); /* 0 x, 1 y, 2 z: through the middle */
+facet_result facet_move_section(facet_viewer *viewer, float by_mm);
 
 #ifdef __cplusplus
 }
