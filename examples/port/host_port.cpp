@@ -1,7 +1,7 @@
-// The minimal example's port (minimal/port.h) on the host: a screen in memory, the pack from
+// The examples' port (port.h) on the host: a screen in memory, the pack from
 // a file; at idle the screen is written as an F565 image (tools/img.py) and the example ends.
 //
-//   facet-example-minimal MODEL.fpk OUT.f565 [WIDTHxHEIGHT]
+//   facet-example-NAME MODEL.fpk OUT.f565 [WIDTHxHEIGHT]
 #include "hal/fake.h"
 
 #include <chrono>
@@ -47,24 +47,24 @@ extern "C" uint32_t port_now_us(void*) {
     return uint32_t(duration_cast<microseconds>(steady_clock::now().time_since_epoch()).count());
 }
 
-extern "C" void port_log(const char* line) { std::printf("minimal: %s\n", line); }
+extern "C" void port_log(const char* line) { std::printf(PORT_NAME ": %s\n", line); }
 
 extern "C" int port_idle(void) {
-    if (!facet::hal::fake::write_f565(out, screen, width, height)) std::fprintf(stderr, "minimal: cannot write %s\n", out.c_str());
+    if (!facet::hal::fake::write_f565(out, screen, width, height)) std::fprintf(stderr, PORT_NAME ": cannot write %s\n", out.c_str());
     return 1;
 }
 
 int main(int argc, char** argv) {
     int w = 0, h = 0;
     if (argc < 3 || (argc == 4 && (std::sscanf(argv[3], "%dx%d", &w, &h) != 2 || w < 16 || h < 16 || w > 640 || h > 4096))) {
-        std::fprintf(stderr, "usage: facet-example-minimal MODEL.fpk OUT.f565 [WIDTHxHEIGHT (at most 640 wide)]\n");
+        std::fprintf(stderr, "usage: facet-example-" PORT_NAME " MODEL.fpk OUT.f565 [WIDTHxHEIGHT (at most 640 wide)]\n");
         return 2;
     }
     if (argc == 4) width = uint16_t(w), height = uint16_t(h);
     std::ifstream in(argv[1], std::ios::binary);
     const std::vector<char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     if (!in.eof() && !in.good()) {
-        std::fprintf(stderr, "minimal: cannot read %s\n", argv[1]);
+        std::fprintf(stderr, PORT_NAME ": cannot read %s\n", argv[1]);
         return 1;
     }
     file.assign(bytes.size() / 4 + 1, 0);

@@ -1,6 +1,6 @@
-// The minimal example's port (minimal/port.h) for the QEMU boards: the board's display with a
+// The examples' port (port.h) for the QEMU boards: the board's display with a
 // frame in RAM it scans out, the UART's keys, the board's clock, the pack its runner loaded.
-// At idle it takes the screenshot the test compares ("minimal") and ends the example.
+// At idle it takes the screenshot the test compares (PORT_NAME) and ends the example.
 #include "facet_board_config.h"
 #include "hal/board.h"
 #include "hal/print.h"
@@ -28,7 +28,7 @@ extern "C" uint16_t port_height(void) { return kH; }
 
 extern "C" void port_display_write(const facet_area* a, const facet_rgb565* pixels) {
     if (Status s = board->display.write({a->x, a->y, a->width, a->height}, pixels); !ok(s)) {
-        print(board->console, "minimal: the display refused an area ({})\n", s);
+        print(board->console, PORT_NAME ": the display refused an area ({})\n", s);
     }
 }
 
@@ -57,20 +57,20 @@ extern "C" uint32_t port_now_us(void*) {
     return uint32_t(board->clock.ticks() * 1'000'000 / board->clock.ticks_per_second());
 }
 
-extern "C" void port_log(const char* line) { print(board->console, "minimal: {}\n", line); }
+extern "C" void port_log(const char* line) { print(board->console, PORT_NAME ": {}\n", line); }
 
 // Idle: the test's screenshot, and the example is done (a product would wait for input).
 extern "C" int port_idle(void) {
-    print(board->console, "minimal: idle\n");
-    const Status s = board->capture ? board->capture->shot("minimal") : Status::Unsupported;
-    if (!ok(s)) print(board->console, "minimal: no screenshot ({})\n", s);
+    print(board->console, PORT_NAME ": idle\n");
+    const Status s = board->capture ? board->capture->shot(PORT_NAME) : Status::Unsupported;
+    if (!ok(s)) print(board->console, PORT_NAME ": no screenshot ({})\n", s);
     return 1;
 }
 
 int facet_main(hal::Board& b) {
     board = &b;
     if (Status s = b.display.show(frame); !ok(s)) {
-        print(b.console, "minimal: the display refused the frame ({})\n", s);
+        print(b.console, PORT_NAME ": the display refused the frame ({})\n", s);
         return 1;
     }
     return app_main();

@@ -1,6 +1,7 @@
-/* What the minimal example needs from the product it lives in: its panel, its input, a clock
- * and the pack (in flash or RAM). examples/port/ has these for the QEMU boards and the host;
- * in a product they are a few lines over its own drivers. */
+/* What the examples need from the product they live in: its panel, its input, a clock and the
+ * pack (in flash or RAM). examples/port/ has these for the QEMU boards and the host (each built
+ * with PORT_NAME, the example's name, for its log lines and screenshot); in a product they are
+ * a few lines over its own drivers. */
 #ifndef PORT_H
 #define PORT_H
 
