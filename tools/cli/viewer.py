@@ -38,10 +38,12 @@ def add(sub):
     p.add_argument('--headless', action='store_true', help='no window: screenshots to out/sim')
     p.set_defaults(run=cmd_sim)
 
-    p = sub.add_parser('example', help='examples/minimal (the C example) in QEMU and on the host',
-                       description='Build and run examples/minimal (C99, bands of 16 lines) in QEMU (versatilepb) '
-                       'and on the host; pictures under out/example/.')
+    p = sub.add_parser('example', help='a C example (examples/minimal or own-ui) in QEMU and on the host',
+                       description='Build and run a C example in QEMU (versatilepb) and on the host: examples/minimal '
+                       '(C99, bands of 16 lines) or examples/own-ui (a product screen with its own buttons, facet in '
+                       'a viewport, driven through the C API); pictures under out/example/.')
     p.add_argument('model', nargs='?', metavar='MODEL.step')
+    p.add_argument('--which', choices=('minimal', 'own-ui'), default='minimal', help='the example (default: minimal)')
     p.set_defaults(run=cmd_example)
 
     p = sub.add_parser('flash', help="the MIMXRT1060-EVKB's image and a model's pack onto the board",
@@ -115,13 +117,14 @@ def cmd_example(args, parser):
     build('host', 'qemu-versatilepb', quiet=True)
     out = fresh(os.path.join(ROOT, 'out', 'example'))
     fpk = model_pack(model, out)
-    say('examples/minimal on the host (480x272): out/example/host.f565')
-    if run([tool('facet-example-minimal'), fpk, os.path.join(out, 'host.f565'), '480x272']) != 0:
+    name = args.which
+    say(f'examples/{name} on the host (480x272): out/example/host.png')
+    if run([tool(f'facet-example-{name}'), fpk, os.path.join(out, 'host.f565'), '480x272']) != 0:
         raise Failure('the example failed on the host')
     run([sys.executable, 'tools/img.py', 'topng', os.path.join(out, 'host.f565'), os.path.join(out, 'host.png')])
-    say('examples/minimal in QEMU (versatilepb, 640x480, bands of 16 lines): out/example/qemu/minimal.png')
+    say(f'examples/{name} in QEMU (versatilepb, 640x480, bands of 16 lines): out/example/qemu/{name}.png')
     return run([sys.executable, 'tools/qemu/run.py', '--board', 'qemu-versatilepb',
-                '--elf', 'build/qemu-versatilepb/examples/facet-example-minimal.elf', '--out', os.path.join(out, 'qemu'),
+                '--elf', f'build/qemu-versatilepb/examples/facet-example-{name}.elf', '--out', os.path.join(out, 'qemu'),
                 '--load', f'{fpk}@{pack_address("qemu-versatilepb")}', '--timeout', '300'])
 
 
