@@ -5,6 +5,7 @@
 
 #include "core/format.h"
 
+#include "geom/pack.h"
 #include "geom/pack_file.h"
 #include "geom/pack_format.h"
 
@@ -123,6 +124,46 @@ bool load_pack_file(const std::string& path, LoadedPack& out, std::string& error
         error = path + ": " + error;
         return false;
     }
+    return true;
+}
+
+bool make_library(const std::vector<std::vector<uint8_t>>& files, std::vector<uint8_t>& out, std::string& error) {
+    if (files.empty() || files.size() > pack::kMaxLibraryEntries) {
+        error = "a library holds 1 to " + std::to_string(pack::kMaxLibraryEntries) + " models";
+        return false;
+    }
+    const size_t table_end = sizeof(pack::LibraryHeader) + files.size() * sizeof(pack::LibraryEntry);
+    std::vector<pack::LibraryEntry> table(files.size());
+    size_t at = (table_end + 7) & ~size_t(7);
+    for (size_t i = 0; i < files.size(); ++i) {
+        LoadedPack loaded;
+        Pack pack;
+        if (!load_pack_bytes(files[i], loaded, error)) {
+            error = "model " + std::to_string(i + 1) + ": " + error;
+            return false;
+        }
+        if (const Result r = pack.open(loaded.data(), loaded.bytes); !r.ok()) {
+            error = "model " + std::to_string(i + 1) + ": " + (r.what ? r.what : "not a sound pack");
+            return false;
+        }
+        pack::LibraryEntry& e = table[i];
+        std::memset(&e, 0, sizeof e);
+        std::strncpy(e.name, pack.model_name(), sizeof e.name - 1); // (a longer name is cut)
+        e.offset = uint32_t(at), e.bytes = uint32_t(files[i].size());
+        at = (at + files[i].size() + 7) & ~size_t(7);
+        if (at > pack::kMaxBlockedBytes) {
+            error = "the library would be over " + std::to_string(pack::kMaxBlockedBytes >> 20) + " MiB";
+            return false;
+        }
+    }
+    out.assign(at, 0);
+    pack::LibraryHeader h;
+    std::memcpy(h.magic, pack::kLibraryMagic, 4);
+    h.version = pack::kLibraryVersion, h.count = uint16_t(files.size()), h.total_bytes = uint32_t(at);
+    h.crc32 = pack::crc32(table.data(), uint32_t(table.size() * sizeof table[0]));
+    std::memcpy(out.data(), &h, sizeof h);
+    std::memcpy(out.data() + sizeof h, table.data(), table.size() * sizeof table[0]);
+    for (size_t i = 0; i < files.size(); ++i) std::memcpy(out.data() + table[i].offset, files[i].data(), files[i].size());
     return true;
 }
 

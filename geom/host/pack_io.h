@@ -29,4 +29,9 @@ bool load_pack_file(const std::string& path, LoadedPack& out, std::string& error
 // The same from bytes already in memory.
 bool load_pack_bytes(const std::vector<uint8_t>& file, LoadedPack& out, std::string& error);
 
+// A library (pack_format.h's LibraryHeader) of model files: each read back with the device's
+// code first (a file that is no sound pack is refused), named after its model, laid out
+// 8-byte aligned after the table. False with the reason in `error`.
+bool make_library(const std::vector<std::vector<uint8_t>>& files, std::vector<uint8_t>& out, std::string& error);
+
 } // namespace facet::geom

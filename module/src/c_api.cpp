@@ -12,7 +12,7 @@ namespace {
 using namespace facet;
 
 static_assert(int(Status::Io) == FACET_IO && int(Status::Busy) == FACET_BUSY, "the C statuses are facet::Status");
-static_assert(int(Event::Kind::WorkEnd) == FACET_EVENT_WORK_END && int(Event::Kind::Picked) == FACET_EVENT_PICKED,
+static_assert(int(Event::Kind::ModelFailed) == FACET_EVENT_MODEL_FAILED && int(Event::Kind::Picked) == FACET_EVENT_PICKED,
               "the C event kinds are facet::Event::Kind");
 static_assert(int(Work::Update) == FACET_WORK_UPDATE, "the C work kinds are facet::Work");
 static_assert(int(Work::Fit) == FACET_WORK_FIT, "the C work kinds are facet::Work");
@@ -21,7 +21,7 @@ static_assert(int(Activity::Idle) == FACET_ACTIVITY_IDLE && int(Flush::Scanout) 
               "the C enums are the C++ ones");
 static_assert(uint32_t(KeyHome) == uint32_t(FACET_KEY_HOME), "the C keys are facet::Key");
 static_assert(sizeof(facet_area) == sizeof(Area), "facet_area is facet::Area");
-static_assert(int(Action::ShowAllParts) == FACET_ACTION_SHOW_ALL_PARTS && int(Action::Measure) == FACET_ACTION_MEASURE &&
+static_assert(int(Action::Models) == FACET_ACTION_MODELS && int(Action::ShowAllParts) == FACET_ACTION_SHOW_ALL_PARTS && int(Action::Measure) == FACET_ACTION_MEASURE &&
                   int(Action::Projection) == FACET_ACTION_PROJECTION, "the C actions are facet::Action");
 static_assert(int(DisplayMode::SeeThrough) == FACET_MODE_SEE_THROUGH, "the C display modes are facet::DisplayMode");
 static_assert(int(StandardView::Iso) == FACET_VIEW_ISO, "the C standard views are facet::StandardView");
@@ -86,6 +86,7 @@ void event_thunk(void* user, const Event& e) {
     case Event::Kind::ViewChanged: c.u.view = {e.view.yaw_deg, e.view.pitch_deg, e.view.zoom}; break;
     case Event::Kind::WorkBegin:
     case Event::Kind::WorkEnd: c.u.work = {facet_work(e.work.what), e.work.item}; break;
+    case Event::Kind::ModelFailed: c.u.model.index = e.model.index; break;
     }
     c.why = to_c(e.why);
     b.on_event(b.event_user, &c);
@@ -192,6 +193,28 @@ facet_result facet_load(facet_viewer* v, const void* file, uint32_t file_bytes, 
     return to_c(cpp(v)->load(file, file_bytes, memory, memory_bytes));
 }
 facet_activity facet_step(facet_viewer* v, uint32_t budget_us) { return v ? facet_activity(cpp(v)->step(budget_us)) : FACET_ACTIVITY_IDLE; }
+void facet_unload(facet_viewer* v) {
+    if (v) cpp(v)->unload();
+}
+
+uint32_t facet_library_count(const void* library, uint32_t bytes) { return library_count(library, bytes); }
+facet_result facet_library_model(const void* library, uint32_t bytes, uint32_t index, facet_library_model_t* out) {
+    if (!out) return to_c(Result::fail(Status::OutOfRange, "no facet_library_model_t to fill"));
+    LibraryModel m;
+    const Result r = library_model(library, bytes, index, m);
+    *out = {m.file, m.bytes, m.name};
+    return to_c(r);
+}
+facet_result facet_set_library(facet_viewer* v, const void* library, uint32_t bytes, void* memory, uint32_t memory_bytes) {
+    FACET_NEED_VIEWER(v);
+    return to_c(cpp(v)->set_library(library, bytes, memory, memory_bytes));
+}
+facet_result facet_open_model(facet_viewer* v, uint32_t index) {
+    FACET_NEED_VIEWER(v);
+    return to_c(cpp(v)->open_model(index));
+}
+uint32_t facet_model_index(const facet_viewer* v) { return v ? cpp(v)->model_index() : ~0u; }
+
 void facet_flush_done(facet_viewer* v) {
     if (v) cpp(v)->flush_done();
 }
@@ -216,7 +239,7 @@ facet_stats facet_get_stats(const facet_viewer* v) {
 }
 
 void facet_act(facet_viewer* v, facet_action a) {
-    if (v && unsigned(a) <= unsigned(FACET_ACTION_SHOW_ALL_PARTS)) cpp(v)->act(Action(a));
+    if (v && unsigned(a) <= unsigned(FACET_ACTION_MODELS)) cpp(v)->act(Action(a));
 }
 uint32_t facet_key_binding_count(void) { return key_bindings().count; }
 facet_key_binding facet_get_key_binding(uint32_t i) {

@@ -27,6 +27,7 @@ constexpr KeyBinding kKeys[] = {
     {'p', Action::Parts, "the parts list"},  {'n', Action::NextPart, "choose the next part"},
     {'x', Action::HidePart, "hide the chosen part"}, {'o', Action::IsolatePart, "show the chosen part alone"},
     {'u', Action::ShowAllParts, "show every part"}, {'g', Action::NextDetail, "level of detail: finer, finest, coarser"},
+    {'b', Action::Models, "the models on the device (a library): tap one to open it"},
     {'h', Action::Help, "help: the keys and gestures"}, {'?', Action::Help, "help: the keys and gestures"},
 };
 

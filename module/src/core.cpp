@@ -55,7 +55,7 @@ void Core::work(Event::Kind kind, Work what, uint32_t item) {
     if (!in_piece_) drain();
 }
 
-Result Core::load(const void* file, uint32_t file_bytes, void* memory, uint32_t memory_bytes) {
+void Core::unload() {
     scheduler_.stop();
     framer_.stop();
     swap_.block = kNoBlock, swap_check_ = false;
@@ -64,6 +64,23 @@ Result Core::load(const void* file, uint32_t file_bytes, void* memory, uint32_t 
     presenter_.reset();
     scene_.close();
     pack_bytes_ = pack_file_bytes_ = 0;
+    model_index_ = kNoModel, pending_model_ = kNoModel;
+    picked_count_ = 0;
+    chosen_part_ = ~0u;
+    camera_.set_section({});
+    section_kind_ = 0;
+    module::Overlay& o = presenter_.overlay();
+    o.set_slider(false, 0.5f);
+    o.set_chosen(~0u);
+    o.set_lines(nullptr, 0);
+    highlight();
+}
+
+Result Core::load(const void* file, uint32_t file_bytes, void* memory, uint32_t memory_bytes) {
+    unload();
+    if (geom::is_library(file, file_bytes)) {
+        return Result::fail(Status::Unsupported, "a library of several models: set_library() and open_model() open one");
+    }
     const geom::PackFileKind kind = file ? geom::pack_file_kind(file, file_bytes) : geom::PackFileKind::Unknown;
     const bool decoding = kind != geom::PackFileKind::Pack && kind != geom::PackFileKind::Unknown;
     const uint32_t file_size = file ? geom::pack_file_bytes(file, file_bytes) : 0; // (a file in the pack memory is decoded over)
@@ -88,14 +105,6 @@ Result Core::load(const void* file, uint32_t file_bytes, void* memory, uint32_t 
     detail_part_ = ~0u, detail_radius_ = 0; // judged afresh
     camera_.fit();
     user_moved_ = false;
-    picked_count_ = 0;
-    chosen_part_ = ~0u;
-    camera_.set_section({});
-    section_kind_ = 0;
-    presenter_.overlay().set_slider(false, 0.5f);
-    presenter_.overlay().set_chosen(~0u);
-    highlight();
-    presenter_.overlay().set_lines(nullptr, 0);
     Event e{};
     e.kind = Event::Kind::Loaded;
     e.loaded = {scene_.face_count() - scene_.left_out().faces, scene_.edge_count() - scene_.left_out().edges, scene_.part_count(),
@@ -120,6 +129,12 @@ bool Core::boxes_while_sampling() const {
 }
 
 Activity Core::step(uint32_t budget_us) {
+    if (pending_model_ != kNoModel) { // a model the chooser asked for (a failure is its event)
+        const uint32_t m = pending_model_;
+        pending_model_ = kNoModel;
+        (void)open_model(m);
+        return Activity::Busy;
+    }
     if (!scene_.loaded()) return Activity::Idle;
     const uint32_t t0 = now();
     for (;;) {
@@ -223,10 +238,12 @@ void Core::view_changed() {
 }
 
 void Core::act(Action a) {
+    if (a == Action::Models) return toggle_models(); // (with no model too: after one failed to open)
     if (!scene_.loaded()) return;
     const float pan = 0.1f * scene_.radius(), turn = module::Camera::kTurn;
     switch (a) {
-    case Action::None: return;
+    case Action::None:
+    case Action::Models: return;
     case Action::TurnLeft: camera_.orbit(-turn, 0); break;
     case Action::TurnRight: camera_.orbit(turn, 0); break;
     case Action::TiltUp: camera_.orbit(0, -turn); break;

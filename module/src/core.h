@@ -4,6 +4,7 @@
 #include "controls.h"
 #include "fit.h"
 #include "facet/viewer.h"
+#include "geom/library.h"
 #include "geom/measure.h"
 #include "loader.h"
 #include "painter.h"
@@ -25,6 +26,13 @@ public:
     Core(const Config& config, module::Carver& carver, uint8_t* end);
 
     Result load(const void* file, uint32_t file_bytes, void* memory, uint32_t memory_bytes);
+    void unload();
+    // A library's models (library.cpp): the one open, and one a tap on the chooser asked for
+    // (opened at the next step, outside the input's handling).
+    Result set_library(const void* data, uint32_t bytes, void* memory, uint32_t memory_bytes);
+    Result open_model(uint32_t index);
+    uint32_t model_index() const { return model_index_; }
+    static constexpr uint32_t kNoModel = ~0u;
     Activity step(uint32_t budget_us);
     void flush_done() { presenter_.flush_done(); }
     void command(const module::Command& c);
@@ -180,6 +188,10 @@ private:
         geom::PackDecoder decoder;
     } swap_;
     module::Unpacked unpacked_; // a blocked pack's blocks and pack memory
+    geom::Library library_;
+    void* library_memory_ = nullptr;
+    uint32_t library_memory_bytes_ = 0;
+    uint32_t model_index_ = kNoModel, pending_model_ = kNoModel;
     uint32_t seen_moves_ = 0, seen_refined_ = 0; // the scene's moves and refinements the frames know of
     void detail_view_changed(); // when the view moved since the faces were last judged: judged again
     bool judge_with_view();     // the spheres' view from the camera's, if it moved (true then)
@@ -222,6 +234,8 @@ private:
     void section_changed();
     void section_range(const module::Section& s, float& lo, float& hi) const;
     bool tap_parts(int16_t x, int16_t y); // a tap on the parts list (true: it was the list's)
+    bool tap_models(int16_t x, int16_t y); // a tap on the models chooser (library.cpp)
+    void toggle_models();
     uint32_t chosen_part_ = ~0u;
     uint8_t section_kind_ = 0; // 0 off, 1 the picked plane, 2 x, 3 y, 4 z (or the application's)
     // Double tap: the last tap's place and time (without a clock: a second tap on the same spot).

@@ -159,6 +159,7 @@ void Overlay::draw(const render::Target& t, const StatusInfo& info) const {
         if (line_count_) panel(t);
         if (slider_on_) slider_bar(t);
         if (parts_open()) parts_list(t);
+        if (models_open()) models_list(t);
         if (help_) help_panel(t);
     }
     progress(t, info.finished, info.total);
@@ -241,16 +242,9 @@ void Overlay::parts_list(const render::Target& t) const {
     const Area p = parts_panel();
     if (!scene_ || !scene_->loaded() || p.height < kRow + kPartsFooter) return;
     const uint32_t count = uint32_t(scene_->instances().size());
-    render::fill_rect(t, p.x, p.y, p.width, p.height, kEdge);
-    render::fill_rect(t, p.x, p.y, p.width - 1, p.height, kBar);
     char text[128];
     format(text, sizeof text, "PARTS {}", count);
-    render::draw_text(t, p.x + 4, p.y + (kRow - render::kGlyphHeight) / 2, text, kText);
-    for (int i = 0; i < 2; ++i) { // scroll up, down
-        const int32_t x = p.width - (2 - i) * kScrollW;
-        render::fill_rect(t, x + 1, p.y + 1, kScrollW - 2, kRow - 2, kButton);
-        render::draw_text(t, x + (kScrollW - render::kCellWidth) / 2, p.y + (kRow - render::kGlyphHeight) / 2, i ? "v" : "^", kText);
-    }
+    list_head(t, p, text);
     const uint32_t rows = part_rows();
     for (uint32_t r = 0; r < rows && first_row_ + r < count; ++r) {
         const uint32_t part = first_row_ + r;
@@ -273,6 +267,46 @@ void Overlay::parts_list(const render::Target& t) const {
         render::draw_text(t, x + (w - render::text_width(kLabels[i])) / 2, y + (kPartsFooter - render::kGlyphHeight) / 2, kLabels[i],
                           chosen_ == ~0u && i < 2 ? kDim : kText);
     }
+}
+
+// A list panel's background and its header: the title, the scroll buttons at its right end.
+void Overlay::list_head(const render::Target& t, const Area& p, const char* title) const {
+    render::fill_rect(t, p.x, p.y, p.width, p.height, kEdge);
+    render::fill_rect(t, p.x, p.y, p.width - 1, p.height, kBar);
+    render::draw_text(t, p.x + 4, p.y + (kRow - render::kGlyphHeight) / 2, title, kText);
+    for (int i = 0; i < 2; ++i) { // scroll up, down
+        const int32_t x = p.width - (2 - i) * kScrollW;
+        render::fill_rect(t, x + 1, p.y + 1, kScrollW - 2, kRow - 2, kButton);
+        render::draw_text(t, x + (kScrollW - render::kCellWidth) / 2, p.y + (kRow - render::kGlyphHeight) / 2, i ? "v" : "^", kText);
+    }
+}
+
+// The models chooser: "MODELS n", then a row per model (its number and name), the open one lit.
+// (As many rows as the panel holds; a library of more shows its first ones.)
+void Overlay::models_list(const render::Target& t) const {
+    const Area p = parts_panel();
+    if (p.height < 2 * kRow) return;
+    char text[128];
+    format(text, sizeof text, "MODELS {}", library_->count());
+    list_head(t, p, text);
+    const uint32_t rows = uint32_t(p.height / kRow - 1);
+    for (uint32_t m = 0; m < rows && m < library_->count(); ++m) {
+        const int32_t y = p.y + kRow + int32_t(m) * kRow;
+        if (m == current_model_) render::fill_rect(t, p.x, y, p.width - 1, kRow, kButtonOn);
+        format(text, sizeof text, "{} {}", m + 1, library_->entry(m).name);
+        render::cut_text(text, (p.width - 8) / render::kCellWidth);
+        render::draw_text(t, p.x + 4, y + (kRow - render::kGlyphHeight) / 2, text, kText);
+    }
+}
+
+uint32_t Overlay::model_at(int16_t x, int16_t y) const {
+    if (!models_open()) return kNoRow;
+    const Area p = parts_panel();
+    if (!p.contains(x, y)) return kNoRow;
+    const int32_t dy = y - p.y;
+    if (dy < kRow) return kPanelRow;
+    const uint32_t m = uint32_t(dy - kRow) / uint32_t(kRow);
+    return m < library_->count() && m < uint32_t(p.height / kRow - 1) ? m : kPanelRow;
 }
 
 void Overlay::progress(const render::Target& t, uint32_t finished, uint32_t total) const {

@@ -6,6 +6,7 @@
 // while the faces fill in. Text in facet's own bitmap font (render/text.h). Everything is
 // opaque (an incremental frame draws over the last one) and clipped to the target's band.
 #include "facet/viewer.h"
+#include "geom/library.h"
 #include "render/raster.h"
 #include "scene.h"
 
@@ -61,7 +62,7 @@ public:
     // The parts list: a panel down the left side, a row per part (instance) with its box
     // (shown or hidden) and name, scroll buttons, and HIDE, ISOL and ALL for the chosen part.
     void set_scene(const Scene* scene) { scene_ = scene; }
-    void set_parts(bool open) { parts_open_ = open, first_row_ = 0; }
+    void set_parts(bool open) { parts_open_ = open, first_row_ = 0, models_open_ = models_open_ && !open; }
     bool parts_open() const { return parts_open_ && button_count_ > 0; }
     void set_chosen(uint32_t part); // highlighted row (scrolled into the list); ~0u: none
     struct PartsHit {
@@ -72,6 +73,17 @@ public:
     void scroll(int32_t rows);
     Area parts_panel() const;
     uint32_t part_rows() const; // rows the list shows at once
+
+    // The models chooser (a library's): the parts list's panel, a row per model, the one open
+    // highlighted; a tap on a row opens it. (Opening it closes the parts list.)
+    void set_library(const geom::Library* library) { library_ = library; }
+    void set_models(bool open, uint32_t current) {
+        models_open_ = open && library_ && library_->count() > 0, current_model_ = current;
+        parts_open_ = parts_open_ && !models_open_;
+    }
+    bool models_open() const { return models_open_ && button_count_ > 0; }
+    static constexpr uint32_t kNoRow = ~0u, kPanelRow = ~0u - 1;
+    uint32_t model_at(int16_t x, int16_t y) const; // the model's row under (x, y); kPanelRow: the panel elsewhere; kNoRow: not the panel
 
     void set_help(bool on) { help_ = on; }
     bool help() const { return help_; }
@@ -101,6 +113,8 @@ private:
     void help_panel(const render::Target& t) const;
     void slider_bar(const render::Target& t) const;
     void parts_list(const render::Target& t) const;
+    void models_list(const render::Target& t) const;
+    void list_head(const render::Target& t, const Area& p, const char* title) const;
 
     uint16_t width_ = 0, height_ = 0;
     int16_t status_rows_ = 0, toolbar_x_ = 0;
@@ -114,6 +128,9 @@ private:
     const Scene* scene_ = nullptr;
     bool parts_open_ = false;
     uint32_t first_row_ = 0, chosen_ = ~0u;
+    const geom::Library* library_ = nullptr;
+    bool models_open_ = false;
+    uint32_t current_model_ = kNoRow;
 };
 
 } // namespace facet::module

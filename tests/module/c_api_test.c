@@ -17,7 +17,7 @@ static uint8_t workspace[FACET_WORKSPACE_BYTES_DEFAULT] __attribute__((aligned(8
 static facet_rgb565 bands[2][W * LINES];
 static uint16_t depth[W * LINES];
 static facet_rgb565 screen[W * H];
-static int events[FACET_EVENT_WORK_END + 1];
+static int events[FACET_EVENT_MODEL_FAILED + 1];
 static int pending, failures;
 static int origin_x, origin_y; /* the viewer's rectangle on the screen (facet_display.x, y) */
 static facet_viewer *viewer;
@@ -40,7 +40,7 @@ static void flush(void *user, const facet_area *a, const facet_rgb565 *pixels) {
 
 static void on_event(void *user, const facet_event *e) {
     (void)user;
-    CHECK((int)e->kind >= 0 && e->kind <= FACET_EVENT_WORK_END);
+    CHECK((int)e->kind >= 0 && e->kind <= FACET_EVENT_MODEL_FAILED);
     ++events[e->kind];
     if (e->kind == FACET_EVENT_FRAME_DONE) CHECK(e->u.frame.faces_total > 0);
 }

@@ -20,7 +20,7 @@ static uint8_t workspace[FACET_WORKSPACE_BYTES_DEFAULT] __attribute__((aligned(8
 static uint8_t no_model[FACET_WORKSPACE_BASE_BYTES] __attribute__((aligned(8))); /* a second viewer's, never loaded */
 static facet_rgb565 frames[2][W * H];
 static uint16_t depth[2][W * H];
-static int events[FACET_EVENT_WORK_END + 1];
+static int events[FACET_EVENT_MODEL_FAILED + 1];
 static int failures;
 
 #define CHECK(cond)                                                                                 \

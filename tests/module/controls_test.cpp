@@ -27,7 +27,7 @@ constexpr Spec kSpec[] = {
     {'4', Action::ViewLeft}, {'7', Action::ViewTop}, {'8', Action::ViewBottom}, {'0', Action::ViewIso},
     {'5', Action::Projection}, {'m', Action::NextDisplayMode}, {'c', Action::Section}, {',', Action::SectionIn},
     {'.', Action::SectionOut}, {'p', Action::Parts}, {'n', Action::NextPart}, {'x', Action::HidePart},
-    {'o', Action::IsolatePart}, {'u', Action::ShowAllParts}, {'h', Action::Help}, {'?', Action::Help},
+    {'o', Action::IsolatePart}, {'u', Action::ShowAllParts}, {'b', Action::Models}, {'h', Action::Help}, {'?', Action::Help},
     {KeyLeft, Action::TurnLeft}, {KeyRight, Action::TurnRight}, {KeyUp, Action::TiltUp}, {KeyDown, Action::TiltDown},
     {KeyPageUp, Action::ZoomIn}, {KeyPageDown, Action::ZoomOut}, {KeyHome, Action::Fit},
 };
@@ -55,7 +55,7 @@ TEST(Controls, EachKeyDoesWhatTheDocsSayAndEveryActionIsReachable) {
         reachable.insert(int(b.action));
     }
     for (Action a : kToolbarOnly) reachable.insert(int(a));
-    for (int a = int(Action::None) + 1; a <= int(Action::ShowAllParts); ++a) {
+    for (int a = int(Action::None) + 1; a <= int(Action::Models); ++a) {
         EXPECT_TRUE(reachable.count(a)) << "action " << a << " has neither a key nor a toolbar button";
     }
     EXPECT_EQ(c.key('%').kind, Kind::None);

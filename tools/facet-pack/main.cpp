@@ -2,7 +2,8 @@
 //
 //   facet-pack model.step -o model.fpk [--plain|--deflate|--lzma] [--whole] [--unit U] [--partial] [--quiet]
 //                                                  pack, print a summary
-//   facet-pack --check model.fpk                   validate a pack file with the device's code
+//   facet-pack --check model.fpk                   validate a pack file (or a library) with the device's code
+//   facet-pack --library OUT.flb A.fpk B.fpk ...   several packs in one file, for a device's flash
 //
 // The pack is blocked (pack_format.h): an index the device reads first (parts with their boxes,
 // instances, names), then blocks of about 64 KB decoded, each the pack of a few parts (a larger
@@ -20,6 +21,7 @@
 // (a reference to nothing, a face Open CASCADE cannot make) unless --partial says to pack the
 // rest. --unit: the length unit of a file that gives none (default: guessed from its size).
 // Exit codes: 0 packed (or valid), 1 error (the reason on stderr; no file left behind), 2 usage.
+#include "geom/library.h"
 #include "geom/pack.h"
 #include "core/format.h"
 #include "file_io.h"
@@ -66,7 +68,8 @@ constexpr size_t kLzmaUpTo = 1u << 20; // decoded bytes a pack is LZMA-compresse
 
 int usage() {
     std::fprintf(stderr, "usage: facet-pack MODEL.step -o MODEL.fpk [--plain|--deflate|--lzma] [--whole] [--unit mm|cm|m|in|ft] [--partial] [--reference FACES.json] [--quiet]\n"
-                         "       facet-pack --check MODEL.fpk\n");
+                         "       facet-pack --check MODEL.fpk|LIBRARY.flb\n"
+                         "       facet-pack --library OUT.flb A.fpk B.fpk ... [--quiet]\n");
     return 2;
 }
 
@@ -75,9 +78,63 @@ int die(const std::string& msg) {
     return 1;
 }
 
+// A library: its table, then each model checked as a pack file of its own (all of them).
+int check_library(const char* path, const std::vector<uint8_t>& bytes) {
+    std::vector<uint64_t> aligned((bytes.size() + 7) / 8);
+    std::memcpy(aligned.data(), bytes.data(), bytes.size());
+    geom::Library lib;
+    if (const Result r = lib.open(aligned.data(), uint32_t(bytes.size())); !r.ok()) {
+        char text[160];
+        describe(r, text, sizeof text);
+        return die(std::string(path) + ": " + text);
+    }
+    std::printf("%s: library of %u models, %u bytes\n", path, lib.count(), lib.bytes());
+    int bad = 0;
+    for (uint32_t i = 0; i < lib.count(); ++i) {
+        const geom::Library::Entry e = lib.entry(i);
+        geom::LoadedPack loaded;
+        geom::Pack pack;
+        std::string error;
+        const bool ok = geom::load_pack_bytes({e.file, e.file + e.bytes}, loaded, error) &&
+                        (pack.open(loaded.data(), loaded.bytes).ok() || (error = "not a sound pack", false));
+        std::printf("  %u \"%s\": %u bytes, %s\n", i + 1, e.name, e.bytes, ok ? "valid" : error.c_str());
+        bad += !ok;
+    }
+    return bad ? die(std::to_string(bad) + " of the library's models are not sound (the others open)") : 0;
+}
+
+int library(int argc, char** argv) {
+    const char* out = nullptr;
+    bool quiet = false;
+    std::vector<std::vector<uint8_t>> files;
+    std::string error;
+    for (int i = 2; i < argc; ++i) {
+        if (!std::strcmp(argv[i], "--quiet")) quiet = true;
+        else if (argv[i][0] == '-') return usage();
+        else if (!out) out = argv[i];
+        else {
+            files.emplace_back();
+            if (!host::read_file(argv[i], pack::kMaxBlockedBytes, files.back(), error)) return die(error);
+        }
+    }
+    if (!out || files.empty()) return usage();
+    for (int i = 3; i < argc; ++i) {
+        if (argv[i][0] != '-' && host::same_file(argv[i], out)) return die(std::string(out) + " is one of the packs: it would be overwritten");
+    }
+    std::vector<uint8_t> bytes;
+    if (!geom::make_library(files, bytes, error) || !host::write_file(out, bytes.data(), bytes.size(), error)) return die(error);
+    if (!quiet) std::printf("%s: library of %zu models, %zu bytes\n", out, files.size(), bytes.size());
+    return 0;
+}
+
 int check(const char* path) {
     geom::LoadedPack file;
     std::string error;
+    {
+        std::vector<uint8_t> bytes;
+        if (!host::read_file(path, pack::kMaxBlockedBytes, bytes, error)) return die(error);
+        if (geom::is_library(bytes.data(), uint32_t(bytes.size()))) return check_library(path, bytes);
+    }
     if (!geom::load_pack_file(path, file, error)) return die(error);
     geom::Pack pack;
     if (const Result r = pack.open(file.data(), file.bytes); !r.ok()) {
@@ -107,6 +164,7 @@ int main(int argc, char** argv) {
     const char *in = nullptr, *out = nullptr, *reference = nullptr;
     bool quiet = false, plain = false, deflated = false, lzma = false, partial = false, whole = false;
     packer::UnitGuess unit = packer::UnitGuess::BySize;
+    if (argc > 1 && !std::strcmp(argv[1], "--library")) return library(argc, argv);
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--check") && i + 1 < argc) return argc == 3 ? check(argv[i + 1]) : usage();
         if (!std::strcmp(argv[i], "-o") && i + 1 < argc && !out) out = argv[++i];

@@ -350,6 +350,31 @@ struct Part {
 };
 static_assert(sizeof(Part) == 40);
 
+// A library: several model files (any of the kinds above) in one, as a device's flash holds
+// them: a LibraryHeader, LibraryEntry[count], then each file at its offset, 8-byte aligned, so
+// each is read (or decoded) from where it lies. A bad table refuses the library; a bad file is
+// found when it is opened, and the others still open.
+constexpr char kLibraryMagic[4] = {'F', 'L', 'B', '1'};
+constexpr uint16_t kLibraryVersion = 1;
+constexpr uint32_t kMaxLibraryEntries = 256;
+constexpr uint32_t kLibraryNameBytes = 56; // UTF-8, NUL-terminated within
+
+struct LibraryHeader {
+    char magic[4];          // FLB1
+    uint16_t version;       // kLibraryVersion
+    uint16_t count;         // entries, 1 to kMaxLibraryEntries
+    uint32_t total_bytes;   // the whole library
+    uint32_t crc32;         // of the entries' table
+};
+static_assert(sizeof(LibraryHeader) == 16);
+
+struct LibraryEntry {
+    uint32_t offset;              // from the library's start, 8-byte aligned, after the table
+    uint32_t bytes;               // the model file's
+    char name[kLibraryNameBytes]; // its model's name (the STEP file's top product)
+};
+static_assert(sizeof(LibraryEntry) == 64);
+
 // CRC-32 (IEEE 802.3, reflected, as zlib) for the header's checksum.
 uint32_t crc32(const void* data, uint32_t size, uint32_t crc = 0);
 

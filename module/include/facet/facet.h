@@ -71,7 +71,8 @@ typedef struct {
 typedef enum {
     FACET_EVENT_LOADED, FACET_EVENT_PASS, FACET_EVENT_SAMPLED, FACET_EVENT_PROGRESS, FACET_EVENT_FACE_FAILED,
     FACET_EVENT_PASS_FAILED, FACET_EVENT_TESSELLATED, FACET_EVENT_FRAME_DONE, FACET_EVENT_BUDGET_EXCEEDED,
-    FACET_EVENT_PICKED, FACET_EVENT_VIEW_CHANGED, FACET_EVENT_WORK_BEGIN, FACET_EVENT_WORK_END
+    FACET_EVENT_PICKED, FACET_EVENT_VIEW_CHANGED, FACET_EVENT_WORK_BEGIN, FACET_EVENT_WORK_END,
+    FACET_EVENT_MODEL_FAILED /* a library's model could not be opened (why); the one before is opened again */
 } facet_event_kind;
 
 typedef enum { FACET_WORK_UNPACK, FACET_WORK_SAMPLING, FACET_WORK_FACE, FACET_WORK_FRAME, FACET_WORK_UPDATE, FACET_WORK_FIT, FACET_WORK_OVERLAY } facet_work;
@@ -90,8 +91,9 @@ typedef struct {
         struct { uint8_t hit; uint32_t face, instance, shell; uint8_t surface_type; int16_t x, y; } pick;
         struct { float yaw_deg, pitch_deg, zoom; } view;
         struct { facet_work what; uint32_t item; } work;
+        struct { uint32_t index; } model;
     } u;
-    facet_result why; /* FACE_FAILED, PASS_FAILED */
+    facet_result why; /* FACE_FAILED, PASS_FAILED, MODEL_FAILED */
 } facet_event;
 
 typedef struct {
@@ -137,6 +139,17 @@ facet_result facet_model_needs(const void *file, uint32_t file_bytes, facet_mode
 facet_viewer *facet_create(const facet_config *config, void *workspace, size_t bytes, facet_result *why);
 facet_result facet_load(facet_viewer *viewer, const void *file, uint32_t file_bytes, void *memory, uint32_t memory_bytes);
 facet_activity facet_step(facet_viewer *viewer, uint32_t budget_us);
+void facet_unload(facet_viewer *viewer); /* the model dropped, its memory free for the next load */
+
+/* Several models on the device: a library (facet-pack --library, ./facet flash A.step B.step),
+ * 8-byte aligned, read in place. Its models without a viewer (count 0: no sound library), and
+ * the viewer's: facet_open_model loads one as facet_load does (facet's interface lists them). */
+typedef struct { const void *file; uint32_t bytes; const char *name; } facet_library_model_t;
+uint32_t facet_library_count(const void *library, uint32_t bytes);
+facet_result facet_library_model(const void *library, uint32_t bytes, uint32_t index, facet_library_model_t *out);
+facet_result facet_set_library(facet_viewer *viewer, const void *library, uint32_t bytes, void *memory, uint32_t memory_bytes);
+facet_result facet_open_model(facet_viewer *viewer, uint32_t index);
+uint32_t facet_model_index(const facet_viewer *viewer); /* 0xFFFFFFFF: none from the library */
 void facet_flush_done(facet_viewer *viewer); /* any context, an interrupt included */
 void facet_key(facet_viewer *viewer, uint32_t key);
 void facet_pointer(facet_viewer *viewer, int16_t dx, int16_t dy, uint8_t buttons);
@@ -153,7 +166,7 @@ typedef enum {
     FACET_ACTION_VIEW_BOTTOM, FACET_ACTION_VIEW_ISO, FACET_ACTION_PROJECTION, FACET_ACTION_NEXT_DISPLAY_MODE,
     FACET_ACTION_NEXT_VIEW, FACET_ACTION_MEASURE, FACET_ACTION_HELP, FACET_ACTION_SECTION, FACET_ACTION_SECTION_IN,
     FACET_ACTION_SECTION_OUT, FACET_ACTION_PARTS, FACET_ACTION_NEXT_PART, FACET_ACTION_HIDE_PART, FACET_ACTION_ISOLATE_PART,
-    FACET_ACTION_SHOW_ALL_PARTS
+    FACET_ACTION_SHOW_ALL_PARTS, FACET_ACTION_MODELS
 } facet_action;
 void facet_act(facet_viewer *viewer, facet_action action); /* as if its key were pressed */
 /* The keys' table, for a help screen: how many, and each (NULL help past the last). */

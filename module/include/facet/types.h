@@ -64,6 +64,7 @@ struct Event {
         ViewChanged,     // the camera moved
         WorkBegin,       // a piece of work begins / ends (regions for a profiler)
         WorkEnd,
+        ModelFailed,     // a model of the library could not be opened (why); the one open before is opened again
     } kind;
     union {
         struct { uint32_t faces, edges, shells, instances, pack_bytes, file_bytes, boxed_parts, boxed_faces; } loaded; // boxed: left out
@@ -77,8 +78,9 @@ struct Event {
         struct { bool hit; uint32_t face, instance, shell; uint8_t surface_type; int16_t x, y; } pick;
         struct { float yaw_deg, pitch_deg, zoom; } view;
         struct { Work what; uint32_t item; } work;
+        struct { uint32_t index; } model;                                       // ModelFailed: the library's model
     };
-    Result why; // FaceFailed, PassFailed
+    Result why; // FaceFailed, PassFailed, ModelFailed
 };
 
 // facet's own on-screen interface: none (the application's own drives act()), the status line, or all.
@@ -125,6 +127,7 @@ enum class Action : uint8_t {
     HidePart,        // hide the chosen part
     IsolatePart,     // show the chosen part alone
     ShowAllParts,
+    Models,          // the models on the device (a library: Viewer::set_library) on/off: tap one to open it
 };
 
 // How the model is drawn.

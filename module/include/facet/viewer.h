@@ -39,6 +39,16 @@ uint32_t pack_memory_bytes(const void* file, uint32_t file_bytes);
 // Ok, or why the bytes are no pack (Corrupt, Unsupported).
 Result model_needs(const void* file, uint32_t file_bytes, ModelNeeds& needs);
 
+// A library: several model files in one (facet-pack --library; ./facet flash A.step B.step),
+// read in place. How many models (0: the bytes are no sound library) and each one's file and name.
+struct LibraryModel {
+    const void* file;
+    uint32_t bytes;
+    const char* name; // UTF-8
+};
+uint32_t library_count(const void* library, uint32_t bytes);
+Result library_model(const void* library, uint32_t bytes, uint32_t index, LibraryModel& out);
+
 class Viewer {
 public:
     // A viewer in `workspace` (8-byte aligned, at least workspace_bytes(config.capacity) bytes),
@@ -53,6 +63,16 @@ public:
     // Then the model's arrays are planned in the room left. Corrupt names the bad record (and
     // block); Full: the workspace is too small (bytes needed). The previous model is dropped first.
     Result load(const void* file, uint32_t file_bytes, void* memory = nullptr, uint32_t memory_bytes = 0);
+
+    // The model dropped, its memory free for the next load() (the screen keeps its picture).
+    void unload();
+    // Several models on the device: set_library() checks a library's table (8-byte aligned, read
+    // in place); open_model() loads one of its models as load() does into `memory` (or the
+    // workspace's end); facet's interface then lists them (Action::Models; a tap opens one). A
+    // model that cannot be opened is said (ModelFailed, why) and the one open before comes back.
+    Result set_library(const void* library, uint32_t bytes, void* memory = nullptr, uint32_t memory_bytes = 0);
+    Result open_model(uint32_t index);
+    uint32_t model_index() const; // the library's model open; ~0u: none (or one load() was given)
 
     // Does pieces of work (a frame, a piece of a face's tessellation) until `budget_us` have
     // passed on the clock, and at least one piece. A piece takes at most about a millisecond

@@ -1,0 +1,45 @@
+#include "geom/library.h"
+
+#include <cstring>
+
+namespace facet::geom {
+
+bool is_library(const void* data, uint32_t available) {
+    return data && available >= 4 && std::memcmp(data, pack::kLibraryMagic, 4) == 0;
+}
+
+Result Library::open(const void* data, uint32_t available) {
+    using pack::LibraryEntry;
+    using pack::LibraryHeader;
+    *this = {};
+    if (!is_library(data, available) || available < sizeof(LibraryHeader)) return Result::fail(Status::Corrupt, "no library here");
+    if ((reinterpret_cast<uintptr_t>(data) & 7) != 0) return Result::fail(Status::OutOfRange, "a library must be 8-byte aligned");
+    LibraryHeader h;
+    std::memcpy(&h, data, sizeof h);
+    if (h.version != pack::kLibraryVersion) return Result::fail(Status::Unsupported, "a library of another version", {"version", h.version});
+    if (h.count == 0 || h.count > pack::kMaxLibraryEntries) return Result::fail(Status::Corrupt, "a library's count is out of range", {"count", h.count});
+    const uint32_t table_end = uint32_t(sizeof h + h.count * sizeof(LibraryEntry));
+    if (h.total_bytes > available || table_end > h.total_bytes) {
+        return Result::fail(Status::Corrupt, "the library is larger than the bytes given", {"bytes needed", h.total_bytes});
+    }
+    const auto* bytes = static_cast<const uint8_t*>(data);
+    if (pack::crc32(bytes + sizeof h, table_end - uint32_t(sizeof h)) != h.crc32) return Result::fail(Status::Corrupt, "the library's table fails its CRC");
+    for (uint32_t i = 0; i < h.count; ++i) {
+        LibraryEntry e;
+        std::memcpy(&e, bytes + sizeof h + i * sizeof e, sizeof e);
+        const bool inside = e.offset >= table_end && e.offset <= h.total_bytes && e.bytes <= h.total_bytes - e.offset;
+        if (!inside || (e.offset & 7) || e.bytes == 0 || std::memchr(e.name, 0, sizeof e.name) == nullptr) {
+            return Result::fail(Status::Corrupt, "a library entry lies outside it or is unterminated", {"entry", i});
+        }
+    }
+    data_ = bytes, count_ = h.count, bytes_ = h.total_bytes;
+    return {};
+}
+
+Library::Entry Library::entry(uint32_t i) const {
+    if (i >= count_) return {nullptr, 0, ""};
+    const auto* e = reinterpret_cast<const pack::LibraryEntry*>(data_ + sizeof(pack::LibraryHeader)) + i;
+    return {data_ + e->offset, e->bytes, e->name};
+}
+
+} // namespace facet::geom

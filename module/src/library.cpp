@@ -1,0 +1,78 @@
+// Several models on the device: a library read in place, one of its models open at a time in
+// the memory load() uses, and the chooser of facet's interface (Action::Models).
+#include "core.h"
+
+namespace facet {
+
+uint32_t library_count(const void* data, uint32_t bytes) {
+    geom::Library lib;
+    return lib.open(data, bytes).ok() ? lib.count() : 0;
+}
+
+Result library_model(const void* data, uint32_t bytes, uint32_t index, LibraryModel& out) {
+    out = {nullptr, 0, ""};
+    geom::Library lib;
+    if (const Result r = lib.open(data, bytes); !r.ok()) return r;
+    if (index >= lib.count()) return Result::fail(Status::OutOfRange, "no such model in the library", {"model", index});
+    const geom::Library::Entry e = lib.entry(index);
+    out = {e.file, e.bytes, e.name};
+    return {};
+}
+
+Result Core::set_library(const void* data, uint32_t bytes, void* memory, uint32_t memory_bytes) {
+    geom::Library lib;
+    if (const Result r = lib.open(data, bytes); !r.ok()) return r;
+    library_ = lib;
+    library_memory_ = memory, library_memory_bytes_ = memory_bytes;
+    presenter_.overlay().set_library(&library_);
+    return {};
+}
+
+Result Core::open_model(uint32_t index) {
+    if (library_.count() == 0) return Result::fail(Status::NotFound, "no library is set");
+    if (index >= library_.count()) return Result::fail(Status::OutOfRange, "no such model in the library", {"model", index});
+    const uint32_t before = model_index_;
+    const geom::Library::Entry e = library_.entry(index);
+    const Result r = load(e.file, e.bytes, library_memory_, library_memory_bytes_);
+    if (r.ok()) {
+        model_index_ = index;
+        presenter_.overlay().set_models(false, index);
+        return r;
+    }
+    Event failed{};
+    failed.kind = Event::Kind::ModelFailed;
+    failed.model.index = index;
+    failed.why = r;
+    emit(failed);
+    // The model open before comes back (its file is intact in the library; load() dropped it).
+    if (before != kNoModel && before != index) {
+        const geom::Library::Entry b = library_.entry(before);
+        if (load(b.file, b.bytes, library_memory_, library_memory_bytes_).ok()) model_index_ = before;
+    }
+    presenter_.overlay().set_models(true, model_index_); // (the chooser stays for another)
+    presenter_.invalidate();
+    return r;
+}
+
+// A tap on the chooser: a row opens its model at the next step (true: the tap was the chooser's).
+bool Core::tap_models(int16_t x, int16_t y) {
+    const uint32_t m = presenter_.overlay().model_at(x, y);
+    if (m == module::Overlay::kNoRow) return false;
+    if (m != module::Overlay::kPanelRow && m != model_index_) pending_model_ = m;
+    return true;
+}
+
+void Core::toggle_models() {
+    module::Overlay& o = presenter_.overlay();
+    o.set_models(!o.models_open(), model_index_);
+    presenter_.invalidate();
+}
+
+void Viewer::unload() { static_cast<Core*>(this)->unload(); }
+Result Viewer::set_library(const void* library, uint32_t bytes, void* memory, uint32_t memory_bytes) {
+    return static_cast<Core*>(this)->set_library(library, bytes, memory, memory_bytes);
+}
+Result Viewer::open_model(uint32_t index) { return static_cast<Core*>(this)->open_model(index); }
+uint32_t Viewer::model_index() const { return static_cast<const Core*>(this)->model_index(); }
+
+} // namespace facet
