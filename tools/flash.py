@@ -3,7 +3,7 @@
 the QSPI flash (boards/mimxrt1060-evkb/board.json: the firmware at the flash base, the pack at
 its own offset, so a new model needs no new firmware).
 
-  flash.py --image facet-viewer.bin --pack MODEL.fpk --out DIR [--drive DIR] [--pack-only] [--wait S]
+  flash.py --image facet-viewer.bin --pack MODEL.fpk|LIBRARY.flb --out DIR [--drive DIR] [--pack-only] [--wait S]
 
 Writes into DIR: facet-evkb.hex (firmware and pack, absolute addresses: what a probe or a
 programming tool takes), facet-evkb.bin (the firmware from the flash base), pack.hex (the pack
@@ -134,7 +134,7 @@ To flash the MIMXRT1060-EVKB:
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument('--image', required=True, help='the firmware image (.bin, from the flash base)')
-    ap.add_argument('--pack', required=True, help='the model (.fpk)')
+    ap.add_argument('--pack', required=True, help='the model (.fpk), or several models (a library, .flb)')
     ap.add_argument('--out', required=True)
     ap.add_argument('--drive', help="the probe's mounted drive (default: look for one)")
     ap.add_argument('--pack-only', action='store_true', help='flash the pack alone (the firmware is already there)')
@@ -153,10 +153,11 @@ def main():
         die(BAD_INPUT, f'{args.image} is no EVKB flash image (no FlexSPI configuration block at its start)')
     if len(image) > room:
         die(BAD_INPUT, f'the firmware ({len(image):,} B) exceeds its {room:,} B of flash')
-    if pack[:4] not in (b'FPK1', b'FPX1', b'FPZ1'):
-        die(BAD_INPUT, f'{args.pack} is no facet pack (facet-pack makes one from a STEP file)')
+    if pack[:4] not in (b'FPK1', b'FPX1', b'FPZ1', b'FPB1', b'FLB1'):
+        die(BAD_INPUT, f'{args.pack} is no facet pack nor library (facet-pack makes them from STEP files)')
+    what = 'library' if pack[:4] == b'FLB1' else 'pack'
     if len(pack) > b['pack_bytes']:
-        die(BAD_INPUT, f'the pack ({len(pack):,} B) exceeds the {b["pack_bytes"]:,} B pack region')
+        die(BAD_INPUT, f'the {what} ({len(pack):,} B) exceeds the {b["pack_bytes"]:,} B pack region')
 
     out = os.path.abspath(args.out)
     os.makedirs(out, exist_ok=True)

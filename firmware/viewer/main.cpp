@@ -24,6 +24,8 @@
 #include "hal/print.h"
 #include "hal/report.h"
 
+#include <algorithm>
+
 namespace {
 
 using namespace facet;
@@ -142,6 +144,9 @@ void on_event(void*, const Event& e) {
         break;
     case Event::Kind::BudgetExceeded:
         print(con, "@budget {} used_us {} budget_us {}\n", e.budget.step ? "step" : "frame", e.budget.used_us, e.budget.budget_us);
+        break;
+    case Event::Kind::ModelFailed:
+        print(con, "viewer: model {} of the library: {} ({}); the others still open\n", e.model.index + 1, e.why, e.why.status);
         break;
     }
 }
@@ -295,6 +300,22 @@ void key(uint8_t k) {
     print(s.board->console, "viewer: unknown key {} (h for help)\n", uint32_t(k));
 }
 
+// The free RAM less a library lying in it (a QEMU board's runner loads it into RAM): the larger
+// of the two sides, 8-byte aligned. (On a board whose pack region is flash it lies elsewhere.)
+hal::FreeRam around_library(hal::FreeRam ram, const uint8_t* library, uint32_t models) {
+    const uint8_t *start = library, *end = library;
+    for (uint32_t i = 0; i < models; ++i) {
+        LibraryModel m;
+        if (library_model(library, board_config::kPackBytes, i, m).ok()) end = std::max(end, static_cast<const uint8_t*>(m.file) + m.bytes);
+    }
+    uint8_t* const ram_end = ram.start + ram.bytes;
+    if (end <= ram.start || start >= ram_end) return ram;
+    const size_t below = start > ram.start ? size_t(start - ram.start) : 0;
+    uint8_t* const after = reinterpret_cast<uint8_t*>((reinterpret_cast<uintptr_t>(end) + 7) & ~uintptr_t(7));
+    const size_t above = after < ram_end ? size_t(ram_end - after) : 0;
+    return below >= above ? hal::FreeRam{ram.start, below & ~size_t(7)} : hal::FreeRam{after, above};
+}
+
 } // namespace
 
 int facet_main(hal::Board& board) {
@@ -312,16 +333,32 @@ int facet_main(hal::Board& board) {
     cfg.now_us = now_us;
     Result why;
     // The workspace: all the RAM nothing else uses. The module plans the model's arrays in it
-    // at load, and decodes the pack at its end (a pack QEMU loaded into it, where it lies).
-    const hal::FreeRam ram = hal::free_ram();
+    // at load, and decodes the pack at its end (a pack QEMU loaded into it, where it lies). A
+    // library (several models) in RAM stays whole: the workspace is the larger side of it.
+    auto* region = reinterpret_cast<uint8_t*>(board_config::kPackAddress);
+    const uint32_t models = library_count(region, board_config::kPackBytes);
+    hal::FreeRam ram = hal::free_ram();
+    if (models > 0) ram = around_library(ram, region, models);
     session.viewer = Viewer::create(cfg, ram.start, ram.bytes, &why);
     if (!session.viewer) {
         print(con, "viewer: {} ({})\n", why, why.status);
         return 1;
     }
     Viewer& v = *session.viewer;
-    auto* region = reinterpret_cast<uint8_t*>(board_config::kPackAddress);
-    if (Result r = v.load(region, board_config::kPackBytes); !r.ok()) {
+    if (models > 0) {
+        print(con, "viewer: a library of {} models (key b lists them)\n", models);
+        for (uint32_t i = 0; i < models; ++i) {
+            LibraryModel m;
+            if (library_model(region, board_config::kPackBytes, i, m).ok()) print(con, "@library {} {} bytes {}\n", i + 1, m.name, m.bytes);
+        }
+    }
+    // A library opens its first model that opens (the others' failures said as they fail).
+    Result opened = models > 0 ? v.set_library(region, board_config::kPackBytes) : v.load(region, board_config::kPackBytes);
+    for (uint32_t i = 0; models > 0 && opened.ok() && i < models; ++i) {
+        if (v.open_model(i).ok()) break;
+        if (i + 1 == models) opened = Result::fail(Status::Corrupt, "no model of the library opens");
+    }
+    if (Result r = opened; !r.ok()) {
         print(con, "viewer: no valid pack: {} ({})\n", r, r.status);
         const bool blank = (region[0] == 0 && region[1] == 0 && region[2] == 0 && region[3] == 0) ||
                            (region[0] == 0xFF && region[1] == 0xFF && region[2] == 0xFF && region[3] == 0xFF);

@@ -44,6 +44,7 @@ Result Core::open_model(uint32_t index) {
     failed.model.index = index;
     failed.why = r;
     emit(failed);
+    presenter_.overlay().mark_broken(index); // (the person holding it sees it in the chooser)
     // The model open before comes back (its file is intact in the library; load() dropped it).
     if (before != kNoModel && before != index) {
         const geom::Library::Entry b = library_.entry(before);

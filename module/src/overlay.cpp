@@ -281,7 +281,8 @@ void Overlay::list_head(const render::Target& t, const Area& p, const char* titl
     }
 }
 
-// The models chooser: "MODELS n", then a row per model (its number and name), the open one lit.
+// The models chooser: "MODELS n", then a row per model (its number and name; one that could not
+// be opened says so, dimmed), the open one lit.
 // (As many rows as the panel holds; a library of more shows its first ones.)
 void Overlay::models_list(const render::Target& t) const {
     const Area p = parts_panel();
@@ -293,9 +294,9 @@ void Overlay::models_list(const render::Target& t) const {
     for (uint32_t m = 0; m < rows && m < library_->count(); ++m) {
         const int32_t y = p.y + kRow + int32_t(m) * kRow;
         if (m == current_model_) render::fill_rect(t, p.x, y, p.width - 1, kRow, kButtonOn);
-        format(text, sizeof text, "{} {}", m + 1, library_->entry(m).name);
+        format(text, sizeof text, broken(m) ? "{} cannot open: {}" : "{} {}", m + 1, library_->entry(m).name);
         render::cut_text(text, (p.width - 8) / render::kCellWidth);
-        render::draw_text(t, p.x + 4, y + (kRow - render::kGlyphHeight) / 2, text, kText);
+        render::draw_text(t, p.x + 4, y + (kRow - render::kGlyphHeight) / 2, text, broken(m) ? kDim : kText);
     }
 }
 

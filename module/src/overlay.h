@@ -76,7 +76,14 @@ public:
 
     // The models chooser (a library's): the parts list's panel, a row per model, the one open
     // highlighted; a tap on a row opens it. (Opening it closes the parts list.)
-    void set_library(const geom::Library* library) { library_ = library; }
+    void set_library(const geom::Library* library) {
+        library_ = library;
+        for (uint32_t& w : broken_) w = 0;
+    }
+    void mark_broken(uint32_t model) { // it could not be opened: its row says so
+        if (model < pack::kMaxLibraryEntries) broken_[model / 32] |= 1u << (model % 32);
+    }
+    bool broken(uint32_t model) const { return model < pack::kMaxLibraryEntries && (broken_[model / 32] >> (model % 32)) & 1u; }
     void set_models(bool open, uint32_t current) {
         models_open_ = open && library_ && library_->count() > 0, current_model_ = current;
         parts_open_ = parts_open_ && !models_open_;
@@ -131,6 +138,7 @@ private:
     const geom::Library* library_ = nullptr;
     bool models_open_ = false;
     uint32_t current_model_ = kNoRow;
+    uint32_t broken_[pack::kMaxLibraryEntries / 32] = {};
 };
 
 } // namespace facet::module

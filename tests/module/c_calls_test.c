@@ -374,6 +374,24 @@ int main(int argc, char **argv) {
     misuse(v);
     settle(v);
     CHECK(facet_get_stats(v).refused == 0);
+
+    /* A library: not this pack; no library set; then unloading, and loading again. */
+    {
+        facet_library_model_t lm;
+        CHECK(facet_library_count(pack, (uint32_t)size) == 0 && facet_library_count(NULL, 0) == 0);
+        CHECK(facet_library_model(pack, (uint32_t)size, 0, &lm).status == FACET_CORRUPT && lm.file == NULL);
+        CHECK(facet_library_model(pack, (uint32_t)size, 0, NULL).status == FACET_OUT_OF_RANGE);
+        CHECK(facet_set_library(v, pack, (uint32_t)size, NULL, 0).status == FACET_CORRUPT);
+        CHECK(facet_set_library(NULL, pack, (uint32_t)size, NULL, 0).status == FACET_OUT_OF_RANGE);
+        CHECK(facet_open_model(v, 0).status == FACET_NOT_FOUND && facet_open_model(NULL, 0).status == FACET_OUT_OF_RANGE);
+        CHECK(facet_model_index(v) == 0xFFFFFFFFu && facet_model_index(NULL) == 0xFFFFFFFFu);
+    }
+    facet_unload(NULL);
+    facet_unload(v);
+    CHECK(facet_get_model(v).faces == 0 && facet_part_count(v) == 0 && facet_step(v, 1000) == FACET_ACTIVITY_IDLE);
+    CHECK(facet_load(v, pack, (uint32_t)size, NULL, 0).status == FACET_OK);
+    settle(v);
+    CHECK(facet_get_model(v).faces == model.faces && facet_get_stats(v).done > 0);
     free(pack);
     if (failures) return 1;
     printf("c_calls_test: every call checked from C, and every call with bad arguments (%u faces)\n", model.faces);

@@ -100,8 +100,11 @@ def analyse(uart, regions):
     line: a frame the view outdated while it was drawn is not one), the overlay's part of them,
     the mesh's triangles then and the cost the firmware's own clock gave it (us at 600 MHz)."""
     tess, frames, tri_now, pass_no, pieces, overlay, closed = {}, [], 0, -1, [], [], False
+    models = 0  # a library's models opened in turn: the passes of the first keyed by number, the others' by model too
     for r, region in protocol.with_regions(uart, regions):
-        if r.name == 'pass':
+        if r.name == 'model':
+            models += 1
+        elif r.name == 'pass':
             pass_no = int(r.words[0])
             tri_now, closed = 0, False
         elif r.name in ('tessellation', 'retessellation'):
@@ -119,6 +122,7 @@ def analyse(uart, regions):
             n = region['instructions']
             if r.words[0] in ('edges', 'face'):
                 key = 'view' if closed else pass_no
+                key = key if models <= 1 else f'model {models} {key}'
                 tess[key] = tess.get(key, 0) + (n or 0)
             elif r.words[0] in ('frame', 'overlay'):
                 pieces.append(n)  # a frame's cost: its pieces, the overlay's included

@@ -134,6 +134,15 @@ def main():
                         '--out', os.path.join(work, 'out-bad'), '--drive', drive], capture_output=True, text=True)
     check(r.returncode == 2 and 'no EVKB flash image' in r.stderr, f'an image that is no EVKB image: exit 2 ({r.returncode})')
 
+    # 5b. A library larger than the pack region: refused with both sizes, nothing copied.
+    big = os.path.join(work, 'big.flb')
+    with open(big, 'wb') as fh:
+        fh.write(b'FLB1' + bytes(b['pack_bytes'] - 3))
+    r = subprocess.run([sys.executable, os.path.join(ROOT, 'tools', 'flash.py'), '--image', args.image, '--pack', big,
+                        '--out', os.path.join(work, 'out-big'), '--drive', drive], capture_output=True, text=True)
+    check(r.returncode == 2 and f'the library ({b["pack_bytes"] + 1:,} B) exceeds the {b["pack_bytes"]:,} B pack region' in r.stderr
+          and not os.path.exists(os.path.join(drive, 'FACET.HEX')), f'a library over the pack region: exit 2 with both sizes ({r.returncode})')
+
     # 6. ./facet flash itself (it builds, packs the sample part plain, calls the tool).
     if args.facet:
         env = dict(os.environ, FACET_FLASH_MOUNTS=empty_mounts)
@@ -146,6 +155,16 @@ def main():
         plain = open(packed, 'rb').read() if os.path.exists(packed) else b''
         check(r.returncode == 0 and plain[:4] == b'FPK1' and holds(mem, b['pack_address'], plain) and holds(mem, flash_base, image),
               f'./facet flash --drive: the firmware and the sample part\'s plain pack on the drive ({r.returncode}) {r.stderr[-300:]}')
+
+        # Several models: a library of them where the pack goes, each model in it.
+        drive = fake_drive(os.path.join(work, 'FACET_LIBRARY'))
+        r = subprocess.run([args.facet, 'flash', args.pack, args.pack, '--drive', drive, '--wait', '0.5'], capture_output=True,
+                           text=True, env=env)
+        mem = read_hex(os.path.join(drive, 'FACET.HEX')) if os.path.exists(os.path.join(drive, 'FACET.HEX')) else {}
+        lib_path = os.path.join(ROOT, 'out', 'flash', 'library.flb')
+        lib = open(lib_path, 'rb').read() if os.path.exists(lib_path) else b''
+        check(r.returncode == 0 and lib[:4] == b'FLB1' and holds(mem, b['pack_address'], lib) and lib.count(pack) == 2,
+              f'./facet flash A B: a library of both where the pack goes ({r.returncode}) {r.stderr[-300:]}')
 
     print(f'flash: {len(bad)} problem(s)')
     return 1 if bad else 0

@@ -76,6 +76,8 @@ TEST(Library, ModelsOpenInTurnInTheSameMemoryAndACorruptOneIsReportedWhileTheOth
     EXPECT_GT(size_t(failed - a.events.data()), events - 1);
     EXPECT_EQ(failed->model.index, 2u);
     EXPECT_EQ(failed->why.status, Status::Corrupt);
+    EXPECT_TRUE(static_cast<Core*>(a.v)->overlay().broken(2)) << "the chooser says it cannot be opened";
+    EXPECT_FALSE(static_cast<Core*>(a.v)->overlay().broken(1));
     a.run();
     EXPECT_EQ(a.v->model_index(), 3u);
     EXPECT_EQ(a.v->stats().faces, assembly_faces);
@@ -134,6 +136,7 @@ TEST(Library, TheChooserListsTheModelsAndATapOpensOne) {
     EXPECT_FALSE(o.models_open()) << "the chooser closes on the model it opened";
     EXPECT_EQ(a.count(Event::Kind::Picked), 0) << "a tap on the chooser picks nothing";
     EXPECT_NE(a.screen(), before);
+    EXPECT_FALSE(o.broken(1));
     // A tap on the open model's row leaves it be.
     a.v->act(Action::Models);
     a.tap(x, y);

@@ -141,9 +141,9 @@ def run(cmd, **kw):
     return subprocess.run(cmd, cwd=kw.pop('cwd', ROOT), **kw).returncode
 
 
-def model_pack(model, folder, plain=False):
+def model_pack(model, folder, plain=False, name='model'):
     """A model ready for the viewer, under `folder`: a pack as it is, a STEP file packed, or the
-    sample part made and packed (model None). Returns the pack's path."""
+    sample part made and packed (model None). Returns the pack's path (a packed one: NAME.fpk)."""
     os.makedirs(folder, exist_ok=True)
     if model is None:
         model = os.path.join(folder, 'sample.step')
@@ -151,7 +151,7 @@ def model_pack(model, folder, plain=False):
             raise Failure('cannot make the sample part')
     if model.endswith('.fpk'):
         return model
-    fpk = os.path.join(folder, 'model.fpk')
+    fpk = os.path.join(folder, f'{name}.fpk')
     if run([tool('facet-pack'), model, '-o', fpk, '--quiet'] + (['--plain'] if plain else []),
            stdout=subprocess.DEVNULL) != 0:
         raise Failure(f'cannot pack {model}')
@@ -175,3 +175,16 @@ def fresh(folder):
     shutil.rmtree(folder, ignore_errors=True)
     os.makedirs(folder, exist_ok=True)
     return folder
+
+
+def library_of(models, folder, capacity, where, plain=False):
+    """Several models packed and joined into one library file (facet-pack --library) under
+    `folder`; a Failure naming both sizes when it is larger than `capacity` bytes (`where`)."""
+    packs = [model_pack(m, folder, plain=plain, name=f'model-{i + 1}') for i, m in enumerate(models)]
+    lib = os.path.join(folder, 'library.flb')
+    if run([tool('facet-pack'), '--library', lib] + packs + ['--quiet']) != 0:
+        raise Failure('cannot make the library of the models')
+    size = os.path.getsize(lib)
+    if size > capacity:
+        raise Failure(f'the library of {len(models)} models is {size:,} bytes: larger than {where} ({capacity:,} bytes)')
+    return lib

@@ -4,12 +4,13 @@ import json
 import os
 import sys
 
-from common import (INCOMPLETE_MESH, OVER_BUDGET, ROOT, Failure, build, existing_file, fresh, model_pack,
+from common import (INCOMPLETE_MESH, OVER_BUDGET, ROOT, Failure, build, existing_file, fresh, library_of, model_pack,
                     pack_address, preset_of, run, say, setup, tool)
 
 RUN_BOARD = 'qemu-versatilepb'  # the main job's: an ARM926 without an FPU, like the paper's handheld
 SHOTS = ['wireframe', 'half', 'done', 'turned', 'dragged', 'zoomed', 'views', 'hidden-line', 'section', 'parts',
          'measure']
+LIBRARY_SHOTS = ['wireframe', 'half', 'done', 'turned', 'chooser', 'second']
 
 
 def add(sub):
@@ -20,7 +21,8 @@ def add(sub):
                        'line, cut by a section, shown with its parts list and clicked, by the session '
                        'tests/sessions/run.session. Screenshots, uart.log, report.json and the budget report '
                        '(budgets.json, budgets.md) go to out/run/. Exit 4 over a budget, 5 when faces failed.')
-    p.add_argument('model', nargs='?', metavar='MODEL.step', help='a STEP file (default: the sample part)')
+    p.add_argument('model', nargs='*', metavar='MODEL.step', help='a STEP file (default: the sample part); several: '
+                   'a library on the device, the chooser (key b) opening the second (tests/sessions/library.session)')
     p.add_argument('--window', action='store_true', help='a QEMU window to use yourself instead of the script '
                    '(keys on the terminal, the mouse in the window; h lists the keys, q quits)')
     p.set_defaults(run=cmd_run)
@@ -50,8 +52,10 @@ def add(sub):
                        description="Build the MIMXRT1060-EVKB image and the model's plain pack (the sample part "
                        'unless a model is given; read in place from flash), write out/flash/facet-evkb.hex (firmware '
                        "+ pack), .bin and pack.hex, and copy the .hex onto the board's debug-probe drive (found "
-                       'mounted, or --drive). With no board: exit 3 and what to do (docs/boards.md).')
-    p.add_argument('model', nargs='?', metavar='MODEL.step|MODEL.fpk')
+                       'mounted, or --drive). Several models: a library of them (the viewer lists them, key b), '
+                       'refused with both sizes when larger than the pack region. With no board: exit 3 and what to '
+                       'do (docs/boards.md).')
+    p.add_argument('model', nargs='*', metavar='MODEL.step|MODEL.fpk')
     p.add_argument('--drive', metavar='DIR', help="the probe's drive (default: found mounted)")
     p.add_argument('--pack-only', action='store_true', help='the pack alone: a new model without a new firmware')
     p.add_argument('--wait', metavar='SECONDS', help='wait this long for the drive to appear')
@@ -59,20 +63,26 @@ def add(sub):
 
 
 def cmd_run(args, parser):
-    model = existing_file(parser, args.model) if args.model else None
+    models = [existing_file(parser, m) for m in args.model]
     setup()
     build(RUN_BOARD, 'host')
     out = fresh(os.path.join(ROOT, 'out', 'run'))
-    if model is None:
+    if not models:
         say('making the sample part (Open CASCADE): out/run/sample.step')
-    fpk = model_pack(model, out)
-    name = os.path.basename(model) if model else 'sample.step'
-    say(f'packed {name}: {os.path.getsize(fpk):,} bytes')
+    if len(models) > 1:  # a library: the device lists them, the session opens the second from its chooser
+        import board as boards
+        fpk = library_of(models, out, boards.load(RUN_BOARD)['pack_bytes'], f"{RUN_BOARD}'s pack region")
+        name = ' + '.join(os.path.basename(m) for m in models)
+        say(f'packed {len(models)} models into a library: {os.path.getsize(fpk):,} bytes')
+    else:
+        fpk = model_pack(models[0] if models else None, out)
+        name = os.path.basename(models[0]) if models else 'sample.step'
+        say(f'packed {name}: {os.path.getsize(fpk):,} bytes')
     say(f'booting the viewer in QEMU ({RUN_BOARD}: ARM926EJ-S, 32 MiB) with the pack loaded')
     cmd = [sys.executable, 'tools/qemu/run.py', '--board', RUN_BOARD,
            '--elf', f'build/{RUN_BOARD}/firmware/facet-viewer.elf', '--out', out,
            '--load', f'{fpk}@{pack_address(RUN_BOARD)}', '--icount', '--timeout', '900']
-    cmd += ['--window'] if args.window else ['--quiet', '--session', 'run']
+    cmd += ['--window'] if args.window else ['--quiet', '--session', 'library' if len(models) > 1 else 'run']
     if run(cmd) != 0:
         log = os.path.join(out, 'uart.log')
         if os.path.exists(log):
@@ -80,7 +90,8 @@ def cmd_run(args, parser):
         raise Failure('the viewer run failed (out/run/uart.log)')
     rc = run([sys.executable, 'tools/budgets.py', os.path.join(out, 'report.json'), '--json', os.path.join(out, 'budgets.json'),
               '--markdown', os.path.join(out, 'budgets.md'), '--model', name, '--strict'])
-    say('screenshots out/run/{' + ','.join(SHOTS) + '}.png, budget report out/run/budgets.json (.md)')
+    shots = LIBRARY_SHOTS if len(models) > 1 else SHOTS
+    say('screenshots out/run/{' + ','.join(shots) + '}.png, budget report out/run/budgets.json (.md)')
     for p in json.load(open(os.path.join(out, 'report.json'))).get('picks', []):
         print(f'  picked face {p["face"]}: {"; ".join(p["lines"])}')
     if rc == OVER_BUDGET:
@@ -138,15 +149,20 @@ def flash_board():
 
 
 def cmd_flash(args, parser):
-    model = existing_file(parser, args.model) if args.model else None
-    preset = preset_of(flash_board())
+    models = [existing_file(parser, m) for m in args.model]
+    board = flash_board()
+    preset = preset_of(board)
     setup()
     build('host', preset, quiet=True)
     out = os.path.join(ROOT, 'out', 'flash')
     os.makedirs(out, exist_ok=True)
     # A plain pack: the board reads it in place from flash (nothing to inflate at boot); a .fpk
-    # as it is (a compressed one is decoded into SDRAM).
-    fpk = model_pack(model, out, plain=True)
+    # as it is (a compressed one is decoded into SDRAM). Several: a library of plain packs.
+    if len(models) > 1:
+        import board as boards
+        fpk = library_of(models, out, boards.load(board)['pack_bytes'], "the board's flash pack region", plain=True)
+    else:
+        fpk = model_pack(models[0] if models else None, out, plain=True)
     extra = []
     if args.drive:
         extra += ['--drive', args.drive]
