@@ -3,11 +3,12 @@
 shared models loaded where the pack goes. The viewer lists them, opens the first, and the
 scripted session opens the second from the chooser (tests/sessions/library.session, ./facet
 run's): two models opened, each with its own face count, the chooser and the second model in
-their screenshots. Then the same library with its second model damaged
+their screenshots, pixel-identical to the desktop simulator's given the same library and input. Then the same library with its second model damaged
 (tests/sessions/library-walk.session): opening it is said ("model 2 of the library: ...") and
 the first opens again, and the third still opens.
 
-  library_test.py --board B --elf ELF --packer facet-pack --sample facet-sample-model --work DIR MODEL.step MODEL.step
+  library_test.py --board B --elf ELF --sim facet-sim --packer facet-pack --sample facet-sample-model --work DIR
+                  MODEL.step MODEL.step
 """
 import argparse
 import os
@@ -36,7 +37,7 @@ def boot(args, board, lib, out, session):
 
 def main():
     ap = argparse.ArgumentParser()
-    for a in ('--board', '--elf', '--packer', '--sample', '--work'):
+    for a in ('--board', '--elf', '--sim', '--packer', '--sample', '--work'):
         ap.add_argument(a, required=True)
     ap.add_argument('models', nargs=2)
     args = ap.parse_args()
@@ -70,6 +71,24 @@ def main():
         problems.append('a screenshot is missing: ' + ', '.join(n for n, p in shots.items() if not os.path.exists(p)))
     elif img.compare(shots['done'], shots['second'])[0] == 0:
         problems.append('the second model looks like the first')
+    # The simulator given the library and the session's input (a pointer at the row, a click).
+    sim = os.path.join(args.work, 'sim')
+    os.makedirs(sim, exist_ok=True)
+    entries = ['keys d', 'keys !shot turned\n', 'keys b', 'keys !shot chooser\n', 'move -1000 -1000', 'move 60 66', 'click',
+               'keys !shot second\n']
+    h = subprocess.run([args.sim, '--pack', lib, '--out', sim, '--size', board['size'], '--headless', '--no-clock', '--quiet']
+                       + [a for e in entries for a in ('--send', e)], capture_output=True, text=True, timeout=300)
+    if h.returncode != 0:
+        problems.append(f'the simulator: exit {h.returncode}: {h.stderr.strip()[-300:]}')
+    for n in ('turned', 'chooser', 'second'):
+        a, b = os.path.join(sim, n + '.f565'), os.path.join(out, n + '.png')
+        if os.path.exists(a) and os.path.exists(b):
+            w, hgt, _ = img.load_565(a)
+            d, msg = img.compare(a, b, os.path.join(args.work, n + '-diff.png'), ignore=[img.frame_time_field(w, hgt)])
+            if d:
+                problems.append(f'{n}: the board and the simulator differ: {msg}')
+        else:
+            problems.append(f'{n}: a screenshot is missing')
 
     # Its second model damaged in the middle of its file: said, the first back, the third opens.
     data = bytearray(open(lib, 'rb').read())

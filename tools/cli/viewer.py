@@ -31,7 +31,7 @@ def add(sub):
                        description='The module in an SDL window: mouse (left drag orbits, right drag pans, wheel '
                        'zooms, a click picks), touch (one finger orbits, two pinch and pan), keys as on the boards '
                        '(h lists them). The sample part unless a model is given.')
-    p.add_argument('model', nargs='?', metavar='MODEL.step|MODEL.fpk')
+    p.add_argument('model', nargs='*', metavar='MODEL.step|MODEL.fpk', help='several: a library (key b chooses)')
     p.add_argument('--size', metavar='WxH', help='the screen: 480x272 (the EVKB) or 640x480')
     p.add_argument('--bands', metavar='N', help='draw in bands of N lines')
     p.add_argument('--scale', metavar='K', help='window pixels per screen pixel')
@@ -104,14 +104,18 @@ def cmd_run(args, parser):
 
 
 def cmd_sim(args, parser):
-    model = existing_file(parser, args.model) if args.model else None
+    models = [existing_file(parser, m) for m in args.model]
     if not args.headless and not (os.environ.get('DISPLAY') or os.environ.get('WAYLAND_DISPLAY') or
                                   os.environ.get('SDL_VIDEODRIVER')):
         raise Failure("no display for the simulator's window: run it on a desktop, under xvfb-run, or with "
                       '--headless (screenshots to out/sim)')
     setup()
     build('host', quiet=True)
-    fpk = model_pack(model, os.path.join(ROOT, 'out', 'sim'))
+    folder = os.path.join(ROOT, 'out', 'sim')
+    if len(models) > 1:
+        fpk = library_of(models, folder, 1 << 30, 'any')  # (the simulator's memory: the model's needs)
+    else:
+        fpk = model_pack(models[0] if models else None, folder)
     extra = []
     for opt in ('size', 'bands', 'scale', 'ram'):
         if getattr(args, opt):

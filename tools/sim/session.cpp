@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <algorithm>
 #include <cstring>
 #include <fstream>
 #include <iterator>
@@ -139,15 +140,26 @@ bool Session::open(const Options& o, std::string& error) {
         error = o.pack + ": larger than any pack (64 MiB)";
         return false;
     }
-    file_.assign(bytes.size() / 4 + 1, 0);
+    file_.assign(bytes.size() / 8 + 1, 0);
     std::memcpy(file_.data(), bytes.data(), bytes.size());
-    // The workspace the model needs at the default detail with room to refine (a board hands
-    // the module all its free RAM; the simulator what this model asks for, at least the default).
+    // The models: a pack, or a library's (each opened in turn in the same memory).
+    const uint32_t file_bytes = uint32_t(bytes.size());
+    const uint32_t models = facet::library_count(file_.data(), file_bytes);
+    std::vector<facet::LibraryModel> files;
+    for (uint32_t i = 0; i < models; ++i) {
+        facet::LibraryModel m;
+        if (facet::library_model(file_.data(), file_bytes, i, m).ok()) files.push_back(m);
+    }
+    if (models == 0) files.push_back({file_.data(), file_bytes, ""});
+    // The workspace the largest model needs at the default detail with room to refine (a board
+    // hands the module all its free RAM; the simulator what the model asks for, at least the default).
     char text[200];
-    facet::ModelNeeds needs{};
     size_t ws_bytes = FACET_WORKSPACE_BYTES_DEFAULT;
-    if (facet::model_needs(file_.data(), uint32_t(bytes.size()), needs).ok() && needs.workspace_bytes > ws_bytes) {
-        ws_bytes = (needs.workspace_bytes + 7) / 8 * 8;
+    uint32_t need = 0;
+    for (const facet::LibraryModel& m : files) {
+        facet::ModelNeeds needs{};
+        if (facet::model_needs(m.file, m.bytes, needs).ok() && needs.workspace_bytes > ws_bytes) ws_bytes = (needs.workspace_bytes + 7) / 8 * 8;
+        need = std::max(need, facet::pack_memory_bytes(m.file, m.bytes));
     }
     if (opt_.ram_bytes) ws_bytes = opt_.ram_bytes / 8 * 8;
     workspace_storage_.assign(ws_bytes + 8, 0);
@@ -159,9 +171,15 @@ bool Session::open(const Options& o, std::string& error) {
         error = std::string("the viewer: ") + text;
         return false;
     }
-    const uint32_t need = opt_.ram_bytes ? 0 : facet::pack_memory_bytes(file_.data(), uint32_t(bytes.size()));
+    if (opt_.ram_bytes) need = 0;
     memory_.assign(need ? need / 4 + 1 : 0, 0);
-    const facet::Result r = viewer_->load(file_.data(), uint32_t(bytes.size()), need ? memory_.data() : nullptr, uint32_t(memory_.size() * 4));
+    void* const memory = need ? memory_.data() : nullptr;
+    facet::Result r;
+    if (models == 0) {
+        r = viewer_->load(file_.data(), file_bytes, memory, uint32_t(memory_.size() * 4));
+    } else if ((r = viewer_->set_library(file_.data(), file_bytes, memory, uint32_t(memory_.size() * 4))).ok()) {
+        for (uint32_t i = 0; i < models && !(r = viewer_->open_model(i)).ok(); ++i) {} // the first that opens (key b: the others)
+    }
     if (!r.ok()) {
         facet::describe(r, text, sizeof text);
         error = o.pack + ": " + text;

@@ -70,7 +70,7 @@ private:
     std::vector<uint8_t> workspace_storage_;
     std::vector<facet::Rgb565> buffers_[2];
     std::vector<uint16_t> depth_[2];
-    std::vector<uint32_t> file_;   // the pack file (4-byte aligned)
+    std::vector<uint64_t> file_;   // the pack file or library (8-byte aligned)
     std::vector<uint32_t> memory_; // a deflated pack, inflated
     std::vector<facet::Rgb565> screen_;
     facet::Viewer* viewer_ = nullptr;
