@@ -24,6 +24,7 @@ Result Core::set_library(const void* data, uint32_t bytes, void* memory, uint32_
     if (const Result r = lib.open(data, bytes); !r.ok()) return r;
     library_ = lib;
     library_memory_ = memory, library_memory_bytes_ = memory_bytes;
+    model_index_ = kNoModel; // (a model open now is none of this library's)
     presenter_.overlay().set_library(&library_);
     return {};
 }
