@@ -349,7 +349,7 @@ int facet_main(hal::Board& board) {
         print(con, "viewer: a library of {} models (key b lists them)\n", models);
         for (uint32_t i = 0; i < models; ++i) {
             LibraryModel m;
-            if (library_model(region, board_config::kPackBytes, i, m).ok()) print(con, "@library {} {} bytes {}\n", i + 1, m.name, m.bytes);
+            if (library_model(region, board_config::kPackBytes, i, m).ok()) print(con, "@library {} bytes {} {}\n", i + 1, m.bytes, m.name); // (the name last: it may hold spaces)
         }
     }
     // A library opens its first model that opens (the others' failures said as they fail).
