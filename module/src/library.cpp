@@ -56,11 +56,22 @@ Result Core::open_model(uint32_t index) {
     return r;
 }
 
-// A tap on the chooser: a row opens its model at the next step (true: the tap was the chooser's).
+// A tap on the chooser: a row opens its model at the next step, the header's buttons scroll
+// (true: the tap was the chooser's).
 bool Core::tap_models(int16_t x, int16_t y) {
-    const uint32_t m = presenter_.overlay().model_at(x, y);
-    if (m == module::Overlay::kNoRow) return false;
-    if (m != module::Overlay::kPanelRow && m != model_index_) pending_model_ = m;
+    using Kind = module::Overlay::PartsHit::Kind;
+    module::Overlay& o = presenter_.overlay();
+    const module::Overlay::PartsHit h = o.models_at(x, y);
+    switch (h.kind) {
+    case Kind::None: return false;
+    case Kind::Row:
+        if (h.part != model_index_) pending_model_ = h.part;
+        return true;
+    case Kind::Up: o.scroll_models(-int32_t(o.model_rows()) + 1); break;
+    case Kind::Down: o.scroll_models(int32_t(o.model_rows()) - 1); break;
+    default: return true;
+    }
+    presenter_.invalidate();
     return true;
 }
 

@@ -282,17 +282,16 @@ void Overlay::list_head(const render::Target& t, const Area& p, const char* titl
 }
 
 // The models chooser: "MODELS n", then a row per model (its number and name; one that could not
-// be opened says so, dimmed), the open one lit.
-// (As many rows as the panel holds; a library of more shows its first ones.)
+// be opened says so, dimmed), the open one lit, scrolled by the header's buttons.
 void Overlay::models_list(const render::Target& t) const {
     const Area p = parts_panel();
     if (p.height < 2 * kRow) return;
     char text[128];
     format(text, sizeof text, "MODELS {}", library_->count());
     list_head(t, p, text);
-    const uint32_t rows = uint32_t(p.height / kRow - 1);
-    for (uint32_t m = 0; m < rows && m < library_->count(); ++m) {
-        const int32_t y = p.y + kRow + int32_t(m) * kRow;
+    for (uint32_t r = 0; r < model_rows() && first_model_ + r < library_->count(); ++r) {
+        const uint32_t m = first_model_ + r;
+        const int32_t y = p.y + kRow + int32_t(r) * kRow;
         if (m == current_model_) render::fill_rect(t, p.x, y, p.width - 1, kRow, kButtonOn);
         format(text, sizeof text, broken(m) ? "{} cannot open: {}" : "{} {}", m + 1, library_->entry(m).name);
         render::cut_text(text, (p.width - 8) / render::kCellWidth);
@@ -300,14 +299,31 @@ void Overlay::models_list(const render::Target& t) const {
     }
 }
 
-uint32_t Overlay::model_at(int16_t x, int16_t y) const {
-    if (!models_open()) return kNoRow;
+uint32_t Overlay::model_rows() const {
+    const int32_t rows = parts_panel().height / kRow - 1;
+    return rows > 0 ? uint32_t(rows) : 0;
+}
+
+void Overlay::scroll_models(int32_t rows) {
+    const uint32_t count = library_ ? library_->count() : 0, shown = model_rows();
+    const int64_t last = count > shown ? int64_t(count - shown) : 0, first = int64_t(first_model_) + rows;
+    first_model_ = uint32_t(first < 0 ? 0 : first > last ? last : first);
+}
+
+Overlay::PartsHit Overlay::models_at(int16_t x, int16_t y) const {
+    PartsHit h;
+    if (!models_open()) return h;
     const Area p = parts_panel();
-    if (!p.contains(x, y)) return kNoRow;
+    if (!p.contains(x, y)) return h;
+    h.kind = PartsHit::Kind::Panel;
     const int32_t dy = y - p.y;
-    if (dy < kRow) return kPanelRow;
-    const uint32_t m = uint32_t(dy - kRow) / uint32_t(kRow);
-    return m < library_->count() && m < uint32_t(p.height / kRow - 1) ? m : kPanelRow;
+    if (dy < kRow) { // the header: the scroll buttons at its right end
+        if (x >= p.width - 2 * kScrollW) h.kind = x >= p.width - kScrollW ? PartsHit::Kind::Down : PartsHit::Kind::Up;
+        return h;
+    }
+    const uint32_t row = uint32_t(dy - kRow) / uint32_t(kRow);
+    if (row < model_rows() && first_model_ + row < library_->count()) h.kind = PartsHit::Kind::Row, h.part = first_model_ + row;
+    return h;
 }
 
 void Overlay::progress(const render::Target& t, uint32_t finished, uint32_t total) const {

@@ -85,12 +85,15 @@ public:
     }
     bool broken(uint32_t model) const { return model < pack::kMaxLibraryEntries && (broken_[model / 32] >> (model % 32)) & 1u; }
     void set_models(bool open, uint32_t current) {
-        models_open_ = open && library_ && library_->count() > 0, current_model_ = current;
+        models_open_ = open && library_ && library_->count() > 0, current_model_ = current, first_model_ = 0;
+        if (current != kNoRow && current >= model_rows()) first_model_ = current - model_rows() + 1; // (the open one in view)
         parts_open_ = parts_open_ && !models_open_;
     }
     bool models_open() const { return models_open_ && button_count_ > 0; }
-    static constexpr uint32_t kNoRow = ~0u, kPanelRow = ~0u - 1;
-    uint32_t model_at(int16_t x, int16_t y) const; // the model's row under (x, y); kPanelRow: the panel elsewhere; kNoRow: not the panel
+    // What a tap on the chooser is: None (not the panel), Panel, Row (a model: `part`), Up, Down.
+    PartsHit models_at(int16_t x, int16_t y) const;
+    void scroll_models(int32_t rows);
+    uint32_t model_rows() const; // rows the chooser shows at once
 
     void set_help(bool on) { help_ = on; }
     bool help() const { return help_; }
@@ -137,7 +140,8 @@ private:
     uint32_t first_row_ = 0, chosen_ = ~0u;
     const geom::Library* library_ = nullptr;
     bool models_open_ = false;
-    uint32_t current_model_ = kNoRow;
+    static constexpr uint32_t kNoRow = ~0u;
+    uint32_t current_model_ = kNoRow, first_model_ = 0;
     uint32_t broken_[pack::kMaxLibraryEntries / 32] = {};
 };
 

@@ -128,8 +128,9 @@ TEST(Library, TheChooserListsTheModelsAndATapOpensOne) {
     // The second row: model 2.
     const Area panel = o.parts_panel();
     const int x = panel.x + 30, y = panel.y + module::Overlay::kRow * 2 + module::Overlay::kRow / 2;
-    EXPECT_EQ(o.model_at(int16_t(x), int16_t(y)), 1u);
-    EXPECT_EQ(o.model_at(int16_t(x), int16_t(panel.y + 2)), module::Overlay::kPanelRow); // the header
+    EXPECT_EQ(o.models_at(int16_t(x), int16_t(y)).kind, module::Overlay::PartsHit::Kind::Row);
+    EXPECT_EQ(o.models_at(int16_t(x), int16_t(y)).part, 1u);
+    EXPECT_EQ(o.models_at(int16_t(x), int16_t(panel.y + 2)).kind, module::Overlay::PartsHit::Kind::Panel); // the header
     a.tap(x, y);
     EXPECT_EQ(a.v->model_index(), 1u);
     EXPECT_EQ(a.v->stats().faces, 6u);
@@ -141,6 +142,38 @@ TEST(Library, TheChooserListsTheModelsAndATapOpensOne) {
     a.v->act(Action::Models);
     a.tap(x, y);
     EXPECT_EQ(a.v->model_index(), 1u);
+}
+
+TEST(Library, AChooserOfMoreModelsThanRowsScrollsToEach) {
+    std::vector<Bytes> files;
+    for (uint32_t k = 1; k <= 30; ++k) files.push_back(squares(k, 10)); // model k: k faces
+    Lib lib(files);
+    App a;
+    a.w = 480, a.h = 272, a.lines = 272;
+    a.interface = Interface::Full;
+    ASSERT_TRUE(a.create().ok());
+    ASSERT_TRUE(a.v->set_library(lib.data(), lib.bytes, lib.memory.data(), uint32_t(lib.memory.size() * 4)).ok());
+    ASSERT_TRUE(a.v->open_model(0).ok());
+    a.run();
+    const module::Overlay& o = static_cast<Core*>(a.v)->overlay();
+    a.v->act(Action::Models);
+    const uint32_t rows = o.model_rows();
+    ASSERT_GT(rows, 2u);
+    ASSERT_LT(rows, 30u) << "the test wants more models than rows";
+    const Area panel = o.parts_panel();
+    const int down_x = panel.width - 5, header_y = panel.y + 5;
+    // Down until the last model shows in the last row, then open it.
+    for (int i = 0; i < 30 && o.models_at(30, int16_t(panel.y + module::Overlay::kRow * int(rows) + 5)).part != 29; ++i) a.tap(down_x, header_y);
+    const int last_row_y = panel.y + module::Overlay::kRow * int(rows) + 5;
+    ASSERT_EQ(o.models_at(30, int16_t(last_row_y)).part, 29u);
+    a.tap(30, last_row_y);
+    EXPECT_EQ(a.v->model_index(), 29u);
+    EXPECT_EQ(a.v->stats().faces, 30u);
+    // Opened again, the chooser shows the open model.
+    a.v->act(Action::Models);
+    bool shown = false;
+    for (uint32_t r = 0; r < rows; ++r) shown |= o.models_at(30, int16_t(panel.y + module::Overlay::kRow * int(r + 1) + 5)).part == 29;
+    EXPECT_TRUE(shown);
 }
 
 TEST(Library, UnloadDropsTheModelAndALoadAfterItTakesTheSameMemory) {
