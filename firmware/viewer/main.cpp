@@ -1,6 +1,7 @@
 // facet-viewer: the module (facet/viewer.h) on a board. The pack file comes from the board's
-// pack address (QEMU: run.py --load FILE@ADDR; the EVKB: flashed there, ./facet flash); the
-// viewer shows its wireframe, fills in the faces, and then follows the keys on the UART, the
+// pack address (QEMU: run.py --load FILE@ADDR; the EVKB: flashed there, ./facet flash), or a
+// library of several models (./facet flash A B, ./facet run A B: the first opens, key b lists
+// them); the viewer shows its wireframe, fills in the faces, and then follows the keys on the UART, the
 // mouse (versatilepb's PL050) and the touch panel (the EVKB) until 'q'.
 //
 // This program is one user of the module's events: it turns them into the UART test protocol
@@ -8,7 +9,7 @@
 // buffers (two full frames shown by the display's scan-out, a depth buffer each) and hands the
 // module all the free RAM as its workspace (the model's arrays; the pack decoded at its end).
 //
-//   from the firmware   @model, @pass, @lod, @progress, @face N failed, @tessellation /
+//   from the firmware   @library, @model, @pass, @lod, @progress, @face N failed, @tessellation /
 //                       @retessellation, @frame, @view, @pick, @budget, @memory; "@begin NAME" /
 //                       "@end NAME" around each piece of work (instruction-count regions:
 //                       unpack, edges, face, frame, update; step with !budget); @shot (capture);

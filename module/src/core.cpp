@@ -1,7 +1,5 @@
+// The viewer's core: load and unload, the loop of step(), input's commands and the actions.
 #include "core.h"
-
-#include <algorithm>
-
 #include "geom/pack_file.h"
 #include "loader.h"
 
@@ -290,8 +288,9 @@ void Core::act(Action a) {
     case Action::Finer:
     case Action::NextDetail: {
         const float r = detail();
+        auto near = [r](float x) { return r > x * 0.98f && r < x * 1.02f; };
         float f = a == Action::Coarser ? r * 2 : r * 0.5f;
-        if (a == Action::NextDetail) f = r > 0.99f && r < 1.01f ? 0.5f : r > 0.49f && r < 0.51f ? 0.25f : r > 0.24f && r < 0.26f ? 2.0f : 1.0f; // x1 -> x1/2 -> x1/4 -> x2 -> x1
+        if (a == Action::NextDetail) f = near(1) ? 0.5f : near(0.5f) ? 0.25f : near(0.25f) ? 2.0f : 1.0f; // x1 -> x1/2 -> x1/4 -> x2 -> x1
         (void)set_detail(f); // refused at its limits: stays
         return;
     }

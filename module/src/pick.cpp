@@ -1,5 +1,6 @@
 // Picking: the face under a screen pixel, as drawn (the same transforms, culling and
-// projection as the frame; the nearest triangle that covers the pixel's centre).
+// projection as the frame; the nearest triangle that covers the pixel's centre), its exact
+// facts, the selection (a tap's, or select()'s) and measuring between two faces.
 #include "core.h"
 #include "describe.h"
 #include "geom/measure.h"
