@@ -171,10 +171,14 @@ void Overlay::status(const render::Target& t, const StatusInfo& s) const {
     // "faces 87/87  1594 tri  lod 0.504 mm  shaded+edges  persp", and the frame's cost in its
     // own field at the right end (the one value that differs between a board and the host).
     const int64_t tol = int64_t(s.tolerance_mm * 1000 + 0.5f);
-    // The model's name first: its first 16 characters (UTF-8, up to 4 bytes each).
-    char name[16 * 4 + 1];
+    // The model's name first: its first kNameCells characters (UTF-8, up to 4 bytes each); with
+    // a library, on a button that opens the chooser.
+    char name[kNameCells * 4 + 1];
     format(name, sizeof name, "{}", s.name);
-    render::cut_text(name, 16);
+    render::cut_text(name, kNameCells);
+    if (library_ && library_->count() > 0 && button_count_ > 0) {
+        render::fill_rect(t, 0, 0, render::text_width(name) + 6, status_rows_, models_open_ ? kButtonOn : kButton);
+    }
     // A model larger than the memory: "faces 900/900 +4100 boxed" (the parts left out).
     char boxed[24] = "";
     if (s.boxed_faces) format(boxed, sizeof boxed, " +{} boxed", s.boxed_faces);
@@ -297,6 +301,11 @@ void Overlay::models_list(const render::Target& t) const {
         render::cut_text(text, (p.width - 8) / render::kCellWidth);
         render::draw_text(t, p.x + 4, y + (kRow - render::kGlyphHeight) / 2, text, broken(m) ? kDim : kText);
     }
+}
+
+bool Overlay::name_at(int16_t x, int16_t y) const {
+    return library_ && library_->count() > 0 && button_count_ > 0 && y >= 0 && y < status_rows_ && x >= 0 &&
+           x < kNameCells * render::kCellWidth + 6;
 }
 
 uint32_t Overlay::model_rows() const {

@@ -90,6 +90,10 @@ public:
         parts_open_ = parts_open_ && !models_open_;
     }
     bool models_open() const { return models_open_ && button_count_ > 0; }
+    // With a library, the model's name at the status bar's left end is a button (drawn as one):
+    // a tap on it opens the chooser, for a person with only the screen.
+    bool name_at(int16_t x, int16_t y) const;
+    static constexpr int32_t kNameCells = 16; // the name's characters in the status bar
     // What a tap on the chooser is: None (not the panel), Panel, Row (a model: `part`), Up, Down.
     PartsHit models_at(int16_t x, int16_t y) const;
     void scroll_models(int32_t rows);

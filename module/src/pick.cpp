@@ -16,7 +16,8 @@ void Core::tap(int16_t x, int16_t y) {
         act(a);
         return;
     }
-    if (tap_parts(x, y) || tap_models(x, y)) return; // the parts list's, the models chooser's
+    if (presenter_.overlay().name_at(x, y)) return toggle_models(); // the model's name, with a library: the chooser
+    if (tap_parts(x, y) || tap_models(x, y)) return;                 // the parts list's, the models chooser's
     const Event e = pick_at(x, y);
     if (e.pick.hit) (void)select(e.pick.instance, e.pick.face); // (a face drawn is one select() takes)
     else clear_selection();

@@ -121,6 +121,13 @@ TEST(Library, TheChooserListsTheModelsAndATapOpensOne) {
     a.run();
     Core& core = *static_cast<Core*>(a.v);
     const module::Overlay& o = core.overlay();
+    // The model's name in the status bar opens the chooser (for a person with only the screen).
+    ASSERT_TRUE(o.name_at(10, 5));
+    a.tap(10, 5);
+    ASSERT_TRUE(o.models_open());
+    EXPECT_EQ(a.count(Event::Kind::Picked), 0);
+    a.tap(10, 5);
+    EXPECT_FALSE(o.models_open());
     a.v->act(Action::Models);
     ASSERT_TRUE(o.models_open());
     a.run();
