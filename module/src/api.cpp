@@ -132,7 +132,10 @@ uint32_t Viewer::measurement(const char* lines[3]) const {
 }
 
 // The parts.
-uint32_t Viewer::part_count() const { return model().parts; }
+uint32_t Viewer::part_count() const {
+    const module::Scene& s = core(this).scene();
+    return s.loaded() ? uint32_t(s.instances().size()) : 0;
+}
 Viewer::Part Viewer::part(uint32_t i) const {
     const Core& c = core(this);
     if (i >= part_count()) return {"", "", 0, false};

@@ -120,25 +120,35 @@ void Overlay::set_chosen(uint32_t part) {
     if (part >= first_row_ + rows) first_row_ = part - rows + 1;
 }
 
+namespace {
+// A list's first row moved by `rows`, within what keeps its `shown` rows full of its `count`.
+uint32_t scrolled(uint32_t first, int32_t rows, uint32_t count, uint32_t shown) {
+    const int64_t last = count > shown ? int64_t(count - shown) : 0, at = int64_t(first) + rows;
+    return uint32_t(at < 0 ? 0 : at > last ? last : at);
+}
+} // namespace
+
 void Overlay::scroll(int32_t rows) {
-    const uint32_t count = scene_ && scene_->loaded() ? uint32_t(scene_->instances().size()) : 0;
-    const uint32_t shown = part_rows();
-    const int64_t last = count > shown ? int64_t(count - shown) : 0;
-    int64_t first = int64_t(first_row_) + rows;
-    first_row_ = uint32_t(first < 0 ? 0 : first > last ? last : first);
+    first_row_ = scrolled(first_row_, rows, scene_ && scene_->loaded() ? uint32_t(scene_->instances().size()) : 0, part_rows());
+}
+
+// A tap on a list panel (the parts list's or the chooser's) as far as the panel alone says:
+// outside it (None), on its header (Up, Down: its scroll buttons; Panel: the rest). True when
+// that decides it; else the tap is in the rows below the header, Panel so far.
+bool Overlay::list_hit(int16_t x, int16_t y, PartsHit& h) const {
+    const Area p = parts_panel();
+    if (!p.contains(x, y)) return true;
+    h.kind = PartsHit::Kind::Panel;
+    if (y - p.y >= kRow) return false;
+    if (x >= p.width - 2 * kScrollW) h.kind = x >= p.width - kScrollW ? PartsHit::Kind::Down : PartsHit::Kind::Up;
+    return true;
 }
 
 Overlay::PartsHit Overlay::parts_at(int16_t x, int16_t y) const {
     PartsHit h;
-    if (!parts_open()) return h;
+    if (!parts_open() || list_hit(x, y, h)) return h;
     const Area p = parts_panel();
-    if (!p.contains(x, y)) return h;
-    h.kind = PartsHit::Kind::Panel;
     const int32_t dy = y - p.y;
-    if (dy < kRow) { // the header: the scroll buttons at its right end
-        if (x >= p.width - 2 * kScrollW) h.kind = x >= p.width - kScrollW ? PartsHit::Kind::Down : PartsHit::Kind::Up;
-        return h;
-    }
     if (y >= p.y + p.height - kPartsFooter) { // HIDE, ISOL, ALL
         const int32_t third = p.width / 3;
         h.kind = x < third ? PartsHit::Kind::Hide : x < 2 * third ? PartsHit::Kind::Isolate : PartsHit::Kind::All;
@@ -313,24 +323,12 @@ uint32_t Overlay::model_rows() const {
     return rows > 0 ? uint32_t(rows) : 0;
 }
 
-void Overlay::scroll_models(int32_t rows) {
-    const uint32_t count = library_ ? library_->count() : 0, shown = model_rows();
-    const int64_t last = count > shown ? int64_t(count - shown) : 0, first = int64_t(first_model_) + rows;
-    first_model_ = uint32_t(first < 0 ? 0 : first > last ? last : first);
-}
+void Overlay::scroll_models(int32_t rows) { first_model_ = scrolled(first_model_, rows, library_ ? library_->count() : 0, model_rows()); }
 
 Overlay::PartsHit Overlay::models_at(int16_t x, int16_t y) const {
     PartsHit h;
-    if (!models_open()) return h;
-    const Area p = parts_panel();
-    if (!p.contains(x, y)) return h;
-    h.kind = PartsHit::Kind::Panel;
-    const int32_t dy = y - p.y;
-    if (dy < kRow) { // the header: the scroll buttons at its right end
-        if (x >= p.width - 2 * kScrollW) h.kind = x >= p.width - kScrollW ? PartsHit::Kind::Down : PartsHit::Kind::Up;
-        return h;
-    }
-    const uint32_t row = uint32_t(dy - kRow) / uint32_t(kRow);
+    if (!models_open() || list_hit(x, y, h)) return h;
+    const uint32_t row = uint32_t(y - parts_panel().y - kRow) / uint32_t(kRow);
     if (row < model_rows() && first_model_ + row < library_->count()) h.kind = PartsHit::Kind::Row, h.part = first_model_ + row;
     return h;
 }

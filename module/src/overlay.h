@@ -129,6 +129,7 @@ private:
     void parts_list(const render::Target& t) const;
     void models_list(const render::Target& t) const;
     void list_head(const render::Target& t, const Area& p, const char* title) const;
+    bool list_hit(int16_t x, int16_t y, PartsHit& h) const;
 
     uint16_t width_ = 0, height_ = 0;
     int16_t status_rows_ = 0, toolbar_x_ = 0;

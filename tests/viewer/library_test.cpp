@@ -110,15 +110,20 @@ TEST(Library, ABadTableIsRefusedWhole) {
     EXPECT_NE(a.v->load(good.data(), good.bytes).status, Status::Ok);
 }
 
-TEST(Library, TheChooserListsTheModelsAndATapOpensOne) {
-    Lib lib({disc(), squares(6, 3), squares(2, 2)});
-    App a;
+// The EVKB's screen with facet's own interface (its chooser), the library set, its first model in.
+void open_first(App& a, Lib& lib) {
     a.w = 480, a.h = 272, a.lines = 272;
     a.interface = Interface::Full;
     ASSERT_TRUE(a.create().ok());
     ASSERT_TRUE(a.v->set_library(lib.data(), lib.bytes, lib.memory.data(), uint32_t(lib.memory.size() * 4)).ok());
     ASSERT_TRUE(a.v->open_model(0).ok());
     a.run();
+}
+
+TEST(Library, TheChooserListsTheModelsAndATapOpensOne) {
+    Lib lib({disc(), squares(6, 3), squares(2, 2)});
+    App a;
+    open_first(a, lib);
     Core& core = *static_cast<Core*>(a.v);
     const module::Overlay& o = core.overlay();
     // The model's name in the status bar opens the chooser (for a person with only the screen).
@@ -156,12 +161,7 @@ TEST(Library, AChooserOfMoreModelsThanRowsScrollsToEach) {
     for (uint32_t k = 1; k <= 30; ++k) files.push_back(squares(k, 10)); // model k: k faces
     Lib lib(files);
     App a;
-    a.w = 480, a.h = 272, a.lines = 272;
-    a.interface = Interface::Full;
-    ASSERT_TRUE(a.create().ok());
-    ASSERT_TRUE(a.v->set_library(lib.data(), lib.bytes, lib.memory.data(), uint32_t(lib.memory.size() * 4)).ok());
-    ASSERT_TRUE(a.v->open_model(0).ok());
-    a.run();
+    open_first(a, lib);
     const module::Overlay& o = static_cast<Core*>(a.v)->overlay();
     a.v->act(Action::Models);
     const uint32_t rows = o.model_rows();
