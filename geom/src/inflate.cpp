@@ -4,7 +4,10 @@
 // look-up in a 512-entry table built per block; longer ones one bit at a time against the
 // count of codes of each length (codes of one length are consecutive integers, in symbol
 // order). The bit-by-bit decoder alone took about a hundred instructions per symbol: 5 to 26%
-// of a model's load on the ARM926 (tail_section_asm: 75 M instructions).
+// of a model's load on the ARM926 (tail_section_asm: 75 M instructions). Away from the ends of
+// the input and the output, literals (most of a pack's symbols: its floats) decode two a turn
+// without a check of either end: the 10 k-face assembly's 6 MB inflate in 127 M instructions
+// on the ARM926, 145 M before.
 #include "geom/inflate.h"
 
 namespace facet::geom {
@@ -60,8 +63,10 @@ struct Bits {
 struct Huffman {
     uint16_t count[kMaxBits + 1];
     uint16_t symbol[kLiteralLengthCodes]; // by code: shortest codes first, then by symbol
-    uint16_t fast[1 << kFastBits];        // by the next kFastBits bits: symbol << 4 | length (0: longer)
+    uint16_t fast[1 << kFastBits];        // by the next kFastBits bits: symbol << 4 | length (kLonger: longer)
 };
+constexpr uint16_t kLonger = 0xFFF0;               // a fast entry of no short code (length 0)
+constexpr uint32_t kLiteralEntries = 256u << 4;     // a literal's fast entry is under this
 
 // The code for symbols 0..n-1 of the given lengths (0: unused). Returns 0 for a complete code,
 // the number of missing codes (> 0) for an incomplete one, < 0 for an over-subscribed one.
@@ -81,7 +86,7 @@ int build(Huffman& h, const uint8_t* length, int n) {
         if (length[s]) h.symbol[offset[length[s]]++] = uint16_t(s);
     // The table: each short code, bit-reversed (the stream sends codes from their top bit),
     // at every index whose low bits it is.
-    for (uint16_t& f : h.fast) f = 0;
+    for (uint16_t& f : h.fast) f = kLonger;
     int code = 0, index = 0;
     for (int len = 1; len <= kFastBits; ++len) {
         for (int i = 0; i < h.count[len]; ++i, ++code) {
@@ -184,6 +189,28 @@ Result codes(Bits& in, Output& out, const Huffman& literal, const Huffman& dista
     constexpr const char* kEarly = "the DEFLATE stream ends early";
     constexpr const char* kLarger = "the inflated data is larger than its space";
     for (;;) {
+        // Literals, two a turn, while the input holds the 4 bytes a refill may read and the
+        // output has room for both: no check of either per symbol (most of a pack's symbols
+        // are literals: its floats). The rest, and everything near either end, below.
+        if (end - p >= 4 && size - at >= 2) {
+            if (count <= 24) { // to 25..31 bits: the next 4 bytes, and past those taken whole
+                const uint32_t word = uint32_t(p[0]) | uint32_t(p[1]) << 8 | uint32_t(p[2]) << 16 | uint32_t(p[3]) << 24;
+                buffer |= word << count; // (bits past `count` are the stream's next: or-ing them again changes none)
+                p += (31 - count) >> 3;
+                count |= 24;
+            }
+            uint32_t e = literal.fast[buffer & ((1u << kFastBits) - 1)];
+            if (e < kLiteralEntries) {
+                buffer >>= e & 15, count -= int(e & 15);
+                data[at++] = uint8_t(e >> 4);
+                e = literal.fast[buffer & ((1u << kFastBits) - 1)]; // (16 bits or more still in hand)
+                if (e < kLiteralEntries) {
+                    buffer >>= e & 15, count -= int(e & 15);
+                    data[at++] = uint8_t(e >> 4);
+                    continue;
+                }
+            }
+        }
         refill();
         const int sym = next(literal);
         if (sym < 0) return fail(Status::Corrupt, sym == -2 ? kEarly : "an invalid literal/length code");
