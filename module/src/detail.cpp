@@ -68,22 +68,27 @@ bool Core::wants_face(void* self, uint32_t f) {
     // A closed part's face turned away from the eye shows nothing unless a section opens the
     // solid (Transform::hides_plane): a plane, a cylinder's or a cone's face is left for when
     // the view turns it round.
+    // Its size first: most faces of a large model left out are left out for it, and it costs a
+    // fraction of the tests of which way a face looks (those, and their set-up, only for a face
+    // that is large enough somewhere).
     float on_plane[3], normal[3];
     const bool closed = !c.detail_section_ && scene.part(part).closed;
-    const bool plane = closed && scene.face_plane(f, on_plane, normal);
+    enum class Facing : uint8_t { Unknown, Plane, Round, Neither } facing = closed ? Facing::Unknown : Facing::Neither;
     module::RoundFace round;
-    const bool is_round = closed && !plane && round_face(scene, f, round);
     const float sag = kCoarsest * c.scheduler_.tolerance(); // (its mesh's chords: at most its block's tolerance inside it)
     auto shows = [&](const pack::Instance& inst) {
         float w[3];
-        if (plane) {
+        module::place(inst.m, p, w);
+        if (c.detail_.pixels(w, r) < kMinFacePixels) return false;
+        if (facing == Facing::Unknown) {
+            facing = scene.face_plane(f, on_plane, normal) ? Facing::Plane : round_face(scene, f, round) ? Facing::Round : Facing::Neither;
+        }
+        if (facing == Facing::Plane) {
             float wn[3];
             module::place(inst.m, on_plane, w), module::place(inst.m, normal, wn, false);
-            if (c.detail_.faces_away(w, wn)) return false;
+            return !c.detail_.faces_away(w, wn);
         }
-        if (is_round && c.detail_.faces_away(round, inst.m, sag)) return false;
-        module::place(inst.m, p, w);
-        return c.detail_.pixels(w, r) >= kMinFacePixels;
+        return !(facing == Facing::Round && c.detail_.faces_away(round, inst.m, sag));
     };
     if (c.detail_count_ <= kDetailInstances) {
         for (uint32_t k = 0; k < c.detail_count_; ++k)
