@@ -69,12 +69,31 @@ FIRST_VIEW_BUDGET_PER_10K_FACES = 1_200_000_000  # issue 25: load to the first v
 WORK_REGIONS = ('unpack', 'edges', 'face', 'fit', 'frame', 'update', 'overlay')  # every piece of the viewer's work
 
 
-def first_view(uart, regions):
+def by_model(uart, regions):
+    """The log's records with their regions (protocol.with_regions), model by model: a library's
+    models opened in turn, each after the first from the unpack that opened it (the last
+    '@begin unpack' before its '@model'), the first from the log's start. One list for one model."""
+    pairs = list(protocol.with_regions(uart, regions))
+    cuts, seen = [0], False
+    for i, (r, _) in enumerate(pairs):
+        if r.name != 'model':
+            continue
+        if seen:
+            j = i
+            while j > cuts[-1] and not (pairs[j][0].name == 'begin' and pairs[j][0].words[:1] == ['unpack']):
+                j -= 1
+            cuts.append(j if j > cuts[-1] else i)
+        seen = True
+    return [pairs[a:b] for a, b in zip(cuts, cuts[1:] + [len(pairs)])]
+
+
+def first_view(uart, regions, pairs=None):
     """(first frame, first view): every piece of work from load to the end of the first frame
     (a blocked pack's parts as boxes, or the wireframe), and to the end of the first frame after the first pass's faces are in (the
-    view at its level of detail); None where the log has no such frame."""
+    view at its level of detail); None where the log has no such frame. `pairs`: one model's
+    records and regions (by_model) instead of the log's."""
     spent, first, tessellated = 0, None, False
-    for r, region in protocol.with_regions(uart, regions):
+    for r, region in (pairs if pairs is not None else protocol.with_regions(uart, regions)):
         if region and r.words[0] in WORK_REGIONS:
             spent += region['instructions'] or 0
         elif r.name == 'tessellation':
@@ -94,14 +113,15 @@ def frame_budget(triangles):
     return FRAME_BUDGET_PER_10K * max(1.0, triangles / 10_000)
 
 
-def analyse(uart, regions):
+def analyse(uart, regions, pairs=None):
     """Per pass: tessellation instructions (its pieces of sampling and faces); per full frame:
     its pieces' instructions (the last 'pieces' frame and overlay regions before its '@frame'
     line: a frame the view outdated while it was drawn is not one), the overlay's part of them,
-    the mesh's triangles then and the cost the firmware's own clock gave it (us at 600 MHz)."""
+    the mesh's triangles then and the cost the firmware's own clock gave it (us at 600 MHz).
+    `pairs`: one model's records and regions (by_model) instead of the log's."""
     tess, frames, tri_now, pass_no, pieces, overlay, closed = {}, [], 0, -1, [], [], False
     models = 0  # a library's models opened in turn: the passes of the first keyed by number, the others' by model too
-    for r, region in protocol.with_regions(uart, regions):
+    for r, region in (pairs if pairs is not None else protocol.with_regions(uart, regions)):
         if r.name == 'model':
             models += 1
         elif r.name == 'pass':

@@ -270,7 +270,8 @@ def large_model_packs_with_deflate():
 # -- 5. budgets enforced by the exit code ------------------------------------------------
 
 def budget_report_exit_codes():
-    """./facet run printed 'within budget: NO' and exited 0."""
+    """./facet run printed 'within budget: NO' and exited 0; and with several models, only the
+    first one's tessellation and first view were held to their budgets."""
     d = work('budgets')
     base = {'board': 'qemu-versatilepb', 'exit_code': 0, 'failures': [], 'regions': [], 'shots': [],
             'ram': {'arena': 1000, 'total': 1000}}
@@ -288,6 +289,28 @@ def budget_report_exit_codes():
         expect(r.returncode == code, f'budgets.py --strict on {name}: exit {r.returncode}, expected {code}\n{r.stdout[-600:]}')
         expect(os.path.exists(os.path.join(sub, 'b.json')) and os.path.exists(os.path.join(sub, 'b.md')),
                f'{name}: the report was not written')
+    # A library (./facet run A B): the model the chooser opened second is held to the same
+    # budgets as the first (only the first one's were checked before).
+    def model(faces, failed):
+        return ('@begin unpack\n@end unpack\n'
+                f'@model faces {faces} edges 20 shells 1 instances 1 bytes 4000 file_bytes 1000\n@pass 0 tolerance_um 100\n'
+                '@begin face\n@end face\n'
+                f'@tessellation faces {faces} failed {failed} triangles 100 vertices 60 mesh_bytes 2000 arena_peak 300 tolerance_um 100\n'
+                '@begin frame\n@end frame\n@frame triangles 100 culled 0 pixels 10 pieces 1 cost_us 1\n')
+    regions = lambda second: [{'name': n, 'instructions': i, 'parent': None} for n, i in  # noqa: E731
+                              (('unpack', 1000), ('face', 5000), ('frame', 2000), ('unpack', 1000), ('face', second), ('frame', 2000))]
+    for name, second, failed, code in (('library-fine', 5000, 0, 0), ('library-second-over', 700_000_000, 0, 4),
+                                       ('library-second-incomplete', 5000, 3, 5)):
+        sub = os.path.join(d, name)
+        os.makedirs(sub)
+        json.dump(dict(base, regions=regions(second)), open(os.path.join(sub, 'report.json'), 'w'))
+        open(os.path.join(sub, 'uart.log'), 'w').write(model(10, 0) + '@shot chooser\n' + model(5, failed))
+        r = run([sys.executable, ARGS.budgets, os.path.join(sub, 'report.json'), '--json', os.path.join(sub, 'b.json'),
+                 '--markdown', os.path.join(sub, 'b.md'), '--strict'])
+        expect(r.returncode == code, f'budgets.py --strict on {name}: exit {r.returncode}, expected {code}\n{r.stdout[-600:]}')
+        later = json.load(open(os.path.join(sub, 'b.json'))).get('models_opened_later', [])
+        expect(len(later) == 1 and later[0]['tri_instructions'] == second and later[0]['faces'] == 5,
+               f'{name}: the second model is not reported on its own: {later}')
 
 
 def screenshot_names_stay_in_the_folder():

@@ -41,7 +41,7 @@ static uint32_t open_id[MAX_DEPTH];
 static int depth;
 static uint32_t next_id;
 static const char* profile_path;
-#define MAX_RANGES 16
+#define MAX_RANGES 4096
 static uint32_t range_first[MAX_RANGES], range_last[MAX_RANGES];
 static int ranges; /* 0: every region */
 static int profiling; /* an open region is one to profile */
