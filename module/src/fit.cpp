@@ -62,7 +62,7 @@ bool Framer::run(const Scene& scene, Camera& camera, uint32_t units) {
                 if (scene.part_corners(instances[instance_].shell, corners)) {
                     for (const int32_t* q : corners) {
                         t_.project(q, p);
-                        o_.add(p);
+                        see(p);
                     }
                 }
                 ++instance_;
@@ -81,7 +81,7 @@ bool Framer::run(const Scene& scene, Camera& camera, uint32_t units) {
                 const uint32_t n = samples.count[edge_], first = samples.first[edge_];
                 for (; k_ < n && budget > 0; ++k_, --budget) {
                     t_.project(scene.sample_q(first + k_), p);
-                    o_.add(p);
+                    see(p);
                 }
                 if (k_ < n) break;
                 ++edge_, k_ = 0;
@@ -140,7 +140,7 @@ bool Framer::run(const Scene& scene, Camera& camera, uint32_t units) {
         const uint32_t e = block.first_edge + coedges[coedge_].edge(), n = samples.count[e];
         for (; k_ < n && budget > 0; ++k_, --budget) {
             t_.project(scene.sample_q(samples.first[e] + k_), p);
-            o_.add(p);
+            see(p);
         }
         if (k_ < n) continue;
         ++coedge_, k_ = 0;
@@ -148,12 +148,20 @@ bool Framer::run(const Scene& scene, Camera& camera, uint32_t units) {
     return false;
 }
 
+// A point into the outline, unless a section cuts it away: with a section on, what is framed is
+// what is drawn, the kept side (its points; where the plane crosses a face the outline ends at
+// the nearest of them, within a sample's spacing of the cut).
+void Framer::see(const Projected& p) {
+    if (t_.cut.on && t_.cut.side(p.x, p.y, p.d) > 0) return;
+    o_.add(p);
+}
+
 // The face's vertices from k_ on, while the budget lasts: true when all are in the outline.
 bool Framer::project_mesh(const Scene& scene, const FaceInfo& F, uint32_t& budget) {
     Projected p;
     for (; k_ < F.vertex_count && budget > 0; ++k_, --budget) {
         t_.project(scene.vertices()[F.first_vertex + k_].p, p);
-        o_.add(p);
+        see(p);
     }
     return k_ == F.vertex_count;
 }

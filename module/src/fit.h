@@ -41,6 +41,7 @@ private:
     bool adjust(const Scene& scene, Camera& camera); // a round's outline seen: true if it sits
     bool inside_outline(const int32_t centre[3], int32_t radius) const; // the sphere cannot widen the outline so far
     bool project_mesh(const Scene& scene, const FaceInfo& F, uint32_t& budget);
+    void see(const Projected& p); // into the outline, unless the section cuts it away
     bool busy_ = false;
     uint16_t width_ = 0, height_ = 0;
     FreeArea taken_;

@@ -216,3 +216,28 @@ TEST(Viewer, TheCameraItDescribesIsTheOneItDraws) {
     EXPECT_TRUE(app.v->camera().parallel);
     check("parallel");
 }
+
+// FIT with a section on frames what is drawn: the side the plane keeps, centred in the free
+// area and filling it as the whole model would (the framer leaves out the points the section
+// cuts away); before, the whole model was framed and the kept block sat off to one side.
+TEST(Viewer, FitWithASectionFramesTheSideItKeeps) {
+    App app;
+    app.w = 480, app.h = 272, app.lines = 272, app.interface = Interface::Full;
+    ASSERT_TRUE(app.create().ok());
+    ASSERT_TRUE(app.load(two_blocks()).ok());
+    app.run();
+    app.v->key('7'); // from the front: the blocks side by side along x
+    app.run();
+    app.v->key('c'); // no face picked: across x through the middle, the second block cut away
+    app.run();
+    ASSERT_TRUE(app.v->section().on);
+    app.v->fit();
+    app.run();
+    const Core& core = *static_cast<const Core*>(app.v);
+    const auto kept = box_of(core, 0, app.w, app.h); // the first block: pixels left, top, right, bottom
+    const module::FreeArea taken = core.overlay().taken();
+    const double aw = app.w - taken.left - taken.right, ah = app.h - taken.top - taken.bottom;
+    EXPECT_NEAR((kept[0] + kept[2]) / 2.0, taken.left + aw / 2, 1.5);
+    EXPECT_NEAR((kept[1] + kept[3]) / 2.0, taken.top + ah / 2, 1.5);
+    EXPECT_NEAR(std::max((kept[2] - kept[0]) / aw, (kept[3] - kept[1]) / ah), module::Framer::kFill, 0.02);
+}

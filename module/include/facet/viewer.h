@@ -100,7 +100,7 @@ public:
     Orbit orbit() const;
     Result set_orbit(const Orbit& orbit); // OutOfRange: a value not finite, or a dolly outside 0.05-20
     void show_view(StandardView view);    // framed, with a short glide
-    void fit();                           // the whole model framed from where the eye is
+    void fit();                           // the model framed from where the eye is (a section's kept side)
     Result fit_part(uint32_t part);       // one part framed (with a glide)
     Result fit_face(uint32_t part, uint32_t face); // one face, among its neighbours
     void set_parallel(bool parallel);     // the projection: parallel or perspective (framed again)
