@@ -63,28 +63,46 @@ bool sample_circle(const Pack& pack, const Curve& C, const Edge& E, const TessOp
     return pool.emit(E.t1, vertex(pack, E.v1));
 }
 
-// Whether a B-spline edge is straight (STEP writers and healing make lines of them, seams
-// often): the curve lies in the convex hull of its poles, so if every pole is within a small
-// distance of the line through the edge's ends, and their positions along it are monotonic
-// (variation diminishing: the curve then never turns back), the chord is the edge.
-bool straight_bspline(const Pack& pack, const Curve& C, Vec3 a, Vec3 b, float tol) {
+// How a B-spline edge's chord stands for it, from its poles (the curve lies in their convex
+// hull, and its tangents in the cone of its control polygon's legs). Straight: every pole
+// within a small distance of the line through the edge's ends (STEP writers and healing make
+// lines of them, seams often). Within: every pole within `tol` of that line, and every leg
+// within half of `max_angle` of the chord's direction: the curve then strays from its chord by
+// no more than the tolerance and its tangent turns by no more than the angle, all an edge
+// sampled more finely would be held to (an edge small on the screen: its ends are enough).
+// Either way the poles' positions along the line must be monotonic (variation diminishing: the
+// curve then never turns back).
+enum class Chord : uint8_t { Curved, Straight, Within };
+Chord chord_of(const Pack& pack, const Curve& C, Vec3 a, Vec3 b, float tol, float max_angle) {
     const BSplineCurveView B = bspline(pack, C);
     const int n = B.n;
     const float* poles = B.poles;
     const Vec3 d = b - a;
     const float len2 = dot(d, d);
-    if (!(len2 > 0)) return false;
-    const float near2 = (tol / 16) * (tol / 16);
-    float last = -1e30f;
-    bool up = true, down = true;
+    if (!(len2 > 0)) return Chord::Curved;
+    const float near2 = (tol / 16) * (tol / 16), within2 = tol * tol;
+    const float half = max_angle / 2, c = half < kPi / 2 ? cos_f(half) : 0, cos2 = c * c;
+    float last = -1e30f, most2 = 0;
+    bool up = true, down = true, legs_up = true, legs_down = true; // (legs: each within the half angle, that way)
+    bool weighted = true; // a rational curve's weights all positive (else its tangents leave the legs' cone)
+    for (int i = 0; B.rational && i < n; ++i) weighted = weighted && B.weights[i] > 0;
+    Vec3 prev{};
     for (int i = 0; i < n; ++i) {
         const Vec3 p = Vec3{poles[3 * i], poles[3 * i + 1], poles[3 * i + 2]} - a;
         const float along = dot(p, d) / len2;
-        if (length2(p - d * along) > near2) return false;
-        if (i > 0) up = up && along >= last, down = down && along <= last;
-        last = along;
+        most2 = std::max(most2, length2(p - d * along));
+        if (most2 > within2) return Chord::Curved;
+        if (i > 0) {
+            up = up && along >= last, down = down && along <= last;
+            const Vec3 leg = p - prev;
+            const float l = dot(leg, d), turn2 = cos2 * dot(leg, leg) * len2; // l^2 >= turn2: within the half angle
+            legs_up = legs_up && l >= 0 && l * l >= turn2;
+            legs_down = legs_down && l <= 0 && l * l >= turn2;
+        }
+        last = along, prev = p;
     }
-    return up || down;
+    if (most2 <= near2) return up || down ? Chord::Straight : Chord::Curved;
+    return weighted && ((up && legs_up) || (down && legs_down)) ? Chord::Within : Chord::Curved;
 }
 
 // Drops samples closer than min_gap to the sample kept before them (the edge's ends always
@@ -134,7 +152,7 @@ void EdgeSampler::start(const Pack& pack, const TessOptions& opt, EdgeSamples& o
         case CurveType::Line: room = pool.emit(E.t0, a) && pool.emit(E.t1, b); break;
         case CurveType::Circle: room = sample_circle(pack, C, E, opt_, pool); break;
         case CurveType::BSpline:
-            if (straight_bspline(pack, C, a, b, opt_.tolerance)) room = pool.emit(E.t0, a) && pool.emit(E.t1, b);
+            if (chord_of(pack, C, a, b, opt_.tolerance * 0.95f, opt_.max_angle) != Chord::Curved) room = pool.emit(E.t0, a) && pool.emit(E.t1, b);
             else adaptive_ = true;
             break;
         default: adaptive_ = true; break;

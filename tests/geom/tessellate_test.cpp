@@ -281,3 +281,49 @@ TEST(Tessellation, BoundaryVerticesSayWhichSampleTheyAre) {
         }
     }
 }
+
+// A B-spline edge its chord stands for (every pole within the tolerance of it, running along
+// it, each leg of the control polygon within half the angle of its direction) is its two
+// vertices, whichever way the edge runs along its curve; a bulge past the tolerance, or legs
+// turning more than the angle allows, samples it adaptively. Every sample lies on the curve
+// and every chord within the tolerance of it.
+TEST(EdgeSampling, AB_SplineItsChordStandsForIsItsTwoVertices) {
+    // A cubic from (0, 0, 0) to (30, 0, 0), its middle poles at height h: the curve bulges 0.75 h.
+    auto sampled = [](float h, float tolerance, float max_angle, bool reversed) {
+        PackWriter w;
+        std::vector<float> curve = {3, 4, 8, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1};
+        for (float x : {0.0f, 10.0f, 20.0f, 30.0f}) curve.insert(curve.end(), {x, x == 0 || x == 30 ? 0.0f : h, 0});
+        const uint32_t c = w.add_curve(pack::CurveType::BSpline, 3, curve);
+        const uint32_t a = w.add_vertex(0, 0, 0), b = w.add_vertex(30, 0, 0);
+        w.add_edge(reversed ? pack::Edge{c, 1, 0, b, a, 0, 0} : pack::Edge{c, 0, 1, a, b, 0, 0});
+        OpenedPack opened;
+        EXPECT_TRUE(opened.open(w.finish()));
+        TessOptions opt;
+        opt.tolerance = tolerance, opt.max_angle = max_angle;
+        std::vector<uint32_t> first(1);
+        std::vector<uint16_t> count(1);
+        std::vector<float> t(4096);
+        std::vector<Vec3> p(4096);
+        EdgeSamples samples{first, count, t, p};
+        EXPECT_TRUE(sample_edges(opened.pack, opt, samples).ok());
+        std::vector<Vec3> out(p.begin(), p.begin() + count[0]);
+        for (size_t k = 0; k + 1 < out.size(); ++k) { // each chord within the tolerance of the curve
+            for (int q = 1; q < 8; ++q) {
+                const float s = t[k] + (t[k + 1] - t[k]) * float(q) / 8, u = 1 - s;
+                const Vec3 on{30 * (3 * u * u * s / 3 + 2 * 3 * u * s * s / 3 + s * s * s), 3 * u * s * h, 0}; // the cubic at s
+                const Vec3 d = out[k + 1] - out[k], off = on - out[k];
+                const float along = std::clamp(dot(off, d) / dot(d, d), 0.0f, 1.0f);
+                EXPECT_LE(std::sqrt(length2(off - d * along)), tolerance * 1.001f) << "h " << h << " piece " << k;
+            }
+        }
+        return out;
+    };
+    for (bool reversed : {false, true}) {
+        const std::vector<Vec3> flat = sampled(0.5f, 1.0f, 1.0f, reversed); // bulge 0.375, poles 0.5 off: within 1 mm
+        ASSERT_EQ(flat.size(), 2u) << (reversed ? "reversed" : "");
+        EXPECT_EQ(flat[reversed ? 1 : 0].x, 0.0f);
+        EXPECT_EQ(flat[reversed ? 0 : 1].x, 30.0f);
+        EXPECT_GT(sampled(2.0f, 1.0f, 1.0f, reversed).size(), 2u) << "poles 2 mm off the chord: past 1 mm";
+        EXPECT_GT(sampled(0.5f, 1.0f, 0.05f, reversed).size(), 2u) << "legs turning 2.9 degrees: past half of 0.05 rad";
+    }
+}
