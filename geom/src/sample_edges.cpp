@@ -65,13 +65,14 @@ bool sample_circle(const Pack& pack, const Curve& C, const Edge& E, const TessOp
 
 // How a B-spline edge's chord stands for it, from its poles (the curve lies in their convex
 // hull, and its tangents in the cone of its control polygon's legs). Straight: every pole
-// within a small distance of the line through the edge's ends (STEP writers and healing make
-// lines of them, seams often). Within: every pole within `tol` of that line, and every leg
-// within half of `max_angle` of the chord's direction: the curve then strays from its chord by
-// no more than the tolerance and its tangent turns by no more than the angle, all an edge
+// within tol/16 of the line through the edge's ends (STEP writers and healing make lines of
+// them, seams often). Within: every pole within kChordAim of the tolerance of that line, and
+// every leg within half of `max_angle` of the chord's direction: the curve then strays from its
+// chord by less than the tolerance and its tangent turns by no more than the angle, all an edge
 // sampled more finely would be held to (an edge small on the screen: its ends are enough).
 // Either way the poles' positions along the line must be monotonic (variation diminishing: the
 // curve then never turns back).
+constexpr float kChordAim = 0.95f; // as the adaptive pieces' sag aims (EdgeSampler::tol2_: its square)
 enum class Chord : uint8_t { Curved, Straight, Within };
 Chord chord_of(const Pack& pack, const Curve& C, Vec3 a, Vec3 b, float tol, float max_angle) {
     const BSplineCurveView B = bspline(pack, C);
@@ -80,7 +81,7 @@ Chord chord_of(const Pack& pack, const Curve& C, Vec3 a, Vec3 b, float tol, floa
     const Vec3 d = b - a;
     const float len2 = dot(d, d);
     if (!(len2 > 0)) return Chord::Curved;
-    const float near2 = (tol / 16) * (tol / 16), within2 = tol * tol;
+    const float near2 = (tol / 16) * (tol / 16), within2 = (kChordAim * tol) * (kChordAim * tol);
     const float half = max_angle / 2, c = half < kPi / 2 ? cos_f(half) : 0, cos2 = c * c;
     float last = -1e30f, most2 = 0;
     bool up = true, down = true, legs_up = true, legs_down = true; // (legs: each within the half angle, that way)
@@ -152,7 +153,7 @@ void EdgeSampler::start(const Pack& pack, const TessOptions& opt, EdgeSamples& o
         case CurveType::Line: room = pool.emit(E.t0, a) && pool.emit(E.t1, b); break;
         case CurveType::Circle: room = sample_circle(pack, C, E, opt_, pool); break;
         case CurveType::BSpline:
-            if (chord_of(pack, C, a, b, opt_.tolerance * 0.95f, opt_.max_angle) != Chord::Curved) room = pool.emit(E.t0, a) && pool.emit(E.t1, b);
+            if (chord_of(pack, C, a, b, opt_.tolerance, opt_.max_angle) != Chord::Curved) room = pool.emit(E.t0, a) && pool.emit(E.t1, b);
             else adaptive_ = true;
             break;
         default: adaptive_ = true; break;
