@@ -6,6 +6,7 @@
 #include "geom/fmath.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 namespace facet::geom {
@@ -67,14 +68,14 @@ bool sample_circle(const Pack& pack, const Curve& C, const Edge& E, const TessOp
 // hull, and its tangents in the cone of its control polygon's legs). Straight: every pole
 // within tol/16 of the line through the edge's ends (STEP writers and healing make lines of
 // them, seams often). Within: every pole within kChordAim of the tolerance of that line, and
-// every leg within half of `max_angle` of the chord's direction: the curve then strays from its
+// every leg within half of the angle (its cosine given) of the chord's direction: the curve then strays from its
 // chord by less than the tolerance and its tangent turns by no more than the angle, all an edge
 // sampled more finely would be held to (an edge small on the screen: its ends are enough).
 // Either way the poles' positions along the line must be monotonic (variation diminishing: the
 // curve then never turns back).
 constexpr float kChordAim = 0.95f; // as the adaptive pieces' sag aims (EdgeSampler::tol2_: its square)
 enum class Chord : uint8_t { Curved, Straight, Within };
-Chord chord_of(const Pack& pack, const Curve& C, Vec3 a, Vec3 b, float tol, float max_angle) {
+Chord chord_of(const Pack& pack, const Curve& C, Vec3 a, Vec3 b, float tol, float cos_half_angle) {
     const BSplineCurveView B = bspline(pack, C);
     const int n = B.n;
     const float* poles = B.poles;
@@ -82,7 +83,7 @@ Chord chord_of(const Pack& pack, const Curve& C, Vec3 a, Vec3 b, float tol, floa
     const float len2 = dot(d, d);
     if (!(len2 > 0)) return Chord::Curved;
     const float near2 = (tol / 16) * (tol / 16), within2 = (kChordAim * tol) * (kChordAim * tol);
-    const float half = max_angle / 2, c = half < kPi / 2 ? cos_f(half) : 0, cos2 = c * c;
+    const float cos2 = cos_half_angle * cos_half_angle;
     float last = -1e30f, most2 = 0;
     bool up = true, down = true, legs_up = true, legs_down = true; // (legs: each within the half angle, that way)
     bool weighted = true; // a rational curve's weights all positive (else its tangents leave the legs' cone)
@@ -153,7 +154,7 @@ void EdgeSampler::start(const Pack& pack, const TessOptions& opt, EdgeSamples& o
         case CurveType::Line: room = pool.emit(E.t0, a) && pool.emit(E.t1, b); break;
         case CurveType::Circle: room = sample_circle(pack, C, E, opt_, pool); break;
         case CurveType::BSpline:
-            if (chord_of(pack, C, a, b, opt_.tolerance, opt_.max_angle) != Chord::Curved) room = pool.emit(E.t0, a) && pool.emit(E.t1, b);
+            if (chord_of(pack, C, a, b, opt_.tolerance, angle_cosines(opt_.max_angle).half) != Chord::Curved) room = pool.emit(E.t0, a) && pool.emit(E.t1, b);
             else adaptive_ = true;
             break;
         default: adaptive_ = true; break;
@@ -175,7 +176,7 @@ void EdgeSampler::start(const Pack& pack, const TessOptions& opt, EdgeSamples& o
     // chord: aim 5% under the tolerance.
     curve_ = &pack.curves3()[E.curve];
     tol2_ = 0.9025f * opt_.tolerance * opt_.tolerance;
-    cos_max_ = cos_f(opt_.max_angle);
+    cos_max_ = angle_cosines(opt_.max_angle).whole;
     // The work of an evaluation: a B-spline's grows with the square of its degree (its basis
     // and derivative in soft float on the ARM926; in fixed point, CurveSpans, about an eighth).
     eval_ = 1;
@@ -250,6 +251,18 @@ Result EdgeSampler::run(uint32_t units) {
     }
     finish();
     return result_;
+}
+
+// The cosines of the angle and of its half (the half past a right angle: 0), kept for the last
+// angle asked (every edge of a block has the same: a cosine is hundreds of instructions in soft
+// float on the ARM926).
+const EdgeSampler::AngleCosines& EdgeSampler::angle_cosines(float angle) {
+    const uint32_t bits = std::bit_cast<uint32_t>(angle);
+    if (!cosines_.valid || cosines_.angle_bits != bits) {
+        const float half = angle / 2;
+        cosines_ = {bits, true, cos_f(angle), half < kPi / 2 ? cos_f(half) : 0};
+    }
+    return cosines_;
 }
 
 Curve3Point EdgeSampler::eval(float t) { return spans_.usable() ? spans_.point_and_derivative(t) : eval_curve3(*pack_, *curve_, t); }

@@ -102,6 +102,13 @@ private:
     int top_ = 0;
     Curve3Point left_{};
     float tl_ = 0, min_piece_ = 0, tol2_ = 0, cos_max_ = 1;
+    struct AngleCosines {
+        uint32_t angle_bits = 0;
+        bool valid = false;
+        float whole = 1, half = 1;
+    };
+    AngleCosines cosines_; // (angle_cosines())
+    const AngleCosines& angle_cosines(float angle);
     CurveSpans spans_; // a B-spline's spans in fixed point
     Result result_ = Result::fail(Status::Busy, "not started");
 };
