@@ -107,7 +107,7 @@ def main():
     if view is not None and view_budget is not None and view > view_budget:
         fails.append(f'first view: {view:,} instructions > {view_budget:,.0f}')
     for m in later:
-        what = f'model opened {m["opened"]}{"nd" if m["opened"] == 2 else "rd" if m["opened"] == 3 else "th"}'
+        what = f'model opened {m["opened"]}'
         if m['tri_instructions'] is not None and m['tri_instructions'] > TESSELLATION_BUDGET:
             fails.append(f'{what}: tessellation {m["tri_instructions"]:,} instructions > {TESSELLATION_BUDGET:,}')
         view_k, budget_k = m['first_view_instructions'], m['first_view_budget_instructions']
