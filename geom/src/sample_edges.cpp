@@ -40,11 +40,12 @@ Vec3 vertex(const Pack& pack, uint32_t i) {
 
 // A circular arc: the fewest equal steps that keep both the chord's sag and the turn within
 // bounds. Ends are the exact pack vertices.
-bool sample_circle(const Pack& pack, const Curve& C, const Edge& E, const TessOptions& opt, Pool& pool) {
+// `arc`: detail::max_arc_angle(r, tol) (the caller's, kept for the last radius).
+bool sample_circle(const Pack& pack, const Curve& C, const Edge& E, const TessOptions& opt, float arc, Pool& pool) {
     const Circle3Params& circle = params<Circle3Params>(pack, C);
     const float r = circle.radius;
     const float span = std::fabs(E.t1 - E.t0);
-    const float step = std::min(detail::max_arc_angle(r, opt.tolerance), opt.max_angle);
+    const float step = std::min(arc, opt.max_angle);
     const float pieces = std::ceil(span / step);
     const uint32_t n = pieces < 1 ? 1u : (pieces > 4096 ? 4096u : uint32_t(pieces));
     pool.out.work += 1 + n / 16; // a rotation per sample
@@ -152,7 +153,9 @@ void EdgeSampler::start(const Pack& pack, const TessOptions& opt, EdgeSamples& o
         const Curve& C = pack.curves3()[E.curve];
         switch (CurveType(C.type)) {
         case CurveType::Line: room = pool.emit(E.t0, a) && pool.emit(E.t1, b); break;
-        case CurveType::Circle: room = sample_circle(pack, C, E, opt_, pool); break;
+        case CurveType::Circle:
+            room = sample_circle(pack, C, E, opt_, max_arc_angle(params<Circle3Params>(pack, C).radius, opt_.tolerance), pool);
+            break;
         case CurveType::BSpline:
             if (chord_of(pack, C, a, b, opt_.tolerance, angle_cosines(opt_.max_angle).half) != Chord::Curved) room = pool.emit(E.t0, a) && pool.emit(E.t1, b);
             else adaptive_ = true;
@@ -263,6 +266,15 @@ const EdgeSampler::AngleCosines& EdgeSampler::angle_cosines(float angle) {
         cosines_ = {bits, true, cos_f(angle), half < kPi / 2 ? cos_f(half) : 0};
     }
     return cosines_;
+}
+
+// detail::max_arc_angle(r, tol), kept for the last radius and tolerance asked: a hole's two
+// circles, a pattern of equal holes, come one after the other (a square root, an arc tangent and
+// a division in soft float each).
+float EdgeSampler::max_arc_angle(float r, float tol) {
+    const uint32_t rb = std::bit_cast<uint32_t>(r), tb = std::bit_cast<uint32_t>(tol);
+    if (!arc_.valid || arc_.radius_bits != rb || arc_.tolerance_bits != tb) arc_ = {rb, tb, true, detail::max_arc_angle(r, tol)};
+    return arc_.angle;
 }
 
 Curve3Point EdgeSampler::eval(float t) { return spans_.usable() ? spans_.point_and_derivative(t) : eval_curve3(*pack_, *curve_, t); }

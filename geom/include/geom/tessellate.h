@@ -109,6 +109,13 @@ private:
     };
     AngleCosines cosines_; // (angle_cosines())
     const AngleCosines& angle_cosines(float angle);
+    struct ArcAngle {
+        uint32_t radius_bits = 0, tolerance_bits = 0;
+        bool valid = false;
+        float angle = 0;
+    };
+    ArcAngle arc_; // (max_arc_angle())
+    float max_arc_angle(float r, float tol);
     CurveSpans spans_; // a B-spline's spans in fixed point
     Result result_ = Result::fail(Status::Busy, "not started");
 };
