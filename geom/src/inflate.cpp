@@ -18,6 +18,7 @@ constexpr int kLiteralLengthCodes = 288;  // 286 used, 2 reserved
 constexpr int kDistanceCodes = 30;
 constexpr int kCodeLengthCodes = 19;
 constexpr int kFastBits = 9;              // codes this short decode by table
+constexpr uint32_t kFastMask = (1u << kFastBits) - 1;
 
 // LSB-first bits from the stream; past its end every read gives zeros and sets `truncated`.
 struct Bits {
@@ -48,7 +49,7 @@ struct Bits {
             buffer |= uint32_t(*p++) << count;
             count += 8;
         }
-        return buffer & ((1u << kFastBits) - 1);
+        return buffer & kFastMask;
     }
     void drop(int n) { buffer >>= n, count -= n; } // n <= count
     // The rest of the current byte is padding; whole bytes read ahead go back to the stream.
@@ -158,7 +159,7 @@ Result codes(Bits& in, Output& out, const Huffman& literal, const Huffman& dista
     // The next symbol of h from the bits in hand (a code is 15 bits at most): -1 when no code
     // matches, -2 when the stream ends inside one.
     const auto next = [&](const Huffman& h) -> int {
-        const uint32_t entry = h.fast[buffer & ((1u << kFastBits) - 1)];
+        const uint32_t entry = h.fast[buffer & kFastMask];
         const int len = int(entry & 15);
         if (len && len <= count) {
             buffer >>= len, count -= len;
@@ -199,11 +200,11 @@ Result codes(Bits& in, Output& out, const Huffman& literal, const Huffman& dista
                 p += (31 - count) >> 3;
                 count |= 24;
             }
-            uint32_t e = literal.fast[buffer & ((1u << kFastBits) - 1)];
+            uint32_t e = literal.fast[buffer & kFastMask];
             if (e < kLiteralEntries) {
                 buffer >>= e & 15, count -= int(e & 15);
                 data[at++] = uint8_t(e >> 4);
-                e = literal.fast[buffer & ((1u << kFastBits) - 1)]; // (16 bits or more still in hand)
+                e = literal.fast[buffer & kFastMask]; // (16 bits or more still in hand)
                 if (e < kLiteralEntries) {
                     buffer >>= e & 15, count -= int(e & 15);
                     data[at++] = uint8_t(e >> 4);

@@ -6,7 +6,6 @@
 #include "geom/fmath.h"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 
 namespace facet::geom {
@@ -40,7 +39,7 @@ Vec3 vertex(const Pack& pack, uint32_t i) {
 
 // A circular arc: the fewest equal steps that keep both the chord's sag and the turn within
 // bounds. Ends are the exact pack vertices.
-// `arc`: detail::max_arc_angle(r, tol) (the caller's, kept for the last radius).
+// `arc`: detail::max_arc_angle(r, tol) (EdgeSampler::circle_arc).
 bool sample_circle(const Pack& pack, const Curve& C, const Edge& E, const TessOptions& opt, float arc, Pool& pool) {
     const Circle3Params& circle = params<Circle3Params>(pack, C);
     const float r = circle.radius;
@@ -154,10 +153,10 @@ void EdgeSampler::start(const Pack& pack, const TessOptions& opt, EdgeSamples& o
         switch (CurveType(C.type)) {
         case CurveType::Line: room = pool.emit(E.t0, a) && pool.emit(E.t1, b); break;
         case CurveType::Circle:
-            room = sample_circle(pack, C, E, opt_, max_arc_angle(params<Circle3Params>(pack, C).radius, opt_.tolerance), pool);
+            room = sample_circle(pack, C, E, opt_, circle_arc(params<Circle3Params>(pack, C).radius), pool);
             break;
         case CurveType::BSpline:
-            if (chord_of(pack, C, a, b, opt_.tolerance, angle_cosines(opt_.max_angle).half) != Chord::Curved) room = pool.emit(E.t0, a) && pool.emit(E.t1, b);
+            if (chord_of(pack, C, a, b, opt_.tolerance, angle_cosines().half) != Chord::Curved) room = pool.emit(E.t0, a) && pool.emit(E.t1, b);
             else adaptive_ = true;
             break;
         default: adaptive_ = true; break;
@@ -179,7 +178,7 @@ void EdgeSampler::start(const Pack& pack, const TessOptions& opt, EdgeSamples& o
     // chord: aim 5% under the tolerance.
     curve_ = &pack.curves3()[E.curve];
     tol2_ = 0.9025f * opt_.tolerance * opt_.tolerance;
-    cos_max_ = angle_cosines(opt_.max_angle).whole;
+    cos_max_ = angle_cosines().whole;
     // The work of an evaluation: a B-spline's grows with the square of its degree (its basis
     // and derivative in soft float on the ARM926; in fixed point, CurveSpans, about an eighth).
     eval_ = 1;
@@ -256,25 +255,17 @@ Result EdgeSampler::run(uint32_t units) {
     return result_;
 }
 
-// The cosines of the angle and of its half (the half past a right angle: 0), kept for the last
-// angle asked (every edge of a block has the same: a cosine is hundreds of instructions in soft
-// float on the ARM926).
-const EdgeSampler::AngleCosines& EdgeSampler::angle_cosines(float angle) {
-    const uint32_t bits = std::bit_cast<uint32_t>(angle);
-    if (!cosines_.valid || cosines_.angle_bits != bits) {
-        const float half = angle / 2;
-        cosines_ = {bits, true, cos_f(angle), half < kPi / 2 ? cos_f(half) : 0};
-    }
-    return cosines_;
+// The cosines of opt_.max_angle and of its half, and a circle's largest arc for opt_.tolerance
+// (a cosine, a square root, an arc tangent: hundreds of instructions each in soft float), kept
+// for the last arguments.
+const EdgeSampler::AngleCosines& EdgeSampler::angle_cosines() {
+    const float angle = opt_.max_angle, half = angle / 2;
+    return cosines_({angle}, [&] { return AngleCosines{cos_f(angle), half < kPi / 2 ? cos_f(half) : 0}; });
 }
 
-// detail::max_arc_angle(r, tol), kept for the last radius and tolerance asked: a hole's two
-// circles, a pattern of equal holes, come one after the other (a square root, an arc tangent and
-// a division in soft float each).
-float EdgeSampler::max_arc_angle(float r, float tol) {
-    const uint32_t rb = std::bit_cast<uint32_t>(r), tb = std::bit_cast<uint32_t>(tol);
-    if (!arc_.valid || arc_.radius_bits != rb || arc_.tolerance_bits != tb) arc_ = {rb, tb, true, detail::max_arc_angle(r, tol)};
-    return arc_.angle;
+float EdgeSampler::circle_arc(float r) {
+    const float tol = opt_.tolerance;
+    return arc_({r, tol}, [&] { return detail::max_arc_angle(r, tol); });
 }
 
 Curve3Point EdgeSampler::eval(float t) { return spans_.usable() ? spans_.point_and_derivative(t) : eval_curve3(*pack_, *curve_, t); }

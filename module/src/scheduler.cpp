@@ -1,7 +1,6 @@
 #include "scheduler.h"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 
 namespace facet::module {
@@ -36,16 +35,13 @@ void Scheduler::set_level(Block& b) {
     b.tolerance = t > 0 ? t : opt_.tolerance;
 }
 
-static_assert(sizeof(geom::TessOptions) == 2 * sizeof(float), "the memo's key holds every option (tolerance, max_angle)");
+static_assert(sizeof(geom::TessOptions) == 2 * sizeof(float), "options_at()'s key holds every option (tolerance, max_angle)");
 
 geom::TessOptions Scheduler::options_at(float tolerance) const {
-    const uint32_t key[3] = {std::bit_cast<uint32_t>(tolerance), std::bit_cast<uint32_t>(opt_.tolerance), std::bit_cast<uint32_t>(opt_.max_angle)};
-    if (memo_.valid && memo_.tolerance == key[0] && memo_.pass_tolerance == key[1] && memo_.max_angle == key[2]) return memo_.options;
-    memo_ = {key[0], key[1], key[2], true, options_unmemoized(tolerance)};
-    return memo_.options;
+    return options_({tolerance, opt_.tolerance, opt_.max_angle}, [&] { return options_for(tolerance); });
 }
 
-geom::TessOptions Scheduler::options_unmemoized(float tolerance) const {
+geom::TessOptions Scheduler::options_for(float tolerance) const {
     geom::TessOptions o = opt_;
     if (!(tolerance > 0) || tolerance == opt_.tolerance) return o;
     o.tolerance = tolerance; // (finer than the pass's: a block refined as the view came near)

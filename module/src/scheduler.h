@@ -2,6 +2,7 @@
 // The progressive tessellation, a piece at a time: a pass samples every edge (a few edges per
 // piece), then tessellates the faces one after the other (a piece of a face per piece), each
 // appended to the scene's mesh as it is finished. A new level of detail starts a new pass.
+#include "core/last_call.h"
 #include "facet/viewer.h"
 #include "geom/tessellate.h"
 #include "scene.h"
@@ -113,16 +114,10 @@ private:
     void set_level(Block& b);                         // its tolerance in this pass, when it has none yet
     geom::TessOptions options(const Block& b) const { return options_at(b.tolerance); } // the pass's at the block's level
     geom::TessOptions options_at(float tolerance) const;
-    geom::TessOptions options_unmemoized(float tolerance) const;
-    // The last options_at(): a block's edges and faces all ask for the same (a square root and a
-    // division each in soft float on the ARM926, 10 M instructions over the 10 k-face
-    // assembly's 25 k edges), kept with the bits they came from.
-    struct OptionsMemo {
-        uint32_t tolerance = 0, pass_tolerance = 0, max_angle = 0;
-        bool valid = false;
-        geom::TessOptions options;
-    };
-    mutable OptionsMemo memo_;
+    geom::TessOptions options_for(float tolerance) const; // (options_at() keeps its last)
+    // A block's edges and faces all ask for the same (a square root and a division each in soft
+    // float on the ARM926, 10 M instructions over the 10 k-face assembly's 25 k edges).
+    mutable LastCall<geom::TessOptions, 3> options_;
     geom::TessOptions opt_;
     Stage stage_ = Stage::Idle;
     uint32_t pass_ = 0;        // 0: the first tessellation; +1 per level-of-detail change

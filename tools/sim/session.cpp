@@ -3,9 +3,9 @@
 #include "hal/fake.h"
 #include "core/format.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <algorithm>
 #include <cstring>
 #include <fstream>
 #include <iterator>

@@ -10,6 +10,7 @@
 // every inner triangle is within the tolerance (planes need none; a cylinder or cone needs
 // none while its triangles span small enough angles). The inner triangles are appended with
 // 3D positions and normals to the mesh. All storage is the caller's.
+#include "core/last_call.h"
 #include "geom/eval.h"
 #include "geom/face_storage.h"
 #include "geom/pack.h"
@@ -103,19 +104,12 @@ private:
     Curve3Point left_{};
     float tl_ = 0, min_piece_ = 0, tol2_ = 0, cos_max_ = 1;
     struct AngleCosines {
-        uint32_t angle_bits = 0;
-        bool valid = false;
-        float whole = 1, half = 1;
+        float whole = 1, half = 1; // cos(angle), cos(angle / 2) (past a right angle: 0)
     };
-    AngleCosines cosines_; // (angle_cosines())
-    const AngleCosines& angle_cosines(float angle);
-    struct ArcAngle {
-        uint32_t radius_bits = 0, tolerance_bits = 0;
-        bool valid = false;
-        float angle = 0;
-    };
-    ArcAngle arc_; // (max_arc_angle())
-    float max_arc_angle(float r, float tol);
+    LastCall<AngleCosines, 1> cosines_; // of opt_.max_angle (every edge of a block has the same)
+    LastCall<float, 2> arc_;            // detail::max_arc_angle(r, tol): a hole's two circles, a pattern of equal holes
+    const AngleCosines& angle_cosines(); // (sample_edges.cpp says why they are kept)
+    float circle_arc(float r);
     CurveSpans spans_; // a B-spline's spans in fixed point
     Result result_ = Result::fail(Status::Busy, "not started");
 };
