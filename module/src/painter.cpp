@@ -226,9 +226,12 @@ uint32_t Painter::face(uint32_t f, const Transform& t, Rows rows, uint32_t from,
     const uint32_t pixels = raster_.stats.pixels;
     uint32_t k = from;
     // A unit: a triangle's set-up, or 64 pixels; one triangle at least, whatever the units.
+    // (A mirrored instance turns its triangles' winding: their second and third corners swap.)
+    const uint32_t second = t.mirrored ? 2 : 1, third = 3 - second;
     for (; k < F.triangle_count && (k == from || spent + (raster_.stats.pixels - pixels) / 64 < units); ++k, id += 3, ++spent) {
-        if (t.mirrored) triangle(t, P[id[0]], P[id[2]], P[id[1]], pal, cull, cap);
-        else triangle(t, P[id[0]], P[id[1]], P[id[2]], pal, cull, cap);
+        const Projected &a = P[id[0]], &b = P[id[second]], &c = P[id[third]];
+        if (!(a.out | b.out | c.out) && !cap) refused_ += !ok(raster_.draw(a.s, b.s, c.s, pal, cull)); // (triangle()'s common case)
+        else triangle(t, a, b, c, pal, cull, cap);
     }
     raster_.set_stipple(false);
     if (outlines && k == F.triangle_count) spent += silhouette(F, t);
@@ -365,7 +368,7 @@ uint32_t Painter::speck(uint32_t f, const Transform& t, int32_t pixels) {
     Projected centre;
     if (!under(info.centre, info.radius, t, pixels, centre)) return 0;
     const Rgb565 colour = mode_ == DisplayMode::Shaded ? Rgb565(palette(info.rgb).colour[kSpeckShade]) : kEdgeColour;
-    refused_ += !ok(raster_.line(centre.s, centre.s, colour, kLineBias));
+    refused_ += !ok(raster_.point(centre.s, colour, kLineBias));
     return 1;
 }
 
@@ -407,17 +410,21 @@ uint32_t Painter::part_box(uint32_t part, const Transform& t) {
 const Projected* Painter::vertex_at_sample(const Along& along, uint32_t place, uint32_t s) const {
     const FaceInfo& F = *along.face;
     const int32_t* q = scene_.sample_q(s);
+    const DrawVertex* verts = scene_.vertices() + F.first_vertex;
+    const uint16_t* hint = mem_.vertex_at.data();
+    const uint32_t places = uint32_t(mem_.vertex_at.size()), count = F.vertex_count;
     auto at = [&](uint32_t where) -> const Projected* {
-        if (where >= mem_.vertex_at.size()) return nullptr;
-        const uint32_t v = mem_.vertex_at[where];
-        if (v >= F.vertex_count) return nullptr;
-        const int32_t* p = scene_.vertices()[F.first_vertex + v].p;
+        if (where >= places) return nullptr;
+        const uint32_t v = hint[where];
+        if (v >= count) return nullptr;
+        const int32_t* p = verts[v].p;
         return p[0] == q[0] && p[1] == q[1] && p[2] == q[2] ? &mem_.projected[v] : nullptr;
     };
-    const Projected* v = at(place);
-    if (!v && place > along.loop_place) v = at(place - 1);
-    if (!v) v = at(along.loop_place);
-    return v;
+    if (const Projected* v = at(place)) return v;
+    if (place > along.loop_place) {
+        if (const Projected* v = at(place - 1)) return v;
+    }
+    return at(along.loop_place);
 }
 
 uint32_t Painter::edge(uint32_t e, const Transform& t, const Along& along) {

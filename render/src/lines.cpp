@@ -5,6 +5,7 @@
 #include "raster_internal.h"
 #include "render/fixed.h"
 
+#include <bit>
 #include <cstdint>
 
 namespace facet::render {
@@ -18,6 +19,22 @@ using namespace detail;
 // line against itself, an outline (kBeyond) against its neighbour (ox, oy) when that one is
 // in the band. A pixel that passes is drawn, and its depth written where nearer. Returns the
 // pixels stepped.
+// reciprocal(n) for the lengths of most lines, the same values (recip31 is floor(2^31 / d)
+// exactly), worked out when compiling.
+constexpr int32_t kShortLine = 256;
+constexpr auto kShortReciprocal = [] {
+    struct Table {
+        Reciprocal r[kShortLine];
+        constexpr const Reciprocal& operator[](int32_t n) const { return r[n]; }
+    } table{};
+    for (uint32_t n = 1; n < kShortLine; ++n) {
+        const int e = (32 - std::countl_zero(n)) - 16; // as reciprocal(): n << -e in [2^15, 2^16)
+        const uint32_t dn = n << -e;
+        table.r[n] = {uint32_t((uint64_t(1) << 31) / dn), 31 + e};
+    }
+    return table;
+}();
+
 template <bool kBeyond>
 uint32_t stroke(const Target& t, const ScreenVertex& a, const ScreenVertex& b, Rgb565 colour, uint16_t bias,
                 int32_t ox = 0, int32_t oy = 0) {
@@ -31,7 +48,7 @@ uint32_t stroke(const Target& t, const ScreenVertex& a, const ScreenVertex& b, R
         sy = int32_t((int64_t(dy) << 16) >> k);
         sz = int32_t(((int64_t(b.z) - a.z) << 8) >> k);
     } else if (n) {
-        const Reciprocal r = reciprocal(uint32_t(n));
+        const Reciprocal r = n < kShortLine ? kShortReciprocal[n] : reciprocal(uint32_t(n));
         sx = divide(int64_t(dx) << 16, r);
         sy = divide(int64_t(dy) << 16, r);
         sz = divide((int64_t(b.z) - a.z) << 8, r);
@@ -64,6 +81,20 @@ uint32_t stroke(const Target& t, const ScreenVertex& a, const ScreenVertex& b, R
 Status Rasterizer::line(const ScreenVertex& a, const ScreenVertex& b, Rgb565 colour, uint16_t bias) {
     if (!in_guard(a) || !in_guard(b)) return Status::OutOfRange;
     stats.pixels += stroke<false>(t_, a, b, colour, bias);
+    return Status::Ok;
+}
+
+Status Rasterizer::point(const ScreenVertex& c, Rgb565 colour, uint16_t bias) {
+    if (!in_guard(c)) return Status::OutOfRange;
+    ++stats.pixels;
+    const int32_t px = pixel_of(c.x), py = pixel_of(c.y);
+    if (uint32_t(px) >= t_.width || uint32_t(py) - t_.y0 >= t_.rows) return Status::Ok; // off the screen or the band
+    const int32_t z = int32_t(c.z) - int32_t(bias); // pulled toward the eye, as a line's
+    const uint16_t zv = uint16_t(z < 0 ? 0 : z);
+    const size_t at = size_t(uint32_t(py) - t_.y0) * t_.width + uint32_t(px);
+    if (zv >= t_.depth[at]) return Status::Ok;
+    t_.depth[at] = zv;
+    t_.pixels[at] = colour;
     return Status::Ok;
 }
 

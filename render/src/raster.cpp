@@ -36,16 +36,36 @@ void Rasterizer::clear_depth() {
 Status Rasterizer::draw(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, const Palette& palette,
                         Cull cull) {
     palette_ = &palette;
-    if (!in_guard(a) || !in_guard(b) || !in_guard(c)) return Status::OutOfRange;
+    // One pass for the common case: the box says whether the triangle is in the guard band and
+    // small; a small one's doubled area is a 32-bit product (differences under 2^9 sub-pixels).
+    const PixelBox::Bounds bounds = PixelBox::bounds(a, b, c);
+    if (bounds.xmin < -kGuardBand || bounds.xmax > kGuardBand || bounds.ymin < -kGuardBand || bounds.ymax > kGuardBand) {
+        return Status::OutOfRange;
+    }
+    // Small: the triangle's own box (not the part of it on the screen) under kSmall pixels
+    // both ways, which keeps scan_small's edge functions and small_gradients' products in 32 bits.
+    const bool small = bounds.xmax - bounds.xmin < kPerPixel * kSmall && bounds.ymax - bounds.ymin < kPerPixel * kSmall;
     // Doubled signed area; with y down, counter-clockwise on screen gives a negative value.
-    const int64_t area2 =
-        int64_t(b.x - a.x) * (c.y - a.y) - int64_t(b.y - a.y) * (c.x - a.x);
+    const int64_t area2 = small ? int64_t((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x))
+                                : int64_t(b.x - a.x) * (c.y - a.y) - int64_t(b.y - a.y) * (c.x - a.x);
     if (area2 == 0 || (area2 > 0 && cull == Cull::Back)) {
         ++stats.culled;
         return Status::Ok;
     }
+    PixelBox box(bounds, t_);
+    if (box.empty()) return Status::Ok;
+    box.band(t_); // the rows of this band
+    if (box.row0 > box.row1) return Status::Ok;
+    ++stats.triangles;
     // Scan with a positive area: swap two vertices of a front face.
-    return area2 < 0 ? scan(a, c, b, -area2) : scan(a, b, c, area2);
+    if (small) {
+        if (area2 < 0) scan_small(a, c, b, -area2, box.row0, box.row1, box.col0, box.col1);
+        else scan_small(a, b, c, area2, box.row0, box.row1, box.col0, box.col1);
+        return Status::Ok;
+    }
+    if (area2 < 0) scan(a, c, b, -area2, box);
+    else scan(a, b, c, area2, box);
+    return Status::Ok;
 }
 
 bool Rasterizer::hidden(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) const {
@@ -73,30 +93,16 @@ bool Rasterizer::hidden(const ScreenVertex& a, const ScreenVertex& b, const Scre
     return true;
 }
 
-Status Rasterizer::scan(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2,
-                        int64_t area2) {
-    PixelBox box(v0, v1, v2, t_);
-    if (box.empty()) return Status::Ok;
+void Rasterizer::scan(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2, int64_t area2,
+                      const detail::PixelBox& box) {
     const int32_t xmin = box.xmin, xmax = box.xmax, ymin = box.ymin, ymax = box.ymax;
-    // Small: the triangle's own box (not the part of it on the screen) under kSmall pixels
-    // both ways, which keeps scan_small's edge functions and small_gradients' products in 32 bits.
-    const bool small = int64_t(xmax) - xmin < kPerPixel * kSmall && int64_t(ymax) - ymin < kPerPixel * kSmall;
-    // Then the rows of this band.
-    box.band(t_);
     const int32_t row0 = box.row0, row1 = box.row1, col0 = box.col0, col1 = box.col1;
-    if (row0 > row1) return Status::Ok;
-    ++stats.triangles;
-    if (small) {
-        scan_small(v0, v1, v2, area2, row0, row1, col0, col1);
-        return Status::Ok;
-    }
     // (A stippled triangle takes the per-pixel path, which leaves out every other pixel.)
     const bool clamp = stipple_ || needs_clamp(v0, v1, v2, pixel_of(std::max(xmax - xmin, ymax - ymin)));
     constexpr int32_t kNear = 1024 * kPerPixel; // 32-bit edge walks within this of the origin
     const bool near = xmin >= -kNear && xmax <= kNear && ymin >= -kNear && ymax <= kNear;
     if (near) scan_rows<int32_t>(v0, v1, v2, area2, row0, row1, col0, col1, clamp);
     else scan_rows<int64_t>(v0, v1, v2, area2, row0, row1, col0, col1, clamp);
-    return Status::Ok;
 }
 
 } // namespace facet::render

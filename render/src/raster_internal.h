@@ -42,14 +42,23 @@ inline bool in_guard(const ScreenVertex& v) {
 struct PixelBox {
     int32_t xmin, ymin, xmax, ymax;
     int32_t row0, row1, col0, col1;
-    PixelBox(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2, const Target& t) {
-        ymin = ymax = v0.y, xmin = xmax = v0.x;
+    PixelBox(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2, const Target& t)
+        : PixelBox(bounds(v0, v1, v2), t) {}
+    // The sub-pixel box alone (xmin, ymin, xmax, ymax), and the pixels from it.
+    struct Bounds {
+        int32_t xmin, ymin, xmax, ymax;
+    };
+    static Bounds bounds(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2) {
+        Bounds b{v0.x, v0.y, v0.x, v0.y};
         for (const ScreenVertex* v : {&v1, &v2}) {
-            ymin = v->y < ymin ? v->y : ymin;
-            ymax = v->y > ymax ? v->y : ymax;
-            xmin = v->x < xmin ? v->x : xmin;
-            xmax = v->x > xmax ? v->x : xmax;
+            b.ymin = v->y < b.ymin ? v->y : b.ymin;
+            b.ymax = v->y > b.ymax ? v->y : b.ymax;
+            b.xmin = v->x < b.xmin ? v->x : b.xmin;
+            b.xmax = v->x > b.xmax ? v->x : b.xmax;
         }
+        return b;
+    }
+    PixelBox(const Bounds& b, const Target& t) : xmin(b.xmin), ymin(b.ymin), xmax(b.xmax), ymax(b.ymax) {
         row0 = first_centre_from(ymin), row1 = last_centre_to(ymax);
         col0 = first_centre_from(xmin), col1 = last_centre_to(xmax);
         row0 = row0 < 0 ? 0 : row0;

@@ -371,3 +371,31 @@ TEST(Raster, ASplatIsADepthTestedSquareClippedToTheBand) {
             }
     }
 }
+
+// A point is the one-pixel line from a place to itself: the same pixel, depth (pulled toward
+// the eye, at least 0) and test, on the screen, off it, in a band and outside it.
+TEST(Raster, APointDrawsWhatALineFromItToItselfDraws) {
+    constexpr uint16_t W = 16, H = 10;
+    std::mt19937 rng(7);
+    std::uniform_int_distribution<int32_t> pos(-40, 16 * 17), depth(0, 700);
+    for (const uint16_t y0 : {uint16_t(0), uint16_t(4)}) {
+        const uint16_t rows = y0 ? 3 : H;
+        std::vector<Rgb565> px_line(W * rows, 0), px_point(W * rows, 0);
+        std::vector<uint16_t> z_line(W * rows, 0xFFFF), z_point(W * rows, 0xFFFF);
+        for (size_t i = 0; i < z_line.size(); i += 3) z_line[i] = z_point[i] = 300; // some nearer pixels already
+        Rasterizer by_line(render::Target{px_line.data(), z_line.data(), W, H, y0, rows});
+        Rasterizer by_point(render::Target{px_point.data(), z_point.data(), W, H, y0, rows});
+        for (int k = 0; k < 2000; ++k) {
+            const ScreenVertex c{pos(rng), pos(rng) * H / W, uint16_t(depth(rng)), 0};
+            const Rgb565 colour = Rgb565(k & 0xFFFF);
+            ASSERT_EQ(by_line.line(c, c, colour, 384), by_point.point(c, colour, 384));
+        }
+        EXPECT_EQ(px_line, px_point);
+        EXPECT_EQ(z_line, z_point);
+        EXPECT_EQ(by_line.stats.pixels, by_point.stats.pixels);
+    }
+    std::vector<Rgb565> px(W * H, 0);
+    std::vector<uint16_t> z(W * H, 0xFFFF);
+    Rasterizer r(render::Target{px.data(), z.data(), W, H, 0, H});
+    EXPECT_EQ(r.point({1 << 20, 0, 5, 0}, 1, 0), Status::OutOfRange);
+}

@@ -19,6 +19,10 @@
 
 namespace facet::render {
 
+namespace detail {
+struct PixelBox; // raster_internal.h
+}
+
 struct ScreenVertex {
     int32_t x, y;     // sub-pixels (render/subpixel.h)
     uint16_t z;       // depth, 0 = nearest
@@ -94,6 +98,8 @@ public:
     // edges over faces); it writes its depth, so faces drawn later behind it keep it.
     // OutOfRange (nothing drawn) if an end is outside the guard band.
     Status line(const ScreenVertex& a, const ScreenVertex& b, Rgb565 colour, uint16_t bias);
+    // One pixel, c's, as line(c, c) draws it (a face too small for its triangles or edges).
+    Status point(const ScreenVertex& c, Rgb565 colour, uint16_t bias);
     // A surface's outline (where it turns from facing the eye to facing away): like line(), but
     // each pixel is depth-tested against its neighbour one pixel beyond the outline (`beyond`:
     // the side away from the surface, 0 right, 1 down, 2 left, 3 up), not against itself: there
@@ -111,7 +117,8 @@ public:
 
 private:
     struct Interp; // one interpolated attribute (raster.cpp)
-    Status scan(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2, int64_t area2);
+    // A larger triangle (positive area) over its box's pixels in the band.
+    void scan(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2, int64_t area2, const detail::PixelBox& box);
     template <typename T>
     void scan_rows(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2, int64_t area2, int32_t row0,
                    int32_t row1, int32_t col0, int32_t col1, bool clamp);
