@@ -8,10 +8,13 @@
 #include "geom/pack.h"
 #include "geom/pack_file.h"
 #include "geom/pack_format.h"
+#include "geom/pack_index.h"
+#include "geom/tessellate.h"
 
 #include <lzma.h>
 #include <zlib.h>
 
+#include <cmath>
 #include <cstring>
 
 namespace facet::geom {
@@ -77,6 +80,21 @@ bool load_pack_bytes(const std::vector<uint8_t>& file, LoadedPack& out, std::str
         error = "not a facet pack (neither FPB1, FPK1, FPX1 nor FPZ1)";
         return false;
     case PackFileKind::Blocked: {
+        PackIndex index;
+        if (!index.open(file.data(), uint32_t(file.size())).ok()) {
+            error = "its index does not open";
+            return false;
+        }
+        for (int k = 0; k < 3; ++k) out.box_min[k] = INFINITY, out.box_max[k] = -INFINITY;
+        for (const pack::Part& part : index.parts()) {
+            for (int k = 0; k < 3; ++k) {
+                out.box_min[k] = part.box_min[k] < out.box_min[k] ? part.box_min[k] : out.box_min[k];
+                out.box_max[k] = part.box_max[k] > out.box_max[k] ? part.box_max[k] : out.box_max[k];
+            }
+        }
+        if (!(out.box_min[0] <= out.box_max[0])) {
+            for (int k = 0; k < 3; ++k) out.box_min[k] = out.box_max[k] = 0;
+        }
         std::vector<uint8_t> whole;
         if (!join_blocked({file.data(), file.size()}, whole, error)) return false;
         out.words.resize((whole.size() + 3) / 4);
@@ -113,6 +131,10 @@ bool load_pack_bytes(const std::vector<uint8_t>& file, LoadedPack& out, std::str
     }
     out.words.resize((size_t(out.bytes) + 3) / 4); // the LZMA decoder's state after the pack is done with
     return true;
+}
+
+float model_tolerance(const LoadedPack& file, const Pack& pack) {
+    return file.box_min[0] <= file.box_max[0] ? default_tolerance(file.box_min, file.box_max) : default_tolerance(pack);
 }
 
 bool load_pack_file(const std::string& path, LoadedPack& out, std::string& error) {

@@ -1,6 +1,7 @@
 #pragma once
 // Pack files on the host: compressing a finished pack for storage, and reading a file of any
 // kind (geom/pack_file.h) into an aligned buffer ready for Pack::open. Host only (allocates).
+#include "geom/pack.h"
 #include "geom/pack_file.h"
 
 #include <cstdint>
@@ -23,8 +24,15 @@ struct LoadedPack {
     uint32_t bytes = 0;          // the pack's size
     uint32_t file_bytes = 0;     // the file's size
     PackFileKind kind = PackFileKind::Pack;
+    // The model's box as the viewer takes it (Scene::open): a blocked file's, its index's parts'
+    // boxes joined (the packer's exact boxes); empty (min > max) for the others, whose pack
+    // header's box it is. The default level of detail comes from it (model_tolerance()).
+    float box_min[3] = {1, 1, 1}, box_max[3] = {0, 0, 0};
     const void* data() const { return words.data(); }
 };
+
+// The viewer's default tolerance for the model the file holds (its pack opened as `pack`).
+float model_tolerance(const LoadedPack& file, const Pack& pack);
 bool load_pack_file(const std::string& path, LoadedPack& out, std::string& error);
 // The same from bytes already in memory.
 bool load_pack_bytes(const std::vector<uint8_t>& file, LoadedPack& out, std::string& error);

@@ -461,3 +461,35 @@ TEST(Blocked, AModelLargerThanTheMemoryShowsItsLargestPartsAndTheRestAsBoxes) {
     ASSERT_TRUE(app.v->load(in.data(), uint32_t(file.size())).ok());
     EXPECT_EQ(app.last(Event::Kind::Loaded)->loaded.boxed_parts, 0u);
 }
+
+// The host's mesher (facet-mesh, the render bench's peer meshes) reads a blocked file at the
+// tolerance the viewer takes for it: from its parts' exact boxes (the packer's, a little larger
+// than the vertices' box the joined pack's header holds), not the joined pack's own box.
+TEST(Blocked, TheHostTakesTheViewersDefaultToleranceForABlockedFile) {
+    Pack whole;
+    const Bytes shape = plate_with_holes();
+    ASSERT_TRUE(whole.open(shape.data(), uint32_t(shape.size())).ok());
+    PartBox box{};
+    for (int k = 0; k < 3; ++k) box.min[k] = whole.header().bbox_min[k] - 3.0f, box.max[k] = whole.header().bbox_max[k] + 5.0f;
+    Bytes file;
+    std::string error;
+    ASSERT_TRUE(make_blocked(whole, {box}, {}, file, error)) << error;
+    LoadedPack loaded;
+    ASSERT_TRUE(load_pack_bytes(file, loaded, error)) << error;
+    Pack joined;
+    ASSERT_TRUE(joined.open(loaded.data(), loaded.bytes).ok());
+    App app;
+    ASSERT_TRUE(app.create().ok());
+    ASSERT_TRUE(app.load(file).ok()) << "the blocked file";
+    app.run();
+    EXPECT_EQ(model_tolerance(loaded, joined), app.v->stats().tolerance_mm);
+    EXPECT_NE(default_tolerance(joined), app.v->stats().tolerance_mm) << "the boxes differ, so the test tells";
+    // A whole pack: its header's box, as the viewer's.
+    LoadedPack plain;
+    ASSERT_TRUE(load_pack_bytes(shape, plain, error)) << error;
+    App other;
+    ASSERT_TRUE(other.create().ok());
+    ASSERT_TRUE(other.load(shape).ok());
+    other.run();
+    EXPECT_EQ(model_tolerance(plain, whole), other.v->stats().tolerance_mm);
+}
