@@ -13,12 +13,6 @@ namespace {
 
 using namespace detail;
 
-// The steps of a one-pixel line from a to b (pixel centres nearest the ends, a DDA along the
-// longer axis): 16.16 positions and depth pulled `bias` toward the eye, the three slopes over
-// one reciprocal of the length. Each pixel on the screen and in the band is depth-tested: a
-// line against itself, an outline (kBeyond) against its neighbour (ox, oy) when that one is
-// in the band. A pixel that passes is drawn, and its depth written where nearer. Returns the
-// pixels stepped.
 // reciprocal(n) for the lengths of most lines, the same values (recip31 is floor(2^31 / d)
 // exactly), worked out when compiling.
 constexpr int32_t kShortLine = 256;
@@ -27,14 +21,25 @@ constexpr auto kShortReciprocal = [] {
         Reciprocal r[kShortLine];
         constexpr const Reciprocal& operator[](int32_t n) const { return r[n]; }
     } table{};
-    for (uint32_t n = 1; n < kShortLine; ++n) {
+    for (uint32_t n = 1; n < kShortLine; ++n) { // (shift = 31 + e >= 16)
         const int e = (32 - std::countl_zero(n)) - 16; // as reciprocal(): n << -e in [2^15, 2^16)
         const uint32_t dn = n << -e;
         table.r[n] = {uint32_t((uint64_t(1) << 31) / dn), 31 + e};
     }
     return table;
 }();
+static_assert([] {
+    for (int32_t n = 1; n < kShortLine; ++n)
+        if (kShortReciprocal[n].shift < 16 || kShortReciprocal[n].m > (1u << 16)) return false;
+    return true;
+}(), "a short line's steps fit 32 bits: |d| < 256 times m <= 2^16, shifted right by shift - 16 >= 0");
 
+// The steps of a one-pixel line from a to b (pixel centres nearest the ends, a DDA along the
+// longer axis): 16.16 positions and depth pulled `bias` toward the eye, the three slopes over
+// one reciprocal of the length. Each pixel on the screen and in the band is depth-tested: a
+// line against itself, an outline (kBeyond) against its neighbour (ox, oy) when that one is
+// in the band. A pixel that passes is drawn, and its depth written where nearer. Returns the
+// pixels stepped.
 template <bool kBeyond>
 uint32_t stroke(const Target& t, const ScreenVertex& a, const ScreenVertex& b, Rgb565 colour, uint16_t bias,
                 int32_t ox = 0, int32_t oy = 0) {
@@ -48,10 +53,19 @@ uint32_t stroke(const Target& t, const ScreenVertex& a, const ScreenVertex& b, R
         sy = int32_t((int64_t(dy) << 16) >> k);
         sz = int32_t(((int64_t(b.z) - a.z) << 8) >> k);
     } else if (n) {
-        const Reciprocal r = n < kShortLine ? kShortReciprocal[n] : reciprocal(uint32_t(n));
-        sx = divide(int64_t(dx) << 16, r);
-        sy = divide(int64_t(dy) << 16, r);
-        sz = divide((int64_t(b.z) - a.z) << 8, r);
+        if (n < kShortLine) {
+            // The same values as divide() below: (d << 16) m >> shift is d m >> (shift - 16) (the
+            // low bits are zeros; shift >= 16 for these lengths), and |d m| < 2^24 here.
+            const Reciprocal r = kShortReciprocal[n];
+            sx = (dx * int32_t(r.m)) >> (r.shift - 16);
+            sy = (dy * int32_t(r.m)) >> (r.shift - 16);
+            sz = int32_t(((int64_t(b.z) - a.z) * r.m) >> (r.shift - 8));
+        } else {
+            const Reciprocal r = reciprocal(uint32_t(n));
+            sx = divide(int64_t(dx) << 16, r);
+            sy = divide(int64_t(dy) << 16, r);
+            sz = divide((int64_t(b.z) - a.z) << 8, r);
+        }
     }
     z -= int32_t(bias) << 8; // pulled toward the eye
     uint16_t* const depth = t.depth;
