@@ -100,7 +100,7 @@ void Painter::reset_edges(uint32_t part) {
 void Painter::triangle(const Transform& t, const Projected& a, const Projected& b, const Projected& c,
                        const render::Palette& pal, render::Cull cull, const render::Palette* cap) {
     if (!(a.out | b.out | c.out)) {
-        if (cap && int64_t(b.s.x - a.s.x) * (c.s.y - a.s.y) - int64_t(b.s.y - a.s.y) * (c.s.x - a.s.x) > 0) {
+        if (cap && render::doubled_area(a.s, b.s, c.s) > 0) {
             // A back face seen through the cut: the solid's inside, flat in the cap colour.
             // Where the front faces drawn before it hide all of it, it is left out.
             if (raster_.hidden(a.s, b.s, c.s)) return;
@@ -232,7 +232,7 @@ uint32_t Painter::face(uint32_t f, const Transform& t, Rows rows, uint32_t from,
         const Projected &a = P[id[0]], &b = P[id[second]], &c = P[id[third]];
         if (!(a.out | b.out | c.out) && !cap) { // (triangle()'s common case)
             // A back face (or one of no area) culled as draw() would, without the call.
-            const int64_t area2 = int64_t(b.s.x - a.s.x) * (c.s.y - a.s.y) - int64_t(b.s.y - a.s.y) * (c.s.x - a.s.x);
+            const int64_t area2 = render::doubled_area(a.s, b.s, c.s);
             if (area2 == 0 || (area2 > 0 && cull == render::Cull::Back)) ++raster_.stats.culled;
             else refused_ += !ok(raster_.draw(a.s, b.s, c.s, pal, cull));
         } else {

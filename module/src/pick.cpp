@@ -197,7 +197,7 @@ Event Core::pick_at(int16_t x, int16_t y) {
                 const module::Projected& b = P[t.mirrored ? id[2] : id[1]];
                 const module::Projected& c = P[t.mirrored ? id[1] : id[2]];
                 if (a.out | b.out | c.out) continue; // crossing the near plane: not pickable
-                const int64_t area2 = int64_t(b.s.x - a.s.x) * (c.s.y - a.s.y) - int64_t(b.s.y - a.s.y) * (c.s.x - a.s.x);
+                const int64_t area2 = render::doubled_area(a.s, b.s, c.s);
                 if (area2 == 0 || (t.closed && area2 > 0)) continue; // as the rasterizer culls
                 // Barycentric weights of the pixel centre (areas of the sub-triangles).
                 const int64_t wa = int64_t(b.s.x - sx) * (c.s.y - sy) - int64_t(b.s.y - sy) * (c.s.x - sx);

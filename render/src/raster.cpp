@@ -47,7 +47,7 @@ Status Rasterizer::draw(const ScreenVertex& a, const ScreenVertex& b, const Scre
     const bool small = bounds.xmax - bounds.xmin < kPerPixel * kSmall && bounds.ymax - bounds.ymin < kPerPixel * kSmall;
     // Doubled signed area; with y down, counter-clockwise on screen gives a negative value.
     const int64_t area2 = small ? int64_t((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x))
-                                : int64_t(b.x - a.x) * (c.y - a.y) - int64_t(b.y - a.y) * (c.x - a.x);
+                                : doubled_area(a, b, c);
     if (area2 == 0 || (area2 > 0 && cull == Cull::Back)) {
         ++stats.culled;
         return Status::Ok;

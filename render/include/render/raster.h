@@ -29,6 +29,12 @@ struct ScreenVertex {
     uint8_t shade;    // palette index: 0 darkest, 255 brightest
 };
 
+// A triangle's doubled signed area on the screen (sub-pixels squared): with y down, positive
+// when a, b, c turn clockwise on the screen (a back face: front faces turn counter-clockwise).
+inline int64_t doubled_area(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) {
+    return int64_t(b.x - a.x) * (c.y - a.y) - int64_t(b.y - a.y) * (c.x - a.x);
+}
+
 // The colours of one material from dark (0) to fully lit (255), then a few copies of the
 // brightest: an interpolated shade may overshoot its vertices' by a rounding unit or two, and
 // the rasterizer indexes without clamping where that is all it can do.
