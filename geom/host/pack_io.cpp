@@ -14,7 +14,6 @@
 #include <lzma.h>
 #include <zlib.h>
 
-#include <cmath>
 #include <cstring>
 
 namespace facet::geom {
@@ -85,16 +84,7 @@ bool load_pack_bytes(const std::vector<uint8_t>& file, LoadedPack& out, std::str
             error = "its index does not open";
             return false;
         }
-        for (int k = 0; k < 3; ++k) out.box_min[k] = INFINITY, out.box_max[k] = -INFINITY;
-        for (const pack::Part& part : index.parts()) {
-            for (int k = 0; k < 3; ++k) {
-                out.box_min[k] = part.box_min[k] < out.box_min[k] ? part.box_min[k] : out.box_min[k];
-                out.box_max[k] = part.box_max[k] > out.box_max[k] ? part.box_max[k] : out.box_max[k];
-            }
-        }
-        if (!(out.box_min[0] <= out.box_max[0])) {
-            for (int k = 0; k < 3; ++k) out.box_min[k] = out.box_max[k] = 0;
-        }
+        index.parts_box(out.box_min, out.box_max);
         std::vector<uint8_t> whole;
         if (!join_blocked({file.data(), file.size()}, whole, error)) return false;
         out.words.resize((whole.size() + 3) / 4);

@@ -40,6 +40,19 @@ Place index_place(uint32_t id, uint32_t index) {
     return {"index header"};
 }
 
+void PackIndex::parts_box(float lo[3], float hi[3]) const {
+    for (int k = 0; k < 3; ++k) lo[k] = INFINITY, hi[k] = -INFINITY;
+    for (const pack::Part& part : parts_) {
+        for (int k = 0; k < 3; ++k) {
+            lo[k] = part.box_min[k] < lo[k] ? part.box_min[k] : lo[k];
+            hi[k] = part.box_max[k] > hi[k] ? part.box_max[k] : hi[k];
+        }
+    }
+    if (!(lo[0] <= hi[0])) {
+        for (int k = 0; k < 3; ++k) lo[k] = hi[k] = 0;
+    }
+}
+
 Result PackIndex::fail(const char* what, uint32_t section, uint32_t index) {
     *this = PackIndex{};
     return Result::fail(Status::Corrupt, what, index_place(section, index));

@@ -68,9 +68,10 @@ bool sample_circle(const Pack& pack, const Curve& C, const Edge& E, const TessOp
 // hull, and its tangents in the cone of its control polygon's legs). Straight: every pole
 // within tol/16 of the line through the edge's ends (STEP writers and healing make lines of
 // them, seams often). Within: every pole within kChordAim of the tolerance of that line, and
-// every leg within half of the angle (its cosine given) of the chord's direction: the curve then strays from its
-// chord by less than the tolerance and its tangent turns by no more than the angle, all an edge
-// sampled more finely would be held to (an edge small on the screen: its ends are enough).
+// every leg within half of the angle (its cosine given) of the chord's direction: the curve
+// then strays from its chord by less than the tolerance and its tangent turns by no more than
+// the angle, all an edge sampled more finely would be held to (an edge small on the screen:
+// its ends are enough).
 // Either way the poles' positions along the line must be monotonic (variation diminishing: the
 // curve then never turns back).
 constexpr float kChordAim = 0.95f; // as the adaptive pieces' sag aims (EdgeSampler::tol2_: its square)

@@ -230,14 +230,8 @@ uint32_t Painter::face(uint32_t f, const Transform& t, Rows rows, uint32_t from,
     const uint32_t second = t.mirrored ? 2 : 1, third = 3 - second;
     for (; k < F.triangle_count && (k == from || spent + (raster_.stats.pixels - pixels) / 64 < units); ++k, id += 3, ++spent) {
         const Projected &a = P[id[0]], &b = P[id[second]], &c = P[id[third]];
-        if (!(a.out | b.out | c.out) && !cap) { // (triangle()'s common case)
-            // A back face (or one of no area) culled as draw() would, without the call.
-            const int64_t area2 = render::doubled_area(a.s, b.s, c.s);
-            if (area2 == 0 || (area2 > 0 && cull == render::Cull::Back)) ++raster_.stats.culled;
-            else refused_ += !ok(raster_.draw(a.s, b.s, c.s, pal, cull));
-        } else {
-            triangle(t, a, b, c, pal, cull, cap);
-        }
+        if (!(a.out | b.out | c.out) && !cap) refused_ += !ok(raster_.draw(a.s, b.s, c.s, pal, cull)); // (triangle()'s common case)
+        else triangle(t, a, b, c, pal, cull, cap);
     }
     raster_.set_stipple(false);
     if (outlines && k == F.triangle_count) spent += silhouette(F, t);

@@ -55,7 +55,7 @@ Result Scene::open(const geom::PackIndex& index, std::span<Block> blocks) {
     left_out_ = {};
     index_ = index;
     blocks_ = blocks;
-    for (uint32_t k = 0; k < 3; ++k) box_min_[k] = INFINITY, box_max_[k] = -INFINITY;
+    index.parts_box(box_min_, box_max_);
     for (uint32_t b = 0; b < blocks.size(); ++b) {
         const pack::Block& entry = index.blocks()[b];
         Block& block = blocks[b];
@@ -64,10 +64,6 @@ Result Scene::open(const geom::PackIndex& index, std::span<Block> blocks) {
         uint64_t block_faces = 0, block_edges = 0;
         for (uint32_t s = 0; s < entry.part_count; ++s) {
             const pack::Part& part = parts[entry.first_part + s];
-            for (int k = 0; k < 3; ++k) {
-                box_min_[k] = part.box_min[k] < box_min_[k] ? part.box_min[k] : box_min_[k];
-                box_max_[k] = part.box_max[k] > box_max_[k] ? part.box_max[k] : box_max_[k];
-            }
             block_faces += part.face_count, block_edges += part.edge_count;
         }
         if (faces + block_faces > UINT32_MAX / 2 || edges + block_edges > UINT32_MAX / 2) {
@@ -81,9 +77,6 @@ Result Scene::open(const geom::PackIndex& index, std::span<Block> blocks) {
         } else if (Result r = check_block(index, b); !r.ok()) {
             return r;
         }
-    }
-    if (!(box_min_[0] <= box_max_[0])) {
-        for (int k = 0; k < 3; ++k) box_min_[k] = box_max_[k] = 0;
     }
     blocked_ = true;
     instances_ = index.instances();

@@ -32,6 +32,9 @@ public:
     std::span<const uint8_t> block_file(uint32_t b) const {
         return {base_ + blocks_[b].offset, blocks_[b].stored_bytes};
     }
+    // The parts' boxes joined, each in its shell's coordinates (mm; all zeros when there are
+    // none): the box the viewer takes the model's default tolerance from.
+    void parts_box(float lo[3], float hi[3]) const;
     // Names from the STEP file: "" when the file has none.
     const char* model_name() const { return names_.empty() ? "" : names_.data(); }
     const char* part_name(uint32_t p) const { return name_at(part_names_, p); }
