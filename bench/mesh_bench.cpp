@@ -194,7 +194,7 @@ bool run_facet(const std::vector<uint8_t>& bytes, Projectors& proj, double defle
     if (!geom::sample_edges(pack, opt, samples).ok()) return false;
     for (uint32_t part = 0; part < pack.shells().size(); ++part) {
         const pack::Shell& sh = pack.shells()[part];
-        geom::Mesh mesh{mv, mi, {}, {}};
+        geom::Mesh mesh{mv, mi, {}};
         std::vector<uint32_t> face_of;
         for (uint32_t f = sh.first_face; f < sh.first_face + sh.face_count; ++f) {
             const uint32_t before = mesh.triangle_count;

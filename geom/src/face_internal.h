@@ -31,7 +31,6 @@ struct FaceScratch {
     std::span<uint32_t> loop_sizes;
     std::span<Vec2> uv;          // per point, unquantized
     std::span<uint8_t> pinned;   // per loop point: bit 0 u, bit 1 v known exactly (seam, pcurve)
-    std::span<uint16_t> place;   // per loop point: its sample's place along the face's boundary (tessellate.h)
     std::span<Vec3> xyz;         // per point: the edge sample's 3D point, or the surface point
     std::span<uint32_t> mesh_of; // per CDT vertex: its point (while refining), then its mesh vertex
     // Per CDT triangle slot: the last measure of the triangle in it, so that a refinement

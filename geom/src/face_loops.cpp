@@ -83,20 +83,13 @@ Result map_loops(const Pack& pack, uint32_t fi, const EdgeSamples& edges, FaceSc
     const bool elementary = is_elementary(S);
     const Elementary shape(pack, S); // (u,v) from the 3D samples where the face has no pcurves
     if (next_loop == 0) np = nl = 0;
-    const uint32_t cap = uint32_t(std::min({sc.uv.size(), sc.xyz.size(), sc.loop_points.size(), sc.pinned.size(), sc.place.size()}));
+    const uint32_t cap = uint32_t(std::min({sc.uv.size(), sc.xyz.size(), sc.loop_points.size(), sc.pinned.size()}));
     const uint32_t np0 = np;
     // A B-spline pcurve of degree 4 or more in fixed point. An edge's samples walk along it,
     // but few fall in each span: below that degree an extraction costs more than it saves
     // (tail_section_asm's cubics: 2.8 M instructions more on the ARM926; m6_screw's degree 6-13
     // pcurves: 4.7 M less).
     CurveSpans pcurve_spans;
-    // Each sample's place along the boundary (tessellate.h): every coedge of the loops before
-    // counts all of its edge's samples.
-    uint32_t place = 0;
-    for (uint32_t l = F.first_loop; l < F.first_loop + next_loop; ++l) {
-        const Loop& L = pack.loops()[l];
-        for (uint32_t c = L.first_coedge; c < L.first_coedge + L.coedge_count; ++c) place += edges.count[pack.coedges()[c].edge()];
-    }
     for (uint32_t l = F.first_loop + next_loop; l < F.first_loop + F.loop_count; ++l) {
         if (np - np0 >= max_points) { // enough for this piece: the next loop next time
             next_loop = l - F.first_loop;
@@ -109,8 +102,7 @@ Result map_loops(const Pack& pack, uint32_t fi, const EdgeSamples& edges, FaceSc
             const uint32_t ei = CE.edge(), pcurve = pack.pcurve_of(F, c);
             const Seam seam = CE.seam();
             const Edge& E = pack.edges()[ei];
-            const uint32_t first = edges.first[ei], n = edges.count[ei], first_place = place;
-            place += n;
+            const uint32_t first = edges.first[ei], n = edges.count[ei];
             if (E.curve == kNoIndex && pcurve == kNoIndex) continue; // a pole: bridged below
             if (pcurve != kNoIndex) pcurve_spans.bind(pack, pack.curves2()[pcurve], 4);
             for (uint32_t k = 0; k < n; ++k) {
@@ -152,7 +144,6 @@ Result map_loops(const Pack& pack, uint32_t fi, const EdgeSamples& edges, FaceSc
                 }
                 sc.uv[np] = uv;
                 sc.pinned[np] = pinned;
-                sc.place[np] = uint16_t(std::min<uint32_t>(first_place + k, kNotOnBoundary));
                 sc.xyz[np] = edges.p[s];
                 ++np;
             }
@@ -235,7 +226,6 @@ Result clean_loops(FaceScratch& sc, uint32_t& np, uint32_t& nl, uint32_t& sliver
         sc.uv[to] = sc.uv[from];
         sc.xyz[to] = sc.xyz[from];
         sc.pinned[to] = sc.pinned[from];
-        sc.place[to] = sc.place[from];
     };
     auto removable = [&](uint32_t a, uint32_t b, uint32_t c) {
         return sc.loop_points[a] == sc.loop_points[b] || uturn(sc.loop_points[a], sc.loop_points[b], sc.loop_points[c]);

@@ -27,7 +27,6 @@ constexpr bool records_match_the_plan() {
         case FaceArray::LoopSizes: ok = ok && holds<uint32_t>(bytes, align); break;
         case FaceArray::Uv: ok = ok && holds<Vec2>(bytes, align); break;
         case FaceArray::Pinned: ok = ok && holds<uint8_t>(bytes, align); break;
-        case FaceArray::Place: ok = ok && holds<uint16_t>(bytes, align); break;
         case FaceArray::Xyz: ok = ok && holds<Vec3>(bytes, align); break;
         case FaceArray::MeshOf: ok = ok && holds<uint32_t>(bytes, align); break;
         case FaceArray::Measured: ok = ok && holds<detail::TriangleMeasure>(bytes, align); break;
@@ -83,7 +82,6 @@ detail::FaceScratch detail::scratch_of(const FaceStorage& storage) {
         case FaceArray::LoopSizes: s.loop_sizes = as<uint32_t>(p, count); break;
         case FaceArray::Uv: s.uv = as<Vec2>(p, count); break;
         case FaceArray::Pinned: s.pinned = as<uint8_t>(p, count); break;
-        case FaceArray::Place: s.place = as<uint16_t>(p, count); break;
         case FaceArray::Xyz: s.xyz = as<Vec3>(p, count); break;
         case FaceArray::MeshOf: s.mesh_of = as<uint32_t>(p, count); break;
         case FaceArray::Measured: s.measured = as<TriangleMeasure>(p, count); break;

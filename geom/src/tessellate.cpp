@@ -118,11 +118,10 @@ void bending(const Pack& pack, const Surface& S, const pack::Face& F, float u, f
     kv = turn(0, 0.01f * (F.uv_max[1] - F.uv_min[1]));
 }
 
-// Appends a vertex (the caller checked the room), at `place` along the face's boundary.
-uint32_t add_vertex(const FaceNormals& normals, Mesh& mesh, Vec3 p, Vec2 uv, uint16_t place) {
+// Appends a vertex (the caller checked the room).
+uint32_t add_vertex(const FaceNormals& normals, Mesh& mesh, Vec3 p, Vec2 uv) {
     mesh.vertices[mesh.vertex_count] = {p, normals.at(p, uv)};
     if (mesh.vertex_count < mesh.uv.size()) mesh.uv[mesh.vertex_count] = uv;
-    if (mesh.vertex_count < mesh.places.size()) mesh.places[mesh.vertex_count] = place;
     return mesh.vertex_count++;
 }
 
@@ -144,12 +143,11 @@ bool equal(Vec3 p, Vec3 q) {
 }
 
 // The CDT's inner triangles and their vertices, each vertex once, in the order first used.
-// sc.mesh_of maps CDT vertices to points on the way in and to mesh vertices on the way out
-// (the first `loop_points` points are the loops' samples, at their places on the boundary).
+// sc.mesh_of maps CDT vertices to points on the way in and to mesh vertices on the way out.
 // From triangle `next` on, until about `units` are spent (a new vertex costs `vertex_cost`
 // eighths of a unit: its normal): Busy, and `next` says where to go on.
 Status emit_triangles(const FaceNormals& normals, const pack::Face& F, const cdt::Cdt<uint16_t>& cdt, FaceScratch& sc,
-                      uint32_t loop_points, Mesh& mesh, FaceStats& stats, uint32_t& next, uint32_t units, uint32_t vertex_cost) {
+                      Mesh& mesh, FaceStats& stats, uint32_t& next, uint32_t units, uint32_t vertex_cost) {
     constexpr uint32_t kAssigned = 0x80000000u; // mesh_of[v]: a mesh vertex, not a point
     auto position = [&](uint16_t v) {
         const uint32_t m = sc.mesh_of[v];
@@ -175,7 +173,7 @@ Status emit_triangles(const FaceNormals& normals, const pack::Face& F, const cdt
             uint32_t& m = sc.mesh_of[T.v[k]];
             if (!(m & kAssigned)) {
                 if (mesh.vertex_count >= mesh.vertices.size()) return Status::Full;
-                m = kAssigned | add_vertex(normals, mesh, sc.xyz[m], sc.uv[m], m < loop_points ? sc.place[m] : kNotOnBoundary);
+                m = kAssigned | add_vertex(normals, mesh, sc.xyz[m], sc.uv[m]);
                 spent += vertex_cost;
             }
             id[k] = m & ~kAssigned;
@@ -343,7 +341,7 @@ Result FaceJob::run(uint32_t units) {
     const Surface& S = pack.surfaces()[F.surface];
     const FaceNormals normals(pack, S, F, sc.patches);
     if (nl_ > 0) {
-        const Status e = emit_triangles(normals, F, E.cdt, sc, np_, mesh, stats_, next_triangle_, units - std::min(units, spent),
+        const Status e = emit_triangles(normals, F, E.cdt, sc, mesh, stats_, next_triangle_, units - std::min(units, spent),
                                         normals.vertex_cost());
         if (e == Status::Busy) return busy;
         if (!ok(e)) return fail(Result::fail(Status::Full, "the mesh is full"));
@@ -356,7 +354,7 @@ Result FaceJob::run(uint32_t units) {
             return fail(Result::fail(Status::Full, "the mesh is full"));
         }
         uint32_t id[3];
-        for (int c = 0; c < 3; ++c) id[c] = add_vertex(normals, mesh, v.p[c], v.uv[c], kNotOnBoundary);
+        for (int c = 0; c < 3; ++c) id[c] = add_vertex(normals, mesh, v.p[c], v.uv[c]);
         add_triangle(F, mesh, id, stats_);
     }
     stage_ = Stage::Done;

@@ -62,6 +62,34 @@ void Painter::init(const Memory& memory) {
     mem_ = memory;
     for (uint32_t& rgb : mem_.palette_rgb) rgb = kNoColour;
     next_palette_ = 0;
+    for (ProjectedPoint& slot : mem_.points) slot.stamp = 0;
+    stamp_ = 1;
+}
+
+void Painter::next_stamp() {
+    if (++stamp_ != 0) return;
+    for (ProjectedPoint& slot : mem_.points) slot.stamp = 0; // (after 2^32 instances drawn)
+    stamp_ = 1;
+}
+
+const Projected& Painter::point(const int32_t p[3], const Transform& t) {
+    if (!cache_on_ || mem_.points.size() != kProjectionSlots) {
+        t.project(p, uncached_);
+        ++point_counts_.projected;
+        return uncached_;
+    }
+    // A multiplicative hash of the three coordinates; its top bits pick the slot.
+    const uint32_t h = uint32_t(p[0]) * 0x9E3779B1u + uint32_t(p[1]) * 0x85EBCA77u + uint32_t(p[2]) * 0xC2B2AE3Du;
+    ProjectedPoint& slot = mem_.points[h >> (32 - kProjectionSlotBits)];
+    if (slot.stamp == stamp_ && slot.p[0] == p[0] && slot.p[1] == p[1] && slot.p[2] == p[2]) {
+        ++point_counts_.cached;
+        return slot.at;
+    }
+    slot.p[0] = p[0], slot.p[1] = p[1], slot.p[2] = p[2];
+    slot.stamp = stamp_;
+    t.project(p, slot.at);
+    ++point_counts_.projected;
+    return slot.at;
 }
 
 const render::Palette& Painter::palette(uint32_t rgb) {
@@ -182,7 +210,6 @@ uint32_t Painter::face(uint32_t f, const Transform& t, Rows rows, uint32_t from,
     Projected* P = mem_.projected.data();
     const DrawVertex* verts = scene_.vertices() + F.first_vertex;
     spent = 0;
-    if (from == 0) projected_face_ = ~0u;
     if (mode_ == DisplayMode::Wireframe) return F.triangle_count; // edges only
     const bool white = mode_ == DisplayMode::HiddenLine; // faces mostly hide what is behind them
     const bool inside = t.closed && t.inside_shows();    // its back faces may show through a section
@@ -205,17 +232,14 @@ uint32_t Painter::face(uint32_t f, const Transform& t, Rows rows, uint32_t from,
         }
         Projected centre;
         if (!dragging_ && far_copy_specks(f, t) && under(F.centre, F.radius, t, kShownPixels, centre)) return F.triangle_count; // (its speck: face_edges)
-        const bool places = reuse_ && done_faces_show_edges(); // (its edges will be drawn from its vertices)
         for (uint32_t v = 0; v < F.vertex_count; ++v) {
-            t.project(verts[v].p, P[v]);
+            P[v] = point(verts[v].p, t);
             if (t.cut.on && t.cut.side(P[v].x, P[v].y, P[v].d) > 0) P[v].out |= kOutCut;
             // Hidden line: paper faces, lit just enough (200-255) that curved outlines (no B-rep
             // edge: a cylinder's silhouette) still read against each other.
             P[v].s.shade = white ? uint8_t(200 + ((t.shade(verts[v].n) * 55) >> 8)) : t.shade(verts[v].n);
             if (outlines) P[v].front = t.facing(verts[v].p, verts[v].n) > 0;
-            if (places && verts[v].place < mem_.vertex_at.size()) mem_.vertex_at[verts[v].place] = uint16_t(v);
         }
-        if (places) projected_face_ = f;
         spent = 1 + (F.vertex_count >> (outlines ? 1 : 2));
     }
     const render::Palette& pal = palette(lit(f) ? (hl_[1].face == f && hl_[1].instance == instance_ ? kPicked2 : kPicked) : white ? kPaper : F.rgb);
@@ -308,13 +332,9 @@ uint32_t Painter::face_edges(uint32_t f, const Transform& t, Rows rows, bool onc
     const geom::Pack& pack = block.pack;
     const pack::Face& F = pack.faces()[f - block.first_face];
     uint32_t work = 1;
-    Along along;
-    along.face = projected_face_ == f ? &info : nullptr; // (set by face() only when the reuse is on)
-    const std::span<const uint16_t> counts = scene_.samples().count;
     for (uint32_t l = F.first_loop; l < F.first_loop + F.loop_count; ++l) {
         const pack::Loop& L = pack.loops()[l];
-        along.loop_place = along.place;
-        for (uint32_t c = L.first_coedge; c < L.first_coedge + L.coedge_count; along.place += counts[block.first_edge + pack.coedges()[c].edge()], ++c) {
+        for (uint32_t c = L.first_coedge; c < L.first_coedge + L.coedge_count; ++c) {
             const pack::Coedge& C = pack.coedges()[c];
             if (C.seam() != pack::Seam::None) continue; // a periodic surface's seam is no B-rep edge to the eye
             const uint32_t local = C.edge(), e = block.first_edge + local;
@@ -323,8 +343,7 @@ uint32_t Painter::face_edges(uint32_t f, const Transform& t, Rows rows, bool onc
                 if (mem_.edge_drawn[e]) continue;
                 mem_.edge_drawn[e] = 1;
             }
-            along.reversed = C.reversed();
-            work += edge(e, t, along);
+            work += edge(e, t);
         }
     }
     return work;
@@ -407,41 +426,15 @@ uint32_t Painter::part_box(uint32_t part, const Transform& t) {
     return 4;
 }
 
-const Projected* Painter::vertex_at_sample(const Along& along, uint32_t place, uint32_t s) const {
-    const FaceInfo& F = *along.face;
-    const int32_t* q = scene_.sample_q(s);
-    const DrawVertex* verts = scene_.vertices() + F.first_vertex;
-    const uint16_t* hint = mem_.vertex_at.data();
-    const uint32_t places = uint32_t(mem_.vertex_at.size()), count = F.vertex_count;
-    auto at = [&](uint32_t where) -> const Projected* {
-        if (where >= places) return nullptr;
-        const uint32_t v = hint[where];
-        if (v >= count) return nullptr;
-        const int32_t* p = verts[v].p;
-        return p[0] == q[0] && p[1] == q[1] && p[2] == q[2] ? &mem_.projected[v] : nullptr;
-    };
-    if (const Projected* v = at(place)) return v;
-    if (place > along.loop_place) {
-        if (const Projected* v = at(place - 1)) return v;
-    }
-    return at(along.loop_place);
-}
-
-uint32_t Painter::edge(uint32_t e, const Transform& t, const Along& along) {
+uint32_t Painter::edge(uint32_t e, const Transform& t) {
     const geom::EdgeSamples& samples = scene_.samples();
     const uint32_t first = samples.first[e], n = samples.count[e];
-    Projected own[2]; // samples no vertex of the face lies at, projected here (this one and the last)
+    Projected own[2]; // this sample and the last (copies: the next point() may take the slot)
     const Projected* prev = nullptr;
     int64_t prev_side = 0, side = 0;
     for (uint32_t k = 0; k < n; ++k) {
-        const Projected* cur = along.face ? vertex_at_sample(along, along.place + (along.reversed ? n - 1 - k : k), first + k) : nullptr;
-        if (!cur) {
-            t.project(scene_.sample_q(first + k), own[k & 1]);
-            cur = &own[k & 1];
-            ++edge_samples_.projected;
-        } else {
-            ++edge_samples_.from_vertices;
-        }
+        own[k & 1] = point(scene_.sample_q(first + k), t);
+        const Projected* cur = &own[k & 1];
         if (t.cut.on) side = t.cut.side(cur->x, cur->y, cur->d);
         // Segments that leave the view volume are left out (edges are not clipped); a section
         // keeps the part of a segment on its side. (A face's vertices may carry its cut flag:

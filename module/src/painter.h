@@ -8,6 +8,7 @@
 #include "render/raster.h"
 #include "scene.h"
 
+#include <bit>
 #include <span>
 #include <utility>
 
@@ -23,11 +24,26 @@ constexpr int32_t kFacePixels = 4;
 // as its triangles (coarser detail while dragging, for the frame rate).
 constexpr int32_t kSplatPixels = 2 * kFacePixels;
 
+// A mesh point as the instance being drawn projects it: a slot of the painter's projection
+// cache (Painter::point).
+struct ProjectedPoint {
+    int32_t p[3];    // the point, in shell coordinates
+    uint32_t stamp;  // the instance drawing it was projected for (Painter's stamp_; 0: none)
+    Projected at;
+};
+
+// The projection cache's slots: a power of two (the hash's top bits pick one). Faces are drawn
+// near the faces they share points with, so a few thousand slots catch nearly every point
+// asked for again (the distinct 10 k-face assembly's frame at rest: 46 k of 47 k with 2,048).
+constexpr uint32_t kProjectionSlots = 2048;
+constexpr int kProjectionSlotBits = std::countr_zero(kProjectionSlots);
+static_assert(std::has_single_bit(kProjectionSlots));
+
 class Painter {
 public:
     struct Memory {
         std::span<Projected> projected;       // one face's vertices
-        std::span<uint16_t> vertex_at;        // per place along that face's boundary: a vertex of it there (a hint, checked)
+        std::span<ProjectedPoint> points;     // the projection cache: slots by the point's hash
         std::span<uint8_t> edge_drawn;        // per pack edge: drawn in this instance already
         std::span<render::Palette> palettes;  // the shades of recently drawn face colours
         std::span<uint32_t> palette_rgb;      // which colour each holds (kNoColour: none)
@@ -44,9 +60,9 @@ public:
     void set_highlight(uint32_t face0, uint32_t instance0, uint32_t face1, uint32_t instance1) {
         hl_[0] = {face0, instance0}, hl_[1] = {face1, instance1};
     }
-    void set_instance(uint32_t i) { instance_ = i, projected_face_ = ~0u; }
-    // Something else wrote the projected vertices (a pick): no face's are there.
-    void forget_projection() { projected_face_ = ~0u; }
+    // The instance to draw next, and its transform from here on: the projection cache's
+    // points are from an earlier one (or another view) from now on.
+    void set_instance(uint32_t i) { instance_ = i, next_stamp(); }
     // Every face of the instance being drawn lies inside the view and the rows (its part's
     // sphere does: Transform::Sight::In): no face is tested on its own.
     void set_inside(bool on) { inside_ = on; }
@@ -64,8 +80,8 @@ public:
     // when it is done (at once when it cannot show). The projected vertices stay for the rest.
     uint32_t face(uint32_t f, const Transform& t, Rows rows, uint32_t from, uint32_t units, uint32_t& spent);
     // The edges of the face, each at most once per reset_edges() when `once`. Returns the work.
-    // Right after face() has drawn the face, its edges' samples are its projected vertices
-    // where one lies at a sample (the same point: the same pixels), projected again elsewhere.
+    // A sample at a point projected already in this instance (a vertex of a face drawn, the
+    // end of an edge drawn) is taken from the projection cache: the same point, the same pixels.
     uint32_t face_edges(uint32_t f, const Transform& t, Rows rows, bool once);
     // The part's box (Scene::part_box) as twelve lines: while its edges are not sampled yet, for
     // a part left out of a model larger than the memory, and for one tiny() on the screen.
@@ -76,14 +92,14 @@ public:
     void reset_edges(uint32_t part); // (its edges: all of them where a part's are not known apart)
     // The rows of the screen being drawn (the target's band) for culling.
     Rows rows(const Transform& t) const;
-    // Edge samples taken from a face's projected vertices and projected again, since the last
-    // call (what the reuse spares); and the reuse turned off (every sample projected: the
-    // reference it must match pixel for pixel, for tests).
-    struct EdgeSampleCounts {
-        uint32_t from_vertices = 0, projected = 0;
+    // Points (face vertices and edge samples) taken from the projection cache and projected,
+    // since the last call (what the cache spares); and the cache turned off (every point
+    // projected: the reference it must match pixel for pixel, for tests).
+    struct PointCounts {
+        uint32_t cached = 0, projected = 0;
     };
-    EdgeSampleCounts take_edge_sample_counts() { return std::exchange(edge_samples_, {}); }
-    void set_vertex_reuse(bool on) { reuse_ = on; }
+    PointCounts take_point_counts() { return std::exchange(point_counts_, {}); }
+    void set_point_cache(bool on) { cache_on_ = on, next_stamp(); }
     // Triangles and lines the rasterizer refused (outside its guard band): none, as every
     // one is projected or clipped into the band first; counted so that none goes unseen.
     uint32_t refused() const { return refused_; }
@@ -92,19 +108,13 @@ private:
     // `cap`: the palette of back faces seen through a section's cut (null: none).
     void triangle(const Transform& t, const Projected& a, const Projected& b, const Projected& c, const render::Palette& pal,
                   render::Cull cull, const render::Palette* cap);
-    // Edge e's samples joined by lines; `face`: the face whose projected vertices may hold
-    // them (null: none), the edge's first sample at `place` along its boundary (its last when
-    // `reversed`), in the loop beginning at `loop_place`.
-    struct Along {
-        const FaceInfo* face = nullptr;
-        uint32_t place = 0, loop_place = 0;
-        bool reversed = false;
-    };
-    uint32_t edge(uint32_t e, const Transform& t, const Along& along);
-    // The projected vertex of along.face at sample s (place along its boundary), or null:
-    // vertex_at's hint there, or before it (a coedge's first sample is the one the previous
-    // coedge ended on), or at the loop's start (where the loop closes), checked to lie at s.
-    const Projected* vertex_at_sample(const Along& along, uint32_t place, uint32_t s) const;
+    // Edge e's samples joined by lines.
+    uint32_t edge(uint32_t e, const Transform& t);
+    // The mesh point p as t projects it: from the cache when this instance projected it
+    // already (a point of two faces, an edge's sample at a face's vertex), else projected
+    // into the slot its hash picks. The reference is good until the next call.
+    const Projected& point(const int32_t p[3], const Transform& t);
+    void next_stamp();
     int32_t across(const int32_t sphere_centre[3], int32_t radius, const Transform& t, Projected& centre); // on the screen (sub-pixels)
     bool lit(uint32_t f) const { // picked, or of the part chosen: in the highlight colour
         return (hl_[0].face == f && hl_[0].instance == instance_) || (hl_[1].face == f && hl_[1].instance == instance_) || part_ == instance_;
@@ -136,9 +146,10 @@ private:
         uint32_t face = ~0u, instance = ~0u;
     } hl_[2];
     uint32_t instance_ = 0;
-    uint32_t projected_face_ = ~0u; // the face whose vertices `projected` holds (this instance's)
-    bool reuse_ = true;
-    EdgeSampleCounts edge_samples_;
+    uint32_t stamp_ = 1;    // the projection cache's points of this instance's drawing carry it
+    bool cache_on_ = true;
+    Projected uncached_{};  // point()'s answer with the cache off
+    PointCounts point_counts_;
     bool inside_ = false;
     uint32_t part_ = ~0u, focus_ = ~0u;
     uint32_t refused_ = 0;

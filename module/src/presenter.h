@@ -60,7 +60,7 @@ public:
     void flush_done() { done_count_ = done_count_ + 1; } // any context: only interrupts and this write it
     // Something else projected vertices into the painter's scratch (a pick): the face being
     // drawn starts over (its pixels drawn so far are drawn again, the same).
-    void projected_reused() { job_.tri = 0, painter_.forget_projection(); }
+    void projected_reused() { job_.tri = 0; }
     // Off: a lagging buffer draws the faces it lacks again (the reference catch_up() must
     // match, for tests).
     void set_catch_up(bool on) { catch_up_ = on; }

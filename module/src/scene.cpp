@@ -449,7 +449,6 @@ Result Scene::append(uint32_t f, const geom::Mesh& fm, const geom::FaceStats& st
         int32_t n[3];
         if (!q14(mv.n.x, n[0]) || !q14(mv.n.y, n[1]) || !q14(mv.n.z, n[2])) n[0] = n[1] = n[2] = 0; // (not a number: unlit)
         d.n[0] = int16_t(n[0]), d.n[1] = int16_t(n[1]), d.n[2] = int16_t(n[2]);
-        d.place = v < fm.places.size() ? fm.places[v] : geom::kNotOnBoundary;
     }
     for (uint32_t i = 0; i < fm.triangle_count * 3; ++i) mem_.indices[i0 + i] = uint16_t(fm.indices[i]);
 

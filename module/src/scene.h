@@ -19,7 +19,6 @@ namespace facet::module {
 struct DrawVertex {
     int32_t p[3];   // shell coordinates in units of the pack's diagonal / 2^20
     int16_t n[3];   // unit normal, Q14
-    uint16_t place; // its edge sample's place along its face's boundary (geom::Mesh::places), or geom::kNotOnBoundary
 };
 static_assert(sizeof(DrawVertex) == FACET_BYTES_PER_MESH_VERTEX);
 

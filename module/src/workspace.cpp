@@ -82,13 +82,12 @@ struct Carve {
         case Array::FaceStorage: break; // face()
         case Array::FaceVertices: scheduler.face_mesh.vertices = as<geom::MeshVertex>(count, bytes, align); break;
         case Array::FaceIndices: scheduler.face_mesh.indices = as<uint32_t>(count, bytes, align); break;
-        case Array::FacePlaces: scheduler.face_mesh.places = as<uint16_t>(count, bytes, align); break;
         case Array::MeshVertices: scene.vertices = as<module::DrawVertex>(count, bytes, align); break;
         case Array::MeshIndices: scene.indices = as<uint16_t>(count, bytes, align); break;
         case Array::Faces: scene.faces = as<module::FaceInfo>(count, bytes, align); break;
         case Array::DoneOrder: scene.done_order = as<uint32_t>(count, bytes, align); break;
         case Array::Projected: projected = painter.projected = as<module::Projected>(count, bytes, align); break;
-        case Array::VertexAt: painter.vertex_at = as<uint16_t>(count, bytes, align); break;
+        case Array::PointCache: painter.points = as<module::ProjectedPoint>(count, bytes, align); break;
         case Array::Palettes: painter.palettes = as<render::Palette>(count, bytes, align); break;
         case Array::PaletteRgb: painter.palette_rgb = as<uint32_t>(count, bytes, align); break;
         }

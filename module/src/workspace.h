@@ -23,8 +23,8 @@ constexpr uint32_t kPalettes = 16; // face colours shaded at once (more are rebu
 // mesh, per face) by load(), after the base, sized for the model and the room left.
 enum class Array : uint8_t {
     FaceStorage,                      // one face's working memory (geom/face_storage.h), one block
-    FaceVertices, FaceIndices, FacePlaces, // one face's float mesh, before the scene quantizes it
-    Projected, VertexAt,              // one face's vertices on the screen, and which lies at each boundary place
+    FaceVertices, FaceIndices,        // one face's float mesh, before the scene quantizes it
+    Projected, PointCache,            // one face's vertices on the screen; points projected in the instance drawn
     Palettes, PaletteRgb,             // the shades of the recently drawn colours, and which they are
     EdgeFirst, EdgeCount, EdgeDrawn,  // per pack edge: its first sample, its samples, drawn this frame
     SampleT, SampleP, SampleQ,        // per edge sample: parameter, 3D point, quantized point
@@ -51,9 +51,8 @@ constexpr void base_plan(const Capacity& c, uint32_t patch_words, Take& take) {
     take.face(f);
     take.array(Array::FaceVertices, geom::face_mesh_vertices(f), sizeof(geom::MeshVertex), alignof(geom::MeshVertex));
     take.array(Array::FaceIndices, 3 * size_t(geom::face_mesh_triangles(f)), sizeof(uint32_t), alignof(uint32_t));
-    take.array(Array::FacePlaces, geom::face_mesh_vertices(f), sizeof(uint16_t), alignof(uint16_t));
     take.array(Array::Projected, geom::face_mesh_vertices(f), sizeof(Projected), alignof(Projected));
-    take.array(Array::VertexAt, geom::face_mesh_vertices(f), sizeof(uint16_t), alignof(uint16_t));
+    take.array(Array::PointCache, kProjectionSlots, sizeof(ProjectedPoint), alignof(ProjectedPoint));
     take.array(Array::Palettes, kPalettes, sizeof(render::Palette), alignof(render::Palette));
     take.array(Array::PaletteRgb, kPalettes, sizeof(uint32_t), alignof(uint32_t));
 }

@@ -56,7 +56,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
 
     FaceStorage sc;
     if (!sc.bind(b.face.data(), b.face.size() * 8, kFace).ok()) std::abort();
-    Mesh mesh{b.mv, b.mi, b.muv, {}};
+    Mesh mesh{b.mv, b.mi, b.muv};
     for (uint32_t f = 0; f < pack.faces().size() && f < kFaces; ++f) {
         const uint32_t v0 = mesh.vertex_count, t0 = mesh.triangle_count;
         FaceStats st;

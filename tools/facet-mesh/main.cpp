@@ -232,7 +232,7 @@ int main(int argc, char** argv) {
     std::vector<std::string> failures;
     for (uint32_t s = 0; s < pack.shells().size(); ++s) {
         const pack::Shell& sh = pack.shells()[s];
-        Mesh mesh{mv, mi, muv, {}};
+        Mesh mesh{mv, mi, muv};
         ShellMesh& out_shell = shells[s];
         for (uint32_t fi = sh.first_face; fi < sh.first_face + sh.face_count; ++fi) {
             const uint32_t before = mesh.triangle_count;

@@ -35,7 +35,7 @@ struct FaceCapacity {
 enum class FaceArray : uint8_t {
     CdtVertices, CdtTriangles, CdtWork, CdtOrder, CdtMinSeq, CdtIns, CdtKeys, // the CDT arena
     LoopPoints, LoopSizes,                   // the loops on the CDT's integer grid
-    Uv, Pinned, Place, Xyz, MeshOf,          // per point: (u,v), which of them are exact, its boundary place, 3D, its vertex
+    Uv, Pinned, Xyz, MeshOf,                 // per point: (u,v), which of them are exact, 3D, its vertex
     Measured,                                // per CDT triangle slot: refinement's last measure of it
     Slivers,                                 // loop points dropped from the grid, as triangles
     Patches,                                 // a free-form surface's fixed-point patches (words)
@@ -58,7 +58,6 @@ constexpr void face_storage_plan(const FaceCapacity& c, Take&& take) {
     take(FaceArray::LoopSizes, size_t(c.loops), 4, 4);
     take(FaceArray::Uv, V, 8, 4);            // Vec2
     take(FaceArray::Pinned, V, 1, 1);
-    take(FaceArray::Place, V, 2, 2);         // (geom/tessellate.h: kNotOnBoundary)
     take(FaceArray::Xyz, V, 12, 4);          // Vec3
     take(FaceArray::MeshOf, V, 4, 4);
     take(FaceArray::Measured, T, 24, 8);     // refinement's TriangleMeasure

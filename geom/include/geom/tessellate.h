@@ -33,19 +33,11 @@ struct MeshVertex {
     Vec3 p, n;
 };
 
-// A vertex's place along its face's boundary: its edge sample's place in the walk over the
-// face's loops in order, each loop's coedges in order, and each coedge's edge samples in the
-// coedge's direction, every coedge counting all of its edge's samples (EdgeSamples::count) —
-// a walk a drawing of the face's edges can take too, to find the vertex at a sample. Not on
-// the boundary: refinement's points, the corners of slivers, and places past the 16 bits.
-constexpr uint16_t kNotOnBoundary = 0xFFFF;
-
 // Fixed-capacity output. Faces append; Full leaves earlier faces intact.
 struct Mesh {
     std::span<MeshVertex> vertices;
     std::span<uint32_t> indices; // three per triangle
     std::span<Vec2> uv;          // optional: each vertex's (u,v) on its face (for measuring)
-    std::span<uint16_t> places;  // optional: each vertex's place along its face's boundary (or kNotOnBoundary)
     uint32_t vertex_count = 0, triangle_count = 0;
 };
 

@@ -49,12 +49,12 @@
 #define FACET_BYTES_PER_FACE 44ul
 #define FACET_BYTES_PER_EDGE 7ul
 #define FACET_BYTES_PER_SAMPLE 28ul
-#define FACET_BYTES_PER_FACE_POINT 229ul
+#define FACET_BYTES_PER_FACE_POINT 223ul
 #define FACET_BYTES_PER_LOOP 4ul
 #define FACET_BYTES_PER_SLIVER 60ul
 #define FACET_BYTES_PER_MESH_VERTEX 20ul
 #define FACET_BYTES_PER_MESH_TRIANGLE 6ul
-#define FACET_WORKSPACE_FIXED_BYTES 94208ul
+#define FACET_WORKSPACE_FIXED_BYTES 184320ul
 
 #define FACET_WORKSPACE_BYTES(faces, edges, samples, face_points, loops, slivers, mesh_vertices, mesh_triangles)      \
     (FACET_WORKSPACE_FIXED_BYTES + (unsigned long)(faces)*FACET_BYTES_PER_FACE +                                        \
