@@ -23,6 +23,7 @@
 #include "hal/print.h"
 #include "hal/report.h"
 #include "tgx_side.h"
+#include "views.h"
 
 namespace {
 
@@ -82,30 +83,25 @@ bool dump(const char* name, const uint16_t* pixels, uint16_t w, uint16_t h) {
     return ok(s);
 }
 
-void settle(Viewer& v) {
-    while (v.step(0) != Activity::Idle) {
+// facet's frame of the view (already drawn: the last one).
+bool picture(const char* name, bool edges, uint16_t w, uint16_t h) {
+    hal::Console& con = *state.con;
+    const Event& f = state.last_frame;
+    if (f.kind != Event::Kind::FrameDone || !f.frame.full || f.frame.faces_done != f.frame.faces_total) {
+        print(con, "bench: no full frame of the finished model for {}\n", name);
+        return false;
     }
+    print(con, "@view {} {}x{} {} covered {}\n", name, w, h, edges ? "edges" : "shaded", covered(depth, uint32_t(w) * h, 0xFFFF));
+    char shot[48];
+    format(shot, sizeof shot, "{}-{}x{}-facet{}", name, w, h, edges ? "" : "-shaded");
+    return dump(shot, reinterpret_cast<const uint16_t*>(frame), w, h);
 }
 
-// facet's frame of the view (already drawn: the last one), then the peer's of the same camera.
-bool views(Viewer& v, const char* name, uint16_t w, uint16_t h, const bench::PeerMesh& peer) {
+// The peer's frame of the same camera.
+bool peer_view(const Viewer& v, const char* name, uint16_t w, uint16_t h, const bench::PeerMesh& peer) {
     hal::Console& con = *state.con;
     const uint32_t n = uint32_t(w) * h;
     char shot[48];
-    for (int edges = 1; edges >= 0; --edges) {
-        v.set_display_mode(edges ? DisplayMode::ShadedEdges : DisplayMode::Shaded);
-        settle(v);
-        const Event& f = state.last_frame;
-        if (f.kind != Event::Kind::FrameDone || !f.frame.full || f.frame.faces_done != f.frame.faces_total) {
-            print(con, "bench: no full frame of the finished model for {}\n", name);
-            return false;
-        }
-        print(con, "@view {} {}x{} {} covered {}\n", name, w, h, edges ? "edges" : "shaded", covered(depth, n, 0xFFFF));
-        format(shot, sizeof shot, "{}-{}x{}-facet{}", name, w, h, edges ? "" : "-shaded");
-        if (!dump(shot, reinterpret_cast<const uint16_t*>(frame), w, h)) return false;
-    }
-    v.set_display_mode(DisplayMode::ShadedEdges);
-    settle(v);
     const Viewer::CameraView c = v.camera();
     bench::PeerCamera pc{};
     for (int i = 0; i < 9; ++i) pc.rotation[i] = c.rotation[i];
@@ -143,17 +139,9 @@ int facet_main(hal::Board& board) {
             if (e.kind == hal::InputEvent::Kind::Key && e.key >= '0' && e.key <= '3') finer = e.key - '0', got = true;
         }
     }
-    const uint16_t sizes[2][2] = {{480, 272}, {640, 480}};
-    for (const auto& s : sizes) {
-        const uint16_t w = s[0], h = s[1];
-        Config cfg;
-        cfg.display.width = w, cfg.display.height = h, cfg.display.band_lines = h;
-        cfg.display.buffers[0] = frame, cfg.display.depth[0] = depth;
-        cfg.display.mode = Flush::Copy;
-        cfg.display.flush = flush;
-        cfg.on_event = on_event;
-        cfg.interface = Interface::Off; // the model alone: what the peer draws too
-        cfg.screen_error_px = 0; // every face, as the peer's mesh has them (none left waiting by the view)
+    for (const bench::ViewSize s : bench::kViewSizes) {
+        const uint16_t w = s.width, h = s.height;
+        const Config cfg = bench::view_config(s, frame, depth, flush, on_event, nullptr);
         Result why;
         state.viewer = Viewer::create(cfg, workspace, sizeof workspace, &why);
         if (!state.viewer) {
@@ -165,18 +153,15 @@ int facet_main(hal::Board& board) {
             print(con, "bench: no valid pack: {} ({})\n", r, r.status);
             return 1;
         }
-        settle(v);
-        for (uint32_t k = 0; k < finer; ++k) {
-            v.act(Action::Finer);
-            settle(v);
-        }
+        bench::prepare(v, finer);
         const Stats st = v.stats();
         print(con, "@model faces {} failed {} triangles {} peer_triangles {} peer_meshes {} finer {}\n", st.faces, st.failed,
               st.triangles, peer.triangles, peer.meshes, finer);
-        if (!views(v, "full", w, h, peer)) return 1;
-        for (int i = 0; i < 3; ++i) v.act(Action::ZoomIn);
-        settle(v);
-        if (!views(v, "zoomed", w, h, peer)) return 1;
+        if (!bench::draw_views(
+                v, [&](const char* name, bool edges) { return picture(name, edges, w, h); },
+                [&](const char* name) { return peer_view(v, name, w, h, peer); })) {
+            return 1;
+        }
     }
     return 0;
 }

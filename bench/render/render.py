@@ -16,9 +16,12 @@ Writes CSV  board,model,view,width,height,impl,triangles,pixels,instructions
   pixels: those the model covers, from each renderer's own depth buffer), a PNG plot beside it
   and, under WORK/BOARD/MODEL/, the pictures side by side (facet | tgx): side-*.png.
 Checks, for every row: the bench firmware finished, both sides drew the same mesh (triangle
-counts), and their covered pixels agree within 2% (the same view).
+counts), and their covered pixels agree within 2% (the same view). With --host-views (the
+facet-render-views program: the firmware's sequence of views drawn by the module on the host),
+every picture of facet's on every board is the host's, byte for byte.
 
-  render.py --packer P --mesher M --build BUILD --work DIR --csv FILE [--boards A,B] MODEL.step[@finerN]...
+  render.py --packer P --mesher M [--host-views V] --build BUILD --work DIR --csv FILE [--boards A,B]
+            MODEL.step[@finerN]...
   (@finerN: the viewer's level of detail N steps finer than its default, on both sides)
 """
 import argparse
@@ -93,10 +96,29 @@ def side_by_side(out, view, size):
     return path
 
 
+def host_differences(out, host, view, size):
+    """Where facet's pictures of a view on the board are not the host's (none: the same bytes)."""
+    problems = []
+    for mode in ('facet', 'facet-shaded'):
+        name = f'{view}-{size}-{mode}.f565'
+        a, b = os.path.join(out, name), os.path.join(host, name)
+        if not (os.path.exists(a) and os.path.exists(b)):
+            problems.append(f'{name}: no picture to compare with the host\'s')
+            continue
+        wa, ha, pa = img.read_f565(a)
+        wb, hb, pb = img.read_f565(b)
+        if (wa, ha) != (wb, hb):
+            problems.append(f'{name}: {wa}x{ha} on the board, {wb}x{hb} on the host')
+        elif pa != pb:
+            problems.append(f'{name}: {sum(x != y for x, y in zip(pa, pb)):,} pixels differ from the host\'s')
+    return problems
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument('--packer', required=True)
     ap.add_argument('--mesher', required=True)
+    ap.add_argument('--host-views', help='facet-render-views: compare every board\'s pictures with the host\'s')
     ap.add_argument('--build', required=True)
     ap.add_argument('--work', required=True)
     ap.add_argument('--csv', required=True)
@@ -117,6 +139,13 @@ def main():
             r = subprocess.run(cmd, capture_output=True, text=True)
             if r.returncode != 0:
                 raise SystemExit(f'render.py: {" ".join(cmd)}: exit {r.returncode}\n{r.stderr[-2000:]}')
+        host = None
+        if args.host_views:
+            host = os.path.join(args.work, 'host', name)
+            os.makedirs(host, exist_ok=True)
+            r = subprocess.run([args.host_views, fpk, str(finer), host], capture_output=True, text=True)
+            if r.returncode != 0:
+                raise SystemExit(f'render.py: {args.host_views} {name}: exit {r.returncode}\n{r.stderr[-2000:]}')
         for b in [x for x in args.boards.split(',') if x]:
             board = boards.load(b)
             elf = os.path.join(args.build, b, 'bench', 'facet-render-bench.elf')
@@ -155,6 +184,8 @@ def main():
                     problems.append(f'{view} {w}x{h}: facet covers {f["pixels"]:,} pixels, tgx {t["pixels"]:,}: '
                                     'not the same view')
                 side_by_side(out, view, f'{w}x{h}')
+                if host:
+                    problems += host_differences(out, host, view, f'{w}x{h}')
             if problems:
                 failed = True
                 print(f'FAIL {b} {name}: ' + '; '.join(problems), file=sys.stderr)

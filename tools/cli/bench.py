@@ -202,7 +202,7 @@ def cmd_render(args, parser):
     fresh(os.path.join(ROOT, 'out', 'bench', 'render'))
     csv = os.path.abspath(args.csv)
     rc = run([sys.executable, 'bench/render/render.py', '--packer', tool('facet-pack'), '--mesher', tool('facet-mesh'),
-              '--build', 'build', '--work', os.path.join(ROOT, 'out', 'bench', 'render'), '--csv', csv] + models)
+              '--host-views', tool('facet-render-views'), '--build', 'build', '--work', os.path.join(ROOT, 'out', 'bench', 'render'), '--csv', csv] + models)
     run([sys.executable, 'tools/plot_bench.py', 'render', csv])
     with open(csv[:-4] + '.md', 'w') as md:
         run([sys.executable, 'tools/plot_bench.py', 'render-table', csv], stdout=md)

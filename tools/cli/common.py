@@ -125,6 +125,7 @@ def tool(name):
         'facet-sample-model': 'tools/sample-model/facet-sample-model',
         'facet-stress-model': 'tools/stress-models/facet-stress-model',
         'facet-bench-mesh': 'bench/facet-bench-mesh', 'facet-bench-cdt': 'bench/facet-bench-cdt',
+        'facet-render-views': 'bench/facet-render-views',
         'facet-example-minimal': 'examples/facet-example-minimal', 'facet-example-own-ui': 'examples/facet-example-own-ui',
         'facet-assembly': 'tools/assembly/facet-assembly',
     }

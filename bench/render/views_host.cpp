@@ -1,0 +1,92 @@
+// facet-render-views: the render bench's facet pictures drawn on the host, by the sequence the
+// bench firmware draws on the boards (views.h), with the same workspace and pack memory, into
+// F565 files named as the firmware's dumps (DIR/{full,zoomed}-WxH-facet[-shaded].f565).
+// render.py --host-views compares every board's pictures with these byte for byte: the module
+// draws the same pixels on the ARM926, the Cortex-M7 and the host.
+//
+//   facet-render-views PACK FINER DIR      exit 0: written; 1: the pack or a view failed; 2: usage
+#include "facet/sizes.h"
+#include "facet/viewer.h"
+#include "hal/fake.h"
+#include "views.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace facet;
+
+constexpr size_t kPackMemory = 1536u * 1024; // as the bench firmware's (main.cpp)
+
+struct Views {
+    Viewer* viewer = nullptr;
+    Event last_frame{};
+};
+
+void on_event(void* user, const Event& e) {
+    if (e.kind == Event::Kind::FrameDone) static_cast<Views*>(user)->last_frame = e;
+}
+
+void flush(void* user, const Area&, const Rgb565*) { static_cast<Views*>(user)->viewer->flush_done(); }
+
+} // namespace
+
+int main(int argc, char** argv) {
+    if (argc != 4) {
+        std::fprintf(stderr, "usage: facet-render-views PACK FINER DIR\n");
+        return 2;
+    }
+    std::ifstream in(argv[1], std::ios::binary);
+    const std::vector<char> file((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (!in.good() && !in.eof()) {
+        std::fprintf(stderr, "facet-render-views: cannot read %s\n", argv[1]);
+        return 1;
+    }
+    const uint32_t finer = uint32_t(std::strtoul(argv[2], nullptr, 10));
+    const std::string dir = argv[3];
+    std::vector<uint64_t> pack(file.size() / 8 + 1), workspace(FACET_WORKSPACE_BYTES_DEFAULT / 8 + 1), memory(kPackMemory / 8);
+    std::memcpy(pack.data(), file.data(), file.size());
+    for (const bench::ViewSize s : bench::kViewSizes) {
+        std::vector<Rgb565> frame(size_t(s.width) * s.height);
+        std::vector<uint16_t> depth(frame.size());
+        Views views;
+        const Config cfg = bench::view_config(s, frame.data(), depth.data(), flush, on_event, &views);
+        Result why;
+        views.viewer = Viewer::create(cfg, workspace.data(), FACET_WORKSPACE_BYTES_DEFAULT, &why);
+        if (!views.viewer) {
+            std::fprintf(stderr, "facet-render-views: %s\n", why.what);
+            return 1;
+        }
+        Viewer& v = *views.viewer;
+        if (Result r = v.load(pack.data(), uint32_t(file.size()), memory.data(), kPackMemory); !r.ok()) {
+            std::fprintf(stderr, "facet-render-views: %s: %s\n", argv[1], r.what);
+            return 1;
+        }
+        bench::prepare(v, finer);
+        const bool drawn = bench::draw_views(
+            v,
+            [&](const char* name, bool edges) {
+                const Event& f = views.last_frame;
+                if (f.kind != Event::Kind::FrameDone || !f.frame.full || f.frame.faces_done != f.frame.faces_total) {
+                    std::fprintf(stderr, "facet-render-views: no full frame of the finished model for %s\n", name);
+                    return false;
+                }
+                const std::string path = dir + "/" + name + "-" + std::to_string(s.width) + "x" + std::to_string(s.height) +
+                                         "-facet" + (edges ? "" : "-shaded") + ".f565";
+                if (!hal::fake::write_f565(path, frame, s.width, s.height)) {
+                    std::fprintf(stderr, "facet-render-views: cannot write %s\n", path.c_str());
+                    return false;
+                }
+                return true;
+            },
+            [](const char*) { return true; });
+        if (!drawn) return 1;
+    }
+    return 0;
+}
