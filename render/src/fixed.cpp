@@ -98,7 +98,7 @@ uint32_t isqrt(uint64_t v) {
     return static_cast<uint32_t>(res);
 }
 
-uint32_t recip31(uint32_t d) {
+uint32_t recip31_newton(uint32_t d) {
     constexpr uint64_t kOne = uint64_t(1) << 31;
     uint32_t x = kRecip[(d >> 5) - 1024];
     // x += x (1 - d x / 2^31): the relative error squares.

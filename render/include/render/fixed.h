@@ -35,10 +35,16 @@ constexpr int32_t kMaxCoordinate = 1 << 27;
 // Integer square root (floor).
 uint32_t isqrt(uint64_t v);
 
-// floor(2^31 / d) for d in [2^15, 2^16), exactly, without a division (a library call of over
-// a hundred instructions on a core without a divider): a table estimate, two Newton steps, a
-// last correction.
-uint32_t recip31(uint32_t d);
+// floor(2^31 / d) for d in [2^15, 2^16), exactly. Without a divider (the ARM926: a division
+// is a library call of over a hundred instructions) a table estimate, a Newton step and a last
+// correction (recip31_newton); with one (the Cortex-M7, the host) the division itself, one
+// instruction. The same value either way, so the same pixels on every core.
+uint32_t recip31_newton(uint32_t d);
+#if defined(__ARM_FEATURE_IDIV) || !defined(__arm__)
+inline uint32_t recip31(uint32_t d) { return (uint32_t(1) << 31) / d; }
+#else
+inline uint32_t recip31(uint32_t d) { return recip31_newton(d); }
+#endif
 
 // x / d for d >= 1, to about 2^-15 relative (d's 16 leading bits): one reciprocal, which can be
 // shared by several numerators over one denominator (a vertex's x and y over its depth).
