@@ -3,6 +3,7 @@
 // into spans; lines.cpp: lines): not part of render's interface.
 #include "render/raster.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <initializer_list>
 
@@ -75,5 +76,76 @@ struct PixelBox {
 
 // Whether a triangle's attributes need clamping per pixel (scan.cpp).
 bool needs_clamp(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, int32_t extent);
+
+// A small triangle's edge: its function at the box's first pixel centre (covered where it is
+// >= 0, the top-left rule in its bias) and its steps a pixel right and a pixel down.
+struct SmallEdge {
+    int32_t e, sx, sy;
+};
+
+// The edges of a small triangle (v0, v1, v2 clockwise on the screen, its box under kSmall
+// pixels both ways: 32-bit functions) from the pixel centre (ox, oy): edge i runs from the
+// vertex after v[i] to the one after that.
+inline void small_edges(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2, int32_t ox, int32_t oy,
+                        SmallEdge ed[3]) {
+    const ScreenVertex* from[3] = {&v1, &v2, &v0};
+    const ScreenVertex* to[3] = {&v2, &v0, &v1};
+    for (int i = 0; i < 3; ++i) {
+        const int32_t dx = to[i]->x - from[i]->x, dy = to[i]->y - from[i]->y;
+        const int32_t bias = (dy < 0 || (dy == 0 && dx > 0)) ? 0 : 1;
+        const int32_t px = from[i]->x - ox, py = from[i]->y - oy;
+        ed[i].e = dx * (0 - py) - dy * (0 - px) - bias;
+        ed[i].sx = -kPerPixel * dy;
+        ed[i].sy = kPerPixel * dx;
+    }
+}
+
+// A core with an integer divider (the Cortex-M7, the host): a division is an instruction, and
+// small triangles find their rows' runs by dividing (the ARM926 walks the columns instead).
+#if defined(__ARM_FEATURE_IDIV) || !defined(__arm__)
+constexpr bool kDivider = true;
+#else
+constexpr bool kDivider = false;
+#endif
+
+// Each of `rows` rows' run of covered columns in [col0, col1], as span[2 r] .. span[2 r + 1]
+// (half-open, empty when the second is not past the first); whether any row has one. Both ways
+// give the same runs (a triangle is convex): kDivide finds where each edge's function turns
+// non-negative (sx > 0: from k = ceil(-e / sx) on) or stops being so (sx < 0: up to
+// k = floor(e / -sx)); the walk steps along the row from its first column.
+template <bool kDivide>
+inline bool small_runs(const SmallEdge ed[3], int32_t rows, int32_t col0, int32_t col1, int32_t* span) {
+    bool any = false;
+    int32_t r0 = ed[0].e, r1 = ed[1].e, r2 = ed[2].e;
+    const int32_t sx0 = ed[0].sx, sx1 = ed[1].sx, sx2 = ed[2].sx;
+    for (int32_t* at = span; at < span + 2 * rows; at += 2) {
+        if constexpr (kDivide) {
+            int32_t lo = 0, end = col1 - col0 + 1;
+            const int32_t e[3] = {r0, r1, r2};
+            for (int i = 0; i < 3; ++i) {
+                const int32_t sx = ed[i].sx;
+                if (sx > 0) {
+                    if (e[i] < 0) lo = std::max(lo, (sx - 1 - e[i]) / sx);
+                } else if (sx < 0) {
+                    end = e[i] < 0 ? 0 : std::min(end, e[i] / -sx + 1);
+                } else if (e[i] < 0) {
+                    end = 0;
+                }
+            }
+            at[0] = col0 + lo, at[1] = col0 + std::max(lo, end);
+            any |= end > lo;
+        } else {
+            // The first pixel inside, then on while inside.
+            int32_t e0 = r0, e1 = r1, e2 = r2, x = col0;
+            for (; x <= col1 && (e0 | e1 | e2) < 0; ++x) e0 += sx0, e1 += sx1, e2 += sx2;
+            const int32_t lo = x;
+            for (; x <= col1 && (e0 | e1 | e2) >= 0; ++x) e0 += sx0, e1 += sx1, e2 += sx2;
+            at[0] = lo, at[1] = x;
+            any |= x > lo;
+        }
+        r0 += ed[0].sy, r1 += ed[1].sy, r2 += ed[2].sy;
+    }
+    return any;
+}
 
 } // namespace facet::render::detail

@@ -393,37 +393,12 @@ void Rasterizer::scan_rows(const ScreenVertex& v0, const ScreenVertex& v1, const
 void Rasterizer::scan_small(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2,
                             int64_t area2, int32_t row0, int32_t row1, int32_t col0, int32_t col1) {
     const int32_t ox = centre(col0), oy = centre(row0); // the first pixel's centre
-    struct Edge {
-        int32_t e, sx, sy; // value at the current pixel; steps per pixel in x and y
-    } ed[3];
-    const ScreenVertex* from[3] = {&v1, &v2, &v0};
-    const ScreenVertex* to[3] = {&v2, &v0, &v1};
-    for (int i = 0; i < 3; ++i) {
-        const int32_t dx = to[i]->x - from[i]->x, dy = to[i]->y - from[i]->y;
-        const int32_t bias = (dy < 0 || (dy == 0 && dx > 0)) ? 0 : 1;
-        const int32_t px = from[i]->x - ox, py = from[i]->y - oy;
-        ed[i].e = dx * (0 - py) - dy * (0 - px) - bias;
-        ed[i].sx = -kPerPixel * dy;
-        ed[i].sy = kPerPixel * dx;
-    }
+    SmallEdge ed[3];
+    small_edges(v0, v1, v2, ox, oy, ed);
     // The rows' spans first: a small triangle often covers no pixel centre at all (a sliver
     // between them), and then needs no gradients.
     int32_t span[2 * kSmall];
-    bool any = false;
-    {
-        int32_t r0 = ed[0].e, r1 = ed[1].e, r2 = ed[2].e;
-        const int32_t sx0 = ed[0].sx, sx1 = ed[1].sx, sx2 = ed[2].sx;
-        for (int32_t* at = span; at <= span + 2 * (row1 - row0); at += 2) {
-            // The first pixel inside, then on while inside (a triangle is convex).
-            int32_t e0 = r0, e1 = r1, e2 = r2, x = col0;
-            for (; x <= col1 && (e0 | e1 | e2) < 0; ++x) e0 += sx0, e1 += sx1, e2 += sx2;
-            const int32_t lo = x;
-            for (; x <= col1 && (e0 | e1 | e2) >= 0; ++x) e0 += sx0, e1 += sx1, e2 += sx2;
-            at[0] = lo, at[1] = x; // [lo, x)
-            any |= x > lo;
-            r0 += ed[0].sy, r1 += ed[1].sy, r2 += ed[2].sy;
-        }
-    }
+    const bool any = small_runs<kDivider>(ed, row1 - row0 + 1, col0, col1, span);
     if (!any) return;
     const bool clamp = stipple_ || needs_clamp(v0, v1, v2, kSmall);
     Interp at[kAttributes];
