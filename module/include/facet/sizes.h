@@ -43,7 +43,8 @@
 #define FACET_DEFAULT_MESH_TRIANGLES 98304u
 
 /* Bytes per item of each capacity, and the fixed part (the viewer's state, 16 colour palettes,
- * 64 KB of a free-form face's fixed-point patches, alignment). They come from the workspace's
+ * 64 KB of a free-form face's fixed-point patches, 176 KB of the painter's projection cache,
+ * alignment). They come from the workspace's
  * one plan (module/src/workspace.h, a face's part from geom/face_storage.h): the module's build
  * fails unless each equals what the plan takes per item, and the fixed part holds the rest. */
 #define FACET_BYTES_PER_FACE 44ul
