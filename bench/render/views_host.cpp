@@ -5,13 +5,13 @@
 // draws the same pixels on the ARM926, the Cortex-M7 and the host.
 //
 //   facet-render-views PACK FINER DIR      exit 0: written; 1: the pack or a view failed; 2: usage
+//   (FINER: 0 to 3 steps finer than the default level of detail)
 #include "facet/sizes.h"
 #include "facet/viewer.h"
 #include "hal/fake.h"
 #include "views.h"
 
 #include <cstdio>
-#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <iterator>
@@ -38,8 +38,9 @@ void flush(void* user, const Area&, const Rgb565*) { static_cast<Views*>(user)->
 } // namespace
 
 int main(int argc, char** argv) {
-    if (argc != 4) {
-        std::fprintf(stderr, "usage: facet-render-views PACK FINER DIR\n");
+    // FINER: the steps finer than the default level of detail, as the bench firmware takes them (0 to 3).
+    if (argc != 4 || argv[2][0] < '0' || argv[2][0] > '3' || argv[2][1] != '\0') {
+        std::fprintf(stderr, "usage: facet-render-views PACK FINER(0-3) DIR\n");
         return 2;
     }
     std::ifstream in(argv[1], std::ios::binary);
@@ -48,7 +49,7 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "facet-render-views: cannot read %s\n", argv[1]);
         return 1;
     }
-    const uint32_t finer = uint32_t(std::strtoul(argv[2], nullptr, 10));
+    const uint32_t finer = uint32_t(argv[2][0] - '0');
     const std::string dir = argv[3];
     std::vector<uint64_t> pack(file.size() / 8 + 1), workspace(FACET_WORKSPACE_BYTES_DEFAULT / 8 + 1), memory(kPackMemory / 8);
     std::memcpy(pack.data(), file.data(), file.size());
