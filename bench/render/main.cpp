@@ -86,8 +86,7 @@ bool dump(const char* name, const uint16_t* pixels, uint16_t w, uint16_t h) {
 // facet's frame of the view (already drawn: the last one).
 bool picture(const char* name, bool edges, uint16_t w, uint16_t h) {
     hal::Console& con = *state.con;
-    const Event& f = state.last_frame;
-    if (f.kind != Event::Kind::FrameDone || !f.frame.full || f.frame.faces_done != f.frame.faces_total) {
+    if (!bench::whole_model_drawn(state.last_frame)) {
         print(con, "bench: no full frame of the finished model for {}\n", name);
         return false;
     }

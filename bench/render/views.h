@@ -44,6 +44,12 @@ inline facet::Config view_config(ViewSize s, facet::Rgb565* frame, uint16_t* dep
     return cfg;
 }
 
+// Whether the last frame (its FrameDone event) is a full one of the finished model: what a
+// picture of a view must be.
+inline bool whole_model_drawn(const facet::Event& frame) {
+    return frame.kind == facet::Event::Kind::FrameDone && frame.frame.full && frame.frame.faces_done == frame.frame.faces_total;
+}
+
 // After load: every face done, then `finer` steps finer.
 inline void prepare(facet::Viewer& v, uint32_t finer) {
     settle(v);

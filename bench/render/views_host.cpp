@@ -73,8 +73,7 @@ int main(int argc, char** argv) {
         const bool drawn = bench::draw_views(
             v,
             [&](const char* name, bool edges) {
-                const Event& f = views.last_frame;
-                if (f.kind != Event::Kind::FrameDone || !f.frame.full || f.frame.faces_done != f.frame.faces_total) {
+                if (!bench::whole_model_drawn(views.last_frame)) {
                     std::fprintf(stderr, "facet-render-views: no full frame of the finished model for %s\n", name);
                     return false;
                 }

@@ -5,7 +5,6 @@
 #include "raster_internal.h"
 #include "render/fixed.h"
 
-#include <bit>
 #include <cstdint>
 
 namespace facet::render {
@@ -22,7 +21,7 @@ constexpr auto kShortReciprocal = [] {
         constexpr const Reciprocal& operator[](int32_t n) const { return r[n]; }
     } table{};
     for (uint32_t n = 1; n < kShortLine; ++n) { // (shift = 31 + e >= 16)
-        const int e = (32 - std::countl_zero(n)) - 16; // as reciprocal(): n << -e in [2^15, 2^16)
+        const int e = reciprocal_shift(n); // < 0 here: n << -e in [2^15, 2^16)
         const uint32_t dn = n << -e;
         table.r[n] = {uint32_t((uint64_t(1) << 31) / dn), 31 + e};
     }

@@ -166,7 +166,8 @@ int main(int argc, char** argv) {
     }
 
     TessOptions opt;
-    opt.tolerance = tolerance > 0 ? float(tolerance) : model_tolerance(file, pack);
+    const float default_tol = model_tolerance(file, pack); // the viewer's default (its box: the file's)
+    opt.tolerance = tolerance > 0 ? float(tolerance) : default_tol;
     // The viewer's Finer key halves the tolerance, down to an eighth (the same float).
     for (int k = 0; k < int(finer); ++k) opt.tolerance *= 0.5f;
     if (angle > 0) opt.max_angle = float(angle);
@@ -197,7 +198,7 @@ int main(int argc, char** argv) {
                 if (sample_edges(pack, o, trial).ok()) {
                     char h[120];
                     std::snprintf(h, sizeof h, "; --tolerance %.4g mm samples every edge (the default is %.4g mm)", t,
-                                  model_tolerance(file, pack));
+                                  default_tol);
                     hint = h;
                     break;
                 }
@@ -379,7 +380,7 @@ int main(int argc, char** argv) {
     for (auto& [r, n] : reasons) std::printf("  %u faces: %s\n", n, r.c_str());
     if (full_faces) {
         std::printf("  %u faces need more than one face's capacity (%zu points) at %.4g mm: a coarser --tolerance "
-                    "meshes them (the default is %.4g mm)\n", full_faces, size_t(face_points), opt.tolerance, model_tolerance(file, pack));
+                    "meshes them (the default is %.4g mm)\n", full_faces, size_t(face_points), opt.tolerance, default_tol);
     }
     if (!quiet) {
         for (const std::string& f : failures) std::fprintf(stderr, "facet-mesh: %s\n", f.c_str());
@@ -412,7 +413,7 @@ int main(int argc, char** argv) {
             std::fprintf(stderr, "facet-mesh: %u faces stray from their surfaces by more than the tolerance %.4g mm (and their B-rep's own gap): "
                          "up to %.4gx (exit 6)\n", over_faces, opt.tolerance, worst_ratio);
             // default_tolerance is 0.1% of the diagonal; the sweep (bench/sweep.py) holds from 0.02%.
-            const float tested = 0.2f * geom::model_tolerance(file, pack);
+            const float tested = 0.2f * default_tol;
             if (opt.tolerance < tested)
                 std::fprintf(stderr, "  %.4g mm is finer than the tested range (from 0.02%% of the model's diagonal, %.4g mm here): "
                              "a face's (u,v) grid has 32,768 steps and its geometry is float32\n", opt.tolerance, tested);

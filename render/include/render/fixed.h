@@ -52,8 +52,10 @@ struct Reciprocal {
     uint32_t m;   // floor(2^31 / (d normalized to [2^15, 2^16)))
     int shift;    // x / d ~= (x * m) >> shift
 };
+// The shift e that brings d (>= 1) into [2^15, 2^16): d >> e, or d << -e when e < 0.
+constexpr int reciprocal_shift(uint32_t d) { return (32 - __builtin_clz(d)) - 16; }
 inline Reciprocal reciprocal(uint32_t d) {
-    const int e = (32 - __builtin_clz(d)) - 16; // d >> e in [2^15, 2^16)
+    const int e = reciprocal_shift(d);
     const uint32_t dn = e >= 0 ? d >> e : d << -e;
     return {recip31(dn), 31 + e};
 }
