@@ -22,10 +22,13 @@ inline int find_span(const float* knots, int n, int p, float& t, bool periodic) 
         t = lo + std::fmod(t - lo, hi - lo);
         if (t < lo) t += hi - lo;
     }
-    // (The compares by order_key: the knots are finite, the pack's check; a NaN t is clamped to
-    // an end, as no float compare would.)
-    const int32_t klo = order_key(lo), khi = order_key(hi);
-    int32_t kt = order_key(t);
+    // (The compares by order_key: the knots are finite, the pack's check. A NaN t is clamped to
+    // the end its sign says, as its order_bits are.)
+#if !FACET_SOFT_FLOAT
+    if (t != t) t = std::signbit(t) ? lo : hi;
+#endif
+    const OrderKey klo = order_key(lo), khi = order_key(hi);
+    OrderKey kt = order_key(t);
     if (kt < klo) t = lo, kt = klo;
     if (kt > khi) t = hi, kt = khi;
     int s = p;

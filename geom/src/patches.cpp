@@ -28,7 +28,7 @@ inline int exponent_at(uint32_t exps, int d) { return int8_t(uint8_t(exps >> (8 
 // Whether x lies in the span [knots[s], knots[s+1]), by order_key (the knots are finite, the
 // pack's check; a NaN is in no span, as by float compares).
 inline bool in_span(float x, const float* knots, int s) {
-    const int32_t k = order_key(x);
+    const OrderKey k = order_key(x);
     return k >= order_key(knots[s]) && k < order_key(knots[s + 1]);
 }
 
@@ -88,10 +88,10 @@ void extract_span(const float* knots, int p, int s, float* row, int stride, int 
     const float ends[2] = {T[p], T[p + 1]};
     for (int end = 0; end < 2; ++end) {
         const float x = ends[end];
-        const int32_t kx = order_key(x); // (knots are finite: the pack's check)
+        const OrderKey kx = order_key(x); // (knots are finite: the pack's check)
         int k = 0, m = 0; // T[k] <= x < T[k+1]; m: x's multiplicity (an insertion adds one to each)
         for (int i = 0; i < nt; ++i) {
-            const int32_t ki = order_key(T[i]);
+            const OrderKey ki = order_key(T[i]);
             if (ki <= kx) k = i;
             m += ki == kx;
         }

@@ -2,6 +2,7 @@
 // built only from IEEE operations (their bit-exactness across targets is what the viewer's
 // pixel-exact reference images on QEMU rely on).
 #include "geom/fmath.h"
+#include "bspline.h"
 
 #include <gtest/gtest.h>
 
@@ -74,7 +75,8 @@ TEST(Fmath, Atan2Within3e7OfLibmInEveryOctant) {
 }
 
 // The quantizer is the exact product rounded once, halves away from zero: against long double
-// over points of every size and sign, scales of every kind, and the edges of its range.
+// over points of every size and sign, scales of every kind, and the edges of its range; both
+// ways (from the bits, the cores without an FPU; in double, the others) the same.
 TEST(Fmath, QuantizerRoundsTheExactProduct) {
     uint32_t seed = 12345;
     auto next = [&] { return seed = seed * 1664525u + 1013904223u; };
@@ -83,32 +85,42 @@ TEST(Fmath, QuantizerRoundsTheExactProduct) {
         for (int i = 0; i < 200000; ++i) {
             const float x = std::bit_cast<float>((next() & 0x807FFFFFu) | ((uint32_t(100 + next() % 60) & 0xFF) << 23));
             const long double exact = (long double)x * (long double)scale;
-            int32_t got = 0;
+            int32_t by_bits = 0, by_double = 0;
+            const bool bits_ok = q.by_bits(x, by_bits), double_ok = q.by_double(x, by_double);
+            ASSERT_EQ(bits_ok, double_ok) << x << " " << scale;
             if (std::fabs(exact) >= (long double)(1 << 30) - 0.5L) {
                 if (std::fabs(exact) >= (long double)(1 << 30)) {
-                    EXPECT_FALSE(q(x, got)) << x << " " << scale;
+                    EXPECT_FALSE(bits_ok) << x << " " << scale;
                 }
                 continue;
             }
-            ASSERT_TRUE(q(x, got)) << x << " " << scale;
+            ASSERT_TRUE(bits_ok) << x << " " << scale;
             const long double want = exact >= 0 ? std::floor(exact + 0.5L) : -std::floor(-exact + 0.5L);
-            ASSERT_EQ((long double)got, want) << x << " * " << scale;
+            ASSERT_EQ((long double)by_bits, want) << x << " * " << scale;
+            ASSERT_EQ(by_double, by_bits) << x << " * " << scale;
         }
     }
     const Quantizer unit(1.0f);
-    int32_t v = 7;
-    EXPECT_TRUE(unit(0.0f, v) && v == 0);
-    EXPECT_TRUE(unit(-0.0f, v) && v == 0);
-    EXPECT_TRUE(unit(0.5f, v) && v == 1);
-    EXPECT_TRUE(unit(-0.5f, v) && v == -1);
-    EXPECT_TRUE(unit(2.5f, v) && v == 3);
-    EXPECT_TRUE(unit(1.0e-40f, v) && v == 0);
-    EXPECT_FALSE(unit(std::numeric_limits<float>::infinity(), v));
-    EXPECT_FALSE(unit(std::numeric_limits<float>::quiet_NaN(), v));
-    EXPECT_FALSE(unit(1.1e9f, v));
+    for (const bool in_double : {false, true}) {
+        auto q = [&](float x, int32_t& v) { return in_double ? unit.by_double(x, v) : unit.by_bits(x, v); };
+        int32_t v = 7;
+        EXPECT_TRUE(q(0.0f, v) && v == 0);
+        EXPECT_TRUE(q(-0.0f, v) && v == 0);
+        EXPECT_TRUE(q(0.5f, v) && v == 1);
+        EXPECT_TRUE(q(-0.5f, v) && v == -1);
+        EXPECT_TRUE(q(2.5f, v) && v == 3);
+        EXPECT_TRUE(q(1.0e-40f, v) && v == 0);
+        EXPECT_TRUE(q(1073741823.0f, v) == false); // (2^30 - 1 is no float: it is 2^30)
+        EXPECT_TRUE(q(1073741760.0f, v) && v == 1073741760);
+        EXPECT_FALSE(q(std::numeric_limits<float>::infinity(), v));
+        EXPECT_FALSE(q(-std::numeric_limits<float>::infinity(), v));
+        EXPECT_FALSE(q(std::numeric_limits<float>::quiet_NaN(), v));
+        EXPECT_FALSE(q(1.1e9f, v));
+    }
 }
 
-// order_key orders and equates as the floats do (finite ones, -0 as +0).
+// order_bits (a float's order_key on a core without an FPU) orders and equates as the floats
+// do (finite ones, -0 as +0); order_key on this core too.
 TEST(Fmath, OrderKeyComparesAsTheFloats) {
     uint32_t seed = 777;
     auto next = [&] { return seed = seed * 1664525u + 1013904223u; };
@@ -119,7 +131,26 @@ TEST(Fmath, OrderKeyComparesAsTheFloats) {
     };
     for (int i = 0; i < 500000; ++i) {
         const float a = any(), b = (i % 4 == 0) ? a : any();
+        ASSERT_EQ(order_bits(a) < order_bits(b), a < b) << a << " " << b;
+        ASSERT_EQ(order_bits(a) == order_bits(b), a == b) << a << " " << b;
         ASSERT_EQ(order_key(a) < order_key(b), a < b) << a << " " << b;
-        ASSERT_EQ(order_key(a) == order_key(b), a == b) << a << " " << b;
     }
+}
+
+// A span's search clamps t to the knots' range; a NaN to the end its sign says, on every core
+// (by its order_bits without an FPU, by a test of its own with one), so the boards and the host
+// evaluate the same point.
+TEST(Fmath, FindSpanClampsANaNToTheEndItsSignSays) {
+    const float knots[] = {0, 0, 0, 1, 2, 3, 3, 3}; // degree 2, five poles
+    float t = 1.5f;
+    EXPECT_EQ(detail::find_span(knots, 5, 2, t, false), 3);
+    t = std::numeric_limits<float>::quiet_NaN();
+    EXPECT_EQ(detail::find_span(knots, 5, 2, t, false), 4);
+    EXPECT_EQ(t, 3.0f);
+    t = -std::numeric_limits<float>::quiet_NaN();
+    EXPECT_EQ(detail::find_span(knots, 5, 2, t, false), 2);
+    EXPECT_EQ(t, 0.0f);
+    t = 7.0f;
+    EXPECT_EQ(detail::find_span(knots, 5, 2, t, false), 4);
+    EXPECT_EQ(t, 3.0f);
 }

@@ -12,6 +12,22 @@
 #include <cmath>
 #include <cstdint>
 
+// Where float arithmetic is the library's: an ARM core without an FPU (the ARM926), where each
+// operation, a compare included, is a call of 25 to 80 instructions. Elsewhere (the Cortex-M7,
+// the host) it is the core's, single and double precision, each operation an instruction or a
+// few. Code that works around the library's cost takes the FPU's way where there is one, with
+// the same results.
+#if defined(__ARM_ARCH) && !defined(__ARM_FP)
+#define FACET_SOFT_FLOAT 1
+#else
+#define FACET_SOFT_FLOAT 0
+#endif
+#if FACET_SOFT_FLOAT || (defined(__ARM_ARCH) && !(__ARM_FP & 8))
+#define FACET_DOUBLE_FPU 0
+#else
+#define FACET_DOUBLE_FPU 1
+#endif
+
 namespace facet::geom {
 
 constexpr float kPi = 3.14159265358979323846f;
@@ -71,7 +87,7 @@ inline float sqrt_by_integers(float x) {
 // operations are single instructions, and the call would cost more than they do); kept out of
 // line on an ARM core without one, where every operation is a library call anyway and each
 // inlined copy is kilobytes of code.
-#if defined(__ARM_ARCH) && !defined(__ARM_FP)
+#if FACET_SOFT_FLOAT
 #define FACET_INLINE_WITH_FPU [[gnu::noinline]]
 #else
 #define FACET_INLINE_WITH_FPU
@@ -80,7 +96,7 @@ inline float sqrt_by_integers(float x) {
 // sqrt x, correctly rounded: by integers on an ARM core without an FPU, else the FPU's own
 // instruction (the Cortex-M7's vsqrt, the host's): the same bits either way.
 inline float sqrt_f(float x) {
-#if defined(__ARM_ARCH) && !defined(__ARM_FP)
+#if FACET_SOFT_FLOAT
     return sqrt_by_integers(x);
 #else
     return std::sqrt(x);
@@ -143,28 +159,48 @@ inline float atan2_f(float y, float x) {
 }
 
 // An integer ordered as the float x is, and equal where it is equal (-0 as +0), for x not
-// NaN: a compare of two floats is a library call of about 30 instructions on a core without an
-// FPU, of two of these one instruction.
-inline int32_t order_key(float x) {
+// NaN (a NaN orders past the infinities of its sign): a compare of two floats is a library
+// call of about 30 instructions on a core without an FPU, of two of these one instruction.
+inline int32_t order_bits(float x) {
     const int32_t b = std::bit_cast<int32_t>(x);
     if ((uint32_t(b) << 1) == 0) return 0;
     return b >= 0 ? b : int32_t(uint32_t(b) ^ 0x7FFFFFFFu);
 }
 
-// round(x * scale) to an integer, halves away from zero, from the floats' bits: the exact
-// product of their 24-bit mantissas, one shift and one rounding. A point's millimetres to the
-// viewer's integer units, a normal to Q14: on a core without an FPU, a float multiply, add and
-// conversion are three library calls of 25 to 80 instructions each, this is a dozen. The
-// result is the exact product rounded once (the float path rounds the product first; the two
-// differ only at near-ties). `scale` positive and normal.
+// What a float is compared by in hot loops: its order_bits without an FPU, itself with one (a
+// compare is then an instruction, and the bits would cost a few). The same order either way
+// for floats that are not NaN.
+#if FACET_SOFT_FLOAT
+using OrderKey = int32_t;
+inline OrderKey order_key(float x) { return order_bits(x); }
+#else
+using OrderKey = float;
+inline OrderKey order_key(float x) { return x; }
+#endif
+
+// round(x * scale) to an integer, halves away from zero: the exact product rounded once. A
+// point's millimetres to the viewer's integer units, a normal to Q14. Two ways to the same
+// result: from the floats' bits (the product of their 24-bit mantissas, one shift and one
+// rounding; on a core without an FPU a float multiply, add and conversion are three library
+// calls of 25 to 80 instructions each, this is a dozen), or in double precision where the core
+// has it (the product of two floats is exact in a double). A float multiply would round the
+// product first (the two differ at near-ties). `scale` positive and normal.
 class Quantizer {
 public:
-    explicit Quantizer(float scale) {
+    explicit Quantizer(float scale) : scale_(scale) {
         const uint32_t b = std::bit_cast<uint32_t>(scale);
         m_ = (b & 0x7FFFFFu) | 0x800000u, e_ = int((b >> 23) & 0xFF) - 150; // scale = m 2^e
     }
-    // False when |x * scale| reaches 2^30, or x is not finite.
+    // False when |x * scale| rounds to 2^30 or more, or x is not finite.
     bool operator()(float x, int32_t& out) const {
+#if FACET_DOUBLE_FPU
+        return by_double(x, out);
+#else
+        return by_bits(x, out);
+#endif
+    }
+
+    bool by_bits(float x, int32_t& out) const {
         const uint32_t b = std::bit_cast<uint32_t>(x);
         const int ex = int((b >> 23) & 0xFF);
         if (ex == 0xFF) return false;
@@ -185,7 +221,20 @@ public:
         return true;
     }
 
+    bool by_double(float x, int32_t& out) const {
+        if (!(std::fabs(x) >= 1.17549435e-38f)) { // zero or a subnormal (as by_bits: 0), or NaN
+            if (x != x) return false;
+            out = 0;
+            return true;
+        }
+        const double t = double(x) * double(scale_);        // exact: 48 bits at most
+        if (!(std::fabs(t) < 1073741823.5)) return false;   // rounds to 2^30 or more; infinity
+        out = int32_t(t + (t >= 0 ? 0.5 : -0.5));           // exact sum under 2^30; truncated
+        return true;
+    }
+
 private:
+    float scale_;
     uint64_t m_ = 0;
     int e_ = 0;
 };
