@@ -1,6 +1,7 @@
 #pragma once
 // The rasterizer's pieces shared by its files (raster.cpp: the entry points; scan.cpp: triangles
 // into spans; lines.cpp: lines): not part of render's interface.
+#include "render/fixed.h"
 #include "render/raster.h"
 
 #include <algorithm>
@@ -27,9 +28,39 @@ inline int64_t div_fast(int64_t a, int64_t b) {
     return a / b;
 }
 
-inline int64_t floor_div(int64_t a, int64_t b) { // b > 0
-    const int64_t q = div_fast(a, b);
-    return (q * b != a && a < 0) ? q - 1 : q;
+// a / d truncated, for d >= 1 and |a| <= 2^31, from d's reciprocal (render::reciprocal(d)):
+// its estimate is within a few units of the quotient (the reciprocal has 16 significant bits),
+// and steps of one make it exact. A core without a divider's division (the ARM926: a division
+// is a library call of about 80 instructions), one reciprocal serving several numerators.
+inline int64_t quotient_by_reciprocal(int64_t a, uint32_t d, Reciprocal r) {
+    const uint32_t n = a < 0 ? 0u - uint32_t(a) : uint32_t(a);
+    uint32_t q = uint32_t((uint64_t(n) * r.m) >> r.shift);
+    while (uint64_t(q) * d > n) --q;
+    while (uint64_t(q + 1) * d <= n) ++q;
+    return a < 0 ? -int64_t(q) : int64_t(q);
+}
+
+// a0 / b and a1 / b, truncating as div_fast, for b >= 1: two quotients over one divisor (an
+// edge's start and step, an attribute's two gradients). With a divider, two divisions; without
+// one, where all three fit 32 bits, quotient_by_reciprocal's. The same quotients.
+inline void div_pair(int64_t a0, int64_t a1, int64_t b, int64_t& q0, int64_t& q1) {
+#if defined(__ARM_FEATURE_IDIV) || !defined(__arm__)
+    q0 = div_fast(a0, b), q1 = div_fast(a1, b);
+#else
+    if (a0 != int32_t(a0) || a1 != int32_t(a1) || b != int32_t(b)) {
+        q0 = div_fast(a0, b), q1 = div_fast(a1, b);
+        return;
+    }
+    const Reciprocal r = reciprocal(uint32_t(b));
+    q0 = quotient_by_reciprocal(a0, uint32_t(b), r), q1 = quotient_by_reciprocal(a1, uint32_t(b), r);
+#endif
+}
+
+// floor(a0 / b) and floor(a1 / b), b > 0 (div_pair's quotients rounded down).
+inline void floor_div_pair(int64_t a0, int64_t a1, int64_t b, int64_t& q0, int64_t& q1) {
+    div_pair(a0, a1, b, q0, q1);
+    if (a0 < 0 && q0 * b != a0) --q0;
+    if (a1 < 0 && q1 * b != a1) --q1;
 }
 
 inline bool in_guard(const ScreenVertex& v) {

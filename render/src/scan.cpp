@@ -49,7 +49,8 @@ struct EdgeWalk {
             t = k;
             step = kPerPixel * dx;
         }
-        const int64_t q64 = floor_div(t, s), dq64 = floor_div(step, s);
+        int64_t q64, dq64;
+        floor_div_pair(t, step, s, q64, dq64);
         this->s = T(s);
         q = T(q64);
         r = T(t - q64 * s);
@@ -223,8 +224,7 @@ struct Rasterizer::Interp {
         const int64_t numy = int64_t(d2) * x1 - int64_t(d1) * x2;
         int64_t gx, gy;
         if (exact) { // the reciprocal's error would grow with the gradients
-            gx = div_fast(numx * (int64_t(1) << kFrac), area2);
-            gy = div_fast(numy * (int64_t(1) << kFrac), area2);
+            div_pair(numx * (int64_t(1) << kFrac), numy * (int64_t(1) << kFrac), area2, gx, gy);
         } else {
             gx = shift >= 0 ? (numx * recip) >> shift : (numx * recip) << -shift;
             gy = shift >= 0 ? (numy * recip) >> shift : (numy * recip) << -shift;
@@ -258,8 +258,7 @@ struct Rasterizer::Interp {
         const int32_t numx = d1 * y2 - d2 * y1, numy = d2 * x1 - d1 * x2;
         int64_t gx, gy;
         if (exact) {
-            gx = div_fast(int64_t(numx) * (int64_t(1) << kFrac), area2);
-            gy = div_fast(int64_t(numy) * (int64_t(1) << kFrac), area2);
+            div_pair(int64_t(numx) * (int64_t(1) << kFrac), int64_t(numy) * (int64_t(1) << kFrac), area2, gx, gy);
         } else {
             gx = (int64_t(numx) * m) >> shift;
             gy = (int64_t(numy) * m) >> shift;

@@ -487,3 +487,22 @@ TEST(Raster, SmallTrianglesRunsAreTheSameDividedOrWalked) {
     EXPECT_GT(covered, rows / 4);
 }
 
+
+// The ARM926's division (quotient_by_reciprocal: the reciprocal's estimate made exact) is the
+// truncating division, on numerators and divisors of every size and sign the rasterizer
+// passes it (32-bit ones), the extremes included.
+TEST(Raster, QuotientsByReciprocalAreTheDivisions) {
+    std::mt19937 rng(29);
+    auto check = [](int32_t a, uint32_t d) {
+        const int64_t want = int64_t(a) / int64_t(d);
+        ASSERT_EQ(render::detail::quotient_by_reciprocal(a, d, render::reciprocal(d)), want) << a << " / " << d;
+    };
+    for (int k = 0; k < 2000000; ++k) {
+        const uint32_t d = (rng() >> 1) >> (rng() % 31); // 1 .. 2^31 - 1, every size
+        const int32_t a = int32_t(rng()) >> (rng() % 32);
+        if (d != 0) check(a, d);
+    }
+    for (const uint32_t d : {1u, 2u, 3u, 7u, 32767u, 32768u, 32769u, 65535u, 65536u, 65537u, 1u << 30, uint32_t(INT32_MAX)}) {
+        for (const int32_t a : {0, 1, -1, int32_t(d - 1), int32_t(d), -int32_t(d), INT32_MAX, INT32_MIN, INT32_MIN + 1}) check(a, d);
+    }
+}
