@@ -28,13 +28,19 @@ inline int64_t div_fast(int64_t a, int64_t b) {
     return a / b;
 }
 
-// a / d truncated, for d >= 1 and |a| <= 2^31, from d's reciprocal (render::reciprocal(d)):
-// its estimate is within a few units of the quotient (the reciprocal has 16 significant bits),
-// and steps of one make it exact. A core without a divider's division (the ARM926: a division
-// is a library call of about 80 instructions), one reciprocal serving several numerators.
+// a / d truncated, for d >= 1 and |a| <= 2^31, from d's reciprocal (render::reciprocal(d)). A
+// core without a divider's division (the ARM926: a division is a library call of about 80
+// instructions), one reciprocal serving several numerators. The reciprocal has 16 significant
+// bits, so a quotient's estimate can be short by its 2^-15 (thousands, for a large quotient);
+// for one of 2^15 or more, a second estimate, of what the first left, brings it within a unit
+// or two; steps of one make it exact.
 inline int64_t quotient_by_reciprocal(int64_t a, uint32_t d, Reciprocal r) {
     const uint32_t n = a < 0 ? 0u - uint32_t(a) : uint32_t(a);
     uint32_t q = uint32_t((uint64_t(n) * r.m) >> r.shift);
+    if (q >= (1u << 15)) { // (under it, the estimate is within two)
+        const int64_t rest = int64_t(n) - int64_t(q) * d; // (under 2^17 + d)
+        if (rest > 0) q += uint32_t((uint64_t(rest) * r.m) >> r.shift);
+    }
     while (uint64_t(q) * d > n) --q;
     while (uint64_t(q + 1) * d <= n) ++q;
     return a < 0 ? -int64_t(q) : int64_t(q);

@@ -502,7 +502,7 @@ TEST(Raster, QuotientsByReciprocalAreTheDivisions) {
         const int32_t a = int32_t(rng()) >> (rng() % 32);
         if (d != 0) check(a, d);
     }
-    for (const uint32_t d : {1u, 2u, 3u, 7u, 32767u, 32768u, 32769u, 65535u, 65536u, 65537u, 1u << 30, uint32_t(INT32_MAX)}) {
+    for (const uint32_t d : {1u, 2u, 3u, 5u, 7u, 12345u, 32767u, 32768u, 32769u, 65535u, 65536u, 65537u, 1u << 30, uint32_t(INT32_MAX)}) {
         for (const int32_t a : {0, 1, -1, int32_t(d - 1), int32_t(d), -int32_t(d), INT32_MAX, INT32_MIN, INT32_MIN + 1}) check(a, d);
     }
 }
