@@ -79,7 +79,31 @@ int incircle_exact(int32_t ax, int32_t ay, int32_t bx, int32_t by, int32_t cx, i
         .exact_sign();
 }
 
+// Tier 3 when every difference is under 2^19 in magnitude (neighbours of a dense input on a
+// wide grid, the commonest case past tier 1): the lifts and minors are then under 2^39, each a
+// sum of two 32 x 32 -> 64 products, and the lifts split into halves of 32 bits, so that no
+// product is wider than 32 x 64 bits and no bit lengths are needed. The sign as incircle's.
+int incircle_near(int32_t sx, int32_t sy, int32_t tx, int32_t ty, int32_t ux, int32_t uy) {
+    const int64_t alift = int64_t(sx) * sx + int64_t(sy) * sy, blift = int64_t(tx) * tx + int64_t(ty) * ty,
+                  clift = int64_t(ux) * ux + int64_t(uy) * uy;
+    const int64_t bc = int64_t(tx) * uy - int64_t(ux) * ty, ca = int64_t(ux) * sy - int64_t(sx) * uy,
+                  ab = int64_t(sx) * ty - int64_t(tx) * sy;
+    // lift = h 2^20 + l (h < 2^19, l < 2^20): det = A 2^20 + B, |A| < 3 2^58, |B| < 3 2^59, and with
+    // B = q 2^20 + r (0 <= r < 2^20) the sign of det is that of A + q, or of r when A + q is 0.
+    constexpr int64_t kLow = (int64_t(1) << 20) - 1;
+    const int64_t A = int64_t(int32_t(alift >> 20)) * bc + int64_t(int32_t(blift >> 20)) * ca + int64_t(int32_t(clift >> 20)) * ab;
+    const int64_t B = int64_t(int32_t(alift & kLow)) * bc + int64_t(int32_t(blift & kLow)) * ca + int64_t(int32_t(clift & kLow)) * ab;
+    const int64_t hi = A + (B >> 20); // arithmetic shift: floor division
+    if (hi != 0) return hi > 0 ? 1 : -1;
+    return (B & kLow) != 0 ? 1 : 0;
+}
+
 int incircle_wide(int32_t sx, int32_t sy, int32_t tx, int32_t ty, int32_t ux, int32_t uy) {
+    constexpr uint32_t kNear = 1u << 19;
+    if (((uint32_t(sx) + kNear) | (uint32_t(sy) + kNear) | (uint32_t(tx) + kNear) | (uint32_t(ty) + kNear) |
+         (uint32_t(ux) + kNear) | (uint32_t(uy) + kNear)) < 2 * kNear) {
+        return incircle_near(sx, sy, tx, ty, ux, uy);
+    }
     // Tiers 2 to 4 (tier 1 is incircle's own, inline). The lifted terms (squared distances to
     // d) and the 2x2 minors are exact in int64 over the whole range (< 2^54); what varies is
     // how their products are summed.

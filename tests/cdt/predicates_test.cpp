@@ -70,7 +70,7 @@ TEST(Predicates, PortableProductMatchesGmpOnRandomOperands) {
 
 TEST(Predicates, RandomAcrossTheWholeRange) {
     std::mt19937_64 rng(1);
-    for (int range : {100, 30000, 1 << 20, kPredicateRange}) {
+    for (int range : {100, 30000, 1 << 18, 1 << 20, kPredicateRange}) {
         std::uniform_int_distribution<int32_t> d(-range, range);
         for (int i = 0; i < 40000; ++i) {
             int32_t p[8];
@@ -104,7 +104,7 @@ TEST(Predicates, NearDegenerateCollinearAndCocircular) {
     }
     ASSERT_GE(on.size(), 16u);
     for (size_t i = 0; i + 3 < on.size(); ++i) {
-        for (int32_t s : {1, 4096, 30000}) {
+        for (int32_t s : {1, 256, 400, 4096, 30000}) {
             for (int32_t off : {-1, 0, 1}) {
                 int32_t p[8] = {on[i].first * s, on[i].second * s, on[i + 1].first * s, on[i + 1].second * s,
                                 on[i + 2].first * s, on[i + 2].second * s, on[i + 3].first * s + off, on[i + 3].second * s};
@@ -120,6 +120,21 @@ TEST(Predicates, AdversarialCornersOfTheRange) {
     for (int i = 0; i < 200000; ++i) {
         int32_t p[8];
         for (int32_t& v : p) v = vals[rng() % 7];
+        expect_both(p);
+    }
+}
+
+// The tier for differences under 2^19 (incircle_near) at its edges: every difference from d
+// one of the extremes of that tier, or just past them, around a random d.
+TEST(Predicates, AdversarialCornersOfTheNearTier) {
+    constexpr int32_t N = 1 << 19;
+    const int32_t offsets[] = {-N - 1, -N, -N + 1, -1, 0, 1, N - 2, N - 1, N};
+    std::mt19937_64 rng(4);
+    std::uniform_int_distribution<int32_t> d(-kPredicateRange / 2, kPredicateRange / 2);
+    for (int i = 0; i < 200000; ++i) {
+        int32_t p[8];
+        p[6] = d(rng), p[7] = d(rng);
+        for (int k = 0; k < 6; ++k) p[k] = p[6 + (k & 1)] + offsets[rng() % 9];
         expect_both(p);
     }
 }
