@@ -79,10 +79,13 @@ int incircle_exact(int32_t ax, int32_t ay, int32_t bx, int32_t by, int32_t cx, i
         .exact_sign();
 }
 
+namespace {
+
 // Tier 3 when every difference is under 2^19 in magnitude (neighbours of a dense input on a
-// wide grid, the commonest case past tier 1): the lifts and minors are then under 2^39, each a
-// sum of two 32 x 32 -> 64 products, and the lifts split into halves of 32 bits, so that no
-// product is wider than 32 x 64 bits and no bit lengths are needed. The sign as incircle's.
+// wide grid, and a face's points against the CDT box's corners: the commonest cases past tier
+// 1): the lifts and minors are then under 2^39, each a sum of two 32 x 32 -> 64 products, and
+// each lift is split at bit 20 into two parts that fit 32 bits, so that no product is wider
+// than 32 x 64 bits and no bit lengths are needed. The sign as incircle's.
 int incircle_near(int32_t sx, int32_t sy, int32_t tx, int32_t ty, int32_t ux, int32_t uy) {
     const int64_t alift = int64_t(sx) * sx + int64_t(sy) * sy, blift = int64_t(tx) * tx + int64_t(ty) * ty,
                   clift = int64_t(ux) * ux + int64_t(uy) * uy;
@@ -97,6 +100,8 @@ int incircle_near(int32_t sx, int32_t sy, int32_t tx, int32_t ty, int32_t ux, in
     if (hi != 0) return hi > 0 ? 1 : -1;
     return (B & kLow) != 0 ? 1 : 0;
 }
+
+} // namespace
 
 int incircle_wide(int32_t sx, int32_t sy, int32_t tx, int32_t ty, int32_t ux, int32_t uy) {
     constexpr uint32_t kNear = 1u << 19;
