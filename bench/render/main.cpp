@@ -32,14 +32,13 @@ using namespace facet;
 constexpr uint16_t kMaxW = 640, kMaxH = 480;
 constexpr uint32_t kMaxPixels = uint32_t(kMaxW) * kMaxH;
 constexpr uint32_t kMeshOffset = board_config::kPackBytes / 2; // the peer's blob, in the pack region
-constexpr uint32_t kPackMemory = 1536u * 1024;                    // the inflated pack (the file stays)
 
 alignas(64) __attribute__((section(".framebuffers"))) Rgb565 frame[kMaxPixels];
 alignas(64) __attribute__((section(".framebuffers"))) uint16_t peer_frame[kMaxPixels];
 alignas(64) __attribute__((section(".zbuffer"))) uint16_t depth[kMaxPixels];
 alignas(64) __attribute__((section(".zbuffer"))) uint16_t peer_depth[kMaxPixels];
 alignas(8) __attribute__((section(".arena"))) uint8_t workspace[FACET_WORKSPACE_BYTES_DEFAULT];
-alignas(8) __attribute__((section(".pack_memory"))) uint8_t pack_memory[kPackMemory];
+alignas(8) __attribute__((section(".pack_memory"))) uint8_t pack_memory[bench::kPackMemoryBytes]; // the inflated pack (the file stays)
 
 struct Bench {
     hal::Console* con = nullptr;

@@ -11,6 +11,7 @@
 // peer's turn on the boards: it draws the module's camera).
 #include "facet/viewer.h"
 
+#include <cstdint>
 #include <initializer_list>
 
 namespace bench {
@@ -20,6 +21,9 @@ struct ViewSize {
 };
 inline constexpr ViewSize kViewSizes[] = {{480, 272}, {640, 480}};
 inline constexpr int kZoomSteps = 3;
+// The memory a pack is inflated into: what fits decides what is drawn, so the boards and the
+// host take the same.
+inline constexpr uint32_t kPackMemoryBytes = 1536u * 1024;
 
 inline void settle(facet::Viewer& v) {
     while (v.step(0) != facet::Activity::Idle) {

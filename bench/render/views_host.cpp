@@ -22,8 +22,6 @@ namespace {
 
 using namespace facet;
 
-constexpr size_t kPackMemory = 1536u * 1024; // as the bench firmware's (main.cpp)
-
 struct Views {
     Viewer* viewer = nullptr;
     Event last_frame{};
@@ -51,7 +49,7 @@ int main(int argc, char** argv) {
     }
     const uint32_t finer = uint32_t(argv[2][0] - '0');
     const std::string dir = argv[3];
-    std::vector<uint64_t> pack(file.size() / 8 + 1), workspace(FACET_WORKSPACE_BYTES_DEFAULT / 8 + 1), memory(kPackMemory / 8);
+    std::vector<uint64_t> pack(file.size() / 8 + 1), workspace(FACET_WORKSPACE_BYTES_DEFAULT / 8 + 1), memory(bench::kPackMemoryBytes / 8);
     std::memcpy(pack.data(), file.data(), file.size());
     for (const bench::ViewSize s : bench::kViewSizes) {
         std::vector<Rgb565> frame(size_t(s.width) * s.height);
@@ -65,7 +63,7 @@ int main(int argc, char** argv) {
             return 1;
         }
         Viewer& v = *views.viewer;
-        if (Result r = v.load(pack.data(), uint32_t(file.size()), memory.data(), kPackMemory); !r.ok()) {
+        if (Result r = v.load(pack.data(), uint32_t(file.size()), memory.data(), bench::kPackMemoryBytes); !r.ok()) {
             std::fprintf(stderr, "facet-render-views: %s: %s\n", argv[1], r.what);
             return 1;
         }

@@ -50,16 +50,12 @@ inline int64_t quotient_by_reciprocal(int64_t a, uint32_t d, Reciprocal r) {
 // edge's start and step, an attribute's two gradients). With a divider, two divisions; without
 // one, where all three fit 32 bits, quotient_by_reciprocal's. The same quotients.
 inline void div_pair(int64_t a0, int64_t a1, int64_t b, int64_t& q0, int64_t& q1) {
-#if defined(__ARM_FEATURE_IDIV) || !defined(__arm__)
-    q0 = div_fast(a0, b), q1 = div_fast(a1, b);
-#else
-    if (a0 != int32_t(a0) || a1 != int32_t(a1) || b != int32_t(b)) {
+    if (kHardwareDivide || a0 != int32_t(a0) || a1 != int32_t(a1) || b != int32_t(b)) {
         q0 = div_fast(a0, b), q1 = div_fast(a1, b);
         return;
     }
     const Reciprocal r = reciprocal(uint32_t(b));
     q0 = quotient_by_reciprocal(a0, uint32_t(b), r), q1 = quotient_by_reciprocal(a1, uint32_t(b), r);
-#endif
 }
 
 // floor(a0 / b) and floor(a1 / b), b > 0 (div_pair's quotients rounded down).
@@ -137,19 +133,13 @@ inline void small_edges(const ScreenVertex& v0, const ScreenVertex& v1, const Sc
     }
 }
 
-// A core with an integer divider (the Cortex-M7, the host): a division is an instruction, and
-// small triangles find their rows' runs by dividing (the ARM926 walks the columns instead).
-#if defined(__ARM_FEATURE_IDIV) || !defined(__arm__)
-constexpr bool kDivider = true;
-#else
-constexpr bool kDivider = false;
-#endif
-
 // Each of `rows` rows' run of covered columns in [col0, col1], as span[2 r] .. span[2 r + 1]
 // (half-open, empty when the second is not past the first); whether any row has one. Both ways
 // give the same runs (a triangle is convex): kDivide finds where each edge's function turns
 // non-negative (sx > 0: from k = ceil(-e / sx) on) or stops being so (sx < 0: up to
-// k = floor(e / -sx)); the walk steps along the row from its first column.
+// k = floor(e / -sx)); the walk steps along the row from its first column. The scan divides
+// where the core divides (kHardwareDivide) and walks on the ARM926, where a column costs about
+// seven instructions and a division a library call.
 template <bool kDivide>
 inline bool small_runs(const SmallEdge ed[3], int32_t rows, int32_t col0, int32_t col1, int32_t* span) {
     bool any = false;

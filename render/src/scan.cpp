@@ -397,7 +397,7 @@ void Rasterizer::scan_small(const ScreenVertex& v0, const ScreenVertex& v1, cons
     // The rows' spans first: a small triangle often covers no pixel centre at all (a sliver
     // between them), and then needs no gradients.
     int32_t span[2 * kSmall];
-    const bool any = small_runs<kDivider>(ed, row1 - row0 + 1, col0, col1, span);
+    const bool any = small_runs<kHardwareDivide>(ed, row1 - row0 + 1, col0, col1, span);
     if (!any) return;
     const bool clamp = stipple_ || needs_clamp(v0, v1, v2, kSmall);
     Interp at[kAttributes];

@@ -35,16 +35,23 @@ constexpr int32_t kMaxCoordinate = 1 << 27;
 // Integer square root (floor).
 uint32_t isqrt(uint64_t v);
 
-// floor(2^31 / d) for d in [2^15, 2^16), exactly. Without a divider (the ARM926: a division
-// is a library call of over a hundred instructions) a table estimate, a Newton step and a last
-// correction (recip31_newton); with one (the Cortex-M7, the host) the division itself, one
-// instruction. The same value either way, so the same pixels on every core.
-uint32_t recip31_newton(uint32_t d);
+// Whether the core divides integers itself: the Cortex-M7 and the host do, in an instruction;
+// the ARM926 does not (a division is a library call of 80 to over a hundred instructions).
+// Where the integer path works around a division, it divides on a core that can, with the
+// same results: the same pixels on every core.
 #if defined(__ARM_FEATURE_IDIV) || !defined(__arm__)
-inline uint32_t recip31(uint32_t d) { return (uint32_t(1) << 31) / d; }
+inline constexpr bool kHardwareDivide = true;
 #else
-inline uint32_t recip31(uint32_t d) { return recip31_newton(d); }
+inline constexpr bool kHardwareDivide = false;
 #endif
+
+// floor(2^31 / d) for d in [2^15, 2^16), exactly: the division itself where the core divides,
+// else a table estimate, a Newton step and a last correction (recip31_newton).
+uint32_t recip31_newton(uint32_t d);
+inline uint32_t recip31(uint32_t d) {
+    if constexpr (kHardwareDivide) return (uint32_t(1) << 31) / d;
+    else return recip31_newton(d);
+}
 
 // x / d for d >= 1, to about 2^-15 relative (d's 16 leading bits): one reciprocal, which can be
 // shared by several numerators over one denominator (a vertex's x and y over its depth).
