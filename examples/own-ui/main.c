@@ -1,17 +1,13 @@
-/* facet inside a product's own screen: the product draws its buttons and its text line, facet
- * draws the model in a viewport beside them with its own interface off, and every button is a
- * call of the C API (views, fit, section, measuring). C99. A demo script taps the buttons and two
- * faces, as a finger would, then the example ends (a product would wait for input instead). */
+/* facet in a product's own screen: the product draws its buttons and text line, facet the model in a
+ * viewport beside them (its interface off); each button is a C API call. C99. A demo script taps as a
+ * finger would, then ends (a product waits for input). */
 #include "facet/facet.h"
 #include "port.h"
 
 #include <string.h>
 
-#define MAX_WIDTH 640
-#define LINES 16
-#define PANEL 64  /* the buttons' column */
-#define STATUS 16 /* the product's text line, at the bottom */
-#define BUTTON 32
+/* The screen's widest, facet's band, the buttons' column, the text line at the bottom, a button. */
+enum { MAX_WIDTH = 640, LINES = 16, PANEL = 64, STATUS = 16, BUTTON = 32 };
 
 static uint8_t workspace[FACET_WORKSPACE_BYTES_DEFAULT] PORT_LARGE __attribute__((aligned(8)));
 static facet_rgb565 bands[2][MAX_WIDTH * LINES];
@@ -33,10 +29,9 @@ static const char glyph_rows[] =
 static void text(int w, int x, int y, const char *s, facet_rgb565 ink) {
     for (; *s && x + 8 <= w; ++s, x += 8) {
         const char *at = strchr(glyph_chars, *s);
-        int r, c;
         if (*s == ' ' || !at) continue;
-        for (r = 0; r < 5; ++r)
-            for (c = 0; c < 3; ++c)
+        for (int r = 0; r < 5; ++r)
+            for (int c = 0; c < 3; ++c)
                 if ((glyph_rows[(at - glyph_chars) * 5 + r] - '0') & (4 >> c)) {
                     facet_rgb565 *p = canvas + (y + 2 * r) * w + x + 2 * c;
                     p[0] = p[1] = p[w] = p[w + 1] = ink;
@@ -47,22 +42,20 @@ static void text(int w, int x, int y, const char *s, facet_rgb565 ink) {
 /* The product's panel (lit: what is on) and its text line, over the screen beside facet's. */
 static void paint(void) {
     facet_area a = {0, 0, PANEL, BUTTON};
-    int b, i;
-    for (b = 0; b < BUTTONS; ++b, a.y += BUTTON + 4) {
+    for (int b = 0; b < BUTTONS; ++b, a.y += BUTTON + 4) {
         const int lit = (b == CUT && facet_get_section(viewer).on) || (b == MEAS && facet_get_measuring(viewer));
-        for (i = 0; i < PANEL * BUTTON; ++i) canvas[i] = lit ? 0xFD20 : (i / PANEL) % BUTTON < 2 ? 0x4208 : 0x2945;
+        for (int i = 0; i < PANEL * BUTTON; ++i) canvas[i] = lit ? 0xFD20 : (i / PANEL) % BUTTON < 2 ? 0x4208 : 0x2945;
         text(PANEL, 4, (BUTTON - 10) / 2, labels[b], 0xFFFF);
         port_display_write(&a, canvas);
     }
     a.y = (uint16_t)(port_height() - STATUS), a.width = port_width(), a.height = STATUS;
-    for (i = 0; i < a.width * STATUS; ++i) canvas[i] = 0x0010;
+    for (int i = 0; i < a.width * STATUS; ++i) canvas[i] = 0x0010;
     strcat(strcat(strcpy(status, measured), "  "), cut);
     text(a.width, 4, 3, status, 0xFFE0);
     port_display_write(&a, canvas);
 }
 
-/* A label and a value to 3 decimals after `out`'s end (no printf: on a board, floats in printf
- * can pull in an allocator). */
+/* A label and a value to 3 decimals after `out`'s end (no printf: its floats can pull in malloc). */
 static void append(char *out, const char *label, double v) {
     char digits[24];
     long n = (long)(v * 1000 + (v < 0 ? -0.5 : 0.5)), k = 0;
@@ -85,11 +78,10 @@ static void describe_selection(void) {
         if (m.has_distance) append(measured, m.parallel ? "PARALLEL " : "", m.distance_mm), strcat(measured, " MM APART");
         if (m.kind != FACET_MEASURE_NONE && !m.parallel) append(measured, " AT ", m.angle_deg), strcat(measured, " DEG");
     } else if (n == 1) {
-        if (f[0].surface == FACET_SURFACE_PLANE) append(measured, "PLANE AT ", f[0].offset_mm);
-        else append(measured, "RADIUS ", f[0].radius_mm);
-    } else if (facet_get_measuring(viewer)) {
+        const int plane = f[0].surface == FACET_SURFACE_PLANE;
+        append(measured, plane ? "PLANE AT " : "RADIUS ", plane ? f[0].offset_mm : f[0].radius_mm);
+    } else if (facet_get_measuring(viewer))
         strcpy(measured, "MEAS: TAP TWO FACES");
-    }
 }
 
 /* A button of the product's panel, pressed. */
@@ -117,8 +109,8 @@ static void touch(int16_t x, int16_t y, int down) {
 }
 
 static void on_event(void *user, const facet_event *e) {
-    (void)user;
     if (e->kind == FACET_EVENT_PICKED) describe_selection(), paint();
+    (void)user;
 }
 
 static void flush(void *user, const facet_area *area, const facet_rgb565 *pixels) {
@@ -143,22 +135,17 @@ int app_main(void) {
     if (w > MAX_WIDTH) return 1;
     facet_config_init(&cfg);
     cfg.display.x = PANEL, cfg.display.width = (uint16_t)(w - PANEL), cfg.display.height = (uint16_t)(h - STATUS);
-    cfg.display.band_lines = LINES;
     cfg.display.buffers[0] = bands[0], cfg.display.buffers[1] = bands[1], cfg.display.depth[0] = depth;
-    cfg.display.flush = flush;
-    cfg.on_event = on_event;
+    cfg.display.band_lines = LINES, cfg.display.flush = flush;
+    cfg.on_event = on_event, cfg.now_us = port_now_us;
     cfg.interface = 0; /* the product's interface, not facet's */
-    cfg.now_us = port_now_us;
     viewer = facet_create(&cfg, workspace, sizeof workspace, &why);
     if (viewer) {
         const void *pack = port_pack(&bytes, &memory, &memory_bytes);
         why = facet_load(viewer, pack, bytes, memory, memory_bytes);
     }
-    if (!viewer || why.status != FACET_OK) {
-        facet_describe(&why, status, sizeof status);
-        port_log(status);
-        return 1;
-    }
+    if (!viewer || why.status != FACET_OK)
+        return facet_describe(&why, status, sizeof status), port_log(status), 1;
     strncat(measured, facet_get_model(viewer).name, sizeof measured - 1); /* (its name, as long as it fits) */
     paint();
     for (;;) {
