@@ -7,8 +7,8 @@ loaded at the board's pack address and shown; then turned (four key turns), zoom
 centre (six steps) and quit (tests/sessions/scale.session). One CSV row per board and assembly:
 
   board,kind,faces,pack_faces,step_bytes,pack_bytes,first_frame_instructions,first_view_instructions,
-  frame_rest_instructions,frame_turning_max_instructions,frame_zoomed_instructions,
-  frame_dragging_max_instructions,triangles,deferred_faces,peak_ram_bytes,note
+  frame_rest_instructions,frame_rest_sharp_instructions,frame_turning_max_instructions,
+  frame_zoomed_instructions,frame_dragging_max_instructions,triangles,deferred_faces,peak_ram_bytes,note
 
   faces: the assembly's size as asked (its placed faces are a little over); pack_faces: the
   faces the pack holds (for instances, those of the parts once each);
@@ -17,7 +17,9 @@ centre (six steps) and quit (tests/sessions/scale.session). One CSV row per boar
   of a blocked pack while its edges are sampled, or the wireframe);
   first view: to the end of the first frame after the first pass (every face the view wants
   in); a frame at rest: the largest full frame drawn at a view at rest (once the faces are in
-  at the fitted view, if the framing then moves it; when the drag ends); turning: the
+  at the fitted view, if the framing then moves it; when the drag ends); at rest, sharp: the
+  same fitted view with tangent edges left out (key t: the edges between faces that meet
+  smoothly, which the pack marks; a pack made before it marked them has none); turning: the
   largest frame while the view turns by keys; dragging: the largest frame while the mouse drags
   it (a board with a mouse; the frames a drag draws lighter); zoomed: the frame once the zoomed
   view's faces are in.
@@ -34,6 +36,7 @@ import argparse
 import csv
 import os
 import re
+import shutil
 import subprocess
 import sys
 
@@ -46,7 +49,7 @@ from viewer_test import first_view, peak_ram  # noqa: E402
 from boot import boot, exit_note, last_error  # noqa: E402  (bench/boot.py: the benches' one run)
 
 COLUMNS = ['board', 'kind', 'faces', 'pack_faces', 'step_bytes', 'pack_bytes', 'first_frame_instructions', 'first_view_instructions',
-           'frame_rest_instructions', 'frame_turning_max_instructions', 'frame_zoomed_instructions',
+           'frame_rest_instructions', 'frame_rest_sharp_instructions', 'frame_turning_max_instructions', 'frame_zoomed_instructions',
            'frame_dragging_max_instructions', 'triangles',
            'deferred_faces', 'peak_ram_bytes', 'note']
 
@@ -57,7 +60,7 @@ def measure(uart, regions):
     out = {'turning': [], 'dragging': []}
     out['first_frame'], out['first_view'] = first_view(uart, regions)
     pieces = []               # the pieces of the frame under way
-    phase = 'load'            # load, rest (after the first shot), turned, dragged, zoomed
+    phase = 'load'            # load, rest (after the first shot), sharp, edges, turned, dragged, zoomed
     tessellated = False
     since_turned, last = [], None  # frames after the 'turned' shot; the last frame's cost
     for r, region in protocol.with_regions(uart, regions):
@@ -72,6 +75,10 @@ def measure(uart, regions):
             if phase == 'load' and tessellated:
                 out['rest'] = last
             elif phase == 'rest' and last is not None:
+                out['sharp'] = last  # (tangent edges left out)
+            elif phase == 'sharp' and last is not None:
+                out['rest'] = max(out.get('rest') or 0, last)  # (the same view with them again)
+            elif phase == 'edges' and last is not None:
                 out['turning'].append(last)
             elif phase == 'turned' and last is not None:
                 since_turned.append(last)
@@ -82,7 +89,8 @@ def measure(uart, regions):
                     out['rest'] = max(out.get('rest') or 0, since_turned[-1])
             elif r.words[0] == 'zoomed':
                 out['zoomed'] = last
-            phase = {'first': 'rest', 'turned': 'turned', 'dragged': 'dragged', 'zoomed': 'zoomed'}.get(r.words[0], phase)
+            phase = {'first': 'rest', 'sharp': 'sharp', 'edges': 'edges', 'turned': 'turned', 'dragged': 'dragged',
+                     'zoomed': 'zoomed'}.get(r.words[0], phase)
     m = re.search(r'^viewer: \d+ faces \(\d+ failed, (\d+) not shown by the view', uart, re.M)
     if m:
         out['deferred'] = int(m.group(1))
@@ -113,7 +121,8 @@ def run_one(board_name, elf, fpk, out, timeout):
         notes.append(f'larger than the memory: {int(cut.group(1)):,} parts ({int(cut.group(2)):,} faces) left out, drawn as boxes')
     m = measure(uart, rep.get('regions', []))
     for key, col in (('first_frame', 'first_frame_instructions'), ('first_view', 'first_view_instructions'),
-                     ('rest', 'frame_rest_instructions'), ('zoomed', 'frame_zoomed_instructions'),
+                     ('rest', 'frame_rest_instructions'), ('sharp', 'frame_rest_sharp_instructions'),
+                     ('zoomed', 'frame_zoomed_instructions'),
                      ('triangles', 'triangles'), ('deferred', 'deferred_faces')):
         if m.get(key) is not None:
             row[col] = m[key]
@@ -131,15 +140,16 @@ def markdown(rows, date):
     m = lambda v: f'{v / 1e6:,.1f}' if isinstance(v, int) else '-'
     lines = [f'Measured {date} by `./facet bench scale` (exact QEMU instruction counts, M = million instructions, '
              '600 M = 1 s at 600 MHz; the goals of issue 25: first view 1,200 M for 10 k faces, a frame at rest 20 M).',
-             '', '| board | kind | faces | faces in the pack | pack KB | first frame M | first view M | frame at rest M | turning M '
-             '| dragging M | zoomed M | triangles | deferred faces | peak RAM MiB | note |',
-             '|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|']
+             '', '| board | kind | faces | faces in the pack | pack KB | first frame M | first view M | frame at rest M '
+             '| at rest, tangent edges left out M | turning M | dragging M | zoomed M | triangles | deferred faces | peak RAM MiB | note |',
+             '|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|']
     for r in rows:
         peak = r.get('peak_ram_bytes')
         lines.append(f'| {r["board"]} | {r["kind"]} | {r.get("faces", "-")} | {r.get("pack_faces", "-")} | '
                      f'{r["pack_bytes"] // 1024 if r.get("pack_bytes") else "-"} | '
                      f'{m(r.get("first_frame_instructions"))} | {m(r.get("first_view_instructions"))} | '
-                     f'{m(r.get("frame_rest_instructions"))} | {m(r.get("frame_turning_max_instructions"))} | '
+                     f'{m(r.get("frame_rest_instructions"))} | {m(r.get("frame_rest_sharp_instructions"))} | '
+                     f'{m(r.get("frame_turning_max_instructions"))} | '
                      f'{m(r.get("frame_dragging_max_instructions"))} | '
                      f'{m(r.get("frame_zoomed_instructions"))} | {r.get("triangles", "-")} | '
                      f'{r.get("deferred_faces", "-")} | {f"{peak / (1 << 20):.2f}" if peak else "-"} | {r.get("note", "")} |')
@@ -216,7 +226,10 @@ def main():
             if not os.path.exists(step):  # made once (minutes for the largest); delete the folder to remake
                 why = make([args.assembly], [step, '--faces', str(faces)] + (['--instances'] if kind == 'instances' else [])
                            + args.models, 'facet-assembly')
-            if not why and not os.path.exists(fpk):
+            # Packed again when the packer is newer than the pack (what it writes may have grown).
+            packer = shutil.which(args.packer) or args.packer
+            stale = os.path.exists(packer) and os.path.exists(fpk) and os.path.getmtime(fpk) < os.path.getmtime(packer)
+            if not why and (not os.path.exists(fpk) or stale):
                 why = make([args.packer], [step, '-o', fpk, '--quiet'], 'facet-pack')
             for b in board_names:
                 row = {'board': b, 'kind': kind, 'faces': faces}
@@ -253,7 +266,7 @@ def main():
     png = plot(args.csv)
     print(f'wrote {args.csv}, {md}' + (f', {png}' if png else ''))
     figures = ('first_frame_instructions', 'first_view_instructions', 'frame_rest_instructions',
-               'frame_turning_max_instructions', 'frame_zoomed_instructions', 'peak_ram_bytes')
+               'frame_rest_sharp_instructions', 'frame_turning_max_instructions', 'frame_zoomed_instructions', 'peak_ram_bytes')
     if args.strict:  # (the test of this script) every figure of every row
         missing = [f'{r["board"]} {r["kind"]}-{r["faces"]}: {c}' for r in rows for c in figures if r.get(c) in (None, '')]
         for m in missing:

@@ -78,6 +78,7 @@ private:
             k.v0 = vertex(k.v0), k.v1 = vertex(k.v1);
             if (k.curve != kNoIndex && k.curve != kStraight) k.curve = curve3(k.curve);
             it->second = to_.add_edge(k);
+            if (from_.smooth_edge(e)) to_.set_smooth_edge(it->second);
         }
         return it->second;
     }

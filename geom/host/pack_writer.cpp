@@ -32,6 +32,11 @@ uint32_t PackWriter::add_vertex(float x, float y, float z) {
     return uint32_t(vertices_.size() - 1);
 }
 uint32_t PackWriter::add_edge(const Edge& e) { edges_.push_back(e); return uint32_t(edges_.size() - 1); }
+
+void PackWriter::set_smooth_edge(uint32_t e) {
+    if (smooth_.size() <= e) smooth_.resize(e + 1, false);
+    smooth_[e] = true;
+}
 uint32_t PackWriter::add_coedge(const Coedge& c) { coedges_.push_back(c); return uint32_t(coedges_.size() - 1); }
 uint32_t PackWriter::add_loop(const Loop& l) { loops_.push_back(l); return uint32_t(loops_.size() - 1); }
 uint32_t PackWriter::add_face(const pack::Face& f) { faces_.push_back(f); return uint32_t(faces_.size() - 1); }
@@ -85,8 +90,14 @@ void append_section(std::vector<uint8_t>& out, std::vector<SectionEntry>& table,
 
 std::vector<uint8_t> PackWriter::finish() const {
     const bool named = !names_.empty() || !model_name_.empty();
-    const uint32_t kSections = named ? 15 : 12;
-    std::vector<uint8_t> out(sizeof(Header) + kSections * sizeof(SectionEntry));
+    std::vector<uint32_t> smooth_words; // (written when some edge is smooth)
+    for (uint32_t e = 0; e < smooth_.size() && e < edges_.size(); ++e) {
+        if (!smooth_[e]) continue;
+        smooth_words.resize(pack::smooth_words(uint32_t(edges_.size())), 0);
+        smooth_words[e / 32] |= 1u << (e % 32);
+    }
+    const uint32_t sections = (named ? 15 : 12) + (smooth_words.empty() ? 0 : 1);
+    std::vector<uint8_t> out(sizeof(Header) + sections * sizeof(SectionEntry));
     std::vector<SectionEntry> table;
     append_section(out, table, SectionId::Floats, floats_);
     append_section(out, table, SectionId::Surfaces, surfaces_);
@@ -117,6 +128,7 @@ std::vector<uint8_t> PackWriter::finish() const {
         pool.resize((pool.size() + 3) & ~size_t(3), 0);
         append_section(out, table, SectionId::Names, pool);
     }
+    if (!smooth_words.empty()) append_section(out, table, SectionId::SmoothEdges, smooth_words);
     std::memcpy(out.data() + sizeof(Header), table.data(), table.size() * sizeof(SectionEntry));
 
     Header h{};
@@ -124,7 +136,7 @@ std::vector<uint8_t> PackWriter::finish() const {
     h.version = kVersion;
     h.header_bytes = sizeof(Header);
     h.total_bytes = uint32_t(out.size());
-    h.section_count = kSections;
+    h.section_count = sections;
     h.source_unit_mm = unit_mm_;
     for (int k = 0; k < 3; ++k) {
         h.bbox_min[k] = std::numeric_limits<float>::max();

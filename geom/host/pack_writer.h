@@ -20,6 +20,8 @@ public:
     uint32_t add_curve(pack::CurveType type, uint8_t dim, const std::vector<float>& params);
     uint32_t add_vertex(float x, float y, float z);
     uint32_t add_edge(const pack::Edge& e);
+    // Edge e's two faces meet tangentially (pack::SectionId::SmoothEdges).
+    void set_smooth_edge(uint32_t e);
     uint32_t add_coedge(const pack::Coedge& c);
     uint32_t add_loop(const pack::Loop& l);
     uint32_t add_face(const pack::Face& f);
@@ -50,6 +52,7 @@ private:
     std::vector<pack::Curve> curves3_, curves2_;
     std::vector<pack::Vertex> vertices_;
     std::vector<pack::Edge> edges_;
+    std::vector<bool> smooth_; // per edge, as far as set
     std::vector<pack::Coedge> coedges_;
     std::vector<pack::Loop> loops_;
     std::vector<pack::Face> faces_;

@@ -141,7 +141,7 @@ uint32_t surface_param_count(uint8_t type, const float* p, uint32_t avail) {
 const char* section_name(uint32_t id) {
     static const char* const names[] = {"header", "Floats", "Surfaces", "Curves3", "Curves2", "Vertices", "Edges",
                                         "Coedges", "Loops", "Faces", "Shells", "Instances", "Colours",
-                                        "Names", "ShellNames", "InstanceNames"};
+                                        "Names", "ShellNames", "InstanceNames", "SmoothEdges"};
     return id < sizeof names / sizeof names[0] ? names[id] : "unknown";
 }
 
@@ -151,7 +151,7 @@ Place section_place(uint32_t id, uint32_t index) {
                                         "section Edges record", "section Coedges record", "section Loops record",
                                         "section Faces record", "section Shells record", "section Instances record",
                                         "section Colours record", "section Names byte", "section ShellNames record",
-                                        "section InstanceNames record"};
+                                        "section InstanceNames record", "section SmoothEdges word"};
     if (id == 0) return {kinds[0]};
     return {id < sizeof kinds / sizeof kinds[0] ? kinds[id] : "section record", index};
 }
@@ -175,7 +175,7 @@ void Pack::moved(const void* to) {
     rebase(floats_, from, at), rebase(surfaces_, from, at), rebase(curves3_, from, at), rebase(curves2_, from, at);
     rebase(vertices_, from, at), rebase(edges_, from, at), rebase(coedges_, from, at), rebase(loops_, from, at);
     rebase(faces_, from, at), rebase(shells_, from, at), rebase(instances_, from, at), rebase(colours_, from, at);
-    rebase(names_, from, at), rebase(shell_names_, from, at), rebase(instance_names_, from, at);
+    rebase(names_, from, at), rebase(shell_names_, from, at), rebase(instance_names_, from, at), rebase(smooth_, from, at);
 }
 
 Result Pack::open(const void* data, uint32_t size) {
@@ -209,12 +209,12 @@ Result Pack::open(const void* data, uint32_t size) {
     for (uint32_t i = 0; i < h->section_count; ++i) {
         const SectionEntry& s = table[i];
         const uint32_t id = s.id;
-        if (id < 1 || id > uint32_t(SectionId::InstanceNames)) continue; // unknown sections are skipped
+        if (id < 1 || id > uint32_t(SectionId::SmoothEdges)) continue; // unknown sections are skipped
         if (seen & (1u << id)) return fail("section appears twice", id, 0);
         seen |= 1u << id;
         static const uint32_t sizes[] = {0, 4, sizeof(Surface), sizeof(Curve), sizeof(Curve), sizeof(Vertex), sizeof(Edge),
                                          sizeof(Coedge), sizeof(Loop), sizeof(pack::Face), sizeof(Shell), sizeof(Instance), sizeof(Colour),
-                                         1, 4, 4};
+                                         1, 4, 4, 4};
         if (s.record_bytes != sizes[id]) return fail("record size does not match this reader", id, 0);
         if (s.offset & 3) return fail("section offset is not 4-byte aligned", id, 0);
         if (s.offset < table_end || uint64_t(s.offset) + uint64_t(s.count) * s.record_bytes > size) {
@@ -237,10 +237,15 @@ Result Pack::open(const void* data, uint32_t size) {
         case SectionId::Names: names_ = {reinterpret_cast<const char*>(at), s.count}; break;
         case SectionId::ShellNames: shell_names_ = {reinterpret_cast<const uint32_t*>(at), s.count}; break;
         case SectionId::InstanceNames: instance_names_ = {reinterpret_cast<const uint32_t*>(at), s.count}; break;
+        case SectionId::SmoothEdges: smooth_ = {reinterpret_cast<const uint32_t*>(at), s.count}; break;
         }
     }
     header_ = h;
     if (Result r = check_records(); !r.ok()) return r;
+    const bool has_smooth = (seen >> uint32_t(SectionId::SmoothEdges)) & 1u;
+    if (has_smooth && smooth_.size() != pack::smooth_words(uint32_t(edges_.size()))) {
+        return fail("one bit per edge is needed", uint32_t(SectionId::SmoothEdges), 0);
+    }
     return check_names();
 }
 

@@ -104,6 +104,8 @@ Viewer::CameraView Viewer::camera() const {
 }
 
 DisplayMode Viewer::display_mode() const { return core(this).mode(); }
+bool Viewer::tangent_edges() const { return core(this).tangent_edges(); }
+void Viewer::set_tangent_edges(bool shown) { core(this).set_tangent_edges(shown); }
 void Viewer::set_display_mode(DisplayMode m) {
     if (uint8_t(m) <= uint8_t(DisplayMode::SeeThrough)) core(this).set_mode(m);
 }

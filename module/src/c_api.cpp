@@ -21,7 +21,7 @@ static_assert(int(Activity::Idle) == FACET_ACTIVITY_IDLE && int(Flush::Scanout) 
               "the C enums are the C++ ones");
 static_assert(uint32_t(KeyHome) == uint32_t(FACET_KEY_HOME), "the C keys are facet::Key");
 static_assert(sizeof(facet_area) == sizeof(Area), "facet_area is facet::Area");
-static_assert(int(Action::Models) == FACET_ACTION_MODELS && int(Action::ShowAllParts) == FACET_ACTION_SHOW_ALL_PARTS && int(Action::Measure) == FACET_ACTION_MEASURE &&
+static_assert(int(Action::TangentEdges) == FACET_ACTION_TANGENT_EDGES && int(Action::Models) == FACET_ACTION_MODELS && int(Action::ShowAllParts) == FACET_ACTION_SHOW_ALL_PARTS && int(Action::Measure) == FACET_ACTION_MEASURE &&
                   int(Action::Projection) == FACET_ACTION_PROJECTION, "the C actions are facet::Action");
 static_assert(int(DisplayMode::SeeThrough) == FACET_MODE_SEE_THROUGH, "the C display modes are facet::DisplayMode");
 static_assert(int(StandardView::Iso) == FACET_VIEW_ISO, "the C standard views are facet::StandardView");
@@ -239,7 +239,7 @@ facet_stats facet_get_stats(const facet_viewer* v) {
 }
 
 void facet_act(facet_viewer* v, facet_action a) {
-    if (v && unsigned(a) <= unsigned(FACET_ACTION_MODELS)) cpp(v)->act(Action(a));
+    if (v && unsigned(a) <= unsigned(FACET_ACTION_TANGENT_EDGES)) cpp(v)->act(Action(a));
 }
 uint32_t facet_key_binding_count(void) { return key_bindings().count; }
 facet_key_binding facet_get_key_binding(uint32_t i) {
@@ -302,6 +302,10 @@ facet_result facet_set_display_mode(facet_viewer* v, facet_display_mode mode) {
     if (unsigned(mode) > unsigned(FACET_MODE_SEE_THROUGH)) return to_c(Result::fail(Status::OutOfRange, "no such display mode"));
     cpp(v)->set_display_mode(DisplayMode(mode));
     return {};
+}
+int facet_get_tangent_edges(const facet_viewer* v) { return v ? int(cpp(v)->tangent_edges()) : 0; }
+void facet_set_tangent_edges(facet_viewer* v, int shown) {
+    if (v) cpp(v)->set_tangent_edges(shown != 0);
 }
 float facet_get_detail(const facet_viewer* v) { return v ? cpp(v)->detail() : 0.0f; }
 facet_result facet_set_detail(facet_viewer* v, float factor) {

@@ -261,6 +261,7 @@ void Core::act(Action a) {
     case Action::ViewBottom: show_view(StandardView::Bottom); return;
     case Action::ViewIso: show_view(StandardView::Iso); return;
     case Action::NextDisplayMode: set_mode(DisplayMode((uint8_t(painter_.mode()) + 1) % 5)); return;
+    case Action::TangentEdges: set_tangent_edges(!painter_.tangent_edges()); return;
     case Action::Section:
     case Action::SectionIn:
     case Action::SectionOut:

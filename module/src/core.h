@@ -39,6 +39,8 @@ public:
     void act(Action a);
     DisplayMode mode() const { return painter_.mode(); }
     void set_mode(DisplayMode m);
+    bool tangent_edges() const { return painter_.tangent_edges(); }
+    void set_tangent_edges(bool shown);
     Stats stats() const;
     bool carved() const { return carved_; }
     Result configure() { return presenter_.configure(config_.display, config_.frame_budget_us, config_.interface); }

@@ -339,6 +339,7 @@ uint32_t Painter::face_edges(uint32_t f, const Transform& t, Rows rows, bool onc
             if (C.seam() != pack::Seam::None) continue; // a periodic surface's seam is no B-rep edge to the eye
             const uint32_t local = C.edge(), e = block.first_edge + local;
             if (pack.edges()[local].curve == pack::kNoIndex) continue; // a pole: nothing to draw
+            if (!tangent_edges_ && pack.smooth_edge(local)) continue;  // tangent edges hidden: no outline there
             if (once) {
                 if (mem_.edge_drawn[e]) continue;
                 mem_.edge_drawn[e] = 1;

@@ -53,6 +53,9 @@ public:
     void init(const Memory& memory);
     void set_edges(std::span<uint8_t> edge_drawn) { mem_.edge_drawn = edge_drawn; } // the model's (load)
     void set_mode(DisplayMode m) { mode_ = m; }
+    // Whether edges whose two faces meet tangentially (geom::Pack::smooth_edge) are drawn.
+    void set_tangent_edges(bool shown) { tangent_edges_ = shown; }
+    bool tangent_edges() const { return tangent_edges_; }
     // While the view is dragged, shaded faces are drawn without their B-rep edges (a third of a
     // frame's work): the edges come back when it rests. Wireframe and hidden line keep theirs.
     void set_dragging(bool on) { dragging_ = on; }
@@ -142,6 +145,7 @@ private:
     uint32_t next_palette_ = 0; // the palette slot to reuse next
     bool dragging_ = false;
     DisplayMode mode_ = DisplayMode::ShadedEdges;
+    bool tangent_edges_ = true;
     struct Highlight {
         uint32_t face = ~0u, instance = ~0u;
     } hl_[2];

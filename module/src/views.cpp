@@ -124,4 +124,10 @@ void Core::set_mode(DisplayMode m) {
     presenter_.invalidate(); // a whole frame in the new style
 }
 
+void Core::set_tangent_edges(bool shown) {
+    if (shown == painter_.tangent_edges()) return;
+    painter_.set_tangent_edges(shown);
+    presenter_.invalidate();
+}
+
 } // namespace facet

@@ -26,7 +26,8 @@ namespace {
 
 using Bytes = std::vector<uint8_t>;
 
-// `n` boxes of different sizes, each a shell of 6 planar faces, each placed twice, named.
+// `n` boxes of different sizes, each a shell of 6 planar faces, each placed twice, named; box
+// b's edge b % 12 marked smooth (SmoothEdges: its faces meeting tangentially, as if rounded).
 Bytes boxes_pack(int n) {
     PackWriter w;
     w.set_model_name("boxes");
@@ -37,6 +38,7 @@ Bytes boxes_pack(int n) {
         const int ends[12][2] = {{0, 1}, {2, 3}, {4, 5}, {6, 7}, {0, 2}, {1, 3}, {4, 6}, {5, 7}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
         uint32_t e[12];
         for (int i = 0; i < 12; ++i) e[i] = w.add_edge({kStraight, 0, s, v[ends[i][0]], v[ends[i][1]], 1e-7f, 0});
+        w.set_smooth_edge(e[b % 12]);
         // Each side's loop: the four edges between its corners (k-th side: bit k/2 fixed).
         const int sides[6][4] = {{0, 5, 1, 4}, {2, 7, 3, 6}, {0, 9, 2, 8}, {1, 11, 3, 10}, {4, 10, 6, 8}, {5, 11, 7, 9}};
         const uint32_t colour = w.add_colour({uint8_t(40 * b), 120, 200, 255});
@@ -130,6 +132,11 @@ TEST(PackBlocks, IndexReadsInPlaceAndEveryPartHasItsBlock) {
         EXPECT_TRUE(p.instances().empty());
         for (uint32_t s = 0; s < k.part_count; ++s) EXPECT_EQ(p.shells()[s].face_count, 6u);
         EXPECT_EQ(p.edges().size(), 12u * k.part_count) << "each part's edges after the part before it";
+        for (uint32_t s = 0; s < k.part_count; ++s) { // its smooth edge kept (which one: JoinedBackIsTheWholePack)
+            uint32_t smooth = 0;
+            for (uint32_t e = 12 * s; e < 12 * s + 12; ++e) smooth += p.smooth_edge(e);
+            EXPECT_EQ(smooth, 1u) << b << " " << s;
+        }
     }
     // Placed: the index's box holds every instance's box.
     EXPECT_LE(index.header().bbox_min[0], 0.0f);
@@ -179,6 +186,7 @@ TEST(PackBlocks, JoinedBackIsTheWholePack) {
             EXPECT_EQ(std::memcmp(a.vertices()[ea.v0].p, b.vertices()[eb.v0].p, 12), 0) << c;
             EXPECT_EQ(std::memcmp(a.vertices()[ea.v1].p, b.vertices()[eb.v1].p, 12), 0) << c;
             EXPECT_EQ(a.coedges()[c].reversed(), b.coedges()[c].reversed());
+            EXPECT_EQ(a.smooth_edge(a.coedges()[c].edge()), b.smooth_edge(b.coedges()[c].edge())) << c;
         }
     }
 }

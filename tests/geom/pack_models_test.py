@@ -3,7 +3,9 @@
 
 For each model: facet-pack must exit 0 and write a pack that the device's reader (facet-pack
 --check) validates, with every face of the file's shells (ndr_part01 too: no product structure,
-no unit, read as metres), and no larger than 10% of its STEP file (blocked or whole). A refusal (exit 1 with its 'facet-pack: error: ...' line, printed), a
+no unit, read as metres), and no larger than 10% of its STEP file (blocked or whole), its tangent edges (SmoothEdges: faces
+meeting with G1 continuity, Open CASCADE's regularity) marked: none more than the edges, and on
+the machined parts with fillets (nist_ctc_02, nist_ctc_04) between a quarter and two thirds. A refusal (exit 1 with its 'facet-pack: error: ...' line, printed), a
 crash, a signal, a timeout, or a pack the reader refuses fails the test. Prints one line per model
 (faces by surface type, pack file size as % of the STEP file) and the counts, and writes them to
 WORK/pack-models.json.
@@ -49,6 +51,17 @@ def main():
             print(f'packed  {f}: {summary}; {m.group(2)}% of the STEP file')
             if float(m.group(2)) > 10.0:
                 bad.append(f'{f}: the pack is {m.group(2)}% of the STEP file (at most 10%)')
+            t = re.search(r'(\d+) edges \((\d+) tangent\)', r.stdout)
+            if not t:
+                bad.append(f'{f}: the summary does not say its tangent edges')
+                continue
+            edges, tangent = int(t.group(1)), int(t.group(2))
+            rows[-1]['edges'], rows[-1]['tangent_edges'] = edges, tangent
+            if tangent > edges:
+                bad.append(f'{f}: {tangent} tangent edges of {edges}')
+            if f in ('nist_ctc_02.stp', 'nist_ctc_04.stp') and not edges / 4 <= tangent <= 2 * edges / 3:
+                bad.append(f'{f}: {tangent} tangent edges of {edges}: a machined part with fillets has more, and its '
+                           'planes\' edges are sharp')
         elif r.returncode == 1 and 'facet-pack: error:' in r.stderr:
             reason = r.stderr.strip().splitlines()[-1]
             rows.append({'model': f, 'status': 'refused', 'reason': reason})

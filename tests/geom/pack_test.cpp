@@ -19,7 +19,7 @@ namespace {
 
 // A 10 mm cube: 6 planes, 12 edges (the first six straight, the others on line curves), 8
 // vertices, 24 coedges; the first three faces carry line pcurves (optional on planes).
-std::vector<uint8_t> cube_pack() {
+std::vector<uint8_t> cube_pack(std::initializer_list<uint32_t> smooth = {}) {
     PackWriter w;
     const float s = 10;
     uint32_t v[8];
@@ -34,6 +34,7 @@ std::vector<uint8_t> cube_pack() {
         const uint32_t c = i < 6 ? kStraight : w.add_curve(CurveType::Line, 3, {o[0], o[1], o[2], d[0] / s, d[1] / s, d[2] / s});
         e[i] = w.add_edge({c, 0, s, a, b, 1e-7f, 0});
     }
+    for (uint32_t i : smooth) w.set_smooth_edge(e[i]); // (as if those edges were rounded)
     // One face per side; pcurves are simple lines (the test only needs valid structure).
     const uint32_t colour = w.add_colour({200, 180, 40, 255});
     const uint32_t first_face = w.face_count();
@@ -137,6 +138,32 @@ TEST(Pack, MovedBytesReadWhereTheyNowLie) {
 }
 
 TEST(Pack, CrcOfAKnownString) { EXPECT_EQ(crc32("123456789", 9), 0xCBF43926u); }
+
+// Tangent edges (SmoothEdges): the bits the packer set read back edge by edge, none past the
+// edges or in a pack without the section, where the bytes moved too; a table of another length
+// than the edges need is refused, naming the section.
+TEST(Pack, SmoothEdgesReadBackEdgeByEdgeAndATableOfTheWrongLengthIsRefused) {
+    Buf plain(cube_pack()), marked(cube_pack({1, 7, 11})), other(cube_pack({2}));
+    Pack p;
+    ASSERT_TRUE(plain.open(p).ok());
+    for (uint32_t e = 0; e < 12; ++e) EXPECT_FALSE(p.smooth_edge(e)) << e;
+    EXPECT_THROW(plain.section(SectionId::SmoothEdges), std::runtime_error) << "written only when some edge is smooth";
+    ASSERT_TRUE(marked.open(p).ok());
+    for (uint32_t e = 0; e < 12; ++e) EXPECT_EQ(p.smooth_edge(e), e == 1 || e == 7 || e == 11) << e;
+    EXPECT_FALSE(p.smooth_edge(12));
+    EXPECT_FALSE(p.smooth_edge(1000));
+    Pack q;
+    ASSERT_TRUE(other.open(q).ok());
+    p.moved(other.bytes()); // (the same layout: the other cube's bits, read where they lie)
+    for (uint32_t e = 0; e < 12; ++e) EXPECT_EQ(p.smooth_edge(e), e == 2) << e;
+
+    marked.section(SectionId::SmoothEdges).count = 0; // 12 edges take one word
+    marked.reseal();
+    const Result r = marked.open(p);
+    EXPECT_EQ(r.status, Status::Corrupt);
+    EXPECT_STREQ(r.what, "one bit per edge is needed");
+    EXPECT_STREQ(r.where.kind, "section SmoothEdges word");
+}
 
 TEST(Pack, TruncatedAtEverySizeIsRefused) {
     const std::vector<uint8_t> good = cube_pack();

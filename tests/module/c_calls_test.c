@@ -116,6 +116,8 @@ static void misuse(facet_viewer *loaded) {
     facet_set_parallel(none, 1);
     CHECK(facet_get_display_mode(none) == FACET_MODE_SHADED_EDGES);
     CHECK(facet_set_display_mode(none, FACET_MODE_SHADED).status == FACET_OUT_OF_RANGE);
+    CHECK(facet_get_tangent_edges(none) == 0);
+    facet_set_tangent_edges(none, 0);
     CHECK(facet_get_detail(none) == 0);
     CHECK(facet_set_detail(none, 1).status == FACET_OUT_OF_RANGE);
     CHECK(facet_pick(none, 1, 1).hit == 0);
@@ -295,6 +297,12 @@ int main(int argc, char **argv) {
     facet_act(v, FACET_ACTION_NEXT_DISPLAY_MODE);
     CHECK(facet_get_display_mode(v) == FACET_MODE_HIDDEN_LINE);
     CHECK(facet_set_display_mode(v, FACET_MODE_SHADED_EDGES).status == FACET_OK);
+    /* Tangent edges: drawn by default; left out; the action toggles them back. */
+    CHECK(facet_get_tangent_edges(v) == 1);
+    facet_set_tangent_edges(v, 0);
+    CHECK(facet_get_tangent_edges(v) == 0);
+    facet_act(v, FACET_ACTION_TANGENT_EDGES);
+    CHECK(facet_get_tangent_edges(v) == 1);
 
     /* Detail: finer makes more triangles; the action's cycle comes back to the default. */
     CHECK(facet_get_detail(v) == 1);

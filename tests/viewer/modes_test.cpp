@@ -62,6 +62,46 @@ TEST(Viewer, DisplayModesDrawFacesAndEdgesAsNamed) {
     EXPECT_EQ(app.screen()[size_t(app.h / 2) * app.w + app.w / 2 - 10], shaded_edges.centre);
 }
 
+// Tangent edges (those the pack marks: their faces meet smoothly) are drawn by default and left
+// out on request: a disc with two of its four arcs so marked loses those arcs' pixels and
+// nothing else (every pixel that changes was an edge's, and becomes the face's or the
+// background's), keeps the other two; with all four marked no edge is left; key t toggles.
+TEST(Viewer, TangentEdgesAreDrawnByDefaultAndLeftOutOnRequest) {
+    const Rgb565 edge = rgb565(28, 30, 38);
+    auto edges = [&](const std::vector<Rgb565>& s) { return std::count(s.begin(), s.end(), edge); };
+    App app;
+    ASSERT_TRUE(app.create().ok());
+    ASSERT_TRUE(app.load(disc({0, 1})).ok());
+    app.run();
+    EXPECT_TRUE(app.v->tangent_edges());
+    const std::vector<Rgb565> all = app.screen();
+    app.v->set_tangent_edges(false);
+    EXPECT_FALSE(app.v->tangent_edges());
+    app.run();
+    const std::vector<Rgb565> sharp = app.screen();
+    EXPECT_GT(edges(sharp), 100) << "the two sharp arcs stay";
+    EXPECT_LT(edges(sharp), edges(all) - 100) << "the two tangent ones go";
+    ASSERT_EQ(all.size(), sharp.size());
+    size_t changed = 0;
+    for (size_t i = 0; i < all.size(); ++i) {
+        if (all[i] == sharp[i]) continue;
+        ++changed;
+        EXPECT_EQ(all[i], edge) << "pixel " << i << " changed and was no edge's";
+    }
+    EXPECT_GT(changed, 100u);
+    app.v->key('t');
+    app.run();
+    EXPECT_TRUE(app.v->tangent_edges());
+    EXPECT_TRUE(app.screen() == all) << "back as it was";
+
+    App round;
+    ASSERT_TRUE(round.create().ok());
+    ASSERT_TRUE(round.load(disc({0, 1, 2, 3})).ok());
+    round.v->set_tangent_edges(false);
+    round.run();
+    EXPECT_EQ(edges(round.screen()), 0);
+}
+
 // Hidden line draws a curved face's outline, which no B-rep edge gives: the tube seen from the
 // front in a parallel view has its two sides as lines, at its leftmost and rightmost points,
 // all the way from its bottom to its top; shaded with edges, those columns have none.

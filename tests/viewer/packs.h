@@ -46,8 +46,9 @@ inline Bytes polygon_and_triangle(uint32_t sides) {
     return w.finish();
 }
 
-// A disc of radius 100 in z = 0 bounded by four quarter circles.
-inline Bytes disc() {
+// A disc of radius 100 in z = 0 bounded by four quarter circles; those numbered in `smooth`
+// marked as tangent edges (pack::SectionId::SmoothEdges), as if the disc were a blend's.
+inline Bytes disc(std::initializer_list<int> smooth = {}) {
     PackWriter w;
     const uint32_t plane = w.add_surface(pack::SurfaceType::Plane, {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1});
     const uint32_t circle = w.add_curve(pack::CurveType::Circle, 3, {0, 0, 0, 1, 0, 0, 0, 1, 0, 100});
@@ -55,6 +56,7 @@ inline Bytes disc() {
     const uint32_t first = w.coedge_count();
     for (int i = 0; i < 4; ++i) {
         const uint32_t e = w.add_edge({circle, float(M_PI / 2 * i), float(M_PI / 2 * (i + 1)), v[i], v[(i + 1) % 4], 1e-7f, 0});
+        if (std::find(smooth.begin(), smooth.end(), i) != smooth.end()) w.set_smooth_edge(e);
         w.add_coedge(pack::Coedge::make(e, false, pack::Seam::None));
     }
     const uint32_t loop = w.add_loop({first, 4});

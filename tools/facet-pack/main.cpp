@@ -262,8 +262,8 @@ int main(int argc, char** argv) {
     if (reference && !host::write_file(reference, packer::reference_json(packer.packed_faces, model.unit_mm), error)) return die(error);
     std::string types;
     for (auto& [k, v] : stats.surface_types) types += (types.empty() ? "" : ", ") + std::to_string(v) + " " + k;
-    std::printf("%s: %u solids, %u open shells, %u instances, %u faces (%s), %u edges", in, stats.solids, stats.shells,
-                stats.instances, stats.faces, types.c_str(), stats.edges);
+    std::printf("%s: %u solids, %u open shells, %u instances, %u faces (%s), %u edges (%u tangent)", in, stats.solids, stats.shells,
+                stats.instances, stats.faces, types.c_str(), stats.edges, stats.smooth_edges);
     if (stats.faces_skipped) std::printf(", %u faces skipped (%s)", stats.faces_skipped, stats.first_problem.c_str());
     std::printf("\n  pack %zu bytes = %.1f%% of the STEP file (%lld bytes)", bytes.size(),
                 100.0 * double(bytes.size()) / double(st.st_size), (long long)st.st_size);

@@ -5,6 +5,7 @@
 
 #include "clearance.h"
 
+#include <BRepLib.hxx>
 #include <BRepTools.hxx>
 #include <BRepTools_WireExplorer.hxx>
 #include <BRep_Tool.hxx>
@@ -28,6 +29,7 @@
 #include <TColStd_Array1OfReal.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <Standard_Failure.hxx>
 #include <TopoDS.hxx>
@@ -74,6 +76,31 @@ Floats floats_of(const Params& p) {
 }
 
 constexpr double kApproxTolerance = 1e-4; // mm, for curves and surfaces with no packed form
+
+// Whether an edge's two faces meet tangentially: their normals within pack::kSmoothAngle along
+// it, as Open CASCADE's regularity judges it (a fillet's sides, a split cylinder's halves). Not
+// a seam (one face on both sides), a free edge or one of three faces.
+bool tangent_faces(const TopoDS_Edge& e, const TopTools_IndexedDataMapOfShapeListOfShape& faces_of) {
+    if (BRep_Tool::Degenerated(e) || !faces_of.Contains(e)) return false;
+    TopoDS_Face f[2];
+    int n = 0;
+    for (const TopoDS_Shape& s : faces_of.FindFromKey(e)) {
+        if (n > 0 && s.IsSame(f[0])) continue;
+        if (n == 2) {
+            if (!s.IsSame(f[1])) return false;
+            continue;
+        }
+        f[n++] = TopoDS::Face(s);
+    }
+    if (n != 2) return false;
+    try {
+        TopoDS_Edge edge = e; // (the call takes it to record the continuity in it)
+        BRepLib::EncodeRegularity(edge, f[0], f[1], pack::kSmoothAngle);
+        return BRep_Tool::HasContinuity(e, f[0], f[1]) && BRep_Tool::Continuity(e, f[0], f[1]) >= GeomAbs_G1;
+    } catch (const Standard_Failure&) {
+        return false; // (judged sharp: it stays drawn)
+    }
+}
 
 void put(Floats& f, const gp_XYZ& v) { f.insert(f.end(), {clean(v.X()), clean(v.Y()), clean(v.Z())}); }
 void put(Floats& f, const gp_XY& v) { f.insert(f.end(), {clean(v.X()), clean(v.Y())}); }
@@ -425,6 +452,14 @@ uint32_t Packer::add_prototype(const TopoDS_Shape& shape, bool closed) {
     } catch (const Standard_Failure& f) {
         // The edge stays unpacked; faces that use it are skipped below with this reason.
         if (stats_.first_problem.empty()) stats_.first_problem = std::string("an edge failed: ") + f.GetMessageString();
+    }
+    TopTools_IndexedDataMapOfShapeListOfShape faces_of;
+    TopExp::MapShapesAndAncestors(shape, TopAbs_EDGE, TopAbs_FACE, faces_of);
+    for (int i = 1; i <= edge_map.Extent(); ++i) {
+        if (edge_ids[i] != kNoIndex && tangent_faces(TopoDS::Edge(edge_map(i)), faces_of)) {
+            w_.set_smooth_edge(edge_ids[i]);
+            ++stats_.smooth_edges;
+        }
     }
     const uint32_t first_face = w_.face_count();
     uint32_t faces = 0;

@@ -14,6 +14,7 @@ namespace facet::packer {
 
 struct Stats {
     uint32_t solids = 0, shells = 0, faces = 0, edges = 0, instances = 0;
+    uint32_t smooth_edges = 0; // whose two faces meet tangentially (pack::SectionId::SmoothEdges)
     std::map<std::string, uint32_t> surface_types, converted; // converted: "offset -> B-spline"
     uint32_t faces_skipped = 0;
     std::string first_problem;

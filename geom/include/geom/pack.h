@@ -42,6 +42,8 @@ public:
     const char* model_name() const { return names_.empty() ? "" : names_.data(); }
     const char* shell_name(uint32_t s) const { return name_at(shell_names_, s); }
     const char* instance_name(uint32_t i) const { return name_at(instance_names_, i); }
+    // Whether edge e's two faces meet tangentially (SmoothEdges; false when the pack says nothing).
+    bool smooth_edge(uint32_t e) const { return e / 32 < smooth_.size() && (smooth_[e / 32] >> (e % 32)) & 1u; }
 
     // The pcurve of coedge c (one of face F's) on F's surface; kNoIndex if F has none.
     uint32_t pcurve_of(const pack::Face& F, uint32_t c) const {
@@ -75,6 +77,7 @@ private:
     std::span<const pack::Colour> colours_;
     std::span<const char> names_;
     std::span<const uint32_t> shell_names_, instance_names_;
+    std::span<const uint32_t> smooth_;
 };
 
 // Expected parameter count of a surface or curve from its head (B-splines) or type; 0 if the

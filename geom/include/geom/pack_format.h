@@ -59,7 +59,16 @@ enum class SectionId : uint32_t {
     Names = 13,
     ShellNames = 14,
     InstanceNames = 15,
+    // SmoothEdges (optional, as the names): one bit per edge, in uint32 words (edge e: word
+    // e / 32, bit e % 32), set where the edge's two faces meet tangentially (their normals
+    // within kSmoothAngle along it, as Open CASCADE's regularity judges it): a fillet's sides,
+    // the halves of a split cylinder. A viewer may leave these out of the drawing ("tangent
+    // edges hidden"). Written only when some edge is smooth; its count is the words the edges
+    // need.
+    SmoothEdges = 16,
 };
+constexpr float kSmoothAngle = 0.0174533f; // rad (1 degree)
+constexpr uint32_t smooth_words(uint32_t edges) { return (edges + 31) / 32; }
 constexpr uint32_t kMaxNameBytes = 255; // a longer name is cut (on a UTF-8 boundary) by the packer
 
 struct SectionEntry {

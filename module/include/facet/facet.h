@@ -166,7 +166,7 @@ typedef enum {
     FACET_ACTION_VIEW_BOTTOM, FACET_ACTION_VIEW_ISO, FACET_ACTION_PROJECTION, FACET_ACTION_NEXT_DISPLAY_MODE,
     FACET_ACTION_NEXT_VIEW, FACET_ACTION_MEASURE, FACET_ACTION_HELP, FACET_ACTION_SECTION, FACET_ACTION_SECTION_IN,
     FACET_ACTION_SECTION_OUT, FACET_ACTION_PARTS, FACET_ACTION_NEXT_PART, FACET_ACTION_HIDE_PART, FACET_ACTION_ISOLATE_PART,
-    FACET_ACTION_SHOW_ALL_PARTS, FACET_ACTION_MODELS
+    FACET_ACTION_SHOW_ALL_PARTS, FACET_ACTION_MODELS, FACET_ACTION_TANGENT_EDGES
 } facet_action;
 void facet_act(facet_viewer *viewer, facet_action action); /* as if its key were pressed */
 /* The keys' table, for a help screen: how many, and each (NULL help past the last). */
@@ -207,6 +207,9 @@ typedef enum {
 } facet_display_mode;
 facet_display_mode facet_get_display_mode(const facet_viewer *viewer);
 facet_result facet_set_display_mode(facet_viewer *viewer, facet_display_mode mode);
+/* Tangent edges (between faces that meet smoothly: a fillet's sides): 1 drawn (the default), 0 left out. */
+int facet_get_tangent_edges(const facet_viewer *viewer);
+void facet_set_tangent_edges(facet_viewer *viewer, int shown);
 /* The level of detail as a factor of the default tolerance: 1/8 (finest) to 16. */
 float facet_get_detail(const facet_viewer *viewer);
 facet_result facet_set_detail(facet_viewer *viewer, float factor);

@@ -128,6 +128,7 @@ enum class Action : uint8_t {
     IsolatePart,     // show the chosen part alone
     ShowAllParts,
     Models,          // the models on the device (a library: Viewer::set_library) on/off: tap one to open it
+    TangentEdges,    // tangent edges (between faces that meet smoothly: a fillet's sides) shown / hidden
 };
 
 // How the model is drawn.

@@ -113,6 +113,10 @@ public:
 
     DisplayMode display_mode() const;
     void set_display_mode(DisplayMode mode);
+    // Tangent edges: the B-rep edges between faces that meet smoothly (a fillet's sides, a split
+    // cylinder's halves; the pack says which), drawn (the default) or left out.
+    bool tangent_edges() const;
+    void set_tangent_edges(bool shown);
     // The level of detail: the chordal tolerance (and the screen error) as a factor of the
     // default: 1, finer below (down to 1/8), coarser above (up to 16); the faces are made again.
     float detail() const;
