@@ -221,25 +221,44 @@ void Overlay::panel(const render::Target& t) const {
     for (uint32_t i = 0; i < line_count_; ++i) render::draw_text(t, 3, y + 3 + int32_t(i) * render::kLineHeight, lines_[i], kText);
 }
 
+namespace {
+// The help panel: its lines, then its button (a finger's height).
+constexpr const char* kHelp[] = {
+    "drag: turn      two fingers: pinch to zoom, drag to pan",
+    "tap: pick a face (MEAS: two faces, distance and angle)",
+    "double tap: frame the face   FIT: the whole model",
+    "VIEW: front, right, top, iso...   PROJ: perspective/parallel",
+    "MODE: shaded+edges, shaded, wireframe, hidden line, see-through",
+    "SECT: a section (picked plane, x, y, z); drag its slider",
+    "PART: the parts: tap a name, its box hides it; ISOL, ALL",
+    "LOD: finer, finest, coarser triangles, and back",
+    "keys: 1 2 3 4 7 8 0 views, 5 projection, m mode, f fit",
+    "c section , . move it  p parts n next x hide o isolate u all",
+    "g level of detail   t tangent edges   h or ? this help",
+};
+constexpr int32_t kHelpLines = int32_t(sizeof kHelp / sizeof kHelp[0]);
+constexpr int32_t kHelpButtonRows = 28;
+} // namespace
+
+Area Overlay::help_area() const {
+    return {8, uint16_t(status_rows_ + 8), uint16_t(toolbar_x_ - 16), uint16_t(kHelpLines * render::kLineHeight + 8 + kHelpButtonRows + 4)};
+}
+
 void Overlay::help_panel(const render::Target& t) const {
-    static constexpr const char* kHelp[] = {
-        "drag: turn      two fingers: pinch to zoom, drag to pan",
-        "tap: pick a face (MEAS: two faces, distance and angle)",
-        "double tap: frame the face   FIT: the whole model",
-        "VIEW: front, right, top, iso...   PROJ: perspective/parallel",
-        "MODE: shaded+edges, shaded, wireframe, hidden line, see-through",
-        "SECT: a section (picked plane, x, y, z); drag its slider",
-        "PART: the parts: tap a name, its box hides it; ISOL, ALL",
-        "LOD: finer, finest, coarser triangles, and back",
-        "keys: 1 2 3 4 7 8 0 views, 5 projection, m mode, f fit",
-        "c section , . move it  p parts n next x hide o isolate u all",
-        "g level of detail   h or ? this help",
-    };
-    constexpr int32_t n = sizeof kHelp / sizeof kHelp[0];
-    const int32_t w = toolbar_x_ - 16, h = n * render::kLineHeight + 8, x = 8, y = status_rows_ + 8;
-    render::fill_rect(t, x, y, w, h, kEdge);
-    render::fill_rect(t, x + 1, y + 1, w - 2, h - 2, kBar);
-    for (int32_t i = 0; i < n; ++i) render::draw_text(t, x + 5, y + 5 + i * render::kLineHeight, kHelp[i], kText);
+    const Area p = help_area();
+    render::fill_rect(t, p.x, p.y, p.width, p.height, kEdge);
+    render::fill_rect(t, p.x + 1, p.y + 1, p.width - 2, p.height - 2, kBar);
+    for (int32_t i = 0; i < kHelpLines; ++i) render::draw_text(t, p.x + 5, p.y + 5 + i * render::kLineHeight, kHelp[i], kText);
+    const Area b = help_button();
+    render::fill_rect(t, b.x, b.y, b.width, b.height, tangent_edges_ ? kButtonOn : kButton);
+    render::draw_text(t, b.x + 6, b.y + (b.height - render::kLineHeight) / 2 + 1,
+                      tangent_edges_ ? "TANGENT EDGES: SHOWN (tap, or key t)" : "TANGENT EDGES: LEFT OUT (tap, or key t)", kText);
+}
+
+Area Overlay::help_button() const {
+    if (!help_) return {};
+    const Area p = help_area();
+    return {uint16_t(p.x + 4), uint16_t(p.y + kHelpLines * render::kLineHeight + 8), uint16_t(p.width - 8), uint16_t(kHelpButtonRows)};
 }
 
 void Overlay::slider_bar(const render::Target& t) const {

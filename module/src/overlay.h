@@ -102,6 +102,10 @@ public:
     void set_help(bool on) { help_ = on; }
     bool help() const { return help_; }
     void toggle_help() { help_ = !help_; }
+    // The help panel's own button, at its foot: tangent edges shown or left out (what a finger
+    // has for key t). Its area while the panel is open (empty otherwise), and its state to show.
+    Area help_button() const;
+    void set_tangent_edges(bool shown) { tangent_edges_ = shown; }
     void set_measuring(bool on) { measuring_ = on; }
     bool measuring() const { return measuring_; }
     // The measurement panel's lines (copied; empty: no panel).
@@ -125,6 +129,7 @@ private:
     void toolbar(const render::Target& t) const;
     void panel(const render::Target& t) const;
     void help_panel(const render::Target& t) const;
+    Area help_area() const; // the help panel: its lines, then its button
     void slider_bar(const render::Target& t) const;
     void parts_list(const render::Target& t) const;
     void models_list(const render::Target& t) const;
@@ -135,7 +140,7 @@ private:
     int16_t status_rows_ = 0, toolbar_x_ = 0;
     Button buttons_[kButtons] = {};
     uint32_t button_count_ = 0;
-    bool help_ = false, measuring_ = false;
+    bool help_ = false, measuring_ = false, tangent_edges_ = true;
     char lines_[kLines][kLineChars] = {};
     uint32_t line_count_ = 0;
     bool slider_on_ = false;

@@ -16,6 +16,7 @@ void Core::tap(int16_t x, int16_t y) {
         act(a);
         return;
     }
+    if (presenter_.overlay().help_button().contains(x, y)) return act(Action::TangentEdges); // the help panel's button
     if (presenter_.overlay().name_at(x, y)) return toggle_models(); // the model's name, with a library: the chooser
     if (tap_parts(x, y) || tap_models(x, y)) return;                 // the parts list's, the models chooser's
     const Event e = pick_at(x, y);

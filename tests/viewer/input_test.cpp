@@ -55,9 +55,19 @@ TEST(Viewer, TheToolbarAndTheMeasurementPanelWorkByTouch) {
     ASSERT_EQ(app.last(Event::Kind::Picked)->pick.face, 1u);
     ASSERT_EQ(o.line_count(), 3u);
     EXPECT_STREQ(o.line(2), "parallel planes: distance 0.000 mm");
-    // HELP on and off; a tap on nothing clears the selection.
+    // HELP on, its button (what a finger has for key t) leaves tangent edges out and brings
+    // them back, picking nothing; HELP off; a tap on nothing clears the selection.
     tap(app.w - 20, button(Action::Help));
     EXPECT_TRUE(o.help());
+    const Area tangent = o.help_button();
+    ASSERT_GE(tangent.height, 28) << "a finger's height";
+    ASSERT_LE(tangent.y + tangent.height, app.h);
+    const int picked = app.count(Event::Kind::Picked);
+    tap(tangent.x + tangent.width / 2, tangent.y + tangent.height / 2);
+    EXPECT_FALSE(app.v->tangent_edges());
+    tap(tangent.x + 5, tangent.y + 5);
+    EXPECT_TRUE(app.v->tangent_edges());
+    EXPECT_EQ(app.count(Event::Kind::Picked), picked);
     tap(app.w - 20, button(Action::Help));
     EXPECT_FALSE(o.help());
     tap(5, app.h - 5);
