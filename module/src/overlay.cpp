@@ -241,11 +241,13 @@ constexpr int32_t kHelpButtonRows = 28;
 } // namespace
 
 Area Overlay::help_area() const {
+    if (toolbar_x_ < 32) return {}; // (a screen too narrow for it)
     return {8, uint16_t(status_rows_ + 8), uint16_t(toolbar_x_ - 16), uint16_t(kHelpLines * render::kLineHeight + 8 + kHelpButtonRows + 4)};
 }
 
 void Overlay::help_panel(const render::Target& t) const {
     const Area p = help_area();
+    if (p.width == 0) return;
     render::fill_rect(t, p.x, p.y, p.width, p.height, kEdge);
     render::fill_rect(t, p.x + 1, p.y + 1, p.width - 2, p.height - 2, kBar);
     for (int32_t i = 0; i < kHelpLines; ++i) render::draw_text(t, p.x + 5, p.y + 5 + i * render::kLineHeight, kHelp[i], kText);
@@ -256,8 +258,8 @@ void Overlay::help_panel(const render::Target& t) const {
 }
 
 Area Overlay::help_button() const {
-    if (!help_) return {};
     const Area p = help_area();
+    if (!help_ || p.width == 0) return {};
     return {uint16_t(p.x + 4), uint16_t(p.y + kHelpLines * render::kLineHeight + 8), uint16_t(p.width - 8), uint16_t(kHelpButtonRows)};
 }
 
