@@ -170,7 +170,7 @@ void Overlay::draw(const render::Target& t, const StatusInfo& info) const {
         if (slider_on_) slider_bar(t);
         if (parts_open()) parts_list(t);
         if (models_open()) models_list(t);
-        if (help_) help_panel(t);
+        if (help_) help_panel(t, info.tangent_edges);
     }
     progress(t, info.finished, info.total);
 }
@@ -245,16 +245,16 @@ Area Overlay::help_area() const {
     return {8, uint16_t(status_rows_ + 8), uint16_t(toolbar_x_ - 16), uint16_t(kHelpLines * render::kLineHeight + 8 + kHelpButtonRows + 4)};
 }
 
-void Overlay::help_panel(const render::Target& t) const {
+void Overlay::help_panel(const render::Target& t, bool tangent_edges) const {
     const Area p = help_area();
     if (p.width == 0) return;
     render::fill_rect(t, p.x, p.y, p.width, p.height, kEdge);
     render::fill_rect(t, p.x + 1, p.y + 1, p.width - 2, p.height - 2, kBar);
     for (int32_t i = 0; i < kHelpLines; ++i) render::draw_text(t, p.x + 5, p.y + 5 + i * render::kLineHeight, kHelp[i], kText);
     const Area b = help_button();
-    render::fill_rect(t, b.x, b.y, b.width, b.height, tangent_edges_ ? kButtonOn : kButton);
+    render::fill_rect(t, b.x, b.y, b.width, b.height, tangent_edges ? kButtonOn : kButton);
     render::draw_text(t, b.x + 6, b.y + (b.height - render::kLineHeight) / 2 + 1,
-                      tangent_edges_ ? "TANGENT EDGES: SHOWN (tap, or key t)" : "TANGENT EDGES: LEFT OUT (tap, or key t)", kText);
+                      tangent_edges ? "TANGENT EDGES: SHOWN (tap, or key t)" : "TANGENT EDGES: LEFT OUT (tap, or key t)", kText);
 }
 
 Area Overlay::help_button() const {

@@ -27,6 +27,7 @@ struct StatusInfo {
     float tolerance_mm = 0;
     DisplayMode mode = DisplayMode::ShadedEdges;
     bool ortho = false;
+    bool tangent_edges = true; // drawn (the help panel's button says which)
 };
 
 class Overlay {
@@ -103,9 +104,8 @@ public:
     bool help() const { return help_; }
     void toggle_help() { help_ = !help_; }
     // The help panel's own button, at its foot: tangent edges shown or left out (what a finger
-    // has for key t). Its area while the panel is open (empty otherwise), and its state to show.
+    // has for key t). Its area while the panel is open (empty otherwise).
     Area help_button() const;
-    void set_tangent_edges(bool shown) { tangent_edges_ = shown; }
     void set_measuring(bool on) { measuring_ = on; }
     bool measuring() const { return measuring_; }
     // The measurement panel's lines (copied; empty: no panel).
@@ -128,7 +128,7 @@ private:
     void status(const render::Target& t, const StatusInfo& info) const;
     void toolbar(const render::Target& t) const;
     void panel(const render::Target& t) const;
-    void help_panel(const render::Target& t) const;
+    void help_panel(const render::Target& t, bool tangent_edges) const;
     Area help_area() const; // the help panel: its lines, then its button
     void slider_bar(const render::Target& t) const;
     void parts_list(const render::Target& t) const;
@@ -140,7 +140,7 @@ private:
     int16_t status_rows_ = 0, toolbar_x_ = 0;
     Button buttons_[kButtons] = {};
     uint32_t button_count_ = 0;
-    bool help_ = false, measuring_ = false, tangent_edges_ = true;
+    bool help_ = false, measuring_ = false;
     char lines_[kLines][kLineChars] = {};
     uint32_t line_count_ = 0;
     bool slider_on_ = false;

@@ -327,6 +327,7 @@ void Presenter::run_piece(uint32_t units, uint32_t pass) {
         s.total = scene_.totals().faces, s.finished = job_.finished < s.total ? job_.finished : s.total;
         s.triangles = scene_.totals().triangles, s.boxed_faces = scene_.left_out().faces;
         s.frame_us = last_frame_us_, s.tolerance_mm = tolerance_mm_, s.mode = painter_.mode(), s.ortho = camera_.view().ortho;
+        s.tangent_edges = painter_.tangent_edges();
         overlay_.draw(raster_.target(), s);
         job_.stage = Job::Stage::Flush;
     }

@@ -127,7 +127,6 @@ void Core::set_mode(DisplayMode m) {
 void Core::set_tangent_edges(bool shown) {
     if (shown == painter_.tangent_edges()) return;
     painter_.set_tangent_edges(shown);
-    presenter_.overlay().set_tangent_edges(shown); // (the help panel's button says which)
     presenter_.invalidate();
 }
 
