@@ -77,6 +77,12 @@ struct Transform {
         d = dist - (int32_t(r[2] >> 30) + b[2]);
     }
     void project(const int32_t p[3], Projected& o) const {
+        render::Reciprocal r;
+        project(p, o, r);
+    }
+    // And the reciprocal of what x and y were divided by (the depth, or the orthographic
+    // distance), for other quantities over the same depth (a sphere's size on the screen).
+    void project(const int32_t p[3], Projected& o, render::Reciprocal& r) const {
         to_view(p, o.x, o.y, o.d);
         o.out = 0;
         if (o.d < near) {
@@ -89,7 +95,7 @@ struct Transform {
             o.out = kOutGuard;
             return;
         }
-        const render::Reciprocal r = ortho ? ortho_r : render::reciprocal(uint32_t(over)); // x and y over one depth
+        r = ortho ? ortho_r : render::reciprocal(uint32_t(over)); // x and y over one depth
         o.s.x = cx16 + render::divide(X, r);
         o.s.y = cy16 - render::divide(Y, r);
         const int64_t zz = (int64_t(o.d - near) * zk) >> 16;

@@ -61,9 +61,15 @@ bool Painter::to_screen(const Transform& t, Projected& p) {
 void Painter::init(const Memory& memory) {
     mem_ = memory;
     for (uint32_t& rgb : mem_.palette_rgb) rgb = kNoColour;
+    for (PlaneSlot& slot : mem_.planes) slot.face = ~0u;
     next_palette_ = 0;
     for (ProjectedPoint& slot : mem_.points) slot.stamp = 0;
     stamp_ = 1;
+}
+
+void Painter::set_model(std::span<uint8_t> edge_drawn) {
+    mem_.edge_drawn = edge_drawn;
+    for (PlaneSlot& slot : mem_.planes) slot.face = ~0u;
 }
 
 void Painter::next_stamp() {
@@ -72,15 +78,14 @@ void Painter::next_stamp() {
     stamp_ = 1;
 }
 
-const Projected& Painter::point(const int32_t p[3], const Transform& t) {
-    if (!cache_on_ || mem_.points.size() != kProjectionSlots) {
-        t.project(p, uncached_);
-        ++point_counts_.projected;
-        return uncached_;
-    }
+uint32_t Painter::slot_of(const int32_t p[3]) {
     // A multiplicative hash of the three coordinates; its top bits pick the slot.
     const uint32_t h = uint32_t(p[0]) * 0x9E3779B1u + uint32_t(p[1]) * 0x85EBCA77u + uint32_t(p[2]) * 0xC2B2AE3Du;
-    ProjectedPoint& slot = mem_.points[h >> (32 - kProjectionSlotBits)];
+    return h >> (32 - kProjectionSlotBits);
+}
+
+const Projected& Painter::point_in(uint32_t s, const int32_t p[3], const Transform& t) {
+    ProjectedPoint& slot = mem_.points[s];
     if (slot.stamp == stamp_ && slot.p[0] == p[0] && slot.p[1] == p[1] && slot.p[2] == p[2]) {
         ++point_counts_.cached;
         return slot.at;
@@ -90,6 +95,15 @@ const Projected& Painter::point(const int32_t p[3], const Transform& t) {
     t.project(p, slot.at);
     ++point_counts_.projected;
     return slot.at;
+}
+
+const Projected& Painter::point(const int32_t p[3], const Transform& t) {
+    if (!caching()) {
+        t.project(p, uncached_);
+        ++point_counts_.projected;
+        return uncached_;
+    }
+    return point_in(slot_of(p), p, t);
 }
 
 const render::Palette& Painter::palette(uint32_t rgb) {
@@ -351,15 +365,21 @@ uint32_t Painter::face_edges(uint32_t f, const Transform& t, Rows rows, bool onc
 }
 
 // A plane not tessellated yet (deferred: turned away when the view was judged) has no mesh
-// normal: its surface's, and a point of its boundary.
-bool Painter::waiting_plane_hidden(uint32_t f, const Transform& t) const {
+// normal: its surface's, and a point of its boundary, from the plane cache (the same values
+// each time: the view does not change them).
+bool Painter::waiting_plane_hidden(uint32_t f, const Transform& t) {
     if (!t.closed || t.inside_shows()) return false;
-    float point[3], normal[3];
-    const int32_t* p = scene_.boundary_point(f);
-    if (!p || !scene_.face_plane(f, point, normal)) return false;
-    int16_t n[3];
-    for (int k = 0; k < 3; ++k) n[k] = int16_t(round_to_int(normal[k] * 16384.0f));
-    return t.hides_plane(p, n);
+    PlaneSlot* slot = mem_.planes.empty() ? nullptr : &mem_.planes[f & (kPlaneSlots - 1)];
+    if (!slot || slot->face != f) {
+        float point[3], normal[3];
+        const int32_t* p = scene_.boundary_point(f);
+        if (!p || !scene_.face_plane(f, point, normal)) return false;
+        PlaneSlot plane{f, {p[0], p[1], p[2]}, {}};
+        for (int k = 0; k < 3; ++k) plane.n[k] = int16_t(round_to_int(normal[k] * 16384.0f));
+        if (!slot) return t.hides_plane(plane.p, plane.n);
+        *slot = plane;
+    }
+    return t.hides_plane(slot->p, slot->n);
 }
 
 // A sphere (a face's, a part's) across on the screen (sub-pixels, at most 64 pixels' worth), its centre
@@ -368,12 +388,13 @@ bool Painter::waiting_plane_hidden(uint32_t f, const Transform& t) const {
 int32_t Painter::across(const int32_t sphere_centre[3], int32_t radius, const Transform& t, Projected& centre) {
     constexpr int32_t kMost = 64 * render::subpixel::kPerPixel;
     if (radius <= 0) return -1;
-    t.project(sphere_centre, centre);
+    render::Reciprocal r;
+    t.project(sphere_centre, centre, r);
     if (centre.out) return -1;
     const int64_t size = 2 * ((int64_t(radius) * t.k16) >> 16) * t.f16; // sub-pixels times the depth
     const int32_t over = t.ortho ? t.dist : centre.d;
     if (size >= int64_t(kMost) * over) return kMost;
-    return render::divide(size, render::reciprocal(uint32_t(over)));
+    return render::divide(size, r); // (over's reciprocal: the projection's)
 }
 
 // A face a few pixels across, left out by the view (or tessellated for a nearer copy of its
@@ -430,12 +451,23 @@ uint32_t Painter::part_box(uint32_t part, const Transform& t) {
 uint32_t Painter::edge(uint32_t e, const Transform& t) {
     const geom::EdgeSamples& samples = scene_.samples();
     const uint32_t first = samples.first[e], n = samples.count[e];
-    Projected own[2]; // this sample and the last (copies: the next point() may take the slot)
+    // The previous sample stays in its cache slot unless this one takes that slot (or the
+    // cache is off: one answer for all): then it is copied out first.
+    Projected kept;
     const Projected* prev = nullptr;
     int64_t prev_side = 0, side = 0;
+    const bool caching = this->caching();
     for (uint32_t k = 0; k < n; ++k) {
-        own[k & 1] = point(scene_.sample_q(first + k), t);
-        const Projected* cur = &own[k & 1];
+        const int32_t* p = scene_.sample_q(first + k);
+        const Projected* cur;
+        if (caching) {
+            const uint32_t s = slot_of(p);
+            if (prev == &mem_.points[s].at) kept = *prev, prev = &kept;
+            cur = &point_in(s, p, t);
+        } else {
+            if (prev) kept = *prev, prev = &kept;
+            cur = &point(p, t);
+        }
         if (t.cut.on) side = t.cut.side(cur->x, cur->y, cur->d);
         // Segments that leave the view volume are left out (edges are not clipped); a section
         // keeps the part of a segment on its side. (A face's vertices may carry its cut flag:

@@ -39,11 +39,23 @@ constexpr uint32_t kProjectionSlots = 4096;
 constexpr int kProjectionSlotBits = std::countr_zero(kProjectionSlots);
 static_assert(std::has_single_bit(kProjectionSlots));
 
+// A plane the view left untessellated (deferred) as the painter tests whether it faces away:
+// its normal (Q14) and a point of its boundary, worked out once from its surface (soft float
+// on the ARM926: a thousand instructions) and kept in the slot its face picks.
+struct PlaneSlot {
+    uint32_t face;   // kNoFace: empty
+    int32_t p[3];    // a point of its boundary (DrawVertex units)
+    int16_t n[3];    // its outward normal, Q14
+};
+constexpr uint32_t kPlaneSlots = 1024;
+static_assert(std::has_single_bit(kPlaneSlots));
+
 class Painter {
 public:
     struct Memory {
         std::span<Projected> projected;       // one face's vertices
         std::span<ProjectedPoint> points;     // the projection cache: slots by the point's hash
+        std::span<PlaneSlot> planes;          // deferred planes' normals: slots by face
         std::span<uint8_t> edge_drawn;        // per pack edge: drawn in this instance already
         std::span<render::Palette> palettes;  // the shades of recently drawn face colours
         std::span<uint32_t> palette_rgb;      // which colour each holds (kNoColour: none)
@@ -51,7 +63,8 @@ public:
 
     Painter(const Scene& scene, render::Rasterizer& raster) : scene_(scene), raster_(raster) {}
     void init(const Memory& memory);
-    void set_edges(std::span<uint8_t> edge_drawn) { mem_.edge_drawn = edge_drawn; } // the model's (load)
+    // A model loaded: its edges' flags, and no plane of the one before.
+    void set_model(std::span<uint8_t> edge_drawn);
     void set_mode(DisplayMode m) { mode_ = m; }
     // Whether edges whose two faces meet tangentially (geom::Pack::smooth_edge) are drawn.
     void set_tangent_edges(bool shown) { tangent_edges_ = shown; }
@@ -117,6 +130,9 @@ private:
     // already (a point of two faces, an edge's sample at a face's vertex), else projected
     // into the slot its hash picks. The reference is good until the next call.
     const Projected& point(const int32_t p[3], const Transform& t);
+    bool caching() const { return cache_on_ && mem_.points.size() == kProjectionSlots; }
+    static uint32_t slot_of(const int32_t p[3]);                                  // the slot p's hash picks
+    const Projected& point_in(uint32_t slot, const int32_t p[3], const Transform& t); // point(), its slot known
     void next_stamp();
     int32_t across(const int32_t sphere_centre[3], int32_t radius, const Transform& t, Projected& centre); // on the screen (sub-pixels)
     bool lit(uint32_t f) const { // picked, or of the part chosen: in the highlight colour
@@ -132,7 +148,7 @@ private:
     // Whether a tessellated face's edges are drawn: not when shaded alone, nor shaded with edges
     // while the view is dragged (they come back when it rests).
     bool done_faces_show_edges() const { return mode_ != DisplayMode::Shaded && !(dragging_ && mode_ == DisplayMode::ShadedEdges); }
-    bool waiting_plane_hidden(uint32_t f, const Transform& t) const; // a deferred plane turned away
+    bool waiting_plane_hidden(uint32_t f, const Transform& t); // a deferred plane turned away
     uint32_t silhouette(const FaceInfo& F, const Transform& t); // hidden line: a curved face's outline; the work
 
     static bool cut_away(const Transform& t, const FaceInfo& F);

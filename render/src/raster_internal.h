@@ -107,8 +107,21 @@ struct PixelBox {
     }
 };
 
-// Whether a triangle's attributes need clamping per pixel (scan.cpp).
-bool needs_clamp(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, int32_t extent);
+// Whether the attributes of a triangle whose pixel box is `extent` pixels across need clamping
+// per pixel: a value inside the triangle is a mix of its vertices' values, off by the rounding
+// of its gradients: under extent/128 units (gradients carry kFrac bits per sub-pixel), plus two
+// where the small path multiplies by a reciprocal of the area (2^-15 of the range). Only where
+// that could leave the representable range (depth 0..65535, a palette index) is it clamped:
+// where a vertex's value lies within the margin of either end (v - margin past the range's
+// width less twice the margin, as unsigned: below the margin too).
+inline bool needs_clamp(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, int32_t extent) {
+    const uint32_t margin = 4 + uint32_t(extent) / 64;
+    const uint32_t z_span = 65535 - 2 * margin, shade_span = 255 + Palette::kPad - 1 - 2 * margin;
+    const auto out = [&](const ScreenVertex& v) {
+        return (uint32_t(v.z) - margin > z_span) | (uint32_t(v.shade) - margin > shade_span);
+    };
+    return out(a) | out(b) | out(c);
+}
 
 // A small triangle's edge: its function at the box's first pixel centre (covered where it is
 // >= 0, the top-left rule in its bias) and its steps a pixel right and a pixel down.

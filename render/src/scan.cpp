@@ -71,21 +71,6 @@ struct EdgeWalk {
 
 } // namespace
 
-// One attribute over a triangle, stepped per pixel and per row in 32-bit modular arithmetic
-// (exact wherever the true value fits in 32 bits: everywhere inside the triangle), in kFrac
-// fixed point, read back clamped to the range of its three vertex values.
-// Whether the attributes of a triangle whose pixel box is `extent` pixels across need clamping
-// per pixel: a value inside the triangle is a mix of its vertices' values, off by the rounding
-// of its gradients: under extent/128 units (gradients carry kFrac bits per sub-pixel), plus two
-// where the small path multiplies by a reciprocal of the area (2^-15 of the range). Only where
-// that could leave the representable range (depth 0..65535, a palette index) is it clamped.
-bool detail::needs_clamp(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, int32_t extent) {
-    const int32_t margin = 4 + extent / 64;
-    const int32_t zmin = std::min({a.z, b.z, c.z}), zmax = std::max({a.z, b.z, c.z});
-    const int32_t smin = std::min({a.shade, b.shade, c.shade}), smax = std::max({a.shade, b.shade, c.shade});
-    return zmin < margin || zmax > 65535 - margin || smin < margin || smax > 255 + Palette::kPad - 1 - margin;
-}
-
 namespace {
 
 // The common case of a span: pixels in place, values within range (no clamps). z and s are
@@ -177,6 +162,9 @@ struct InPlaceRows {
 
 } // namespace
 
+// One attribute over a triangle, stepped per pixel and per row in 32-bit modular arithmetic
+// (exact wherever the true value fits in 32 bits: everywhere inside the triangle), in kFrac
+// fixed point, read back clamped to the range of its three vertex values.
 struct Rasterizer::Interp {
     uint32_t row, sx, sy; // value at the current row's column 0; steps per pixel (and row)
     // (gx, gy: gradients per sub-pixel; at_origin: the value at column 0's centre)
