@@ -61,49 +61,15 @@ bool Painter::to_screen(const Transform& t, Projected& p) {
 void Painter::init(const Memory& memory) {
     mem_ = memory;
     for (uint32_t& rgb : mem_.palette_rgb) rgb = kNoColour;
-    for (PlaneSlot& slot : mem_.planes) slot.face = ~0u;
     next_palette_ = 0;
     for (ProjectedPoint& slot : mem_.points) slot.stamp = 0;
     stamp_ = 1;
-}
-
-void Painter::set_model(std::span<uint8_t> edge_drawn) {
-    mem_.edge_drawn = edge_drawn;
-    for (PlaneSlot& slot : mem_.planes) slot.face = ~0u;
 }
 
 void Painter::next_stamp() {
     if (++stamp_ != 0) return;
     for (ProjectedPoint& slot : mem_.points) slot.stamp = 0; // (after 2^32 instances drawn)
     stamp_ = 1;
-}
-
-uint32_t Painter::slot_of(const int32_t p[3]) {
-    // A multiplicative hash of the three coordinates; its top bits pick the slot.
-    const uint32_t h = uint32_t(p[0]) * 0x9E3779B1u + uint32_t(p[1]) * 0x85EBCA77u + uint32_t(p[2]) * 0xC2B2AE3Du;
-    return h >> (32 - kProjectionSlotBits);
-}
-
-const Projected& Painter::point_in(uint32_t s, const int32_t p[3], const Transform& t) {
-    ProjectedPoint& slot = mem_.points[s];
-    if (slot.stamp == stamp_ && slot.p[0] == p[0] && slot.p[1] == p[1] && slot.p[2] == p[2]) {
-        ++point_counts_.cached;
-        return slot.at;
-    }
-    slot.p[0] = p[0], slot.p[1] = p[1], slot.p[2] = p[2];
-    slot.stamp = stamp_;
-    t.project(p, slot.at);
-    ++point_counts_.projected;
-    return slot.at;
-}
-
-const Projected& Painter::point(const int32_t p[3], const Transform& t) {
-    if (!caching()) {
-        t.project(p, uncached_);
-        ++point_counts_.projected;
-        return uncached_;
-    }
-    return point_in(slot_of(p), p, t);
 }
 
 const render::Palette& Painter::palette(uint32_t rgb) {
@@ -365,21 +331,12 @@ uint32_t Painter::face_edges(uint32_t f, const Transform& t, Rows rows, bool onc
 }
 
 // A plane not tessellated yet (deferred: turned away when the view was judged) has no mesh
-// normal: its surface's, and a point of its boundary, from the plane cache (the same values
-// each time: the view does not change them).
-bool Painter::waiting_plane_hidden(uint32_t f, const Transform& t) {
+// normal: its surface's, and a point of its boundary.
+bool Painter::waiting_plane_hidden(uint32_t f, const Transform& t) const {
     if (!t.closed || t.inside_shows()) return false;
-    PlaneSlot* slot = mem_.planes.empty() ? nullptr : &mem_.planes[f & (kPlaneSlots - 1)];
-    if (!slot || slot->face != f) {
-        float point[3], normal[3];
-        const int32_t* p = scene_.boundary_point(f);
-        if (!p || !scene_.face_plane(f, point, normal)) return false;
-        PlaneSlot plane{f, {p[0], p[1], p[2]}, {}};
-        for (int k = 0; k < 3; ++k) plane.n[k] = int16_t(round_to_int(normal[k] * 16384.0f));
-        if (!slot) return t.hides_plane(plane.p, plane.n);
-        *slot = plane;
-    }
-    return t.hides_plane(slot->p, slot->n);
+    int16_t n[3];
+    const int32_t* p = scene_.boundary_point(f);
+    return p && scene_.plane_normal(f, n) && t.hides_plane(p, n);
 }
 
 // A sphere (a face's, a part's) across on the screen (sub-pixels, at most 64 pixels' worth), its centre

@@ -39,23 +39,11 @@ constexpr uint32_t kProjectionSlots = 4096;
 constexpr int kProjectionSlotBits = std::countr_zero(kProjectionSlots);
 static_assert(std::has_single_bit(kProjectionSlots));
 
-// A plane the view left untessellated (deferred) as the painter tests whether it faces away:
-// its normal (Q14) and a point of its boundary, worked out once from its surface (soft float
-// on the ARM926: a thousand instructions) and kept in the slot its face picks.
-struct PlaneSlot {
-    uint32_t face;   // kNoFace: empty
-    int32_t p[3];    // a point of its boundary (DrawVertex units)
-    int16_t n[3];    // its outward normal, Q14
-};
-constexpr uint32_t kPlaneSlots = 1024;
-static_assert(std::has_single_bit(kPlaneSlots));
-
 class Painter {
 public:
     struct Memory {
         std::span<Projected> projected;       // one face's vertices
         std::span<ProjectedPoint> points;     // the projection cache: slots by the point's hash
-        std::span<PlaneSlot> planes;          // deferred planes' normals: slots by face
         std::span<uint8_t> edge_drawn;        // per pack edge: drawn in this instance already
         std::span<render::Palette> palettes;  // the shades of recently drawn face colours
         std::span<uint32_t> palette_rgb;      // which colour each holds (kNoColour: none)
@@ -63,8 +51,7 @@ public:
 
     Painter(const Scene& scene, render::Rasterizer& raster) : scene_(scene), raster_(raster) {}
     void init(const Memory& memory);
-    // A model loaded: its edges' flags, and no plane of the one before.
-    void set_model(std::span<uint8_t> edge_drawn);
+    void set_edges(std::span<uint8_t> edge_drawn) { mem_.edge_drawn = edge_drawn; } // the model's (load)
     void set_mode(DisplayMode m) { mode_ = m; }
     // Whether edges whose two faces meet tangentially (geom::Pack::smooth_edge) are drawn.
     void set_tangent_edges(bool shown) { tangent_edges_ = shown; }
@@ -148,7 +135,7 @@ private:
     // Whether a tessellated face's edges are drawn: not when shaded alone, nor shaded with edges
     // while the view is dragged (they come back when it rests).
     bool done_faces_show_edges() const { return mode_ != DisplayMode::Shaded && !(dragging_ && mode_ == DisplayMode::ShadedEdges); }
-    bool waiting_plane_hidden(uint32_t f, const Transform& t); // a deferred plane turned away
+    bool waiting_plane_hidden(uint32_t f, const Transform& t) const; // a deferred plane turned away
     uint32_t silhouette(const FaceInfo& F, const Transform& t); // hidden line: a curved face's outline; the work
 
     static bool cut_away(const Transform& t, const FaceInfo& F);
@@ -174,5 +161,33 @@ private:
     uint32_t part_ = ~0u, focus_ = ~0u;
     uint32_t refused_ = 0;
 };
+
+inline uint32_t Painter::slot_of(const int32_t p[3]) {
+    // A multiplicative hash of the three coordinates; its top bits pick the slot.
+    const uint32_t h = uint32_t(p[0]) * 0x9E3779B1u + uint32_t(p[1]) * 0x85EBCA77u + uint32_t(p[2]) * 0xC2B2AE3Du;
+    return h >> (32 - kProjectionSlotBits);
+}
+
+inline const Projected& Painter::point_in(uint32_t s, const int32_t p[3], const Transform& t) {
+    ProjectedPoint& slot = mem_.points[s];
+    if (slot.stamp == stamp_ && slot.p[0] == p[0] && slot.p[1] == p[1] && slot.p[2] == p[2]) {
+        ++point_counts_.cached;
+        return slot.at;
+    }
+    slot.p[0] = p[0], slot.p[1] = p[1], slot.p[2] = p[2];
+    slot.stamp = stamp_;
+    t.project(p, slot.at);
+    ++point_counts_.projected;
+    return slot.at;
+}
+
+inline const Projected& Painter::point(const int32_t p[3], const Transform& t) {
+    if (!caching()) {
+        t.project(p, uncached_);
+        ++point_counts_.projected;
+        return uncached_;
+    }
+    return point_in(slot_of(p), p, t);
+}
 
 } // namespace facet::module

@@ -162,6 +162,9 @@ public:
     // the face (its surface's, du x dv: z, or -z in a left-handed frame; turned when the face is
     // reversed). False for other surfaces.
     bool face_plane(uint32_t f, float point[3], float normal[3]) const;
+    // face_plane()'s normal in Q14 (DrawVertex::n), each component rounded half away from zero
+    // from its float's bits: no soft float (the painter asks for a deferred plane's every frame).
+    bool plane_normal(uint32_t f, int16_t n[3]) const;
     // A point of the face's boundary (its first sampled edge's first sample, quantized as
     // DrawVertex::p), or null before its edges are sampled.
     const int32_t* boundary_point(uint32_t f) const;

@@ -88,7 +88,6 @@ struct Carve {
         case Array::DoneOrder: scene.done_order = as<uint32_t>(count, bytes, align); break;
         case Array::Projected: projected = painter.projected = as<module::Projected>(count, bytes, align); break;
         case Array::PointCache: painter.points = as<module::ProjectedPoint>(count, bytes, align); break;
-        case Array::PlaneCache: painter.planes = as<module::PlaneSlot>(count, bytes, align); break;
         case Array::Palettes: painter.palettes = as<render::Palette>(count, bytes, align); break;
         case Array::PaletteRgb: painter.palette_rgb = as<uint32_t>(count, bytes, align); break;
         }
@@ -238,7 +237,7 @@ Result Core::plan(uint32_t faces, uint32_t edges, uint32_t sampled_edges, uint8_
     Carve c{k, {}, {}, {}, {}, {}};
     module::model_plan(p.capacity, c);
     if (!k.fits()) return Result::fail(Status::Full, "the workspace is too small for this model's arrays");
-    painter_.set_model(c.painter.edge_drawn);
+    painter_.set_edges(c.painter.edge_drawn);
     return scene_.attach(c.scene);
 }
 

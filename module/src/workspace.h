@@ -25,7 +25,6 @@ enum class Array : uint8_t {
     FaceStorage,                      // one face's working memory (geom/face_storage.h), one block
     FaceVertices, FaceIndices,        // one face's float mesh, before the scene quantizes it
     Projected, PointCache,            // one face's vertices on the screen; points projected in the instance drawn
-    PlaneCache,                       // deferred planes' normals
     Palettes, PaletteRgb,             // the shades of the recently drawn colours, and which they are
     EdgeFirst, EdgeCount, EdgeDrawn,  // per pack edge: its first sample, its samples, drawn this frame
     SampleT, SampleP, SampleQ,        // per edge sample: parameter, 3D point, quantized point
@@ -54,7 +53,6 @@ constexpr void base_plan(const Capacity& c, uint32_t patch_words, Take& take) {
     take.array(Array::FaceIndices, 3 * size_t(geom::face_mesh_triangles(f)), sizeof(uint32_t), alignof(uint32_t));
     take.array(Array::Projected, geom::face_mesh_vertices(f), sizeof(Projected), alignof(Projected));
     take.array(Array::PointCache, kProjectionSlots, sizeof(ProjectedPoint), alignof(ProjectedPoint));
-    take.array(Array::PlaneCache, kPlaneSlots, sizeof(PlaneSlot), alignof(PlaneSlot));
     take.array(Array::Palettes, kPalettes, sizeof(render::Palette), alignof(render::Palette));
     take.array(Array::PaletteRgb, kPalettes, sizeof(uint32_t), alignof(uint32_t));
 }

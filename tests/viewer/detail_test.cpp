@@ -346,3 +346,48 @@ TEST(Detail, AFaceUnderAFewPixelsInAFartherInstanceIsDrawnAsASpeck) {
     EXPECT_GT(frame->frame.triangles, 0u);
     EXPECT_LE(frame->frame.triangles + frame->frame.culled, s.triangles) << "the farther copy's faces drawn as specks";
 }
+
+TEST(Detail, APlanesNormalInWholeUnitsIsItsSurfacesRounded) {
+    // Triangles on planes turned every way, in right- and left-handed frames, some faces
+    // reversed: Scene::plane_normal (from the floats' bits, no soft float: the painter asks for
+    // a waiting plane's every frame) gives face_plane's unit normal rounded to Q14.
+    PackWriter w;
+    const uint32_t first = w.face_count();
+    constexpr int kPlanes = 96;
+    for (int i = 0; i < kPlanes; ++i) {
+        const double a = 0.37 * i, b = 0.23 * i + 0.1, c = 0.61 * i;
+        const double ca = std::cos(a), sa = std::sin(a), cb = std::cos(b), sb = std::sin(b), cc = std::cos(c), sc = std::sin(c);
+        // Rotation z(a) y(b) x(c): its columns the frame's x, y and z.
+        const double R[3][3] = {{ca * cb, ca * sb * sc - sa * cc, ca * sb * cc + sa * sc},
+                                {sa * cb, sa * sb * sc + ca * cc, sa * sb * cc - ca * sc},
+                                {-sb, cb * sc, cb * cc}};
+        const float o[3] = {float(200 * (i % 8)), float(200 * (i / 8)), 0};
+        const float handed = i % 3 == 0 ? -1.0f : 1.0f; // a left-handed frame: y turned round
+        float x[3], y[3], z[3];
+        for (int k = 0; k < 3; ++k) x[k] = float(R[k][0]), y[k] = handed * float(R[k][1]), z[k] = float(R[k][2]);
+        const uint32_t plane = w.add_surface(pack::SurfaceType::Plane, {o[0], o[1], o[2], x[0], x[1], x[2], y[0], y[1], y[2], z[0], z[1], z[2]});
+        const uint32_t v0 = w.add_vertex(o[0], o[1], o[2]);
+        const uint32_t v1 = w.add_vertex(o[0] + 50 * x[0], o[1] + 50 * x[1], o[2] + 50 * x[2]);
+        const uint32_t v2 = w.add_vertex(o[0] + 50 * y[0], o[1] + 50 * y[1], o[2] + 50 * y[2]);
+        const uint32_t e0 = w.add_edge({pack::kStraight, 0, 50, v0, v1, 1e-7f, 0}), e1 = w.add_edge({pack::kStraight, 0, 70.71f, v1, v2, 1e-7f, 0}),
+                       e2 = w.add_edge({pack::kStraight, 0, 50, v2, v0, 1e-7f, 0});
+        const uint32_t coedge = w.coedge_count();
+        for (uint32_t e : {e0, e1, e2}) w.add_coedge(pack::Coedge::make(e, false, pack::Seam::None));
+        const uint32_t loop = w.add_loop({coedge, 3});
+        const uint8_t reversed = i % 2;
+        w.add_face({plane, loop, 1, pack::kNoIndex, pack::kNoIndex, reversed, {0, 0, 0}, {0, 0}, {50, 50}});
+    }
+    const uint32_t shell = w.add_shell({first, kPlanes, pack::kNoIndex, 0});
+    w.add_instance({shell, {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0}});
+    App app;
+    ASSERT_TRUE(app.create().ok());
+    ASSERT_TRUE(app.load(w.finish()).ok());
+    const module::Scene& scene = static_cast<const Core*>(app.v)->scene();
+    for (uint32_t f = 0; f < kPlanes; ++f) {
+        float point[3], normal[3];
+        int16_t n[3];
+        ASSERT_TRUE(scene.face_plane(f, point, normal));
+        ASSERT_TRUE(scene.plane_normal(f, n));
+        for (int k = 0; k < 3; ++k) EXPECT_EQ(n[k], std::lround(normal[k] * 16384)) << "face " << f << " component " << k;
+    }
+}

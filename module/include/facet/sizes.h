@@ -43,8 +43,7 @@
 #define FACET_DEFAULT_MESH_TRIANGLES 98304u
 
 /* Bytes per item of each capacity, and the fixed part (the viewer's state, 16 colour palettes,
- * 64 KB of a free-form face's fixed-point patches, 176 KB of the painter's projection cache, 24 KB of
- * its plane cache,
+ * 64 KB of a free-form face's fixed-point patches, 176 KB of the painter's projection cache,
  * alignment). They come from the workspace's
  * one plan (module/src/workspace.h, a face's part from geom/face_storage.h): the module's build
  * fails unless each equals what the plan takes per item, and the fixed part holds the rest. */
@@ -56,7 +55,7 @@
 #define FACET_BYTES_PER_SLIVER 60ul
 #define FACET_BYTES_PER_MESH_VERTEX 20ul
 #define FACET_BYTES_PER_MESH_TRIANGLE 6ul
-#define FACET_WORKSPACE_FIXED_BYTES 299008ul
+#define FACET_WORKSPACE_FIXED_BYTES 274432ul
 
 #define FACET_WORKSPACE_BYTES(faces, edges, samples, face_points, loops, slivers, mesh_vertices, mesh_triangles)      \
     (FACET_WORKSPACE_FIXED_BYTES + (unsigned long)(faces)*FACET_BYTES_PER_FACE +                                        \
