@@ -1,9 +1,7 @@
 #include "scene.h"
 
 #include "geom/fmath.h"
-#include "geom/params.h"
 
-#include <bit>
 #include <cmath>
 
 namespace facet::module {
@@ -147,70 +145,6 @@ Part Scene::part(uint32_t s) const {
     if (block.left_out) return {block.first_face, 0, b, index_.parts()[s].closed != 0};
     const pack::Shell& shell = block.pack.shells()[s - block.first_part];
     return {block.first_face + shell.first_face, shell.face_count, b, shell.closed != 0};
-}
-
-uint8_t Scene::surface_type(uint32_t f) const {
-    const Block& b = block_of_face(f);
-    return b.pack.surfaces()[b.pack.faces()[f - b.first_face].surface].type;
-}
-
-bool Scene::face_plane(uint32_t f, float point[3], float normal[3]) const {
-    const Block& b = block_of_face(f);
-    const pack::Face& F = b.pack.faces()[f - b.first_face];
-    const pack::Surface& S = b.pack.surfaces()[F.surface];
-    if (S.type != uint8_t(pack::SurfaceType::Plane)) return false;
-    const pack::Frame& frame = geom::params<pack::PlaneParams>(b.pack, S).frame;
-    const float sign = (F.reversed ? -1.0f : 1.0f) * handedness(frame);
-    for (int k = 0; k < 3; ++k) point[k] = frame.origin[k], normal[k] = sign * frame.z[k];
-    return true;
-}
-
-namespace {
-
-// A component of a unit vector (|v| <= 1) in Q14, rounded half away from zero: what rounding
-// v * 16384 gives, from v's bits (v * 2^14 is exact: a power of two).
-int32_t unit_q14(float v) {
-    const uint32_t bits = std::bit_cast<uint32_t>(v);
-    const int32_t exponent = int32_t((bits >> 23) & 0xFF);
-    if (exponent == 0) return 0; // zero, or below the normal range
-    const uint32_t mantissa = (bits & 0x7FFFFF) | 0x800000; // |v| = mantissa 2^(exponent - 150)
-    const int32_t shift = 136 - exponent;                    // |v| 2^14 = mantissa 2^-shift
-    uint32_t q;
-    if (shift <= 0) q = shift < -8 ? 1u << 31 : mantissa << -shift; // (|v| over 1: a broken frame)
-    else q = shift > 25 ? 0 : (mantissa + (1u << (shift - 1))) >> shift;
-    const int32_t m = q > 32767 ? 32767 : int32_t(q);
-    return bits >> 31 ? -m : m;
-}
-
-} // namespace
-
-bool Scene::plane_normal(uint32_t f, int16_t n[3]) const {
-    const Block& b = block_of_face(f);
-    const pack::Face& F = b.pack.faces()[f - b.first_face];
-    const pack::Surface& S = b.pack.surfaces()[F.surface];
-    if (S.type != uint8_t(pack::SurfaceType::Plane)) return false;
-    const pack::Frame& frame = geom::params<pack::PlaneParams>(b.pack, S).frame;
-    int64_t x[3], y[3], z[3];
-    for (int k = 0; k < 3; ++k) x[k] = unit_q14(frame.x[k]), y[k] = unit_q14(frame.y[k]), z[k] = unit_q14(frame.z[k]);
-    // handedness(): the sign of (x cross y) . z, in whole Q14 units (a unit frame's is about
-    // +-2^42, far beyond their rounding).
-    const int64_t turn = (x[1] * y[2] - x[2] * y[1]) * z[0] + (x[2] * y[0] - x[0] * y[2]) * z[1] + (x[0] * y[1] - x[1] * y[0]) * z[2];
-    const bool flip = F.reversed != (turn < 0);
-    for (int k = 0; k < 3; ++k) n[k] = int16_t(flip ? -z[k] : z[k]);
-    return true;
-}
-
-const int32_t* Scene::boundary_point(uint32_t f) const {
-    const Block& b = block_of_face(f);
-    const pack::Face& F = b.pack.faces()[f - b.first_face];
-    for (uint32_t l = F.first_loop; l < F.first_loop + F.loop_count; ++l) {
-        const pack::Loop& L = b.pack.loops()[l];
-        for (uint32_t c = L.first_coedge; c < L.first_coedge + L.coedge_count; ++c) {
-            const uint32_t e = b.first_edge + b.pack.coedges()[c].edge();
-            if (mem_.samples.count[e] > 0) return sample_q(mem_.samples.first[e]);
-        }
-    }
-    return nullptr;
 }
 
 const char* Scene::part_name(uint32_t s) const {
