@@ -113,9 +113,11 @@ struct PixelBox {
 // where the small path multiplies by a reciprocal of the area (2^-15 of the range). Only where
 // that could leave the representable range (depth 0..65535, a palette index) is it clamped:
 // where a vertex's value lies within the margin of either end (v - margin past the range's
-// width less twice the margin, as unsigned: below the margin too).
+// width less twice the margin, as unsigned: below the margin too). A margin over half the
+// palette (a triangle thousands of pixels across) leaves no shade safe.
 inline bool needs_clamp(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, int32_t extent) {
     const uint32_t margin = 4 + uint32_t(extent) / 64;
+    if (2 * margin > 255 + Palette::kPad - 1) return true;
     const uint32_t z_span = 65535 - 2 * margin, shade_span = 255 + Palette::kPad - 1 - 2 * margin;
     const auto out = [&](const ScreenVertex& v) {
         return (uint32_t(v.z) - margin > z_span) | (uint32_t(v.shade) - margin > shade_span);
