@@ -256,6 +256,8 @@ private:
     Result start(); // after the blocks are set: the model's counts, box and quantum
     Result check_block(const geom::PackIndex& index, uint32_t b) const; // its pack is its parts'
     void tally_left_out(uint32_t b, bool out); // block b counted in (out) or out of left_out_
+    // A plane face's surface frame and whether the face is reversed (null: another surface).
+    const pack::Frame* plane_frame(uint32_t f, bool& reversed) const;
     // The block holding item k of a numbering (binary search on the blocks' firsts).
     uint32_t find(uint32_t k, uint32_t Block::*first) const {
         uint32_t lo = 0, hi = uint32_t(blocks_.size());
