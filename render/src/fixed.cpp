@@ -29,16 +29,18 @@ constexpr std::array<int16_t, 257> make_table() {
 constexpr auto kQuarter = make_table();
 static_assert(kQuarter[0] == 0 && kQuarter[256] == 32767, "sine table endpoints");
 
-// 2^31 / (the middle of each 1/1024 of [2^15, 2^16)): the first guess of recip31, within
-// 2^-11, so one Newton step leaves it within a unit or two.
-constexpr std::array<uint32_t, 1024> make_recip_table() {
-    std::array<uint32_t, 1024> t{};
-    for (uint32_t i = 0; i < 1024; ++i) t[i] = uint32_t((uint64_t(1) << 31) / (32768 + i * 32 + 16));
+// floor(2^31 / d) - 2^15 for every d in [2^15, 2^16) (0 to 2^15: 16 bits), made when compiling.
+constexpr std::array<uint16_t, detail::kRecip31Entries> make_recip31_table() {
+    std::array<uint16_t, detail::kRecip31Entries> t{};
+    for (uint32_t i = 0; i < detail::kRecip31Entries; ++i) t[i] = uint16_t((uint64_t(1) << 31) / (32768 + i) - 32768);
     return t;
 }
-constexpr auto kRecip = make_recip_table();
 
 } // namespace
+
+static_assert(make_recip31_table()[0] == 32768 && make_recip31_table()[detail::kRecip31Entries - 1] == 0,
+              "2^31 / 2^15 and 2^31 / (2^16 - 1)");
+constinit const std::array<uint16_t, detail::kRecip31Entries> detail::recip31_table = make_recip31_table();
 
 int32_t sin_q15(uint16_t angle) {
     // Quadrant (2 bits), index into the quarter table (8 bits), interpolation fraction (6 bits).
@@ -98,15 +100,5 @@ uint32_t isqrt(uint64_t v) {
     return static_cast<uint32_t>(res);
 }
 
-uint32_t recip31_newton(uint32_t d) {
-    constexpr uint64_t kOne = uint64_t(1) << 31;
-    uint32_t x = kRecip[(d >> 5) - 1024];
-    // x += x (1 - d x / 2^31): the relative error squares.
-    const int64_t err = int64_t(kOne) - int64_t(uint64_t(d) * x);
-    x = uint32_t(int64_t(x) + ((int64_t(x) * err) >> 31));
-    while (uint64_t(d) * x > kOne) --x; // exact: d x <= 2^31 < d (x + 1)
-    while (uint64_t(d) * (x + 1) <= kOne) ++x;
-    return x;
-}
 
 } // namespace facet::render

@@ -44,7 +44,7 @@ TEST(Fixed, IsqrtIsFloorOfSquareRoot) {
 TEST(Fixed, ReciprocalIsTheExactFloorEverywhere) {
     for (uint32_t d = 1u << 15; d < 1u << 16; ++d) {
         ASSERT_EQ(recip31(d), uint32_t((uint64_t(1) << 31) / d)) << d;
-        ASSERT_EQ(recip31_newton(d), uint32_t((uint64_t(1) << 31) / d)) << d; // (the path of a core without a divider)
+        ASSERT_EQ(recip31_lookup(d), uint32_t((uint64_t(1) << 31) / d)) << d; // (the path of a core without a divider)
     }
 }
 

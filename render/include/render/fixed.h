@@ -2,6 +2,7 @@
 // Integer trigonometry and small vector maths shared by host and target.
 // Everything here is integer so the host reference renderer and the ARM firmware produce
 // bit-identical pixels (no dependence on the libm or FPU of either side).
+#include <array>
 #include <cstdint>
 
 namespace facet::render {
@@ -46,11 +47,16 @@ inline constexpr bool kHardwareDivide = false;
 #endif
 
 // floor(2^31 / d) for d in [2^15, 2^16), exactly: the division itself where the core divides,
-// else a table estimate, a Newton step and a last correction (recip31_newton).
-uint32_t recip31_newton(uint32_t d);
+// else a table of every answer (recip31_lookup: 64 KB, a load where a division is a library
+// call; linked only where it is used).
+namespace detail {
+constexpr uint32_t kRecip31Entries = 1u << 15;
+extern const std::array<uint16_t, kRecip31Entries> recip31_table; // floor(2^31 / (2^15 + i)) - 2^15
+} // namespace detail
+inline uint32_t recip31_lookup(uint32_t d) { return uint32_t(detail::recip31_table[d - 32768]) + 32768u; }
 inline uint32_t recip31(uint32_t d) {
     if constexpr (kHardwareDivide) return (uint32_t(1) << 31) / d;
-    else return recip31_newton(d);
+    else return recip31_lookup(d);
 }
 
 // x / d for d >= 1, to about 2^-15 relative (d's 16 leading bits): one reciprocal, which can be
