@@ -212,8 +212,9 @@ uint32_t Painter::face(uint32_t f, const Transform& t, Rows rows, uint32_t from,
         }
         Projected centre;
         if (!dragging_ && far_copy_specks(f, t) && under(F.centre, F.radius, t, kShownPixels, centre)) return F.triangle_count; // (its speck: face_edges)
+        const bool caching = this->caching();
         for (uint32_t v = 0; v < F.vertex_count; ++v) {
-            P[v] = point(verts[v].p, t);
+            P[v] = caching ? point_in(slot_of(verts[v].p), verts[v].p, t) : point(verts[v].p, t);
             if (t.cut.on && t.cut.side(P[v].x, P[v].y, P[v].d) > 0) P[v].out |= kOutCut;
             // Hidden line: paper faces, lit just enough (200-255) that curved outlines (no B-rep
             // edge: a cylinder's silhouette) still read against each other.

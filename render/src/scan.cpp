@@ -245,7 +245,9 @@ struct Rasterizer::Interp {
         const int32_t A0 = vals[k][0], d1 = vals[k][1] - A0, d2 = vals[k][2] - A0;
         const int32_t numx = d1 * y2 - d2 * y1, numy = d2 * x1 - d1 * x2;
         int64_t gx, gy;
-        if (exact) {
+        if ((d1 | d2) == 0) { // one value (a plane's shade): no gradient, whichever way it is worked out
+            gx = gy = 0;
+        } else if (exact) {
             div_pair(int64_t(numx) * (int64_t(1) << kFrac), int64_t(numy) * (int64_t(1) << kFrac), area2, gx, gy);
         } else {
             gx = (int64_t(numx) * m) >> shift;
