@@ -148,43 +148,49 @@ inline void small_edges(const ScreenVertex& v0, const ScreenVertex& v1, const Sc
     }
 }
 
-// Each of `rows` rows' run of covered columns in [col0, col1], as span[2 r] .. span[2 r + 1]
-// (half-open, empty when the second is not past the first); whether any row has one. Both ways
-// give the same runs (a triangle is convex): kDivide finds where each edge's function turns
-// non-negative (sx > 0: from k = ceil(-e / sx) on) or stops being so (sx < 0: up to
-// k = floor(e / -sx)); the walk steps along the row from its first column. The scan divides
-// where the core divides (kHardwareDivide) and walks on the ARM926, where a column costs about
-// seven instructions and a division a library call.
+// One row's run of covered columns in [col0, col1], from the edges' functions e[] at its first
+// column: [lo, end) (empty when end is not past lo). Both ways give the same run (a triangle
+// is convex): kDivide finds where each edge's function turns non-negative (sx > 0: from
+// k = ceil(-e / sx) on) or stops being so (sx < 0: up to k = floor(e / -sx)); the walk steps
+// along the row from its first column. The scan divides where the core divides
+// (kHardwareDivide) and walks on the ARM926, where a column costs about seven instructions and
+// a division a library call.
+template <bool kDivide>
+[[gnu::always_inline]] inline void small_run(const SmallEdge ed[3], int32_t e0, int32_t e1, int32_t e2, int32_t col0,
+                                             int32_t col1, int32_t& lo, int32_t& end) {
+    if constexpr (kDivide) {
+        int32_t first = 0, stop = col1 - col0 + 1;
+        const int32_t e[3] = {e0, e1, e2};
+        for (int i = 0; i < 3; ++i) {
+            const int32_t sx = ed[i].sx;
+            if (sx > 0) {
+                if (e[i] < 0) first = std::max(first, (sx - 1 - e[i]) / sx);
+            } else if (sx < 0) {
+                stop = e[i] < 0 ? 0 : std::min(stop, e[i] / -sx + 1);
+            } else if (e[i] < 0) {
+                stop = 0;
+            }
+        }
+        lo = col0 + first, end = col0 + std::max(first, stop);
+    } else {
+        // The first pixel inside, then on while inside.
+        const int32_t sx0 = ed[0].sx, sx1 = ed[1].sx, sx2 = ed[2].sx;
+        int32_t x = col0;
+        for (; x <= col1 && (e0 | e1 | e2) < 0; ++x) e0 += sx0, e1 += sx1, e2 += sx2;
+        lo = x;
+        for (; x <= col1 && (e0 | e1 | e2) >= 0; ++x) e0 += sx0, e1 += sx1, e2 += sx2;
+        end = x;
+    }
+}
+
+// Each of `rows` rows' run (small_run) as span[2 r] .. span[2 r + 1]; whether any row has one.
 template <bool kDivide>
 inline bool small_runs(const SmallEdge ed[3], int32_t rows, int32_t col0, int32_t col1, int32_t* span) {
     bool any = false;
     int32_t r0 = ed[0].e, r1 = ed[1].e, r2 = ed[2].e;
-    const int32_t sx0 = ed[0].sx, sx1 = ed[1].sx, sx2 = ed[2].sx;
     for (int32_t* at = span; at < span + 2 * rows; at += 2) {
-        if constexpr (kDivide) {
-            int32_t lo = 0, end = col1 - col0 + 1;
-            const int32_t e[3] = {r0, r1, r2};
-            for (int i = 0; i < 3; ++i) {
-                const int32_t sx = ed[i].sx;
-                if (sx > 0) {
-                    if (e[i] < 0) lo = std::max(lo, (sx - 1 - e[i]) / sx);
-                } else if (sx < 0) {
-                    end = e[i] < 0 ? 0 : std::min(end, e[i] / -sx + 1);
-                } else if (e[i] < 0) {
-                    end = 0;
-                }
-            }
-            at[0] = col0 + lo, at[1] = col0 + std::max(lo, end);
-            any |= end > lo;
-        } else {
-            // The first pixel inside, then on while inside.
-            int32_t e0 = r0, e1 = r1, e2 = r2, x = col0;
-            for (; x <= col1 && (e0 | e1 | e2) < 0; ++x) e0 += sx0, e1 += sx1, e2 += sx2;
-            const int32_t lo = x;
-            for (; x <= col1 && (e0 | e1 | e2) >= 0; ++x) e0 += sx0, e1 += sx1, e2 += sx2;
-            at[0] = lo, at[1] = x;
-            any |= x > lo;
-        }
+        small_run<kDivide>(ed, r0, r1, r2, col0, col1, at[0], at[1]);
+        any |= at[1] > at[0];
         r0 += ed[0].sy, r1 += ed[1].sy, r2 += ed[2].sy;
     }
     return any;

@@ -384,17 +384,20 @@ void Rasterizer::scan_small(const ScreenVertex& v0, const ScreenVertex& v1, cons
     const int32_t ox = centre(col0), oy = centre(row0); // the first pixel's centre
     SmallEdge ed[3];
     small_edges(v0, v1, v2, ox, oy, ed);
-    // The rows' spans first: a small triangle often covers no pixel centre at all (a sliver
-    // between them), and then needs no gradients.
-    int32_t span[2 * kSmall];
-    const bool any = small_runs<kHardwareDivide>(ed, row1 - row0 + 1, col0, col1, span);
-    if (!any) return;
+    // Rows up to the first with a run: a small triangle often covers no pixel centre at all (a
+    // sliver between them), and then needs no gradients.
+    int32_t e0 = ed[0].e, e1 = ed[1].e, e2 = ed[2].e, lo, end, y = row0;
+    for (;;) {
+        small_run<kHardwareDivide>(ed, e0, e1, e2, col0, col1, lo, end);
+        if (end > lo) break;
+        if (++y > row1) return;
+        e0 += ed[0].sy, e1 += ed[1].sy, e2 += ed[2].sy;
+    }
     const bool clamp = stipple_ || needs_clamp(v0, v1, v2, kSmall);
     Interp at[kAttributes];
     small_gradients(v0, v1, v2, area2, oy, clamp, at);
-    const int32_t* sp = span;
-    for (int32_t y = row0; y <= row1; ++y, sp += 2) {
-        const int32_t lo = sp[0], end = sp[1];
+    for (Interp& t : at) t.row += t.sy * uint32_t(y - row0); // (modulo 2^32, as they step)
+    for (;;) {
         if (end > lo) {
             if (!clamp) {
                 const size_t row = size_t(y - t_.y0) * t_.width;
@@ -405,7 +408,10 @@ void Rasterizer::scan_small(const ScreenVertex& v0, const ScreenVertex& v1, cons
                 shade(y, lo, end - 1, at, clamp);
             }
         }
+        if (++y > row1) return;
+        e0 += ed[0].sy, e1 += ed[1].sy, e2 += ed[2].sy;
         for (Interp& t : at) t.row += t.sy;
+        small_run<kHardwareDivide>(ed, e0, e1, e2, col0, col1, lo, end);
     }
 }
 
