@@ -47,10 +47,13 @@ uint32_t stroke(const Target& t, const ScreenVertex& a, const ScreenVertex& b, R
     int32_t x = (x0 << 16) + 0x8000, y = (y0 << 16) + 0x8000, z = int32_t(a.z) << 8;
     int32_t sx = 0, sy = 0, sz = 0;
     if (n && (n & (n - 1)) == 0) { // a power of two (most short lines): the same steps by shifts
+        // In 32 bits: |dx|, |dy| are at most twice the guard band (2^14 pixels), so d << 16 fits,
+        // and a depth's difference << 8 is under 2^24 (an arithmetic shift floors either way).
+        static_assert(2 * subpixel::kGuardPixels <= (1 << 14));
         const int k = __builtin_ctz(uint32_t(n));
-        sx = int32_t((int64_t(dx) << 16) >> k);
-        sy = int32_t((int64_t(dy) << 16) >> k);
-        sz = int32_t(((int64_t(b.z) - a.z) << 8) >> k);
+        sx = int32_t(uint32_t(dx) << 16) >> k;
+        sy = int32_t(uint32_t(dy) << 16) >> k;
+        sz = int32_t(uint32_t(int32_t(b.z) - int32_t(a.z)) << 8) >> k;
     } else if (n) {
         if (n < kShortLine) {
             // The same values as divide() below: (d << 16) m >> shift is d m >> (shift - 16) (the
