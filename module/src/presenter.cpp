@@ -179,11 +179,14 @@ bool Presenter::full_pieces(uint32_t units) {
             }
             while (job_.face < sh.face_count && spent < units) {
                 const uint32_t f = sh.first_face + job_.face;
-                uint32_t used;
-                job_.tri = painter_.face(f, t, rows, job_.tri, units - spent, used);
-                spent += used + 1;
-                if (job_.tri < scene_.face(f).triangle_count) return false; // more of this face next time
-                job_.tri = 0;
+                if (scene_.face(f).state == FaceState::Done) { // (the others have no triangles: their edges, or a speck)
+                    uint32_t used;
+                    job_.tri = painter_.face(f, t, rows, job_.tri, units - spent, used);
+                    spent += used;
+                    if (job_.tri < scene_.face(f).triangle_count) return false; // more of this face next time
+                    job_.tri = 0;
+                }
+                ++spent;
                 if (!edges_after) spent += painter_.face_edges(f, t, rows, true);
                 ++job_.face;
             }
