@@ -397,22 +397,30 @@ void Rasterizer::scan_small(const ScreenVertex& v0, const ScreenVertex& v1, cons
     Interp at[kAttributes];
     small_gradients(v0, v1, v2, area2, oy, clamp, at);
     for (Interp& t : at) t.row += t.sy * uint32_t(y - row0); // (modulo 2^32, as they step)
+    // The target's fields in locals: the depth writes are 16-bit, as its width and band are,
+    // so the compiler would read them again after every pixel.
+    const uint32_t width = t_.width;
+    uint16_t* drow = t_.depth + size_t(y - t_.y0) * width;
+    Rgb565* prow = t_.pixels + size_t(y - t_.y0) * width;
+    const uint32_t* const colour = palette_->colour;
+    const uint32_t zsx = at[0].sx, zsy = at[0].sy, ssx = at[1].sx, ssy = at[1].sy;
+    uint32_t pixels = 0;
     for (;;) {
         if (end > lo) {
             if (!clamp) {
-                const size_t row = size_t(y - t_.y0) * t_.width;
-                stats.pixels += shade_in_place(t_.depth + row + lo, t_.depth + row + end, t_.pixels + row + lo,
-                                               at[0].row + at[0].sx * uint32_t(lo), at[0].sx, at[1].row + at[1].sx * uint32_t(lo),
-                                               at[1].sx, palette_->colour);
+                pixels += shade_in_place(drow + lo, drow + end, prow + lo, at[0].row + zsx * uint32_t(lo), zsx,
+                                         at[1].row + ssx * uint32_t(lo), ssx, colour);
             } else {
                 shade(y, lo, end - 1, at, clamp);
             }
         }
-        if (++y > row1) return;
+        if (++y > row1) break;
         e0 += ed[0].sy, e1 += ed[1].sy, e2 += ed[2].sy;
-        for (Interp& t : at) t.row += t.sy;
+        at[0].row += zsy, at[1].row += ssy;
+        drow += width, prow += width;
         small_run<kHardwareDivide>(ed, e0, e1, e2, col0, col1, lo, end);
     }
+    stats.pixels += pixels;
 }
 
 // Shades the pixels lo..hi of row y that pass the depth test, with the attributes clamped to
