@@ -100,5 +100,4 @@ uint32_t isqrt(uint64_t v) {
     return static_cast<uint32_t>(res);
 }
 
-
 } // namespace facet::render
