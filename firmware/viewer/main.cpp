@@ -317,6 +317,20 @@ hal::FreeRam around_library(hal::FreeRam ram, const uint8_t* library, uint32_t m
     return below >= above ? hal::FreeRam{ram.start, below & ~size_t(7)} : hal::FreeRam{after, above};
 }
 
+// The faces layer (Display::faces: a frame at rest copies the view's faces and draws their
+// edges over them), from the start of the free RAM when it is a quarter of it or less: its
+// colour, then its depth. Reported as a RAM region of its own ("@ram faces").
+hal::FreeRam take_faces_layer(hal::Console& con, hal::FreeRam ram, Display& d) {
+    constexpr size_t kBytes = size_t(kPixels) * (sizeof(Rgb565) + sizeof(uint16_t));
+    uint8_t* const at = reinterpret_cast<uint8_t*>((reinterpret_cast<uintptr_t>(ram.start) + 63) & ~uintptr_t(63));
+    const size_t used = size_t(at - ram.start) + kBytes;
+    if (4 * used > ram.bytes) return ram;
+    d.faces = reinterpret_cast<Rgb565*>(at);
+    d.faces_depth = reinterpret_cast<uint16_t*>(at + size_t(kPixels) * sizeof(Rgb565));
+    print(con, "@ram faces {} {}\n", hex(reinterpret_cast<uintptr_t>(at)), uint32_t(kBytes));
+    return {ram.start + used, (ram.bytes - used) & ~size_t(7)};
+}
+
 } // namespace
 
 int facet_main(hal::Board& board) {
@@ -340,6 +354,7 @@ int facet_main(hal::Board& board) {
     const uint32_t models = library_count(region, board_config::kPackBytes);
     hal::FreeRam ram = hal::free_ram();
     if (models > 0) ram = around_library(ram, region, models);
+    ram = take_faces_layer(con, ram, cfg.display);
     session.viewer = Viewer::create(cfg, ram.start, ram.bytes, &why);
     if (!session.viewer) {
         print(con, "viewer: {} ({})\n", why, why.status);

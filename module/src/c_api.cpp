@@ -164,6 +164,7 @@ facet_viewer* facet_create(const facet_config* c, void* workspace, size_t bytes,
     cfg.display.x = d.x, cfg.display.y = d.y;
     cfg.display.buffers[0] = d.buffers[0], cfg.display.buffers[1] = d.buffers[1];
     cfg.display.depth[0] = d.depth[0], cfg.display.depth[1] = d.depth[1];
+    cfg.display.faces = d.faces, cfg.display.faces_depth = d.faces_depth;
     cfg.display.mode = Flush(d.mode);
     cfg.display.flush = d.flush ? flush_thunk : nullptr;
     cfg.display.user = bridge;

@@ -26,7 +26,7 @@ void Core::relay(void* self, const Event& e) {
         // wireframe's lines where no face drawn since hides them (the edges of a face left out
         // as too small, which a whole frame draws as a speck).
         if (e.tessellated.pass == 0 && !c.user_moved_) c.fit_view(true, true);
-        c.presenter_.invalidate();
+        c.presenter_.redraw(); // (the same faces; the framer invalidates them if the view moves)
         break;
     default: break;
     }
@@ -173,7 +173,8 @@ Activity Core::step(uint32_t budget_us) {
             const bool sweeping = scheduler_.sweeping();
             (void)scheduler_.run(kTessUnits); // busy: there was a piece to do
             // A sweep's faces show as they come (Presenter::wanted) and all at its end.
-            if (sweeping && !scheduler_.sweeping() && scene_.totals().finished() != presenter_.shown_finished()) presenter_.invalidate();
+            // (The same faces: the frames since drew each as it came, the whole one its edges and specks.)
+            if (sweeping && !scheduler_.sweeping() && scene_.totals().finished() != presenter_.shown_finished()) presenter_.redraw();
             // Meshes or samples moved (a cache compacted), or a block refined: the frames whole again.
             if (scene_.moves() != seen_moves_ || scheduler_.refined() != seen_refined_) {
                 seen_moves_ = scene_.moves(), seen_refined_ = scheduler_.refined();

@@ -52,9 +52,10 @@ public:
     static constexpr uint32_t kTessUnits = 160;
 
     module::Controls& controls() { return controls_; }
-    // The view rests after a drag: drawn again whole, with what a drag leaves out (its edges).
+    // The view rests after a drag: drawn again whole, with what a drag leaves out (its edges;
+    // its faces were drawn at full detail into a faces layer, if there is one).
     void drag_ended(bool was_dragging) {
-        if (was_dragging && !controls_.dragging()) presenter_.invalidate();
+        if (was_dragging && !controls_.dragging()) presenter_.redraw();
     }
     // For tests of the parts behind the public API (the fitted view of every model).
     const module::Camera& camera() const { return camera_; }

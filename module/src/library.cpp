@@ -71,14 +71,14 @@ bool Core::tap_models(int16_t x, int16_t y) {
     case Kind::Down: o.scroll_models(int32_t(o.model_rows()) - 1); break;
     default: return true;
     }
-    presenter_.invalidate();
+    presenter_.redraw(); // (the chooser alone)
     return true;
 }
 
 void Core::toggle_models() {
     module::Overlay& o = presenter_.overlay();
     o.set_models(!o.models_open(), model_index_);
-    presenter_.invalidate();
+    presenter_.redraw(); // (the chooser alone)
 }
 
 void Viewer::unload() { static_cast<Core*>(this)->unload(); }

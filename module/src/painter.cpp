@@ -63,13 +63,16 @@ void Painter::init(const Memory& memory) {
     for (uint32_t& rgb : mem_.palette_rgb) rgb = kNoColour;
     next_palette_ = 0;
     for (ProjectedPoint& slot : mem_.points) slot.stamp = 0;
-    stamp_ = 1;
+    stamp_ = base_ = stamp_end_ = 1;
 }
 
-void Painter::next_stamp() {
-    if (++stamp_ != 0) return;
-    for (ProjectedPoint& slot : mem_.points) slot.stamp = 0; // (after 2^32 instances drawn)
-    stamp_ = 1;
+void Painter::begin_frame(uint32_t instances) {
+    if (stamp_end_ + instances + 1 < stamp_end_) { // (after 2^32 instances drawn)
+        for (ProjectedPoint& slot : mem_.points) slot.stamp = 0;
+        stamp_end_ = 1;
+    }
+    base_ = stamp_end_, stamp_ = base_;
+    stamp_end_ = base_ + instances + 1;
 }
 
 const render::Palette& Painter::palette(uint32_t rgb) {

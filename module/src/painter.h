@@ -63,9 +63,12 @@ public:
     void set_highlight(uint32_t face0, uint32_t instance0, uint32_t face1, uint32_t instance1) {
         hl_[0] = {face0, instance0}, hl_[1] = {face1, instance1};
     }
-    // The instance to draw next, and its transform from here on: the projection cache's
-    // points are from an earlier one (or another view) from now on.
-    void set_instance(uint32_t i) { instance_ = i, next_stamp(); }
+    // A frame of `instances` begins (one view): its points projected for an instance are its
+    // own in the projection cache, in each of the frame's passes over the instances (a point a
+    // face's vertex in the faces' pass is taken again for its edges, if no other took the slot).
+    void begin_frame(uint32_t instances);
+    // The instance to draw next, and its transform from here on (the same in all of a frame).
+    void set_instance(uint32_t i) { instance_ = i, stamp_ = base_ + i; }
     // Every face of the instance being drawn lies inside the view and the rows (its part's
     // sphere does: Transform::Sight::In): no face is tested on its own.
     void set_inside(bool on) { inside_ = on; }
@@ -102,7 +105,7 @@ public:
         uint32_t cached = 0, projected = 0;
     };
     PointCounts take_point_counts() { return std::exchange(point_counts_, {}); }
-    void set_point_cache(bool on) { cache_on_ = on, next_stamp(); }
+    void set_point_cache(bool on) { cache_on_ = on, begin_frame(0); }
     // Triangles and lines the rasterizer refused (outside its guard band): none, as every
     // one is projected or clipped into the band first; counted so that none goes unseen.
     uint32_t refused() const { return refused_; }
@@ -120,7 +123,6 @@ private:
     bool caching() const { return cache_on_ && mem_.points.size() == kProjectionSlots; }
     static uint32_t slot_of(const int32_t p[3]);                                  // the slot p's hash picks
     const Projected& point_in(uint32_t slot, const int32_t p[3], const Transform& t); // point(), its slot known
-    void next_stamp();
     int32_t across(const int32_t sphere_centre[3], int32_t radius, const Transform& t, Projected& centre); // on the screen (sub-pixels)
     bool lit(uint32_t f) const { // picked, or of the part chosen: in the highlight colour
         return (hl_[0].face == f && hl_[0].instance == instance_) || (hl_[1].face == f && hl_[1].instance == instance_) || part_ == instance_;
@@ -154,6 +156,8 @@ private:
     } hl_[2];
     uint32_t instance_ = 0;
     uint32_t stamp_ = 1;    // the projection cache's points of this instance's drawing carry it
+    uint32_t base_ = 1;     // the frame's first stamp (its instance i's: base_ + i)
+    uint32_t stamp_end_ = 1; // past every stamp handed out
     bool cache_on_ = true;
     Projected uncached_{};  // point()'s answer with the cache off
     PointCounts point_counts_;

@@ -14,6 +14,8 @@ Result Presenter::configure(const Display& d, uint32_t frame_budget_us, Interfac
     if (d.mode == Flush::Scanout && d.band_lines != d.height) return bad("scan-out displays take full frames (band_lines = height)");
     if (d.mode == Flush::Scanout && (d.x || d.y)) return bad("a scan-out display is the whole screen (x and y 0)");
     if (d.x + uint32_t(d.width) > 65535 || d.y + uint32_t(d.height) > 65535) return bad("the rectangle must lie within 65,535 pixels");
+    if (!d.faces != !d.faces_depth) return bad("a faces layer takes both its colour and its depth (faces, faces_depth)");
+    if (d.faces && d.band_lines != d.height) return bad("a faces layer takes full frames (band_lines = height)");
     display_ = d;
     budget_us_ = frame_budget_us;
     const bool on = interface != Interface::Off;
@@ -22,6 +24,7 @@ Result Presenter::configure(const Display& d, uint32_t frame_budget_us, Interfac
     const bool full = d.band_lines == d.height;
     incremental_ = full && (buffers_ == 1 || d.depth[1] != nullptr);
     bands_ = uint16_t((d.height + d.band_lines - 1) / d.band_lines);
+    layer_ = {d.faces, d.faces_depth, 0, 0};
     reset();
     return {};
 }
@@ -30,11 +33,12 @@ void Presenter::reset() {
     // What a flush in flight still reads stays busy until its flush_done(); the rest is free.
     for (Buffer& b : buf_) b.version = 0, b.applied = 0;
     version_ = 1;
+    ++faces_version_, layer_.version = 0, layer_.applied = 0;
     shown_version_ = shown_finished_ = 0;
     job_ = {};
 }
 
-void Presenter::invalidate() { ++version_; }
+void Presenter::invalidate() { ++version_, ++faces_version_; }
 
 bool Presenter::wanted(uint32_t finished, uint32_t total) const {
     if (job_.active) return true;
@@ -85,9 +89,24 @@ void Presenter::start(uint32_t finished) {
     job_.version = version_;
     job_.finished = finished;
     job_.applied_to = scene_.totals().done;
+    job_.faces_version = faces_version_;
     job_.face = job_.full ? 0 : buf_[b].applied;
     job_.pieces = 1; // this one
     raster_.stats = {};
+    painter_.begin_frame(uint32_t(scene_.instances().size()));
+}
+
+void Presenter::set_target() {
+    if (job_.into_layer) raster_.set_target({layer_.pixels, layer_.depth, display_.width, display_.height, 0, display_.height});
+    else set_band();
+}
+
+void Presenter::copy_layer() {
+    const uint32_t pixels = uint32_t(display_.width) * display_.height;
+    const render::Target& t = raster_.target();
+    render::copy_pixels(t.pixels, layer_.pixels, pixels);
+    static_assert(sizeof(Rgb565) == sizeof(uint16_t));
+    render::copy_pixels(reinterpret_cast<Rgb565*>(t.depth), reinterpret_cast<const Rgb565*>(layer_.depth), pixels);
 }
 
 void Presenter::set_band() {
@@ -134,6 +153,7 @@ void Presenter::judge_part(uint32_t part, const Transform& t) {
 
 bool Presenter::full_pieces(uint32_t units) {
     const auto instances = scene_.instances();
+    const bool faces = job_.stage == Job::Stage::Faces;
     uint32_t spent = 0;
     while (job_.instance < instances.size()) {
         if (!scene_.shown(job_.instance)) { // a hidden part
@@ -160,23 +180,15 @@ bool Presenter::full_pieces(uint32_t units) {
             continue;
         }
         if (job_.boxes || scene_.part_boxed(shell) || job_.tiny) {
-            // (a part left out, or brought in and not sampled yet: its box; a tiny one until it grows)
-            spent += painter_.part_box(shell, t);
+            // (a part left out, or brought in and not sampled yet: its box; a tiny one until it
+            // grows: lines, with the edges)
+            if (!faces) spent += painter_.part_box(shell, t);
             ++job_.instance;
             job_.have_transform = false;
             if (spent >= units) return false;
             continue;
         }
-        // Each face's triangles, then its edges not drawn yet over them (from its projected
-        // vertices: Painter::face_edges). In hidden line, the edges after all of the part's
-        // faces: a curved face's outline is tested against the depth beside it, which an edge
-        // drawn first would hold (a pixel of the outline lost where it meets an edge).
-        const bool edges_after = painter_.mode() == DisplayMode::HiddenLine;
-        if (job_.stage == Job::Stage::Faces) {
-            if (job_.face == 0 && job_.tri == 0) { // each edge once in this instance (an edge has two faces)
-                painter_.reset_edges(shell);
-                spent += 1 + sh.face_count / 256;
-            }
+        if (faces) { // each face's triangles
             while (job_.face < sh.face_count && spent < units) {
                 const uint32_t f = sh.first_face + job_.face;
                 if (scene_.face(f).state == FaceState::Done) { // (the others have no triangles: their edges, or a speck)
@@ -187,17 +199,16 @@ bool Presenter::full_pieces(uint32_t units) {
                     job_.tri = 0;
                 }
                 ++spent;
-                if (!edges_after) spent += painter_.face_edges(f, t, rows, true);
                 ++job_.face;
             }
-            if (job_.face < sh.face_count) return false;
-            if (edges_after) job_.stage = Job::Stage::Edges, job_.face = 0;
-        }
-        if (job_.stage == Job::Stage::Edges) {
+        } else { // each edge once in this instance (an edge has two faces), a face too small as a speck
+            if (job_.face == 0) {
+                painter_.reset_edges(shell);
+                spent += 1 + sh.face_count / 256;
+            }
             for (; job_.face < sh.face_count && spent < units; ++job_.face) spent += painter_.face_edges(sh.first_face + job_.face, t, rows, true);
-            if (job_.face < sh.face_count) return false;
-            job_.stage = Job::Stage::Faces;
         }
+        if (job_.face < sh.face_count) return false;
         ++job_.instance;
         job_.face = 0;
         job_.have_transform = false;
@@ -209,7 +220,8 @@ bool Presenter::update_pieces(uint32_t units) {
     const auto instances = scene_.instances();
     uint32_t spent = 0;
     // The faces finished since this buffer was last drawn, in every instance of their shell:
-    // each face's triangles, then its edges over them.
+    // each face's triangles, then its edges over them; into the faces layer too, if it holds
+    // the faces before them. (A layer update: the faces the layer lacks, into it alone.)
     while (job_.instance < instances.size()) {
         const Part sh = scene_.part(instances[job_.instance].shell);
         if (!scene_.shown(job_.instance)) job_.face = job_.applied_to; // a hidden part: none of its faces
@@ -223,16 +235,28 @@ bool Presenter::update_pieces(uint32_t units) {
                 painter_.set_inside(false); // (a face or two at a time: each tested)
             }
             const Rows rows = painter_.rows(job_.transform);
+            if (!job_.layer_update && job_.tri == 0 && layer_.version == job_.faces_version && job_.face >= layer_.applied) {
+                // (drawn into the layer whole, at full detail, then into the buffer as usual)
+                job_.into_layer = true;
+                set_target();
+                painter_.set_dragging(false);
+                uint32_t all;
+                (void)painter_.face(f, job_.transform, rows, 0, ~0u, all);
+                spent += all;
+                painter_.set_dragging(job_.dragging);
+                job_.into_layer = false;
+                set_target();
+            }
             uint32_t used;
             job_.tri = painter_.face(f, job_.transform, rows, job_.tri, units - spent, used);
             spent += used + 1;
             if (job_.tri < scene_.face(f).triangle_count) return false;
             job_.tri = 0;
-            spent += painter_.face_edges(f, job_.transform, rows, false);
+            if (!job_.layer_update) spent += painter_.face_edges(f, job_.transform, rows, false);
         }
         if (job_.face < job_.applied_to) return false;
         ++job_.instance;
-        job_.face = buf_[job_.buffer].applied;
+        job_.face = job_.face_start;
         job_.have_transform = false;
     }
     return true;
@@ -248,6 +272,8 @@ void Presenter::flush(uint32_t pass) {
     if (last) {
         buf_[b].version = job_.full || buf_[b].version == job_.version ? job_.version : 0;
         buf_[b].applied = job_.applied_to;
+        // An update drew its faces into the layer too, those it lacked: it holds them all now.
+        if (!job_.full && layer_.version == job_.faces_version && layer_.applied >= job_.face_start) layer_.applied = job_.applied_to;
     }
     // (in the screen's coordinates: facet's rectangle at (x, y) of it)
     display_.flush(display_.user, Area{display_.x, uint16_t(display_.y + t.y0), t.width, t.rows}, t.pixels); // may call flush_done()
@@ -297,19 +323,33 @@ void Presenter::run_piece(uint32_t units, uint32_t pass) {
     take_done();
     if (job_.active && job_.version != version_) job_.active = false; // outdated: start over
     if (!job_.active) start(scene_.totals().finished());
-    painter_.set_dragging(job_.dragging); // (one frame, one look: its bands and pieces alike)
+    // (One frame, one look: its bands and pieces alike. Faces drawn into the layer are drawn at
+    // full detail: the layer serves the frames once the drag ends.)
+    painter_.set_dragging(job_.dragging && !job_.into_layer);
     if (job_.stage == Job::Stage::Begin) {
         if (!buffer_free(job_.buffer)) return;
         set_band();
-        if (job_.full) {
+        job_.stage = Job::Stage::Faces;
+        job_.into_layer = job_.layer_update = false;
+        if (job_.full && layer_holds(job_.applied_to)) {
+            copy_layer(); // the faces kept for the view: the edges alone to draw
+            job_.stage = Job::Stage::Edges;
+        } else if (job_.full && layer_.pixels) {
+            job_.into_layer = true;
+            // The faces it lacks (drawn in a pass since), or all of them.
+            job_.layer_update = layer_.version == job_.faces_version;
+            set_target();
+            if (!job_.layer_update) painter_.background(), raster_.clear_depth();
+            painter_.set_dragging(false);
+        } else if (job_.full) {
             painter_.background();
             raster_.clear_depth();
         } else {
             catch_up();
         }
-        job_.stage = Job::Stage::Faces;
         job_.instance = 0;
-        job_.face = job_.full ? 0 : buf_[job_.buffer].applied;
+        job_.face = job_.layer_update ? layer_.applied : job_.full ? 0 : buf_[job_.buffer].applied;
+        job_.face_start = job_.face;
         job_.tri = 0;
         job_.have_transform = false;
         // Clearing a band costs about an instruction a pixel (colour and depth): a whole
@@ -319,7 +359,20 @@ void Presenter::run_piece(uint32_t units, uint32_t pass) {
         units -= spent;
     }
     if (job_.stage == Job::Stage::Faces || job_.stage == Job::Stage::Edges) {
-        if (!(job_.full ? full_pieces(units) : update_pieces(units))) return;
+        set_target(); // (the faces layer, or the band)
+        const bool done = job_.full && !job_.layer_update ? full_pieces(units) : update_pieces(units);
+        if (job_.into_layer) set_band(); // (between pieces the target is the draw buffer's)
+        if (!done) return;
+        if (job_.full && job_.stage == Job::Stage::Faces) {
+            if (job_.into_layer) { // the view's faces, kept: into the draw buffer, the edges over them
+                layer_.version = job_.faces_version, layer_.applied = job_.applied_to;
+                copy_layer();
+            }
+            job_.stage = Job::Stage::Edges;
+            job_.into_layer = job_.layer_update = false;
+            job_.instance = 0, job_.face = 0, job_.tri = 0, job_.have_transform = false;
+            return; // (the edges from the next piece on)
+        }
         job_.stage = Job::Stage::Overlay;
         return; // the overlay is a piece of its own (Work::Overlay: its cost is measured apart)
     }

@@ -8,6 +8,13 @@
 // (filling in costs those faces, not a frame), at most kProgressFrames times in a pass;
 // otherwise the whole frame is drawn again, band after band with partial rendering (then
 // progress is shown every sixteenth of the faces).
+//
+// A whole frame draws every face's triangles first, then every edge, speck and part box over
+// them: an edge shows where it is nearer than every face, whatever the order the parts come
+// in. With a faces layer (Display::faces: full frames) the first pass draws into the layer,
+// which is copied into the draw buffer before the second; while the faces stay the same (only
+// edges, the overlay, or what a drag left out change: redraw()), a whole frame is that copy
+// and the second pass alone.
 #include "camera.h"
 #include "facet/viewer.h"
 #include "overlay.h"
@@ -37,7 +44,8 @@ public:
     // What the status bar shows that the presenter does not know (the level of detail).
     void set_tolerance(float mm) { tolerance_mm_ = mm; }
     void reset();        // a new model: nothing shown, nothing drawn
-    void invalidate();   // every buffer must be drawn whole again (view, level of detail)
+    void invalidate();   // every buffer must be drawn whole again (view, level of detail), its faces too
+    void redraw() { ++version_; } // every buffer drawn whole again over the same faces (edges, overlay)
 
     static constexpr uint32_t kProgressFrames = 32; // frames filling in a model's faces, at most
     // Whether the screen is behind the model (`finished` faces of `total` done or failed).
@@ -70,14 +78,19 @@ private:
         bool active = false, full = false, boxes = false, dragging = false;
         uint8_t buffer = 0;
         uint16_t band = 0;            // full frames: the band being drawn
+        // Whole frames: Faces (every instance's faces), then Edges (every instance's edges,
+        // specks and boxes); an update: Faces (the faces since, with their edges).
         enum class Stage : uint8_t { Begin, Faces, Edges, Overlay, Flush } stage = Stage::Begin;
+        bool into_layer = false;      // the Faces stage draws into the faces layer
+        bool layer_update = false;    // and only the faces the layer lacks (done_order from face_start)
+        uint32_t face_start = 0;      // an update's (or a layer update's) first done_order index
         uint32_t instance = 0, face = 0; // cursor: the instance, and the face within its shell (or done_order index)
         uint32_t tri = 0;             // and the next triangle of that face
         bool have_transform = false;
         Transform transform{};
         Transform::Sight sight = Transform::Sight::Across; // where the instance's part lies
         bool tiny = false;            // and whether it is a few pixels across (drawn as its box)
-        uint32_t version = 0, finished = 0, applied_to = 0;
+        uint32_t version = 0, faces_version = 0, finished = 0, applied_to = 0;
         uint32_t cost_us = 0;
         uint32_t pieces = 0;          // pieces of work this frame took so far
         render::RasterStats stats;
@@ -93,8 +106,11 @@ private:
     void take_done();
     bool buffer_free(uint8_t b) const;
     void judge_part(uint32_t part, const Transform& t); // job_.sight and job_.tiny, by its sphere (none known: Across)
-    bool full_pieces(uint32_t units);   // each face and its edges (hidden line: the edges after the faces), instance by instance; true when done
-    bool update_pieces(uint32_t units); // the faces since the buffer was last drawn
+    bool full_pieces(uint32_t units);   // the stage's pass over the instances (faces, or edges); true when done
+    bool update_pieces(uint32_t units); // the faces since the buffer (or the layer) was last drawn
+    void set_target();                  // the stage's: the faces layer, or the band of the draw buffer
+    void copy_layer();                  // the faces layer into the draw buffer (colour and depth)
+    bool layer_holds(uint32_t applied) const { return layer_.pixels && layer_.version == faces_version_ && layer_.applied >= applied; }
     void flush(uint32_t pass);
 
     const Scene& scene_;
@@ -112,6 +128,13 @@ private:
     uint16_t bands_ = 1;
 
     uint32_t version_ = 1;      // the picture's state: +1 whenever every buffer must be redrawn
+    uint32_t faces_version_ = 1; // the faces' state: +1 whenever their pixels may change (invalidate())
+    struct Layer {
+        Rgb565* pixels = nullptr; // Display::faces (null: none)
+        uint16_t* depth = nullptr;
+        uint32_t version = 0;     // the faces_version_ it holds (0: none)
+        uint32_t applied = 0;     // the faces of done_order drawn into it
+    } layer_;
     struct Buffer {
         uint32_t version = 0;   // drawn for this version (0: nothing)
         uint32_t applied = 0;   // faces of done_order drawn into it

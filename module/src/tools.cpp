@@ -147,7 +147,7 @@ void Core::tool(Action a) {
     case Action::Parts:
         presenter_.overlay().set_parts(!presenter_.overlay().parts_open());
         presenter_.overlay().set_chosen(chosen_part_);
-        presenter_.invalidate();
+        presenter_.redraw(); // (the list opened or closed)
         return;
     case Action::NextPart: choose(chosen_part_ == ~0u || chosen_part_ + 1 >= parts ? 0 : chosen_part_ + 1); return;
     case Action::HidePart:
@@ -176,7 +176,7 @@ bool Core::tap_parts(int16_t x, int16_t y) {
     case Kind::Isolate: tool(Action::IsolatePart); return true;
     case Kind::All: tool(Action::ShowAllParts); return true;
     }
-    presenter_.invalidate();
+    presenter_.redraw(); // (the list scrolled)
     return true;
 }
 

@@ -127,7 +127,7 @@ void Core::set_mode(DisplayMode m) {
 void Core::set_tangent_edges(bool shown) {
     if (shown == painter_.tangent_edges()) return;
     painter_.set_tangent_edges(shown);
-    presenter_.invalidate();
+    presenter_.redraw(); // (edges alone)
 }
 
 } // namespace facet

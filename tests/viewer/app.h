@@ -45,6 +45,9 @@ struct App {
     bool late_done = false; // a DMA: flush_done() comes later (call done())
     std::vector<Rgb565> buf[2];
     std::vector<uint16_t> depth[2];
+    bool faces_layer = false;            // Display::faces (full frames)
+    std::vector<Rgb565> layer;
+    std::vector<uint16_t> layer_depth;
     std::vector<Rgb565> panel;
     const Rgb565* shown = nullptr;
     std::vector<uint64_t> workspace;
@@ -75,6 +78,10 @@ struct App {
         cfg.display.buffers[1] = buffers == 2 ? buf[1].data() : nullptr;
         cfg.display.depth[0] = depth[0].data();
         cfg.display.depth[1] = depth_per_buffer && buffers == 2 ? depth[1].data() : nullptr;
+        if (faces_layer) {
+            layer.assign(size_t(w) * h, 0), layer_depth.assign(size_t(w) * h, 0);
+            cfg.display.faces = layer.data(), cfg.display.faces_depth = layer_depth.data();
+        }
         cfg.display.mode = mode;
         cfg.display.flush = [](void* self, const Area& a, const Rgb565* px) { static_cast<App*>(self)->flushed(a, px); };
         cfg.display.user = this;

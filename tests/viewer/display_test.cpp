@@ -16,22 +16,25 @@ using namespace facet::test;
 
 TEST(Viewer, BandsGiveTheSamePixelsAsFullFrames) {
     // The same model and view through every display configuration: full frames (two buffers
-    // with a depth buffer each, or one shared depth buffer; scan-out or copy) and bands of
-    // several heights with one or two band buffers. The final pictures are identical.
+    // with a depth buffer each, or one shared depth buffer; scan-out or copy; with a faces
+    // layer or without) and bands of several heights with one or two band buffers. The final
+    // pictures are identical.
     const Bytes pack = deflate_pack(polygon_and_triangle(40));
     struct Setup {
         uint16_t lines;
         int buffers;
         Flush mode;
         bool depth_each;
+        bool layer = false;
     };
     const Setup setups[] = {{120, 2, Flush::Scanout, true}, {120, 2, Flush::Copy, false}, {120, 1, Flush::Copy, true},
                             {16, 2, Flush::Copy, false},    {7, 1, Flush::Copy, false},   {1, 2, Flush::Copy, false},
-                            {50, 2, Flush::Copy, false}};
+                            {50, 2, Flush::Copy, false},    {120, 2, Flush::Scanout, true, true}, {120, 1, Flush::Copy, true, true},
+                            {120, 2, Flush::Copy, false, true}};
     std::vector<Rgb565> reference;
     for (const Setup& s : setups) {
         App app;
-        app.lines = s.lines, app.buffers = s.buffers, app.mode = s.mode;
+        app.lines = s.lines, app.buffers = s.buffers, app.mode = s.mode, app.faces_layer = s.layer;
         ASSERT_TRUE(app.create(s.depth_each).ok());
         ASSERT_TRUE(app.load(pack).ok());
         app.run();
@@ -45,7 +48,45 @@ TEST(Viewer, BandsGiveTheSamePixelsAsFullFrames) {
             for (size_t i = 0; i < got.size(); ++i) lit += got[i] != got[0];
             EXPECT_GT(lit, got.size() / 20) << "the picture shows something";
         }
-        EXPECT_EQ(got, reference) << "bands of " << s.lines << ", " << s.buffers << " buffers";
+        EXPECT_EQ(got, reference) << "bands of " << s.lines << ", " << s.buffers << " buffers" << (s.layer ? ", a faces layer" : "");
+    }
+}
+
+TEST(Viewer, AFrameAtRestDrawsItsEdgesOverTheFacesKeptForTheView) {
+    // With a faces layer, a whole frame that changes no face (tangent edges hidden and shown,
+    // the end of a drag) sets up no triangle: the layer is copied and the edges drawn over it.
+    // Its pictures are those of a viewer without the layer, which draws every face again; a
+    // change of view or of display mode draws the faces again (into the layer).
+    for (const auto& [name, bytes] : {std::pair<const char*, Bytes>{"two blocks", two_blocks()}, {"tube", tube()}}) {
+        SCOPED_TRACE(name);
+        std::vector<std::vector<Rgb565>> screens[2];
+        std::vector<uint32_t> triangles; // the layered viewer's last whole frame, at each look
+        for (int layered = 0; layered < 2; ++layered) {
+            App app;
+            app.faces_layer = layered == 1;
+            ASSERT_TRUE(app.create().ok());
+            ASSERT_TRUE(app.load(bytes).ok());
+            app.run();
+            auto look = [&]() {
+                app.events.clear();
+                app.run();
+                screens[layered].push_back(app.screen());
+                if (!layered) return;
+                const Event* frame = app.last_full_frame();
+                triangles.push_back(frame ? frame->frame.triangles + frame->frame.culled : ~0u);
+            };
+            app.v->key('d'), look();                              // a view change: the faces drawn
+            app.v->set_tangent_edges(false), look();              // at rest: edges alone
+            app.v->set_tangent_edges(true), look();
+            app.v->key('m'), look();                              // another display mode: the faces drawn
+        }
+        ASSERT_EQ(screens[0].size(), screens[1].size());
+        for (size_t k = 0; k < screens[0].size(); ++k) EXPECT_TRUE(screens[0][k] == screens[1][k]) << "picture " << k;
+        ASSERT_EQ(triangles.size(), 4u);
+        EXPECT_GT(triangles[0], 0u) << "a view change draws the faces";
+        EXPECT_EQ(triangles[1], 0u) << "tangent edges hidden: the faces kept";
+        EXPECT_EQ(triangles[2], 0u) << "and shown again";
+        EXPECT_GT(triangles[3], 0u) << "a display mode draws the faces";
     }
 }
 

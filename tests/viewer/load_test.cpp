@@ -120,6 +120,15 @@ TEST(Viewer, CreateRefusesMissingOrSmallBuffers) {
     EXPECT_EQ(Viewer::create(c, ws.data(), ws.size() * 8, &why), nullptr);
     c = config(), c.display.mode = Flush::Scanout, c.display.band_lines = 16;
     EXPECT_EQ(Viewer::create(c, ws.data(), ws.size() * 8, &why), nullptr) << "scan-out takes full frames";
+    std::vector<Rgb565> layer(160 * 120);
+    std::vector<uint16_t> layer_depth(160 * 120);
+    c = config(), c.display.faces = layer.data(), c.display.faces_depth = layer_depth.data();
+    EXPECT_NE(Viewer::create(c, ws.data(), ws.size() * 8, &why), nullptr) << "a faces layer: " << text(why);
+    c.display.band_lines = 16;
+    EXPECT_EQ(Viewer::create(c, ws.data(), ws.size() * 8, &why), nullptr) << "a faces layer takes full frames";
+    EXPECT_NE(text(why).find("full frames"), std::string::npos) << text(why);
+    c = config(), c.display.faces = layer.data();
+    EXPECT_EQ(Viewer::create(c, ws.data(), ws.size() * 8, &why), nullptr) << "a faces layer without its depth";
     c = config(), c.capacity.face_points = 40000;
     EXPECT_EQ(Viewer::create(c, ws.data(), ws.size() * 8, &why), nullptr) << "a 16-bit arena";
 }

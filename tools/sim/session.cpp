@@ -124,6 +124,10 @@ bool Session::open(const Options& o, std::string& error) {
     cfg.display.buffers[0] = buffers_[0].data(), cfg.display.buffers[1] = buffers_[1].data();
     cfg.display.depth[0] = depth_[0].data();
     cfg.display.depth[1] = o.band_lines ? nullptr : depth_[1].data(); // bands share one band-sized depth buffer
+    if (!o.band_lines) { // full frames: a faces layer, as the firmware has
+        faces_.assign(size_t(w) * h, 0), faces_depth_.assign(size_t(w) * h, 0);
+        cfg.display.faces = faces_.data(), cfg.display.faces_depth = faces_depth_.data();
+    }
     cfg.display.mode = facet::Flush::Copy;
     cfg.display.flush = flush;
     cfg.display.user = this;

@@ -70,6 +70,8 @@ private:
     std::vector<uint8_t> workspace_storage_;
     std::vector<facet::Rgb565> buffers_[2];
     std::vector<uint16_t> depth_[2];
+    std::vector<facet::Rgb565> faces_;     // the faces layer (full frames, as the firmware's)
+    std::vector<uint16_t> faces_depth_;
     std::vector<uint64_t> file_;   // the pack file or library (8-byte aligned)
     std::vector<uint32_t> memory_; // a deflated pack, inflated
     std::vector<facet::Rgb565> screen_;

@@ -66,6 +66,11 @@ typedef struct {
     void (*flush)(void *user, const facet_area *area, const facet_rgb565 *pixels);
     void *user;
     uint16_t x, y; /* facet's rectangle at (x, y) of the screen (copy mode): flush areas and touch in the screen's */
+    /* A faces layer (optional; full frames): width * height pixels and depth entries where the
+       view's faces are kept apart from their edges; a frame at rest copies it and draws the
+       edges over it. NULL: every frame draws its faces. */
+    facet_rgb565 *faces;
+    uint16_t *faces_depth;
 } facet_display;
 
 typedef enum {

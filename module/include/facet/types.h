@@ -45,6 +45,13 @@ struct Display {
     void (*flush)(void* user, const Area& area, const Rgb565* pixels) = nullptr;
     void* user = nullptr;
     uint16_t x = 0, y = 0; // facet's rectangle at (x, y) of the screen (Copy): flush areas and touch in the screen's
+    // A faces layer (optional; full frames): width * height pixels and as many depth entries,
+    // where the view's faces are drawn apart from their edges. While the faces stay the same (a
+    // frame at rest: edges shown or hidden, the overlay, the end of a drag or of a pass), a frame
+    // is this layer copied and the edges drawn over it: about half a frame's work on a large
+    // model. Null: every frame draws its faces.
+    Rgb565* faces = nullptr;
+    uint16_t* faces_depth = nullptr;
 };
 
 enum class Work : uint8_t { Unpack, Sampling, Face, Frame, Update, Fit, Overlay }; // pieces of work (profiling)
