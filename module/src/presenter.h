@@ -83,6 +83,7 @@ private:
         enum class Stage : uint8_t { Begin, Faces, Edges, Overlay, Flush } stage = Stage::Begin;
         bool into_layer = false;      // the Faces stage draws into the faces layer
         bool layer_update = false;    // and only the faces the layer lacks (done_order from face_start)
+        bool copy = false;            // the faces layer to copy into the draw buffer (a piece of its own)
         uint32_t face_start = 0;      // an update's (or a layer update's) first done_order index
         uint32_t instance = 0, face = 0; // cursor: the instance, and the face within its shell (or done_order index)
         uint32_t tri = 0;             // and the next triangle of that face
