@@ -232,6 +232,7 @@ private:
     void highlight();            // the painter's highlight from picked_
     void show_measurement();
     void focus(); // the painter's chosen part and see-through focus
+    void highlight_changed(); // the picked faces or the chosen part changed: a whole frame (the faces kept, but in see-through mode)
     void section_next();
     void section_at(float at, bool relative);
     void section_changed();

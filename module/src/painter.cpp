@@ -223,6 +223,7 @@ uint32_t Painter::face(uint32_t f, const Transform& t, Rows rows, uint32_t from,
             // edge: a cylinder's silhouette) still read against each other.
             P[v].s.shade = white ? uint8_t(200 + ((t.shade(verts[v].n) * 55) >> 8)) : t.shade(verts[v].n);
             if (outlines) P[v].front = t.facing(verts[v].p, verts[v].n) > 0;
+            if (nearer_ && P[v].s.z) --P[v].s.z; // (the same depths less one: its own pixels pass, no other's)
         }
         spent = 1 + (F.vertex_count >> (outlines ? 1 : 2));
     }
@@ -245,6 +246,26 @@ uint32_t Painter::face(uint32_t f, const Transform& t, Rows rows, uint32_t from,
     if (outlines && k == F.triangle_count) spent += silhouette(F, t);
     spent += (raster_.stats.pixels - pixels) / 64;
     return k;
+}
+
+uint32_t Painter::highlighted_faces(uint32_t first, uint32_t count, const Transform& t, Rows rows) {
+    if (mode_ == DisplayMode::Wireframe) return 0;
+    uint32_t work = 0;
+    auto again = [&](uint32_t f) {
+        uint32_t used;
+        (void)face(f, t, rows, 0, ~0u, used);
+        work += used + 1;
+    };
+    nearer_ = true;
+    if (part_ == instance_) {
+        for (uint32_t f = first; f < first + count; ++f) again(f);
+    } else {
+        for (const Highlight& h : hl_) {
+            if (h.instance == instance_ && h.face >= first && h.face < first + count) again(h.face);
+        }
+    }
+    nearer_ = false;
+    return work;
 }
 
 // Where a triangle's vertex normals turn from the eye to away from it, the surface's outline

@@ -75,6 +75,14 @@ public:
     // The part chosen in the parts list (every face in the highlight colour; ~0u: none), and
     // the part see-through mode draws solid (~0u: every part see-through).
     void set_part(uint32_t instance) { part_ = instance; }
+    // Faces drawn into a faces layer take their own colours (no highlight: the layer holds the
+    // view's faces whatever is picked); the highlighted ones are drawn again over its copy.
+    void set_plain(bool on) { plain_ = on; }
+    // The highlighted faces of the instance being drawn (picked, or all of the part chosen),
+    // among its part's faces [first, first + count), drawn again over a copy of the faces
+    // layer, a depth unit nearer than their own (so a pixel where one shows takes its
+    // highlight, and no other). Returns the work.
+    uint32_t highlighted_faces(uint32_t first, uint32_t count, const Transform& t, Rows rows);
     void set_focus(uint32_t instance) { focus_ = instance; }
     DisplayMode mode() const { return mode_; }
 
@@ -125,7 +133,7 @@ private:
     const Projected& point_in(uint32_t slot, const int32_t p[3], const Transform& t); // point(), its slot known
     int32_t across(const int32_t sphere_centre[3], int32_t radius, const Transform& t, Projected& centre); // on the screen (sub-pixels)
     bool lit(uint32_t f) const { // picked, or of the part chosen: in the highlight colour
-        return (hl_[0].face == f && hl_[0].instance == instance_) || (hl_[1].face == f && hl_[1].instance == instance_) || part_ == instance_;
+        return !plain_ && ((hl_[0].face == f && hl_[0].instance == instance_) || (hl_[1].face == f && hl_[1].instance == instance_) || part_ == instance_);
     }
     uint32_t speck(uint32_t f, const Transform& t, int32_t pixels); // a face under `pixels` across: the work (0: not one)
     // Whether a sphere is under `pixels` across on the screen (its centre projected into `centre`).
@@ -162,6 +170,8 @@ private:
     Projected uncached_{};  // point()'s answer with the cache off
     PointCounts point_counts_;
     bool inside_ = false;
+    bool plain_ = false;      // set_plain()
+    bool nearer_ = false;     // highlighted_faces(): vertices a depth unit nearer
     uint32_t part_ = ~0u, focus_ = ~0u;
     uint32_t refused_ = 0;
 };

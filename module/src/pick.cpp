@@ -47,7 +47,7 @@ void Core::picked(const Event& e) {
     }
     highlight();
     show_measurement();
-    presenter_.invalidate();
+    highlight_changed();
 }
 
 void Core::highlight() {
@@ -152,7 +152,7 @@ void Core::set_measuring(bool on) {
     if (picked_count_ > 1) picked_count_ = 1; // measuring starts from the face picked, if any
     show_measurement();
     highlight();
-    presenter_.invalidate();
+    highlight_changed();
 }
 
 Measurement Core::measure(const FaceFacts& a, const FaceFacts& b) const {

@@ -205,6 +205,8 @@ bool Presenter::full_pieces(uint32_t units) {
             if (job_.face == 0) {
                 painter_.reset_edges(shell);
                 spent += 1 + sh.face_count / 256;
+                // Faces from the layer: the highlighted ones in their colour over them.
+                if (job_.from_layer) spent += painter_.highlighted_faces(sh.first_face, sh.face_count, t, rows);
             }
             for (; job_.face < sh.face_count && spent < units; ++job_.face) spent += painter_.face_edges(sh.first_face + job_.face, t, rows, true);
         }
@@ -317,6 +319,7 @@ void Presenter::run_piece(uint32_t units, uint32_t pass) {
         set_band();
         job_.stage = Job::Stage::Faces;
         job_.into_layer = job_.layer_update = false;
+        job_.from_layer = job_.full && layer_.pixels;
         if (job_.full && layer_holds(job_.applied_to)) {
             copy_layer(); // the faces kept for the view: the edges alone to draw
             job_.stage = Job::Stage::Edges;
@@ -327,6 +330,7 @@ void Presenter::run_piece(uint32_t units, uint32_t pass) {
             set_target();
             if (!job_.layer_update) painter_.background(), raster_.clear_depth();
             painter_.set_dragging(false);
+            painter_.set_plain(true);
         } else if (job_.full) {
             painter_.background();
             raster_.clear_depth();
@@ -347,6 +351,7 @@ void Presenter::run_piece(uint32_t units, uint32_t pass) {
         if (spent * 2 >= units) return;
         units -= spent;
     }
+    painter_.set_plain(job_.into_layer);
     if (job_.copy) { // the view's faces, kept, into the draw buffer
         set_band();
         copy_layer();

@@ -95,7 +95,14 @@ void Core::choose(uint32_t part) {
     chosen_part_ = scene_.loaded() && part < scene_.instances().size() ? part : ~0u;
     presenter_.overlay().set_chosen(chosen_part_);
     focus();
-    presenter_.invalidate();
+    highlight_changed();
+}
+
+void Core::highlight_changed() {
+    // The faces keep their pixels but the highlighted ones (drawn over the faces layer), unless
+    // see-through mode draws the part in focus solid and the rest see-through.
+    if (painter_.mode() == DisplayMode::SeeThrough) presenter_.invalidate();
+    else presenter_.redraw();
 }
 
 void Core::focus() {

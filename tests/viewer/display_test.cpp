@@ -9,6 +9,7 @@
 #include <cstring>
 #include <map>
 #include <memory>
+#include <string>
 
 using namespace facet;
 using namespace facet::geom;
@@ -54,9 +55,10 @@ TEST(Viewer, BandsGiveTheSamePixelsAsFullFrames) {
 
 TEST(Viewer, AFrameAtRestDrawsItsEdgesOverTheFacesKeptForTheView) {
     // With a faces layer, a whole frame that changes no face (tangent edges hidden and shown,
-    // the end of a drag) sets up no triangle: the layer is copied and the edges drawn over it.
-    // Its pictures are those of a viewer without the layer, which draws every face again; a
-    // change of view or of display mode draws the faces again (into the layer).
+    // the end of a drag) sets up no triangle: the layer is copied and the edges drawn over it;
+    // a face picked is drawn again over it in its highlight, no other. Its pictures are those
+    // of a viewer without the layer, which draws every face again; a change of view or of
+    // display mode draws the faces again (into the layer).
     for (const auto& [name, bytes] : {std::pair<const char*, Bytes>{"two blocks", two_blocks()}, {"tube", tube()}}) {
         SCOPED_TRACE(name);
         std::vector<std::vector<Rgb565>> screens[2];
@@ -78,15 +80,27 @@ TEST(Viewer, AFrameAtRestDrawsItsEdgesOverTheFacesKeptForTheView) {
             app.v->key('d'), look();                              // a view change: the faces drawn
             app.v->set_tangent_edges(false), look();              // at rest: edges alone
             app.v->set_tangent_edges(true), look();
+            const FaceFacts at = app.v->pick(int16_t(app.w / 2), int16_t(app.h / 2)); // the face at the middle
+            ASSERT_TRUE(at.hit);
+            ASSERT_TRUE(app.v->select(at.part, at.face).ok());    // picked: it alone drawn again, highlighted
+            look();
+            app.v->clear_selection(), look();                     // and let go: none
             app.v->key('m'), look();                              // another display mode: the faces drawn
         }
         ASSERT_EQ(screens[0].size(), screens[1].size());
         for (size_t k = 0; k < screens[0].size(); ++k) EXPECT_TRUE(screens[0][k] == screens[1][k]) << "picture " << k;
-        ASSERT_EQ(triangles.size(), 4u);
+        EXPECT_FALSE(screens[1][3] == screens[1][4]) << "the pick shows";
+        ASSERT_EQ(triangles.size(), 6u);
         EXPECT_GT(triangles[0], 0u) << "a view change draws the faces";
         EXPECT_EQ(triangles[1], 0u) << "tangent edges hidden: the faces kept";
         EXPECT_EQ(triangles[2], 0u) << "and shown again";
-        EXPECT_GT(triangles[3], 0u) << "a display mode draws the faces";
+        EXPECT_GT(triangles[3], 0u) << "the picked face drawn again";
+        EXPECT_LE(triangles[3], triangles[0]);
+        if (std::string(name) == "two blocks") {
+            EXPECT_LT(triangles[3], triangles[0]) << "and no other";
+        }
+        EXPECT_EQ(triangles[4], 0u) << "no face highlighted";
+        EXPECT_GT(triangles[5], 0u) << "a display mode draws the faces";
     }
 }
 
