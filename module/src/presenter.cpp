@@ -202,18 +202,19 @@ bool Presenter::full_pieces(uint32_t units) {
                 ++job_.face;
             }
         } else { // each edge once in this instance (an edge has two faces), a face too small as a speck
-            if (job_.face == 0) {
+            if (!job_.begun) { // (once: a piece that ends here goes on with the edges)
                 painter_.reset_edges(shell);
                 spent += 1 + sh.face_count / 256;
                 // Faces from the layer: the highlighted ones in their colour over them.
                 if (job_.from_layer) spent += painter_.highlighted_faces(sh.first_face, sh.face_count, t, rows);
+                job_.begun = true;
             }
             for (; job_.face < sh.face_count && spent < units; ++job_.face) spent += painter_.face_edges(sh.first_face + job_.face, t, rows, true);
         }
         if (job_.face < sh.face_count) return false;
         ++job_.instance;
         job_.face = 0;
-        job_.have_transform = false;
+        job_.have_transform = false, job_.begun = false;
     }
     return true;
 }
@@ -344,7 +345,7 @@ void Presenter::run_piece(uint32_t units, uint32_t pass) {
         job_.face = job_.layer_update ? layer_.applied : job_.full ? 0 : buf_[job_.buffer].applied;
         job_.face_start = job_.face;
         job_.tri = 0;
-        job_.have_transform = false;
+        job_.have_transform = false, job_.begun = false;
         // Clearing a band costs about an instruction a pixel (colour and depth): a whole
         // 640x480 frame is 0.4 M on the ARM926, a piece of its own (a piece stays near 1 M).
         const uint32_t spent = 1 + uint32_t(raster_.target().rows) * display_.width / 1024;
@@ -376,7 +377,7 @@ void Presenter::run_piece(uint32_t units, uint32_t pass) {
             job_.copy = job_.into_layer;
             job_.stage = Job::Stage::Edges;
             job_.into_layer = job_.layer_update = false;
-            job_.instance = 0, job_.face = 0, job_.tri = 0, job_.have_transform = false;
+            job_.instance = 0, job_.face = 0, job_.tri = 0, job_.have_transform = false, job_.begun = false;
             return;
         }
         job_.stage = Job::Stage::Overlay;
