@@ -223,7 +223,9 @@ uint32_t Painter::face(uint32_t f, const Transform& t, Rows rows, uint32_t from,
             // edge: a cylinder's silhouette) still read against each other.
             P[v].s.shade = white ? uint8_t(200 + ((t.shade(verts[v].n) * 55) >> 8)) : t.shade(verts[v].n);
             if (outlines) P[v].front = t.facing(verts[v].p, verts[v].n) > 0;
-            if (nearer_ && P[v].s.z) --P[v].s.z; // (the same depths less one: its own pixels pass, no other's)
+        }
+        if (nearer_) { // (the same depths less one: its own pixels pass, no other's)
+            for (uint32_t v = 0; v < F.vertex_count; ++v) P[v].s.z -= P[v].s.z > 0;
         }
         spent = 1 + (F.vertex_count >> (outlines ? 1 : 2));
     }

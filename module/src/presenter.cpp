@@ -206,7 +206,7 @@ bool Presenter::full_pieces(uint32_t units) {
                 painter_.reset_edges(shell);
                 spent += 1 + sh.face_count / 256;
                 // Faces from the layer: the highlighted ones in their colour over them.
-                if (job_.from_layer) spent += painter_.highlighted_faces(sh.first_face, sh.face_count, t, rows);
+                if (layer_.pixels) spent += painter_.highlighted_faces(sh.first_face, sh.face_count, t, rows);
                 job_.begun = true;
             }
             for (; job_.face < sh.face_count && spent < units; ++job_.face) spent += painter_.face_edges(sh.first_face + job_.face, t, rows, true);
@@ -312,15 +312,11 @@ void Presenter::run_piece(uint32_t units, uint32_t pass) {
     take_done();
     if (job_.active && job_.version != version_) job_.active = false; // outdated: start over
     if (!job_.active) start(scene_.totals().finished());
-    // (One frame, one look: its bands and pieces alike. Faces drawn into the layer are drawn at
-    // full detail: the layer serves the frames once the drag ends.)
-    painter_.set_dragging(job_.dragging && !job_.into_layer);
     if (job_.stage == Job::Stage::Begin) {
         if (!buffer_free(job_.buffer)) return;
         set_band();
         job_.stage = Job::Stage::Faces;
         job_.into_layer = job_.layer_update = false;
-        job_.from_layer = job_.full && layer_.pixels;
         if (job_.full && layer_holds(job_.applied_to)) {
             copy_layer(); // the faces kept for the view: the edges alone to draw
             job_.stage = Job::Stage::Edges;
@@ -330,8 +326,6 @@ void Presenter::run_piece(uint32_t units, uint32_t pass) {
             job_.layer_update = layer_.version == job_.faces_version;
             set_target();
             if (!job_.layer_update) painter_.background(), raster_.clear_depth();
-            painter_.set_dragging(false);
-            painter_.set_plain(true);
         } else if (job_.full) {
             painter_.background();
             raster_.clear_depth();
@@ -352,6 +346,9 @@ void Presenter::run_piece(uint32_t units, uint32_t pass) {
         if (spent * 2 >= units) return;
         units -= spent;
     }
+    // (One frame, one look: its bands and pieces alike. Faces drawn into the layer are drawn at
+    // full detail, the layer serving the frames once a drag ends, and in their own colours.)
+    painter_.set_dragging(job_.dragging && !job_.into_layer);
     painter_.set_plain(job_.into_layer);
     if (job_.copy) { // the view's faces, kept, into the draw buffer
         set_band();

@@ -84,8 +84,7 @@ private:
         bool into_layer = false;      // the Faces stage draws into the faces layer
         bool layer_update = false;    // and only the faces the layer lacks (done_order from face_start)
         bool copy = false;            // the faces layer to copy into the draw buffer (a piece of its own)
-        bool from_layer = false;      // a whole frame whose faces come from the layer (highlights drawn over)
-        bool begun = false;           // the Edges stage: the instance's edges reset (and its highlights drawn)
+        bool begun = false;           // the Edges stage: the instance's edges reset (and, from a layer, its highlights drawn)
         uint32_t face_start = 0;      // an update's (or a layer update's) first done_order index
         uint32_t instance = 0, face = 0; // cursor: the instance, and the face within its shell (or done_order index)
         uint32_t tri = 0;             // and the next triangle of that face
