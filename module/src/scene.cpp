@@ -210,6 +210,13 @@ void Scene::Box::add(const int32_t p[3]) {
     }
 }
 
+void Scene::Box::add(const Box& b) {
+    for (int k = 0; k < 3; ++k) {
+        lo[k] = b.lo[k] < lo[k] ? b.lo[k] : lo[k];
+        hi[k] = b.hi[k] > hi[k] ? b.hi[k] : hi[k];
+    }
+}
+
 void Scene::fit_bounds(bool sampled) {
     start_bounds(sampled);
     while (!bound(UINT32_MAX)) {
@@ -248,6 +255,8 @@ bool Scene::bound(uint32_t points) {
                 continue;
             }
             const pack::Face& F = pack.faces()[b.face - block.first_face];
+            Box face_box; // (its sampled edges': a face waiting for its mesh is given its sphere by it)
+            bool all_sampled = b.sampled;
             for (uint32_t l = F.first_loop; l < F.first_loop + F.loop_count; ++l) {
                 const pack::Loop& L = pack.loops()[l];
                 for (uint32_t c = L.first_coedge; c < L.first_coedge + L.coedge_count; ++c) {
@@ -255,10 +264,11 @@ bool Scene::bound(uint32_t points) {
                     const uint32_t n = b.sampled ? mem_.samples.count[e] : 0;
                     if (n) {
                         const uint32_t first = mem_.samples.first[e];
-                        for (uint32_t i = first; i < first + n; ++i) b.box.add(&mem_.sample_q[3 * i]);
+                        for (uint32_t i = first; i < first + n; ++i) face_box.add(&mem_.sample_q[3 * i]);
                         points = points > n ? points - n : 0;
                         continue;
                     }
+                    all_sampled = false;
                     for (const uint32_t vi : {pack.edges()[local].v0, pack.edges()[local].v1}) { // not sampled yet: the ends
                         const float* q = pack.vertices()[vi].p;
                         const float f[3] = {q[0] * inv, q[1] * inv, q[2] * inv};
@@ -269,6 +279,8 @@ bool Scene::bound(uint32_t points) {
                     points = points > 8 ? points - 8 : 0;
                 }
             }
+            if (all_sampled && info.state == FaceState::Pending) set_edge_sphere(b.face, face_box);
+            b.box.add(face_box);
         }
         const Box& box = b.box;
         if (!box.empty()) {
@@ -388,6 +400,10 @@ void Scene::bound_by_edges(uint32_t f) {
             for (uint32_t k = 0; k < n; ++k) box.add(sample_q(first + k));
         }
     }
+    set_edge_sphere(f, box);
+}
+
+void Scene::set_edge_sphere(uint32_t f, const Box& box) {
     FaceInfo& info = mem_.faces[f];
     info.rgb = colour_of(f);
     info.planar = surface_type(f) == uint8_t(pack::SurfaceType::Plane);

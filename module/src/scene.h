@@ -242,6 +242,7 @@ public:
     void mark_failed(uint32_t face);
     // A face not tessellated: its sphere from its edges' samples (radius 0 when it has none),
     // kept in its FaceInfo; then, if deferred, counted so until it is appended.
+    // bound() gives a waiting face (Pending) its sphere the same way as it passes its samples.
     void bound_by_edges(uint32_t face);
     void defer(uint32_t face);
 
@@ -287,7 +288,11 @@ private:
         int32_t lo[3] = {INT32_MAX, INT32_MAX, INT32_MAX}, hi[3] = {INT32_MIN, INT32_MIN, INT32_MIN};
         bool empty() const { return lo[0] > hi[0]; }
         void add(const int32_t p[3]);
+        void add(const Box& b); // (an empty one adds nothing)
     };
+    // The face's sphere from the box of its edges' samples (radius 0 when empty), its colour and
+    // whether it is planar, in its FaceInfo (bound_by_edges, bound).
+    void set_edge_sphere(uint32_t face, const Box& box);
     struct Bounds { // where start_bounds()/bound() stand
         bool active = false, sampled = false, in_part = false;
         uint32_t part = 0, face = 0;

@@ -199,7 +199,9 @@ bool Scheduler::next_face() {
     for (uint32_t checked = 0; face_ < face_end_ || (!refining() && next_block()); ++face_) {
         const FaceState state = scene_.face(face_).state;
         if (state == FaceState::Failed || state == FaceState::Absent || (state == FaceState::Done && !refining())) continue;
-        if (state == FaceState::Pending || refining()) scene_.bound_by_edges(face_); // (a refined block's by its new samples)
+        // (A refined block's by its new samples; a waiting face's sphere may have come with the
+        // model's bounds, from the same samples.)
+        if ((state == FaceState::Pending && scene_.face(face_).radius == 0) || refining()) scene_.bound_by_edges(face_);
         if (filter_(face_)) return true;
         scene_.evict(face_); // (a refined block's face the view no longer wants: its old mesh would not meet the new ones)
         scene_.defer(face_);
