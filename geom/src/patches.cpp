@@ -1,65 +1,43 @@
 #include "geom/patches.h"
 
 #include "bspline.h"
+#include "fixed_spans.h"
 #include "geom/fmath.h"
 
 #include <algorithm>
 #include <bit>
 
 namespace facet::geom {
+using namespace detail;
 namespace {
 
 constexpr int kN = kMaxPatchDegree + 1;
 constexpr uint32_t kEmpty = 0xFFFFFFFFu;
-constexpr float kOne = 1073741824.0f; // 2^30: the local parameters' 1
-constexpr int32_t kOneQ = 1 << 30;
 
-// 2^30 over a span's length, kept finite: a span under 3e-30 long (a corrupt or absurd knot
-// vector) would make it infinite, and the local parameters NaN.
-inline float per_span(float h) {
-    const float r = kOne / h;
-    return r < 1e30f ? r : 1e30f;
-}
-
-// A coordinate's exponent in a slot's exponent word (one signed byte each), in and out.
-inline uint32_t exponent_bits(int e, int d) { return uint32_t(uint8_t(int8_t(e))) << (8 * d); }
-inline int exponent_at(uint32_t exps, int d) { return int8_t(uint8_t(exps >> (8 * d))); }
-
-// Whether x lies in the span [knots[s], knots[s+1]), by order_key (the knots are finite, the
-// pack's check; a NaN is in no span, as by float compares).
-inline bool in_span(float x, const float* knots, int s) {
-    const OrderKey k = order_key(x);
-    return k >= order_key(knots[s]) && k < order_key(knots[s + 1]);
-}
-
-// a x t / 2^30 for t in [0, 2^30]: |result| <= |a|.
-inline int32_t mulq(int32_t a, int32_t t) { return int32_t((int64_t(a) * t) >> 30); }
-
-// The p + 1 basis functions that are non-zero on span s, N[s-p+a] for a = 0..p, as polynomials
-// in the span's local parameter t = (u - knots[s]) / (knots[s+1] - knots[s]): M[a][k] is the
-// coefficient of t^k. The Cox-de Boor recursion (The NURBS Book A2.2) on polynomials: each
-// step multiplies by the linear factors (u - k_i) / (k_{i+j} - k_i) and
-// (k_{i+j+1} - u) / (k_{i+j+1} - k_{i+1}), written in t.
-void span_polynomials(const float* knots, int p, int s, float M[kN][kN]) {
-    const float h = knots[s + 1] - knots[s], ks = knots[s];
+// The p + 1 basis functions that are non-zero on a span, N[s-p+a] for a = 0..p, as polynomials
+// in the span's local parameter t in [0, 1]: M[a][k] is the coefficient of t^k. K: the knots
+// s - p + 1 to s + p over the span (K[p - 1] = 0, K[p] = 1; PatchCache::SpanKnots). The
+// Cox-de Boor recursion (The NURBS Book A2.2) on polynomials: each step multiplies by the linear
+// factors (t - K_i) / (K_{i+j} - K_i) and (K_{i+j+1} - t) / (K_{i+j+1} - K_{i+1}).
+void span_polynomials(const float* K, int p, float M[kN][kN]) {
     float P[kN][kN] = {}, Q[kN][kN];
     P[0][0] = 1;
     for (int j = 1; j <= p; ++j) {
         for (int r = 0; r <= j; ++r)
             for (int k = 0; k <= j; ++k) Q[r][k] = 0;
         for (int r = 0; r <= j; ++r) {
-            const int i = s - j + r;
+            const int i = p - 1 - j + r; // (the knot s - j + r)
             if (r >= 1) { // N[i, j-1] = P[r-1]
-                const float d = knots[i + j] - knots[i];
+                const float d = K[i + j] - K[i];
                 if (d != 0) {
-                    const float a0 = (ks - knots[i]) / d, a1 = h / d;
+                    const float a1 = 1 / d, a0 = -K[i] * a1;
                     for (int k = 0; k < j; ++k) Q[r][k] += P[r - 1][k] * a0, Q[r][k + 1] += P[r - 1][k] * a1;
                 }
             }
             if (r <= j - 1) { // N[i+1, j-1] = P[r]
-                const float d = knots[i + j + 1] - knots[i + 1];
+                const float d = K[i + j + 1] - K[i + 1];
                 if (d != 0) {
-                    const float b0 = (knots[i + j + 1] - ks) / d, b1 = -h / d;
+                    const float b1 = -1 / d, b0 = -K[i + j + 1] * b1;
                     for (int k = 0; k < j; ++k) Q[r][k] += P[r][k] * b0, Q[r][k + 1] += P[r][k] * b1;
                 }
             }
@@ -69,118 +47,6 @@ void span_polynomials(const float* knots, int p, int s, float M[kN][kN]) {
     }
     for (int a = 0; a <= p; ++a)
         for (int k = 0; k <= p; ++k) M[a][k] = P[a][k];
-}
-
-// Bézier extraction of one span, on one row of control points (The NURBS Book A5.1, knot
-// insertion): the span's ends a = knots[s] < b = knots[s+1] are inserted into the local knot
-// vector until each has multiplicity p; the p + 1 points then left over the span are its
-// Bézier control points. Only convex combinations with weights in [0, 1] (the knots are
-// ordered): the points stay within the row's hull and the float rounding stays at its size.
-// row: p + 1 points of `dims` floats, `stride` floats apart, read and overwritten.
-constexpr int kBN = kMaxBezierDegree + 1;
-void extract_span(const float* knots, int p, int s, float* row, int stride, int dims) {
-    float T[4 * kBN], Q[3 * kBN][4];
-    int nt = 2 * p + 2, nq = p + 1;
-    for (int i = 0; i < nt; ++i) T[i] = knots[s - p + i];
-    for (int i = 0; i < nq; ++i)
-        for (int d = 0; d < dims; ++d) Q[i][d] = row[i * stride + d];
-    int span_at = 0; // where the span [a, b) starts once a has multiplicity p: its last a
-    const float ends[2] = {T[p], T[p + 1]};
-    for (int end = 0; end < 2; ++end) {
-        const float x = ends[end];
-        const OrderKey kx = order_key(x); // (knots are finite: the pack's check)
-        int k = 0, m = 0; // T[k] <= x < T[k+1]; m: x's multiplicity (an insertion adds one to each)
-        for (int i = 0; i < nt; ++i) {
-            const OrderKey ki = order_key(T[i]);
-            if (ki <= kx) k = i;
-            m += ki == kx;
-        }
-        for (; m < p; ++m, ++k, ++nt, ++nq) {
-            for (int i = nq; i > k - m; --i)
-                for (int d = 0; d < dims; ++d) Q[i][d] = Q[i - 1][d];
-            for (int i = k - m; i >= k - p + 1; --i) {
-                const float alpha = (x - T[i]) / (T[i + p] - T[i]);
-                for (int d = 0; d < dims; ++d) Q[i][d] = alpha * Q[i][d] + (1 - alpha) * Q[i - 1][d];
-            }
-            for (int i = nt; i > k + 1; --i) T[i] = T[i - 1];
-            T[k + 1] = x;
-        }
-        if (end == 0) span_at = k; // (b's insertions all come after it)
-    }
-    for (int i = 0; i <= p; ++i)
-        for (int d = 0; d < dims; ++d) row[i * stride + d] = Q[span_at - p + i][d];
-}
-
-// The Bernstein basis of degree n at q in [0, 2^30] (B[0..n], 2^30 = 1) and, if Bd is not null,
-// of degree n - 1 (Bd[0..n-1]): the triangle B_i,k = (1 - t) B_i,k-1 + t B_i-1,k-1, convex
-// combinations of numbers in [0, 2^30] that stay there. Computed once for a parameter, it
-// serves every row of coefficients evaluated at it: a point is then one sum of products per
-// row, not de Casteljau's n (n + 1) / 2 steps per row.
-inline void bernstein(int n, int32_t q, int32_t* B, int32_t* Bd) {
-    B[0] = kOneQ;
-    for (int k = 1; k <= n; ++k) {
-        if (k == n && Bd)
-            for (int i = 0; i < n; ++i) Bd[i] = B[i];
-        int32_t carried = 0; // t B_i-1,k-1
-        for (int i = 0; i < k; ++i) {
-            const int32_t b = B[i], tb = mulq(b, q);
-            B[i] = b - tb + carried;
-            carried = tb;
-        }
-        B[k] = carried;
-    }
-}
-
-// sum of B[i] c[i * stride], i = 0..n, rounded back from 2^30 (|c| < 2^29: each product under
-// 2^59, the sum under 2^63).
-inline int32_t combine(const int32_t* B, const int32_t* c, int stride, int n) {
-    int64_t x = int64_t(1) << 29;
-    for (int i = 0; i <= n; ++i) x += int64_t(B[i]) * c[i * stride];
-    return int32_t(x >> 30);
-}
-
-// sum of Bd[i] (c[i+1] - c[i]), i = 0..n-1: the derivative over the degree.
-inline int32_t combine_differences(const int32_t* Bd, const int32_t* c, int stride, int n) {
-    int64_t x = int64_t(1) << 29;
-    for (int i = 0; i < n; ++i) x += int64_t(Bd[i]) * (c[(i + 1) * stride] - c[i * stride]);
-    return int32_t(x >> 30);
-}
-
-// The larger of big (>= 0) and |x|, by the floats' bits (a soft-float compare costs ~25
-// instructions; for finite floats the order of the bits is the order of the magnitudes).
-inline float larger_magnitude(float big, float x) {
-    const uint32_t b = std::bit_cast<uint32_t>(x) & 0x7FFFFFFFu;
-    return b > std::bit_cast<uint32_t>(big) ? std::bit_cast<float>(b) : big;
-}
-
-// round(x 2^e) by the float's bits (no soft-float call), for x 2^e under 2^31 in magnitude (the
-// caller's exponent sees to it; larger is clamped). Zeros, subnormals, NaN and infinities give 0.
-inline int32_t to_fixed(float x, int e) {
-    const uint32_t b = std::bit_cast<uint32_t>(x);
-    const int be = int(b >> 23 & 0xFF);
-    if (be == 0 || be == 0xFF) return 0;
-    const uint32_t m = (b & 0x7FFFFFu) | 0x800000u; // x = m 2^(be - 150)
-    const int sh = be - 150 + e;
-    uint32_t v;
-    if (sh >= 0) v = sh <= 7 ? m << sh : 0x7FFFFFFFu;
-    else v = sh > -25 ? (m + (1u << (-sh - 1))) >> -sh : 0;
-    return b >> 31 ? -int32_t(v) : int32_t(v);
-}
-
-// Numbers f[i * stride], i < n, in fixed point with one exponent, the largest that keeps their
-// magnitudes under 2^bits (within +-100: a signed byte of a slot's exponent word holds it; 0
-// when all are zero or noise under 1e-30), into
-// out[i * stride] (out may be f itself: each number is read before its word is written).
-// Returns the exponent.
-int to_fixed_under(const float* f, int n, int stride, int bits, int32_t* out) {
-    float big = 0;
-    for (int i = 0; i < n; ++i) big = larger_magnitude(big, f[i * stride]);
-    const int e = big >= 1e-30f ? std::clamp(bits - exponent_f(big), -100, 100) : 0;
-    for (int i = 0; i < n; ++i) {
-        const float x = f[i * stride];
-        out[i * stride] = to_fixed(x, e);
-    }
-    return e;
 }
 
 inline uint64_t magnitude(int64_t x) { return x < 0 ? uint64_t(0) - uint64_t(x) : uint64_t(x); }
@@ -208,15 +74,29 @@ inline int sum_shift(uint64_t sum64, uint32_t n) {
     return 62;
 }
 
-// A span's basis polynomials (span_polynomials) in fixed point under 2^30, I[a * (p + 1) + k];
-// returns the exponent.
-int fixed_span_polynomials(const float* knots, int p, int s, int32_t* I) {
-    float M[kN][kN], flat[kN * kN];
-    span_polynomials(knots, p, s, M);
+// A span's basis polynomials (span_polynomials) in fixed point under 2^30, I[a * (p + 1) + k],
+// from its knots over the span (`knots`: the 2p - 2 besides the span's own); returns the exponent.
+int fixed_span_polynomials(const float* knots, int p, int32_t* I) {
+    float K[2 * kMaxPatchDegree], M[kN][kN], flat[kN * kN];
+    for (int i = 0, at = 0; i < 2 * p; ++i) K[i] = i == p - 1 ? 0.0f : i == p ? 1.0f : knots[at++];
+    span_polynomials(K, p, M);
     for (int a = 0; a <= p; ++a)
         for (int k = 0; k <= p; ++k) flat[a * (p + 1) + k] = M[a][k];
     return to_fixed_under(flat, (p + 1) * (p + 1), 1, 30, I);
 }
+
+// Knot span s's knots s - p + 1 to s + p over the span, but its own two: (k - k_s) / h, kept
+// within +-2^50 (a span far shorter than its neighbours: a corrupt or absurd knot vector).
+void span_knots(const float* knots, int p, int s, float* out) {
+    const float ks = knots[s], h = knots[s + 1] - ks;
+    for (int i = s - p + 1, at = 0; i <= s + p; ++i) {
+        if (i == s || i == s + 1) continue;
+        const float x = (knots[i] - ks) / h;
+        out[at++] = x < 1e15f ? (x > -1e15f ? x : -1e15f) : 1e15f; // (NaN: 1e15)
+    }
+}
+
+inline uint32_t mix(uint32_t h, uint32_t w) { return (h ^ w) * 0x9E3779B1u; }
 
 } // namespace
 
@@ -244,10 +124,6 @@ PatchCache::PatchCache(const Pack& pack, const pack::Surface& S, std::span<uint3
     if (memory[0] != tag) {
         memory[0] = tag;
         for (uint32_t i = 0; i < slots_; ++i) reinterpret_cast<PatchHead*>(memory_ + i * slot_words_)->key = kEmpty;
-        for (uint32_t i = 0; mu_ && i < kMatrixSlots; ++i) {
-            reinterpret_cast<MatrixHead*>(mu_ + i * matrix_words(pu_))->span = kEmpty;
-            reinterpret_cast<MatrixHead*>(mv_ + i * matrix_words(pv_))->span = kEmpty;
-        }
     }
 }
 
@@ -280,19 +156,34 @@ void PatchCache::write_head(PatchHead* slot, int su, int sv, const float* O, uin
     slot->per_span[1] = per_span(vk_[sv + 1] - vk_[sv]);
 }
 
+uint32_t PatchCache::matrix_check(int p, const MatrixHead* head) {
+    uint32_t h = mix(0x6A09E667u, uint32_t(p));
+    for (int i = 0; i < 2 * p - 2; ++i) h = mix(h, std::bit_cast<uint32_t>(head->knots.at[i]));
+    h = mix(h, uint32_t(head->exponent));
+    const uint32_t* c = reinterpret_cast<const uint32_t*>(head + 1);
+    for (int i = 0; i < (p + 1) * (p + 1); ++i) h = mix(h, c[i]);
+    return h ^ (h >> 16);
+}
+
 const int32_t* PatchCache::span_matrix(bool v, int span, int& e, int32_t* local) {
     const int p = v ? pv_ : pu_;
-    const float* knots = v ? vk_ : uk_;
+    SpanKnots key;
+    span_knots(v ? vk_ : uk_, p, span, key.at);
     uint32_t* cache = v ? mv_ : mu_;
     if (!cache) {
-        e = fixed_span_polynomials(knots, p, span, local);
+        e = fixed_span_polynomials(key.at, p, local);
         return local;
     }
-    MatrixHead* slot = reinterpret_cast<MatrixHead*>(cache + uint32_t(span) % kMatrixSlots * matrix_words(p));
+    uint32_t h = uint32_t(p);
+    for (int i = 0; i < 2 * p - 2; ++i) h = mix(h, std::bit_cast<uint32_t>(key.at[i]));
+    MatrixHead* slot = reinterpret_cast<MatrixHead*>(cache + (h >> 16) % kMatrixSlots * matrix_words(p));
     int32_t* matrix = reinterpret_cast<int32_t*>(slot + 1);
-    if (slot->span != uint32_t(span)) {
-        slot->exponent = fixed_span_polynomials(knots, p, span, matrix);
-        slot->span = uint32_t(span);
+    bool same = true;
+    for (int i = 0; i < 2 * p - 2; ++i) same = same && std::bit_cast<uint32_t>(slot->knots.at[i]) == std::bit_cast<uint32_t>(key.at[i]);
+    if (!same || slot->check != matrix_check(p, slot)) {
+        slot->knots = key;
+        slot->exponent = fixed_span_polynomials(key.at, p, matrix);
+        slot->check = matrix_check(p, slot);
     }
     e = slot->exponent;
     return matrix;
@@ -496,102 +387,6 @@ SurfacePoint PatchCache::point_and_derivatives(float u, float v) {
     const Vec3 p{f[0] * inv, f[1] * inv, f[2] * inv}; // from O
     const Vec3 du = (Vec3{fs[0], fs[1], fs[2]} - p * fs[3]) * (inv * hu), dv = (Vec3{ft[0], ft[1], ft[2]} - p * ft[3]) * (inv * hv);
     return {O + p, du, dv};
-}
-
-void CurveSpans::bind(const Pack& pack, const pack::Curve& c, int min_degree) {
-    usable_ = false, last_ = -1;
-    for (Slot& slot : slots_) slot.span = -1;
-    if (c.type != uint8_t(pack::CurveType::BSpline) || (c.dim != 2 && c.dim != 3)) return;
-    const BSplineCurveView C = bspline(pack, c);
-    if (C.p < std::max(min_degree, 1) || C.p > kMaxBezierDegree) return;
-    p_ = C.p, n_ = C.n, dim_ = c.dim, rational_ = C.rational, periodic_ = C.periodic;
-    dims_ = dim_ + (rational_ ? 1 : 0);
-    knots_ = C.knots, poles_ = C.poles, weights_ = C.weights;
-    usable_ = true;
-}
-
-void CurveSpans::extract(int span, Slot& slot) const {
-    const int dims = dims_, i0 = span - p_;
-    const float* O = poles_ + dim_ * i0;
-    float f[(kMaxBezierDegree + 1) * 4];
-    for (int i = 0; i <= p_; ++i) {
-        const float* P = poles_ + dim_ * (i0 + i);
-        const float w = rational_ ? weights_[i0 + i] : 1.0f;
-        for (int d = 0; d < dim_; ++d) f[i * dims + d] = (P[d] - O[d]) * w;
-        if (rational_) f[i * dims + dim_] = w;
-    }
-    extract_span(knots_, p_, span, f, dims, dims);
-    uint32_t exps = 0; // (under 2^28, as the patches': convex sums)
-    for (int d = 0; d < dims; ++d) exps |= exponent_bits(to_fixed_under(f + d, p_ + 1, dims, 28, slot.c + d), d);
-    slot.span = span;
-    slot.exps = exps;
-    for (int d = 0; d < 3; ++d) slot.origin[d] = d < dim_ ? O[d] : 0.0f;
-    slot.per_span = per_span(knots_[span + 1] - knots_[span]);
-}
-
-const CurveSpans::Slot& CurveSpans::slot_of(float& t, int32_t& q) {
-    int at = last_;
-    if (at < 0 || !in_span(t, knots_, slots_[at].span)) {
-        const int span = detail::find_span(knots_, n_, p_, t, periodic_);
-        at = span % kSlots;
-        if (slots_[at].span != span) extract(span, slots_[at]);
-        last_ = at;
-    }
-    const Slot& slot = slots_[at];
-    q = int32_t((t - knots_[slot.span]) * slot.per_span);
-    q = q < 0 ? 0 : (q > kOneQ ? kOneQ : q);
-    return slot;
-}
-
-void CurveSpans::bezier_at(const Slot& slot, int32_t q, int32_t* out, int32_t* diff) const {
-    int32_t B[kBN], Bd[kBN];
-    bernstein(p_, q, B, diff ? Bd : nullptr);
-    for (int d = 0; d < dims_; ++d) {
-        out[d] = combine(B, slot.c + d, dims_, p_);
-        if (diff) diff[d] = combine_differences(Bd, slot.c + d, dims_, p_);
-    }
-}
-
-const CurveSpans::Slot& CurveSpans::coordinates(float t, float* f) {
-    int32_t q, out[4];
-    const Slot& slot = slot_of(t, q);
-    bezier_at(slot, q, out, nullptr);
-    for (int d = 0; d < dims_; ++d) f[d] = float(out[d]) * pow2_f(-exponent_at(slot.exps, d));
-    if (rational_) { // from homogeneous coordinates
-        const float inv = 1 / (f[dim_] != 0 ? f[dim_] : 1.0f);
-        for (int d = 0; d < dim_; ++d) f[d] *= inv;
-    }
-    return slot;
-}
-
-Vec3 CurveSpans::point(float t) {
-    float f[4];
-    const Slot& slot = coordinates(t, f);
-    return {slot.origin[0] + f[0], slot.origin[1] + f[1], slot.origin[2] + f[2]};
-}
-
-Vec2 CurveSpans::point2(float t) {
-    float f[4];
-    const Slot& slot = coordinates(t, f);
-    return {slot.origin[0] + f[0], slot.origin[1] + f[1]};
-}
-
-Curve3Point CurveSpans::point_and_derivative(float t) {
-    int32_t q, out[4], diff[4];
-    const Slot& slot = slot_of(t, q);
-    bezier_at(slot, q, out, diff);
-    // d/dt = p times the last difference, over the span's length (per_span / 2^30).
-    const float to_t = float(p_) * slot.per_span * (1 / kOne);
-    float f[4], df[4];
-    for (int d = 0; d < dims_; ++d) {
-        const float unscale = pow2_f(-exponent_at(slot.exps, d));
-        f[d] = float(out[d]) * unscale, df[d] = float(diff[d]) * (unscale * to_t);
-    }
-    const Vec3 O{slot.origin[0], slot.origin[1], slot.origin[2]};
-    if (!rational_) return {O + Vec3{f[0], f[1], f[2]}, Vec3{df[0], df[1], df[2]}};
-    const float inv = 1 / (f[3] != 0 ? f[3] : 1.0f);
-    const Vec3 p = Vec3{f[0], f[1], f[2]} * inv; // from O
-    return {O + p, (Vec3{df[0], df[1], df[2]} - p * df[3]) * inv};
 }
 
 } // namespace facet::geom

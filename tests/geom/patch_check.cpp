@@ -3,7 +3,9 @@
 // curve they take): points and their derivatives (for normals) over each
 // surface's whole parameter range (a
 // grid through every knot, the knots themselves, points just outside), in a cache that holds
-// every span and in one that holds a single patch (every span change converts again).
+// every span and in one that holds a single patch (every span change converts again), and
+// in one kept from surface to surface, over every pack, that began as noise (the span matrices
+// it keeps are found by their knots, and checked: the same points as a fresh cache's).
 //
 //   facet-patch-check PACK_OR_DIR...     exit 1 if a point strays past the bound
 //
@@ -218,6 +220,9 @@ int main(int argc, char** argv) {
     }
     constexpr double kBound = 1e-6, kDerivativeBound = 5e-3;
     bool failed = false;
+    std::vector<uint32_t> kept_memory(kPatchCacheWords);
+    uint32_t noise = 12345;
+    for (uint32_t& w : kept_memory) w = noise = noise * 1664525u + 1013904223u;
     for (const std::string& f : files) {
         LoadedPack lp;
         std::string error;
@@ -228,7 +233,7 @@ int main(int argc, char** argv) {
             continue;
         }
         const double diagonal = double(default_tolerance(pack)) * 1000;
-        Worst big, small;
+        Worst big, small, kept;
         for (uint32_t s = 0; s < pack.surfaces().size(); ++s) {
             if (pack.surfaces()[s].type != uint8_t(pack::SurfaceType::BSpline)) continue;
             std::vector<uint32_t> all(kPatchCacheWords), one;
@@ -236,17 +241,21 @@ int main(int argc, char** argv) {
             one.resize(1 + PatchCache::slot_words(B.pu, B.pv, B.rational));
             check_surface(pack, s, diagonal, all, big);
             check_surface(pack, s, diagonal, one, small);
+            PatchCache::forget(kept_memory); // (as each face's tessellation begins)
+            check_surface(pack, s, diagonal, kept_memory, kept);
         }
+        const bool kept_differs = kept.error != big.error || kept.derivative != big.derivative;
         const double worst = std::max(big.error, small.error);
-        const bool bad = !(worst <= kBound) || !(big.derivative <= kDerivativeBound) || big.error != small.error;
+        const bool bad = !(worst <= kBound) || !(big.derivative <= kDerivativeBound) || big.error != small.error || kept_differs;
         failed |= bad;
         const Worst& w = big.error >= small.error ? big : small;
         std::printf("%s %s: %u B-spline surfaces (%u of a degree over %d, in float), %u points; largest difference "
                     "%.2e of the diagonal (surface %u at %g, %g), of the derivatives %.2e of the largest (%u points on "
-                    "unresolved spans)%s\n",
+                    "unresolved spans)%s%s\n",
                     bad ? "FAIL" : "ok", std::filesystem::path(f).filename().c_str(), big.surfaces, big.skipped,
                     kMaxBezierDegree, big.points, worst, w.surface, double(w.u), double(w.v), big.derivative, big.unresolved,
-                    big.error != small.error ? "; a one-patch cache differs" : "");
+                    big.error != small.error ? "; a one-patch cache differs" : "",
+                    kept_differs ? "; a cache kept from surface to surface differs" : "");
         for (int dim : {3, 2}) {
             Worst curves;
             const auto list = dim == 3 ? pack.curves3() : pack.curves2();

@@ -37,15 +37,24 @@ class PatchCache {
     // then (power form, when there is room) kMatrixSlots span matrices per direction, each a
     // MatrixHead and (p + 1)^2 coefficients, then the patch slots, each a PatchHead and the
     // patch's coefficients (int32, coordinate after coordinate).
+    // A span's matrix depends only on its degree and its knots relative to the span (SpanKnots):
+    // the matrices are kept from surface to surface (one of another layout, or any other bytes,
+    // fails its check word and is made again).
     struct PatchHead {
         uint32_t key;       // the spans, su << 16 | sv (kEmpty: a free slot)
         uint32_t exponents; // a signed byte per coordinate: coefficient = value 2^exponent
         float origin[3];    // the patch's first pole: its coordinates are relative to it
         float per_span[2];  // 2^30 over the u and the v span's length (local parameters)
     };
+    // The knots a span's basis polynomials depend on, over the span [0, 1]: knots s - p + 1 to
+    // s + p but the span's own two (0 and 1).
+    struct SpanKnots {
+        float at[2 * kMaxPatchDegree - 2];
+    };
     struct MatrixHead {
-        uint32_t span; // kEmpty: a free slot
+        uint32_t check; // of the degree, the knots, the exponent and the coefficients
         int32_t exponent;
+        SpanKnots knots;
     };
     static constexpr uint32_t kHead = sizeof(PatchHead) / 4;
     static constexpr uint32_t kMatrixHead = sizeof(MatrixHead) / 4;
@@ -77,6 +86,7 @@ private:
     // Span `span`'s basis matrix in u (v false) or v and its exponent: from the memory's
     // matrices, made there if missing, or made in `local` when there are none.
     const int32_t* span_matrix(bool v, int span, int& e, int32_t* local);
+    static uint32_t matrix_check(int p, const MatrixHead* head);
     const PatchHead* patch(int su, int sv);
     // The patch of (u, v) and the local parameters in [0, 2^30]; u and v wrapped or clamped.
     const PatchHead* locate(float& u, float& v, int32_t& qs, int32_t& qt);
