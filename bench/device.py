@@ -31,13 +31,12 @@ sys.path.insert(0, os.path.join(ROOT, 'tools'))
 sys.path.insert(0, os.path.join(ROOT, 'tests', 'qemu'))
 import board as boards  # noqa: E402
 import protocol  # noqa: E402
-from viewer_test import analyse, peak_ram, unpack_instructions  # noqa: E402
+from viewer_test import analyse, peak_ram, tessellation_budget, unpack_instructions  # noqa: E402
 from boot import boot, exit_note, last_error  # noqa: E402  (bench/boot.py: the benches' one run)
 
 COLUMNS = ['board', 'model', 'faces', 'triangles', 'inflate_instructions', 'tessellation_instructions',
            'max_face_instructions', 'max_frame_instructions', 'peak_ram_bytes']
 SESSION = protocol.read_session(protocol.session_path('device'))
-TESSELLATION_BUDGET = 600_000_000
 
 
 def face_instructions(uart, regions):
@@ -88,8 +87,8 @@ def run_one(board_name, elf, fpk, out, timeout):
     row['inflate_instructions'] = unpack_instructions(rep.get('regions', [])) or 0
     if 0 in tess and t:
         row['tessellation_instructions'] = tess[0]
-        if tess[0] > TESSELLATION_BUDGET:
-            notes.append('tessellation over the 600 M budget')
+        if tess[0] > tessellation_budget(t['faces']):
+            notes.append(f'tessellation over its {tessellation_budget(t["faces"]) / 1e6:,.0f} M budget')
     if faces:
         row['max_face_instructions'] = max(faces)
     peak = peak_ram(rep)
