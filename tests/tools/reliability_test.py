@@ -311,6 +311,18 @@ def budget_report_exit_codes():
         later = json.load(open(os.path.join(sub, 'b.json'))).get('models_opened_later', [])
         expect(len(later) == 1 and later[0]['tri_instructions'] == second and later[0]['faces'] == 5,
                f'{name}: the second model is not reported on its own: {later}')
+    # The first pass's tessellation: 600 M up to 5,000 faces, 120 k a face beyond (the first
+    # view's rate): a 4,000-face model over 600 M is over; a 10,000-face one at 900 M is within.
+    for name, faces, tess, code in (('part-over', 4000, 700_000_000, 4), ('large-within', 10_000, 900_000_000, 0),
+                                    ('large-over', 10_000, 1_250_000_000, 4)):
+        sub = os.path.join(d, name)
+        os.makedirs(sub)
+        json.dump(dict(base, regions=regions(tess)[3:]), open(os.path.join(sub, 'report.json'), 'w'))
+        open(os.path.join(sub, 'uart.log'), 'w').write(model(faces, 0))
+        r = run([sys.executable, ARGS.budgets, os.path.join(sub, 'report.json'), '--json', os.path.join(sub, 'b.json'), '--strict'])
+        expect(r.returncode == code, f'budgets.py --strict on {name}: exit {r.returncode}, expected {code}\n{r.stdout[-600:]}')
+        budget = json.load(open(os.path.join(sub, 'b.json')))['tessellation_budget_instructions']
+        expect(budget == max(600_000_000, faces * 120_000), f'{name}: tessellation budget {budget:,} for {faces:,} faces')
 
 
 def screenshot_names_stay_in_the_folder():
