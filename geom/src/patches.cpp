@@ -86,7 +86,7 @@ int fixed_span_polynomials(const float* knots, int p, int32_t* I) {
 }
 
 // Knot span s's knots s - p + 1 to s + p over the span, but its own two: (k - k_s) / h, kept
-// within +-2^50 (a span far shorter than its neighbours: a corrupt or absurd knot vector).
+// within +-1e15 (a span far shorter than its neighbours: a corrupt or absurd knot vector).
 void span_knots(const float* knots, int p, int s, float* out) {
     const float ks = knots[s], h = knots[s + 1] - ks;
     for (int i = s - p + 1, at = 0; i <= s + p; ++i) {
