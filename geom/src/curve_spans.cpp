@@ -69,7 +69,7 @@ const CurveSpans::Slot& CurveSpans::coordinates(float t, float* f) {
     int32_t q, out[4];
     const Slot& slot = slot_of(t, q);
     bezier_at(slot, q, out, nullptr);
-    for (int d = 0; d < dims_; ++d) f[d] = float(out[d]) * pow2_f(-exponent_at(slot.exps, d));
+    for (int d = 0; d < dims_; ++d) f[d] = times_pow2(float(out[d]), -exponent_at(slot.exps, d));
     if (rational_) { // from homogeneous coordinates
         const float inv = 1 / (f[dim_] != 0 ? f[dim_] : 1.0f);
         for (int d = 0; d < dim_; ++d) f[d] *= inv;
@@ -97,8 +97,8 @@ Curve3Point CurveSpans::point_and_derivative(float t) {
     const float to_t = float(p_) * slot.per_span * (1 / kOne);
     float f[4], df[4];
     for (int d = 0; d < dims_; ++d) {
-        const float unscale = pow2_f(-exponent_at(slot.exps, d));
-        f[d] = float(out[d]) * unscale, df[d] = float(diff[d]) * (unscale * to_t);
+        const int e = -exponent_at(slot.exps, d);
+        f[d] = times_pow2(float(out[d]), e), df[d] = float(diff[d]) * times_pow2(to_t, e);
     }
     const Vec3 O{slot.origin[0], slot.origin[1], slot.origin[2]};
     if (!rational_) return {O + Vec3{f[0], f[1], f[2]}, Vec3{df[0], df[1], df[2]}};

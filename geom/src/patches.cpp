@@ -328,15 +328,15 @@ Vec3 PatchCache::point(float u, float v) {
             out[d] = acc;
         }
     }
+    // (The scalings by the exponents are powers of two: times_pow2, exact.)
     const uint32_t exps = slot->exponents;
-    auto unscale = [&](int d) { return pow2_f(-exponent_at(exps, d)); };
+    auto unscale = [&](float x, int d) { return times_pow2(x, -exponent_at(exps, d)); };
     const Vec3 O{slot->origin[0], slot->origin[1], slot->origin[2]};
-    if (!rational_) return {O.x + float(out[0]) * unscale(0), O.y + float(out[1]) * unscale(1), O.z + float(out[2]) * unscale(2)};
-    float W = float(out[3]) * unscale(3);
+    if (!rational_) return {O.x + unscale(float(out[0]), 0), O.y + unscale(float(out[1]), 1), O.z + unscale(float(out[2]), 2)};
+    float W = unscale(float(out[3]), 3);
     if (W == 0) W = 1;
     const float inv = 1 / W;
-    return {O.x + float(out[0]) * (unscale(0) * inv), O.y + float(out[1]) * (unscale(1) * inv),
-            O.z + float(out[2]) * (unscale(2) * inv)};
+    return {O.x + float(out[0]) * unscale(inv, 0), O.y + float(out[1]) * unscale(inv, 1), O.z + float(out[2]) * unscale(inv, 2)};
 }
 
 SurfacePoint PatchCache::point_and_derivatives(float u, float v) {
@@ -353,8 +353,8 @@ SurfacePoint PatchCache::point_and_derivatives(float u, float v) {
         int32_t out[4], ds[4], dt[4];
         bezier(slot, qs, qt, out, ds, dt);
         for (int d = 0; d < dims; ++d) {
-            const float unscale = pow2_f(-exponent_at(exps, d));
-            f[d] = float(out[d]) * unscale, fs[d] = float(ds[d]) * (float(pu_) * unscale), ft[d] = float(dt[d]) * (float(pv_) * unscale);
+            const int e = -exponent_at(exps, d);
+            f[d] = times_pow2(float(out[d]), e), fs[d] = float(ds[d]) * times_pow2(float(pu_), e), ft[d] = float(dt[d]) * times_pow2(float(pv_), e);
         }
     } else {
         for (int d = 0; d < dims; ++d, c += (pu_ + 1) * row) {
@@ -371,8 +371,8 @@ SurfacePoint PatchCache::point_and_derivatives(float u, float v) {
                     acc_t = mulq(acc_t, qs) + dx;
                 }
             }
-            const float unscale = pow2_f(-exponent_at(exps, d));
-            f[d] = float(acc) * unscale, fs[d] = float(acc_s) * (8 * unscale), ft[d] = float(acc_t) * (8 * unscale);
+            const int e = -exponent_at(exps, d); // (times 8: the derivatives were kept over 8)
+            f[d] = times_pow2(float(acc), e), fs[d] = times_pow2(float(acc_s), e + 3), ft[d] = times_pow2(float(acc_t), e + 3);
         }
     }
     // d/du = d/ds over the span's length (per_span / 2^30).

@@ -35,6 +35,18 @@ constexpr float kPi = 3.14159265358979323846f;
 // 2^e for e in [-126, 127], from its bits (exact, no library call).
 inline float pow2_f(int e) { return std::bit_cast<float>(uint32_t(e + 127) << 23); }
 
+// x 2^e for e in [-126, 127], the same value as x * pow2_f(e). Without an FPU by the float's
+// exponent bits when x and the result are normal (exact: a multiply by a power of two rounds
+// nothing), else by the multiply.
+inline float times_pow2(float x, int e) {
+#if FACET_SOFT_FLOAT
+    const uint32_t b = std::bit_cast<uint32_t>(x);
+    const int be = int(b >> 23 & 0xFF), to = be + e;
+    if (be != 0 && be != 0xFF && to > 0 && to < 0xFF) return std::bit_cast<float>(b + (uint32_t(e) << 23));
+#endif
+    return x * pow2_f(e);
+}
+
 // The e with 2^(e-1) <= x < 2^e for a positive normal float x (frexp's exponent), from its bits.
 inline int exponent_f(float x) { return int((std::bit_cast<uint32_t>(x) >> 23) & 0xFF) - 126; }
 
