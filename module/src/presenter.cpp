@@ -317,8 +317,8 @@ void Presenter::run_piece(uint32_t units, uint32_t pass) {
         set_band();
         job_.stage = Job::Stage::Faces;
         job_.into_layer = job_.layer_update = false;
-        if (job_.full && layer_holds(job_.applied_to)) {
-            copy_layer(); // the faces kept for the view: the edges alone to draw
+        if (job_.full && layer_holds(job_.applied_to)) { // the faces kept for the view: its copy, then the edges alone
+            job_.copy = true;
             job_.stage = Job::Stage::Edges;
         } else if (job_.full && layer_.pixels) {
             job_.into_layer = true;
