@@ -271,8 +271,32 @@ Status Cdt<Index>::insert_constraint(Index a, Index b) {
         if (count.crossed > max_crossed) max_crossed = count.crossed;
     }
     if (!work_fits(CavityLayout::of(max_crossed).entries)) return Status::Full;
-    for (Index cur = a, reached; cur != b; cur = reached) apply_piece(cur, b, max_crossed, reached);
+    for (Index cur = a, reached; cur != b; cur = reached) {
+        apply_piece(cur, b, max_crossed, reached);
+        stats_.splits += reached != b;
+    }
     return Status::Ok;
+}
+
+template <typename Index>
+Index Cdt<Index>::step_along(Index from, Index to) const {
+    if (from == to || from < kBoxVertices || to < kBoxVertices || from >= nv_ || to >= nv_) return kNone<Index>;
+    const Point pa = P(from), pb = P(to);
+    // Around `from`, counter-clockwise: each triangle's next vertex after it.
+    const Index first = a_.vertices[from].tri;
+    Index t = first;
+    for (uint32_t guard = 0; guard < nt_; ++guard) {
+        const Triangle<Index>& T = a_.triangles[t];
+        const int k = T.index_of(from);
+        if (k < 0) return kNone<Index>;
+        const Index x = T.v[next3(k)];
+        if (x == to) return x;
+        const Point px = P(x);
+        if (x >= kBoxVertices && orient2d(pa.x, pa.y, pb.x, pb.y, px.x, px.y) == 0 && dot2d(pa, px, pb) > 0) return x;
+        t = T.n[prev3(k)]; // across the edge from-x... the edge opposite v[prev3(k)] joins from and x
+        if (t == kNone<Index> || t == first) break;
+    }
+    return kNone<Index>;
 }
 
 } // namespace facet::cdt

@@ -87,6 +87,7 @@ Result FaceBuilder<Index>::start(const FaceInput& in, LocateMode mode) {
     stage_ = Stage::Failed;
     k_ = 0, loop_ = 0, loop_first_ = 0, cl_ = 0, cj_ = 0, cfirst_ = 0;
     tree_built_ = false;
+    refused_ = {kNoPoint, kNoPoint};
     auto fail = [&](Result r) {
         result_ = r;
         return r;
@@ -173,6 +174,10 @@ Result FaceBuilder<Index>::run(uint32_t units) {
         result_ = Result::fail(s, what_failed(s), {"loop", loop}, {"point", point});
         return result_;
     };
+    auto refuse = [&](Status s, uint32_t loop, uint32_t point, uint32_t from, uint32_t to) { // a segment failed
+        refused_ = {from, to};
+        return fail(s, loop, point);
+    };
     const uint32_t tree_size = mode_ == LocateMode::KdTreeNearest ? n_ : (mode_ == LocateMode::Sequential ? n_loop_ : 0);
     KdTree<Index, PointOf<Index>> tree(a.order.data(), a.minseq.data(), tree_size, PointOf<Index>{this});
     auto nearest = [&](Point p, uint32_t rank) -> Index {
@@ -225,10 +230,10 @@ Result FaceBuilder<Index>::run(uint32_t units) {
         if (points_first || !is_loop_point) continue;
         // Sequential / kd-tree: trace the loop as its points arrive.
         if (i != loop_first_) {
-            if (Status s = cdt_.insert_constraint(Index(keys[i - 1]), v); !ok(s)) return fail(s, loop_, i);
+            if (Status s = cdt_.insert_constraint(Index(keys[i - 1]), v); !ok(s)) return refuse(s, loop_, i, i - 1, i);
         }
         if (i == loop_first_ + in_.loop_sizes[loop_] - 1) {
-            if (Status s = cdt_.insert_constraint(v, Index(keys[loop_first_])); !ok(s)) return fail(s, loop_, i);
+            if (Status s = cdt_.insert_constraint(v, Index(keys[loop_first_])); !ok(s)) return refuse(s, loop_, i, i, loop_first_);
         }
     }
     if (stage_ == Stage::Points && k_ == n_) stage_ = points_first ? Stage::Constraints : Stage::Inner;
@@ -240,7 +245,7 @@ Result FaceBuilder<Index>::run(uint32_t units) {
         }
         const uint32_t size = in_.loop_sizes[cl_];
         const uint32_t i = cfirst_ + cj_, next = cfirst_ + (cj_ + 1) % size;
-        if (Status s = cdt_.insert_constraint(Index(keys[i]), Index(keys[next])); !ok(s)) return fail(s, cl_, i);
+        if (Status s = cdt_.insert_constraint(Index(keys[i]), Index(keys[next])); !ok(s)) return refuse(s, cl_, i, i, next);
         ++done;
         if (++cj_ == size) cfirst_ += size, cj_ = 0, ++cl_;
     }

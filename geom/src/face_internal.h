@@ -111,7 +111,22 @@ bool retraces(const FaceScratch& sc, uint32_t np, uint32_t nl);
 // B of A -> B -> C becomes a sliver triangle A, B, C (sc.slivers), so that the face still uses
 // every edge sample its neighbour uses: the mesh stays watertight around features smaller
 // than the grid.
+// The slivers are appended to the `slivers` already made.
 Result clean_loops(FaceScratch& sc, uint32_t& np, uint32_t& nl, uint32_t& slivers);
+
+// Step 4, when the CDT refused the loop segment from point `from` to the next one, `to`, as
+// crossing another (tangles.cpp): finds the segment it crosses and drops the smaller piece the
+// crossing cuts off, as a fan of slivers (appended to `slivers`), or one point when two loops
+// cross. Crossing, and nothing changed, when no such segment is found or the piece is no small
+// artefact (a quarter of its loop's length or more). The caller cleans the loops again and
+// triangulates them anew.
+Result untangle(FaceScratch& sc, uint32_t& np, uint32_t& nl, uint32_t& slivers, uint32_t from, uint32_t to);
+
+// Step 4, once the CDT holds the loops (sc.mesh_of maps its vertices to the first point on
+// each): where loop points of different 3D points share a vertex or a point splits another
+// loop's segment (features thinner than the grid), a fan of slivers (appended to `slivers`)
+// joins each segment to the path of edges the triangulation holds for it (tangles.cpp).
+Result stitch(FaceScratch& sc, uint32_t np, uint32_t nl, const cdt::Cdt<uint16_t>& cdt, uint32_t& slivers);
 
 // Step 5: adds surface points until every inner triangle is within the tolerance (see
 // refine.cpp), about `units` of work at a time (`spent` says how much): Busy while unfinished.

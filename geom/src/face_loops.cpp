@@ -230,7 +230,6 @@ Result clean_loops(FaceScratch& sc, uint32_t& np, uint32_t& nl, uint32_t& sliver
     auto removable = [&](uint32_t a, uint32_t b, uint32_t c) {
         return sc.loop_points[a] == sc.loop_points[b] || uturn(sc.loop_points[a], sc.loop_points[b], sc.loop_points[c]);
     };
-    slivers = 0;
     auto sliver = [&](uint32_t a, uint32_t b, uint32_t c) {
         if (slivers >= sc.slivers.size()) return false;
         sc.slivers[slivers++] = {{sc.xyz[a], sc.xyz[b], sc.xyz[c]}, {sc.uv[a], sc.uv[b], sc.uv[c]}};

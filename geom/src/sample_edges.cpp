@@ -110,13 +110,19 @@ Chord chord_of(const Pack& pack, const Curve& C, Vec3 a, Vec3 b, float tol, floa
 
 // Drops samples closer than min_gap to the sample kept before them (the edge's ends always
 // stay): features far below the tolerance gain nothing from them, and a face's CDT grid could
-// not tell them apart (clean_loops would then have to drop them in that face only).
-void thin_out(EdgeSamples& out, uint32_t first, float min_gap) {
+// not tell them apart (clean_loops would then have to drop them in that face only). A sample
+// where the edge turns by more than half the angle stays however near: a circle smaller than
+// the tolerance keeps the sides the angle gives it, so that its face's loops still go round it
+// the right way (a 270-degree bend of 2 mm with its ends alone is a chord the other way round).
+void thin_out(EdgeSamples& out, uint32_t first, float min_gap, float cos_half_angle) {
     const float gap2 = min_gap * min_gap;
     const uint32_t last = out.used - 1;
     uint32_t kept = first;
     for (uint32_t i = first + 1; i < last; ++i) {
-        if (length2(out.p[i] - out.p[kept]) < gap2) continue;
+        if (length2(out.p[i] - out.p[kept]) < gap2 &&
+            !detail::turns_more(out.p[i] - out.p[kept], out.p[i + 1] - out.p[i], cos_half_angle)) {
+            continue;
+        }
         ++kept;
         out.t[kept] = out.t[i];
         out.p[kept] = out.p[i];
@@ -274,7 +280,7 @@ Vec3 EdgeSampler::eval_point(float t) { return spans_.usable() ? spans_.point(t)
 
 void EdgeSampler::finish() {
     EdgeSamples& out = *out_;
-    if (out.used - start_ > 2) thin_out(out, start_, opt_.tolerance / 16);
+    if (out.used - start_ > 2) thin_out(out, start_, opt_.tolerance / 16, angle_cosines().half);
     if (out.used - start_ > 0xFFFF) {
         result_ = Result::fail(Status::Full, "more than 65,535 samples on one edge", {"edge", edge_});
         return;

@@ -135,13 +135,6 @@ void add_triangle(const pack::Face& F, Mesh& mesh, const uint32_t id[3], FaceSta
     ++stats.triangles;
 }
 
-// One point: the same bits (compared as integers: float compares are library calls on a
-// soft-float core). Samples of one point are copies of one computation.
-bool equal(Vec3 p, Vec3 q) {
-    return std::bit_cast<uint32_t>(p.x) == std::bit_cast<uint32_t>(q.x) && std::bit_cast<uint32_t>(p.y) == std::bit_cast<uint32_t>(q.y) &&
-           std::bit_cast<uint32_t>(p.z) == std::bit_cast<uint32_t>(q.z);
-}
-
 // The CDT's inner triangles and their vertices, each vertex once, in the order first used.
 // sc.mesh_of maps CDT vertices to points on the way in and to mesh vertices on the way out.
 // From triangle `next` on, until about `units` are spent (a new vertex costs `vertex_cost`
@@ -166,7 +159,7 @@ Status emit_triangles(const FaceNormals& normals, const pack::Face& F, const cdt
         // no area: its two other edges are one edge in 3D, which would count twice. Its
         // neighbours close the mesh without it.
         const Vec3 p0 = position(T.v[0]), p1 = position(T.v[1]), p2 = position(T.v[2]);
-        if (equal(p0, p1) || equal(p1, p2) || equal(p2, p0)) continue;
+        if (same_point(p0, p1) || same_point(p1, p2) || same_point(p2, p0)) continue;
         if ((mesh.triangle_count + 1) * 3 > mesh.indices.size()) return Status::Full;
         uint32_t id[3];
         for (int k = 0; k < 3; ++k) {
@@ -308,21 +301,51 @@ Result FaceJob::run(uint32_t units) {
         if (spent >= units) return busy;
     }
     if (stage_ == Stage::Triangulate) {
-        const Result r = E.builder.run(units - spent);
+        Result r = E.builder.run(units - spent);
+        // Loops that cross (a B-rep's artefact, or features closer than the grid): the smaller
+        // piece goes as slivers and the loops are triangulated anew, a few times at most.
+        while (r.status == Status::Crossing && stats_.untangled < kMaxUntangles) {
+            const cdt::FaceBuilder<uint16_t>::Segment s = E.builder.refused();
+            const uint32_t slivers0 = stats_.slivers;
+            if (!detail::untangle(sc, np_, nl_, stats_.slivers, s.from, s.to).ok()) break;
+            if (Result c = detail::clean_loops(sc, np_, nl_, stats_.slivers); !c.ok()) return fail(c);
+            ++stats_.untangled;
+            spent += E.builder.used() + 1 + np_ / 8 + (stats_.slivers - slivers0);
+            stats_.points = np_;
+            if (nl_ == 0) { // slivers alone
+                r = {};
+                stage_ = Stage::Emit;
+                break;
+            }
+            const cdt::FaceInput in{{sc.loop_points.data(), np_}, {sc.loop_sizes.data(), nl_}, {}};
+            if (Result st = E.builder.start(in, cdt::kDefaultLocateMode); !st.ok()) return fail(st);
+            if (spent >= units) return busy;
+            r = E.builder.run(units - spent);
+        }
         if (r.status == Status::Busy) return busy;
-        if (!r.ok()) return fail(r);
-        spent += E.builder.used() + np_ / 32;
-        if (sc.mesh_of.size() < E.cdt.vertex_capacity()) {
-            return fail(Result::fail(Status::Full, "more vertices than the face scratch holds"));
+        if (stage_ == Stage::Emit) {
+            // nothing left to triangulate
+        } else if (!r.ok()) {
+            if (r.status == Status::Crossing && stats_.untangled > 0) {
+                return fail(Result::fail(Status::Crossing, "loops cross, and still do after their smaller pieces went",
+                                         {"pieces", stats_.untangled}));
+            }
+            return fail(r);
+        } else {
+            spent += E.builder.used() + np_ / 32;
+            if (sc.mesh_of.size() < E.cdt.vertex_capacity()) {
+                return fail(Result::fail(Status::Full, "more vertices than the face scratch holds"));
+            }
+            for (uint32_t v = 0; v < E.cdt.vertex_count(); ++v) sc.mesh_of[v] = UINT32_MAX;
+            for (uint32_t i = 0; i < np_; ++i) { // point -> vertex after triangulation; repeats keep the first
+                const uint32_t v = sc.arena.keys[i];
+                if (v < E.cdt.vertex_count() && sc.mesh_of[v] == UINT32_MAX) sc.mesh_of[v] = i;
+            }
+            if (Result st = detail::stitch(sc, np_, nl_, E.cdt, stats_.slivers); !st.ok()) return fail(st);
+            E.refine = {};
+            E.refine.total = E.refine.loop_points = np_;
+            stage_ = Stage::Refine;
         }
-        for (uint32_t v = 0; v < E.cdt.vertex_count(); ++v) sc.mesh_of[v] = UINT32_MAX;
-        for (uint32_t i = 0; i < np_; ++i) { // point -> vertex after triangulation; repeats keep the first
-            const uint32_t v = sc.arena.keys[i];
-            if (v < E.cdt.vertex_count() && sc.mesh_of[v] == UINT32_MAX) sc.mesh_of[v] = i;
-        }
-        E.refine = {};
-        E.refine.total = E.refine.loop_points = np_;
-        stage_ = Stage::Refine;
         if (spent >= units) return busy;
     }
     if (stage_ == Stage::Refine) {
@@ -349,7 +372,7 @@ Result FaceJob::run(uint32_t units) {
     // The slivers of collapsed loop points (their own vertices; none with two equal corners).
     for (uint32_t k = 0; k < stats_.slivers; ++k) {
         const Sliver& v = sc.slivers[k];
-        if (equal(v.p[0], v.p[1]) || equal(v.p[1], v.p[2]) || equal(v.p[2], v.p[0])) continue;
+        if (same_point(v.p[0], v.p[1]) || same_point(v.p[1], v.p[2]) || same_point(v.p[2], v.p[0])) continue;
         if (mesh.vertex_count + 3 > mesh.vertices.size() || (mesh.triangle_count + 1) * 3 > mesh.indices.size()) {
             return fail(Result::fail(Status::Full, "the mesh is full"));
         }

@@ -28,11 +28,18 @@ inline uint32_t straight(PackWriter& w, uint32_t a, uint32_t b, float length) {
 // seams. Closed. Volume 100 * 60 * 10 - pi (10^2 + 8^2) 10.
 struct Hole {
     float cx, cy, r;
+    float seam = 0; // the angle of its seam (and its circles' vertex) about its axis, from +x
 };
-constexpr Hole kPlateHoles[2] = {{30, 30, 10}, {70, 30, 8}};
-inline double plate_volume() { return 100.0 * 60 * 10 - M_PI * (10.0 * 10 + 8.0 * 8) * 10; }
+constexpr std::array<Hole, 2> kPlateHoles = {{{30, 30, 10}, {70, 30, 8}}};
+// The same plate with its holes 0.1 micron apart, each one's seam vertex facing the other: a wall
+// far thinner than the CDT's grid unit on the top and bottom faces (100 mm / 2^15 = 3 microns),
+// where the two holes' loops meet on one grid point at every tolerance (tangles.cpp).
+constexpr std::array<Hole, 2> kHolesAMicronApart = {{{30, 30, 10, 0}, {48.0001f, 30, 8, kPi}}};
+inline double plate_volume(const std::array<Hole, 2>& holes = kPlateHoles) {
+    return 100.0 * 60 * 10 - M_PI * (double(holes[0].r) * holes[0].r + double(holes[1].r) * holes[1].r) * 10;
+}
 
-inline Bytes plate_with_holes() {
+inline Bytes plate_with_holes(const std::array<Hole, 2>& kPlateHoles = test::kPlateHoles) {
     PackWriter w;
     constexpr float X = 100, Y = 60, Z = 10;
     uint32_t c[8]; // corners: bit 0 x, bit 1 y, bit 2 z
@@ -51,9 +58,10 @@ inline Bytes plate_with_holes() {
     } h[2];
     for (int k = 0; k < 2; ++k) {
         const Hole& o = kPlateHoles[k];
-        const uint32_t vb = w.add_vertex(o.cx + o.r, o.cy, 0), vt = w.add_vertex(o.cx + o.r, o.cy, Z);
-        const uint32_t cb = w.add_curve(pack::CurveType::Circle, 3, {o.cx, o.cy, 0, 1, 0, 0, 0, 1, 0, o.r});
-        const uint32_t ct = w.add_curve(pack::CurveType::Circle, 3, {o.cx, o.cy, Z, 1, 0, 0, 0, 1, 0, o.r});
+        const float cs = std::cos(o.seam), sn = std::sin(o.seam);
+        const uint32_t vb = w.add_vertex(o.cx + o.r * cs, o.cy + o.r * sn, 0), vt = w.add_vertex(o.cx + o.r * cs, o.cy + o.r * sn, Z);
+        const uint32_t cb = w.add_curve(pack::CurveType::Circle, 3, {o.cx, o.cy, 0, cs, sn, 0, -sn, cs, 0, o.r});
+        const uint32_t ct = w.add_curve(pack::CurveType::Circle, 3, {o.cx, o.cy, Z, cs, sn, 0, -sn, cs, 0, o.r});
         h[k] = {w.add_edge({cb, 0, kTwoPi, vb, vb, 1e-7f, 0}), w.add_edge({ct, 0, kTwoPi, vt, vt, 1e-7f, 0}),
                 straight(w, vb, vt, Z)};
     }
@@ -88,7 +96,8 @@ inline Bytes plate_with_holes() {
     // circle back, down the seam at u = 0.
     for (int k = 0; k < 2; ++k) {
         const Hole& o = kPlateHoles[k];
-        const uint32_t s = w.add_surface(pack::SurfaceType::Cylinder, {o.cx, o.cy, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, o.r});
+        const float cs = std::cos(o.seam), sn = std::sin(o.seam);
+        const uint32_t s = w.add_surface(pack::SurfaceType::Cylinder, {o.cx, o.cy, 0, cs, sn, 0, -sn, cs, 0, 0, 0, 1, o.r});
         const uint32_t fc = w.coedge_count();
         w.add_coedge(Coedge::make(h[k].bottom, false, Seam::None));
         w.add_coedge(Coedge::make(h[k].seam, false, Seam::UHigh));
@@ -97,6 +106,31 @@ inline Bytes plate_with_holes() {
         faces.push_back(w.add_face({s, w.add_loop({fc, 4}), 1, pack::kNoIndex, pack::kNoIndex, 1, {0, 0, 0}, {0, 0}, {kTwoPi, Z}}));
     }
     w.add_instance({w.add_shell({faces.front(), uint32_t(faces.size()), pack::kNoIndex, 1}), {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0}});
+    return w.finish();
+}
+
+// A square sheet, 10 x 10 mm in z = 0 (one planar face, open), whose left side starts with a
+// hook: from the top-left corner it runs up past the top side and back down across it, then
+// down to the bottom. The loop crosses itself 0.055 mm from the corner, as a translator's curve
+// that overshoots its vertex does (usb4110_spatial_ap242.stp's face 188, on a B-spline there).
+// Counter-clockwise: the top from right to left, the hook and the left side down, the bottom, the
+// right side up. Every side straight: its samples are its vertices at every tolerance.
+constexpr std::array<std::array<float, 2>, 7> kHookedSheet = {
+    {{10, 10}, {0, 10}, {0.04f, 10.05f}, {0.07f, 9.95f}, {0.1f, 0}, {10, 0}, {10, 10}}};
+inline Bytes hooked_sheet() {
+    PackWriter w;
+    std::vector<uint32_t> v;
+    for (size_t k = 0; k + 1 < kHookedSheet.size(); ++k) v.push_back(w.add_vertex(kHookedSheet[k][0], kHookedSheet[k][1], 0));
+    const uint32_t first = w.coedge_count();
+    for (size_t k = 0; k < v.size(); ++k) {
+        const auto a = kHookedSheet[k], b = kHookedSheet[k + 1];
+        const uint32_t e = straight(w, v[k], v[(k + 1) % v.size()], std::hypot(b[0] - a[0], b[1] - a[1]));
+        w.add_coedge(Coedge::make(e, false, Seam::None));
+    }
+    const uint32_t s = w.add_surface(pack::SurfaceType::Plane, {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1});
+    const uint32_t face = w.add_face({s, w.add_loop({first, uint32_t(v.size())}), 1, pack::kNoIndex, pack::kNoIndex, 0, {0, 0, 0},
+                                      {0, 0}, {10, 10.05f}});
+    w.add_instance({w.add_shell({face, 1, pack::kNoIndex, 0}), {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0}});
     return w.finish();
 }
 

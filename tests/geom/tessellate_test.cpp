@@ -38,6 +38,7 @@ struct Tessellated {
     std::vector<uint32_t> sample_first, sample_count; // per edge: its samples in `samples`
     std::vector<Vec3> samples;      // every edge sample's point
     uint32_t boundary_samples = 0;  // samples around the loops (each coedge's, its ends once)
+    uint32_t untangled = 0, slivers = 0; // crossing loops' pieces dropped, slivers made (FaceStats)
 };
 
 // The pack's faces tessellated as the device does (its face storage, patches included), in
@@ -73,6 +74,7 @@ std::string tessellate(const Pack& pack, float tolerance, uint32_t units, Tessel
         while ((r = job.run(units ? units : UINT32_MAX)).status == Status::Busy) {
         }
         if (!r.ok()) return "face " + std::to_string(f) + ": " + r.what;
+        out.untangled += job.stats().untangled, out.slivers += job.stats().slivers;
         out.face_of.insert(out.face_of.end(), mesh.triangle_count - before, f);
     }
     out.first_vertex.push_back(mesh.vertex_count);
@@ -104,6 +106,8 @@ struct Shape {
 
 std::vector<Shape> shapes() {
     return {{"plate with holes", plate_with_holes(), true, plate_volume(), 1.0f / 8, 0},
+            {"plate with holes 0.1 micron apart", plate_with_holes(kHolesAMicronApart), true, plate_volume(kHolesAMicronApart), 1.0f / 8, 0},
+            {"sheet whose side hooks across its top", hooked_sheet(), false, 0, 0.01f, 0},
             {"sphere", sphere(), true, sphere_volume(), 1.0f / kSphereRadius, 0},
             {"torus", torus(), true, torus_volume(), 1.0f / kTorusMinor, 0},
             {"trimmed B-spline", trimmed_bspline(), false, 0, kBentPlateCurvature, 1}};
@@ -201,6 +205,29 @@ TEST_P(Tessellation, ShapesAreWatertightWithinToleranceAndSized) {
 }
 
 INSTANTIATE_TEST_SUITE_P(AtThreeTolerances, Tessellation, ::testing::Values(0.5f, 0.1f, 0.02f));
+
+// Loops the CDT's grid cannot keep apart (geom/src/tangles.cpp), at every tolerance: the sheet
+// whose side hooks back across its top drops the hook as slivers (the face is not lost), the
+// plate whose holes are 0.1 micron apart stitches its two holes' loops where they touch in the
+// grid (the shell stays closed: ShapesAreWatertightWithinToleranceAndSized checks both meshes).
+TEST(Tessellation, LoopsThatCrossOrTouchInTheGridAreMeshedAllTheSame) {
+    for (float tol : {1.0f, 0.1f, 0.01f}) {
+        SCOPED_TRACE(std::to_string(tol) + " mm");
+        OpenedPack hooked, thin;
+        ASSERT_TRUE(hooked.open(hooked_sheet()));
+        ASSERT_TRUE(thin.open(plate_with_holes(kHolesAMicronApart)));
+        Tessellated a, b, c;
+        ASSERT_EQ(tessellate(hooked.pack, tol, 0, a), "");
+        EXPECT_EQ(a.untangled, 1u) << "the hook, one piece";
+        EXPECT_EQ(a.slivers, 2u) << "its two points";
+        ASSERT_EQ(tessellate(thin.pack, tol, 0, b), "");
+        OpenedPack apart;
+        ASSERT_TRUE(apart.open(plate_with_holes()));
+        ASSERT_EQ(tessellate(apart.pack, tol, 0, c), "");
+        EXPECT_GT(b.slivers, c.slivers) << "stitches where the holes touch (the cylinders' seams make slivers in both)";
+        EXPECT_EQ(b.untangled, 0u);
+    }
+}
 
 // A finer tolerance never gives fewer triangles (refinement only adds points where needed, and
 // the edges are sampled at least as finely).

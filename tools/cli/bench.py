@@ -131,7 +131,8 @@ def cmd_mesh(args, parser):
 def stress_models(folder):
     """The parts no shared model has (tools/stress-models), made once under `folder`."""
     os.makedirs(folder, exist_ok=True)
-    for name, what in (('fillets.step', ['fillets']), ('lenses.step', ['lenses']), ('holes1600.step', ['holes', '1600'])):
+    for name, what in (('fillets.step', ['fillets']), ('lenses.step', ['lenses']), ('machined.step', ['machined']),
+                       ('holes1600.step', ['holes', '1600'])):
         path = os.path.join(folder, name)
         if not os.path.exists(path) and run([tool('facet-stress-model')] + what + [path], stdout=subprocess.DEVNULL) != 0:
             raise Failure(f'cannot make the stress part {name}')

@@ -19,6 +19,7 @@
 // a non-manifold edge more than two. A closed shell (a solid) is watertight when it has
 // neither and no face failed.
 #include "geom/deviation.h"
+#include "geom/measure.h"
 #include "core/format.h"
 #include "geom/pack.h"
 #include "geom/tessellate.h"
@@ -274,6 +275,10 @@ int main(int argc, char** argv) {
     double max_dev = 0;
     std::map<uint32_t, double> face_dev;
     uint32_t free_edges = 0, nonmanifold = 0, overlap = 0, thin = 0, shell_triangles = 0, closed = 0, watertight = 0;
+    struct ThinCount {
+        uint32_t triangles = 0, thin = 0;
+    };
+    std::map<uint8_t, ThinCount> by_type; // per surface type
     for (uint32_t s = 0; s < shells.size(); ++s) {
         const ShellMesh& m = shells[s];
         const uint32_t nt = uint32_t(m.tri.size() / 3);
@@ -292,7 +297,9 @@ int main(int argc, char** argv) {
                 const float la = length(a), lb = length(b);
                 ang[k] = la > 0 && lb > 0 ? std::acos(std::clamp(dot(a, b) / (la * lb), -1.0f, 1.0f)) : 0.0f;
             }
-            if (std::min({ang[0], ang[1], ang[2]}) < 5.0f * 3.14159265f / 180) ++thin;
+            const uint8_t type = pack.surfaces()[pack.faces()[m.face[t]].surface].type;
+            ++by_type[type].triangles;
+            if (std::min({ang[0], ang[1], ang[2]}) < 5.0f * 3.14159265f / 180) ++thin, ++by_type[type].thin;
         }
         std::vector<TopoTriangle> soup(nt);
         for (uint32_t t = 0; t < nt; ++t) {
@@ -401,7 +408,13 @@ int main(int argc, char** argv) {
           << ", \"nonmanifold_edges\": " << nonmanifold << ", \"overlap_edges\": " << overlap << ", \"closed_shells\": " << closed
           << ", \"watertight_closed_shells\": " << watertight << ", \"small_angle_share\": " << thin_share
           << ", \"max_edge_tolerance\": " << max_edge_tolerance << ", \"deviation_ratio\": " << worst_ratio
-          << ", \"loose_faces\": " << loose_faces << ", \"faces_over\": " << over_faces << ", \"ms\": " << ms << "}\n";
+          << ", \"loose_faces\": " << loose_faces << ", \"faces_over\": " << over_faces << ", \"ms\": " << ms
+          << ", \"by_surface\": {";
+        for (auto it = by_type.begin(); it != by_type.end(); ++it) {
+            j << (it == by_type.begin() ? "" : ", ") << "\"" << surface_name(pack::SurfaceType(it->first)) << "\": {\"triangles\": " << it->second.triangles
+              << ", \"thin\": " << it->second.thin << "}";
+        }
+        j << "}}\n";
         if (!host::write_file(json, j.str(), error)) return die(error);
     }
     if (failed || watertight < closed) {

@@ -9,6 +9,11 @@
 //   facet-stress-model holes N OUT.step      a 1 mm plate of N through holes (N a square: 40 x 40
 //                                            = 1,600, 75 x 75 = 5,625) in one top face and one
 //                                            bottom face
+//   facet-stress-model machined OUT.step     a machined block of the kind a mechanical CAD system
+//                                            exports: planar faces of many loops (round, elliptical
+//                                            and slanted holes, some a hair apart), a cross bore
+//                                            whose seam the drilled holes cut, countersinks
+//                                            (cones), a filleted boss (tori), rounded corners
 //
 // The plate is built directly (a face with N inner wires, extruded), not by N boolean cuts:
 // it takes a second, where cutting 5,625 cylinders takes Open CASCADE many minutes.
@@ -22,7 +27,10 @@
 #include <BRepCheck_Analyzer.hxx>
 #include <BRepFilletAPI_MakeFillet.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCone.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRepAlgoAPI_Cut.hxx>
+#include <GC_MakeEllipse.hxx>
 #include <BRepPrimAPI_MakePrism.hxx>
 #include <BRepAlgoAPI_BuilderAlgo.hxx>
 #include <GC_MakeCircle.hxx>
@@ -46,7 +54,7 @@ namespace {
 
 int usage() {
     std::fprintf(stderr, "usage: facet-stress-model fillets OUT.step\n       facet-stress-model lenses OUT.step\n"
-                         "       facet-stress-model holes N OUT.step   (N = k * k)\n");
+                         "       facet-stress-model machined OUT.step\n       facet-stress-model holes N OUT.step   (N = k * k)\n");
     return 2;
 }
 
@@ -120,6 +128,91 @@ TopoDS_Shape holes(int k) {
     return BRepPrimAPI_MakePrism(face.Face(), gp_Vec(0, 0, 1)).Shape();
 }
 
+// A block of 160 x 100 x 24 mm. The top face ends with some 30 loops: holes of 0.6 to 6 mm
+// radius, pairs 0.02 mm apart, elliptical slots, holes slanted 30 degrees (elliptical edges on
+// the top face), countersunk holes (a cone on a cylinder); a bore along x whose seam faces up, so
+// that the holes drilled into it cross its seam; a boss on the top, filleted at its foot (a
+// torus) and drilled across its own seam; the block's vertical edges rounded.
+TopoDS_Shape machined() {
+    const double L = 160, W = 100, H = 24;
+    TopoDS_Shape block = BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), L, W, H).Shape();
+    // Round the vertical edges first (cylinders), then add the boss and cut the rest.
+    {
+        BRepFilletAPI_MakeFillet round(block);
+        for (TopExp_Explorer x(block, TopAbs_EDGE); x.More(); x.Next()) {
+            BRepAdaptor_Curve c(TopoDS::Edge(x.Current()));
+            if (c.GetType() == GeomAbs_Line && std::fabs(c.Line().Direction().Z()) > 0.99) round.Add(5, TopoDS::Edge(x.Current()));
+        }
+        round.Build();
+        if (!round.IsDone()) return {};
+        block = round.Shape();
+    }
+    // The boss: a cylinder whose seam (its x direction) faces -y, filleted where it meets the top.
+    {
+        const gp_Ax2 axis(gp_Pnt(130, 70, H - 1), gp::DZ(), -gp::DY());
+        BRepAlgoAPI_Fuse fuse(block, BRepPrimAPI_MakeCylinder(axis, 12, 15).Shape());
+        if (!fuse.IsDone()) return {};
+        block = fuse.Shape();
+        BRepFilletAPI_MakeFillet foot(block);
+        for (TopExp_Explorer x(block, TopAbs_EDGE); x.More(); x.Next()) {
+            BRepAdaptor_Curve c(TopoDS::Edge(x.Current()));
+            if (c.GetType() == GeomAbs_Circle && std::fabs(c.Circle().Location().Z() - H) < 1e-6 && c.Circle().Radius() > 11)
+                foot.Add(2, TopoDS::Edge(x.Current()));
+        }
+        foot.Build();
+        if (!foot.IsDone()) return {};
+        block = foot.Shape();
+    }
+    TopTools_ListOfShape tools;
+    auto drill = [&](double x, double y, double r) {
+        tools.Append(BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(x, y, -1), gp::DZ()), r, H + 2).Shape());
+    };
+    // Round holes, small to large, and pairs a hair apart (0.02 and 0.1 mm of wall).
+    for (int i = 0; i < 8; ++i) drill(12 + 11 * i, 12, 0.6 + 0.7 * i);
+    drill(20, 88, 3), drill(26.02, 88, 3);
+    drill(40, 88, 2), drill(44.1, 88, 2);
+    drill(60, 90, 1), drill(62.02, 90, 1), drill(61.01, 91.75, 1);
+    // Walls thinner than the CDT's grid unit on the top face (160 / 2^15 = 0.005 mm).
+    drill(76, 88, 3), drill(82.001, 88, 3);
+    drill(92, 88, 2), drill(96.0002, 88, 2);
+    // Elliptical slots, turned.
+    for (int i = 0; i < 4; ++i) {
+        const double a = 0.4 * i;
+        const gp_Ax2 axis(gp_Pnt(20 + 16 * i, 40, -1), gp::DZ(), gp_Dir(std::cos(a), std::sin(a), 0));
+        const TopoDS_Edge e = BRepBuilderAPI_MakeEdge(GC_MakeEllipse(axis, 6 - i, 1.5 + 0.5 * i).Value());
+        const TopoDS_Face f = BRepBuilderAPI_MakeFace(BRepBuilderAPI_MakeWire(e).Wire());
+        tools.Append(BRepPrimAPI_MakePrism(f, gp_Vec(0, 0, H + 2)).Shape());
+    }
+    // Slanted holes: 30 degrees from the vertical (an ellipse where each meets the top face).
+    for (int i = 0; i < 3; ++i) {
+        const gp_Dir d(std::sin(M_PI / 6), 0, std::cos(M_PI / 6));
+        const gp_Pnt top(90 + 12 * i, 45, H);
+        tools.Append(BRepPrimAPI_MakeCylinder(gp_Ax2(top.Translated(-gp_Vec(d) * 40), d), 1.5 + i, 60).Shape());
+    }
+    // Countersunk holes: a 90 degree cone over a hole.
+    for (int i = 0; i < 3; ++i) {
+        const double x = 100 + 14 * i, y = 20, r = 2 + i;
+        drill(x, y, r);
+        tools.Append(BRepPrimAPI_MakeCone(gp_Ax2(gp_Pnt(x, y, H - 2 * r), gp::DZ()), 0, 3 * r, 3 * r).Shape());
+    }
+    // The cross bore along x at mid height, its seam (x direction of its frame) facing up; the
+    // holes drilled from the top meet it on its seam, two of them straddling it.
+    tools.Append(BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(-1, 65, H / 2), gp::DX(), gp::DZ()), 6, L + 2).Shape());
+    for (int i = 0; i < 4; ++i) {
+        const double x = 30 + 22 * i, r = 1.5 + i;
+        tools.Append(BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(x, 65 + (i % 2 ? 0.0 : 0.01), H / 2), gp::DZ()), r, H).Shape());
+    }
+    // The boss drilled across, through its seam (-y).
+    tools.Append(BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(130, 50, H + 8), gp::DY()), 3, 40).Shape());
+    TopTools_ListOfShape args;
+    args.Append(block);
+    BRepAlgoAPI_Cut cut;
+    cut.SetArguments(args);
+    cut.SetTools(tools);
+    cut.Build();
+    return cut.IsDone() ? cut.Shape() : TopoDS_Shape();
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -131,6 +224,9 @@ int main(int argc, char** argv) {
         out = argv[2];
     } else if (argc == 3 && !std::strcmp(argv[1], "lenses")) {
         part = lenses();
+        out = argv[2];
+    } else if (argc == 3 && !std::strcmp(argv[1], "machined")) {
+        part = machined();
         out = argv[2];
     } else if (argc == 4 && !std::strcmp(argv[1], "holes")) {
         const int n = std::atoi(argv[2]);

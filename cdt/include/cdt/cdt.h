@@ -32,6 +32,7 @@ struct CdtStats {
     uint64_t cavities = 0;     // constraints that needed re-triangulation
     uint64_t cavity_triangles = 0;
     uint32_t work_peak = 0;    // most `work` entries in use at once
+    uint32_t splits = 0;       // constraints split at a vertex lying exactly on them
 };
 
 template <typename Index>
@@ -61,8 +62,14 @@ public:
     // Finds p by the straight walk from vertex `from` (an inserted, non-box vertex).
     Status locate(Point p, Index from, Location<Index>& out);
 
-    // Marks the triangles inside the loops (flood fill from the Along flags, §3.4).
+    // Marks the triangles inside the loops: those whose winding number is 1 or more (§3.4's
+    // flood fill, from the box, counting the loops crossed by their flags). Degenerate if a
+    // loop runs the wrong way (a winding number below 0) or the flags disagree.
     Status mark_inner();
+
+    // The vertex next to `from` on the way to `to` along a constraint's segment: `to` itself
+    // when they share an edge, else the vertex the segment was split at; kNone if neither.
+    Index step_along(Index from, Index to) const;
 
     // Read access.
     Index vertex_count() const { return nv_; }

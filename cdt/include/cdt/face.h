@@ -36,8 +36,9 @@ constexpr LocateMode kDefaultLocateMode = LocateMode::HilbertFirst;
 //
 // run(units) inserts up to `units` points or constraints (the flood fill at the end counts as
 // one) and returns Busy while work remains, Ok when done. On failure the result names the loop
-// and the point (its index in the input); the arena still holds a valid triangulation of what
-// was inserted before. The input's spans must stay valid until the end.
+// and the point (its index in the input), and a refused segment (Crossing) is kept in
+// refused(); the arena still holds a valid triangulation of what was inserted before. The
+// input's spans must stay valid until the end.
 template <typename Index>
 class FaceBuilder {
 public:
@@ -46,6 +47,13 @@ public:
     Result run(uint32_t units);
     uint32_t used() const { return used_; } // the units the last run() spent
     Point point(uint32_t i) const; // input point i (loop points, then interior ones)
+    // The loop segment the last failure refused: its first point and the next one along its
+    // loop (input indices); {kNoPoint, kNoPoint} when the failure was no segment's.
+    struct Segment {
+        uint32_t from, to;
+    };
+    static constexpr uint32_t kNoPoint = UINT32_MAX;
+    Segment refused() const { return refused_; }
 
 private:
     enum class Stage : uint8_t { Points, Constraints, Inner, Done, Failed };
@@ -58,6 +66,7 @@ private:
     uint32_t cl_ = 0, cj_ = 0, cfirst_ = 0;        // the next constraint: loop, point, loop's first
     bool tree_built_ = false;
     uint32_t used_ = 0;
+    Segment refused_{kNoPoint, kNoPoint};
     Result result_ = Result::fail(Status::Busy, "not started");
 };
 

@@ -56,7 +56,11 @@ struct FaceStats {
     uint32_t triangles = 0;
     uint32_t points = 0;      // CDT points (loop samples and refinement points)
     uint32_t slivers = 0;     // loop points kept as slivers (of FaceCapacity::slivers)
+    uint32_t untangled = 0;   // pieces of crossing loops dropped (as slivers; at most kMaxUntangles)
 };
+// The most pieces of crossing loops a face drops before it fails (each drop triangulates the
+// loops anew): a B-rep artefact takes one or two.
+constexpr uint32_t kMaxUntangles = 8;
 
 // Samples every edge of the pack. Full if the pool is too small.
 Result sample_edges(const Pack& pack, const TessOptions& opt, EdgeSamples& out);

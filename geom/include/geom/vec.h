@@ -2,7 +2,9 @@
 // Small float vectors for the geometry code.
 #include "geom/fmath.h"
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 
 namespace facet::geom {
 
@@ -12,6 +14,13 @@ struct Vec2 {
 struct Vec3 {
     float x, y, z;
 };
+
+// One point: the same bits (compared as integers: float compares are library calls on a
+// soft-float core). Samples of one point are copies of one computation.
+inline bool same_point(Vec3 p, Vec3 q) {
+    return std::bit_cast<uint32_t>(p.x) == std::bit_cast<uint32_t>(q.x) && std::bit_cast<uint32_t>(p.y) == std::bit_cast<uint32_t>(q.y) &&
+           std::bit_cast<uint32_t>(p.z) == std::bit_cast<uint32_t>(q.z);
+}
 
 inline Vec3 operator+(Vec3 a, Vec3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
 inline Vec3 operator-(Vec3 a, Vec3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
