@@ -320,7 +320,9 @@ void Presenter::run_piece(uint32_t units, uint32_t pass) {
         if (job_.full && layer_holds(job_.applied_to)) { // the faces kept for the view: its copy, then the edges alone
             job_.copy = true;
             job_.stage = Job::Stage::Edges;
-        } else if (job_.full && layer_.pixels) {
+        } else if (job_.full && layer_.pixels && !job_.dragging) {
+            // (A frame while the view moves is drawn lighter, into the buffer: the layer keeps
+            // full detail, and the frame once the view rests draws it anew.)
             job_.into_layer = true;
             // The faces it lacks (drawn in a pass since), or all of them.
             job_.layer_update = layer_.version == job_.faces_version;

@@ -292,10 +292,16 @@ TEST(Detail, ASolidsRoundFaceTurnedAwayWaitsAndDrawsWhatEveryFaceIn) {
 // While the view is dragged, a face under module::kSplatPixels across is drawn as a splat of its colour
 // (painter.cpp), not as its triangles (coarser detail while the view moves, issue 25): fewer
 // triangles, and each such square still shows where its centre is.
-TEST(Detail, ADragDrawsFacesAFewPixelsAcrossAsSplats) {
+// With a faces layer as without: a frame while the view is dragged is drawn into the buffer,
+// lighter; the layer keeps full detail, drawn anew when the view rests.
+class DragWithLayer : public ::testing::TestWithParam<bool> {};
+INSTANTIATE_TEST_SUITE_P(Detail, DragWithLayer, ::testing::Values(false, true));
+
+TEST_P(DragWithLayer, ADragDrawsFacesAFewPixelsAcrossAsSplats) {
     // The squares between kFacePixels and the splats' size across: those nearer the eye in,
     // the rest specks.
     App app;
+    app.faces_layer = GetParam();
     app.w = uint16_t(160 * (module::kFacePixels + module::kSplatPixels) / 5);
     app.h = app.lines = uint16_t(120 * (module::kFacePixels + module::kSplatPixels) / 5);
     ASSERT_TRUE(app.create().ok());
