@@ -161,7 +161,7 @@ Activity Core::step(uint32_t budget_us) {
             glide_step(); // the last frame is out: the next step of the glide
         } else if (frame) {
             presenter_.set_boxes(boxes_while_sampling());
-            presenter_.set_dragging(controls_.dragging());
+            presenter_.set_dragging(controls_.dragging() || glide_.phase == Glide::Phase::Moving);
             const Work w = presenter_.work();
             work(Event::Kind::WorkBegin, w, 0);
             presenter_.run(kFrameUnits, scheduler_.pass());

@@ -333,6 +333,34 @@ TEST_P(DragWithLayer, ADragDrawsFacesAFewPixelsAcrossAsSplats) {
     EXPECT_GT(full_frame(), 2 * dragged) << "most squares splats while dragging";
 }
 
+// A glide to a standard view draws its frames as a drag does (a face a few pixels across a
+// splat, no B-rep edges): the frames between are the view moving; the one it ends on is whole.
+TEST_P(DragWithLayer, AGlideDrawsItsFramesAsADragDoes) {
+    App app;
+    app.faces_layer = GetParam();
+    app.w = uint16_t(160 * (module::kFacePixels + module::kSplatPixels) / 5);
+    app.h = app.lines = uint16_t(120 * (module::kFacePixels + module::kSplatPixels) / 5);
+    ASSERT_TRUE(app.create().ok());
+    ASSERT_TRUE(app.load(squares(1600, 40)).ok());
+    app.run();
+    ASSERT_EQ(app.v->step(1000), Activity::Idle);
+    const size_t from = app.events.size();
+    app.v->key('0'); // the isometric view, in a glide
+    app.run();
+    std::vector<uint32_t> triangles; // of each whole frame the glide drew
+    for (size_t i = from; i < app.events.size(); ++i) {
+        const Event& e = app.events[i];
+        if (e.kind == Event::Kind::FrameDone && e.frame.full) triangles.push_back(e.frame.triangles);
+    }
+    // The glide's frames, then the one it ends on (and, at rest, what the view brings in, or
+    // over a faces layer a copy of it with the edges alone).
+    ASSERT_FALSE(triangles.empty());
+    const uint32_t whole = *std::max_element(triangles.begin(), triangles.end());
+    size_t k = 0;
+    while (k < triangles.size() && 2 * triangles[k] < whole) ++k;
+    EXPECT_GE(k, 5u) << "a glide's frames, splats where the faces are a few pixels across";
+}
+
 // A part placed twice, one copy far below the other (the view looks down): its faces are
 // tessellated for the nearer copy, and the farther one, where they are under kFacePixels, draws
 // them as specks as the view draws a face it left out (issue 25: a frame follows the screen).
