@@ -372,9 +372,7 @@ Result Pack::check_records() {
     constexpr uint32_t IN = uint32_t(SectionId::Instances);
     for (uint32_t i = 0; i < instances_.size(); ++i) {
         if (instances_[i].shell >= shells_.size()) return fail("shell index out of range", IN, i);
-        for (float f : instances_[i].m) {
-            if (!finite(f)) return fail("placement is NaN, infinite or beyond +-1e8", IN, i);
-        }
+        if (const char* why = pack::placement_problem(instances_[i].m)) return fail(why, IN, i);
     }
     return {};
 }

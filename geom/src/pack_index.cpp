@@ -152,9 +152,7 @@ Result PackIndex::check_records() {
     }
     for (uint32_t i = 0; i < instances_.size(); ++i) {
         if (instances_[i].shell >= parts_.size()) return fail("part index out of range", I, i);
-        for (const float f : instances_[i].m) {
-            if (!finite(f)) return fail("placement is NaN, infinite or beyond +-1e8", I, i);
-        }
+        if (const char* why = pack::placement_problem(instances_[i].m)) return fail(why, I, i);
     }
     if (!names_.empty() && names_.back() != 0) return fail("the last name is not ended by a 0 byte", N, uint32_t(names_.size() - 1));
     if (names_.size() & 3) return fail("not padded to a multiple of 4 bytes", N, 0);

@@ -4,6 +4,7 @@
 #include "scene.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace facet::module {
 namespace {
@@ -39,6 +40,18 @@ View standard_view(Standard s, const View& from) {
     return v;
 }
 
+View Camera::in_range(View v, float radius) {
+    const View def{};
+    // (Any finite angle turns the same way: geom::sincos_f reduces it exactly.)
+    if (!std::isfinite(v.yaw)) v.yaw = def.yaw;
+    if (!std::isfinite(v.pitch)) v.pitch = def.pitch;
+    v.zoom = std::isfinite(v.zoom) ? std::clamp(v.zoom, kNearest, kFarthest) : def.zoom;
+    const float most = kPanRadii * (radius > 0 && std::isfinite(radius) ? radius : 1);
+    v.pan_x = std::isfinite(v.pan_x) ? std::clamp(v.pan_x, -most, most) : 0;
+    v.pan_y = std::isfinite(v.pan_y) ? std::clamp(v.pan_y, -most, most) : 0;
+    return v;
+}
+
 void Camera::orbit(float d_yaw, float d_pitch) {
     view_.yaw += d_yaw;
     view_.pitch += d_pitch;
@@ -62,10 +75,12 @@ void Camera::pan_pixels(int32_t dx, int32_t dy, float radius, uint16_t width, ui
     view_.pan_y -= float(dy) * px / 2;
 }
 
-void Camera::rotation(float R[9]) const {
+void Camera::rotation(float R[9]) const { rotation(in_range(view_, 1), R); }
+
+void Camera::rotation(const View& v, float R[9]) {
     float sy, cy, sp, cp;
-    geom::sincos_f(view_.yaw, sy, cy);
-    geom::sincos_f(view_.pitch, sp, cp);
+    geom::sincos_f(v.yaw, sy, cy);
+    geom::sincos_f(v.pitch, sp, cp);
     // Rotate about z (yaw), then tilt about x (pitch): CAD models are usually z-up.
     const float r[9] = {cy, -sy, 0, sy * cp, cy * cp, -sp, sy * sp, cy * sp, cp};
     for (int i = 0; i < 9; ++i) R[i] = r[i];
@@ -73,7 +88,7 @@ void Camera::rotation(float R[9]) const {
 
 // The transform's dist over its view units per mm (the sphere's radius is kRadiusV units).
 float Camera::distance_mm(const Scene& scene) const {
-    return float(eye_distance(view_.zoom)) * (2 * scene.radius()) / kViewPerDiagonal;
+    return float(eye_distance(in_range(view_, scene.radius()).zoom)) * (2 * scene.radius()) / kViewPerDiagonal;
 }
 
 float Camera::focal_px(uint16_t width, uint16_t height) {
@@ -81,10 +96,11 @@ float Camera::focal_px(uint16_t width, uint16_t height) {
 }
 
 Transform Camera::transform(const Scene& scene, uint32_t index, uint16_t width, uint16_t height) const {
+    const View v = in_range(view_, scene.radius()); // (in range by construction, whatever the view holds)
     const pack::Instance& inst = scene.instances()[index];
     Transform in{};
     float R[9];
-    rotation(R);
+    rotation(v, R);
     const float* m = inst.m;
     float A[9];
     for (int i = 0; i < 3; ++i)
@@ -93,7 +109,7 @@ Transform Camera::transform(const Scene& scene, uint32_t index, uint16_t width, 
     const float* centre = scene.centre();
     const float v_per_mm = kViewPerDiagonal / (2 * radius);
     const float t[3] = {m[3] - centre[0], m[7] - centre[1], m[11] - centre[2]};
-    const float pan[3] = {view_.pan_x, view_.pan_y, 0};
+    const float pan[3] = {v.pan_x, v.pan_y, 0};
     // View units per mesh unit: 1/16 when the placed model is its shells' own box (the view's
     // diagonal is 2^16 units, the mesh's 2^20); at most 1 (Scene::fit_bounds keeps it so).
     const float k = scene.unit() * v_per_mm;
@@ -109,7 +125,7 @@ Transform Camera::transform(const Scene& scene, uint32_t index, uint16_t width, 
     in.mirrored = det < 0;
     in.closed = scene.part(inst.shell).closed;
 
-    in.dist = eye_distance(view_.zoom);
+    in.dist = eye_distance(v.zoom);
     in.near = kRadiusV / 64;
     in.f16 = focal16(width, height);
     in.cx16 = int32_t(width) * (render::subpixel::kPerPixel / 2); // the screen's centre
@@ -117,7 +133,7 @@ Transform Camera::transform(const Scene& scene, uint32_t index, uint16_t width, 
     in.guard = render::kGuardBand - (in.cx16 > in.cy16 ? in.cx16 : in.cy16) - 64;
     const int32_t far = in.dist + kRadiusV;
     in.zk = (int64_t(65535) << 16) / (far - in.near > 1 ? far - in.near : 1);
-    in.ortho = view_.ortho;
+    in.ortho = v.ortho;
     if (in.ortho) in.ortho_r = render::reciprocal(uint32_t(in.dist));
     {
         // The eye (view (0, 0, dist)) and the way to it (view +z) back in shell coordinates:
@@ -158,15 +174,16 @@ Transform Camera::transform(const Scene& scene, uint32_t index, uint16_t width, 
 }
 
 SphereView Camera::sphere_view(const Scene& scene, uint16_t width, uint16_t height) const {
+    const View v = in_range(view_, scene.radius());
     SphereView s{};
-    rotation(s.R);
+    rotation(v, s.R);
     for (int k = 0; k < 3; ++k) s.centre[k] = scene.centre()[k];
-    s.pan[0] = view_.pan_x, s.pan[1] = view_.pan_y;
-    s.dist = distance_mm(scene);
+    s.pan[0] = v.pan_x, s.pan[1] = v.pan_y;
+    s.dist = float(eye_distance(v.zoom)) * (2 * scene.radius()) / kViewPerDiagonal; // (distance_mm, in range)
     s.near = float(kRadiusV / 64) * (2 * scene.radius()) / kViewPerDiagonal; // as Transform::near
     s.focal = focal_px(width, height);
     s.half_w = 0.5f * float(width), s.half_h = 0.5f * float(height);
-    s.ortho = view_.ortho;
+    s.ortho = v.ortho;
     return s;
 }
 

@@ -197,6 +197,14 @@ class Camera {
 public:
     static constexpr float kTurn = 0.2617993878f; // a key turns by 15 degrees
     static constexpr float kNearest = 0.05f, kFarthest = 20.0f; // the dolly's range
+    // How far a pan may take the model's centre from the view's: this many radii of its
+    // bounding sphere (the view units it gives, 2^21, keep every transform's sums in 32 bits).
+    static constexpr float kPanRadii = 64;
+    // v with its dolly within kNearest and kFarthest and its pan within kPanRadii of `radius`
+    // (mm): what every view drawn is made of, however the view was reached (a value not
+    // finite: the default's).
+    static View in_range(View v, float radius);
+    void keep_in_range(float radius) { view_ = in_range(view_, radius); }
 
     void fit() { view_ = View{}; } // the whole model's sphere, from the default direction
     // The sphere framed again from the current direction (before Framing adjusts it).
@@ -215,6 +223,7 @@ public:
 
     // The orbit's rotation (row-major): world axes into the camera's (x right, y up, z to the eye).
     void rotation(float R[9]) const;
+    static void rotation(const View& v, float R[9]);
     // The eye's distance from the model's centre (mm) and the focal length (pixels).
     float distance_mm(const Scene& scene) const;
     static float focal_px(uint16_t width, uint16_t height);

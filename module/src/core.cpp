@@ -227,6 +227,7 @@ void Core::command(const module::Command& c) {
 }
 
 void Core::view_changed() {
+    camera_.keep_in_range(scene_.radius()); // (a pan accumulated past kPanRadii stops there)
     user_moved_ = true;
     presenter_.invalidate();
     Event e{};

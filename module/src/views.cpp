@@ -88,6 +88,10 @@ Result Core::set_orbit(const Orbit& o) {
     if (!(o.dolly >= module::Camera::kNearest && o.dolly <= module::Camera::kFarthest)) {
         return Result::fail(Status::OutOfRange, "the orbit's dolly is outside 0.05 to 20");
     }
+    const float most = module::Camera::kPanRadii * scene_.radius();
+    if (!(std::fabs(o.pan_mm[0]) <= most && std::fabs(o.pan_mm[1]) <= most)) {
+        return Result::fail(Status::OutOfRange, "the orbit's pan takes the model further than 64 of its radii away");
+    }
     glide_.phase = Glide::Phase::None;
     framer_.stop();
     camera_.set_view({o.yaw_deg / kDegrees, o.pitch_deg / kDegrees, o.dolly, o.pan_mm[0], o.pan_mm[1], o.parallel});

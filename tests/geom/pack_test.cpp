@@ -370,3 +370,38 @@ TEST(Pack, BSplineKnotsMustNotDecreaseAndWeightsMustBePositive) {
         EXPECT_NE(text(r).find("knots decrease or a weight is not positive"), std::string::npos) << text(r);
     }
 }
+
+// A placement places a part whole: a rotation (or a rotation and a mirror), orthonormal within
+// kPlacementTolerance, entries within +-1e8 (issue 49: one entry at 1e-38, a row of zeros, an
+// entry of 1e7 passed and overflowed the view's arithmetic later).
+TEST(Pack, APlacementThatIsNoRotationIsRefused) {
+    auto with = [](auto change) {
+        Buf b(cube_pack());
+        change(b.record<Instance>(SectionId::Instances, 0).m);
+        b.reseal();
+        Pack p;
+        return b.open(p);
+    };
+    for (const auto& change : std::initializer_list<void (*)(float*)>{
+             [](float* m) { m[0] = 1e-38f; },                 // a squashed axis
+             [](float* m) { m[4] = m[5] = m[6] = m[7] = 0; }, // a row of zeros
+             [](float* m) { m[1] = 1e7f; },                   // sheared
+             [](float* m) { m[0] = m[5] = m[10] = 2; },       // scaled twice
+             [](float* m) { m[1] = 2e-4f; }}) {               // past the tolerance
+        const Result r = with(change);
+        EXPECT_EQ(r.status, Status::Corrupt);
+        EXPECT_EQ(section_of(r), uint32_t(SectionId::Instances));
+        EXPECT_EQ(text(r), "section Instances record 0: placement is no rotation (its rows are not unit vectors at right angles: "
+                           "a part stretched or flattened)");
+    }
+    EXPECT_EQ(with([](float* m) { m[3] = std::nanf(""); }).status, Status::Corrupt);
+    EXPECT_EQ(with([](float* m) { m[7] = 2e8f; }).status, Status::Corrupt) << "a translation beyond +-1e8";
+    // Accepted: a turn (about z by 30 degrees), a mirror, float rounding, a far translation.
+    EXPECT_TRUE(with([](float* m) {
+                    const float c = 0.8660254f, s = 0.5f;
+                    m[0] = c, m[1] = -s, m[4] = s, m[5] = c;
+                }).ok());
+    EXPECT_TRUE(with([](float* m) { m[0] = -1; }).ok()) << "a mirror";
+    EXPECT_TRUE(with([](float* m) { m[1] = 5e-5f; }).ok()) << "within the tolerance";
+    EXPECT_TRUE(with([](float* m) { m[3] = 9e7f; }).ok());
+}

@@ -72,6 +72,56 @@ def broken_step_files():
     expect_exit(run([ARGS.mesher, os.path.join(d, 'cut.step')]), 1, r'cut\.step: ', 'facet-mesh of a STEP file')
 
 
+def ftc11_changed(d, name, old, new):
+    """nist_ftc_11 with one piece of its text replaced (the finding's malformed file)."""
+    text = open(os.path.join(ARGS.models, 'nist_ftc_11.stp'), encoding='latin-1').read()
+    expect(old in text, f'{old!r} is in nist_ftc_11.stp')
+    path = os.path.join(d, name)
+    open(path, 'w', encoding='latin-1').write(text.replace(old, new, 1))
+    return path
+
+
+def malformed_step_is_refused_not_crashed():
+    """Issue 49: a syntax error inside an entity, a reference to nothing, an axis placement that
+    refers to itself sent Open CASCADE's reader through a null reference: facet-pack died of
+    SIGSEGV (exit 139). Now exit 1, naming the entities, and nothing written."""
+    d = work('malformed-step')
+    out = os.path.join(d, 'out.fpk')
+    cases = {
+        'syntax.stp': ("#74=VERTEX_POINT('',#73);", "#74=VERTEX_POINT('',#73 ,,);", r'#74: Count of Parameters'),
+        'dangling.stp': ("#74=VERTEX_POINT('',#73);", "#74=VERTEX_POINT('',#99999);", r'Unresolved Reference, Ent\.Id\.#74'),
+        'itself.stp': ("#71=AXIS2_PLACEMENT_3D('',#68,#69,#70);", "#71=AXIS2_PLACEMENT_3D('',#71,#69,#70);", r'#71: Parameter'),
+    }
+    for name, (old, new, needle) in cases.items():
+        r = run([ARGS.packer, ftc11_changed(d, name, old, new), '-o', out], timeout=60)
+        expect_exit(r, 1, needle, name)
+        expect(r.returncode != 139 and not os.path.exists(out), f'{name}: a crash, or a pack written')
+
+
+def lost_faces_fail_whole_or_blocked():
+    """Issue 49: nist_ftc_11 in picometres lost 4 of its 6 faces; facet-pack exited 0 (blocked:
+    a pack whose index did not open; --whole: empty shells), and counted 6 surface types for 2
+    faces. Now exit 1 either way unless --partial; with it, a pack that opens, its counts right."""
+    d = work('lost-faces')
+    pico = ftc11_changed(d, 'pico.stp', 'SI_UNIT(.MILLI.,.METRE.)', 'SI_UNIT(.PICO.,.METRE.)')
+    out = os.path.join(d, 'pico.fpk')
+    for extra in ([], ['--whole']):
+        expect_exit(run([ARGS.packer, pico, '-o', out] + extra), 1, r'4 of 6 faces could not be packed.*\n.*--partial', f'{extra}')
+        expect(not os.path.exists(out), f'{extra}: a pack was written')
+    r = run([ARGS.packer, pico, '-o', out, '--partial'])
+    expect_exit(r, 0, r'2 faces \(2 torus\), .*4 faces skipped', '--partial')
+    expect_exit(run([ARGS.packer, '--check', out]), 0, r'valid pack, 2 faces', '--check of the partial pack')
+
+
+def degenerate_circle_is_refused():
+    """Issue 49: a circle of radius 0 (one of a cylinder's two) packed with exit 0, and only
+    facet-mesh noticed, as a 16 mm deviation: healing leaves the cylinder bounded by its other
+    circle alone. Now the face is refused, and the message says why."""
+    d = work('radius-0')
+    path = ftc11_changed(d, 'r0.stp', "#79=CIRCLE('',#78,16.0);", "#79=CIRCLE('',#78,0.0);")
+    expect_exit(run([ARGS.packer, path, '-o', os.path.join(d, 'r0.fpk')]), 1, r'boundary encloses no area', 'radius 0')
+
+
 def mesh_of_a_directory():
     """facet-mesh DIR aborted on an uncaught std::ios_base::failure."""
     expect_exit(run([ARGS.mesher, ARGS.work]), 1, 'is a directory, not a file', 'facet-mesh DIR')
@@ -335,7 +385,8 @@ def screenshot_names_stay_in_the_folder():
         expect(not runner.safe_name(bad), f'{bad!r} accepted')
 
 
-TESTS = [broken_step_files, mesh_of_a_directory, check_of_a_directory_or_a_device, writes_onto_a_full_disk, face_with_a_missing_surface,
+TESTS = [broken_step_files, malformed_step_is_refused_not_crashed, lost_faces_fail_whole_or_blocked, degenerate_circle_is_refused,
+         mesh_of_a_directory, check_of_a_directory_or_a_device, writes_onto_a_full_disk, face_with_a_missing_surface,
          tolerance_must_be_a_positive_number, output_is_the_input, trailing_bytes_and_reserved_fields,
          coarse_and_fine_tolerances, lens_faces_at_coarse_tolerances, incomplete_mesh_exits_5, ndr_part01_reads,
          plate_of_many_holes_packs_with_progress, large_model_packs_with_deflate, budget_report_exit_codes,

@@ -241,3 +241,56 @@ TEST(Viewer, FitWithASectionFramesTheSideItKeeps) {
     EXPECT_NEAR((kept[1] + kept[3]) / 2.0, taken.top + ah / 2, 1.5);
     EXPECT_NEAR(std::max((kept[2] - kept[0]) / aw, (kept[3] - kept[1]) / ah), module::Framer::kFill, 0.02);
 }
+
+// The camera at its extremes (issue 49): whatever the API takes, the view arithmetic stays in
+// range on every display size (this suite runs under UBSan too, where an overflow aborts). A
+// value past the range is refused (OutOfRange) and changes nothing; one within it, however far
+// (an angle of 1e30 degrees, a pan to the edge of the range, keys and drags repeated past it),
+// draws.
+TEST(Viewer, TheCameraAtItsExtremesKeepsItsArithmeticInRange) {
+    const std::pair<uint16_t, uint16_t> sizes[] = {{1, 1}, {2, 600}, {600, 2}, {160, 120}, {480, 272}, {640, 480}, {1024, 600}};
+    const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
+    const float big = std::numeric_limits<float>::max();
+    for (auto [w, h] : sizes) {
+        SCOPED_TRACE(std::to_string(w) + "x" + std::to_string(h));
+        App app;
+        app.w = w, app.h = app.lines = h;
+        ASSERT_TRUE(app.create().ok());
+        ASSERT_TRUE(app.load(polygon_and_triangle(40)).ok());
+        app.run();
+        const float most = module::Camera::kPanRadii * static_cast<const Core*>(app.v)->scene().radius();
+        // Refused, nothing changed.
+        for (const Orbit& o : {Orbit{nan, 0, 1, {0, 0}, false}, Orbit{0, inf, 1, {0, 0}, false}, Orbit{0, 0, 0.01f, {0, 0}, false},
+                               Orbit{0, 0, 1e30f, {0, 0}, false}, Orbit{0, 0, 1, {1e30f, 0}, false}, Orbit{0, 0, 1, {0, -big}, false},
+                               Orbit{0, 0, 1, {2 * most, 0}, false}, Orbit{0, 0, 1, {0, -inf}, false}}) {
+            const Orbit before = app.v->orbit();
+            EXPECT_EQ(app.v->set_orbit(o).status, Status::OutOfRange);
+            const Orbit after = app.v->orbit();
+            EXPECT_EQ(std::memcmp(&before, &after, sizeof before), 0) << "a refused orbit changes nothing";
+        }
+        // Taken and drawn: every corner of the range.
+        for (float angle : {1e30f, -1e30f, big, -big, 8191.9f, 1e-30f})
+            for (float dolly : {module::Camera::kNearest, module::Camera::kFarthest})
+                for (float pan : {most, -most, 0.0f})
+                    for (bool parallel : {false, true}) {
+                        ASSERT_TRUE(app.v->set_orbit({angle, -angle, dolly, {pan, -pan}, parallel}).ok());
+                        for (int k = 0; k < 3; ++k) app.v->step(100000);
+                    }
+        app.run();
+        // Keys and drags past the range: the pan stops at its edge, the dolly at its ends.
+        ASSERT_TRUE(app.v->set_orbit({0, 0, 1, {0, 0}, false}).ok());
+        for (int k = 0; k < 2000; ++k) app.v->act(k % 2 ? Action::PanRight : Action::PanUp), app.v->act(Action::ZoomOut);
+        app.v->step(100000);
+        for (uint8_t buttons : {1, 2, 4}) { // relative motion at its largest, each button held
+            app.v->pointer(0, 0, buttons);
+            for (int k = 0; k < 200; ++k) app.v->pointer(INT16_MAX, INT16_MIN, buttons);
+            app.v->pointer(0, 0, 0);
+            app.v->step(100000);
+        }
+        app.run();
+        const Orbit o = app.v->orbit();
+        EXPECT_LE(std::fabs(o.pan_mm[0]), most);
+        EXPECT_LE(std::fabs(o.pan_mm[1]), most);
+        EXPECT_LE(o.dolly, module::Camera::kFarthest);
+    }
+}

@@ -35,6 +35,8 @@
 
 #include <IFSelect_ReturnStatus.hxx>
 #include <Message.hxx>
+#include <OSD.hxx>
+#include "printable.h"
 #include <Message_Gravity.hxx>
 #include <Message_Messenger.hxx>
 #include <STEPCAFControl_Reader.hxx>
@@ -202,15 +204,28 @@ int main(int argc, char** argv) {
     }
     // OCCT's own trace messages are noise for a command-line user; keep warnings and worse.
     for (auto& p : Message::DefaultMessenger()->Printers()) p->SetTraceLevel(Message_Fail);
+    // A malformed file can send Open CASCADE's readers through a null reference (a dangling
+    // #id, an entity that refers to itself): signals become its exceptions, caught where it
+    // transfers each entity (that entity fails, the rest is read) and here (exit 1, not a crash).
+    OSD::SetSignal(false);
 
     packer::StepModel model;
     std::string error;
     if (!packer::read_step(in, model, error, quiet, unit)) return die(error);
-    if (!model.lost.empty()) {
-        std::string why = std::to_string(model.lost.size()) + " of " + std::to_string(model.face_entities) +
-                          " faces in the STEP file could not be read";
-        for (size_t k = 0; k < model.lost.size() && k < 3; ++k) why += "\n  " + model.lost[k];
-        if (model.lost.size() > 3) why += "\n  (and " + std::to_string(model.lost.size() - 3) + " more)";
+    if (!model.lost.empty() || !model.failed.empty()) {
+        auto list = [](std::string& why, const std::vector<std::string>& items) {
+            for (size_t k = 0; k < items.size() && k < 3; ++k) why += "\n  " + packer::printable(items[k]);
+            if (items.size() > 3) why += "\n  (and " + std::to_string(items.size() - 3) + " more)";
+        };
+        std::string why;
+        if (!model.lost.empty()) {
+            why = std::to_string(model.lost.size()) + " of " + std::to_string(model.face_entities) + " faces in the STEP file could not be read";
+            list(why, model.lost);
+        }
+        if (!model.failed.empty()) {
+            why += std::string(why.empty() ? "" : "\n  ") + "Open CASCADE could not translate parts of the STEP file (what they hold is lost):";
+            list(why, model.failed);
+        }
         if (!partial) return die(std::string(in) + ": " + why + "\n  --partial packs the faces that could be read");
         std::fprintf(stderr, "facet-pack: warning: %s: %s\n", in, why.c_str());
     }
@@ -235,6 +250,13 @@ int main(int argc, char** argv) {
         return die(std::string(in) + ": no face could be packed" +
                    (stats.first_problem.empty() ? "" : " (" + stats.first_problem + ")"));
     }
+    if (stats.faces_skipped) { // a face lost is a failure, whatever the pack's form, unless asked for
+        std::string why = std::to_string(stats.faces_skipped) + " of " + std::to_string(stats.faces + stats.faces_skipped) +
+                          " faces could not be packed (" + stats.first_problem + ")";
+        if (stats.empty_parts) why += "; " + std::to_string(stats.empty_parts) + " parts lost every face and are left out";
+        if (!partial) return die(std::string(in) + ": " + why + "\n  --partial packs the faces that could be");
+        std::fprintf(stderr, "facet-pack: warning: %s: %s\n", in, why.c_str());
+    }
     if (!quiet) packer::progress(plain ? "writing" : "compressing");
     const std::vector<uint8_t> pack = writer.finish();
     if (!plain && !deflated && !lzma) deflated = pack.size() > kLzmaUpTo; // a large model: decoded faster
@@ -251,12 +273,34 @@ int main(int argc, char** argv) {
         options.store = plain ? geom::BlockStore::Plain : deflated ? geom::BlockStore::Deflated : geom::BlockStore::Lzma;
         if (!geom::make_blocked(opened, packer::part_boxes(packer.prototypes), options, bytes, error)) return die(error);
         geom::PackIndex index;
-        blocks = index.open(bytes.data(), uint32_t(bytes.size())).ok() ? uint32_t(index.blocks().size()) : 0;
+        if (const Result r = index.open(bytes.data(), uint32_t(bytes.size())); !r.ok()) {
+            char text[160];
+            describe(r, text, sizeof text);
+            return die(std::string("the blocked pack made does not open: ") + text);
+        }
+        blocks = uint32_t(index.blocks().size());
         if (blocks == 1) whole = true; // one block: the whole pack as it is, without an index
     }
     if (whole) {
         bytes = plain ? pack : (deflated ? geom::deflate_pack(pack) : geom::lzma_pack(pack));
         if (bytes.empty()) return die(deflated ? "zlib could not deflate the pack" : "liblzma could not compress the pack");
+    }
+    {
+        // Read back as --check and the device would, before it is written: a pack that does not
+        // open, or holds less than was packed, is no pack.
+        geom::LoadedPack back;
+        geom::Pack opened;
+        if (!geom::load_pack_bytes(bytes, back, error)) return die("the pack made does not read back: " + error);
+        if (const Result r = opened.open(back.data(), back.bytes); !r.ok()) {
+            char text[160];
+            describe(r, text, sizeof text);
+            return die(std::string("the pack made does not open: ") + text);
+        }
+        if (opened.faces().size() != stats.faces || opened.instances().size() != stats.instances) {
+            return die("the pack made holds " + std::to_string(opened.faces().size()) + " faces and " +
+                       std::to_string(opened.instances().size()) + " instances, not the " + std::to_string(stats.faces) + " and " +
+                       std::to_string(stats.instances) + " packed");
+        }
     }
     if (!host::write_file(out, bytes.data(), bytes.size(), error)) return die(error);
     if (reference && !host::write_file(reference, packer::reference_json(packer.packed_faces, model.unit_mm), error)) return die(error);
@@ -265,6 +309,7 @@ int main(int argc, char** argv) {
     std::printf("%s: %u solids, %u open shells, %u instances, %u faces (%s), %u edges (%u tangent)", in, stats.solids, stats.shells,
                 stats.instances, stats.faces, types.c_str(), stats.edges, stats.smooth_edges);
     if (stats.faces_skipped) std::printf(", %u faces skipped (%s)", stats.faces_skipped, stats.first_problem.c_str());
+    if (stats.empty_parts) std::printf(", %u parts left out (no face of theirs packed)", stats.empty_parts);
     std::printf("\n  pack %zu bytes = %.1f%% of the STEP file (%lld bytes)", bytes.size(),
                 100.0 * double(bytes.size()) / double(st.st_size), (long long)st.st_size);
     if (!plain || !whole) std::printf("; %zu bytes decoded", pack.size());

@@ -1,5 +1,7 @@
 #include "occt_to_pack.h"
 
+#include <ShapeAnalysis_Surface.hxx>
+
 #include <BRepBndLib.hxx>
 #include <Bnd_Box.hxx>
 
@@ -410,6 +412,68 @@ uint32_t Packer::colour_of(const TopoDS_Shape& s) {
     return i;
 }
 
+namespace {
+
+// How far the edge's 3D curve lies from the surface at most, at five points along it (0 for an
+// edge with no 3D curve).
+double edge_off_surface(const TopoDS_Edge& e, ShapeAnalysis_Surface& surface) {
+    if (BRep_Tool::Degenerated(e)) return 0;
+    double t0, t1;
+    TopLoc_Location loc;
+    Handle(Geom_Curve) c = BRep_Tool::Curve(e, loc, t0, t1);
+    if (c.IsNull()) return 0;
+    double most = 0;
+    for (int k = 0; k <= 4; ++k) {
+        gp_Pnt p = c->Value(t0 + (t1 - t0) * k / 4);
+        if (!loc.IsIdentity()) p.Transform(loc.Transformation());
+        (void)surface.ValueOfUV(p, 1e-7);
+        most = std::max(most, surface.Gap());
+    }
+    return most;
+}
+
+// A degenerate edge (a pole or an apex: one point) whose pcurve the surface maps elsewhere than
+// its vertex (a circle of radius 0 on a cylinder, which has no pole: healing makes it one): how
+// far, at most, at five points of the pcurve.
+double pole_off_vertex(const TopoDS_Edge& e, const Handle(Geom2d_Curve)& pc, double f0, double f1, const Handle(Geom_Surface)& s) {
+    TopoDS_Vertex a, b;
+    TopExp::Vertices(e, a, b);
+    if (a.IsNull() || pc.IsNull()) return 0;
+    const gp_Pnt v = BRep_Tool::Pnt(a);
+    double most = 0;
+    for (int k = 0; k <= 4; ++k) {
+        const gp_Pnt2d uv = pc->Value(f0 + (f1 - f0) * k / 4);
+        most = std::max(most, s->Value(uv.X(), uv.Y()).Distance(v));
+    }
+    return most;
+}
+
+// Empty when the curve's ends (at t0, t1) lie at the edge's vertices, within ten times the
+// larger of the edge's and the vertex's tolerances (and a micron); else what is wrong.
+std::string curve_misses_vertices(const Handle(Geom_Curve)& c, double t0, double t1, const TopoDS_Vertex& a, const TopoDS_Vertex& b,
+                                  double edge_tolerance) {
+    const TopoDS_Vertex ends[2] = {a, b};
+    const double at[2] = {t0, t1};
+    double worst = 0;
+    for (int k = 0; k < 2; ++k) {
+        if (ends[k].IsNull()) continue;
+        const double allowed = 10 * std::max(edge_tolerance, BRep_Tool::Tolerance(ends[k])) + 1e-3;
+        const double d = c->Value(at[k]).Distance(BRep_Tool::Pnt(ends[k]));
+        if (d > allowed) worst = std::max(worst, d);
+    }
+    if (worst == 0) return {};
+    char text[200];
+    const GeomAdaptor_Curve g(c);
+    if (g.GetType() == GeomAbs_Circle) {
+        std::snprintf(text, sizeof text, "an edge's circle (radius %.4g mm) misses its vertices by %.4g mm: refused", g.Circle().Radius(), worst);
+    } else {
+        std::snprintf(text, sizeof text, "an edge's curve misses its vertices by %.4g mm: refused", worst);
+    }
+    return text;
+}
+
+} // namespace
+
 uint32_t Packer::add_prototype(const TopoDS_Shape& shape, bool closed) {
     TopTools_IndexedMapOfShape vertex_map, edge_map;
     TopExp::MapShapes(shape, TopAbs_VERTEX, vertex_map);
@@ -432,6 +496,13 @@ uint32_t Packer::add_prototype(const TopoDS_Shape& shape, bool closed) {
             c = BRep_Tool::Curve(e, loc, t0, t1);
             if (!c.IsNull()) {
                 if (!loc.IsIdentity()) c = Handle(Geom_Curve)::DownCast(c->Transformed(loc.Transformation()));
+                // A curve that misses its own vertices (a circle of radius 0 between two
+                // vertices apart) would be drawn and meshed somewhere the edge is not: refused,
+                // and the faces that use it with it.
+                if (const std::string why = curve_misses_vertices(c, t0, t1, a, b, BRep_Tool::Tolerance(e)); !why.empty()) {
+                    if (stats_.first_problem.empty()) stats_.first_problem = why;
+                    continue;
+                }
                 // A line's edge is the segment between its vertices (OCCT lines run at unit
                 // speed: the parameter is linear along it), with no curve record.
                 const bool straight = GeomAdaptor_Curve(c).GetType() == GeomAbs_Line && !a.IsNull() && !b.IsNull() && !a.IsSame(b);
@@ -464,6 +535,7 @@ uint32_t Packer::add_prototype(const TopoDS_Shape& shape, bool closed) {
     const uint32_t first_face = w_.face_count();
     uint32_t faces = 0;
     for (TopExp_Explorer fx(shape, TopAbs_FACE); fx.More(); fx.Next()) try {
+        types_before_ = stats_.surface_types; // (a face skipped is counted as skipped, not by its type)
         const TopoDS_Face original = TopoDS::Face(fx.Current());
         const TopoDS_Face face = TopoDS::Face(original.Oriented(TopAbs_FORWARD));
         TopLoc_Location loc;
@@ -478,6 +550,7 @@ uint32_t Packer::add_prototype(const TopoDS_Shape& shape, bool closed) {
         const bool elementary = kind == GeomAbs_Plane || kind == GeomAbs_Cylinder || kind == GeomAbs_Cone ||
                                 kind == GeomAbs_Sphere || kind == GeomAbs_Torus;
         if (surface == kNoIndex) {
+            stats_.surface_types = types_before_;
             ++stats_.faces_skipped;
             if (stats_.first_problem.empty()) stats_.first_problem = "a surface could not be converted to a B-spline";
             continue;
@@ -493,7 +566,17 @@ uint32_t Packer::add_prototype(const TopoDS_Shape& shape, bool closed) {
         }
         double u0, u1, v0, v1;
         BRepTools::UVBounds(face, u0, u1, v0, v1);
+        ShapeAnalysis_Surface surface_of_face(s); // (projects the edges' points onto it)
+        if (!(u1 - u0 > 1e-9) || !(v1 - v0 > 1e-9)) {
+            // Its loops run along a line of its (u,v): no area (a cylinder whose second circle
+            // had radius 0 and went in healing keeps one circle alone).
+            stats_.surface_types = types_before_;
+            ++stats_.faces_skipped;
+            if (stats_.first_problem.empty()) stats_.first_problem = "a face's boundary encloses no area of its surface";
+            continue;
+        }
         bool ok = true;
+        std::string edge_problem; // why a face's edge was refused (empty: it has no pcurve)
         uint32_t loops = 0;
         for (const TopoDS_Wire& wire : wires) {
             const uint32_t first = w_.coedge_count();
@@ -504,6 +587,18 @@ uint32_t Packer::add_prototype(const TopoDS_Shape& shape, bool closed) {
                 Handle(Geom2d_Curve) pc = BRep_Tool::CurveOnSurface(e, face, f0, f1);
                 const int idx = edge_map.FindIndex(e);
                 if (pc.IsNull() || idx == 0 || edge_ids[idx] == kNoIndex) {
+                    ok = false;
+                    break;
+                }
+                // The edge must lie on the face: its 3D curve along its pcurve on the surface,
+                // within ten times its tolerance (a circle of radius 0 on a cylinder of 16 mm
+                // does not; healing leaves it so).
+                const double strays = BRep_Tool::Degenerated(e) ? pole_off_vertex(e, pc, f0, f1, s) : edge_off_surface(e, surface_of_face);
+                if (strays > 10 * BRep_Tool::Tolerance(e) + 1e-3) {
+                    char text[160];
+                    std::snprintf(text, sizeof text, "an edge lies %.4g mm off its face's surface (its tolerance %.2g mm)", strays,
+                                  BRep_Tool::Tolerance(e));
+                    edge_problem = text;
                     ok = false;
                     break;
                 }
@@ -536,8 +631,9 @@ uint32_t Packer::add_prototype(const TopoDS_Shape& shape, bool closed) {
         }
         if (!ok || loops == 0) {
             // Coedges/loops already written stay unreferenced: harmless.
+            stats_.surface_types = types_before_;
             ++stats_.faces_skipped;
-            if (stats_.first_problem.empty()) stats_.first_problem = "a face has an edge without a pcurve";
+            if (stats_.first_problem.empty()) stats_.first_problem = edge_problem.empty() ? "a face has an edge without a pcurve" : edge_problem;
             continue;
         }
         // Its pcurves (if any) were added in coedge order, from first_pcurve on.
@@ -547,9 +643,11 @@ uint32_t Packer::add_prototype(const TopoDS_Shape& shape, bool closed) {
         ++stats_.faces;
         packed_faces.push_back(original); // its orientation kept (the reference values need it)
     } catch (const Standard_Failure& f) {
+        stats_.surface_types = types_before_;
         ++stats_.faces_skipped;
         if (stats_.first_problem.empty()) stats_.first_problem = std::string("a face failed: ") + f.GetMessageString();
     }
+    if (faces == 0) return kNoIndex; // nothing of it packed: no part (its occurrences say so)
     return w_.add_shell({first_face, faces, colour_of(shape), closed ? 1u : 0u});
 }
 
@@ -561,12 +659,17 @@ void Packer::add_occurrence(const TopoDS_Shape& shape, bool closed, const std::s
         shell = it->second;
     } else {
         shell = add_prototype(shape.Located(TopLoc_Location()), closed);
-        w_.name_shell(shell, name);
         prototypes_[key] = shell;
-        prototypes.push_back(shape.Located(TopLoc_Location()));
-        if (closed) ++stats_.solids;
-        else ++stats_.shells;
+        if (shell == kNoIndex) {
+            ++stats_.empty_parts;
+        } else {
+            w_.name_shell(shell, name);
+            prototypes.push_back(shape.Located(TopLoc_Location()));
+            if (closed) ++stats_.solids;
+            else ++stats_.shells;
+        }
     }
+    if (shell == kNoIndex) return; // every face of the part lost (faces_skipped says why)
     const gp_Trsf t = shape.Location().Transformation();
     pack::Instance inst{shell, {}};
     for (int r = 1; r <= 3; ++r)

@@ -17,6 +17,7 @@ struct Stats {
     uint32_t smooth_edges = 0; // whose two faces meet tangentially (pack::SectionId::SmoothEdges)
     std::map<std::string, uint32_t> surface_types, converted; // converted: "offset -> B-spline"
     uint32_t faces_skipped = 0;
+    uint32_t empty_parts = 0; // parts every face of which was skipped: left out with their occurrences
     std::string first_problem;
 };
 
@@ -47,6 +48,7 @@ private:
     Stats& stats_;
     std::map<const void*, uint32_t> prototypes_; // TShape -> Shells index
     std::map<uint32_t, uint32_t> colour_index_;  // packed RGBA -> Colours index
+    std::map<std::string, uint32_t> types_before_; // the surface types counted before the face being packed
 };
 
 // Each prototype's box (its own coordinates, mm): Open CASCADE's tight box of its faces, grown

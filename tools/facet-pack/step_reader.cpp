@@ -17,6 +17,7 @@
 #include <StepShape_ManifoldSolidBrep.hxx>
 #include <StepShape_ShellBasedSurfaceModel.hxx>
 #include <Interface_Check.hxx>
+#include <Interface_CheckIterator.hxx>
 #include <Interface_EntityIterator.hxx>
 #include <Interface_Graph.hxx>
 #include <TransferBRep.hxx>
@@ -226,6 +227,36 @@ std::string entity_problem(const Handle(StepData_StepModel)& m, int i) {
     return why;
 }
 
+// The entities whose transfer failed outright (an exception inside Open CASCADE: a malformed
+// entity, a dangling reference; a signal it raised counts as one, OSD::SetSignal): "#74
+// VERTEX_POINT: ..." each, the first few. What they held is lost with them.
+void account_failures(XSControl_Reader& reader, StepModel& model) {
+    const Handle(XSControl_WorkSession) ws = reader.WS();
+    const Handle(StepData_StepModel) m = Handle(StepData_StepModel)::DownCast(reader.Model());
+    if (m.IsNull() || ws.IsNull() || ws->TransferReader().IsNull()) return;
+    const Handle(Transfer_TransientProcess) tp = ws->TransferReader()->TransientProcess();
+    if (tp.IsNull()) return;
+    const Interface_CheckIterator checks = tp->CheckList(false);
+    for (checks.Start(); checks.More(); checks.Next()) {
+        const Handle(Interface_Check)& c = checks.Value();
+        if (c.IsNull() || !c->HasFailed()) continue;
+        const Handle(Standard_Transient) e = c->Entity();
+        const int n = e.IsNull() ? 0 : m->Number(e);
+        const std::string what = n > 0 ? "#" + std::to_string(m->IdentLabel(e)) + " " + m->TypeName(e, false) : std::string("an entity");
+        model.failed.push_back(what + ": " + c->CFail(1));
+    }
+    // What the reader found wrong in the file itself (a syntax error, a reference to nothing),
+    // which is where such a failure starts.
+    const Handle(Interface_Check)& global = m->GlobalCheck();
+    for (int k = 1; !model.failed.empty() && !global.IsNull() && k <= global->NbFails() && k <= 3; ++k) {
+        model.failed.push_back(std::string("the file: ") + global->CFail(k));
+    }
+    for (int i = 1; !model.failed.empty() && i <= m->NbEntities(); ++i) {
+        const Handle(Interface_Check)& c = m->Check(i, true);
+        if (!c.IsNull() && c->HasFailed()) model.failed.push_back("#" + std::to_string(m->IdentLabel(m->Value(i))) + ": " + c->CFail(1));
+    }
+}
+
 // The faces of the file Open CASCADE lost: a face entity of a shell that was transferred, with
 // no face among the transferred shapes. A face of a shell nothing transferred (construction
 // geometry beside the part) is not lost, only left out.
@@ -409,6 +440,7 @@ bool read_step(const std::string& in, StepModel& model, std::string& error, bool
         }
         if (roots.Length() == 1) model.name = label_name(roots.Value(1));
         account_faces(reader.ChangeReader(), top, model);
+        account_failures(reader.ChangeReader(), model);
     }
     if (model.name.empty()) { // the file's stem
         const size_t slash = in.find_last_of('/'), start = slash == std::string::npos ? 0 : slash + 1;
@@ -431,6 +463,7 @@ bool read_step(const std::string& in, StepModel& model, std::string& error, bool
                 if (!top.empty()) model.notes += "read without a shape representation: its solids and shells one by one\n";
             }
             account_faces(plain, top, model);
+            account_failures(plain, model);
         }
         model.colours.Nullify();
     }

@@ -26,6 +26,8 @@ struct StepModel {
     uint32_t face_entities = 0;
     std::vector<std::string> lost;
     uint32_t faces_outside = 0; // faces of shells no shape uses (construction planes): left out
+    // Entities whose transfer failed outright ("#74 VERTEX_POINT: ..."): what they held is lost.
+    std::vector<std::string> failed;
     std::string name;                    // the model's: its top product's (or the file's stem)
     std::string notes;                   // how the file was read when it was out of the ordinary (no product, no unit)
 };

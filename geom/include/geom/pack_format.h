@@ -268,6 +268,29 @@ struct Instance {
 };
 static_assert(sizeof(Instance) == 52);
 
+// A placement places a part whole: its 3x3 part is a rotation, or a rotation and a mirror
+// (determinant +1 or -1), orthonormal within this (each row a unit vector within it, each two at
+// right angles within it): float32 keeps a double rotation to about 1e-7.
+constexpr float kPlacementTolerance = 1e-4f;
+
+// Null when m is such a placement with every entry within +-kMaxMagnitude (NaN refused); else
+// what is wrong with it.
+inline const char* placement_problem(const float m[12]) {
+    for (int i = 0; i < 12; ++i) {
+        if (!(m[i] >= -kMaxMagnitude && m[i] <= kMaxMagnitude)) return "placement is NaN, infinite or beyond +-1e8";
+    }
+    for (int i = 0; i < 3; ++i) {
+        for (int j = i; j < 3; ++j) {
+            const float d = m[4 * i] * m[4 * j] + m[4 * i + 1] * m[4 * j + 1] + m[4 * i + 2] * m[4 * j + 2];
+            const float want = i == j ? 1.0f : 0.0f;
+            if (!(d - want <= kPlacementTolerance && want - d <= kPlacementTolerance)) {
+                return "placement is no rotation (its rows are not unit vectors at right angles: a part stretched or flattened)";
+            }
+        }
+    }
+    return nullptr;
+}
+
 struct Colour {
     uint8_t r, g, b, a;
 };

@@ -98,7 +98,7 @@ public:
 
     // The camera. orbit()/set_orbit(): the view as angles, distance and pan, set at once.
     Orbit orbit() const;
-    Result set_orbit(const Orbit& orbit); // OutOfRange: a value not finite, or a dolly outside 0.05-20
+    Result set_orbit(const Orbit& orbit); // OutOfRange: a value not finite, a dolly outside 0.05-20, a pan past 64 model radii
     void show_view(StandardView view);    // framed, with a short glide
     void fit();                           // the model framed from where the eye is (a section's kept side)
     Result fit_part(uint32_t part);       // one part framed (with a glide)
