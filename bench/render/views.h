@@ -73,11 +73,11 @@ bool draw_views(facet::Viewer& v, Picture&& picture, Peer&& peer) {
             settle(v);
         }
         for (int edges = 1; edges >= 0; --edges) {
-            v.set_display_mode(edges ? facet::DisplayMode::ShadedEdges : facet::DisplayMode::Shaded);
+            (void)v.set_display_mode(edges ? facet::DisplayMode::ShadedEdges : facet::DisplayMode::Shaded);
             settle(v);
             if (!picture(name, edges == 1)) return false;
         }
-        v.set_display_mode(facet::DisplayMode::ShadedEdges);
+        (void)v.set_display_mode(facet::DisplayMode::ShadedEdges);
         settle(v);
         if (!peer(name)) return false;
     }

@@ -19,8 +19,11 @@ Result Library::open(const void* data, uint32_t available) {
     if (h.version != pack::kLibraryVersion) return Result::fail(Status::Unsupported, "a library of another version", {"version", h.version});
     if (h.count == 0 || h.count > pack::kMaxLibraryEntries) return Result::fail(Status::Corrupt, "a library's count is out of range", {"count", h.count});
     const uint32_t table_end = uint32_t(sizeof h + h.count * sizeof(LibraryEntry));
-    if (h.total_bytes > available || table_end > h.total_bytes) {
+    if (h.total_bytes > available) {
         return Result::fail(Status::Corrupt, "the library is larger than the bytes given", {"bytes needed", h.total_bytes});
+    }
+    if (table_end > h.total_bytes) { // (a total too small for its own table of entries)
+        return Result::fail(Status::Corrupt, "the library's total is smaller than its table of entries", {"bytes", h.total_bytes});
     }
     const auto* bytes = static_cast<const uint8_t*>(data);
     if (pack::crc32(bytes + sizeof h, table_end - uint32_t(sizeof h)) != h.crc32) return Result::fail(Status::Corrupt, "the library's table fails its CRC");

@@ -136,6 +136,13 @@ Result PackIndex::check_records() {
         if (k.first_part != next_part || k.part_count == 0 || uint64_t(k.first_part) + k.part_count > parts_.size()) {
             return fail("the block's parts do not follow the block before it's", B, b);
         }
+        // Its parts' faces and edges fit its decoded bytes (a count that lies would plan the
+        // model's memory from it: 100,000 faces claimed for a few).
+        uint64_t least = 0;
+        for (uint32_t p = k.first_part; p < k.first_part + k.part_count; ++p) {
+            least += uint64_t(parts_[p].face_count) * sizeof(pack::Face) + uint64_t(parts_[p].edge_count) * sizeof(pack::Edge);
+        }
+        if (least > k.pack_bytes) return fail("the block's parts claim more faces and edges than its bytes hold", B, b);
         next_part += k.part_count;
         const bool empty = k.box_min[0] > k.box_max[0];
         if (!empty && !box_ok(k.box_min, k.box_max)) return fail("bounding box is not finite, beyond +-1e8 or inverted", B, b);

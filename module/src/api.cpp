@@ -74,8 +74,11 @@ ModelInfo Core::model() const {
 // The camera.
 Orbit Viewer::orbit() const { return core(this).orbit(); }
 Result Viewer::set_orbit(const Orbit& o) { return core(this).set_orbit(o); }
-void Viewer::show_view(StandardView v) {
-    if (core(this).scene().loaded()) core(this).show_view(v);
+Result Viewer::show_view(StandardView v) {
+    if (uint8_t(v) > uint8_t(StandardView::Iso)) return Result::fail(Status::OutOfRange, "no such view");
+    if (!core(this).scene().loaded()) return Result::fail(Status::NotFound, "no model is loaded");
+    core(this).show_view(v);
+    return {};
 }
 void Viewer::fit() { core(this).fit(); }
 Result Viewer::fit_part(uint32_t part) { return core(this).fit_part(part); }
@@ -106,8 +109,10 @@ Viewer::CameraView Viewer::camera() const {
 DisplayMode Viewer::display_mode() const { return core(this).mode(); }
 bool Viewer::tangent_edges() const { return core(this).tangent_edges(); }
 void Viewer::set_tangent_edges(bool shown) { core(this).set_tangent_edges(shown); }
-void Viewer::set_display_mode(DisplayMode m) {
-    if (uint8_t(m) <= uint8_t(DisplayMode::SeeThrough)) core(this).set_mode(m);
+Result Viewer::set_display_mode(DisplayMode m) {
+    if (uint8_t(m) > uint8_t(DisplayMode::SeeThrough)) return Result::fail(Status::OutOfRange, "no such display mode");
+    core(this).set_mode(m);
+    return {};
 }
 float Viewer::detail() const { return core(this).detail(); }
 Result Viewer::set_detail(float factor) { return core(this).set_detail(factor); }
@@ -148,7 +153,11 @@ Viewer::Part Viewer::part(uint32_t i) const {
 Result Viewer::show_part(uint32_t i, bool shown) { return core(this).show(i, shown); }
 Result Viewer::isolate_part(uint32_t i) { return core(this).isolate(i); }
 void Viewer::show_all_parts() { core(this).show_all(); }
-void Viewer::choose_part(uint32_t i) { core(this).choose(i); }
+Result Viewer::choose_part(uint32_t i) {
+    if (i != ~0u && i >= part_count()) return Result::fail(Status::OutOfRange, "no such part", {"part", i});
+    core(this).choose(i);
+    return {};
+}
 uint32_t Viewer::chosen_part() const { return core(this).chosen_part(); }
 
 // The section plane.
@@ -156,15 +165,20 @@ Viewer::SectionPlane Viewer::section() const {
     const module::Section& s = core(this).camera().section();
     return {s.on, {s.n[0], s.n[1], s.n[2]}, s.offset};
 }
-void Viewer::set_section(const SectionPlane& p) {
+Result Viewer::set_section(const SectionPlane& p) {
     module::Section s;
-    const float len = std::sqrt(p.normal[0] * p.normal[0] + p.normal[1] * p.normal[1] + p.normal[2] * p.normal[2]);
-    s.on = p.on && len > 0 && std::isfinite(len) && std::isfinite(p.offset_mm);
-    if (s.on) {
+    if (p.on) {
+        const float len = std::sqrt(p.normal[0] * p.normal[0] + p.normal[1] * p.normal[1] + p.normal[2] * p.normal[2]);
+        if (!(len > 0 && std::isfinite(len))) return Result::fail(Status::OutOfRange, "a section's normal has no length or is not finite");
+        if (!std::isfinite(p.offset_mm) || !(std::fabs(p.offset_mm) <= pack::kMaxMagnitude)) {
+            return Result::fail(Status::OutOfRange, "a section's offset is not finite or beyond +-1e8 mm");
+        }
+        s.on = true;
         for (int k = 0; k < 3; ++k) s.n[k] = p.normal[k] / len;
         s.offset = p.offset_mm;
     }
     core(this).set_section(s);
+    return {};
 }
 Result Viewer::section_through(uint32_t part, uint32_t face) { return core(this).section_through(part, face); }
 Result Viewer::section_across(uint8_t axis) { return core(this).section_across(axis); }

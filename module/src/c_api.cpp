@@ -150,6 +150,9 @@ facet_viewer* facet_create(const facet_config* c, void* workspace, size_t bytes,
     if (!workspace || (reinterpret_cast<uintptr_t>(workspace) & 7)) {
         return refuse(Result::fail(Status::OutOfRange, "the workspace must be 8-byte aligned", {"workspace"}));
     }
+    if (bytes > SIZE_MAX - reinterpret_cast<uintptr_t>(workspace)) {
+        return refuse(Result::fail(Status::OutOfRange, "the workspace's size runs past the end of memory", {"workspace"}));
+    }
     const size_t least = facet_workspace_bytes(&c->capacity);
     if (bytes < least || bytes < sizeof(Bridge) + 8) {
         return refuse(Result::fail(Status::Full, "the workspace is smaller than facet_workspace_bytes()", {"bytes needed", uint32_t(least)}));
@@ -277,8 +280,10 @@ facet_camera facet_get_camera(const facet_viewer* v) {
     c.distance_mm = k.distance_mm, c.focal_px = k.focal_px, c.parallel = k.parallel;
     return c;
 }
-void facet_show_view(facet_viewer* v, facet_standard_view view) {
-    if (v && unsigned(view) <= unsigned(FACET_VIEW_ISO)) cpp(v)->show_view(StandardView(view));
+facet_result facet_show_view(facet_viewer* v, facet_standard_view view) {
+    FACET_NEED_VIEWER(v);
+    if (unsigned(view) > unsigned(FACET_VIEW_ISO)) return to_c(Result::fail(Status::OutOfRange, "no such view"));
+    return to_c(cpp(v)->show_view(StandardView(view)));
 }
 void facet_fit(facet_viewer* v) {
     if (v) cpp(v)->fit();
@@ -301,8 +306,7 @@ facet_display_mode facet_get_display_mode(const facet_viewer* v) {
 facet_result facet_set_display_mode(facet_viewer* v, facet_display_mode mode) {
     FACET_NEED_VIEWER(v);
     if (unsigned(mode) > unsigned(FACET_MODE_SEE_THROUGH)) return to_c(Result::fail(Status::OutOfRange, "no such display mode"));
-    cpp(v)->set_display_mode(DisplayMode(mode));
-    return {};
+    return to_c(cpp(v)->set_display_mode(DisplayMode(mode)));
 }
 int facet_get_tangent_edges(const facet_viewer* v) { return v ? int(cpp(v)->tangent_edges()) : 0; }
 void facet_set_tangent_edges(facet_viewer* v, int shown) {
@@ -372,8 +376,9 @@ facet_result facet_isolate_part(facet_viewer* v, uint32_t i) {
 void facet_show_all_parts(facet_viewer* v) {
     if (v) cpp(v)->show_all_parts();
 }
-void facet_choose_part(facet_viewer* v, uint32_t i) {
-    if (v) cpp(v)->choose_part(i);
+facet_result facet_choose_part(facet_viewer* v, uint32_t i) {
+    FACET_NEED_VIEWER(v);
+    return to_c(cpp(v)->choose_part(i));
 }
 uint32_t facet_chosen_part(const facet_viewer* v) { return v ? cpp(v)->chosen_part() : ~0u; }
 
@@ -384,8 +389,7 @@ facet_section facet_get_section(const facet_viewer* v) {
 facet_result facet_set_section(facet_viewer* v, const facet_section* p) {
     FACET_NEED_VIEWER(v);
     if (!p) return to_c(Result::fail(Status::OutOfRange, "no facet_section"));
-    cpp(v)->set_section({p->on != 0, {p->normal[0], p->normal[1], p->normal[2]}, p->offset_mm});
-    return {};
+    return to_c(cpp(v)->set_section({p->on != 0, {p->normal[0], p->normal[1], p->normal[2]}, p->offset_mm}));
 }
 facet_result facet_section_through(facet_viewer* v, uint32_t part, uint32_t face) {
     FACET_NEED_VIEWER(v);

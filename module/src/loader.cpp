@@ -32,6 +32,12 @@ uint32_t blocked_need(const geom::PackIndex& index, const BlockCut& cut) {
 
 Result unpack_blocked(const uint8_t* in, uint32_t file_bytes, uint8_t* mem, uint32_t memory_bytes, bool inside, const BlockCut& cut,
                       Unpacked& out) {
+    // The index first, where it lies: a file that lies is Corrupt, whatever memory came with it.
+    if (!inside) {
+        if (reinterpret_cast<uintptr_t>(in) & 3) return Result::fail(Status::OutOfRange, "a blocked pack must lie 4-byte aligned", kFile);
+        geom::PackIndex index;
+        if (Result r = index.open(in, file_bytes); !r.ok()) return r;
+    }
     if (!mem || (reinterpret_cast<uintptr_t>(mem) & 7)) {
         return Result::fail(Status::Full, "a blocked pack needs 8-byte aligned pack memory", kFile);
     }

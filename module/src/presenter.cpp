@@ -55,9 +55,9 @@ bool Presenter::wanted(uint32_t finished, uint32_t total) const {
 }
 
 void Presenter::take_done() {
-    while (taken_ != done_count_) {
-        ++taken_;
-        if (pending_ < 0) continue; // more flush_done() calls than flushes: nothing to free
+    if (done_.load(std::memory_order_acquire)) {
+        done_.store(0, std::memory_order_relaxed); // (a call between the two was for this same flush)
+        if (pending_ < 0) return; // a flush_done() with no flush in flight: nothing to free
         if (display_.mode == Flush::Copy || buffers_ == 1) {
             buf_[pending_].busy = false; // copied out (or a single frame drawn where it is shown)
         } else {

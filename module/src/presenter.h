@@ -22,6 +22,8 @@
 #include "scene.h"
 #include "scheduler.h"
 
+#include <atomic>
+
 namespace facet::module {
 
 class Presenter {
@@ -65,7 +67,11 @@ public:
     Work work() const;
     bool drawing() const { return job_.active; }
 
-    void flush_done() { done_count_ = done_count_ + 1; } // any context: only interrupts and this write it
+    // Any context (a DMA interrupt, another thread): one store. At most one flush is in flight
+    // (a frame's flush begins once the last is done), so calls for it are one event however
+    // many come: a flag, not a count, which an interrupted increment could lose (ARMv5 has no
+    // atomic read-modify-write to make one of).
+    void flush_done() { done_.store(1, std::memory_order_release); }
     // Something else projected vertices into the painter's scratch (a pick): the face being
     // drawn starts over (its pixels drawn so far are drawn again, the same).
     void projected_reused() { job_.tri = 0; }
@@ -146,8 +152,7 @@ private:
     int8_t pending_ = -1;       // the buffer of the flush in flight
     uint32_t shown_version_ = 0, shown_finished_ = 0; // what the screen shows
     uint32_t next_ = 0;         // with two buffers: the next one to draw into (its low bit)
-    volatile uint32_t done_count_ = 0; // flush_done() calls (written by interrupts too)
-    uint32_t taken_ = 0;        // flush_done() calls handled
+    std::atomic<uint32_t> done_{0}; // a flush_done() since take_done() last looked (loads and stores only)
     uint32_t piece_start_ = 0;  // the clock when the current piece began
     uint32_t budget_us_ = 0;    // Config::frame_budget_us
     Job job_;

@@ -253,6 +253,9 @@ Viewer* create_viewer(const Config& config, void* workspace, size_t bytes, size_
     if (!workspace || (reinterpret_cast<uintptr_t>(workspace) & 7)) {
         return refuse(Result::fail(Status::OutOfRange, "the workspace must be 8-byte aligned", {"workspace"}));
     }
+    if (bytes > SIZE_MAX - reinterpret_cast<uintptr_t>(workspace)) {
+        return refuse(Result::fail(Status::OutOfRange, "the workspace's size runs past the end of memory", {"workspace"}));
+    }
     const Capacity& c = config.capacity;
     if (c.face_points < 8 || c.face_points > 32760 || c.loops == 0) {
         return refuse(Result::fail(Status::OutOfRange, "a capacity is out of range (face_points 8 to 32,760, loops above 0)", {"capacity"}));

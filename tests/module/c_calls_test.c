@@ -109,7 +109,7 @@ static void misuse(facet_viewer *loaded) {
     CHECK(facet_get_orbit(none).dolly == 0);
     CHECK(facet_set_orbit(none, &o).status == FACET_OUT_OF_RANGE);
     CHECK(facet_get_camera(none).distance_mm == 0);
-    facet_show_view(none, FACET_VIEW_TOP);
+    CHECK(facet_show_view(none, FACET_VIEW_TOP).status == FACET_OUT_OF_RANGE);
     facet_fit(none);
     CHECK(facet_fit_part(none, 0).status == FACET_OUT_OF_RANGE);
     CHECK(facet_fit_face(none, 0, 0).status == FACET_OUT_OF_RANGE);
@@ -135,7 +135,7 @@ static void misuse(facet_viewer *loaded) {
     CHECK(facet_show_part(none, 0, 0).status == FACET_OUT_OF_RANGE);
     CHECK(facet_isolate_part(none, 0).status == FACET_OUT_OF_RANGE);
     facet_show_all_parts(none);
-    facet_choose_part(none, 0);
+    CHECK(facet_choose_part(none, 0).status == FACET_OUT_OF_RANGE);
     CHECK(facet_chosen_part(none) == 0xFFFFFFFFu);
     CHECK(facet_get_section(none).on == 0);
     CHECK(facet_set_section(none, &sec).status == FACET_OUT_OF_RANGE);
@@ -154,7 +154,7 @@ static void misuse(facet_viewer *loaded) {
     CHECK(facet_set_orbit(loaded, &o).status == FACET_OUT_OF_RANGE);
     CHECK(facet_set_display_mode(loaded, (facet_display_mode)77).status == FACET_OUT_OF_RANGE);
     facet_act(loaded, (facet_action)200);   /* no such action: nothing */
-    facet_show_view(loaded, (facet_standard_view)9);
+    CHECK(facet_show_view(loaded, (facet_standard_view)9).status == FACET_OUT_OF_RANGE);
     CHECK(facet_set_detail(loaded, 100).status == FACET_OUT_OF_RANGE);
     CHECK(facet_set_detail(loaded, 1.0f / 16).status == FACET_OUT_OF_RANGE);
     CHECK(facet_set_detail(loaded, (float)NAN).status == FACET_OUT_OF_RANGE);
@@ -172,13 +172,18 @@ static void misuse(facet_viewer *loaded) {
     CHECK(facet_show_part(loaded, 5, 0).status == FACET_OUT_OF_RANGE);
     CHECK(facet_isolate_part(loaded, 5).status == FACET_OUT_OF_RANGE);
     CHECK(facet_get_part(loaded, 5).name != NULL && facet_get_part(loaded, 5).faces == 0);
-    facet_choose_part(loaded, 5);
+    CHECK(facet_choose_part(loaded, 5).status == FACET_OUT_OF_RANGE);
     CHECK(facet_chosen_part(loaded) == 0xFFFFFFFFu);
     CHECK(facet_set_section(loaded, NULL).status == FACET_OUT_OF_RANGE);
     CHECK(facet_section_across(loaded, 3).status == FACET_OUT_OF_RANGE);
     CHECK(facet_section_through(loaded, 0, 1000000).status == FACET_OUT_OF_RANGE);
-    sec.on = 1; /* a zero normal: off */
-    CHECK(facet_set_section(loaded, &sec).status == FACET_OK && facet_get_section(loaded).on == 0);
+    sec.on = 1; /* a zero normal, a NaN one, an infinite offset: refused, nothing changed */
+    CHECK(facet_set_section(loaded, &sec).status == FACET_OUT_OF_RANGE && facet_get_section(loaded).on == 0);
+    sec.normal[0] = (float)NAN;
+    CHECK(facet_set_section(loaded, &sec).status == FACET_OUT_OF_RANGE && facet_get_section(loaded).on == 0);
+    sec.normal[0] = 1, sec.offset_mm = (float)INFINITY;
+    CHECK(facet_set_section(loaded, &sec).status == FACET_OUT_OF_RANGE && facet_get_section(loaded).on == 0);
+    sec.normal[0] = 0, sec.offset_mm = 0;
     CHECK(facet_move_section(loaded, 1).status == FACET_NOT_FOUND);
     CHECK(facet_get_key_binding(facet_key_binding_count()).help == NULL);
 
@@ -188,7 +193,7 @@ static void misuse(facet_viewer *loaded) {
     CHECK(facet_get_model(empty).faces == 0 && facet_get_model(empty).name != NULL);
     CHECK(facet_set_orbit(empty, &o).status == FACET_NOT_FOUND);
     CHECK(facet_get_camera(empty).distance_mm == 0);
-    facet_show_view(empty, FACET_VIEW_TOP);
+    CHECK(facet_show_view(empty, FACET_VIEW_TOP).status == FACET_NOT_FOUND);
     facet_fit(empty);
     facet_set_parallel(empty, 1);
     facet_act(empty, FACET_ACTION_SECTION);
@@ -261,7 +266,7 @@ int main(int argc, char **argv) {
     CHECK(events[FACET_EVENT_VIEW_CHANGED] == changed + 1);
     settle(v);
     /* The front view looks along +y: the camera's z (to the eye) is -y. */
-    facet_show_view(v, FACET_VIEW_FRONT);
+    CHECK(facet_show_view(v, FACET_VIEW_FRONT).status == FACET_OK);
     settle(v);
     cam = facet_get_camera(v);
     CHECK(NEAR(cam.rotation[6], 0, 1e-4) && NEAR(cam.rotation[7], -1, 1e-4) && NEAR(cam.rotation[8], 0, 1e-4));
@@ -289,7 +294,7 @@ int main(int argc, char **argv) {
     facet_set_parallel(v, 0);
     settle(v);
     CHECK(facet_get_orbit(v).parallel == 0);
-    facet_show_view(v, FACET_VIEW_ISO);
+    CHECK(facet_show_view(v, FACET_VIEW_ISO).status == FACET_OK);
     settle(v);
 
     /* Display modes, and the action that cycles them. */

@@ -13,7 +13,9 @@ import os
 import re
 import shutil
 import subprocess
+import struct
 import sys
+import zlib
 
 ARGS = None
 
@@ -120,6 +122,24 @@ def degenerate_circle_is_refused():
     d = work('radius-0')
     path = ftc11_changed(d, 'r0.stp', "#79=CIRCLE('',#78,16.0);", "#79=CIRCLE('',#78,0.0);")
     expect_exit(run([ARGS.packer, path, '-o', os.path.join(d, 'r0.fpk')]), 1, r'boundary encloses no area', 'radius 0')
+
+
+def names_printed_escaped():
+    """Issue 49: --check printed a pack's names raw, so an escape sequence or a newline in a
+    part's name reached the terminal. Now control characters print as \\xNN."""
+    d = work('names-escaped')
+    fpk = packed('ndr_pivot_pin.stp', d, '--plain', '--whole')
+    data = bytearray(open(fpk, 'rb').read())
+    name = b'PRODUCT_NAME_1'
+    at = data.find(name)
+    expect(at > 0, f'the model name {name!r} in the plain pack')
+    data[at:at + len(name)] = b'\x1b[31mXXXXXXX\n\r'  # as long as the name it replaces
+    header_bytes = struct.unpack_from('<H', data, 6)[0]
+    struct.pack_into('<I', data, 12, zlib.crc32(bytes(data[header_bytes:])) & 0xFFFFFFFF)
+    open(fpk, 'wb').write(data)
+    r = run([ARGS.packer, '--check', fpk])
+    expect_exit(r, 0, r'\\x1B\[31mXXXXXXX\\x0A\\x0D', '--check of a name with control characters')
+    expect('\x1b' not in r.stdout + r.stderr, 'an escape character reached the terminal')
 
 
 def mesh_of_a_directory():
@@ -385,7 +405,7 @@ def screenshot_names_stay_in_the_folder():
         expect(not runner.safe_name(bad), f'{bad!r} accepted')
 
 
-TESTS = [broken_step_files, malformed_step_is_refused_not_crashed, lost_faces_fail_whole_or_blocked, degenerate_circle_is_refused,
+TESTS = [broken_step_files, malformed_step_is_refused_not_crashed, names_printed_escaped, lost_faces_fail_whole_or_blocked, degenerate_circle_is_refused,
          mesh_of_a_directory, check_of_a_directory_or_a_device, writes_onto_a_full_disk, face_with_a_missing_surface,
          tolerance_must_be_a_positive_number, output_is_the_input, trailing_bytes_and_reserved_fields,
          coarse_and_fine_tolerances, lens_faces_at_coarse_tolerances, incomplete_mesh_exits_5, ndr_part01_reads,

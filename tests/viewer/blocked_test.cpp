@@ -167,6 +167,69 @@ TEST(Blocked, TooLittleMemoryACorruptBlockAndAnUnalignedFileAreRefused) {
     EXPECT_EQ(app.v->stats().failed, 0u);
 }
 
+// An index that lies (issue 49): its counts, offsets, sizes, sections, instances or blocks'
+// order changed, its CRC made right again. Each is Corrupt with its reason, from load() or, for
+// what only the block shows, when the block is decoded (a PassFailed event; the rest still
+// shows); never Full, whatever memory is given (pack_memory_bytes() of the file, or ample).
+TEST(Blocked, AnIndexThatLiesIsCorrupt) {
+    const Bytes good = blocked(assembly());
+    auto section = [](Bytes& f, pack::IndexSectionId id) -> uint8_t* {
+        const auto* h = reinterpret_cast<const pack::IndexHeader*>(f.data());
+        const auto* t = reinterpret_cast<const pack::SectionEntry*>(f.data() + sizeof(pack::IndexHeader));
+        for (uint32_t i = 0; i < h->section_count; ++i)
+            if (t[i].id == uint32_t(id)) return f.data() + t[i].offset;
+        return nullptr;
+    };
+    auto reseal = [](Bytes& f) {
+        auto* h = reinterpret_cast<pack::IndexHeader*>(f.data());
+        h->crc32 = pack::crc32(f.data() + pack::kIndexCrcFrom, h->index_bytes - pack::kIndexCrcFrom);
+    };
+    struct Lie {
+        const char* what;
+        void (*change)(Bytes&, uint8_t* blocks, uint8_t* parts, uint8_t* instances);
+    };
+    const Lie lies[] = {
+        {"a part claims 100,000 faces", [](Bytes&, uint8_t*, uint8_t* parts, uint8_t*) { reinterpret_cast<pack::Part*>(parts)[0].face_count = 100000; }},
+        {"a part claims 100,000 edges", [](Bytes&, uint8_t*, uint8_t* parts, uint8_t*) { reinterpret_cast<pack::Part*>(parts)[1].edge_count = 100000; }},
+        {"a block's offset moved", [](Bytes&, uint8_t* blocks, uint8_t*, uint8_t*) { reinterpret_cast<pack::Block*>(blocks)[1].offset += 4; }},
+        {"a block's stored size", [](Bytes&, uint8_t* blocks, uint8_t*, uint8_t*) { reinterpret_cast<pack::Block*>(blocks)[0].stored_bytes -= 4; }},
+        {"a block's decoded size", [](Bytes&, uint8_t* blocks, uint8_t*, uint8_t*) { reinterpret_cast<pack::Block*>(blocks)[0].pack_bytes += 8; }},
+        {"two blocks swapped", [](Bytes&, uint8_t* blocks, uint8_t*, uint8_t*) { std::swap(reinterpret_cast<pack::Block*>(blocks)[0], reinterpret_cast<pack::Block*>(blocks)[1]); }},
+        {"an instance's part", [](Bytes&, uint8_t*, uint8_t*, uint8_t* instances) { reinterpret_cast<pack::Instance*>(instances)[0].shell = 1000; }},
+        {"a section more", [](Bytes& f, uint8_t*, uint8_t*, uint8_t*) { ++reinterpret_cast<pack::IndexHeader*>(f.data())->section_count; }},
+        {"a zeroed placement row", [](Bytes&, uint8_t*, uint8_t*, uint8_t* instances) {
+             float* m = reinterpret_cast<pack::Instance*>(instances)[0].m;
+             m[4] = m[5] = m[6] = m[7] = 0;
+         }},
+    };
+    std::vector<uint64_t> ample(2 * pack_memory_bytes(good.data(), uint32_t(good.size())) / 8 + 64);
+    for (const Lie& lie : lies) {
+        SCOPED_TRACE(lie.what);
+        Bytes file = good;
+        lie.change(file, section(file, pack::IndexSectionId::Blocks), section(file, pack::IndexSectionId::Parts), section(file, pack::IndexSectionId::Instances));
+        reseal(file);
+        std::vector<uint64_t> in(file.size() / 8 + 2);
+        std::memcpy(in.data(), file.data(), file.size());
+        const uint32_t need = pack_memory_bytes(in.data(), uint32_t(file.size()));
+        std::vector<uint64_t> sized(need / 8 + 1);
+        for (int k = 0; k < 2; ++k) {
+            App app;
+            ASSERT_TRUE(app.create().ok());
+            void* memory = k ? ample.data() : sized.data();
+            const uint32_t bytes = k ? uint32_t(ample.size() * 8) : need;
+            const Result r = app.v->load(in.data(), uint32_t(file.size()), memory, bytes);
+            if (!r.ok()) {
+                EXPECT_EQ(r.status, Status::Corrupt) << text(r);
+                continue;
+            }
+            app.run();
+            bool corrupt = false;
+            for (const Event& e : app.events) corrupt = corrupt || (e.kind == Event::Kind::PassFailed && e.why.status == Status::Corrupt);
+            EXPECT_TRUE(corrupt) << "loaded: a block found corrupt when decoded, said by PassFailed";
+        }
+    }
+}
+
 // Level of detail per block (issue 25): a block's parts take a tolerance from how far they lie
 // (half a pixel at their nearest point, never finer than the model's), and every edge of a part
 // is sampled once at its block's level for both its faces: each closed part is watertight

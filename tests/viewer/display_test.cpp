@@ -4,12 +4,15 @@
 #include "app.h"
 
 #include <algorithm>
+#include <csignal>
 #include <cmath>
 #include <cstddef>
 #include <cstring>
 #include <map>
 #include <memory>
 #include <string>
+
+#include <sys/time.h>
 
 using namespace facet;
 using namespace facet::geom;
@@ -244,6 +247,52 @@ TEST(Viewer, ADmaDisplayGetsNoDrawingIntoABufferInFlight) {
         ref.run();
         EXPECT_EQ(app.screen(), ref.screen()) << buffers << " buffers";
     }
+}
+
+// flush_done() from an interrupt (a DMA's completion) and from the application's loop at once,
+// as the API allows: a signal handler calls it while the loop steps and calls it too. No call
+// is lost nor taken for a later flush: every flush is freed, the viewer comes to rest with the
+// picture of a viewer whose flushes complete at once (issue 49: a volatile increment could lose
+// one).
+namespace {
+Viewer* g_interrupted = nullptr;
+volatile sig_atomic_t g_pending = 0;
+void on_alarm(int) {
+    if (g_interrupted && g_pending) g_interrupted->flush_done(); // (the interrupt's completion)
+}
+} // namespace
+
+TEST(Viewer, FlushDoneFromAnInterruptAndTheLoopAlike) {
+    App app;
+    app.lines = 30, app.buffers = 2, app.late_done = true;
+    ASSERT_TRUE(app.create(false).ok());
+    ASSERT_TRUE(app.load(polygon_and_triangle(400)).ok());
+    g_interrupted = app.v;
+    struct sigaction sa {};
+    sa.sa_handler = on_alarm;
+    ASSERT_EQ(sigaction(SIGALRM, &sa, nullptr), 0);
+    itimerval every{{0, 50}, {0, 50}}; // every 50 us
+    ASSERT_EQ(setitimer(ITIMER_REAL, &every, nullptr), 0);
+    Activity a = Activity::Busy;
+    for (int i = 0; i < 2000000 && a != Activity::Idle; ++i) {
+        const uint32_t before = app.flushes;
+        a = app.v->step(0);
+        if (app.flushes > before) g_pending = 1; // a flush in flight: the interrupt may complete it
+        if (a == Activity::Waiting) { // (the loop completes it too)
+            app.v->flush_done();
+            g_pending = 0;
+        }
+    }
+    const itimerval off{};
+    setitimer(ITIMER_REAL, &off, nullptr);
+    g_interrupted = nullptr;
+    EXPECT_EQ(a, Activity::Idle) << "every flush freed: the viewer comes to rest";
+    EXPECT_EQ(app.v->stats().done, 2u);
+    App ref;
+    ASSERT_TRUE(ref.create().ok());
+    ASSERT_TRUE(ref.load(polygon_and_triangle(400)).ok());
+    ref.run();
+    EXPECT_EQ(app.screen(), ref.screen());
 }
 
 // facet in a rectangle of the product's screen (Display::x, y): the same pixels as on a screen

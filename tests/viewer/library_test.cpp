@@ -98,6 +98,15 @@ TEST(Library, ABadTableIsRefusedWhole) {
     EXPECT_EQ(a.v->set_library(lib.data() + 4, lib.bytes - 4).status, Status::Corrupt);
     EXPECT_EQ(a.v->set_library(lib.data(), 12).status, Status::Corrupt);           // shorter than its head
     EXPECT_EQ(a.v->set_library(lib.data(), lib.bytes - 1).status, Status::Corrupt); // shorter than it says
+    {
+        // A total of 20 bytes, under its own table: said so (it read as larger than the bytes given).
+        Lib small({disc(), squares(4, 2)});
+        uint32_t total = 20;
+        std::memcpy(small.data() + offsetof(pack::LibraryHeader, total_bytes), &total, 4);
+        const Result r = a.v->set_library(small.data(), small.bytes);
+        EXPECT_EQ(r.status, Status::Corrupt);
+        EXPECT_STREQ(r.what, "the library's total is smaller than its table of entries");
+    }
     lib.data()[16 + 4] ^= 1;                                                         // an entry's size: the table's CRC
     EXPECT_EQ(a.v->set_library(lib.data(), lib.bytes).status, Status::Corrupt);
     EXPECT_EQ(library_count(lib.data(), lib.bytes), 0u);

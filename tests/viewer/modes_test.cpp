@@ -57,7 +57,7 @@ TEST(Viewer, DisplayModesDrawFacesAndEdgesAsNamed) {
     EXPECT_GT(hidden.edges, 100);
     const uint32_t r = hidden.centre >> 11, g = (hidden.centre >> 5) & 63, b = hidden.centre & 31;
     EXPECT_TRUE(r >= 24 && g >= 48 && b >= 24) << "paper-white faces, lightly shaded: " << hidden.centre;
-    app.v->set_display_mode(DisplayMode::ShadedEdges);
+    ASSERT_TRUE(app.v->set_display_mode(DisplayMode::ShadedEdges).ok());
     app.run();
     EXPECT_EQ(app.screen()[size_t(app.h / 2) * app.w + app.w / 2 - 10], shaded_edges.centre);
 }
@@ -171,8 +171,8 @@ TEST(Viewer, SeeThroughDrawsTheOtherPartsAsAScreenDoor) {
     app.run();
     const std::vector<Rgb565> without = app.screen();
     ASSERT_TRUE(app.v->show_part(1, true).ok());
-    app.v->choose_part(0);
-    app.v->set_display_mode(DisplayMode::SeeThrough);
+    ASSERT_TRUE(app.v->choose_part(0).ok());
+    ASSERT_TRUE(app.v->set_display_mode(DisplayMode::SeeThrough).ok());
     app.run();
     const std::vector<Rgb565> door = app.screen();
     // Inside the top face and inside the bottom face's outline seen through it (the edges, lines,
@@ -221,7 +221,7 @@ TEST(Viewer, ASectionCutsTheModelAndShowsTheSolidsInside) {
     app.v->touch(0, int16_t(cx), int16_t(cy), false);
     EXPECT_FALSE(app.last(Event::Kind::Picked)->pick.hit) << "what is cut away is not picked";
     // Into the first block, seen from the isometric view: its inside in the cap colour.
-    app.v->set_section({true, {1, 0, 0}, 50});
+    ASSERT_TRUE(app.v->set_section({true, {1, 0, 0}, 50}).ok());
     app.v->key('0');
     app.run();
     const Rgb565 cap = rgb565(205, 70, 60); // painter.cpp's kCap, flat
@@ -231,15 +231,15 @@ TEST(Viewer, ASectionCutsTheModelAndShowsTheSolidsInside) {
     // The other half kept (the plane x = 50 cutting away x < 50): the eye (isometric, at +x) is
     // on the kept side, where the block's own front faces hide all its back faces: they are
     // skipped as without a section (a clipped face: a triangle or two more).
-    app.v->set_section({false, {1, 0, 0}, 0});
+    ASSERT_TRUE(app.v->set_section({false, {1, 0, 0}, 0}).ok());
     app.run();
     const uint32_t front_only = app.last(Event::Kind::FrameDone)->frame.triangles;
-    app.v->set_section({true, {-1, 0, 0}, -50});
+    ASSERT_TRUE(app.v->set_section({true, {-1, 0, 0}, -50}).ok());
     app.run();
     const std::vector<Rgb565> kept = app.screen();
     EXPECT_EQ(std::count(kept.begin(), kept.end(), cap), 0) << "no inside shows from the kept side";
     EXPECT_LE(app.last(Event::Kind::FrameDone)->frame.triangles, front_only + 4);
-    app.v->set_section({true, {1, 0, 0}, 50});
+    ASSERT_TRUE(app.v->set_section({true, {1, 0, 0}, 50}).ok());
     app.run();
     EXPECT_EQ(app.screen(), iso);
     // The slider: a finger on it at the top puts the plane at the model's far end, dragged to
@@ -295,7 +295,7 @@ TEST(Viewer, PointsFromTheProjectionCacheDrawWhatProjectingEachAgainDraws) {
             app.v->key('d'), look(); // shaded with edges, turned: counted
             tally[cache] = core.painter().take_point_counts();
             for (int mode = 0; mode < 4; ++mode) app.v->key('m'), look();
-            app.v->key('m'), app.v->set_section({true, {0.6f, 0.0f, 0.8f}, 10.0f}), look();
+            app.v->key('m'), (void)app.v->set_section({true, {0.6f, 0.0f, 0.8f}, 10.0f}), look();
         }
         ASSERT_EQ(screens[0].size(), screens[1].size());
         for (size_t k = 0; k < screens[0].size(); ++k) EXPECT_TRUE(screens[0][k] == screens[1][k]) << "picture " << k;

@@ -99,7 +99,7 @@ int check_library(const char* path, const std::vector<uint8_t>& bytes) {
         std::string error;
         const bool ok = geom::load_pack_bytes({e.file, e.file + e.bytes}, loaded, error) &&
                         (pack.open(loaded.data(), loaded.bytes).ok() || (error = "not a sound pack", false));
-        std::printf("  %u \"%s\": %u bytes, %s\n", i + 1, e.name, e.bytes, ok ? "valid" : error.c_str());
+        std::printf("  %u \"%s\": %u bytes, %s\n", i + 1, packer::printable(e.name).c_str(), e.bytes, ok ? "valid" : error.c_str());
         bad += !ok;
     }
     return bad ? die(std::to_string(bad) + " of the library's models are not sound (the others open)") : 0;
@@ -149,12 +149,12 @@ int check(const char* path) {
     if (geom::compressed(file.kind)) {
         std::printf(" (%s file: %u bytes)", file.kind == geom::PackFileKind::Lzma ? "LZMA" : "deflated", file.file_bytes);
     }
-    std::printf("\n  model \"%s\"\n", pack.model_name());
+    std::printf("\n  model \"%s\"\n", packer::printable(pack.model_name()).c_str());
     // The parts list the viewer shows: each instance, its part's name and its own.
     for (uint32_t i = 0; i < pack.instances().size(); ++i) {
         const uint32_t s = pack.instances()[i].shell;
-        std::printf("  instance %u: shell %u \"%s\"", i, s, pack.shell_name(s));
-        if (*pack.instance_name(i)) std::printf(" as \"%s\"", pack.instance_name(i));
+        std::printf("  instance %u: shell %u \"%s\"", i, s, packer::printable(pack.shell_name(s)).c_str());
+        if (*pack.instance_name(i)) std::printf(" as \"%s\"", packer::printable(pack.instance_name(i)).c_str());
         std::printf("\n");
     }
     return 0;

@@ -95,10 +95,11 @@ void format_args(Sink& sink, const char* fmt, const Arg* args, size_t count);
 // "where, at: what" (or "what" alone) -- a Result as one line of text, without its code.
 size_t describe(const Result& r, char* buf, size_t size);
 
-// Formats into `buf` (always NUL-terminated when size > 0). Returns the length the full
-// result would have, so a caller can detect truncation (result >= size).
+// Formats into `buf` (always NUL-terminated when size > 0; a null `buf` is size 0). Returns the
+// length the full result would have, so a caller can detect truncation (result >= size).
 template <typename... Args>
 size_t format(char* buf, size_t size, const char* fmt, const Args&... args) {
+    if (!buf) size = 0; // no buffer: the length alone (as snprintf(NULL, 0, ...))
     fmt_detail::Arg list[sizeof...(Args) + 1] = {fmt_detail::make_arg(args)...};
     fmt_detail::Sink sink{buf, size ? size - 1 : 0, 0, 0, nullptr, nullptr};
     fmt_detail::format_args(sink, fmt, list, sizeof...(Args));

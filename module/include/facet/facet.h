@@ -201,7 +201,7 @@ typedef struct { float rotation[9], target_mm[3], distance_mm, focal_px; uint8_t
 facet_orbit facet_get_orbit(const facet_viewer *viewer);
 facet_result facet_set_orbit(facet_viewer *viewer, const facet_orbit *orbit);
 facet_camera facet_get_camera(const facet_viewer *viewer);
-void facet_show_view(facet_viewer *viewer, facet_standard_view view);
+facet_result facet_show_view(facet_viewer *viewer, facet_standard_view view);
 void facet_fit(facet_viewer *viewer);
 facet_result facet_fit_part(facet_viewer *viewer, uint32_t part);
 facet_result facet_fit_face(facet_viewer *viewer, uint32_t part, uint32_t face);
@@ -265,7 +265,7 @@ facet_part facet_get_part(const facet_viewer *viewer, uint32_t index); /* "" and
 facet_result facet_show_part(facet_viewer *viewer, uint32_t index, int shown);
 facet_result facet_isolate_part(facet_viewer *viewer, uint32_t index);
 void facet_show_all_parts(facet_viewer *viewer);
-void facet_choose_part(facet_viewer *viewer, uint32_t index); /* 0xFFFFFFFF: none */
+facet_result facet_choose_part(facet_viewer *viewer, uint32_t index); /* 0xFFFFFFFF: none */
 uint32_t facet_chosen_part(const facet_viewer *viewer);
 
 /* The section plane: normal . p = offset_mm; the side the normal points to is cut away. */

@@ -99,7 +99,7 @@ public:
     // The camera. orbit()/set_orbit(): the view as angles, distance and pan, set at once.
     Orbit orbit() const;
     Result set_orbit(const Orbit& orbit); // OutOfRange: a value not finite, a dolly outside 0.05-20, a pan past 64 model radii
-    void show_view(StandardView view);    // framed, with a short glide
+    Result show_view(StandardView view);  // framed, with a short glide (OutOfRange: no such view)
     void fit();                           // the model framed from where the eye is (a section's kept side)
     Result fit_part(uint32_t part);       // one part framed (with a glide)
     Result fit_face(uint32_t part, uint32_t face); // one face, among its neighbours
@@ -112,7 +112,7 @@ public:
     CameraView camera() const;
 
     DisplayMode display_mode() const;
-    void set_display_mode(DisplayMode mode);
+    Result set_display_mode(DisplayMode mode); // OutOfRange: no such mode
     // Tangent edges: the B-rep edges between faces that meet smoothly (a fillet's sides, a split
     // cylinder's halves; the pack says which), drawn (the default) or left out.
     bool tangent_edges() const;
@@ -152,14 +152,15 @@ public:
     Result isolate_part(uint32_t index); // shown alone
     void show_all_parts();
     static constexpr uint32_t kMaxHideableParts = 4096;
-    void choose_part(uint32_t index); // highlighted (see-through mode: drawn solid); ~0u: none
+    Result choose_part(uint32_t index); // highlighted (see-through mode: drawn solid); ~0u: none (OutOfRange: no such part)
     uint32_t chosen_part() const;
 
     // The section plane: normal . p = offset_mm (the placed model's coordinates, mm); the side
     // the normal points to is cut away, and a solid's inside shows in a colour of its own.
     struct SectionPlane { bool on; float normal[3], offset_mm; }; // normal: unit length
     SectionPlane section() const;
-    void set_section(const SectionPlane& plane); // on = false: off
+    // on = false: off. OutOfRange: a normal of no length or not finite, an offset not finite.
+    Result set_section(const SectionPlane& plane);
     Result section_through(uint32_t part, uint32_t face); // a planar face's plane, what lies beyond it cut away
     Result section_across(uint8_t axis);  // 0, 1, 2: across x, y or z, through the model's middle
     Result move_section(float by_mm);     // along its normal (NotFound: no section is on)
