@@ -145,6 +145,7 @@ facet_viewer* facet_create(const facet_config* c, void* workspace, size_t bytes,
         return nullptr;
     };
     if (!c) return refuse(Result::fail(Status::OutOfRange, "no configuration"));
+    if (unsigned(c->display.mode) > unsigned(FACET_FLUSH_SCANOUT)) return refuse(Result::fail(Status::OutOfRange, "no such flush mode", {"display"}));
     // Checked before the bridge is stored there: a null or misaligned workspace is refused, as
     // is one under facet_workspace_bytes() (sizes.h), whose slack then holds the bridge.
     if (!workspace || (reinterpret_cast<uintptr_t>(workspace) & 7)) {

@@ -32,7 +32,8 @@ constexpr KeyBinding kKeys[] = {
     {'h', Action::Help, "help: the keys and gestures"}, {'?', Action::Help, "help: the keys and gestures"},
 };
 
-int32_t distance(int32_t dx, int32_t dy) { return int32_t(std::sqrt(float(dx * dx + dy * dy)) + 0.5f); }
+// (Squares in 64 bits: two touches 65,535 pixels apart square past 32.)
+int32_t distance(int32_t dx, int32_t dy) { return int32_t(std::sqrt(float(int64_t(dx) * dx + int64_t(dy) * dy)) + 0.5f); }
 
 } // namespace
 

@@ -55,8 +55,9 @@ bool Presenter::wanted(uint32_t finished, uint32_t total) const {
 }
 
 void Presenter::take_done() {
-    if (done_.load(std::memory_order_acquire)) {
+    if (done_.load(kDoneLoad)) {
         done_.store(0, std::memory_order_relaxed); // (a call between the two was for this same flush)
+        std::atomic_signal_fence(std::memory_order_seq_cst);
         if (pending_ < 0) return; // a flush_done() with no flush in flight: nothing to free
         if (display_.mode == Flush::Copy || buffers_ == 1) {
             buf_[pending_].busy = false; // copied out (or a single frame drawn where it is shown)

@@ -25,6 +25,17 @@
 #include <atomic>
 
 namespace facet::module {
+// flush_done()'s flag: released and acquired where another core may call it; on ARMv5 (one
+// core, and no barrier instruction to call: __sync_synchronize is no routine there) the
+// compiler's order (a signal fence) is all an interrupt needs.
+#if defined(__ARM_ARCH) && __ARM_ARCH < 6
+constexpr std::memory_order kDoneStore = std::memory_order_relaxed, kDoneLoad = std::memory_order_relaxed;
+#else
+constexpr std::memory_order kDoneStore = std::memory_order_release, kDoneLoad = std::memory_order_acquire;
+#endif
+} // namespace facet::module
+
+namespace facet::module {
 
 class Presenter {
 public:
@@ -71,7 +82,10 @@ public:
     // (a frame's flush begins once the last is done), so calls for it are one event however
     // many come: a flag, not a count, which an interrupted increment could lose (ARMv5 has no
     // atomic read-modify-write to make one of).
-    void flush_done() { done_.store(1, std::memory_order_release); }
+    void flush_done() {
+        std::atomic_signal_fence(std::memory_order_seq_cst); // (the compiler's order, on one core)
+        done_.store(1, kDoneStore);
+    }
     // Something else projected vertices into the painter's scratch (a pick): the face being
     // drawn starts over (its pixels drawn so far are drawn again, the same).
     void projected_reused() { job_.tri = 0; }

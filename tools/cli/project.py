@@ -27,10 +27,10 @@ def add(sub):
     p.add_argument('-R', '--only', metavar='REGEX', help="only the tests whose names match (ctest's -R)")
     p.set_defaults(run=cmd_test)
 
-    p = sub.add_parser('fuzz', help='a long libFuzzer run (cdt, pack, tessellate)',
+    p = sub.add_parser('fuzz', help='a long libFuzzer run (cdt, pack, tessellate, api)',
                        description='A long libFuzzer run (ASan + UBSan; default 10,000,000 executions over every core), '
                        'the corpus kept in out/fuzz/TARGET. Exit 1 if anything was found.')
-    p.add_argument('target', choices=['cdt', 'pack', 'tessellate'])
+    p.add_argument('target', choices=['cdt', 'pack', 'tessellate', 'api'])
     p.add_argument('--runs', type=positive, default=10_000_000, metavar='N')
     p.add_argument('--jobs', type=positive, default=int(jobs()), metavar='J')
     p.add_argument('--no-trace-cmp', action='store_true',
@@ -96,7 +96,7 @@ def cmd_fuzz(args, parser):
     per = (args.runs + args.jobs - 1) // args.jobs
     say(f'fuzzing {t}: {args.jobs} x {per} executions, corpus out/fuzz/{t}/corpus, logs out/fuzz/{t}/logs')
     start = datetime.datetime.utcnow().strftime('%Y-%m-%dT%H:%M:%SZ')
-    max_len = 512 if t == 'cdt' else 32768
+    max_len = 512 if t in ('cdt', 'api') else 32768
     subprocess.run([os.path.join(folder, 'tests', 'fuzz', f'facet-{t}-fuzz'), f'-jobs={args.jobs}', f'-workers={args.jobs}',
                     f'-runs={per}', f'-max_len={max_len}', '-timeout=30', '-rss_limit_mb=4096', '-print_final_stats=1',
                     f'-artifact_prefix={artifacts}/', corpus], cwd=logs, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)

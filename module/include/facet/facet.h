@@ -29,9 +29,14 @@ extern "C" {
 typedef struct facet_viewer facet_viewer;
 typedef uint16_t facet_rgb565;
 
+/* The enums a caller passes in end with a *_WIDE_ value: it keeps each type as wide as a 32-bit
+ * integer, so that whatever number a caller passes is a value of it (C lets any int through); the
+ * calls refuse the numbers they do not know (FACET_OUT_OF_RANGE) or ignore them where they
+ * return nothing. */
+
 typedef enum {
     FACET_OK = 0, FACET_OUT_OF_RANGE, FACET_FULL, FACET_CORRUPT, FACET_UNSUPPORTED, FACET_NOT_FOUND, FACET_BUSY,
-    FACET_DEGENERATE, FACET_CROSSING, FACET_IO
+    FACET_DEGENERATE, FACET_CROSSING, FACET_IO, FACET_STATUS_WIDE_ = 0x7FFFFFFF
 } facet_status;
 
 /* A status, what went wrong and where ("face 12, loop 3"); kinds NULL when not given, indexes
@@ -55,7 +60,7 @@ typedef struct {
     uint16_t x, y, width, height;
 } facet_area;
 
-typedef enum { FACET_FLUSH_COPY = 0, FACET_FLUSH_SCANOUT = 1 } facet_flush_mode;
+typedef enum { FACET_FLUSH_COPY = 0, FACET_FLUSH_SCANOUT = 1, FACET_FLUSH_WIDE_ = 0x7FFFFFFF } facet_flush_mode;
 
 typedef struct {
     uint16_t width, height;
@@ -171,7 +176,7 @@ typedef enum {
     FACET_ACTION_VIEW_BOTTOM, FACET_ACTION_VIEW_ISO, FACET_ACTION_PROJECTION, FACET_ACTION_NEXT_DISPLAY_MODE,
     FACET_ACTION_NEXT_VIEW, FACET_ACTION_MEASURE, FACET_ACTION_HELP, FACET_ACTION_SECTION, FACET_ACTION_SECTION_IN,
     FACET_ACTION_SECTION_OUT, FACET_ACTION_PARTS, FACET_ACTION_NEXT_PART, FACET_ACTION_HIDE_PART, FACET_ACTION_ISOLATE_PART,
-    FACET_ACTION_SHOW_ALL_PARTS, FACET_ACTION_MODELS, FACET_ACTION_TANGENT_EDGES
+    FACET_ACTION_SHOW_ALL_PARTS, FACET_ACTION_MODELS, FACET_ACTION_TANGENT_EDGES, FACET_ACTION_WIDE_ = 0x7FFFFFFF
 } facet_action;
 void facet_act(facet_viewer *viewer, facet_action action); /* as if its key were pressed */
 /* The keys' table, for a help screen: how many, and each (NULL help past the last). */
@@ -194,7 +199,8 @@ facet_model_info facet_get_model(const facet_viewer *viewer);
  * right and up; parallel or perspective), set at once; the standard views and fits glide. */
 typedef struct { float yaw_deg, pitch_deg, dolly, pan_mm[2]; uint8_t parallel; } facet_orbit;
 typedef enum {
-    FACET_VIEW_FRONT, FACET_VIEW_BACK, FACET_VIEW_RIGHT, FACET_VIEW_LEFT, FACET_VIEW_TOP, FACET_VIEW_BOTTOM, FACET_VIEW_ISO
+    FACET_VIEW_FRONT, FACET_VIEW_BACK, FACET_VIEW_RIGHT, FACET_VIEW_LEFT, FACET_VIEW_TOP, FACET_VIEW_BOTTOM, FACET_VIEW_ISO,
+    FACET_VIEW_WIDE_ = 0x7FFFFFFF
 } facet_standard_view;
 /* For marks of one's own over the model (facet::Viewer::CameraView says how to project). */
 typedef struct { float rotation[9], target_mm[3], distance_mm, focal_px; uint8_t parallel; } facet_camera;
@@ -208,7 +214,8 @@ facet_result facet_fit_face(facet_viewer *viewer, uint32_t part, uint32_t face);
 void facet_set_parallel(facet_viewer *viewer, int parallel);
 
 typedef enum {
-    FACET_MODE_SHADED_EDGES, FACET_MODE_SHADED, FACET_MODE_WIREFRAME, FACET_MODE_HIDDEN_LINE, FACET_MODE_SEE_THROUGH
+    FACET_MODE_SHADED_EDGES, FACET_MODE_SHADED, FACET_MODE_WIREFRAME, FACET_MODE_HIDDEN_LINE, FACET_MODE_SEE_THROUGH,
+    FACET_MODE_WIDE_ = 0x7FFFFFFF
 } facet_display_mode;
 facet_display_mode facet_get_display_mode(const facet_viewer *viewer);
 facet_result facet_set_display_mode(facet_viewer *viewer, facet_display_mode mode);
