@@ -4,8 +4,9 @@ import glob
 import os
 import shutil
 import subprocess
+import sys
 
-from common import ROOT, Failure, build, jobs, presets, run, say, setup
+from common import MODELS, ROOT, Failure, build, jobs, presets, run, say, setup, tool
 
 
 def add(sub):
@@ -27,10 +28,10 @@ def add(sub):
     p.add_argument('-R', '--only', metavar='REGEX', help="only the tests whose names match (ctest's -R)")
     p.set_defaults(run=cmd_test)
 
-    p = sub.add_parser('fuzz', help='a long libFuzzer run (cdt, pack, tessellate, api)',
+    p = sub.add_parser('fuzz', help='a long fuzz run (libFuzzer: cdt, pack, tessellate, api; facet-pack on mutated STEP: step)',
                        description='A long libFuzzer run (ASan + UBSan; default 10,000,000 executions over every core), '
                        'the corpus kept in out/fuzz/TARGET. Exit 1 if anything was found.')
-    p.add_argument('target', choices=['cdt', 'pack', 'tessellate', 'api'])
+    p.add_argument('target', choices=['cdt', 'pack', 'tessellate', 'api', 'step'])
     p.add_argument('--runs', type=positive, default=10_000_000, metavar='N')
     p.add_argument('--jobs', type=positive, default=int(jobs()), metavar='J')
     p.add_argument('--no-trace-cmp', action='store_true',
@@ -74,6 +75,14 @@ def cmd_test(args, parser):
 
 def cmd_fuzz(args, parser):
     setup()
+    if args.target == 'step': # facet-pack (Open CASCADE) on mutated STEP text: a process a run
+        build('host')
+        out = os.path.join(ROOT, 'out', 'fuzz', 'step')
+        say(f'fuzzing step: {args.runs} runs of facet-pack on mutated STEP text, {args.jobs} jobs, findings in out/fuzz/step')
+        if run([sys.executable, 'tests/fuzz/step_fuzz.py', '--packer', tool('facet-pack'), '--models', MODELS, '--out', out,
+                '--runs', str(args.runs), '--jobs', str(args.jobs)]) != 0:
+            raise Failure('step: facet-pack failed on mutated STEP text (out/fuzz/step: each finding and its command)')
+        return 0
     folder = os.path.join(ROOT, 'build', 'fuzz')
     if args.no_trace_cmp:
         folder = os.path.join(ROOT, 'build', 'fuzz-no-trace-cmp')

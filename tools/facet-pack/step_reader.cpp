@@ -12,6 +12,15 @@
 #include <STEPControl_Reader.hxx>
 #include <ShapeFix_Shape.hxx>
 #include <StepData_StepModel.hxx>
+#include <StepGeom_CartesianPoint.hxx>
+#include <StepGeom_Circle.hxx>
+#include <StepGeom_ConicalSurface.hxx>
+#include <StepGeom_CylindricalSurface.hxx>
+#include <StepGeom_Direction.hxx>
+#include <StepGeom_Ellipse.hxx>
+#include <StepGeom_SphericalSurface.hxx>
+#include <StepGeom_ToroidalSurface.hxx>
+#include <StepGeom_Vector.hxx>
 #include <StepShape_AdvancedFace.hxx>
 #include <StepShape_FaceSurface.hxx>
 #include <StepShape_ManifoldSolidBrep.hxx>
@@ -227,6 +236,45 @@ std::string entity_problem(const Handle(StepData_StepModel)& m, int i) {
     return why;
 }
 
+// The first geometric number of the file no part can hold: not finite (1E400 reads as infinity)
+// or beyond +-1e10 in the file's unit (a point at 1E308, a radius of -1E308). Open CASCADE's
+// healing loops on such a shape for as long as one cares to wait. Empty when there is none.
+std::string out_of_range_number(const Handle(StepData_StepModel)& m) {
+    constexpr double kMost = 1e10;
+    const auto bad = [](double v) { return !(std::fabs(v) <= kMost); };
+    for (int i = 1; !m.IsNull() && i <= m->NbEntities(); ++i) {
+        const Handle(Standard_Transient)& e = m->Value(i);
+        double v = 0;
+        bool found = false;
+        if (const auto p = Handle(StepGeom_CartesianPoint)::DownCast(e); !p.IsNull()) {
+            for (int k = 1; k <= p->NbCoordinates() && !found; ++k) found = bad(v = p->CoordinatesValue(k));
+        } else if (const auto d = Handle(StepGeom_Direction)::DownCast(e); !d.IsNull()) {
+            for (int k = 1; k <= d->NbDirectionRatios() && !found; ++k) found = bad(v = d->DirectionRatiosValue(k));
+        } else if (const auto c = Handle(StepGeom_Circle)::DownCast(e); !c.IsNull()) {
+            found = bad(v = c->Radius());
+        } else if (const auto el = Handle(StepGeom_Ellipse)::DownCast(e); !el.IsNull()) {
+            found = bad(v = el->SemiAxis1()) || bad(v = el->SemiAxis2());
+        } else if (const auto cy = Handle(StepGeom_CylindricalSurface)::DownCast(e); !cy.IsNull()) {
+            found = bad(v = cy->Radius());
+        } else if (const auto co = Handle(StepGeom_ConicalSurface)::DownCast(e); !co.IsNull()) {
+            found = bad(v = co->Radius()) || bad(v = co->SemiAngle());
+        } else if (const auto sp = Handle(StepGeom_SphericalSurface)::DownCast(e); !sp.IsNull()) {
+            found = bad(v = sp->Radius());
+        } else if (const auto to = Handle(StepGeom_ToroidalSurface)::DownCast(e); !to.IsNull()) {
+            found = bad(v = to->MajorRadius()) || bad(v = to->MinorRadius());
+        } else if (const auto ve = Handle(StepGeom_Vector)::DownCast(e); !ve.IsNull()) {
+            found = bad(v = ve->Magnitude());
+        }
+        if (found) {
+            char text[200];
+            std::snprintf(text, sizeof text, "#%d %s holds %g: no part's geometry (a number beyond +-1e10, or not finite)",
+                          m->IdentLabel(e), m->TypeName(e, false), v);
+            return text;
+        }
+    }
+    return {};
+}
+
 // The entities whose transfer failed outright (an exception inside Open CASCADE: a malformed
 // entity, a dangling reference; a signal it raised counts as one, OSD::SetSignal): "#74
 // VERTEX_POINT: ..." each, the first few. What they held is lost with them.
@@ -424,6 +472,10 @@ bool read_step(const std::string& in, StepModel& model, std::string& error, bool
     reader.SetLayerMode(false);
     if (reader.ReadFile(in.c_str()) != IFSelect_RetDone) {
         error = in + ": not a readable STEP file";
+        return false;
+    }
+    if (const std::string why = out_of_range_number(Handle(StepData_StepModel)::DownCast(reader.ChangeReader().Model())); !why.empty()) {
+        error = in + ": " + why;
         return false;
     }
     Handle(XCAFDoc_ShapeTool) shapes = XCAFDoc_DocumentTool::ShapeTool(doc->Main());
