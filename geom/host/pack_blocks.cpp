@@ -219,7 +219,7 @@ bool make_blocked(const Pack& whole, const std::vector<PartBox>& given, const Bl
     }
     // The index: header, table, sections; then the blocks.
     std::vector<Instance> instances(whole.instances().begin(), whole.instances().end());
-    const uint32_t kSections = 6;
+    const uint32_t kSections = 6 + (whole.needs() ? 1 : 0);
     out.assign(sizeof(IndexHeader) + kSections * sizeof(SectionEntry), 0);
     std::vector<SectionEntry> table;
     append(out, table, IndexSectionId::Blocks, blocks); // offsets filled in below
@@ -243,6 +243,7 @@ bool make_blocked(const Pack& whole, const std::vector<PartBox>& given, const Bl
     append(out, table, IndexSectionId::PartNames, part_names);
     append(out, table, IndexSectionId::InstanceNames, instance_names);
     append(out, table, IndexSectionId::Names, pool);
+    if (whole.needs()) append(out, table, IndexSectionId::Needs, std::vector<pack::Needs>{*whole.needs()});
     std::memcpy(out.data() + sizeof(IndexHeader), table.data(), table.size() * sizeof(SectionEntry));
     out.resize((out.size() + 3) & ~size_t(3), 0);
     const uint32_t index_bytes = uint32_t(out.size());
@@ -292,6 +293,7 @@ bool join_blocked(std::span<const uint8_t> file, std::vector<uint8_t>& whole, st
     PackWriter w;
     w.set_source_unit_mm(index.header().source_unit_mm);
     w.set_model_name(index.model_name());
+    if (index.needs()) w.set_needs(*index.needs());
     for (uint32_t b = 0; b < index.blocks().size(); ++b) {
         const auto stored_bytes = index.block_file(b);
         LoadedPack block;

@@ -96,9 +96,13 @@ std::vector<uint8_t> PackWriter::finish() const {
         smooth_words.resize(pack::smooth_words(uint32_t(edges_.size())), 0);
         smooth_words[e / 32] |= 1u << (e % 32);
     }
-    const uint32_t sections = (named ? 15 : 12) + (smooth_words.empty() ? 0 : 1);
-    std::vector<uint8_t> out(sizeof(Header) + sections * sizeof(SectionEntry));
+    // (a name table is written when it names something)
+    const auto names_some = [](const std::vector<uint32_t>& t) { return std::any_of(t.begin(), t.end(), [](uint32_t v) { return v != kNoIndex; }); };
+    const bool shell_names = names_some(shell_names_), instance_names = names_some(instance_names_);
+    // The sections laid out from 0, then placed after the header and the table.
+    std::vector<uint8_t> out;
     std::vector<SectionEntry> table;
+    if (has_needs_) append_section(out, table, SectionId::Needs, std::vector<pack::Needs>{needs_}); // (in the pack's head)
     append_section(out, table, SectionId::Floats, floats_);
     append_section(out, table, SectionId::Surfaces, surfaces_);
     append_section(out, table, SectionId::Curves3, curves3_);
@@ -112,23 +116,29 @@ std::vector<uint8_t> PackWriter::finish() const {
     append_section(out, table, SectionId::Instances, instances_);
     append_section(out, table, SectionId::Colours, colours_);
     if (named) {
-        // The pool: the model's name first, then the others (their offsets move behind it).
-        const uint32_t shift = uint32_t(model_name_.size() + 1);
+        // The pool: the model's name first, then the others (their offsets move behind it),
+        // unless the first of them is the model's (a part named as its file is: stored once).
+        const bool model_name_first = names_.size() > model_name_.size() &&
+                                      std::memcmp(names_.data(), model_name_.c_str(), model_name_.size() + 1) == 0;
+        const uint32_t shift = model_name_first ? 0 : uint32_t(model_name_.size() + 1);
         std::vector<uint32_t> shells = shell_names_, instances = instance_names_;
         shells.resize(shells_.size(), kNoIndex);
         instances.resize(instances_.size(), kNoIndex);
         for (auto* t : {&shells, &instances})
             for (uint32_t& v : *t)
                 if (v != kNoIndex) v += shift;
-        append_section(out, table, SectionId::ShellNames, shells);
-        append_section(out, table, SectionId::InstanceNames, instances);
-        std::vector<char> pool(model_name_.begin(), model_name_.end());
-        pool.push_back(0);
+        if (shell_names) append_section(out, table, SectionId::ShellNames, shells);
+        if (instance_names) append_section(out, table, SectionId::InstanceNames, instances);
+        std::vector<char> pool;
+        if (!model_name_first) pool.assign(model_name_.c_str(), model_name_.c_str() + model_name_.size() + 1);
         pool.insert(pool.end(), names_.begin(), names_.end());
         pool.resize((pool.size() + 3) & ~size_t(3), 0);
         append_section(out, table, SectionId::Names, pool);
     }
     if (!smooth_words.empty()) append_section(out, table, SectionId::SmoothEdges, smooth_words);
+    const uint32_t sections = uint32_t(table.size()), head = uint32_t(sizeof(Header) + sections * sizeof(SectionEntry));
+    for (SectionEntry& e : table) e.offset += head;
+    out.insert(out.begin(), head, 0);
     std::memcpy(out.data() + sizeof(Header), table.data(), table.size() * sizeof(SectionEntry));
 
     Header h{};

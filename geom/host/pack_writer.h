@@ -40,6 +40,8 @@ public:
     uint32_t face_count() const { return uint32_t(faces_.size()); }
 
     void set_source_unit_mm(float unit) { unit_mm_ = unit; }
+    // What the model takes on a device (pack::Needs), written first after the table.
+    void set_needs(const pack::Needs& needs) { needs_ = needs, has_needs_ = true; }
     // The finished pack: header with bounding box and CRC, section table, sections.
     std::vector<uint8_t> finish() const;
     // Bytes per section, for the packer's summary.
@@ -53,6 +55,8 @@ private:
     std::vector<pack::Vertex> vertices_;
     std::vector<pack::Edge> edges_;
     std::vector<bool> smooth_; // per edge, as far as set
+    pack::Needs needs_{};
+    bool has_needs_ = false;
     std::vector<pack::Coedge> coedges_;
     std::vector<pack::Loop> loops_;
     std::vector<pack::Face> faces_;

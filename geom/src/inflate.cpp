@@ -266,6 +266,8 @@ Result stored(Bits& in, Output& out) {
         return Result::fail(Status::Corrupt, "the DEFLATE stream ends early");
     }
     if (len > out.size - out.at) {
+        for (uint32_t k = 0; k < out.size - out.at; ++k) out.data[out.at + k] = in.p[k];
+        out.at = out.size;
         return Result::fail(Status::Full, "the inflated data is larger than its space");
     }
     for (uint32_t k = 0; k < len; ++k) out.data[out.at + k] = in.p[k];
@@ -359,7 +361,10 @@ Result inflate(std::span<const uint8_t> in, std::span<uint8_t> out, uint32_t& wr
         case 2: st = dynamic(bits, o); break;
         default: return Result::fail(Status::Corrupt, "an invalid block type");
         }
-        if (!st.ok()) return st;
+        if (!st.ok()) {
+            written = st.status == Status::Full ? o.at : 0; // (the stream's start, up to where it no longer fit)
+            return st;
+        }
     }
     if (bits.more()) {
         // The last block ended inside the stream: what follows is not DEFLATE (appended bytes).

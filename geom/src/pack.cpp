@@ -142,6 +142,7 @@ const char* section_name(uint32_t id) {
     static const char* const names[] = {"header", "Floats", "Surfaces", "Curves3", "Curves2", "Vertices", "Edges",
                                         "Coedges", "Loops", "Faces", "Shells", "Instances", "Colours",
                                         "Names", "ShellNames", "InstanceNames", "SmoothEdges"};
+    if (id == uint32_t(SectionId::Needs)) return "Needs";
     return id < sizeof names / sizeof names[0] ? names[id] : "unknown";
 }
 
@@ -153,6 +154,7 @@ Place section_place(uint32_t id, uint32_t index) {
                                         "section Colours record", "section Names byte", "section ShellNames record",
                                         "section InstanceNames record", "section SmoothEdges word"};
     if (id == 0) return {kinds[0]};
+    if (id == uint32_t(SectionId::Needs)) return {"section Needs record", index};
     return {id < sizeof kinds / sizeof kinds[0] ? kinds[id] : "section record", index};
 }
 
@@ -175,7 +177,7 @@ void Pack::moved(const void* to) {
     rebase(floats_, from, at), rebase(surfaces_, from, at), rebase(curves3_, from, at), rebase(curves2_, from, at);
     rebase(vertices_, from, at), rebase(edges_, from, at), rebase(coedges_, from, at), rebase(loops_, from, at);
     rebase(faces_, from, at), rebase(shells_, from, at), rebase(instances_, from, at), rebase(colours_, from, at);
-    rebase(names_, from, at), rebase(shell_names_, from, at), rebase(instance_names_, from, at), rebase(smooth_, from, at);
+    rebase(names_, from, at), rebase(shell_names_, from, at), rebase(instance_names_, from, at), rebase(smooth_, from, at), rebase(needs_, from, at);
 }
 
 Result Pack::open(const void* data, uint32_t size) {
@@ -209,6 +211,17 @@ Result Pack::open(const void* data, uint32_t size) {
     for (uint32_t i = 0; i < h->section_count; ++i) {
         const SectionEntry& s = table[i];
         const uint32_t id = s.id;
+        if (id == uint32_t(SectionId::Needs)) { // (optional: one record)
+            if (seen & (1u << id)) return fail("section appears twice", id, 0);
+            seen |= 1u << id;
+            if (s.record_bytes != sizeof(pack::Needs) || s.count != 1 || (s.offset & 3) || s.offset < table_end ||
+                uint64_t(s.offset) + sizeof(pack::Needs) > size) {
+                return fail("the Needs section is not one record inside the pack", id, 0);
+            }
+            if (const char* why = pack::needs_problem(*reinterpret_cast<const pack::Needs*>(base + s.offset))) return fail(why, id, 0);
+            needs_ = {reinterpret_cast<const pack::Needs*>(base + s.offset), 1};
+            continue;
+        }
         if (id < 1 || id > uint32_t(SectionId::SmoothEdges)) continue; // unknown sections are skipped
         if (seen & (1u << id)) return fail("section appears twice", id, 0);
         seen |= 1u << id;
@@ -238,6 +251,7 @@ Result Pack::open(const void* data, uint32_t size) {
         case SectionId::ShellNames: shell_names_ = {reinterpret_cast<const uint32_t*>(at), s.count}; break;
         case SectionId::InstanceNames: instance_names_ = {reinterpret_cast<const uint32_t*>(at), s.count}; break;
         case SectionId::SmoothEdges: smooth_ = {reinterpret_cast<const uint32_t*>(at), s.count}; break;
+        case SectionId::Needs: break; // (above)
         }
     }
     header_ = h;

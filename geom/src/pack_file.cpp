@@ -93,9 +93,9 @@ uint32_t stored_pack_bytes(const void* data, uint32_t available) {
 
 Result stored_pack_counts(const void* data, uint32_t available, PackCounts& out, LzmaProbs& probs) {
     out = {};
-    // The head and the section table: decoded alone for an LZMA file (its first bytes need no
-    // more of the output than themselves).
-    alignas(4) uint8_t head[sizeof(pack::Header) + 32 * sizeof(pack::SectionEntry)];
+    // The head and the section table: decoded alone for a compressed file (its first bytes need
+    // no more of the output than themselves).
+    alignas(4) uint8_t head[sizeof(pack::Header) + 32 * sizeof(pack::SectionEntry) + sizeof(pack::Needs)];
     uint32_t have = 0;
     const PackFileKind kind = pack_file_kind(data, available);
     if (kind == PackFileKind::Pack) {
@@ -112,8 +112,17 @@ Result stored_pack_counts(const void* data, uint32_t available, PackCounts& out,
         Result r = d.start({in, h.stream_bytes}, h.props, {head, want}, probs);
         while (r.status == Status::Busy) r = d.run(want);
         have = d.written(); // (a stream longer than the head is no fault here)
+    } else if (kind == PackFileKind::Deflated) {
+        CompressedHead h;
+        if (!read_head(data, available, h) || uint64_t(sizeof(DeflatedHead)) + h.stream_bytes > available) {
+            return Result::fail(Status::Corrupt, "the compressed head is cut short or the file truncated", kFile);
+        }
+        const uint32_t want = h.pack_bytes < sizeof head ? h.pack_bytes : uint32_t(sizeof head);
+        const auto* in = static_cast<const uint8_t*>(data) + sizeof(DeflatedHead);
+        const Result r = inflate({in, h.stream_bytes}, {head, want}, have);
+        if (!r.ok() && r.status != Status::Full) return r; // (a stream longer than the head is no fault here)
     } else {
-        return Result::fail(Status::Unsupported, "counts are read from a plain or LZMA pack (a deflated one: decode it first)", kFile);
+        return Result::fail(Status::Unsupported, "no pack's counts here (a blocked pack has its index)", kFile);
     }
     pack::Header h;
     if (have < sizeof h) return Result::fail(Status::Corrupt, "the pack's head is cut short", kFile);
@@ -129,6 +138,11 @@ Result stored_pack_counts(const void* data, uint32_t available, PackCounts& out,
         if (e.id == uint32_t(pack::SectionId::Faces)) out.faces = e.count;
         if (e.id == uint32_t(pack::SectionId::Edges)) out.edges = e.count;
         if (e.id == uint32_t(pack::SectionId::Shells)) out.shells = e.count;
+        if (e.id == uint32_t(pack::SectionId::Needs) && e.count == 1 && e.record_bytes == sizeof(pack::Needs) &&
+            uint64_t(e.offset) + sizeof(pack::Needs) <= have) {
+            std::memcpy(&out.needs, head + e.offset, sizeof out.needs);
+            out.has_needs = true;
+        }
     }
     return {};
 }

@@ -36,6 +36,7 @@ Place index_place(uint32_t id, uint32_t index) {
     case IndexSectionId::InstanceNames: return {"index section InstanceNames record", index};
     case IndexSectionId::Blocks: return {"index section Blocks record", index};
     case IndexSectionId::Parts: return {"index section Parts record", index};
+    case IndexSectionId::Needs: return {"index section Needs record", index};
     }
     return {"index header"};
 }
@@ -93,6 +94,7 @@ Result PackIndex::open(const void* data, uint32_t size) {
         case IndexSectionId::InstanceNames: record = 4; break;
         case IndexSectionId::Blocks: record = sizeof(pack::Block); break;
         case IndexSectionId::Parts: record = sizeof(pack::Part); break;
+        case IndexSectionId::Needs: record = sizeof(pack::Needs); break;
         default: continue; // unknown sections are skipped
         }
         if (seen & (1u << s.id)) return fail("section appears twice", s.id, 0);
@@ -110,6 +112,11 @@ Result PackIndex::open(const void* data, uint32_t size) {
         case IndexSectionId::InstanceNames: instance_names_ = {reinterpret_cast<const uint32_t*>(at), s.count}; break;
         case IndexSectionId::Blocks: blocks_ = {reinterpret_cast<const pack::Block*>(at), s.count}; break;
         case IndexSectionId::Parts: parts_ = {reinterpret_cast<const pack::Part*>(at), s.count}; break;
+        case IndexSectionId::Needs:
+            if (s.count != 1) return fail("the Needs section is not one record", s.id, 0);
+            if (const char* why = pack::needs_problem(*reinterpret_cast<const pack::Needs*>(at))) return fail(why, s.id, 0);
+            needs_ = {reinterpret_cast<const pack::Needs*>(at), 1};
+            break;
         }
     }
     base_ = base;

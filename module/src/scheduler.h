@@ -72,6 +72,9 @@ public:
     // its faces tessellated or deferred.
     bool begin_refine(uint32_t b, float tolerance);
     static constexpr uint32_t kNewBlockSamplesPerEdge = 6;
+    // The first pass, short of room for the model's edges, takes coarser levels up to this many
+    // times the tolerance asked (model_needs()'s least workspace is the room at this level).
+    static constexpr float kCoarsestFirst = pack::kCoarsestFirst;
     // Whether the samples' pool has room for `need` more (compacted first if short; not while busy).
     bool make_sample_room(uint32_t need);
     bool refining() const { return refine_block_ != kNoBlock; }
@@ -124,6 +127,7 @@ private:
     bool started_ = false;     // a pass has begun since load
     bool restoring_ = false;   // sampling the previous pass again after this one failed
     float previous_ = 0;       // the previous pass's tolerance
+    float first_tolerance_ = 0; // the first pass's tolerance as asked (before it went coarser for room)
     uint32_t next_edge_ = 0;
     bool in_edge_ = false;     // an edge is being sampled (sampler_ holds where)
     uint32_t quantized_ = 0;   // samples quantized so far

@@ -113,28 +113,44 @@ uint32_t pack_memory_bytes(const void* file, uint32_t file_bytes) { return modul
 Result model_needs(const void* file, uint32_t file_bytes, ModelNeeds& needs) {
     needs = {};
     const geom::PackFileKind kind = file ? geom::pack_file_kind(file, file_bytes) : geom::PackFileKind::Unknown;
+    pack::Needs measured{};
+    bool has_measured = false;
     if (kind == geom::PackFileKind::Blocked) {
         geom::PackIndex index;
         if (reinterpret_cast<uintptr_t>(file) & 3) return Result::fail(Status::OutOfRange, "a blocked pack must lie 4-byte aligned");
         if (Result r = index.open(file, file_bytes); !r.ok()) return r;
         for (const pack::Part& p : index.parts()) needs.faces += p.face_count, needs.edges += p.edge_count;
         needs.parts = uint32_t(index.parts().size());
+        if (index.needs()) measured = *index.needs(), has_measured = true;
     } else if (kind != geom::PackFileKind::Unknown) {
         geom::LzmaProbs probs; // (about 10 KB of stack, for an LZMA pack's head)
         geom::PackCounts n;
         if (Result r = geom::stored_pack_counts(file, file_bytes, n, probs); !r.ok()) return r;
         needs.faces = n.faces, needs.edges = n.edges, needs.parts = n.shells;
+        measured = n.needs, has_measured = n.has_needs;
     } else {
         return Result::fail(Status::Corrupt, "no pack here (neither FPK1, FPX1, FPZ1 nor FPB1)");
+    }
+    if (has_measured) {
+        if (const char* why = pack::needs_problem(measured)) return Result::fail(Status::Corrupt, why);
     }
     needs.pack_memory_bytes = module::pack_memory_need(file, file_bytes);
     const size_t base = layout_bytes(Capacity{});
     // (+ the alignment the base's end and the model's arrays may lose, to 8 bytes)
     needs.least_workspace_bytes = (base + module::plan_model(needs.faces, needs.edges, 0, Capacity{}).need + 64 + 7) / 8 * 8;
-    const size_t roomy = base + module::model_room_bytes(needs.faces, needs.edges, kSamplesPerEdge, 0);
+    size_t roomy = base + module::model_room_bytes(needs.faces, needs.edges, kSamplesPerEdge, 0);
+    if (has_measured) {
+        // What the packer measured: the coarsest first level whole (every face meshed), and the
+        // default level.
+        const size_t least = base + module::model_room_for(needs.faces, needs.edges, measured.coarse_samples,
+                                                           measured.coarse_vertices, measured.coarse_triangles);
+        needs.least_workspace_bytes = std::max(needs.least_workspace_bytes, (least + 7) / 8 * 8);
+        roomy = base + module::model_room_for(needs.faces, needs.edges, measured.samples, measured.mesh_vertices,
+                                              measured.mesh_triangles);
+    }
     // (never under what create() takes: facet/sizes.h's formula)
     needs.least_workspace_bytes = std::max(needs.least_workspace_bytes, workspace_bytes(Capacity{}));
-    needs.workspace_bytes = std::max(roomy, needs.least_workspace_bytes);
+    needs.workspace_bytes = std::max((roomy + 7) / 8 * 8, needs.least_workspace_bytes);
     return {};
 }
 

@@ -159,6 +159,22 @@ constexpr size_t model_room_bytes(uint32_t faces, uint32_t edges, uint32_t per_e
     return model_bytes({faces, edges, 0, 0, 0}) + 64 + (for_samples > for_mesh ? for_samples : for_mesh);
 }
 
+// The model's arrays whose shares (plan_model) hold `samples`, `vertices` and `triangles`: the
+// room a measured level of detail takes (pack::Needs). In 64 bits (counts up to 2^31 each);
+// past what a size_t holds, its largest value.
+// Each count with a margin of 1/64 and 16: the packer measured on its host, whose libm (sin,
+// atan2, ...) may round otherwise than the device's, a sample or a triangle more here and there.
+constexpr uint64_t share_room(uint64_t bytes, uint32_t share) { return (bytes * 100 + share - 1) / share; }
+constexpr uint64_t with_margin(uint32_t count) { return uint64_t(count) + count / 64 + 16; }
+constexpr size_t model_room_for(uint32_t faces, uint32_t edges, uint32_t samples, uint32_t vertices, uint32_t triangles) {
+    const uint64_t for_samples = share_room((with_margin(samples) + 2) * kSampleBytes, kSampleShare);
+    const uint64_t for_vertices = share_room(with_margin(vertices) * sizeof(DrawVertex), kVertexShare);
+    const uint64_t for_triangles = share_room(with_margin(triangles) * 3 * sizeof(uint16_t), kTriangleShare);
+    const uint64_t most = for_samples > for_vertices ? for_samples : for_vertices;
+    const uint64_t all = uint64_t(model_bytes({faces, edges, 0, 0, 0})) + 64 + (most > for_triangles ? most : for_triangles);
+    return all < uint64_t(SIZE_MAX) / 2 ? size_t(all) : SIZE_MAX / 2; // (half: the base is added to it)
+}
+
 // Cuts caller memory in order, each piece at its alignment; past the end it hands out nothing
 // and fits() turns false.
 class Carver {

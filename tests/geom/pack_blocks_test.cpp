@@ -28,9 +28,10 @@ using Bytes = std::vector<uint8_t>;
 
 // `n` boxes of different sizes, each a shell of 6 planar faces, each placed twice, named; box
 // b's edge b % 12 marked smooth (SmoothEdges: its faces meeting tangentially, as if rounded).
-Bytes boxes_pack(int n) {
+Bytes boxes_pack(int n, const Needs* needs = nullptr) {
     PackWriter w;
     w.set_model_name("boxes");
+    if (needs) w.set_needs(*needs);
     for (int b = 0; b < n; ++b) {
         const float s = 5.0f + float(b);
         uint32_t v[8];
@@ -149,8 +150,16 @@ TEST(PackBlocks, JoinedBackIsTheWholePack) {
         BlockOptions o;
         o.store = store;
         o.block_bytes = 2500;
-        const Bytes whole = boxes_pack(4);
+        const Needs needs{400, 900, 800, 200, 500, 450};
+        const Bytes whole = boxes_pack(4, &needs);
         const Bytes file = blocked(whole, o);
+        { // the whole model's Needs in the index
+            Aligned f(file);
+            PackIndex index;
+            ASSERT_TRUE(index.open(f.data(), f.size).ok());
+            ASSERT_NE(index.needs(), nullptr);
+            EXPECT_EQ(std::memcmp(index.needs(), &needs, sizeof needs), 0);
+        }
         LoadedPack joined;
         std::string error;
         ASSERT_TRUE(load_pack_bytes(file, joined, error)) << error;
@@ -171,6 +180,8 @@ TEST(PackBlocks, JoinedBackIsTheWholePack) {
         }
         for (uint32_t s = 0; s < a.shells().size(); ++s) EXPECT_STREQ(a.shell_name(s), b.shell_name(s));
         EXPECT_STREQ(a.model_name(), b.model_name());
+        ASSERT_NE(b.needs(), nullptr);
+        EXPECT_EQ(std::memcmp(a.needs(), b.needs(), sizeof needs), 0);
         for (size_t f = 0; f < a.faces().size(); ++f) {
             const uint32_t ca = a.faces()[f].colour, cb = b.faces()[f].colour;
             ASSERT_EQ(ca == kNoIndex, cb == kNoIndex) << f;

@@ -1,6 +1,8 @@
 // The pack reader refuses every kind of corruption with a status naming the bad record, and
 // reads a valid pack in place.
 #include "geom/pack.h"
+#include "geom/pack_file.h"
+#include "pack_io.h"
 #include "pack_writer.h"
 
 #include "core/format.h"
@@ -19,8 +21,9 @@ namespace {
 
 // A 10 mm cube: 6 planes, 12 edges (the first six straight, the others on line curves), 8
 // vertices, 24 coedges; the first three faces carry line pcurves (optional on planes).
-std::vector<uint8_t> cube_pack(std::initializer_list<uint32_t> smooth = {}) {
+std::vector<uint8_t> cube_pack(std::initializer_list<uint32_t> smooth = {}, const Needs* needs = nullptr) {
     PackWriter w;
+    if (needs) w.set_needs(*needs);
     const float s = 10;
     uint32_t v[8];
     for (int i = 0; i < 8; ++i) v[i] = w.add_vertex(s * (i & 1), s * ((i >> 1) & 1), s * ((i >> 2) & 1));
@@ -163,6 +166,55 @@ TEST(Pack, SmoothEdgesReadBackEdgeByEdgeAndATableOfTheWrongLengthIsRefused) {
     EXPECT_EQ(r.status, Status::Corrupt);
     EXPECT_STREQ(r.what, "one bit per edge is needed");
     EXPECT_STREQ(r.where.kind, "section SmoothEdges word");
+}
+
+// What the model takes on a device (Needs, measured by the packer): read back as written, from
+// the pack's head (stored_pack_counts, as facet::model_needs() reads it) and from the pack
+// opened, where the bytes moved too; none in a pack without it. A record that is not one, or
+// whose values no packer measures, is refused naming the section.
+TEST(Pack, NeedsReadBackFromTheHeadAndTheWholeAndBadOnesAreRefused) {
+    const Needs n{1200, 3400, 5600, 300, 700, 900};
+    Buf with(cube_pack({}, &n)), without(cube_pack());
+    Pack p;
+    ASSERT_TRUE(with.open(p).ok());
+    ASSERT_NE(p.needs(), nullptr);
+    EXPECT_EQ(std::memcmp(p.needs(), &n, sizeof n), 0);
+    EXPECT_EQ(with.section(SectionId::Needs).offset, sizeof(Header) + with.header().section_count * sizeof(SectionEntry))
+        << "first after the table: in the pack's head";
+    PackCounts counts;
+    LzmaProbs probs;
+    ASSERT_TRUE(stored_pack_counts(with.bytes(), with.size, counts, probs).ok());
+    EXPECT_TRUE(counts.has_needs);
+    EXPECT_EQ(std::memcmp(&counts.needs, &n, sizeof n), 0);
+    EXPECT_EQ(counts.faces, 6u);
+    for (const std::vector<uint8_t>& file : {lzma_pack(cube_pack({}, &n)), deflate_pack(cube_pack({}, &n))}) {
+        const Buf f(file);
+        ASSERT_TRUE(stored_pack_counts(f.words.data(), f.size, counts, probs).ok());
+        EXPECT_TRUE(counts.has_needs);
+        EXPECT_EQ(counts.needs.mesh_triangles, 5600u);
+        EXPECT_EQ(counts.edges, 12u);
+    }
+    Buf other(cube_pack({}, &n));
+    p.moved(other.bytes());
+    EXPECT_EQ(reinterpret_cast<const uint8_t*>(p.needs()), other.bytes() + other.section(SectionId::Needs).offset);
+    ASSERT_TRUE(without.open(p).ok());
+    EXPECT_EQ(p.needs(), nullptr);
+    ASSERT_TRUE(stored_pack_counts(without.bytes(), without.size, counts, probs).ok());
+    EXPECT_FALSE(counts.has_needs);
+
+    auto refused = [&](auto change, const char* what) {
+        Buf b(cube_pack({}, &n));
+        change(b);
+        b.reseal();
+        Pack q;
+        const Result r = b.open(q);
+        EXPECT_EQ(r.status, Status::Corrupt) << what;
+        EXPECT_STREQ(r.what, what);
+        EXPECT_STREQ(r.where.kind, "section Needs record");
+    };
+    refused([](Buf& b) { b.section(SectionId::Needs).count = 2; }, "the Needs section is not one record inside the pack");
+    refused([](Buf& b) { b.section(SectionId::Needs).record_bytes = 28; }, "the Needs section is not one record inside the pack");
+    refused([](Buf& b) { b.record<Needs>(SectionId::Needs, 0).coarse_vertices = 0xFFFFFFFFu; }, "a count of the Needs record is past 2^31");
 }
 
 TEST(Pack, TruncatedAtEverySizeIsRefused) {

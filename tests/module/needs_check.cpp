@@ -1,8 +1,9 @@
 // facet::model_needs() keeps its word (issue 49), on real models: each pack loaded into a viewer
 // whose workspace is exactly what model_needs() says.
-//   * At least_workspace_bytes: every part shows at some level of detail: load() takes the
-//     model, no part is left out as a box, no level of detail fails (PassFailed) and no face
-//     either, and the viewer comes to rest.
+//   * At least_workspace_bytes: every face shows at some level of detail (up to 16 times the
+//     default tolerance): load() takes the model, no part is left out as a box, no level of
+//     detail fails (PassFailed) and no face either, every face is meshed (none left wireframe
+//     for want of room), and the viewer comes to rest.
 //   * At workspace_bytes ("room to refine"): the same, and every face reaches the default
 //     level of detail (the first pass's tolerance is the model's default, no face is left
 //     wireframe for want of room).
@@ -12,6 +13,8 @@
 #include "core/format.h"
 #include "facet/viewer.h"
 #include "file_io.h"
+#include "geom/pack.h"
+#include "pack_io.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -45,6 +48,7 @@ Run run_at(const std::vector<uint8_t>& file, size_t workspace_bytes, uint32_t pa
     cfg.display.buffers[0] = buffer.data(), cfg.display.depth[0] = depth.data();
     cfg.display.flush = flush;
     cfg.interface = Interface::Off;
+    cfg.screen_error_px = 0; // every face at the level's tolerance, however small it is on the screen (the most it takes)
     cfg.on_event = [](void* user, const Event& e) {
         auto& l = *static_cast<Log*>(user);
         if ((e.kind == Event::Kind::PassFailed || e.kind == Event::Kind::ModelFailed || e.kind == Event::Kind::FaceFailed) &&
@@ -84,8 +88,10 @@ Run run_at(const std::vector<uint8_t>& file, size_t workspace_bytes, uint32_t pa
     if (!log.failed.empty()) out.why = log.failed;
     else if (m.boxed_parts) out.why = std::to_string(m.boxed_parts) + " of " + std::to_string(m.parts) + " parts left out as boxes";
     else if (out.stats.done == 0) out.why = "no face drawn";
-    else if (refined && out.stats.done + out.stats.deferred < out.stats.faces) {
+    else if (out.stats.done + out.stats.deferred < out.stats.faces) {
         out.why = std::to_string(out.stats.faces - out.stats.done - out.stats.deferred) + " faces not meshed";
+    } else if (refined && !(v->detail() == 1.0f)) {
+        out.why = "the first level " + std::to_string(v->detail()) + " times the default tolerance";
     }
     return out;
 }
@@ -120,9 +126,22 @@ int main(int argc, char** argv) {
         std::memcpy(words.data(), bytes.data(), bytes.size());
         ModelNeeds n;
         if (const Result r = model_needs(words.data(), uint32_t(bytes.size()), n); !r.ok()) {
-            std::printf("FAIL %s: model_needs refused it\n", f.c_str());
+            char text[200];
+            describe(r, text, sizeof text);
+            std::printf("FAIL %s: model_needs refused it: %s\n", f.c_str(), text);
             ++bad;
             continue;
+        }
+        {
+            // (facet-pack measures every pack it writes: a pack without it was sized from estimates)
+            geom::LoadedPack loaded;
+            geom::Pack pack;
+            std::string error;
+            if (!geom::load_pack_bytes(bytes, loaded, error) || !pack.open(loaded.data(), loaded.bytes).ok() || !pack.needs()) {
+                std::printf("FAIL %s: no measure of what it takes on a device (pack::Needs)\n", f.c_str());
+                ++bad;
+                continue;
+            }
         }
         const Run least = run_at(bytes, n.least_workspace_bytes, n.pack_memory_bytes, false);
         const Run room = run_at(bytes, n.workspace_bytes, n.pack_memory_bytes, true);

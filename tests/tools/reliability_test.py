@@ -124,6 +124,18 @@ def degenerate_circle_is_refused():
     expect_exit(run([ARGS.packer, path, '-o', os.path.join(d, 'r0.fpk')]), 1, r'boundary encloses no area', 'radius 0')
 
 
+def edges_a_few_microns_off_pack():
+    """tie_rod written again by Open CASCADE (facet-assembly: an assembly of one copy) keeps its
+    edges' tolerances at 1e-7 mm while edges of 8 of its 70 faces lie 6 um off their surfaces:
+    facet-pack refused those faces (the check that catches a circle of radius 0 allowed 1 um
+    past ten tolerances). The allowance is now a tenth of the default tolerance for the part
+    (1e-4 of its diagonal): it packs whole."""
+    d = work('loose-edges')
+    path = os.path.join(d, 'tie_rod_copy.step')
+    expect_exit(run([ARGS.assembly, path, '--faces', '1', os.path.join(ARGS.models, 'tie_rod.step')]), 0, r'1 distinct cop', 'facet-assembly')
+    expect_exit(run([ARGS.packer, path, '-o', os.path.join(d, 'copy.fpk')]), 0, r' 70 faces \(', "tie_rod's copy")
+
+
 def names_printed_escaped():
     """Issue 49: --check printed a pack's names raw, so an escape sequence or a newline in a
     part's name reached the terminal. Now control characters print as \\xNN."""
@@ -406,6 +418,7 @@ def screenshot_names_stay_in_the_folder():
 
 
 TESTS = [broken_step_files, malformed_step_is_refused_not_crashed, names_printed_escaped, lost_faces_fail_whole_or_blocked, degenerate_circle_is_refused,
+         edges_a_few_microns_off_pack,
          mesh_of_a_directory, check_of_a_directory_or_a_device, writes_onto_a_full_disk, face_with_a_missing_surface,
          tolerance_must_be_a_positive_number, output_is_the_input, trailing_bytes_and_reserved_fields,
          coarse_and_fine_tolerances, lens_faces_at_coarse_tolerances, incomplete_mesh_exits_5, ndr_part01_reads,
@@ -420,6 +433,7 @@ def main():
     ap.add_argument('--packer', required=True)
     ap.add_argument('--mesher', required=True)
     ap.add_argument('--stress', required=True)
+    ap.add_argument('--assembly', required=True, help='tools/assembly (facet-assembly)')
     ap.add_argument('--models', required=True)
     ap.add_argument('--work', required=True)
     ap.add_argument('--budgets', required=True, help='tools/budgets.py')

@@ -144,6 +144,40 @@ TEST(Viewer, LevelsOfDetailRetessellateWithinTheirLimits) {
     EXPECT_NEAR(app.v->stats().tolerance_mm, t0 / 8, t0 * 1e-6f) << "no finer than an eighth";
 }
 
+TEST(Viewer, AFirstLevelWhoseEdgesDoNotFitGoesCoarserUpToSixteenTimes) {
+    // The disc's circle takes 48 samples at the default level: in a pool of 30 the first level
+    // takes twice the tolerance (and again while short), shows the face and says each level it
+    // tried; in a pool that holds no level up to 16 times the tolerance, the pass fails and
+    // nothing is shown, as before.
+    App app;
+    app.capacity.samples = 30;
+    ASSERT_TRUE(app.create().ok());
+    ASSERT_TRUE(app.load(disc()).ok());
+    app.run();
+    EXPECT_EQ(app.count(Event::Kind::PassFailed), 0) << (app.last(Event::Kind::PassFailed) ? text(app.last(Event::Kind::PassFailed)->why) : "");
+    EXPECT_EQ(app.v->stats().done, 1u);
+    const float detail = app.v->detail();
+    EXPECT_GT(detail, 1.0f);
+    EXPECT_LE(detail, 16.0f);
+    EXPECT_EQ(detail, std::exp2(std::round(std::log2(detail)))) << "a power of two of the default";
+    EXPECT_GE(app.count(Event::Kind::Pass), 2);
+    EXPECT_EQ(app.last(Event::Kind::Pass)->pass.tolerance_mm, app.v->stats().tolerance_mm);
+    EXPECT_LE(app.last(Event::Kind::Sampled)->pass.samples, 30u);
+    App none;
+    none.capacity.samples = 10; // (the plan's least for four edges; 16 times the tolerance takes more)
+    ASSERT_TRUE(none.create().ok());
+    ASSERT_TRUE(none.load(disc()).ok());
+    none.run();
+    EXPECT_EQ(none.count(Event::Kind::PassFailed), 1);
+    EXPECT_EQ(none.v->stats().done, 0u);
+    // A finer level later that does not fit goes back to the one shown (not coarser).
+    app.v->key(']');
+    app.run();
+    EXPECT_EQ(app.count(Event::Kind::PassFailed), 1);
+    EXPECT_EQ(app.v->detail(), detail);
+    EXPECT_EQ(app.v->stats().done, 1u);
+}
+
 TEST(Viewer, ALevelOfDetailWhoseEdgesDoNotFitGoesBackToThePreviousOne) {
     // The pool of edge samples holds the disc's circle at the default level of detail (48
     // samples) but not at a finer one (64): that pass fails and says why, the previous level's

@@ -147,8 +147,9 @@ inline Bytes tube() {
 // A grid of `count` unit squares `pitch` mm apart (their corners) in z = 0, `columns` a row, one
 // face each (their own four edges), in one shell, placed once at each offset (mm).
 inline Bytes squares(uint32_t count, uint32_t columns = 100, std::initializer_list<std::array<float, 3>> offsets = {{0, 0, 0}},
-                     float pitch = 2) {
+                     float pitch = 2, const pack::Needs* needs = nullptr) {
     PackWriter w;
+    if (needs) w.set_needs(*needs);
     const uint32_t plane = w.add_surface(pack::SurfaceType::Plane, {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1});
     for (uint32_t i = 0; i < count; ++i) {
         const float x = pitch * float(i % columns), y = pitch * float(i / columns);

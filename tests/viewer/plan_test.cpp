@@ -5,6 +5,7 @@
 // Given no pack memory, a compressed pack is decoded at the workspace's end, and a file the
 // board loaded into the workspace is decoded where it lies.
 #include "app.h"
+#include "assembly.h"
 
 #include <vector>
 
@@ -68,6 +69,45 @@ TEST(Plan, AModelOverTheOldCapacitiesOpensInTheWorkspaceItNeeds) {
     // A model that fits loads after the refusal.
     r = short_of.load(polygon_and_triangle(12));
     EXPECT_TRUE(r.ok()) << text(r);
+}
+
+// A pack that carries what the packer measured (pack::Needs): model_needs() sizes the
+// workspace from it, alike from a plain, an LZMA, a deflated and a blocked file, the least from
+// the coarse level and the roomy one from the default; without it, from estimates.
+TEST(Plan, ThePacksMeasureSizesTheWorkspaceInEveryForm) {
+    constexpr uint32_t kFaces = 400;
+    const pack::Needs measured{90000, 120000, 60000, 20000, 30000, 15000};
+    const Bytes plain = squares(kFaces, 20, {{0, 0, 0}}, 2, &measured);
+    ModelNeeds estimated{};
+    const Aligned without(squares(kFaces, 20, {{0, 0, 0}}, 2));
+    ASSERT_TRUE(model_needs(without.data(), without.bytes, estimated).ok());
+    ModelNeeds first{};
+    const Bytes forms[] = {plain, geom::lzma_pack(plain), deflate_pack(plain), blocked(plain, geom::BlockStore::Deflated)};
+    for (const Bytes& form : forms) {
+        const Aligned file(form);
+        ModelNeeds needs{};
+        const Result r = model_needs(file.data(), file.bytes, needs);
+        ASSERT_TRUE(r.ok()) << text(r);
+        EXPECT_EQ(needs.faces, kFaces);
+        if (&form == &forms[0]) {
+            first = needs;
+            // Each level's samples, the most of its three shares here (90,000 and 20,000 of
+            // FACET_BYTES_PER_SAMPLE in the 30% of the room the samples take, each with its
+            // margin of 1/64 and 16), beside the base and the faces' and edges' arrays.
+            const size_t model = FACET_WORKSPACE_BASE_BYTES + kFaces * FACET_BYTES_PER_FACE + 4 * kFaces * FACET_BYTES_PER_EDGE;
+            const size_t roomy = model + size_t(90000 + 90000 / 64 + 16) * FACET_BYTES_PER_SAMPLE * 100 / 30;
+            EXPECT_GE(needs.workspace_bytes, roomy - 64);
+            EXPECT_LT(needs.workspace_bytes, roomy + 1024);
+            const size_t least = model + size_t(20000 + 20000 / 64 + 16) * FACET_BYTES_PER_SAMPLE * 100 / 30;
+            EXPECT_GE(needs.least_workspace_bytes, least - 64);
+            EXPECT_LT(needs.least_workspace_bytes, least + 1024);
+            EXPECT_LT(needs.least_workspace_bytes, needs.workspace_bytes);
+            EXPECT_GT(needs.workspace_bytes, estimated.workspace_bytes) << "the measure, not the estimate";
+        } else {
+            EXPECT_EQ(needs.least_workspace_bytes, first.least_workspace_bytes);
+            EXPECT_EQ(needs.workspace_bytes, first.workspace_bytes);
+        }
+    }
 }
 
 TEST(Plan, WithoutPackMemoryTheWorkspaceEndHoldsTheDecodedPack) {

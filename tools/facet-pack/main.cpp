@@ -30,6 +30,8 @@
 #include "pack_blocks.h"
 #include "pack_io.h"
 #include "geom/pack_index.h"
+#include "facet/viewer.h"
+#include "needs.h"
 #include "pack_writer.h"
 #include "printable.h"
 #include "step_reader.h"
@@ -55,6 +57,7 @@
 #include <XSControl_WorkSession.hxx>
 
 #include <algorithm>
+#include <cmath>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -131,14 +134,37 @@ int library(int argc, char** argv) {
     return 0;
 }
 
+// What the model takes on a device: the packer's measure (pack::Needs) and the workspace
+// facet::model_needs() says from it.
+void print_device_needs(const std::vector<uint8_t>& bytes, const geom::Pack& pack) {
+    if (const pack::Needs* n = pack.needs()) {
+        const float* lo = pack.header().bbox_min, *hi = pack.header().bbox_max;
+        const float diagonal = std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) + (hi[2] - lo[2]) * (hi[2] - lo[2]));
+        std::printf("  on a device: at 0.1%% of the diagonal (%.4g mm), %u edge samples, %u mesh vertices, %u triangles; at %g times it, %u, %u, %u\n",
+                    1e-3f * diagonal, n->samples, n->mesh_vertices, n->mesh_triangles, pack::kCoarsestFirst, n->coarse_samples,
+                    n->coarse_vertices, n->coarse_triangles);
+    } else {
+        std::printf("  on a device: not measured (a pack of an older facet-pack): the workspace is estimated\n");
+    }
+    std::vector<uint64_t> words(bytes.size() / 8 + 1);
+    std::memcpy(words.data(), bytes.data(), bytes.size());
+    ModelNeeds needs;
+    if (const Result r = model_needs(words.data(), uint32_t(bytes.size()), needs); !r.ok()) {
+        char text[160];
+        describe(r, text, sizeof text);
+        std::printf("  facet::model_needs refuses it: %s\n", text);
+        return;
+    }
+    std::printf("  workspace: %zu bytes for the default detail, %zu at least; pack memory %u bytes\n", needs.workspace_bytes,
+                needs.least_workspace_bytes, needs.pack_memory_bytes);
+}
+
 int check(const char* path) {
     geom::LoadedPack file;
     std::string error;
-    {
-        std::vector<uint8_t> bytes;
-        if (!host::read_file(path, pack::kMaxBlockedBytes, bytes, error)) return die(error);
-        if (geom::is_library(bytes.data(), uint32_t(bytes.size()))) return check_library(path, bytes);
-    }
+    std::vector<uint8_t> bytes;
+    if (!host::read_file(path, pack::kMaxBlockedBytes, bytes, error)) return die(error);
+    if (geom::is_library(bytes.data(), uint32_t(bytes.size()))) return check_library(path, bytes);
     if (!geom::load_pack_file(path, file, error)) return die(error);
     geom::Pack pack;
     if (const Result r = pack.open(file.data(), file.bytes); !r.ok()) {
@@ -152,6 +178,7 @@ int check(const char* path) {
         std::printf(" (%s file: %u bytes)", file.kind == geom::PackFileKind::Lzma ? "LZMA" : "deflated", file.file_bytes);
     }
     std::printf("\n  model \"%s\"\n", packer::printable(pack.model_name()).c_str());
+    print_device_needs(bytes, pack);
     // The parts list the viewer shows: each instance, its part's name and its own.
     for (uint32_t i = 0; i < pack.instances().size(); ++i) {
         const uint32_t s = pack.instances()[i].shell;
@@ -274,8 +301,17 @@ int main(int argc, char** argv) {
         if (!partial) return die(std::string(in) + ": " + why + "\n  --partial packs the faces that could be");
         std::fprintf(stderr, "facet-pack: warning: %s: %s\n", in, why.c_str());
     }
+    std::vector<uint8_t> pack = writer.finish();
+    {
+        // What it takes on a device, measured with the module's own code (facet::model_needs()
+        // reads it from the pack's head).
+        if (!quiet) packer::progress("measuring what the model takes on a device");
+        pack::Needs needs;
+        if (!packer::measure_needs(pack, needs, error)) return die(std::string(in) + ": " + error);
+        writer.set_needs(needs);
+        pack = writer.finish();
+    }
     if (!quiet) packer::progress(plain ? "writing" : "compressing");
-    const std::vector<uint8_t> pack = writer.finish();
     if (!plain && !deflated && !lzma) deflated = pack.size() > kLzmaUpTo; // a large model: decoded faster
     std::vector<uint8_t> bytes;
     uint32_t blocks = 0;

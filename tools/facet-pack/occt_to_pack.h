@@ -1,5 +1,6 @@
 #pragma once
-// Open CASCADE shapes to pack records: surfaces, curves, pcurves, topology, colours.
+// Open CASCADE shapes to pack records: topology, colours and placements (the surfaces, curves
+// and pcurves: occt_geometry.h).
 #include "pack_blocks.h"
 #include "pack_writer.h"
 

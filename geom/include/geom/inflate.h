@@ -8,7 +8,8 @@
 // No heap and no window of its own (the output is the history); about 2 KB of stack.
 // Every read, length and distance is checked: a corrupt or truncated stream, or one that
 // does not fit the output, gets Status::Corrupt (or Full) and a reason, never a write outside
-// `out`.
+// `out`. On Full, `written` says how much of `out` the stream's start filled (a pack's head is
+// read so: geom::stored_pack_counts()); on Corrupt, 0.
 #include "core/status.h"
 
 #include <cstdint>

@@ -44,6 +44,8 @@ public:
     const char* instance_name(uint32_t i) const { return name_at(instance_names_, i); }
     // Whether edge e's two faces meet tangentially (SmoothEdges; false when the pack says nothing).
     bool smooth_edge(uint32_t e) const { return e / 32 < smooth_.size() && (smooth_[e / 32] >> (e % 32)) & 1u; }
+    // What the model takes on a device (Needs), measured by the packer; null when the pack says nothing.
+    const pack::Needs* needs() const { return needs_.empty() ? nullptr : needs_.data(); }
 
     // The pcurve of coedge c (one of face F's) on F's surface; kNoIndex if F has none.
     uint32_t pcurve_of(const pack::Face& F, uint32_t c) const {
@@ -78,6 +80,7 @@ private:
     std::span<const char> names_;
     std::span<const uint32_t> shell_names_, instance_names_;
     std::span<const uint32_t> smooth_;
+    std::span<const pack::Needs> needs_;
 };
 
 // Expected parameter count of a surface or curve from its head (B-splines) or type; 0 if the

@@ -64,11 +64,13 @@ private:
 // The decoded size of a stored pack as its head says (plain: its total), 0 when unreadable.
 uint32_t stored_pack_bytes(const void* data, uint32_t available);
 
-// The counts of a whole pack's records, from its head and section table alone (an LZMA
-// file's first few hundred bytes decoded with `probs`; a deflated one is refused: Unsupported).
+// The counts of a whole pack's records and its Needs, from its head and section table alone (a
+// compressed file's first few hundred bytes decoded, an LZMA one's with `probs`).
 // Not validated: the pack's own open() checks them when it is read.
 struct PackCounts {
     uint32_t faces = 0, edges = 0, shells = 0;
+    bool has_needs = false; // the pack's Needs record (written in its head by the packer)
+    pack::Needs needs{};
 };
 Result stored_pack_counts(const void* data, uint32_t available, PackCounts& out, LzmaProbs& probs);
 

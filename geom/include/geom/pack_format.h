@@ -11,6 +11,7 @@
 // DeflatedHead and a raw DEFLATE stream): geom/pack_file.h turns any form into a pack ready to
 // read in place.
 #include <cstdint>
+#include <initializer_list>
 
 namespace facet::pack {
 
@@ -18,7 +19,7 @@ constexpr char kMagic[4] = {'F', 'P', 'K', '1'};
 constexpr uint16_t kVersion = 3;
 constexpr uint32_t kNoIndex = 0xFFFFFFFFu;
 constexpr uint32_t kStraight = 0xFFFFFFFEu; // Edge::curve of a straight edge (no curve record)
-constexpr uint32_t kMaxSections = 16;
+constexpr uint32_t kMaxSections = 32;
 constexpr uint32_t kMaxBytes = 64u << 20; // a pack larger than this is refused as corrupt
 constexpr float kMaxMagnitude = 1e8f;     // every float of a pack lies within +-this
 
@@ -66,10 +67,32 @@ enum class SectionId : uint32_t {
     // edges hidden"). Written only when some edge is smooth; its count is the words the edges
     // need.
     SmoothEdges = 16,
+    // Needs (optional, one record): what the model takes on a device (pack::Needs), measured
+    // by the packer. Written first after the table, so that its record lies in the pack's head
+    // (facet::model_needs() reads it without decoding the rest). 17 is the index's Parts.
+    Needs = 18,
 };
 constexpr float kSmoothAngle = 0.0174533f; // rad (1 degree)
 constexpr uint32_t smooth_words(uint32_t edges) { return (edges + 31) / 32; }
 constexpr uint32_t kMaxNameBytes = 255; // a longer name is cut (on a UTF-8 boundary) by the packer
+
+// What a model takes on the device, measured by the packer with the device's own code: the edge
+// samples and the mesh at the model's default level of detail (0.1% of its box's diagonal, as
+// the viewer takes it from the header's box), and at kCoarsestFirst times its tolerance, the
+// coarsest first level a viewer short of room takes. facet::model_needs() sizes the workspace
+// from it (a pack without it: from estimates).
+struct Needs {
+    uint32_t samples, mesh_vertices, mesh_triangles;             // at the default level
+    uint32_t coarse_samples, coarse_vertices, coarse_triangles; // at kCoarsestFirst times its tolerance
+};
+static_assert(sizeof(Needs) == 24, "pack::Needs is 6 words");
+constexpr float kCoarsestFirst = 16.0f;
+// Why a Needs record cannot be what a packer measured (null: it can): a count past 2^31.
+inline const char* needs_problem(const Needs& n) {
+    for (uint32_t c : {n.samples, n.mesh_vertices, n.mesh_triangles, n.coarse_samples, n.coarse_vertices, n.coarse_triangles})
+        if (c > 0x80000000u) return "a count of the Needs record is past 2^31";
+    return nullptr;
+}
 
 struct SectionEntry {
     uint32_t id;           // SectionId
@@ -357,6 +380,7 @@ enum class IndexSectionId : uint32_t {
     InstanceNames = uint32_t(SectionId::InstanceNames),
     Blocks = 16,
     Parts = 17,
+    Needs = uint32_t(SectionId::Needs), // (optional) the whole model's
 };
 
 struct Block {

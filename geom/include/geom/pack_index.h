@@ -28,6 +28,8 @@ public:
     std::span<const pack::Block> blocks() const { return blocks_; }
     std::span<const pack::Part> parts() const { return parts_; }
     std::span<const pack::Instance> instances() const { return instances_; }
+    // What the whole model takes on a device (pack::Needs); null when the index says nothing.
+    const pack::Needs* needs() const { return needs_.empty() ? nullptr : needs_.data(); }
     // Block b as stored: an LZMA file or a plain pack (geom/pack_file.h reads either).
     std::span<const uint8_t> block_file(uint32_t b) const {
         return {base_ + blocks_[b].offset, blocks_[b].stored_bytes};
@@ -54,6 +56,7 @@ private:
     std::span<const pack::Instance> instances_;
     std::span<const char> names_;
     std::span<const uint32_t> part_names_, instance_names_;
+    std::span<const pack::Needs> needs_;
 };
 
 // The place of record `index` of index section `id` ("index section Parts record" 3).

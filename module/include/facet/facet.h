@@ -138,8 +138,9 @@ typedef struct {
 void facet_config_init(facet_config *config);
 size_t facet_workspace_bytes(const facet_capacity *capacity);
 uint32_t facet_pack_memory_bytes(const void *file, uint32_t file_bytes);
-/* What a pack needs (facet::model_needs: its counts, pack memory, the least workspace that
- * opens it and one with room to refine), from its head or index alone. */
+/* What a pack needs (facet::model_needs: its counts, pack memory, the least workspace in which
+ * every face shows, at up to 16 times the default tolerance, and one in which every face shows at
+ * the default detail), from its head or index alone. */
 typedef struct {
     uint32_t faces, edges, parts, pack_memory_bytes;
     size_t least_workspace_bytes, workspace_bytes;

@@ -20,8 +20,11 @@ struct Capacity {
 };
 
 // What a pack needs (from its head or index alone): counts, pack memory (from the workspace's end
-// when load() is given none), the least workspace that opens it (faces the mesh has no room for
-// stay wireframe; less: Full, bytes needed) and one with room to refine the default detail.
+// when load() is given none), the least workspace in which every face shows (meshed at up to 16
+// times the default tolerance: a first level short of room goes coarser) and one in which every
+// face shows at the default detail. From what the packer measured with the module's own code
+// (the pack's Needs section); a pack without it is sized from estimates. Below the least, faces
+// the mesh has no room for stay wireframe; below what the model's edges take, load() says Full.
 struct ModelNeeds {
     uint32_t faces, edges, parts, pack_memory_bytes;
     size_t least_workspace_bytes, workspace_bytes;
