@@ -189,12 +189,11 @@ inline Bytes sphere() {
 }
 inline double sphere_volume() { return 4.0 / 3.0 * M_PI * kSphereRadius * kSphereRadius * kSphereRadius; }
 
-// A torus about z, major radius 30, minor 10: one face bounded by its two seams (the tube's
-// circle at u = 0, the outer equator at v = 0), each used twice. Closed.
+// A torus about z, major radius 30, minor 10 unless told: one face bounded by its two seams
+// (the tube's circle at u = 0, the outer equator at v = 0), each used twice. Closed.
 constexpr float kTorusMajor = 30, kTorusMinor = 10;
-inline Bytes torus() {
+inline Bytes torus(float R = kTorusMajor, float r = kTorusMinor) {
     PackWriter w;
-    const float R = kTorusMajor, r = kTorusMinor;
     const uint32_t s = w.add_surface(pack::SurfaceType::Torus, {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, R, r});
     const uint32_t v = w.add_vertex(R + r, 0, 0);
     const uint32_t tube = w.add_curve(pack::CurveType::Circle, 3, {R, 0, 0, 1, 0, 0, 0, 0, 1, r});       // u = 0, t = v
@@ -211,7 +210,7 @@ inline Bytes torus() {
     w.add_instance({w.add_shell({face, 1, pack::kNoIndex, 1}), {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0}});
     return w.finish();
 }
-inline double torus_volume() { return 2.0 * M_PI * M_PI * kTorusMajor * kTorusMinor * kTorusMinor; }
+inline double torus_volume(double R = kTorusMajor, double r = kTorusMinor) { return 2.0 * M_PI * M_PI * R * r * r; }
 
 // A trimmed B-spline sheet: S(u, v) = (100 u, 100 v, 40 v (1 - v)) mm over [0,1]^2 (degree 1 in
 // u, 2 in v: a bent plate, curvature 0.008/mm), trimmed to a quadrilateral inside its

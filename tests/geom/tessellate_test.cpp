@@ -206,6 +206,31 @@ TEST_P(Tessellation, ShapesAreWatertightWithinToleranceAndSized) {
 
 INSTANTIATE_TEST_SUITE_P(AtThreeTolerances, Tessellation, ::testing::Values(0.5f, 0.1f, 0.02f));
 
+// Thin tori (a fillet's tube) from a tenth of a millimetre to past their tube's radius: few
+// triangles across the tube at the coarser tolerances, where the deviation over a triangle is
+// far from the cubic that refinement models on free-form surfaces (a side's sag across the
+// tube is a quartic, or the peak is inside): every triangle within the tolerance, measured on
+// a grid of twelfths. (Before refinement measured tori on its grid of sixths, these reached
+// 1.10 to 1.16 times the tolerance.)
+TEST(Tessellation, ThinToriAtCoarseTolerancesStayWithinThem) {
+    for (auto [major, minor] : {std::pair{6.0f, 2.0f}, std::pair{12.0f, 1.0f}}) {
+        OpenedPack opened;
+        ASSERT_TRUE(opened.open(torus(major, minor)));
+        for (float tol = 0.1f; tol < 3.0f; tol *= 1.13f) {
+            SCOPED_TRACE("tube " + std::to_string(minor) + " mm about " + std::to_string(major) + " mm at " + std::to_string(tol) + " mm");
+            Tessellated m;
+            ASSERT_EQ(tessellate(opened.pack, tol, 0, m), "");
+            float worst = 0;
+            for (uint32_t t = 0; t < m.face_of.size(); ++t) {
+                const Vec3 p[3] = {corner(m, t, 0), corner(m, t, 1), corner(m, t, 2)};
+                const Vec2 uv[3] = {m.uv[m.indices[3 * t]], m.uv[m.indices[3 * t + 1]], m.uv[m.indices[3 * t + 2]]};
+                worst = std::max(worst, triangle_deviation(opened.pack, m.face_of[t], p, uv, 12));
+            }
+            EXPECT_LE(worst, tol * 1.001f + 1e-5f) << "the measured deviation";
+        }
+    }
+}
+
 // Loops the CDT's grid cannot keep apart (geom/src/tangles.cpp), at every tolerance: the sheet
 // whose side hooks back across its top drops the hook as slivers (the face is not lost), the
 // plate whose holes are 0.1 micron apart stitches its two holes' loops where they touch in the
