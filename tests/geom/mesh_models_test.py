@@ -38,8 +38,8 @@ GOLDEN = {
     'screw.step': 328,
     'mic6_bed.step': 316,
     'sg1_c5_214.stp': 544,
-    'io1_cm_214.stp': 1324,
-    'anc101.stp': 1596,
+    'io1_cm_214.stp': 1328,
+    'anc101.stp': 1604,
 }
 
 

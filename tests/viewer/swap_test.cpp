@@ -44,8 +44,10 @@ Model twelve_parts() {
     return m;
 }
 
-// Part s's box centre on the screen (pixels) in its first instance; false when off it.
-bool on_screen(const App& app, uint32_t s, int32_t& x, int32_t& y) {
+// Part s's box centre on the screen (pixels) in its first instance, and how far across the
+// screen its box's corners reach (pixels, the larger of width and height; corners behind the
+// eye left out); false when the centre is off the screen.
+bool on_screen(const App& app, uint32_t s, int32_t& x, int32_t& y, int32_t& across) {
     const Core& core = *static_cast<const Core*>(app.v);
     const module::Scene& scene = core.scene();
     int32_t lo[3], hi[3];
@@ -59,24 +61,40 @@ bool on_screen(const App& app, uint32_t s, int32_t& x, int32_t& y) {
         t.project(centre, p);
         if (p.out) return false;
         x = render::subpixel::pixel_of(p.s.x), y = render::subpixel::pixel_of(p.s.y);
+        int32_t x0 = x, x1 = x, y0 = y, y1 = y;
+        for (int c = 0; c < 8; ++c) {
+            const int32_t corner[3] = {(c & 1) ? hi[0] : lo[0], (c & 2) ? hi[1] : lo[1], (c & 4) ? hi[2] : lo[2]};
+            module::Projected q;
+            t.project(corner, q);
+            if (q.out & module::kOutNear) continue;
+            const int32_t qx = render::subpixel::pixel_of(q.s.x), qy = render::subpixel::pixel_of(q.s.y);
+            x0 = std::min(x0, qx), x1 = std::max(x1, qx), y0 = std::min(y0, qy), y1 = std::max(y1, qy);
+        }
+        across = std::max(x1 - x0, y1 - y0);
         return true;
     }
     return false;
 }
 
 // The view brought onto part s and zoomed in (a drag with the second button, the wheel) until
-// its block is in and its faces done, or the tries run out.
+// its block is in, its faces done and its box spans the view or the wheel brings it no nearer
+// (the others have left the view, so the full mesh has room for its faces); or the tries run out.
 bool zoom_into(App& app, uint32_t s) {
     const Core& core = *static_cast<const Core*>(app.v);
     const module::Scene& scene = core.scene();
-    int in_steps = 0;
     float gain = 1; // pixels the part moves for a pixel dragged (more as the view nears it)
+    int32_t last_across = -1;
+    bool wheeled = false; // the last step was a turn of the wheel
     for (int k = 0; k < 60; ++k) {
-        int32_t x = 0, y = 0;
-        if (!on_screen(app, s, x, y)) return false;
+        int32_t x = 0, y = 0, across = 0;
+        if (!on_screen(app, s, x, y, across)) return false;
         const int32_t ox = app.w / 2 - x, oy = app.h / 2 - y;
         const int32_t dx = std::clamp<int32_t>(int32_t(float(ox) / gain), -40, 40), dy = std::clamp<int32_t>(int32_t(float(oy) / gain), -40, 40);
         const bool centred = std::abs(ox) < 8 && std::abs(oy) < 8;
+        // Near: across the view, or as near as the wheel goes (its last turn brought it no nearer).
+        const bool near = across >= std::min(app.w, app.h) || (wheeled && across <= last_across);
+        last_across = across;
+        if (centred && near && !scene.part_left_out(s) && whole(scene, s)) return true;
         if (!centred) {
             app.v->pointer(0, 0, 2);
             app.v->pointer(int16_t(dx), int16_t(dy), 2);
@@ -84,12 +102,10 @@ bool zoom_into(App& app, uint32_t s) {
         } else {
             app.v->wheel(1);
         }
+        wheeled = centred;
         app.run();
-        // In, and five zoom steps nearer (faces the full mesh left to their edges come in as
-        // the view leaves the others).
-        if (!scene.part_left_out(s) && whole(scene, s) && centred && ++in_steps > 5) return true;
-        int32_t nx = 0, ny = 0;
-        if ((dx || dy) && on_screen(app, s, nx, ny) && std::abs(dx) + std::abs(dy) > 0) {
+        int32_t nx = 0, ny = 0, unused = 0;
+        if ((dx || dy) && on_screen(app, s, nx, ny, unused) && std::abs(dx) + std::abs(dy) > 0) {
             const float moved = float(std::abs(nx - x) + std::abs(ny - y)), dragged = float(std::abs(dx) + std::abs(dy));
             if (moved > 0) gain = moved / dragged;
         }
@@ -291,9 +307,10 @@ TEST(Swap, AFacePickedInABlockLeftOutIsForgotten) {
     ASSERT_FALSE(left.empty());
     // Taps about a held part's box centre until one picks a face of it (a torus's centre is its hole).
     uint32_t picked = ~0u;
+    int32_t across = 0; // (how far each reaches: not needed here)
     for (uint32_t p : held) {
         int32_t x = 0, y = 0;
-        if (!on_screen(app, p, x, y)) continue;
+        if (!on_screen(app, p, x, y, across)) continue;
         for (int k = 0; k < 49 && picked == ~0u; ++k) {
             const int16_t tx = int16_t(x + 3 * (k % 7 - 3)), ty = int16_t(y + 3 * (k / 7 - 3));
             app.v->touch(0, 2, int16_t(app.h - 3), true); // (elsewhere first: two taps on one spot frame the face)
@@ -311,12 +328,12 @@ TEST(Swap, AFacePickedInABlockLeftOutIsForgotten) {
     ASSERT_GT(app.v->measurement(lines), 0u) << "the picked face described";
     // Into the part left out farthest from it on the screen, until the picked one is left out too.
     int32_t px = 0, py = 0;
-    ASSERT_TRUE(on_screen(app, picked, px, py));
+    ASSERT_TRUE(on_screen(app, picked, px, py, across));
     uint32_t target = left[0];
     float far = -1;
     for (uint32_t p : left) {
         int32_t x = 0, y = 0;
-        if (!on_screen(app, p, x, y)) continue;
+        if (!on_screen(app, p, x, y, across)) continue;
         const float d = std::hypot(float(x - px), float(y - py));
         if (d > far) far = d, target = p;
     }
