@@ -21,6 +21,7 @@ import concurrent.futures as cf
 import os
 import random
 import re
+import shutil
 import subprocess
 import sys
 import time
@@ -93,13 +94,14 @@ def one(args, run, texts):
     rng = random.Random(args.seed * 1_000_003 + run)
     name = rng.choice(sorted(texts))
     text, what = mutate(texts[name], rng)
-    d = os.path.join(args.out, 'work', str(run % (4 * args.jobs)))
-    os.makedirs(d, exist_ok=True)
+    # A folder of the run's own: runs that share one (a slow run and a later one) would see
+    # each other's packs.
+    d = os.path.join(args.out, 'work', str(run))
+    shutil.rmtree(d, ignore_errors=True)
+    os.makedirs(d)
     step, fpk = os.path.join(d, 'in.stp'), os.path.join(d, 'out.fpk')
     with open(step, 'w', encoding='latin-1') as f:
         f.write(text)
-    if os.path.exists(fpk):
-        os.unlink(fpk)
     problem = None
     try:
         p = subprocess.run([args.packer, step, '-o', fpk, '--quiet'], capture_output=True, text=True, timeout=args.timeout)
@@ -113,6 +115,7 @@ def one(args, run, texts):
                 problem = f'exit 0 with a pack --check refuses: {c.stderr.strip()[-300:]}'
     except subprocess.TimeoutExpired:
         problem = f'no end within {args.timeout} s'
+    shutil.rmtree(d, ignore_errors=True)
     if problem:
         keep = os.path.join(args.out, f'finding-{run}.stp')
         with open(keep, 'w', encoding='latin-1') as f:

@@ -74,13 +74,17 @@ def broken_step_files():
     expect_exit(run([ARGS.mesher, os.path.join(d, 'cut.step')]), 1, r'cut\.step: ', 'facet-mesh of a STEP file')
 
 
-def ftc11_changed(d, name, old, new):
-    """nist_ftc_11 with one piece of its text replaced (the finding's malformed file)."""
-    text = open(os.path.join(ARGS.models, 'nist_ftc_11.stp'), encoding='latin-1').read()
-    expect(old in text, f'{old!r} is in nist_ftc_11.stp')
+def model_changed(model, d, name, old, new):
+    """A shared model with one piece of its text replaced (the finding's malformed file)."""
+    text = open(os.path.join(ARGS.models, model), encoding='latin-1').read()
+    expect(old in text, f'{old!r} is in {model}')
     path = os.path.join(d, name)
     open(path, 'w', encoding='latin-1').write(text.replace(old, new, 1))
     return path
+
+
+def ftc11_changed(d, name, old, new):
+    return model_changed('nist_ftc_11.stp', d, name, old, new)
 
 
 def malformed_step_is_refused_not_crashed():
@@ -98,6 +102,28 @@ def malformed_step_is_refused_not_crashed():
         r = run([ARGS.packer, ftc11_changed(d, name, old, new), '-o', out], timeout=60)
         expect_exit(r, 1, needle, name)
         expect(r.returncode != 139 and not os.path.exists(out), f'{name}: a crash, or a pack written')
+
+
+def open_cascade_throwing_is_reported():
+    """Found by the STEP fuzz target: a colour component of -2147483649 made Open CASCADE's
+    reader throw Standard_OutOfRange from its transfer, a circle placed by a product category
+    made it throw Standard_ConstructionError while facet-pack bounded the sheets it was
+    closing; neither was caught, and facet-pack died of SIGABRT (exit -6). Now the colours are
+    read again without them (lost: exit 1 unless --partial), the sheets stay open, and what
+    throws anywhere else is reported with its reason (exit 1, nothing written)."""
+    d = work('occt-throws')
+    out = os.path.join(d, 'out.fpk')
+    colour = ftc11_changed(d, 'colour.stp', "#190=COLOUR_RGB('Default(1)',0.749019622802734,",
+                           "#190=COLOUR_RGB('Default(1)',-2147483649,")
+    expect_exit(run([ARGS.packer, colour, '-o', out], timeout=60), 1, r"the file's colours: Standard_OutOfRange", 'a colour out of range')
+    expect(not os.path.exists(out), 'a colour out of range: a pack written without --partial')
+    expect_exit(run([ARGS.packer, colour, '-o', out, '--partial'], timeout=60), 0, r'6 faces', 'a colour out of range, --partial')
+    expect_exit(run([ARGS.packer, '--check', out]), 0, r'valid pack, 6 faces', '--check of the pack without colours')
+    os.remove(out)
+    circle = model_changed('ndr_pivot_pin.stp', d, 'circle.stp', "#95=CIRCLE('ELLIPSE4',#94,", "#95=CIRCLE('ELLIPSE4',#149,")
+    r = run([ARGS.packer, circle, '-o', out], timeout=60)
+    expect_exit(r, 1, r'#95 CIRCLE: +Make Geom_Curve \(3D\) failed', 'a circle without a placement')
+    expect(not os.path.exists(out), 'a circle without a placement: a pack written')
 
 
 def lost_faces_fail_whole_or_blocked():
@@ -418,7 +444,7 @@ def screenshot_names_stay_in_the_folder():
 
 
 TESTS = [broken_step_files, malformed_step_is_refused_not_crashed, names_printed_escaped, lost_faces_fail_whole_or_blocked, degenerate_circle_is_refused,
-         edges_a_few_microns_off_pack,
+         edges_a_few_microns_off_pack, open_cascade_throwing_is_reported,
          mesh_of_a_directory, check_of_a_directory_or_a_device, writes_onto_a_full_disk, face_with_a_missing_surface,
          tolerance_must_be_a_positive_number, output_is_the_input, trailing_bytes_and_reserved_fields,
          coarse_and_fine_tolerances, lens_faces_at_coarse_tolerances, incomplete_mesh_exits_5, ndr_part01_reads,

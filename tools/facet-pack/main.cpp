@@ -189,9 +189,7 @@ int check(const char* path) {
     return 0;
 }
 
-} // namespace
-
-int main(int argc, char** argv) {
+int run(int argc, char** argv) {
     const char *in = nullptr, *out = nullptr, *reference = nullptr;
     bool quiet = false, plain = false, deflated = false, lzma = false, partial = false, whole = false;
     packer::UnitGuess unit = packer::UnitGuess::BySize;
@@ -380,4 +378,22 @@ int main(int argc, char** argv) {
                     model.open_solids);
     }
     return 0;
+}
+
+} // namespace
+
+// Open CASCADE throws where a broken file leads its reader or its healing astray (an index past
+// a list's end, a curve it cannot build): most of it is caught part by part, and what escapes
+// ends here, with its reason and nothing written (the pack is written last).
+int main(int argc, char** argv) {
+    try {
+        return run(argc, argv);
+    } catch (const Standard_Failure& f) {
+        return die(std::string("Open CASCADE failed on the file (") + f.DynamicType()->Name() + ": " +
+                   packer::printable(f.GetMessageString()) + "); nothing written");
+    } catch (const std::bad_alloc&) {
+        return die("out of memory");
+    } catch (const std::exception& e) {
+        return die(std::string("failed: ") + e.what());
+    }
 }

@@ -61,6 +61,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <optional>
 #include <unordered_set>
 
 namespace facet::packer {
@@ -196,10 +197,10 @@ size_t close_sheets(std::vector<Part>& parts) {
         if (parts[i].name != first.name || parts[i].instance != first.instance ||
             !parts[i].shape.Location().IsEqual(first.shape.Location()))
             return 0;
-    Bnd_Box box;
-    for (size_t i : open) BRepBndLib::Add(parts[i].shape, box);
-    const double diag = box.IsVoid() ? 1.0 : std::sqrt(box.SquareExtent());
     try {
+        Bnd_Box box; // (a curve Open CASCADE cannot bound throws: the sheets then stay as they are)
+        for (size_t i : open) BRepBndLib::Add(parts[i].shape, box);
+        const double diag = box.IsVoid() ? 1.0 : std::sqrt(box.SquareExtent());
         BRepBuilderAPI_Sewing sew(kSheetGap * diag);
         for (size_t i : open) sew.Add(parts[i].shape.Located(TopLoc_Location()));
         sew.Perform();
@@ -465,25 +466,45 @@ bool read_step(const std::string& in, StepModel& model, std::string& error, bool
     (void)processing;
     Handle(XCAFApp_Application) app = XCAFApp_Application::GetApplication();
     Handle(TDocStd_Document) doc;
-    app->NewDocument("MDTV-XCAF", doc);
-    STEPCAFControl_Reader reader;
-    reader.SetColorMode(true);
-    reader.SetNameMode(true);
-    reader.SetLayerMode(false);
-    if (reader.ReadFile(in.c_str()) != IFSelect_RetDone) {
+    std::optional<STEPCAFControl_Reader> opened;
+    auto open = [&](bool colours) {
+        opened.emplace();
+        opened->SetColorMode(colours);
+        opened->SetNameMode(true);
+        opened->SetLayerMode(false);
+        app->NewDocument("MDTV-XCAF", doc);
+        return opened->ReadFile(in.c_str()) == IFSelect_RetDone;
+    };
+    if (!open(true)) {
         error = in + ": not a readable STEP file";
         return false;
     }
-    if (const std::string why = out_of_range_number(Handle(StepData_StepModel)::DownCast(reader.ChangeReader().Model())); !why.empty()) {
+    if (const std::string why = out_of_range_number(Handle(StepData_StepModel)::DownCast(opened->ChangeReader().Model())); !why.empty()) {
         error = in + ": " + why;
         return false;
     }
+    bool transferred = false;
+    try {
+        transferred = opened->Transfer(doc);
+    } catch (const Standard_Failure& f) {
+        // A colour out of range throws from within the transfer (its styles are read last):
+        // the file read again without its colours, which are lost (a failure, unless
+        // --partial). What throws then is the shapes' own.
+        model.failed.push_back(std::string("the file's colours: ") + f.DynamicType()->Name() + ": " + f.GetMessageString() +
+                               " (read again without them)");
+        if (!open(false)) {
+            error = in + ": not a readable STEP file";
+            return false;
+        }
+        transferred = opened->Transfer(doc);
+    }
+    STEPCAFControl_Reader& reader = *opened;
     Handle(XCAFDoc_ShapeTool) shapes = XCAFDoc_DocumentTool::ShapeTool(doc->Main());
     model.colours = XCAFDoc_DocumentTool::ColorTool(doc->Main());
     model.unit_mm = unit_mm(reader);
     std::vector<TopoDS_Shape> top;
     NameMap names;
-    if (reader.Transfer(doc)) {
+    if (transferred) {
         TDF_LabelSequence roots;
         shapes->GetFreeShapes(roots);
         for (int r = 1; r <= roots.Length(); ++r) {
