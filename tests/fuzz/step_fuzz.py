@@ -117,7 +117,7 @@ def one(args, run, texts):
         problem = f'no end within {args.timeout} s'
     shutil.rmtree(d, ignore_errors=True)
     if problem:
-        keep = os.path.join(args.out, f'finding-{run}.stp')
+        keep = os.path.join(args.out, f'finding-{args.seed}-{run}.stp')
         with open(keep, 'w', encoding='latin-1') as f:
             f.write(text)
         return f'{name} run {run} ({what}): {problem}\n  reproduce: {args.packer} {keep} -o /tmp/x.fpk'

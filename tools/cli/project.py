@@ -34,6 +34,9 @@ def add(sub):
     p.add_argument('target', choices=['cdt', 'pack', 'tessellate', 'api', 'step'])
     p.add_argument('--runs', type=positive, default=10_000_000, metavar='N')
     p.add_argument('--jobs', type=positive, default=int(jobs()), metavar='J')
+    p.add_argument('--seed', type=positive, default=None, metavar='S',
+                   help='the mutations\' seed (step: 1 unless given, each seed a new set of runs; the libFuzzer targets: '
+                   'their own unless given)')
     p.add_argument('--no-trace-cmp', action='store_true',
                    help='no comparison tracing: ~4x the executions of tessellate (docs/reliability.md)')
     p.set_defaults(run=cmd_fuzz)
@@ -80,7 +83,7 @@ def cmd_fuzz(args, parser):
         out = os.path.join(ROOT, 'out', 'fuzz', 'step')
         say(f'fuzzing step: {args.runs} runs of facet-pack on mutated STEP text, {args.jobs} jobs, findings in out/fuzz/step')
         if run([sys.executable, 'tests/fuzz/step_fuzz.py', '--packer', tool('facet-pack'), '--models', MODELS, '--out', out,
-                '--runs', str(args.runs), '--jobs', str(args.jobs)]) != 0:
+                '--runs', str(args.runs), '--jobs', str(args.jobs), '--seed', str(args.seed or 1)]) != 0:
             raise Failure('step: facet-pack failed on mutated STEP text (out/fuzz/step: each finding and its command)')
         return 0
     folder = os.path.join(ROOT, 'build', 'fuzz')
@@ -106,8 +109,9 @@ def cmd_fuzz(args, parser):
     say(f'fuzzing {t}: {args.jobs} x {per} executions, corpus out/fuzz/{t}/corpus, logs out/fuzz/{t}/logs')
     start = datetime.datetime.utcnow().strftime('%Y-%m-%dT%H:%M:%SZ')
     max_len = 512 if t in ('cdt', 'api') else 32768
+    seed = [f'-seed={args.seed}'] if args.seed else []
     subprocess.run([os.path.join(folder, 'tests', 'fuzz', f'facet-{t}-fuzz'), f'-jobs={args.jobs}', f'-workers={args.jobs}',
-                    f'-runs={per}', f'-max_len={max_len}', '-timeout=30', '-rss_limit_mb=4096', '-print_final_stats=1',
+                    f'-runs={per}', f'-max_len={max_len}', '-timeout=30', '-rss_limit_mb=4096', '-print_final_stats=1', *seed,
                     f'-artifact_prefix={artifacts}/', corpus], cwd=logs, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     total = 0
     for log in glob.glob(os.path.join(logs, 'fuzz-*.log')):
