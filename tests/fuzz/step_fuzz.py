@@ -103,18 +103,22 @@ def one(args, run, texts):
     with open(step, 'w', encoding='latin-1') as f:
         f.write(text)
     problem = None
+    # No hang: facet-pack ends a file Open CASCADE cannot finish after two minutes and a second
+    # per 8 KB (tools/facet-pack/main.cpp), so a run is a finding past that and a margin (a
+    # healing that takes 100 s over a wild pcurve and then refuses the face is slow, not hung).
+    timeout = args.timeout or 120 + len(text.encode('latin-1')) // 8192 + 15
     try:
-        p = subprocess.run([args.packer, step, '-o', fpk, '--quiet'], capture_output=True, text=True, timeout=args.timeout)
+        p = subprocess.run([args.packer, step, '-o', fpk, '--quiet'], capture_output=True, text=True, timeout=timeout)
         if p.returncode < 0 or p.returncode not in (0, 1, 2):
             problem = f'exit {p.returncode}: {p.stderr.strip()[-300:]}'
         elif p.returncode != 0 and os.path.exists(fpk):
             problem = f'exit {p.returncode} but a pack was written'
         elif p.returncode == 0:
-            c = subprocess.run([args.packer, '--check', fpk], capture_output=True, text=True, timeout=args.timeout)
+            c = subprocess.run([args.packer, '--check', fpk], capture_output=True, text=True, timeout=timeout)
             if c.returncode != 0:
                 problem = f'exit 0 with a pack --check refuses: {c.stderr.strip()[-300:]}'
     except subprocess.TimeoutExpired:
-        problem = f'no end within {args.timeout} s'
+        problem = f'no end within {timeout} s'
     shutil.rmtree(d, ignore_errors=True)
     if problem:
         keep = os.path.join(args.out, f'finding-{args.seed}-{run}.stp')
@@ -132,7 +136,7 @@ def main():
     ap.add_argument('--runs', type=int, default=200)
     ap.add_argument('--jobs', type=int, default=os.cpu_count() or 2)
     ap.add_argument('--seed', type=int, default=1)
-    ap.add_argument('--timeout', type=float, default=60)
+    ap.add_argument('--timeout', type=float, default=None, help="a run's limit (s); default facet-pack's own bound and 15 s")
     args = ap.parse_args()
     os.makedirs(args.out, exist_ok=True)
     texts = {}
