@@ -75,6 +75,10 @@ bool on_screen(const App& app, uint32_t s, int32_t& x, int32_t& y, int32_t& acro
     }
     return false;
 }
+bool on_screen(const App& app, uint32_t s, int32_t& x, int32_t& y) {
+    int32_t across = 0;
+    return on_screen(app, s, x, y, across);
+}
 
 // The view brought onto part s and zoomed in (a drag with the second button, the wheel) until
 // its block is in, its faces done and its box spans the view or the wheel brings it no nearer
@@ -104,8 +108,8 @@ bool zoom_into(App& app, uint32_t s) {
         }
         wheeled = centred;
         app.run();
-        int32_t nx = 0, ny = 0, unused = 0;
-        if ((dx || dy) && on_screen(app, s, nx, ny, unused) && std::abs(dx) + std::abs(dy) > 0) {
+        int32_t nx = 0, ny = 0;
+        if ((dx || dy) && on_screen(app, s, nx, ny) && std::abs(dx) + std::abs(dy) > 0) {
             const float moved = float(std::abs(nx - x) + std::abs(ny - y)), dragged = float(std::abs(dx) + std::abs(dy));
             if (moved > 0) gain = moved / dragged;
         }
@@ -307,10 +311,9 @@ TEST(Swap, AFacePickedInABlockLeftOutIsForgotten) {
     ASSERT_FALSE(left.empty());
     // Taps about a held part's box centre until one picks a face of it (a torus's centre is its hole).
     uint32_t picked = ~0u;
-    int32_t across = 0; // (how far each reaches: not needed here)
     for (uint32_t p : held) {
         int32_t x = 0, y = 0;
-        if (!on_screen(app, p, x, y, across)) continue;
+        if (!on_screen(app, p, x, y)) continue;
         for (int k = 0; k < 49 && picked == ~0u; ++k) {
             const int16_t tx = int16_t(x + 3 * (k % 7 - 3)), ty = int16_t(y + 3 * (k / 7 - 3));
             app.v->touch(0, 2, int16_t(app.h - 3), true); // (elsewhere first: two taps on one spot frame the face)
@@ -328,12 +331,12 @@ TEST(Swap, AFacePickedInABlockLeftOutIsForgotten) {
     ASSERT_GT(app.v->measurement(lines), 0u) << "the picked face described";
     // Into the part left out farthest from it on the screen, until the picked one is left out too.
     int32_t px = 0, py = 0;
-    ASSERT_TRUE(on_screen(app, picked, px, py, across));
+    ASSERT_TRUE(on_screen(app, picked, px, py));
     uint32_t target = left[0];
     float far = -1;
     for (uint32_t p : left) {
         int32_t x = 0, y = 0;
-        if (!on_screen(app, p, x, y, across)) continue;
+        if (!on_screen(app, p, x, y)) continue;
         const float d = std::hypot(float(x - px), float(y - py));
         if (d > far) far = d, target = p;
     }
