@@ -73,7 +73,6 @@ public:
     void set_boxes(bool boxes) { boxes_ = boxes; }
     // Frames begun while the view is dragged are drawn lighter (Painter::set_dragging).
     void set_dragging(bool on) { dragging_ = on; }
-    void run_piece(uint32_t units, uint32_t pass);
     // The kind of the piece run() would do next.
     Work work() const;
     bool drawing() const { return job_.active; }
@@ -94,6 +93,7 @@ public:
     void set_catch_up(bool on) { catch_up_ = on; }
 
 private:
+    void run_piece(uint32_t units, uint32_t pass); // run()'s piece, timed by run()
     struct Job {
         bool active = false, full = false, boxes = false, dragging = false;
         uint8_t buffer = 0;

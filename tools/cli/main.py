@@ -36,7 +36,6 @@ def parser():
     bench.add(sub)
     q = sub.add_parser('qemu', help='boot any firmware ELF in QEMU by hand (tools/qemu/run.py; --help for its options)',
                        add_help=False)
-    q.set_defaults(passthrough=True)
     h = sub.add_parser('help', help='this text')
     h.set_defaults(run=lambda args, parser: ap.print_help() or 0)
     for p in sub.choices.values():  # each subcommand's own parser, for its usage errors

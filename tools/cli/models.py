@@ -35,10 +35,10 @@ def add(sub):
     # mesh and measure hand their arguments to the tools, which check them (exit 2 with usage).
     p = sub.add_parser('mesh', help='pack -> triangles with the device\'s code, and a report', add_help=False)
     p.add_argument('args', nargs='*')
-    p.set_defaults(run=cmd_mesh, passthrough=True)
+    p.set_defaults(run=cmd_mesh)
     p = sub.add_parser('measure', help='a face\'s exact surface; two faces\' exact distance and angle', add_help=False)
     p.add_argument('args', nargs='*')
-    p.set_defaults(run=cmd_measure, passthrough=True)
+    p.set_defaults(run=cmd_measure)
 
 
 def cmd_pack(args, parser):

@@ -76,9 +76,6 @@ struct [[nodiscard]] Result {
 
 constexpr bool ok(const Result& r) { return r.ok(); }
 
-// A Status as a Result with the code alone: "what" is the code's name.
-constexpr Result result_of(Status s) { return Result{s, s == Status::Ok ? "" : status_name(s), {}, {}}; }
-
 // Broken invariants (not bad input) go to one hook that the board or test decides about
 // (modm_assert style). `scope` names the module, `what` the invariant.
 [[noreturn]] void assert_failed(const char* scope, const char* what, const char* file, int line);
