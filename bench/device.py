@@ -22,16 +22,14 @@ import argparse
 import concurrent.futures
 import csv
 import os
-import re
 import subprocess
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, 'tools'))
-sys.path.insert(0, os.path.join(ROOT, 'tests', 'qemu'))
 import board as boards  # noqa: E402
 import protocol  # noqa: E402
-from viewer_test import analyse, peak_ram, tessellation_budget, unpack_instructions  # noqa: E402
+from budget_rules import analyse, peak_ram, tessellation_budget, unpack_instructions  # noqa: E402
 from boot import boot, exit_note, last_error  # noqa: E402  (bench/boot.py: the benches' one run)
 
 COLUMNS = ['board', 'model', 'faces', 'triangles', 'inflate_instructions', 'tessellation_instructions',
@@ -44,11 +42,11 @@ def face_instructions(uart, regions):
     faces, now, pass_no = [], 0, -1
     for r, region in protocol.with_regions(uart, regions):
         if r.name == 'pass':
-            pass_no = int(r.words[0])
+            pass_no = r.values()['pass']
         elif r.name == 'progress' and pass_no == 0:
             faces.append(now)
             now = 0
-        elif region and r.words[0] == 'face' and pass_no == 0:
+        elif region and region['name'] == 'face' and pass_no == 0:
             now += region['instructions'] or 0
     return faces
 
@@ -68,9 +66,9 @@ def run_one(board_name, elf, fpk, out, timeout):
         return row, [code]
     if code != 0:
         notes.append(exit_note(code))
-    bad = re.search(r'^viewer: no valid pack: (.*)$', uart, re.M)
+    bad = protocol.first(uart, 'load_failed')
     if bad:
-        notes.append(bad.group(1))
+        notes.append(bad.fields().get('why', bad.text()))
     t = protocol.tessellation(uart)
     tess, frames = analyse(uart, rep.get('regions', []))
     faces = face_instructions(uart, rep.get('regions', []))

@@ -35,17 +35,15 @@ in the note; nothing is left out silently.
 import argparse
 import csv
 import os
-import re
 import shutil
 import subprocess
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, 'tools'))
-sys.path.insert(0, os.path.join(ROOT, 'tests', 'qemu'))
 import board as boards  # noqa: E402
 import protocol  # noqa: E402
-from viewer_test import first_view, peak_ram  # noqa: E402
+from budget_rules import first_view, peak_ram  # noqa: E402
 from boot import boot, exit_note, last_error  # noqa: E402  (bench/boot.py: the benches' one run)
 
 COLUMNS = ['board', 'kind', 'faces', 'pack_faces', 'step_bytes', 'pack_bytes', 'first_frame_instructions', 'first_view_instructions',
@@ -64,12 +62,12 @@ def measure(uart, regions):
     tessellated = False
     since_turned, last = [], None  # frames after the 'turned' shot; the last frame's cost
     for r, region in protocol.with_regions(uart, regions):
-        if region and r.words[0] in ('frame', 'update', 'overlay'):
+        if region and region['name'] in ('frame', 'update', 'overlay'):
             pieces.append(region['instructions'] or 0)
         elif r.name == 'tessellation':
             tessellated = True
         elif r.name == 'frame':
-            n = int(dict(zip(r.words[0::2], r.words[1::2])).get('pieces', 1))
+            n = r.values().get('pieces', 1)
             last = sum(pieces[-n:]) if len(pieces) >= n else None
             pieces = []
             if phase == 'load' and tessellated:
@@ -82,21 +80,19 @@ def measure(uart, regions):
                 out['turning'].append(last)
             elif phase == 'turned' and last is not None:
                 since_turned.append(last)
-        elif r.name in ('shot', 'dump') and r.words:  # a screenshot: over QMP, or a framebuffer the board wrote
-            if r.words[0] == 'dragged':
+        elif r.name in ('shot', 'dump') and r.fields():  # a screenshot: over QMP, or a framebuffer the board wrote
+            shot = r.values()['name']
+            if shot == 'dragged':
                 out['dragging'] = since_turned[:-1]  # (the last: the view at rest once the button is up)
                 if since_turned:
                     out['rest'] = max(out.get('rest') or 0, since_turned[-1])
-            elif r.words[0] == 'zoomed':
+            elif shot == 'zoomed':
                 out['zoomed'] = last
             phase = {'first': 'rest', 'sharp': 'sharp', 'edges': 'edges', 'turned': 'turned', 'dragged': 'dragged',
-                     'zoomed': 'zoomed'}.get(r.words[0], phase)
-    m = re.search(r'^viewer: \d+ faces \(\d+ failed, (\d+) not shown by the view', uart, re.M)
-    if m:
-        out['deferred'] = int(m.group(1))
-    m = re.findall(r'^viewer: .* (\d+) triangles; bye', uart, re.M)
-    if m:
-        out['triangles'] = int(m[-1])
+                     'zoomed': 'zoomed'}.get(shot, phase)
+    stats = list(protocol.records(uart, 'stats'))  # the viewer's totals as it ends
+    if stats and stats[-1].fields():
+        out['deferred'], out['triangles'] = stats[-1].values()['deferred'], stats[-1].values()['triangles']
     return out
 
 
@@ -111,14 +107,14 @@ def run_one(board_name, elf, fpk, out, timeout):
     rep, uart, code = boot(board, elf, fpk, out, protocol.read_session(protocol.session_path('scale'), board_name), timeout)
     if rep is None:
         return row, [code]
-    bad = re.search(r'^viewer: no valid pack: (.*)$', uart, re.M)
+    bad = protocol.first(uart, 'load_failed')
     if bad:
-        notes.append(bad.group(1))
+        notes.append(bad.fields().get('why', bad.text()))
     elif code != 0:
         notes.append(exit_note(code))
-    cut = re.search(r'^viewer: the model is larger than the memory: (\d+) parts \((\d+) faces\) left out', uart, re.M)
-    if cut:
-        notes.append(f'larger than the memory: {int(cut.group(1)):,} parts ({int(cut.group(2)):,} faces) left out, drawn as boxes')
+    model = (protocol.first(uart, 'model') or protocol.Record('model', [], '')).fields()
+    if model.get('boxed_parts'):
+        notes.append(f'larger than the memory: {model["boxed_parts"]:,} parts ({model["boxed_faces"]:,} faces) left out, drawn as boxes')
     m = measure(uart, rep.get('regions', []))
     for key, col in (('first_frame', 'first_frame_instructions'), ('first_view', 'first_view_instructions'),
                      ('rest', 'frame_rest_instructions'), ('sharp', 'frame_rest_sharp_instructions'),
@@ -243,10 +239,9 @@ def main():
                     row.update(got)
                     log = os.path.join(args.work, b, name, 'uart.log')
                     text = open(log, errors='replace').read() if os.path.exists(log) else ''
-                    stated = re.search(r'^@model faces (\d+)', text, re.M)
-                    boxed = re.search(r'^viewer: the model is larger than the memory: \d+ parts \((\d+) faces\)', text, re.M)
+                    stated = (protocol.first(text, 'model') or protocol.Record('model', [], '')).fields()
                     if stated:  # (the faces held, and those of the parts left out)
-                        row['pack_faces'] = int(stated.group(1)) + (int(boxed.group(1)) if boxed else 0)
+                        row['pack_faces'] = stated['faces'] + stated.get('boxed_faces', 0)
                 row['note'] = '; '.join(notes)
                 rows.append(row)
                 fv = row.get('first_view_instructions')

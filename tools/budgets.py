@@ -1,12 +1,7 @@
 #!/usr/bin/env python3
 """Turns a QEMU run report (tools/qemu/run.py's report.json) into the budget report.
 
-Budgets of the handheld: all RAM <= 32 MiB (33,554,432 bytes); CPU time in exact guest
-instructions at 600 MHz, one instruction per cycle; the first pass's tessellation <= 600 M
-instructions (1 s) for a model of up to 5,000 faces, beyond that 120 k a face (the first view's
-rate: for a large model the first view binds); one frame <= 20 M instructions per 10,000 triangles in view, at least 20 M (30 frames/s);
-the first view (every piece of work from load to the first frame after the first pass) <= 1.2 G
-per 10,000 faces, at least 1.2 G (2 s).
+The budgets and the measures: tools/budget_rules.py (one definition of each).
 Tessellation = every 'edges' and 'face' region (the pieces of work) of the viewer's first pass
 (uart.log beside the report). Prints a table, writes --json and --markdown (always, also when
 over budget); with --strict, the exit code says what went wrong: 1 the run itself failed (its
@@ -18,16 +13,10 @@ import json
 import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), 'tests', 'qemu'))
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import protocol  # noqa: E402
-from viewer_test import analyse, by_model, first_view, first_view_budget, frame_budget, peak_ram, tessellation_budget, unpack_instructions  # noqa: E402  (one definition of each measure)
-
-RAM_BUDGET = 32 << 20
-PEAK_RAM_GOAL = 8 << 20  # issue 5's goal for the largest test model, display buffers included
-
-FRAME_BUDGET = 20_000_000
-MHZ = 600
+from budget_rules import (MHZ, PEAK_RAM_GOAL, RAM_BUDGET, analyse, by_model, first_view, first_view_budget,  # noqa: E402
+                          frame_budget, peak_ram, tessellation_budget, unpack_instructions)
 
 
 def main():
@@ -77,7 +66,7 @@ def main():
         'first_view_instructions': view,
         'first_view_budget_instructions': None if view_budget is None else int(view_budget),
         'frames': frames,
-        'frame_budget_instructions_per_10k_triangles': FRAME_BUDGET,
+        'frame_budget_instructions_per_10k_triangles': int(frame_budget(0)),
         'tessellation_budget_instructions': int(tess_budget),
         'exit_code': rep['exit_code'],
     }
@@ -183,7 +172,7 @@ def main():
         print(f'  peak RAM this model needed: {out["ram_peak_bytes"]:,} bytes ({out["ram_peak_bytes"] / (1 << 20):.2f} MiB; '
               f'goal {PEAK_RAM_GOAL >> 20} MiB): display and depth buffers, code, stack high-water, the pack, '
               f'the viewer storage at its peak')
-    print(f'  full frames (budget {FRAME_BUDGET:,} instructions = 33.3 ms at {MHZ} MHz per 10k triangles):')
+    print(f'  full frames (budget {frame_budget(0):,.0f} instructions = 33.3 ms at {MHZ} MHz per 10k triangles):')
     for f in out['frames']:
         n = f['instructions']
         print(f'    {f["name"]:<10} {f["triangles"]:>7,} triangles {n:>12,} instructions = {n / (MHZ * 1000):.2f} ms'

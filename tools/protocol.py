@@ -2,13 +2,14 @@
 """The UART protocol between a board (or the simulator) and the host, read in one place
 (docs/protocol.md says what each record means; firmware/viewer/main.cpp speaks it).
 
-From the device, a line that starts with '@' is a record: its name, then its words. Most
-records are `key value` pairs after their name (`@frame triangles 12 culled 3 ...`); a few have
-fixed positions (`@ram NAME START BYTES`) or end in free text (`@measure TEXT`).
+From the device, a line that starts with '@' is a record: its name, then its words, laid out as
+RECORDS says. Most are `key value` pairs after their name (`@frame triangles 12 culled 3 ...`);
+a few have fixed positions (`@ram NAME START BYTES`) or end in free text (`@measure TEXT`). Every
+reader takes them through this module: no reader parses a line itself.
 
   for r in records(uart): ...            every record of a log, in order
   first(uart, 'tessellation')            the first record of a name, or None
-  r.fields()                             its key/value pairs, values as ints where they are
+  r.values()                             its words by RECORDS' layout (ints where they are)
   with_regions(uart, regions)            each record with the instruction-count region it opened
   read_session(path, board)              a scripted session's entries (tests/sessions/*.session)
 
@@ -22,33 +23,54 @@ ENQ = b'\x05'  # after each scripted entry
 ACK = b'\x06'  # a screenshot was taken
 SHOT_COMMAND = '!shot {}\\n'  # as typed in a session's keys (escapes: run.py decodes them)
 
-# Every record the device may print, with how its words are laid out: 'pairs' (key value ...
-# after the name), or the names of its positional words. docs/protocol.md explains each.
+# Every record a device may print and how its words are laid out, in order: a name takes one
+# word (an int where it is one); '=word' is that literal word; 'a/b' one word 'A/B', two values;
+# 'pairs...' the rest as key value pairs; 'text...' the rest of the line. docs/protocol.md says
+# what each means; module/src/records.cpp writes the viewer's.
 RECORDS = {
-    'board': ['name', 'size', 'scanout_key', 'scanout'],
-    'ram': ['name', 'start', 'bytes'],
-    'stack': ['used_key', 'used', 'of', 'size', 'bytes'],
-    'model': 'pairs',
-    'pass': ['pass', 'tolerance_key', 'tolerance_um'],
-    'lod': 'pairs',
-    'progress': ['done_total', 'triangles_key', 'triangles'],
-    'face': ['face', 'failed:', 'why...'],
-    'tessellation': 'pairs',
-    'retessellation': 'pairs',
-    'frame': 'pairs',
-    'view': 'pairs',
-    'pick': 'pairs',  # 'face N instance N shell N surface_type N at X Y', or 'none at X Y'
-    'measure': ['text...'],
-    'budget': ['kind', 'used_key', 'used_us', 'budget_key', 'budget_us'],
-    'memory': 'pairs',
-    'begin': ['region'],
-    'end': ['region'],
-    'shot': ['name'],
-    'dump': ['name', 'file'],
-    'idle': [],
-    'expect': ['region', 'instructions'],
-    'cdt': ['region', 'pairs...'],
-    'peer': ['view', 'mode', 'pairs...'],
+    # the boards (hal/src/report.cpp, boards/)
+    'board': ('name', 'size', 'pairs...'),
+    'ram': ('name', 'start', 'bytes'),
+    'stack': ('=used', 'used', '=of', 'size', '=bytes'),
+    'exit': ('code',),
+    'halt': ('code', 'text...'),
+    'mpu': ('text...',),
+    'touch': ('text...',),
+    'shot': ('name',),
+    'dump': ('name', 'file'),
+    'begin': ('region',),
+    'end': ('region',),
+    # the viewer (facet/records.h), and the firmware around it (firmware/viewer/main.cpp)
+    'library': ('index', '=bytes', 'bytes', 'name...'),
+    'model': ('pairs...',),
+    'load_failed': ('status', 'why...'),
+    'model_failed': ('model', 'status', 'why...'),
+    'pass_failed': ('=tolerance_um', 'tolerance_um', 'status', 'why...'),
+    'pass': ('pass', 'pairs...'),
+    'lod': ('pairs...',),
+    'progress': ('finished/total', 'pairs...'),
+    'face': ('face', '=failed:', 'why...'),
+    'tessellation': ('pairs...',),
+    'retessellation': ('pairs...',),
+    'frame': ('pairs...',),
+    'view': ('pairs...',),
+    'pick': ('pairs...',),
+    'measure': ('text...',),
+    'budget': ('kind', 'pairs...'),
+    'memory': ('pairs...',),
+    'stats': ('pairs...',),
+    'idle': (),
+    'step_budget_us': ('us',),
+    # the self-tests and benches (firmware/selftest, bench/)
+    'expect': ('region', 'instructions'),
+    'needs': ('text...',),
+    'cdt': ('region', '=points', 'points', '=segments', 'segments', '=vertices', 'vertices', '=triangles', 'triangles',
+            '=inner', 'inner', '=flips', 'flips', '=walk', 'walk', '=checker', 'checker...'),
+    'vertices': ('region', 'points'),
+    'bench_model': ('pairs...',),
+    'bench_frame': ('pairs...',),
+    'bench_view': ('view', 'size', 'pairs...'),
+    'peer': ('view', 'size', 'pairs...'),
 }
 
 
@@ -65,10 +87,46 @@ class Record:
     def __init__(self, name, words, line):
         self.name, self.words, self.line = name, words, line
 
-    def fields(self, start=0):
-        """The key/value pairs from word `start` on (values as ints where they are)."""
-        w = self.words[start:]
-        return {k: _value(v) for k, v in zip(w[0::2], w[1::2])}
+    def values(self):
+        """The record's words by RECORDS' layout, as a dict (ints where they are). ValueError for a
+        record that is not in the table or not laid out as it says."""
+        layout = RECORDS.get(self.name)
+        if layout is None:
+            raise ValueError(f'not a record of the protocol: {self.line!r}')
+        out, words = {}, self.words
+        for i, part in enumerate(layout):
+            if part == 'pairs...':
+                rest = words[i:]
+                if len(rest) % 2:
+                    raise ValueError(f'@{self.name}: its key value pairs are uneven: {self.line!r}')
+                out.update({k: _value(v) for k, v in zip(rest[0::2], rest[1::2])})
+                return out
+            if part.endswith('...'):  # the rest of the line as it is (its spacing kept)
+                rest = self.line.split(None, i + 1)
+                out[part[:-3]] = rest[i + 1].strip() if len(rest) > i + 1 else ''
+                return out
+            if i >= len(words):
+                raise ValueError(f'@{self.name}: {part} missing: {self.line!r}')
+            if part.startswith('='):
+                if words[i] != part[1:]:
+                    raise ValueError(f'@{self.name}: {part[1:]!r} expected, not {words[i]!r}: {self.line!r}')
+            elif '/' in part:
+                names, got = part.split('/'), words[i].split('/')
+                if len(got) != 2:
+                    raise ValueError(f'@{self.name}: {part} expected, not {words[i]!r}: {self.line!r}')
+                out.update({k: _value(v) for k, v in zip(names, got)})
+            else:
+                out[part] = _value(words[i])
+        if len(words) > len(layout):
+            raise ValueError(f'@{self.name}: {len(words) - len(layout)} words too many: {self.line!r}')
+        return out
+
+    def fields(self):
+        """values(), or {} for a record not laid out as RECORDS says (a reader's lenient form)."""
+        try:
+            return self.values()
+        except ValueError:
+            return {}
 
     def text(self):
         """Everything after the name (a record that ends in free text, like @measure)."""

@@ -10,10 +10,10 @@
 // boot, a digit: how many times the viewer's Finer key is pressed first (0: the default).
 //
 //   regions    "frame": each piece of facet's frames (the host sums a frame's pieces up to its
-//              '@frame' line); "tgx": one peer frame, clear included, as facet's includes its
+//              '@bench_frame' line); "tgx": one peer frame, clear included, as facet's includes its
 //              background
-//   lines      @frame pieces N triangles T pixels P full F done D total N
-//              @view NAME WIDTHxHEIGHT edges|shaded covered C     (after facet's frame)
+//   lines      @bench_frame pieces N triangles T pixels P full F done D total N
+//              @bench_view NAME WIDTHxHEIGHT mode edges|shaded covered C     (after facet's frame)
 //              @peer NAME WIDTHxHEIGHT triangles T covered C       (after the peer's frame)
 //              @dump NAME FILE                                     (the pictures, F565)
 #include "facet/viewer.h"
@@ -57,7 +57,7 @@ void on_event(void*, const Event& e) {
         if (e.work.what == Work::Frame) hal::measure_end(con, "frame");
         break;
     case Event::Kind::FrameDone:
-        print(con, "@frame pieces {} triangles {} pixels {} full {} done {} total {}\n", state.pieces, e.frame.triangles,
+        print(con, "@bench_frame pieces {} triangles {} pixels {} full {} done {} total {}\n", state.pieces, e.frame.triangles,
               e.frame.pixels, e.frame.full ? 1 : 0, e.frame.faces_done, e.frame.faces_total);
         state.pieces = 0;
         state.last_frame = e;
@@ -89,7 +89,7 @@ bool picture(const char* name, bool edges, uint16_t w, uint16_t h) {
         print(con, "bench: no full frame of the finished model for {}\n", name);
         return false;
     }
-    print(con, "@view {} {}x{} {} covered {}\n", name, w, h, edges ? "edges" : "shaded", covered(depth, uint32_t(w) * h, 0xFFFF));
+    print(con, "@bench_view {} {}x{} mode {} covered {}\n", name, w, h, edges ? "edges" : "shaded", covered(depth, uint32_t(w) * h, 0xFFFF));
     char shot[48];
     format(shot, sizeof shot, "{}-{}x{}-facet{}", name, w, h, edges ? "" : "-shaded");
     return dump(shot, reinterpret_cast<const uint16_t*>(frame), w, h);
@@ -153,7 +153,7 @@ int facet_main(hal::Board& board) {
         }
         bench::prepare(v, finer);
         const Stats st = v.stats();
-        print(con, "@model faces {} failed {} triangles {} peer_triangles {} peer_meshes {} finer {}\n", st.faces, st.failed,
+        print(con, "@bench_model faces {} failed {} triangles {} peer_triangles {} peer_meshes {} finer {}\n", st.faces, st.failed,
               st.triangles, peer.triangles, peer.meshes, finer);
         if (!bench::draw_views(
                 v, [&](const char* name, bool edges) { return picture(name, edges, w, h); },

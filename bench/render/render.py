@@ -8,7 +8,7 @@ bench firmware gets both, tessellates the pack with the module and, at 480x272 t
 draws the fitted view once every face is done ("full") and three steps closer ("zoomed"), with
 B-rep edges ("facet") and without ("facet_shaded"); tgx draws each view with the module's
 camera (Viewer::camera()). A frame of facet's is the sum of its pieces (the 'frame' regions up
-to its '@frame' line); tgx's is one 'tgx' region, its clears included (facet's frame includes
+to its '@bench_frame' line); tgx's is one 'tgx' region, its clears included (facet's frame includes
 its background).
 
 Writes CSV  board,model,view,width,height,impl,triangles,pixels,instructions
@@ -47,25 +47,25 @@ def analyse(uart, regions):
     rows, problems, frames, last_frame, last_tgx, model = [], [], [], None, None, {}
     for r, region in protocol.with_regions(uart, regions):
         if region:
-            if r.words[0] == 'frame':
+            if region['name'] == 'frame':
                 frames.append(region['instructions'])
-            elif r.words[0] == 'tgx':
+            elif region['name'] == 'tgx':
                 last_tgx = region['instructions']
-        elif r.name == 'model':
-            model = dict(zip(r.words[0::2], map(int, r.words[1::2])))
+        elif r.name == 'bench_model':
+            model = r.values()
             if model['triangles'] != model['peer_triangles']:
                 problems.append(f'facet tessellated {model["triangles"]:,} triangles, the OBJ has {model["peer_triangles"]:,}')
-        elif r.name == 'frame':
-            kv = dict(zip(r.words[0::2], map(int, r.words[1::2])))
+        elif r.name == 'bench_frame':
+            kv = r.values()
             n = kv['pieces']
             mine = frames[-n:] if n and len(frames) >= n else [None]
             last_frame = dict(kv, instructions=None if None in mine else sum(mine))
             frames = []
-        elif r.name in ('view', 'peer'):
-            view, size = r.words[0], r.words[1]
-            width, height = map(int, size.split('x'))
-            kv = dict(zip(r.words[2::2], r.words[3::2])) if r.name == 'peer' else {'mode': r.words[2], 'covered': r.words[4]}
-            if r.name == 'view':
+        elif r.name in ('bench_view', 'peer'):
+            kv = r.values()
+            view = kv['view']
+            width, height = map(int, kv['size'].split('x'))
+            if r.name == 'bench_view':
                 impl = 'facet' if kv['mode'] == 'edges' else 'facet_shaded'
                 rows.append({'view': view, 'width': width, 'height': height, 'impl': impl,
                              'triangles': last_frame['triangles'], 'pixels': int(kv['covered']),

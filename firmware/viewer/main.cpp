@@ -10,7 +10,8 @@
 // module all the free RAM as its workspace (the model's arrays; the pack decoded at its end).
 //
 //   from the firmware   @library, @model, @pass, @lod, @progress, @face N failed, @tessellation /
-//                       @retessellation, @frame, @view, @pick, @budget, @memory; "@begin NAME" /
+//                       @retessellation, @frame, @view, @pick, @budget, @memory, @stats
+//                       (facet/records.h); "@begin NAME" /
 //                       "@end NAME" around each piece of work (instruction-count regions:
 //                       unpack, edges, face, frame, update; step with !budget); @shot (capture);
 //                       @idle when the viewer has nothing left to do
@@ -18,6 +19,7 @@
 //                       handled); "!shot NAME" + Enter: a screenshot (once the viewer has
 //                       drawn all the input before it); "!budget US" + Enter: step
 //                       budget, each step an instruction-count region; ESC leaves a command
+#include "facet/records.h"
 #include "facet/viewer.h"
 #include "facet_board_config.h"
 #include "hal/board.h"
@@ -84,8 +86,17 @@ void capture(const char* name) {
     if (!ok(s)) print(session.board->console, "viewer: capture {} failed ({})\n", name, s);
 }
 
+// A record of the protocol (facet/records.h writes each) on the console.
+void write_record(hal::Console& con, uint32_t length, const char* line) {
+    if (length == 0) return; // (an event without a record)
+    if (length >= kRecordBytes) print(con, "viewer: a record of {} bytes was cut to {}\n", length, kRecordBytes - 1);
+    con.write(line, std::min(length, kRecordBytes - 1));
+}
+
 void on_event(void*, const Event& e) {
     hal::Console& con = session.board->console;
+    char line[kRecordBytes];
+    write_record(con, event_record(e, line, sizeof line), line);
     switch (e.kind) {
     // Pieces of work as instruction-count regions (with !budget, whole steps instead).
     case Event::Kind::WorkBegin:
@@ -95,34 +106,16 @@ void on_event(void*, const Event& e) {
         if (!session.step_regions) hal::measure_end(con, work_name(e.work.what));
         break;
     case Event::Kind::Loaded:
-        print(con, "@model faces {} edges {} shells {} instances {} bytes {} file_bytes {}\n", e.loaded.faces, e.loaded.edges,
-              e.loaded.shells, e.loaded.instances, e.loaded.pack_bytes, e.loaded.file_bytes);
         if (e.loaded.boxed_parts) {
             print(con, "viewer: the model is larger than the memory: {} parts ({} faces) left out, drawn as their boxes\n",
                   e.loaded.boxed_parts, e.loaded.boxed_faces);
         }
         break;
-    case Event::Kind::Pass: print(con, "@pass {} tolerance_um {}\n", e.pass.pass, um(e.pass.tolerance_mm)); break;
-    case Event::Kind::Sampled: print(con, "@lod tolerance_um {} samples {}\n", um(e.pass.tolerance_mm), e.pass.samples); break;
     case Event::Kind::PassFailed:
         print(con, "viewer: the edges at tolerance {} um: {} ({})\n", um(e.pass.tolerance_mm), e.why, e.why.status);
         break;
-    case Event::Kind::Progress:
-        print(con, "@progress {}/{} triangles {}\n", e.progress.done + e.progress.failed, e.progress.total, e.progress.triangles);
-        break;
-    case Event::Kind::FaceFailed:
-        print(con, "@face {} failed: {} ({}); it stays wireframe\n", e.failed.face, e.why, e.why.status);
-        break;
-    case Event::Kind::Tessellated: {
-        const auto& t = e.tessellated;
-        print(con, "@{} faces {} failed {} triangles {} vertices {} mesh_bytes {} arena_peak {} tolerance_um {}\n",
-              t.pass == 0 ? "tessellation" : "retessellation", t.faces, t.failed, t.triangles, t.vertices, t.mesh_bytes,
-              t.arena_peak_bytes, um(t.tolerance_mm));
-        break;
-    }
     case Event::Kind::FrameDone: {
         const auto& f = e.frame;
-        if (f.full) print(con, "@frame triangles {} culled {} pixels {} pieces {} cost_us {}\n", f.triangles, f.culled, f.pixels, f.pieces, f.cost_us);
         // The screenshots of the first pass: the wireframe, half the faces, all of them.
         if (f.pass != 0 || f.boxes) break; // (the parts' boxes while the edges are sampled: no screenshot)
         if (!session.wireframe_shot && f.faces_done == 0) session.wireframe_shot = true, capture("wireframe");
@@ -130,25 +123,13 @@ void on_event(void*, const Event& e) {
         if (!session.done_shot && f.full && f.faces_done == f.faces_total) session.done_shot = true, capture("done");
         break;
     }
-    case Event::Kind::ViewChanged:
-        print(con, "@view yaw {} pitch {} zoom_pct {}\n", int32_t(e.view.yaw_deg + (e.view.yaw_deg >= 0 ? 0.5f : -0.5f)),
-              int32_t(e.view.pitch_deg + (e.view.pitch_deg >= 0 ? 0.5f : -0.5f)), uint32_t(100.0f / e.view.zoom + 0.5f));
-        break;
     case Event::Kind::Picked:
-        if (e.pick.hit) {
-            print(con, "@pick face {} instance {} shell {} surface_type {} at {} {}\n", e.pick.face, e.pick.instance,
-                  e.pick.shell, e.pick.surface_type, e.pick.x, e.pick.y);
-            session.measured = true; // its exact values once the event is handled (the panel is set after it)
-        } else {
-            print(con, "@pick none at {} {}\n", e.pick.x, e.pick.y);
-        }
-        break;
-    case Event::Kind::BudgetExceeded:
-        print(con, "@budget {} used_us {} budget_us {}\n", e.budget.step ? "step" : "frame", e.budget.used_us, e.budget.budget_us);
+        if (e.pick.hit) session.measured = true; // its exact values once the event is handled (the panel is set after it)
         break;
     case Event::Kind::ModelFailed:
         print(con, "viewer: model {} of the library: {} ({}); the others still open\n", e.model.index + 1, e.why, e.why.status);
         break;
+    default: break;
     }
 }
 
@@ -375,6 +356,8 @@ int facet_main(hal::Board& board) {
         if (i + 1 == models) opened = Result::fail(Status::Corrupt, "no model of the library opens");
     }
     if (Result r = opened; !r.ok()) {
+        char line[kRecordBytes];
+        write_record(con, load_failed_record(r, line, sizeof line), line);
         print(con, "viewer: no valid pack: {} ({})\n", r, r.status);
         const bool blank = (region[0] == 0 && region[1] == 0 && region[2] == 0 && region[3] == 0) ||
                            (region[0] == 0xFF && region[1] == 0xFF && region[2] == 0xFF && region[3] == 0xFF);
@@ -421,9 +404,10 @@ int facet_main(hal::Board& board) {
     // What this model needed: the pack (inflated, and the file it came from, both held while
     // inflating) and the workspace at its peak (the host adds the display buffers, code and
     // stack high-water: the model's peak RAM).
-    print(con, "@memory pack_bytes {} pack_file_bytes {} storage_peak_bytes {}\n", t.pack_bytes, t.pack_file_bytes,
-          t.workspace_peak_bytes);
+    char line[kRecordBytes];
+    write_record(con, memory_record(t, line, sizeof line), line);
     if (t.refused) print(con, "viewer: the rasterizer refused {} triangles or lines\n", t.refused);
+    write_record(con, stats_record(t, line, sizeof line), line);
     print(con, "viewer: {} faces ({} failed, {} not shown by the view yet), {} triangles; bye\n", t.faces, t.failed, t.deferred, t.triangles);
     return 0;
 }

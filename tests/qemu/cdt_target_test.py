@@ -31,9 +31,9 @@ def main():
     for name, region in (('paper', 'cdt_paper'), ('plate10k', 'cdt_plate10k'),
                          ('paper, paper order', 'cdt_paper_paper_order'),
                          ('plate10k, paper order', 'cdt_plate10k_paper_order')):
-        cdt = next((c for c in protocol.records(uart, 'cdt') if c.words and c.words[0] == region), None)
-        kv = cdt.fields(1) if cdt else {}  # @cdt REGION points N ... checker VERDICT
-        verdict = cdt.line.split(' checker ', 1)[1] if cdt and ' checker ' in cdt.line else None
+        cdt = next((c for c in protocol.records(uart, 'cdt') if c.fields().get('region') == region), None)
+        kv = cdt.fields() if cdt else {}  # @cdt REGION points N ... checker VERDICT
+        verdict = kv.get('checker')
         n = next((x['instructions'] for x in rep['regions'] if x['name'] == region), None)
         if not cdt or verdict != 'ok' or n is None:
             print(f'FAIL {name}: {verdict if cdt else "no result"}; instructions {n}')

@@ -13,17 +13,15 @@ budget rule); the board's frame times (the status bar's) those of a 600 MHz core
 import argparse
 import json
 import os
-import re
 import subprocess
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 sys.path.insert(0, os.path.join(ROOT, 'tools'))
-sys.path.insert(0, os.path.join(ROOT, 'tests', 'qemu'))
 import board as boards  # noqa: E402
 import protocol  # noqa: E402
 import img  # noqa: E402
-from viewer_test import analyse, frame_budget  # noqa: E402
+from budget_rules import analyse, frame_budget  # noqa: E402
 
 # The sessions (tests/sessions): the handheld's features on the sample part, and see-through on
 # an assembly, on the board and in the simulator.

@@ -20,6 +20,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)
 sys.path.insert(0, os.path.join(ROOT, 'tools'))
 import board as boards  # noqa: E402
 import img  # noqa: E402
+import protocol  # noqa: E402
 
 
 def faces_of(packer, fpk):
@@ -59,10 +60,10 @@ def main():
     # The library as ./facet run shows it: the first model, the chooser, the second.
     out = os.path.join(args.work, 'good')
     code, uart = boot(args, board, lib, out, 'library')
-    opened = [int(m) for m in re.findall(r'^@model faces (\d+)', uart, re.M)]
+    opened = [r.values()['faces'] for r in protocol.records(uart, 'model')]
     if code != 0:
         problems.append(f'the viewer exited {code}')
-    if len(re.findall(r'^@library \d+ ', uart, re.M)) != 3:
+    if len(list(protocol.records(uart, 'library'))) != 3:
         problems.append('the viewer did not list the three models')
     if opened != faces[:2]:
         problems.append(f'the models opened have {opened} faces, not the first two ({faces[:2]})')
@@ -98,10 +99,10 @@ def main():
     open(bad, 'wb').write(data)
     out = os.path.join(args.work, 'damaged')
     code, uart = boot(args, board, bad, out, 'library-walk')
-    opened = [int(m) for m in re.findall(r'^@model faces (\d+)', uart, re.M)]
+    opened = [r.values()['faces'] for r in protocol.records(uart, 'model')]
     if code != 0:
         problems.append(f'the damaged library: the viewer exited {code}')
-    if not re.search(r'^viewer: model 2 of the library: .*; the others still open$', uart, re.M):
+    if [r.values()['model'] for r in protocol.records(uart, 'model_failed')] != [2]:
         problems.append('the damaged model was not said')
     if opened != [faces[0], faces[0], faces[2]]:
         problems.append(f'the damaged library: models opened with {opened} faces, not the first, the first again, the third '

@@ -63,11 +63,11 @@ def qemu(args):
     report = json.load(open(os.path.join(out, 'report.json')))
     uart = open(os.path.join(out, 'uart.log')).read()
     b = protocol.first(uart, 'board')  # @board NAME WxH scanout BOOL
-    if r.returncode != 0 or not b or len(b.words) < 2:
+    if r.returncode != 0 or not b or 'x' not in str(b.fields().get('size', '')):
         print(uart)
         print(f'FAIL: firmware exit {r.returncode}')
         return 1
-    w, h = (int(v) for v in b.words[1].split('x'))
+    w, h = (int(v) for v in b.values()['size'].split('x'))
     failed = 0
     for view in VIEWS:
         shot = os.path.join(out, f'{view}.png')

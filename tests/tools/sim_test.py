@@ -20,13 +20,13 @@ of the faces), the picks must name the same faces, and the session must change t
 import argparse
 import hashlib
 import os
-import re
 import subprocess
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 sys.path.insert(0, os.path.join(ROOT, 'tools'))
 import img  # noqa: E402
+import protocol  # noqa: E402
 
 # The taps come after a fit (f: framed again from the direction the session turned to): the
 # one in the middle of the screen lands on the part, the one in the corner on nothing.
@@ -54,7 +54,7 @@ def run(sim, fpk, out, size, mode):
     for s in SESSION:
         cmd += ['--send', s.format(mx=w // 2, my=h // 2)]
     r = subprocess.run(cmd, capture_output=True, text=True, env=env, timeout=300)
-    picks = re.findall(r'^@pick .*$', r.stdout, re.M)
+    picks = [p.values() for p in protocol.records(r.stdout, 'pick')]
     return r, picks
 
 
@@ -78,8 +78,7 @@ def main():
             r, picks[mode] = run(args.sim, fpk, outs[mode], size, mode)
             if r.returncode != 0:
                 problems.append(f'{mode}: exit {r.returncode}: {r.stderr.strip()[-300:]}')
-        if len(picks['headless']) != 3 or not picks['headless'][0].startswith('@pick face') or \
-                not picks['headless'][1].startswith('@pick none'):
+        if [p['hit'] for p in picks['headless']][:2] != [1, 0] or len(picks['headless']) != 3:
             problems.append(f'the picks: {picks["headless"]} (the tap in the middle hits a face, the corner one nothing)')
         if picks['window'] != picks['headless']:
             problems.append(f'window picks {picks["window"]} vs headless {picks["headless"]}')

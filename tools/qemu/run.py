@@ -257,7 +257,6 @@ def main():
         rec = protocol.parse(line)
         if rec is None:
             continue
-        words = ['@' + rec.name] + rec.words
         if rec.name == 'idle':
             # Each entry ends with ENQ (0x05) on the UART: the firmware says '@idle' again only
             # once it has handled everything before it (mouse packets are polled first).
@@ -306,14 +305,18 @@ def main():
                 if enq:
                     send(enq)
             continue
-        if words[0] in ('@shot', '@dump') and len(words) >= 2 and not all(
-                safe_name(w.removesuffix('.f565')) for w in words[1:3]):
+        try:
+            v = rec.values()  # (the table of tools/protocol.py)
+        except ValueError as e:
+            report['failures'].append(str(e))
+            continue
+        if rec.name in ('shot', 'dump') and not all(safe_name(w.removesuffix('.f565')) for w in rec.words):
             # The name becomes a file in OUT: never a path (a firmware could print anything).
-            report['failures'].append(f'{" ".join(words[:3])!r}: not a file name (letters, digits, - and _ only); ignored')
-            if words[0] == '@shot':
+            report['failures'].append(f'{rec.line!r}: not a file name (letters, digits, - and _ only); ignored')
+            if rec.name == 'shot':
                 send(protocol.ACK)
-        elif rec.name == 'shot' and len(rec.words) == 1:
-            name = words[1]
+        elif rec.name == 'shot':
+            name = v['name']
             try:
                 if qmp is None:
                     qmp = Qmp(qmp_path)
@@ -323,36 +326,34 @@ def main():
             except (OSError, RuntimeError) as e:
                 report['failures'].append(f'screendump {name}: {e}')
             send(protocol.ACK)
-        elif rec.name == 'dump' and len(rec.words) == 2:
-            png = os.path.join(out, f'{words[1]}.png')
+        elif rec.name == 'dump':
+            png = os.path.join(out, f'{v["name"]}.png')
             try:
-                img.f565_to_png(os.path.join(out, words[2]), png)
+                img.f565_to_png(os.path.join(out, v['file']), png)
                 report['shots'].append(os.path.relpath(png, ROOT))
             except (OSError, ValueError) as e:
-                report['failures'].append(f'dump {words[1]}: {e}')
-        elif rec.name == 'begin' and len(rec.words) == 1:
+                report['failures'].append(f'dump {v["name"]}: {e}')
+        elif rec.name == 'begin':
             parents.append(open_regions[-1] if open_regions else None)
             open_regions.append(len(begins))
-            begins.append(rec.words[0])
-        elif rec.name == 'end' and len(rec.words) == 1 and open_regions:
+            begins.append(str(v['region']))
+        elif rec.name == 'end' and open_regions:
             open_regions.pop()
-        elif rec.name == 'ram' and len(rec.words) == 3:
-            report['ram'][rec.words[0]] = int(rec.words[2])
-        elif rec.name == 'stack' and len(rec.words) >= 4:  # used N of M bytes
-            report['stack_used'], report['stack_size'] = int(rec.words[1]), int(rec.words[3])
-        elif rec.name == 'tessellation' and len(rec.words) >= 8:
-            kv = rec.fields()
-            report['model'] = {'faces': kv['faces'], 'faces_failed': kv['failed'], 'triangles': kv['triangles'],
-                               'mesh_bytes': kv['mesh_bytes']}
-        elif rec.name == 'pick' and rec.words and rec.words[0] == 'face':
-            kv = rec.fields()
-            report.setdefault('picks', []).append({'face': kv['face'], 'instance': kv['instance'], 'lines': []})
+        elif rec.name == 'ram':
+            report['ram'][str(v['name'])] = v['bytes']
+        elif rec.name == 'stack':
+            report['stack_used'], report['stack_size'] = v['used'], v['size']
+        elif rec.name == 'tessellation':
+            report['model'] = {'faces': v['faces'], 'faces_failed': v['failed'], 'triangles': v['triangles'],
+                               'mesh_bytes': v['mesh_bytes']}
+        elif rec.name == 'pick' and v.get('hit') == 1:
+            report.setdefault('picks', []).append({'face': v['face'], 'instance': v['instance'], 'lines': []})
         elif rec.name == 'measure' and report.get('picks'):
-            report['picks'][-1]['lines'].append(rec.text())  # the picked faces' exact values
-        elif rec.name == 'memory' and len(rec.words) >= 2:
-            report['memory'] = rec.fields()
-        elif rec.name == 'expect' and len(rec.words) == 2:
-            report.setdefault('expect', {})[rec.words[0]] = int(rec.words[1])
+            report['picks'][-1]['lines'].append(v['text'])  # the picked faces' exact values
+        elif rec.name == 'memory':
+            report['memory'] = v
+        elif rec.name == 'expect':
+            report.setdefault('expect', {})[str(v['region'])] = v['instructions']
 
     if timed_out:
         proc.kill()

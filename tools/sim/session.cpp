@@ -211,35 +211,20 @@ bool Session::capture(const std::string& name) {
     return true;
 }
 
-// The module's events as the boards' firmware prints them, and its screenshots.
+// The module's events as the boards' firmware prints them (facet/records.h), and its screenshots.
+// Quiet: none; verbose: every record; else all but those of each frame and view change.
 void Session::event(void* self, const facet::Event& e) {
     using Kind = facet::Event::Kind;
     Session& s = *static_cast<Session*>(self);
-    char text[200];
+    const bool chatty = e.kind == Kind::FrameDone || e.kind == Kind::ViewChanged || e.kind == Kind::Progress;
+    if (!s.opt_.quiet && (s.opt_.verbose || !chatty)) s.record(facet::event_record(e, s.record_, sizeof s.record_));
     switch (e.kind) {
-    case Kind::FaceFailed:
-        facet::describe(e.why, text, sizeof text);
-        if (!s.opt_.quiet) std::printf("@face %u failed: %s; it stays wireframe\n", e.failed.face, text);
-        break;
-    case Kind::PassFailed:
+    case Kind::PassFailed: {
+        char text[facet::kRecordBytes];
         facet::describe(e.why, text, sizeof text);
         std::fprintf(stderr, "facet-sim: the edges at this level of detail: %s\n", text);
         break;
-    case Kind::Tessellated:
-        if (!s.opt_.quiet) {
-            std::printf("@%s faces %u failed %u triangles %u\n", e.tessellated.pass ? "retessellation" : "tessellation",
-                        e.tessellated.faces, e.tessellated.failed, e.tessellated.triangles);
-        }
-        break;
-    case Kind::ViewChanged:
-        if (s.opt_.verbose) std::printf("@view yaw %.2f pitch %.2f zoom %.4f\n", e.view.yaw_deg, e.view.pitch_deg, e.view.zoom);
-        break;
-    case Kind::Picked:
-        if (!s.opt_.quiet) {
-            if (e.pick.hit) std::printf("@pick face %u instance %u at %d %d\n", e.pick.face, e.pick.instance, e.pick.x, e.pick.y);
-            else std::printf("@pick none at %d %d\n", e.pick.x, e.pick.y);
-        }
-        break;
+    }
     case Kind::FrameDone: {
         const auto& f = e.frame;
         if (f.pass != 0 || f.boxes) break; // (the parts' boxes while the edges are sampled: no screenshot)
@@ -250,6 +235,15 @@ void Session::event(void* self, const facet::Event& e) {
     }
     default: break;
     }
+}
+
+void Session::record(uint32_t length) {
+    if (length == 0) return;
+    if (length >= sizeof record_) {
+        std::fprintf(stderr, "facet-sim: a record of %u bytes was cut to %zu\n", length, sizeof record_ - 1);
+        length = uint32_t(sizeof record_ - 1);
+    }
+    std::fwrite(record_, 1, length, stdout);
 }
 
 void Session::command(const std::string& text) {

@@ -2,6 +2,7 @@
 // facet-sim's session: the module with a board's buffers (full frames shown by scan-out, or
 // bands copied into a panel), what the screen shows, the test protocol's screenshots, and
 // the entries of a scripted session. The headless and the SDL front end share it.
+#include "facet/records.h"
 #include "facet/viewer.h"
 
 #include <cstdint>
@@ -65,6 +66,7 @@ private:
     static void flush(void* self, const facet::Area& area, const facet::Rgb565* pixels);
     static void event(void* self, const facet::Event& e);
     void command(const std::string& text);
+    void record(uint32_t length); // record_'s first `length` bytes on the standard output
 
     Options opt_;
     std::vector<uint8_t> workspace_storage_;
@@ -79,6 +81,7 @@ private:
     bool quit_ = false, in_line_ = false;
     bool wireframe_ = false, half_ = false, done_ = false;
     std::string line_, shot_;
+    char record_[facet::kRecordBytes] = {};
     int failures_ = 0;
 };
 
