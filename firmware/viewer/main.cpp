@@ -93,10 +93,15 @@ void write_record(hal::Console& con, uint32_t length, const char* line) {
     con.write(line, std::min(length, kRecordBytes - 1));
 }
 
-void on_event(void*, const Event& e) {
-    hal::Console& con = session.board->console;
+void record(hal::Console& con, const Event& e) {
     char line[kRecordBytes];
     write_record(con, event_record(e, line, sizeof line), line);
+}
+
+// Every kind has its case (the same dispatch for the work regions' marks, which count what is
+// between them: nothing of this handler's is done before a mark).
+void on_event(void*, const Event& e) {
+    hal::Console& con = session.board->console;
     switch (e.kind) {
     // Pieces of work as instruction-count regions (with !budget, whole steps instead).
     case Event::Kind::WorkBegin:
@@ -106,15 +111,18 @@ void on_event(void*, const Event& e) {
         if (!session.step_regions) hal::measure_end(con, work_name(e.work.what));
         break;
     case Event::Kind::Loaded:
+        record(con, e);
         if (e.loaded.boxed_parts) {
             print(con, "viewer: the model is larger than the memory: {} parts ({} faces) left out, drawn as their boxes\n",
                   e.loaded.boxed_parts, e.loaded.boxed_faces);
         }
         break;
     case Event::Kind::PassFailed:
+        record(con, e);
         print(con, "viewer: the edges at tolerance {} um: {} ({})\n", um(e.pass.tolerance_mm), e.why, e.why.status);
         break;
     case Event::Kind::FrameDone: {
+        record(con, e);
         const auto& f = e.frame;
         // The screenshots of the first pass: the wireframe, half the faces, all of them.
         if (f.pass != 0 || f.boxes) break; // (the parts' boxes while the edges are sampled: no screenshot)
@@ -124,12 +132,20 @@ void on_event(void*, const Event& e) {
         break;
     }
     case Event::Kind::Picked:
+        record(con, e);
         if (e.pick.hit) session.measured = true; // its exact values once the event is handled (the panel is set after it)
         break;
     case Event::Kind::ModelFailed:
+        record(con, e);
         print(con, "viewer: model {} of the library: {} ({}); the others still open\n", e.model.index + 1, e.why, e.why.status);
         break;
-    default: break;
+    case Event::Kind::Pass:
+    case Event::Kind::Sampled:
+    case Event::Kind::Progress:
+    case Event::Kind::FaceFailed:
+    case Event::Kind::Tessellated:
+    case Event::Kind::ViewChanged:
+    case Event::Kind::BudgetExceeded: record(con, e); break;
     }
 }
 

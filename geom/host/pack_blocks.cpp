@@ -50,7 +50,7 @@ private:
         const auto [it, added] = curves_.try_emplace(c, 0);
         if (added) {
             const Curve& k = from_.curves3()[c];
-            it->second = to_.add_curve(CurveType(k.type), 3, floats_of(from_, k.params, k.count));
+            it->second = to_.add_curve_record(CurveType(k.type), 3, floats_of(from_, k.params, k.count));
         }
         return it->second;
     }
@@ -59,7 +59,7 @@ private:
         if (added) {
             const Surface& k = from_.surfaces()[s];
             const uint32_t ref = k.ref == kNoIndex ? kNoIndex : curve3(k.ref);
-            it->second = to_.add_surface(SurfaceType(k.type), floats_of(from_, k.params, k.count), ref);
+            it->second = to_.add_surface_record(SurfaceType(k.type), floats_of(from_, k.params, k.count), ref);
         }
         return it->second;
     }
@@ -94,7 +94,7 @@ private:
                 (void)to_.add_coedge(Coedge::make(edge(C.edge()), C.reversed(), C.seam()));
                 if (F.first_pcurve != kNoIndex) {
                     const Curve& k = from_.curves2()[from_.pcurve_of(F, c)];
-                    (void)to_.add_curve(CurveType(k.type), 2, floats_of(from_, k.params, k.count));
+                    (void)to_.add_curve_record(CurveType(k.type), 2, floats_of(from_, k.params, k.count));
                 }
             }
             (void)to_.add_loop({first, L.coedge_count});

@@ -16,12 +16,12 @@ uint32_t PackWriter::add_floats(const std::vector<float>& values) {
     return it->second;
 }
 
-uint32_t PackWriter::add_surface(SurfaceType type, const std::vector<float>& params, uint32_t ref) {
+uint32_t PackWriter::add_surface_record(SurfaceType type, const std::vector<float>& params, uint32_t ref) {
     surfaces_.push_back({uint8_t(type), 0, 0, add_floats(params), uint32_t(params.size()), ref});
     return uint32_t(surfaces_.size() - 1);
 }
 
-uint32_t PackWriter::add_curve(CurveType type, uint8_t dim, const std::vector<float>& params) {
+uint32_t PackWriter::add_curve_record(CurveType type, uint8_t dim, const std::vector<float>& params) {
     auto& list = dim == 3 ? curves3_ : curves2_;
     list.push_back({uint8_t(type), dim, 0, add_floats(params), uint32_t(params.size())});
     return uint32_t(list.size() - 1);

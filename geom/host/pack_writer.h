@@ -10,14 +10,37 @@
 
 namespace facet::geom {
 
+// The frame at (x, y, z) along the world's axes (right-handed): an elementary surface's record's head.
+inline pack::Frame axes_at(float x, float y, float z) { return {{x, y, z}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}}; }
+
 class PackWriter {
 public:
     // A block of parameters; returns its first index. A block equal bit for bit to one added
     // before is not stored again (the halves of a hole share their cylinder, say).
     uint32_t add_floats(const std::vector<float>& values);
-    uint32_t add_surface(pack::SurfaceType type, const std::vector<float>& params,
-                         uint32_t ref = pack::kNoIndex);
-    uint32_t add_curve(pack::CurveType type, uint8_t dim, const std::vector<float>& params);
+    // Surfaces and curves from their records (pack_format.h): each record's type goes with it.
+    // Returns the surface's (the curve's, among those of its dimension) index.
+    uint32_t add_surface(const pack::PlaneParams& p) { return add_record(pack::SurfaceType::Plane, p); }
+    uint32_t add_surface(const pack::CylinderParams& p) { return add_record(pack::SurfaceType::Cylinder, p); }
+    uint32_t add_surface(const pack::ConeParams& p) { return add_record(pack::SurfaceType::Cone, p); }
+    uint32_t add_surface(const pack::SphereParams& p) { return add_record(pack::SurfaceType::Sphere, p); }
+    uint32_t add_surface(const pack::TorusParams& p) { return add_record(pack::SurfaceType::Torus, p); }
+    // The curve swept (a 3D curve's index).
+    uint32_t add_surface(const pack::RevolutionParams& p, uint32_t curve) { return add_record(pack::SurfaceType::Revolution, p, curve); }
+    uint32_t add_surface(const pack::ExtrusionParams& p, uint32_t curve) { return add_record(pack::SurfaceType::Extrusion, p, curve); }
+    uint32_t add_curve(const pack::Line3Params& p) { return add_record(pack::CurveType::Line, 3, p); }
+    uint32_t add_curve(const pack::Circle3Params& p) { return add_record(pack::CurveType::Circle, 3, p); }
+    uint32_t add_curve(const pack::Ellipse3Params& p) { return add_record(pack::CurveType::Ellipse, 3, p); }
+    uint32_t add_curve(const pack::Line2Params& p) { return add_record(pack::CurveType::Line, 2, p); }
+    uint32_t add_curve(const pack::Circle2Params& p) { return add_record(pack::CurveType::Circle, 2, p); }
+    uint32_t add_curve(const pack::Ellipse2Params& p) { return add_record(pack::CurveType::Ellipse, 2, p); }
+    // B-splines: the head (BSplineSurfaceHead, BSplineCurveHead) and what follows it, as
+    // pack_format.h lays them out; the writer takes the floats as they are (the reader checks).
+    uint32_t add_bspline_surface(const std::vector<float>& record) { return add_surface_record(pack::SurfaceType::BSpline, record); }
+    uint32_t add_bspline_curve(uint8_t dim, const std::vector<float>& record) { return add_curve_record(pack::CurveType::BSpline, dim, record); }
+    // A record of a stated type as its floats (one pack's records copied into another: pack_blocks).
+    uint32_t add_surface_record(pack::SurfaceType type, const std::vector<float>& params, uint32_t ref = pack::kNoIndex);
+    uint32_t add_curve_record(pack::CurveType type, uint8_t dim, const std::vector<float>& params);
     uint32_t add_vertex(float x, float y, float z);
     uint32_t add_edge(const pack::Edge& e);
     // Edge e's two faces meet tangentially (pack::SectionId::SmoothEdges).
@@ -48,6 +71,21 @@ public:
     std::string summary() const;
 
 private:
+    template <typename Params>
+    static std::vector<float> floats_of(const Params& p) {
+        static_assert(sizeof(Params) % sizeof(float) == 0, "a record is floats");
+        const float* f = reinterpret_cast<const float*>(&p);
+        return std::vector<float>(f, f + sizeof(Params) / sizeof(float));
+    }
+    template <typename Params>
+    uint32_t add_record(pack::SurfaceType type, const Params& p, uint32_t ref = pack::kNoIndex) {
+        return add_surface_record(type, floats_of(p), ref);
+    }
+    template <typename Params>
+    uint32_t add_record(pack::CurveType type, uint8_t dim, const Params& p) {
+        return add_curve_record(type, dim, floats_of(p));
+    }
+
     std::vector<float> floats_;
     std::map<std::string, uint32_t> blocks_; // a block's bytes -> its first index
     std::vector<pack::Surface> surfaces_;

@@ -139,8 +139,7 @@ inline Elementary::Elementary(const Pack& pack, const pack::Surface& s) : type_(
         O_ = X_ = Y_ = Z_ = {0, 0, 0};
         return;
     }
-    // Every elementary record starts with its frame (pack_format.h).
-    const pack::Frame& f = params<pack::PlaneParams>(pack, s).frame;
+    const pack::Frame& f = frame_of(pack, s);
     O_ = vec3(f.origin), X_ = vec3(f.x), Y_ = vec3(f.y), Z_ = vec3(f.z);
     switch (type_) {
     case pack::SurfaceType::Cylinder: radius_ = params<pack::CylinderParams>(pack, s).radius; break;
@@ -202,7 +201,7 @@ inline Elementary::Normals Elementary::normals(float flip) const {
     Normals n;
     n.type_ = type_, n.O_ = O_, n.Z_ = Z_;
     // du x dv is +-(X x Y)-oriented: the sign of a left-handed placement goes with it.
-    const float hand = dot(cross(X_, Y_), Z_) < 0 ? -flip : flip;
+    const float hand = left_handed(X_, Y_, Z_) ? -flip : flip;
     switch (type_) {
     case pack::SurfaceType::Plane: n.plane_ = Z_ * hand; break;
     case pack::SurfaceType::Cylinder:

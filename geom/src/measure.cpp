@@ -5,6 +5,10 @@
 #include <cmath>
 
 namespace facet::geom {
+
+// A D3's component k, for left_handed() (geom/params.h).
+constexpr double component(const D3& v, int k) { return k == 0 ? v.x : k == 1 ? v.y : v.z; }
+
 namespace {
 
 D3 operator-(D3 a, D3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
@@ -76,11 +80,9 @@ Result describe_face(const Pack& pack, uint32_t face, const float* m, FaceGeomet
     case pack::SurfaceType::Cone:
     case pack::SurfaceType::Sphere:
     case pack::SurfaceType::Torus: {
-        const pack::Frame& f = params<pack::PlaneParams>(pack, S).frame; // every elementary record's head
+        const pack::Frame& f = frame_of(pack, S);
         const D3 O = d3(f.origin), X = d3(f.x), Y = d3(f.y), Z = d3(f.z);
-        // The surfaces' natural normal is outward (away from the axis, for a cylinder) on a
-        // right-handed frame; a left-handed one turns it in.
-        const double handed = dot(cross(X, Y), Z) < 0 ? -1 : 1;
+        const double handed = left_handed(X, Y, Z) ? -1 : 1; // (a left-handed frame turns the natural normal in)
         g.origin = place_point(m, O);
         if (g.type == pack::SurfaceType::Plane) {
             g.axis = unit(place_direction(m, cross(X, Y) * sense));

@@ -25,7 +25,7 @@ bool round_face(const module::Scene& scene, uint32_t f, module::RoundFace& r) {
     const pack::Surface& S = block.pack.surfaces()[F.surface];
     const auto type = pack::SurfaceType(S.type);
     if (type != pack::SurfaceType::Cylinder && type != pack::SurfaceType::Cone) return false;
-    const pack::Frame& frame = geom::params<pack::PlaneParams>(block.pack, S).frame; // (every elementary record starts with its frame)
+    const pack::Frame& frame = geom::frame_of(block.pack, S);
     r.radius = 0, r.sin_a = 0, r.cos_a = 1;
     if (type == pack::SurfaceType::Cylinder) {
         r.radius = geom::params<pack::CylinderParams>(block.pack, S).radius;
@@ -39,7 +39,7 @@ bool round_face(const module::Scene& scene, uint32_t f, module::RoundFace& r) {
     r.span = F.uv_max[0] - F.uv_min[0];
     if (!(r.span >= 0) || !(r.radius > 0)) return false;
     for (int k = 0; k < 3; ++k) r.o[k] = frame.origin[k], r.x[k] = frame.x[k], r.y[k] = frame.y[k], r.z[k] = frame.z[k];
-    r.sign = (F.reversed ? -1.0f : 1.0f) * module::handedness(frame); // (du x dv: outward in a right-handed frame)
+    r.sign = (F.reversed ? -1.0f : 1.0f) * (geom::left_handed(frame) ? -1.0f : 1.0f); // (du x dv: geom::left_handed)
     geom::sincos_f(F.uv_min[0], r.s0, r.c0);
     geom::sincos_f(F.uv_max[0], r.s1, r.c1);
     return true;

@@ -66,8 +66,10 @@ struct Carve {
     std::span<module::Projected> projected;
     Result face_bound;
 
+    // The array as the plan states it, of the type the part takes (the same size and alignment).
     template <typename T>
     std::span<T> as(size_t count, size_t bytes, size_t align) {
+        FACET_ASSERT("module", bytes == sizeof(T) && align == alignof(T));
         void* p = k.take(count * bytes, align);
         return p ? std::span<T>(static_cast<T*>(p), count) : std::span<T>();
     }
@@ -94,12 +96,9 @@ struct Carve {
     }
     void face(const geom::FaceCapacity& f) {
         const size_t bytes = geom::face_storage_bytes(f);
-        // The scratch: the storage but its last array, the B-spline patches (they stay between a
-        // face's pieces and are found again by their surface: never written over).
-        const size_t patches = size_t(f.patch_words) * 4 + 8;
         if (void* p = k.take(bytes, 8)) {
             face_bound = scheduler.storage.bind(p, bytes, f);
-            scheduler.scratch = {static_cast<uint8_t*>(p), bytes > patches ? bytes - patches : 0};
+            scheduler.scratch = {static_cast<uint8_t*>(p), geom::face_scratch_bytes(f)};
         } else {
             face_bound = Result::fail(Status::Full, "no room for a face's storage");
         }

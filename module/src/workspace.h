@@ -37,6 +37,11 @@ enum class Array : uint8_t {
 constexpr geom::FaceCapacity face_capacity(const Capacity& c, uint32_t patch_words = geom::kPatchCacheWords) {
     return {c.face_points, c.loops, c.slivers, patch_words};
 }
+// One default: geom's for a face and the public API's (facet/sizes.h) are the same numbers.
+static_assert(face_capacity(Capacity{}).points == geom::FaceCapacity{}.points &&
+                  face_capacity(Capacity{}).loops == geom::FaceCapacity{}.loops &&
+                  face_capacity(Capacity{}).slivers == geom::FaceCapacity{}.slivers,
+              "geom::FaceCapacity's defaults are facet/sizes.h's FACET_DEFAULT_FACE_POINTS, _LOOPS, _SLIVERS");
 
 // The model's part of the workspace: what load() lays out for one model.
 struct ModelCapacity {
@@ -128,7 +133,13 @@ struct ModelPlan {
     size_t need = 0;
     bool fits = false;
 };
-constexpr size_t kSampleBytes = sizeof(float) + sizeof(geom::Vec3) + 3 * sizeof(int32_t); // SampleT, P, Q
+// The bytes of one edge sample: its arrays' (SampleT, P, Q) in the model's plan.
+constexpr size_t sample_bytes() {
+    Measure<true> one;
+    model_plan(ModelCapacity{0, 0, 1, 0, 0}, one);
+    return one.at;
+}
+constexpr size_t kSampleBytes = sample_bytes();
 constexpr uint32_t kSampleShare = 30, kVertexShare = 45, kTriangleShare = 25; // percent of the room left
 // The room left whose sample share holds `samples`.
 constexpr size_t sample_share_room(size_t samples) { return (samples * kSampleBytes * 100 + kSampleShare - 1) / kSampleShare; }

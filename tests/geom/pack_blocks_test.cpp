@@ -46,7 +46,7 @@ Bytes boxes_pack(int n, const Needs* needs = nullptr) {
         const uint32_t first_face = w.face_count();
         for (int f = 0; f < 6; ++f) {
             const float z = (f & 1) ? s : 0;
-            const uint32_t surf = w.add_surface(SurfaceType::Plane, {0, 0, z + float(f), 1, 0, 0, 0, 1, 0, 0, 0, 1});
+            const uint32_t surf = w.add_surface(pack::PlaneParams{geom::axes_at(0, 0, z + float(f))});
             const uint32_t first = w.coedge_count();
             for (int k = 0; k < 4; ++k) w.add_coedge(Coedge::make(e[sides[f][k]], k >= 2, Seam::None));
             const uint32_t loop = w.add_loop({first, 4});

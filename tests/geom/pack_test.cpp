@@ -2,6 +2,7 @@
 // reads a valid pack in place.
 #include "geom/pack.h"
 #include "geom/pack_file.h"
+#include "geom/params.h"
 #include "pack_io.h"
 #include "pack_writer.h"
 
@@ -34,7 +35,7 @@ std::vector<uint8_t> cube_pack(std::initializer_list<uint32_t> smooth = {}, cons
         const int ia = edges[i][0], ib = edges[i][1];
         const float o[3] = {s * (ia & 1), s * ((ia >> 1) & 1), s * ((ia >> 2) & 1)};
         const float d[3] = {s * ((ib & 1) - (ia & 1)), s * (((ib >> 1) & 1) - ((ia >> 1) & 1)), s * (((ib >> 2) & 1) - ((ia >> 2) & 1))};
-        const uint32_t c = i < 6 ? kStraight : w.add_curve(CurveType::Line, 3, {o[0], o[1], o[2], d[0] / s, d[1] / s, d[2] / s});
+        const uint32_t c = i < 6 ? kStraight : w.add_curve(pack::Line3Params{.origin = {o[0], o[1], o[2]}, .direction = {d[0] / s, d[1] / s, d[2] / s}});
         e[i] = w.add_edge({c, 0, s, a, b, 1e-7f, 0});
     }
     for (uint32_t i : smooth) w.set_smooth_edge(e[i]); // (as if those edges were rounded)
@@ -42,10 +43,10 @@ std::vector<uint8_t> cube_pack(std::initializer_list<uint32_t> smooth = {}, cons
     const uint32_t colour = w.add_colour({200, 180, 40, 255});
     const uint32_t first_face = w.face_count();
     for (int f = 0; f < 6; ++f) {
-        const uint32_t surf = w.add_surface(SurfaceType::Plane, {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1});
+        const uint32_t surf = w.add_surface(pack::PlaneParams{geom::axes_at(0, 0, 0)});
         const uint32_t first = w.coedge_count(), first_pcurve = f < 3 ? w.curve2_count() : kNoIndex;
         for (int k = 0; k < 4; ++k) {
-            if (f < 3) w.add_curve(CurveType::Line, 2, {0, 0, 1, 0});
+            if (f < 3) w.add_curve(pack::Line2Params{.origin = {0, 0}, .direction = {1, 0}});
             w.add_coedge(Coedge::make(e[(f * 2 + k) % 12], k & 1, Seam::None));
         }
         const uint32_t loop = w.add_loop({first, 4});
@@ -385,10 +386,10 @@ TEST(Pack, BSplineHeadsAreChecked) {
     // Degree 3, 4 poles, 8 knots, non-rational: 5 + 8 + 4*3 = 25 floats.
     std::vector<float> good = {3, 4, 8, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1};
     for (int i = 0; i < 12; ++i) good.push_back(float(i));
-    w.add_curve(CurveType::BSpline, 3, good);
+    w.add_bspline_curve(3, good);
     std::vector<float> bad = good;
     bad[2] = 9; // knot count inconsistent with poles + degree + 1
-    w.add_curve(CurveType::BSpline, 3, bad);
+    w.add_bspline_curve(3, bad);
     Buf b(w.finish());
     Pack p;
     const Result pr = b.open(p);
@@ -409,7 +410,7 @@ TEST(Pack, BSplineKnotsMustNotDecreaseAndWeightsMustBePositive) {
     weight[31] = 0;
     for (const auto& [floats, ok] : {std::pair{good, true}, std::pair{knots, false}, std::pair{weight, false}}) {
         PackWriter w;
-        w.add_surface(SurfaceType::BSpline, floats);
+        w.add_bspline_surface(floats);
         Buf b(w.finish());
         Pack p;
         const Result r = b.open(p);
@@ -456,4 +457,41 @@ TEST(Pack, APlacementThatIsNoRotationIsRefused) {
     EXPECT_TRUE(with([](float* m) { m[0] = -1; }).ok()) << "a mirror";
     EXPECT_TRUE(with([](float* m) { m[1] = 5e-5f; }).ok()) << "within the tolerance";
     EXPECT_TRUE(with([](float* m) { m[3] = 9e7f; }).ok());
+}
+
+// A record is read as its own type only (params<T>: checked where assertions are on), and every
+// caller takes a frame's sense from left_handed(), in floats, doubles and Q14 integers alike.
+TEST(Params, ARecordIsReadAsItsOwnTypeOnly) {
+    PackWriter w;
+    const uint32_t cylinder = w.add_surface(CylinderParams{axes_at(0, 0, 0), 5});
+    const uint32_t circle = w.add_curve(Circle2Params{.origin = {0, 0}, .x = {1, 0}, .y = {0, 1}, .radius = 2});
+    (void)w.add_surface(PlaneParams{axes_at(0, 0, 1)});
+    const std::vector<uint8_t> bytes = w.finish();
+    Pack p;
+    ASSERT_TRUE(p.open(bytes.data(), bytes.size()).ok());
+    const Surface& s = p.surfaces()[cylinder];
+    EXPECT_TRUE(holds<CylinderParams>(s));
+    EXPECT_FALSE(holds<PlaneParams>(s));
+    EXPECT_FALSE(holds<SphereParams>(s));
+    EXPECT_EQ(params<CylinderParams>(p, s).radius, 5.0f);
+    EXPECT_EQ(frame_of(p, s).z[2], 1.0f); // every elementary record's frame
+    const Curve& c = p.curves2()[circle];
+    EXPECT_TRUE(holds<Circle2Params>(c));
+    EXPECT_FALSE(holds<Circle3Params>(c)); // (a 2D circle is no 3D one)
+#ifndef NDEBUG
+    EXPECT_DEATH((void)params<PlaneParams>(p, s), "holds<Params>");
+#endif
+}
+
+TEST(Params, LeftHandedFramesInEveryArithmetic) {
+    const float x[3] = {1, 0, 0}, y[3] = {0, 1, 0}, z[3] = {0, 0, 1}, minus_z[3] = {0, 0, -1};
+    EXPECT_FALSE(left_handed(x, y, z));
+    EXPECT_TRUE(left_handed(x, y, minus_z));
+    EXPECT_TRUE(left_handed(Vec3{0, 1, 0}, Vec3{1, 0, 0}, Vec3{0, 0, 1})); // x and y swapped
+    const int64_t qx[3] = {16384, 0, 0}, qy[3] = {0, 0, 16384}, qz[3] = {0, 16384, 0};
+    EXPECT_TRUE(left_handed(qx, qy, qz)); // (1,0,0) x (0,0,1) = (0,-1,0): against z = (0,1,0)
+    Frame f = axes_at(3, 4, 5);
+    EXPECT_FALSE(left_handed(f));
+    f.y[1] = -1;
+    EXPECT_TRUE(left_handed(f));
 }

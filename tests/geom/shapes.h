@@ -60,8 +60,8 @@ inline Bytes plate_with_holes(const std::array<Hole, 2>& kPlateHoles = test::kPl
         const Hole& o = kPlateHoles[k];
         const float cs = std::cos(o.seam), sn = std::sin(o.seam);
         const uint32_t vb = w.add_vertex(o.cx + o.r * cs, o.cy + o.r * sn, 0), vt = w.add_vertex(o.cx + o.r * cs, o.cy + o.r * sn, Z);
-        const uint32_t cb = w.add_curve(pack::CurveType::Circle, 3, {o.cx, o.cy, 0, cs, sn, 0, -sn, cs, 0, o.r});
-        const uint32_t ct = w.add_curve(pack::CurveType::Circle, 3, {o.cx, o.cy, Z, cs, sn, 0, -sn, cs, 0, o.r});
+        const uint32_t cb = w.add_curve(pack::Circle3Params{.origin = {o.cx, o.cy, 0}, .x = {cs, sn, 0}, .y = {-sn, cs, 0}, .radius = o.r});
+        const uint32_t ct = w.add_curve(pack::Circle3Params{.origin = {o.cx, o.cy, Z}, .x = {cs, sn, 0}, .y = {-sn, cs, 0}, .radius = o.r});
         h[k] = {w.add_edge({cb, 0, kTwoPi, vb, vb, 1e-7f, 0}), w.add_edge({ct, 0, kTwoPi, vt, vt, 1e-7f, 0}),
                 straight(w, vb, vt, Z)};
     }
@@ -71,8 +71,8 @@ inline Bytes plate_with_holes(const std::array<Hole, 2>& kPlateHoles = test::kPl
         for (auto [e, reversed] : coedges) w.add_coedge(Coedge::make(e, reversed, Seam::None));
         return w.add_loop({first, uint32_t(coedges.size())});
     };
-    auto plane = [&](std::array<float, 12> frame, uint32_t first_loop, uint32_t loops, std::array<float, 4> bounds) {
-        const uint32_t s = w.add_surface(pack::SurfaceType::Plane, std::vector<float>(frame.begin(), frame.end()));
+    auto plane = [&](const pack::Frame& frame, uint32_t first_loop, uint32_t loops, std::array<float, 4> bounds) {
+        const uint32_t s = w.add_surface(pack::PlaneParams{frame});
         faces.push_back(w.add_face({s, first_loop, loops, pack::kNoIndex, pack::kNoIndex, 0, {0, 0, 0},
                                     {bounds[0], bounds[1]}, {bounds[2], bounds[3]}}));
     };
@@ -80,24 +80,24 @@ inline Bytes plate_with_holes(const std::array<Hole, 2>& kPlateHoles = test::kPl
     uint32_t first = loop({{x01, false}, {y11, false}, {x11, true}, {y01, true}});
     loop({{h[0].top, true}});
     loop({{h[1].top, true}});
-    plane({0, 0, Z, 1, 0, 0, 0, 1, 0, 0, 0, 1}, first, 3, {0, 0, X, Y});
+    plane({.origin = {0, 0, Z}, .x = {1, 0, 0}, .y = {0, 1, 0}, .z = {0, 0, 1}}, first, 3, {0, 0, X, Y});
     // Bottom (z = 0, normal -z: x = (1,0,0), y = (0,-1,0), (u,v) = (x, -y)).
     first = loop({{y00, false}, {x10, false}, {y10, true}, {x00, true}});
     loop({{h[0].bottom, false}});
     loop({{h[1].bottom, false}});
-    plane({0, 0, 0, 1, 0, 0, 0, -1, 0, 0, 0, -1}, first, 3, {0, -Y, X, 0});
+    plane({.origin = {0, 0, 0}, .x = {1, 0, 0}, .y = {0, -1, 0}, .z = {0, 0, -1}}, first, 3, {0, -Y, X, 0});
     // The sides, outward: -y (x, z), +x (y, z), +y (-x, z), -x (-y, z).
-    plane({0, 0, 0, 1, 0, 0, 0, 0, 1, 0, -1, 0}, loop({{x00, false}, {z10, false}, {x01, true}, {z00, true}}), 1, {0, 0, X, Z});
-    plane({X, 0, 0, 0, 1, 0, 0, 0, 1, 1, 0, 0}, loop({{y10, false}, {z11, false}, {y11, true}, {z10, true}}), 1, {0, 0, Y, Z});
-    plane({X, Y, 0, -1, 0, 0, 0, 0, 1, 0, 1, 0}, loop({{x10, true}, {z01, false}, {x11, false}, {z11, true}}), 1, {0, 0, X, Z});
-    plane({0, Y, 0, 0, -1, 0, 0, 0, 1, -1, 0, 0}, loop({{y00, true}, {z00, false}, {y01, false}, {z01, true}}), 1, {0, 0, Y, Z});
+    plane({.origin = {0, 0, 0}, .x = {1, 0, 0}, .y = {0, 0, 1}, .z = {0, -1, 0}}, loop({{x00, false}, {z10, false}, {x01, true}, {z00, true}}), 1, {0, 0, X, Z});
+    plane({.origin = {X, 0, 0}, .x = {0, 1, 0}, .y = {0, 0, 1}, .z = {1, 0, 0}}, loop({{y10, false}, {z11, false}, {y11, true}, {z10, true}}), 1, {0, 0, Y, Z});
+    plane({.origin = {X, Y, 0}, .x = {-1, 0, 0}, .y = {0, 0, 1}, .z = {0, 1, 0}}, loop({{x10, true}, {z01, false}, {x11, false}, {z11, true}}), 1, {0, 0, X, Z});
+    plane({.origin = {0, Y, 0}, .x = {0, -1, 0}, .y = {0, 0, 1}, .z = {-1, 0, 0}}, loop({{y00, true}, {z00, false}, {y01, false}, {z01, true}}), 1, {0, 0, Y, Z});
     // The holes' walls: cylinders about z, reversed (the solid is outside them). Counter-
     // clockwise in (u, v) = (angle, z): the bottom circle, up the seam at u = 2 pi, the top
     // circle back, down the seam at u = 0.
     for (int k = 0; k < 2; ++k) {
         const Hole& o = kPlateHoles[k];
         const float cs = std::cos(o.seam), sn = std::sin(o.seam);
-        const uint32_t s = w.add_surface(pack::SurfaceType::Cylinder, {o.cx, o.cy, 0, cs, sn, 0, -sn, cs, 0, 0, 0, 1, o.r});
+        const uint32_t s = w.add_surface(pack::CylinderParams{{.origin = {o.cx, o.cy, 0}, .x = {cs, sn, 0}, .y = {-sn, cs, 0}, .z = {0, 0, 1}}, o.r});
         const uint32_t fc = w.coedge_count();
         w.add_coedge(Coedge::make(h[k].bottom, false, Seam::None));
         w.add_coedge(Coedge::make(h[k].seam, false, Seam::UHigh));
@@ -127,7 +127,7 @@ inline Bytes hooked_sheet() {
         const uint32_t e = straight(w, v[k], v[(k + 1) % v.size()], std::hypot(b[0] - a[0], b[1] - a[1]));
         w.add_coedge(Coedge::make(e, false, Seam::None));
     }
-    const uint32_t s = w.add_surface(pack::SurfaceType::Plane, {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1});
+    const uint32_t s = w.add_surface(pack::PlaneParams{geom::axes_at(0, 0, 0)});
     const uint32_t face = w.add_face({s, w.add_loop({first, uint32_t(v.size())}), 1, pack::kNoIndex, pack::kNoIndex, 0, {0, 0, 0},
                                       {0, 0}, {10, 10.05f}});
     w.add_instance({w.add_shell({face, 1, pack::kNoIndex, 0}), {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0}});
@@ -140,8 +140,8 @@ inline Bytes hooked_sheet() {
 inline Bytes half_round_bar() {
     PackWriter w;
     const uint32_t va = w.add_vertex(10, 0, 0), vb = w.add_vertex(-10, 0, 0), vc = w.add_vertex(10, 0, 40), vd = w.add_vertex(-10, 0, 40);
-    const uint32_t low = w.add_curve(pack::CurveType::Circle, 3, {0, 0, 0, 1, 0, 0, 0, 1, 0, 10});
-    const uint32_t high = w.add_curve(pack::CurveType::Circle, 3, {0, 0, 40, 1, 0, 0, 0, 1, 0, 10});
+    const uint32_t low = w.add_curve(pack::Circle3Params{.origin = {0, 0, 0}, .x = {1, 0, 0}, .y = {0, 1, 0}, .radius = 10});
+    const uint32_t high = w.add_curve(pack::Circle3Params{.origin = {0, 0, 40}, .x = {1, 0, 0}, .y = {0, 1, 0}, .radius = 10});
     const uint32_t A = w.add_edge({low, 0, kPi, va, vb, 1e-7f, 0}), B = w.add_edge({high, 0, kPi, vc, vd, 1e-7f, 0});
     const uint32_t L1 = straight(w, va, vc, 40), L2 = straight(w, vb, vd, 40), D0 = straight(w, vb, va, 20), D1 = straight(w, vd, vc, 20);
     auto loop = [&](std::initializer_list<std::pair<uint32_t, bool>> coedges) {
@@ -149,17 +149,16 @@ inline Bytes half_round_bar() {
         for (auto [e, reversed] : coedges) w.add_coedge(Coedge::make(e, reversed, Seam::None));
         return w.add_loop({first, uint32_t(coedges.size())});
     };
-    auto face = [&](pack::SurfaceType type, std::vector<float> params, uint32_t l, std::array<float, 4> bounds) {
-        const uint32_t s = w.add_surface(type, std::move(params));
+    auto face = [&](uint32_t s, uint32_t l, std::array<float, 4> bounds) {
         return w.add_face({s, l, 1, pack::kNoIndex, pack::kNoIndex, 0, {0, 0, 0}, {bounds[0], bounds[1]}, {bounds[2], bounds[3]}});
     };
     // Counter-clockwise in each face's (u, v): the round face in (angle, z); the flat side in
     // (x, z), normal -y; the bottom in (x, -y), normal -z; the top in (x, y), normal +z.
-    const uint32_t first = face(pack::SurfaceType::Cylinder, {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 10},
+    const uint32_t first = face(w.add_surface(pack::CylinderParams{geom::axes_at(0, 0, 0), 10}),
                                 loop({{A, false}, {L2, false}, {B, true}, {L1, true}}), {0, 0, kPi, 40});
-    face(pack::SurfaceType::Plane, {0, 0, 0, 1, 0, 0, 0, 0, 1, 0, -1, 0}, loop({{D0, false}, {L1, false}, {D1, true}, {L2, true}}), {-10, 0, 10, 40});
-    face(pack::SurfaceType::Plane, {0, 0, 0, 1, 0, 0, 0, -1, 0, 0, 0, -1}, loop({{D0, true}, {A, true}}), {-10, -10, 10, 0});
-    face(pack::SurfaceType::Plane, {0, 0, 40, 1, 0, 0, 0, 1, 0, 0, 0, 1}, loop({{B, false}, {D1, false}}), {-10, 0, 10, 10});
+    face(w.add_surface(pack::PlaneParams{{.origin = {0, 0, 0}, .x = {1, 0, 0}, .y = {0, 0, 1}, .z = {0, -1, 0}}}), loop({{D0, false}, {L1, false}, {D1, true}, {L2, true}}), {-10, 0, 10, 40});
+    face(w.add_surface(pack::PlaneParams{{.origin = {0, 0, 0}, .x = {1, 0, 0}, .y = {0, -1, 0}, .z = {0, 0, -1}}}), loop({{D0, true}, {A, true}}), {-10, -10, 10, 0});
+    face(w.add_surface(pack::PlaneParams{{.origin = {0, 0, 40}, .x = {1, 0, 0}, .y = {0, 1, 0}, .z = {0, 0, 1}}}), loop({{B, false}, {D1, false}}), {-10, 0, 10, 10});
     w.add_instance({w.add_shell({first, 4, pack::kNoIndex, 1}), {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0}});
     return w.finish();
 }
@@ -170,10 +169,10 @@ constexpr float kSphereRadius = 20;
 inline Bytes sphere() {
     PackWriter w;
     const float R = kSphereRadius;
-    const uint32_t s = w.add_surface(pack::SurfaceType::Sphere, {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, R});
+    const uint32_t s = w.add_surface(pack::SphereParams{geom::axes_at(0, 0, 0), R});
     const uint32_t south = w.add_vertex(0, 0, -R), north = w.add_vertex(0, 0, R);
     // The seam: R (cos t (0,0,-1) + sin t (1,0,0)), t from 0 (south) to pi (north).
-    const uint32_t meridian = w.add_curve(pack::CurveType::Circle, 3, {0, 0, 0, 0, 0, -1, 1, 0, 0, R});
+    const uint32_t meridian = w.add_curve(pack::Circle3Params{.origin = {0, 0, 0}, .x = {0, 0, -1}, .y = {1, 0, 0}, .radius = R});
     const uint32_t seam = w.add_edge({meridian, 0, kPi, south, north, 1e-7f, 0});
     const uint32_t south_pole = w.add_edge({pack::kNoIndex, 0, kTwoPi, south, south, 1e-7f, 0});
     const uint32_t north_pole = w.add_edge({pack::kNoIndex, 0, kTwoPi, north, north, 1e-7f, 0});
@@ -194,10 +193,10 @@ inline double sphere_volume() { return 4.0 / 3.0 * M_PI * kSphereRadius * kSpher
 constexpr float kTorusMajor = 30, kTorusMinor = 10;
 inline Bytes torus(float R = kTorusMajor, float r = kTorusMinor) {
     PackWriter w;
-    const uint32_t s = w.add_surface(pack::SurfaceType::Torus, {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, R, r});
+    const uint32_t s = w.add_surface(pack::TorusParams{geom::axes_at(0, 0, 0), R, r});
     const uint32_t v = w.add_vertex(R + r, 0, 0);
-    const uint32_t tube = w.add_curve(pack::CurveType::Circle, 3, {R, 0, 0, 1, 0, 0, 0, 0, 1, r});       // u = 0, t = v
-    const uint32_t equator = w.add_curve(pack::CurveType::Circle, 3, {0, 0, 0, 1, 0, 0, 0, 1, 0, R + r}); // v = 0, t = u
+    const uint32_t tube = w.add_curve(pack::Circle3Params{.origin = {R, 0, 0}, .x = {1, 0, 0}, .y = {0, 0, 1}, .radius = r});       // u = 0, t = v
+    const uint32_t equator = w.add_curve(pack::Circle3Params{.origin = {0, 0, 0}, .x = {1, 0, 0}, .y = {0, 1, 0}, .radius = R + r}); // v = 0, t = u
     const uint32_t e_tube = w.add_edge({tube, 0, kTwoPi, v, v, 1e-7f, 0});
     const uint32_t e_equator = w.add_edge({equator, 0, kTwoPi, v, v, 1e-7f, 0});
     const uint32_t fc = w.coedge_count();
@@ -227,7 +226,7 @@ inline Bytes trimmed_bspline() {
     std::vector<float> p = {1, 2, 2, 3, 4, 6, 0, 0, 0, 0, 0, 1, 1, 0, 0, 0, 1, 1, 1};
     for (int i = 0; i < 2; ++i)
         for (int j = 0; j < 3; ++j) p.insert(p.end(), {100.0f * float(i), 50.0f * float(j), j == 1 ? 20.0f : 0.0f});
-    const uint32_t surface = w.add_surface(pack::SurfaceType::BSpline, p);
+    const uint32_t surface = w.add_bspline_surface(p);
     std::vector<uint32_t> coedge_edges, pcurves;
     auto polygon = [&](const std::array<float, 2>* uv, int n) {
         std::vector<uint32_t> vs;
@@ -244,9 +243,9 @@ inline Bytes trimmed_bspline() {
             for (int d = 0; d < 3; ++d) curve.push_back(q0[d]);
             for (int d = 0; d < 3; ++d) curve.push_back(2 * qm[d] - 0.5f * (q0[d] + q2[d])); // the middle pole
             for (int d = 0; d < 3; ++d) curve.push_back(q2[d]);
-            const uint32_t c3 = w.add_curve(pack::CurveType::BSpline, 3, curve);
+            const uint32_t c3 = w.add_bspline_curve(3, curve);
             const uint32_t e = w.add_edge({c3, 0, 1, vs[k], vs[(k + 1) % n], 1e-6f, 0});
-            pcurves.push_back(w.add_curve(pack::CurveType::Line, 2, {a[0], a[1], b[0] - a[0], b[1] - a[1]}));
+            pcurves.push_back(w.add_curve(pack::Line2Params{.origin = {a[0], a[1]}, .direction = {b[0] - a[0], b[1] - a[1]}}));
             w.add_coedge(Coedge::make(e, false, Seam::None));
         }
         return w.add_loop({first, uint32_t(n)});

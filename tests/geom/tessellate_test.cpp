@@ -323,7 +323,7 @@ TEST(EdgeSampling, AB_SplineItsChordStandsForIsItsTwoVertices) {
         PackWriter w;
         std::vector<float> curve = {3, 4, 8, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1};
         for (float x : {0.0f, 10.0f, 20.0f, 30.0f}) curve.insert(curve.end(), {x, x == 0 || x == 30 ? 0.0f : h, 0});
-        const uint32_t c = w.add_curve(pack::CurveType::BSpline, 3, curve);
+        const uint32_t c = w.add_bspline_curve(3, curve);
         const uint32_t a = w.add_vertex(0, 0, 0), b = w.add_vertex(30, 0, 0);
         w.add_edge(reversed ? pack::Edge{c, 1, 0, b, a, 0, 0} : pack::Edge{c, 0, 1, a, b, 0, 0});
         OpenedPack opened;

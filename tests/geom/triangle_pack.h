@@ -17,7 +17,7 @@ inline std::vector<uint8_t> triangle_pack() {
     const uint32_t first = w.coedge_count();
     for (uint32_t e : {e0, e1, e2}) w.add_coedge(pack::Coedge::make(e, false, pack::Seam::None));
     const uint32_t loop = w.add_loop({first, 3});
-    const uint32_t s = w.add_surface(pack::SurfaceType::Plane, {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1});
+    const uint32_t s = w.add_surface(pack::PlaneParams{geom::axes_at(0, 0, 0)});
     w.add_face({s, loop, 1, pack::kNoIndex, pack::kNoIndex, 0, {0, 0, 0}, {0, 0}, {10, 10}});
     const uint32_t shell = w.add_shell({0, 1, pack::kNoIndex, 0});
     w.add_instance({shell, {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0}});

@@ -26,7 +26,7 @@ struct Model {
     Scene scene;
     Model() {
         geom::PackWriter w;
-        const uint32_t plane = w.add_surface(pack::SurfaceType::Plane, {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1});
+        const uint32_t plane = w.add_surface(pack::PlaneParams{geom::axes_at(0, 0, 0)});
         const float x0 = -40, x1 = 60, y0 = -30, y1 = 70;
         const uint32_t v[4] = {w.add_vertex(x0, y0, 0), w.add_vertex(x1, y0, 0), w.add_vertex(x1, y1, 0), w.add_vertex(x0, y1, 0)};
         const uint32_t first_coedge = w.coedge_count();

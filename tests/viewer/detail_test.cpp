@@ -399,7 +399,7 @@ TEST(Detail, APlanesNormalInWholeUnitsIsItsSurfacesRounded) {
         const float handed = i % 3 == 0 ? -1.0f : 1.0f; // a left-handed frame: y turned round
         float x[3], y[3], z[3];
         for (int k = 0; k < 3; ++k) x[k] = float(R[k][0]), y[k] = handed * float(R[k][1]), z[k] = float(R[k][2]);
-        const uint32_t plane = w.add_surface(pack::SurfaceType::Plane, {o[0], o[1], o[2], x[0], x[1], x[2], y[0], y[1], y[2], z[0], z[1], z[2]});
+        const uint32_t plane = w.add_surface(pack::PlaneParams{{.origin = {o[0], o[1], o[2]}, .x = {x[0], x[1], x[2]}, .y = {y[0], y[1], y[2]}, .z = {z[0], z[1], z[2]}}});
         const uint32_t v0 = w.add_vertex(o[0], o[1], o[2]);
         const uint32_t v1 = w.add_vertex(o[0] + 50 * x[0], o[1] + 50 * x[1], o[2] + 50 * x[2]);
         const uint32_t v2 = w.add_vertex(o[0] + 50 * y[0], o[1] + 50 * y[1], o[2] + 50 * y[2]);

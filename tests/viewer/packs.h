@@ -20,7 +20,7 @@ using geom::PackWriter;
 // (radius 100) and a small triangle beside it.
 inline Bytes polygon_and_triangle(uint32_t sides) {
     PackWriter w;
-    const uint32_t plane = w.add_surface(pack::SurfaceType::Plane, {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1});
+    const uint32_t plane = w.add_surface(pack::PlaneParams{geom::axes_at(0, 0, 0)});
     std::vector<uint32_t> v(sides);
     for (uint32_t i = 0; i < sides; ++i) {
         const double a = 2 * M_PI * i / sides;
@@ -50,8 +50,8 @@ inline Bytes polygon_and_triangle(uint32_t sides) {
 // marked as tangent edges (pack::SectionId::SmoothEdges), as if the disc were a blend's.
 inline Bytes disc(std::initializer_list<int> smooth = {}) {
     PackWriter w;
-    const uint32_t plane = w.add_surface(pack::SurfaceType::Plane, {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1});
-    const uint32_t circle = w.add_curve(pack::CurveType::Circle, 3, {0, 0, 0, 1, 0, 0, 0, 1, 0, 100});
+    const uint32_t plane = w.add_surface(pack::PlaneParams{geom::axes_at(0, 0, 0)});
+    const uint32_t circle = w.add_curve(pack::Circle3Params{.origin = {0, 0, 0}, .x = {1, 0, 0}, .y = {0, 1, 0}, .radius = 100});
     const uint32_t v[4] = {w.add_vertex(100, 0, 0), w.add_vertex(0, 100, 0), w.add_vertex(-100, 0, 0), w.add_vertex(0, -100, 0)};
     const uint32_t first = w.coedge_count();
     for (int i = 0; i < 4; ++i) {
@@ -83,7 +83,7 @@ inline Bytes two_blocks() {
             y[0] = n[1] * x[2] - n[2] * x[1], y[1] = n[2] * x[0] - n[0] * x[2], y[2] = n[0] * x[1] - n[1] * x[0];
             float o[3] = {0, 0, 0};
             o[axis] = side ? 100.0f : 0.0f;
-            const uint32_t plane = w.add_surface(pack::SurfaceType::Plane, {o[0], o[1], o[2], x[0], x[1], x[2], y[0], y[1], y[2], n[0], n[1], n[2]});
+            const uint32_t plane = w.add_surface(pack::PlaneParams{{.origin = {o[0], o[1], o[2]}, .x = {x[0], x[1], x[2]}, .y = {y[0], y[1], y[2]}, .z = {n[0], n[1], n[2]}}});
             // The face's corners counter-clockwise about its outward normal.
             std::vector<std::pair<double, int>> around;
             for (int i = 0; i < 8; ++i) {
@@ -123,9 +123,9 @@ inline Bytes two_blocks() {
 inline Bytes tube() {
     PackWriter w;
     constexpr float kTwoPi = 6.28318530718f;
-    const uint32_t cylinder = w.add_surface(pack::SurfaceType::Cylinder, {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 50});
-    const uint32_t low = w.add_curve(pack::CurveType::Circle, 3, {0, 0, 0, 1, 0, 0, 0, 1, 0, 50});
-    const uint32_t high = w.add_curve(pack::CurveType::Circle, 3, {0, 0, 100, 1, 0, 0, 0, 1, 0, 50});
+    const uint32_t cylinder = w.add_surface(pack::CylinderParams{geom::axes_at(0, 0, 0), 50});
+    const uint32_t low = w.add_curve(pack::Circle3Params{.origin = {0, 0, 0}, .x = {1, 0, 0}, .y = {0, 1, 0}, .radius = 50});
+    const uint32_t high = w.add_curve(pack::Circle3Params{.origin = {0, 0, 100}, .x = {1, 0, 0}, .y = {0, 1, 0}, .radius = 50});
     const uint32_t v0 = w.add_vertex(50, 0, 0), v1 = w.add_vertex(50, 0, 100);
     const uint32_t e_low = w.add_edge({low, 0, kTwoPi, v0, v0, 1e-7f, 0});
     const uint32_t e_high = w.add_edge({high, 0, kTwoPi, v1, v1, 1e-7f, 0});
@@ -150,7 +150,7 @@ inline Bytes squares(uint32_t count, uint32_t columns = 100, std::initializer_li
                      float pitch = 2, const pack::Needs* needs = nullptr) {
     PackWriter w;
     if (needs) w.set_needs(*needs);
-    const uint32_t plane = w.add_surface(pack::SurfaceType::Plane, {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1});
+    const uint32_t plane = w.add_surface(pack::PlaneParams{geom::axes_at(0, 0, 0)});
     for (uint32_t i = 0; i < count; ++i) {
         const float x = pitch * float(i % columns), y = pitch * float(i / columns);
         const uint32_t v[4] = {w.add_vertex(x, y, 0), w.add_vertex(x + 1, y, 0), w.add_vertex(x + 1, y + 1, 0), w.add_vertex(x, y + 1, 0)};

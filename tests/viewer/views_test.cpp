@@ -18,7 +18,7 @@ using namespace facet::test;
 // placed model, centred and filling the screen, not the parts where their files put them.
 TEST(Viewer, AnAssemblyIsFramedWhereItsInstancesPlaceItsParts) {
     PackWriter w;
-    const uint32_t plane = w.add_surface(pack::SurfaceType::Plane, {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1});
+    const uint32_t plane = w.add_surface(pack::PlaneParams{geom::axes_at(0, 0, 0)});
     const uint32_t v[4] = {w.add_vertex(0, 0, 0), w.add_vertex(40, 0, 0), w.add_vertex(40, 10, 0), w.add_vertex(0, 10, 0)};
     const uint32_t first = w.coedge_count();
     for (int i = 0; i < 4; ++i) {

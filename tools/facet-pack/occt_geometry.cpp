@@ -156,7 +156,7 @@ uint32_t add_curve3(geom::PackWriter& w, const Handle(Geom_Curve)& curve, double
         Line3Params line;
         set(line.origin, l.Location().XYZ());
         set(line.direction, l.Direction().XYZ());
-        return w.add_curve(CurveType::Line, 3, floats_of(line));
+        return w.add_curve(line);
     }
     case GeomAbs_Circle: {
         const gp_Circ c = a.Circle();
@@ -165,7 +165,7 @@ uint32_t add_curve3(geom::PackWriter& w, const Handle(Geom_Curve)& curve, double
         set(circle.x, c.XAxis().Direction().XYZ());
         set(circle.y, c.YAxis().Direction().XYZ());
         circle.radius = float(c.Radius());
-        return w.add_curve(CurveType::Circle, 3, floats_of(circle));
+        return w.add_curve(circle);
     }
     case GeomAbs_Ellipse: {
         const gp_Elips e = a.Ellipse();
@@ -174,14 +174,14 @@ uint32_t add_curve3(geom::PackWriter& w, const Handle(Geom_Curve)& curve, double
         set(ellipse.x, e.XAxis().Direction().XYZ());
         set(ellipse.y, e.YAxis().Direction().XYZ());
         ellipse.major = float(e.MajorRadius()), ellipse.minor = float(e.MinorRadius());
-        return w.add_curve(CurveType::Ellipse, 3, floats_of(ellipse));
+        return w.add_curve(ellipse);
     }
     case GeomAbs_BSplineCurve:
         if (Line3Params line; bspline_line(a.BSpline(), line)) {
             ++st.converted["3D B-spline of degree 1 -> line"];
-            return w.add_curve(CurveType::Line, 3, floats_of(line));
+            return w.add_curve(line);
         }
-        return w.add_curve(CurveType::BSpline, 3, bspline_curve(a.BSpline()));
+        return w.add_bspline_curve(3, bspline_curve(a.BSpline()));
     default: break;
     }
     // Other kinds (Bezier, offset, parabola, hyperbola...): approximate the part the edge uses,
@@ -197,7 +197,7 @@ uint32_t add_curve3(geom::PackWriter& w, const Handle(Geom_Curve)& curve, double
     }
     if (b.IsNull()) return kNoIndex;
     ++st.converted["3D curve -> B-spline"];
-    return w.add_curve(CurveType::BSpline, 3, bspline_curve(b));
+    return w.add_bspline_curve(3, bspline_curve(b));
 }
 
 uint32_t add_curve2(geom::PackWriter& w, const Handle(Geom2d_Curve)& curve, double t0, double t1,
@@ -209,7 +209,7 @@ uint32_t add_curve2(geom::PackWriter& w, const Handle(Geom2d_Curve)& curve, doub
         Line2Params line;
         set(line.origin, l.Location().XY());
         set(line.direction, l.Direction().XY());
-        return w.add_curve(CurveType::Line, 2, floats_of(line));
+        return w.add_curve(line);
     }
     case GeomAbs_Circle: {
         const gp_Circ2d c = a.Circle();
@@ -218,7 +218,7 @@ uint32_t add_curve2(geom::PackWriter& w, const Handle(Geom2d_Curve)& curve, doub
         set(circle.x, c.XAxis().Direction().XY());
         set(circle.y, c.YAxis().Direction().XY());
         circle.radius = float(c.Radius());
-        return w.add_curve(CurveType::Circle, 2, floats_of(circle));
+        return w.add_curve(circle);
     }
     case GeomAbs_Ellipse: {
         const gp_Elips2d e = a.Ellipse();
@@ -227,19 +227,19 @@ uint32_t add_curve2(geom::PackWriter& w, const Handle(Geom2d_Curve)& curve, doub
         set(ellipse.x, e.XAxis().Direction().XY());
         set(ellipse.y, e.YAxis().Direction().XY());
         ellipse.major = float(e.MajorRadius()), ellipse.minor = float(e.MinorRadius());
-        return w.add_curve(CurveType::Ellipse, 2, floats_of(ellipse));
+        return w.add_curve(ellipse);
     }
     case GeomAbs_BSplineCurve: {
         const Handle(Geom2d_BSplineCurve) b = a.BSpline();
         if (Line2Params line; bspline_line(b, line)) {
             ++st.converted["pcurve B-spline of degree 1 -> line"];
-            return w.add_curve(CurveType::Line, 2, floats_of(line));
+            return w.add_curve(line);
         }
         if (const Handle(Geom2d_BSplineCurve) simple = simpler_pcurve(b, surface, t0, t1); !simple.IsNull()) {
             ++st.converted["pcurve B-spline -> fewer poles"];
-            return w.add_curve(CurveType::BSpline, 2, bspline_curve(simple));
+            return w.add_bspline_curve(2, bspline_curve(simple));
         }
-        return w.add_curve(CurveType::BSpline, 2, bspline_curve(b));
+        return w.add_bspline_curve(2, bspline_curve(b));
     }
     default: break;
     }
@@ -253,7 +253,7 @@ uint32_t add_curve2(geom::PackWriter& w, const Handle(Geom2d_Curve)& curve, doub
     }
     if (b.IsNull()) return kNoIndex;
     ++st.converted["pcurve -> B-spline"];
-    return w.add_curve(CurveType::BSpline, 2, bspline_curve(b));
+    return w.add_bspline_curve(2, bspline_curve(b));
 }
 
 // The surface under any rectangular trim.
@@ -271,23 +271,20 @@ uint32_t add_surface(geom::PackWriter& w, const Handle(Geom_Surface)& surface, S
     switch (a.GetType()) {
     case GeomAbs_Plane:
         ++st.surface_types["plane"];
-        return w.add_surface(SurfaceType::Plane, floats_of(PlaneParams{frame_of(a.Plane().Position())}));
+        return w.add_surface(PlaneParams{frame_of(a.Plane().Position())});
     case GeomAbs_Cylinder:
         ++st.surface_types["cylinder"];
-        return w.add_surface(SurfaceType::Cylinder,
-                             floats_of(CylinderParams{frame_of(a.Cylinder().Position()), float(a.Cylinder().Radius())}));
+        return w.add_surface(CylinderParams{frame_of(a.Cylinder().Position()), float(a.Cylinder().Radius())});
     case GeomAbs_Cone:
         ++st.surface_types["cone"];
-        return w.add_surface(SurfaceType::Cone, floats_of(ConeParams{frame_of(a.Cone().Position()), float(a.Cone().RefRadius()),
-                                                                     float(a.Cone().SemiAngle())}));
+        return w.add_surface(ConeParams{frame_of(a.Cone().Position()), float(a.Cone().RefRadius()), float(a.Cone().SemiAngle())});
     case GeomAbs_Sphere:
         ++st.surface_types["sphere"];
-        return w.add_surface(SurfaceType::Sphere,
-                             floats_of(SphereParams{frame_of(a.Sphere().Position()), float(a.Sphere().Radius())}));
+        return w.add_surface(SphereParams{frame_of(a.Sphere().Position()), float(a.Sphere().Radius())});
     case GeomAbs_Torus:
         ++st.surface_types["torus"];
-        return w.add_surface(SurfaceType::Torus, floats_of(TorusParams{frame_of(a.Torus().Position()), float(a.Torus().MajorRadius()),
-                                                                       float(a.Torus().MinorRadius())}));
+        return w.add_surface(TorusParams{frame_of(a.Torus().Position()), float(a.Torus().MajorRadius()),
+                                         float(a.Torus().MinorRadius())});
     case GeomAbs_SurfaceOfRevolution: {
         const gp_Ax1 axis = a.AxeOfRevolution();
         Handle(Geom_SurfaceOfRevolution) rev = Handle(Geom_SurfaceOfRevolution)::DownCast(untrimmed(surface));
@@ -298,7 +295,7 @@ uint32_t add_surface(geom::PackWriter& w, const Handle(Geom_Surface)& surface, S
         RevolutionParams revolution;
         set(revolution.axis_origin, axis.Location().XYZ());
         set(revolution.axis_direction, axis.Direction().XYZ());
-        return w.add_surface(SurfaceType::Revolution, floats_of(revolution), c);
+        return w.add_surface(revolution, c);
     }
     case GeomAbs_SurfaceOfExtrusion: {
         Handle(Geom_SurfaceOfLinearExtrusion) ext = Handle(Geom_SurfaceOfLinearExtrusion)::DownCast(untrimmed(surface));
@@ -308,7 +305,7 @@ uint32_t add_surface(geom::PackWriter& w, const Handle(Geom_Surface)& surface, S
         ++st.surface_types["extrusion"];
         ExtrusionParams extrusion;
         set(extrusion.direction, a.Direction().XYZ());
-        return w.add_surface(SurfaceType::Extrusion, floats_of(extrusion), c);
+        return w.add_surface(extrusion, c);
     }
     default: break;
     }
@@ -353,7 +350,7 @@ uint32_t add_surface(geom::PackWriter& w, const Handle(Geom_Surface)& surface, S
     if (rational)
         for (int i = 1; i <= nu; ++i)
             for (int j = 1; j <= nv; ++j) f.push_back(float(b->Weight(i, j)));
-    return w.add_surface(SurfaceType::BSpline, f);
+    return w.add_bspline_surface(f);
 }
 
 

@@ -86,3 +86,11 @@ constexpr bool ok(const Result& r) { return r.ok(); }
     do {                                                                                           \
         if (!(cond)) ::facet::assert_failed(scope, #cond, __FILE__, __LINE__);                     \
     } while (0)
+
+// An invariant checked where assertions are on (the host's Debug and sanitizer builds: no
+// NDEBUG), on paths whose exact instruction counts the targets' budgets hold.
+#ifdef NDEBUG
+#define FACET_DEBUG_ASSERT(scope, cond) ((void)0)
+#else
+#define FACET_DEBUG_ASSERT(scope, cond) FACET_ASSERT(scope, cond)
+#endif

@@ -74,6 +74,18 @@ constexpr size_t face_storage_bytes(const FaceCapacity& c) {
     return at;
 }
 
+// The bytes of a block before its patches (the plan's last array): free as scratch while no
+// face is under way (the patches stay from face to face, found again by their surface).
+constexpr size_t face_scratch_bytes(const FaceCapacity& c) {
+    size_t at = 0, before_patches = 0;
+    face_storage_plan(c, [&](FaceArray what, size_t count, size_t bytes, size_t align) {
+        at = (at + align - 1) / align * align;
+        if (what == FaceArray::Patches) before_patches = at;
+        at += count * bytes;
+    });
+    return before_patches;
+}
+
 // The bytes of the CDT arena's arrays alone for a face of `points` points (what a face's
 // triangulation itself took: the arena's peak in the budgets).
 constexpr size_t face_arena_bytes(uint32_t points) {
