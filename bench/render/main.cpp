@@ -67,7 +67,7 @@ void on_event(void*, const Event& e) {
     }
 }
 
-void flush(void*, const Area&, const Rgb565*) { state.viewer->flush_done(); }
+void flush(Viewer& viewer, void*, const Area&, const Rgb565*) { viewer.flush_done(); }
 
 uint32_t covered(const uint16_t* z, uint32_t n, uint16_t empty) {
     uint32_t c = 0;

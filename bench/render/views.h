@@ -33,7 +33,7 @@ inline void settle(facet::Viewer& v) {
 // The viewer's configuration for one size: full frames into one buffer, no interface (the
 // model alone, as the peer draws it), every face tessellated (none left waiting by the view,
 // as the peer's mesh has them all).
-inline facet::Config view_config(ViewSize s, facet::Rgb565* frame, uint16_t* depth, void (*flush)(void*, const facet::Area&, const facet::Rgb565*),
+inline facet::Config view_config(ViewSize s, facet::Rgb565* frame, uint16_t* depth, void (*flush)(facet::Viewer&, void*, const facet::Area&, const facet::Rgb565*),
                           void (*on_event)(void*, const facet::Event&), void* user) {
     facet::Config cfg;
     cfg.display.width = s.width, cfg.display.height = s.height, cfg.display.band_lines = s.height;

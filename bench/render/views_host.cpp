@@ -31,7 +31,7 @@ void on_event(void* user, const Event& e) {
     if (e.kind == Event::Kind::FrameDone) static_cast<Views*>(user)->last_frame = e;
 }
 
-void flush(void* user, const Area&, const Rgb565*) { static_cast<Views*>(user)->viewer->flush_done(); }
+void flush(Viewer& viewer, void*, const Area&, const Rgb565*) { viewer.flush_done(); }
 
 } // namespace
 

@@ -12,10 +12,9 @@
 static uint8_t workspace[FACET_WORKSPACE_BYTES_DEFAULT] PORT_LARGE __attribute__((aligned(8)));
 static facet_rgb565 bands[2][MAX_WIDTH * LINES];
 static uint16_t depth[MAX_WIDTH * LINES];
-static facet_viewer *viewer;
 
 /* A finished band: onto the panel. A DMA would call facet_flush_done() from its interrupt. */
-static void flush(void *user, const facet_area *area, const facet_rgb565 *pixels) {
+static void flush(facet_viewer *viewer, void *user, const facet_area *area, const facet_rgb565 *pixels) {
     (void)user;
     port_display_write(area, pixels);
     facet_flush_done(viewer);
@@ -33,6 +32,7 @@ static void on_event(void *user, const facet_event *e) {
 }
 
 int app_main(void) {
+    facet_viewer *viewer;
     facet_config cfg;
     facet_result why;
     char line[160];

@@ -113,10 +113,10 @@ static void on_event(void *user, const facet_event *e) {
     (void)user;
 }
 
-static void flush(void *user, const facet_area *area, const facet_rgb565 *pixels) {
+static void flush(facet_viewer *drawn_by, void *user, const facet_area *area, const facet_rgb565 *pixels) {
     (void)user;
     port_display_write(area, pixels);
-    facet_flush_done(viewer);
+    facet_flush_done(drawn_by);
 }
 
 int app_main(void) {
@@ -138,7 +138,7 @@ int app_main(void) {
     cfg.display.buffers[0] = bands[0], cfg.display.buffers[1] = bands[1], cfg.display.depth[0] = depth;
     cfg.display.band_lines = LINES, cfg.display.flush = flush;
     cfg.on_event = on_event, cfg.now_us = port_now_us;
-    cfg.interface = 0; /* the product's interface, not facet's */
+    cfg.interface = FACET_INTERFACE_OFF; /* the product's interface, not facet's */
     viewer = facet_create(&cfg, workspace, sizeof workspace, &why);
     if (viewer) {
         const void *pack = port_pack(&bytes, &memory, &memory_bytes);

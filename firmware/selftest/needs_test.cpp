@@ -27,7 +27,7 @@ struct Failure {
     bool seen = false;
 };
 
-void flush(void*, const Area&, const Rgb565*) {}
+void flush(Viewer&, void*, const Area&, const Rgb565*) {}
 
 void on_event(void* user, const Event& e) {
     auto& f = *static_cast<Failure*>(user);

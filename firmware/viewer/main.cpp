@@ -153,12 +153,12 @@ void on_event(void*, const Event& e) {
 // switches at vertical blank (the EVKB's eLCDIF) is busy until then: flush_done() waits for it
 // (the main loop), so the viewer never draws into the frame still on the glass. QEMU's
 // displays switch at once.
-void flush(void*, const Area&, const Rgb565* pixels) {
+void flush(Viewer& viewer, void*, const Area&, const Rgb565* pixels) {
     if (Status s = session.board->display.show(const_cast<Rgb565*>(pixels)); !ok(s)) {
         print(session.board->console, "viewer: the display refused a frame ({})\n", s);
     }
     session.flush_pending = true;
-    if (!session.board->display.busy()) session.flush_pending = false, session.viewer->flush_done();
+    if (!session.board->display.busy()) session.flush_pending = false, viewer.flush_done();
 }
 
 // Microseconds from the board's clock, without a 64-bit division per call (a library call

@@ -83,7 +83,7 @@ Result Viewer::show_view(StandardView v) {
 void Viewer::fit() { core(this).fit(); }
 Result Viewer::fit_part(uint32_t part) { return core(this).fit_part(part); }
 Result Viewer::fit_face(uint32_t part, uint32_t face) {
-    if (face == ~0u) return Result::fail(Status::OutOfRange, "no such face", {"face", face});
+    if (face == kNone) return Result::fail(Status::OutOfRange, "no such face", {"face", face});
     return core(this).fit_part(part, face);
 }
 void Viewer::set_parallel(bool parallel) {
@@ -154,7 +154,7 @@ Result Viewer::show_part(uint32_t i, bool shown) { return core(this).show(i, sho
 Result Viewer::isolate_part(uint32_t i) { return core(this).isolate(i); }
 void Viewer::show_all_parts() { core(this).show_all(); }
 Result Viewer::choose_part(uint32_t i) {
-    if (i != ~0u && i >= part_count()) return Result::fail(Status::OutOfRange, "no such part", {"part", i});
+    if (i != kNone && i >= part_count()) return Result::fail(Status::OutOfRange, "no such part", {"part", i});
     core(this).choose(i);
     return {};
 }

@@ -11,7 +11,9 @@ namespace {
 
 using namespace facet;
 
-static_assert(int(Status::Io) == FACET_IO && int(Status::Busy) == FACET_BUSY, "the C statuses are facet::Status");
+static_assert(int(Status::Busy) == FACET_BUSY && int(Status::NotFound) == FACET_NOT_FOUND, "the C statuses are facet::Status's public ones");
+static_assert(int(Interface::Full) == FACET_INTERFACE_FULL && int(Interface::StatusLine) == FACET_INTERFACE_STATUS_LINE,
+              "the C interfaces are facet::Interface");
 static_assert(int(Event::Kind::ModelFailed) == FACET_EVENT_MODEL_FAILED && int(Event::Kind::Picked) == FACET_EVENT_PICKED,
               "the C event kinds are facet::Event::Kind");
 static_assert(int(Work::Update) == FACET_WORK_UPDATE, "the C work kinds are facet::Work");
@@ -29,8 +31,19 @@ static_assert(int(Surface::Extrusion) == FACET_SURFACE_EXTRUSION && int(Surface:
               "the C surfaces are facet::Surface");
 static_assert(int(Measurement::Kind::Points) == FACET_MEASURE_POINTS, "the C measurement kinds are facet::Measurement's");
 
+// The public statuses (facet_status); geometry the tessellation refuses (Degenerate, Crossing)
+// is Corrupt input to a caller, a transfer that failed (Io) Unsupported (the module does none).
+facet_status public_status(Status s) {
+    switch (s) {
+    case Status::Degenerate:
+    case Status::Crossing: return FACET_CORRUPT;
+    case Status::Io: return FACET_UNSUPPORTED;
+    default: return facet_status(s);
+    }
+}
+
 facet_result to_c(const Result& r) {
-    return {facet_status(r.status), r.what, r.where.kind, r.where.index, r.at.kind, r.at.index};
+    return {public_status(r.status), r.what, r.where.kind, r.where.index, r.at.kind, r.at.index};
 }
 Result from_c(const facet_result& r) {
     return {Status(r.status), r.what, {r.where_kind, r.where_index}, {r.at_kind, r.at_index}};
@@ -43,16 +56,16 @@ Capacity capacity_of(const facet_capacity& c) {
 // The C config's callbacks, kept where the C++ callbacks can find them: in the workspace,
 // after the viewer (facet_create takes the room for it from the workspace's end).
 struct Bridge {
-    void (*flush)(void* user, const facet_area* area, const facet_rgb565* pixels);
+    void (*flush)(facet_viewer* viewer, void* user, const facet_area* area, const facet_rgb565* pixels);
     void* flush_user;
     void (*on_event)(void* user, const facet_event* event);
     void* event_user;
 };
 
-void flush_thunk(void* user, const Area& area, const Rgb565* pixels) {
+void flush_thunk(Viewer& viewer, void* user, const Area& area, const Rgb565* pixels) {
     const Bridge& b = *static_cast<const Bridge*>(user);
     const facet_area a{area.x, area.y, area.width, area.height};
-    b.flush(b.flush_user, &a, pixels);
+    b.flush(reinterpret_cast<facet_viewer*>(&viewer), b.flush_user, &a, pixels);
 }
 
 void event_thunk(void* user, const Event& e) {
@@ -74,13 +87,13 @@ void event_thunk(void* user, const Event& e) {
     }
     case Event::Kind::FrameDone: {
         const auto& f = e.frame;
-        c.u.frame = {f.triangles, f.culled, f.pixels, f.cost_us, f.pieces, f.faces_done, f.faces_total, f.pass, uint8_t(f.full), uint8_t(f.boxes)};
+        c.u.frame = {f.triangles, f.culled, f.pixels, f.cost_us, f.pieces, f.faces_done, f.faces_total, f.pass, f.full, f.boxes};
         break;
     }
-    case Event::Kind::BudgetExceeded: c.u.budget = {uint8_t(e.budget.step), e.budget.budget_us, e.budget.used_us}; break;
+    case Event::Kind::BudgetExceeded: c.u.budget = {e.budget.step, e.budget.budget_us, e.budget.used_us}; break;
     case Event::Kind::Picked: {
         const auto& p = e.pick;
-        c.u.pick = {uint8_t(p.hit), p.face, p.instance, p.shell, p.surface_type, p.x, p.y};
+        c.u.pick = {p.hit, p.face, p.instance, p.shell, p.surface_type, p.x, p.y};
         break;
     }
     case Event::Kind::ViewChanged: c.u.view = {e.view.yaw_deg, e.view.pitch_deg, e.view.zoom}; break;
@@ -122,7 +135,7 @@ void facet_config_init(facet_config* c) {
     const Capacity d;
     c->capacity = {d.faces, d.edges, d.samples, d.face_points, d.loops, d.slivers, d.mesh_vertices, d.mesh_triangles};
     c->step_slack_us = Config{}.step_slack_us;
-    c->interface = 1;
+    c->interface = FACET_INTERFACE_FULL;
     c->screen_error_px = Config{}.screen_error_px;
 }
 
@@ -146,6 +159,7 @@ facet_viewer* facet_create(const facet_config* c, void* workspace, size_t bytes,
     };
     if (!c) return refuse(Result::fail(Status::OutOfRange, "no configuration"));
     if (unsigned(c->display.mode) > unsigned(FACET_FLUSH_SCANOUT)) return refuse(Result::fail(Status::OutOfRange, "no such flush mode", {"display"}));
+    if (unsigned(c->interface) > unsigned(FACET_INTERFACE_FULL)) return refuse(Result::fail(Status::OutOfRange, "no such interface"));
     // Checked before the bridge is stored there: a null or misaligned workspace is refused, as
     // is one under facet_workspace_bytes() (sizes.h), whose slack then holds the bridge.
     if (!workspace || (reinterpret_cast<uintptr_t>(workspace) & 7)) {
@@ -179,7 +193,7 @@ facet_viewer* facet_create(const facet_config* c, void* workspace, size_t bytes,
     cfg.clock_user = c->clock_user;
     cfg.frame_budget_us = c->frame_budget_us;
     cfg.step_slack_us = c->step_slack_us;
-    cfg.interface = c->interface == 0 ? Interface::Off : c->interface == 2 ? Interface::StatusLine : Interface::Full;
+    cfg.interface = Interface(c->interface);
     cfg.screen_error_px = c->screen_error_px;
     Result r;
     Viewer* v = create_viewer(cfg, workspace, viewer_bytes, 0, &r);
@@ -218,7 +232,7 @@ facet_result facet_open_model(facet_viewer* v, uint32_t index) {
     FACET_NEED_VIEWER(v);
     return to_c(cpp(v)->open_model(index));
 }
-uint32_t facet_model_index(const facet_viewer* v) { return v ? cpp(v)->model_index() : ~0u; }
+uint32_t facet_get_model_index(const facet_viewer* v) { return v ? cpp(v)->model_index() : kNone; }
 
 void facet_flush_done(facet_viewer* v) {
     if (v) cpp(v)->flush_done();
@@ -232,8 +246,8 @@ void facet_pointer(facet_viewer* v, int16_t dx, int16_t dy, uint8_t buttons) {
 void facet_wheel(facet_viewer* v, int16_t clicks) {
     if (v) cpp(v)->wheel(clicks);
 }
-void facet_touch(facet_viewer* v, uint8_t id, int16_t x, int16_t y, int down) {
-    if (v) cpp(v)->touch(id, x, y, down != 0);
+void facet_touch(facet_viewer* v, uint8_t id, int16_t x, int16_t y, bool down) {
+    if (v) cpp(v)->touch(id, x, y, down);
 }
 
 facet_stats facet_get_stats(const facet_viewer* v) {
@@ -246,7 +260,7 @@ facet_stats facet_get_stats(const facet_viewer* v) {
 void facet_act(facet_viewer* v, facet_action a) {
     if (v && unsigned(a) <= unsigned(FACET_ACTION_TANGENT_EDGES)) cpp(v)->act(Action(a));
 }
-uint32_t facet_key_binding_count(void) { return key_bindings().count; }
+uint32_t facet_get_key_binding_count(void) { return key_bindings().count; }
 facet_key_binding facet_get_key_binding(uint32_t i) {
     const KeyBindings k = key_bindings();
     if (i >= k.count) return {0, FACET_ACTION_NONE, nullptr};
@@ -264,12 +278,12 @@ facet_orbit facet_get_orbit(const facet_viewer* v) {
     std::memset(&z, 0, sizeof z);
     if (!v) return z;
     const Orbit o = cpp(v)->orbit();
-    return {o.yaw_deg, o.pitch_deg, o.dolly, {o.pan_mm[0], o.pan_mm[1]}, uint8_t(o.parallel)};
+    return {o.yaw_deg, o.pitch_deg, o.dolly, {o.pan_mm[0], o.pan_mm[1]}, o.parallel};
 }
 facet_result facet_set_orbit(facet_viewer* v, const facet_orbit* o) {
     FACET_NEED_VIEWER(v);
     if (!o) return to_c(Result::fail(Status::OutOfRange, "no orbit"));
-    return to_c(cpp(v)->set_orbit({o->yaw_deg, o->pitch_deg, o->dolly, {o->pan_mm[0], o->pan_mm[1]}, o->parallel != 0}));
+    return to_c(cpp(v)->set_orbit({o->yaw_deg, o->pitch_deg, o->dolly, {o->pan_mm[0], o->pan_mm[1]}, o->parallel}));
 }
 facet_camera facet_get_camera(const facet_viewer* v) {
     facet_camera c;
@@ -297,8 +311,8 @@ facet_result facet_fit_face(facet_viewer* v, uint32_t part, uint32_t face) {
     FACET_NEED_VIEWER(v);
     return to_c(cpp(v)->fit_face(part, face));
 }
-void facet_set_parallel(facet_viewer* v, int parallel) {
-    if (v) cpp(v)->set_parallel(parallel != 0);
+void facet_set_parallel(facet_viewer* v, bool parallel) {
+    if (v) cpp(v)->set_parallel(parallel);
 }
 
 facet_display_mode facet_get_display_mode(const facet_viewer* v) {
@@ -309,9 +323,9 @@ facet_result facet_set_display_mode(facet_viewer* v, facet_display_mode mode) {
     if (unsigned(mode) > unsigned(FACET_MODE_SEE_THROUGH)) return to_c(Result::fail(Status::OutOfRange, "no such display mode"));
     return to_c(cpp(v)->set_display_mode(DisplayMode(mode)));
 }
-int facet_get_tangent_edges(const facet_viewer* v) { return v ? int(cpp(v)->tangent_edges()) : 0; }
-void facet_set_tangent_edges(facet_viewer* v, int shown) {
-    if (v) cpp(v)->set_tangent_edges(shown != 0);
+bool facet_get_tangent_edges(const facet_viewer* v) { return v && cpp(v)->tangent_edges(); }
+void facet_set_tangent_edges(facet_viewer* v, bool shown) {
+    if (v) cpp(v)->set_tangent_edges(shown);
 }
 float facet_get_detail(const facet_viewer* v) { return v ? cpp(v)->detail() : 0.0f; }
 facet_result facet_set_detail(facet_viewer* v, float factor) {
@@ -345,10 +359,10 @@ uint32_t facet_get_selection(const facet_viewer* v, facet_face_facts out[2]) {
     for (uint32_t i = 0; i < n; ++i) out[i] = facts_to_c(f[i]);
     return n;
 }
-void facet_set_measuring(facet_viewer* v, int on) {
+void facet_set_measuring(facet_viewer* v, bool on) {
     if (v) cpp(v)->set_measuring(on != 0);
 }
-int facet_get_measuring(const facet_viewer* v) { return v && cpp(v)->measuring(); }
+bool facet_get_measuring(const facet_viewer* v) { return v && cpp(v)->measuring(); }
 facet_measurement facet_measure(const facet_viewer* v, const facet_face_facts* a, const facet_face_facts* b) {
     facet_measurement m;
     std::memset(&m, 0, sizeof m);
@@ -360,13 +374,13 @@ facet_measurement facet_measure(const facet_viewer* v, const facet_face_facts* a
 }
 uint32_t facet_get_measurement_lines(const facet_viewer* v, const char* lines[3]) { return v && lines ? cpp(v)->measurement(lines) : 0; }
 
-uint32_t facet_part_count(const facet_viewer* v) { return v ? cpp(v)->part_count() : 0; }
+uint32_t facet_get_part_count(const facet_viewer* v) { return v ? cpp(v)->part_count() : 0; }
 facet_part facet_get_part(const facet_viewer* v, uint32_t i) {
     if (!v) return {"", "", 0, 0};
     const Viewer::Part p = cpp(v)->part(i);
-    return {p.name, p.instance, p.faces, uint8_t(p.shown)};
+    return {p.name, p.instance, p.faces, p.shown};
 }
-facet_result facet_show_part(facet_viewer* v, uint32_t i, int shown) {
+facet_result facet_show_part(facet_viewer* v, uint32_t i, bool shown) {
     FACET_NEED_VIEWER(v);
     return to_c(cpp(v)->show_part(i, shown != 0));
 }
@@ -381,11 +395,11 @@ facet_result facet_choose_part(facet_viewer* v, uint32_t i) {
     FACET_NEED_VIEWER(v);
     return to_c(cpp(v)->choose_part(i));
 }
-uint32_t facet_chosen_part(const facet_viewer* v) { return v ? cpp(v)->chosen_part() : ~0u; }
+uint32_t facet_get_chosen_part(const facet_viewer* v) { return v ? cpp(v)->chosen_part() : kNone; }
 
 facet_section facet_get_section(const facet_viewer* v) {
     const Viewer::SectionPlane p = v ? cpp(v)->section() : Viewer::SectionPlane{};
-    return {uint8_t(p.on), {p.normal[0], p.normal[1], p.normal[2]}, p.offset_mm};
+    return {p.on, {p.normal[0], p.normal[1], p.normal[2]}, p.offset_mm};
 }
 facet_result facet_set_section(facet_viewer* v, const facet_section* p) {
     FACET_NEED_VIEWER(v);

@@ -56,20 +56,20 @@ void Core::work(Event::Kind kind, Work what, uint32_t item) {
 void Core::unload() {
     scheduler_.stop();
     framer_.stop();
-    swap_.block = kNoBlock, swap_check_ = false;
+    swap_.block = kNone, swap_check_ = false;
     unpacked_ = {};
     glide_.phase = Glide::Phase::None;
     presenter_.reset();
     scene_.close();
     pack_bytes_ = pack_file_bytes_ = 0;
-    model_index_ = kNoModel, pending_model_ = kNoModel;
+    model_index_ = kNone, pending_model_ = kNone;
     picked_count_ = 0;
-    chosen_part_ = ~0u;
+    chosen_part_ = kNone;
     camera_.set_section({});
     section_kind_ = 0;
     module::Overlay& o = presenter_.overlay();
     o.set_slider(false, 0.5f);
-    o.set_chosen(~0u);
+    o.set_chosen(kNone);
     o.set_lines(nullptr, 0);
     highlight();
 }
@@ -100,7 +100,7 @@ Result Core::load(const void* file, uint32_t file_bytes, void* memory, uint32_t 
     pack_bytes_ = unpacked.bytes;
     const uint32_t bytes = pack_bytes_;
     default_tolerance_ = geom::default_tolerance(scene_.box_min(), scene_.box_max());
-    detail_part_ = ~0u, detail_radius_ = 0; // judged afresh
+    detail_part_ = kNone, detail_radius_ = 0; // judged afresh
     camera_.fit();
     user_moved_ = false;
     Event e{};
@@ -127,9 +127,9 @@ bool Core::boxes_while_sampling() const {
 }
 
 Activity Core::step(uint32_t budget_us) {
-    if (pending_model_ != kNoModel) { // a model the chooser asked for (a failure is its event)
+    if (pending_model_ != kNone) { // a model the chooser asked for (a failure is its event)
         const uint32_t m = pending_model_;
-        pending_model_ = kNoModel;
+        pending_model_ = kNone;
         (void)open_model(m);
         return Activity::Busy;
     }
@@ -181,7 +181,7 @@ Activity Core::step(uint32_t budget_us) {
                 presenter_.invalidate();
             }
             work(Event::Kind::WorkEnd, w, item);
-        } else if (swap_.block != kNoBlock && !mid_bands) {
+        } else if (swap_.block != kNone && !mid_bands) {
             work(Event::Kind::WorkBegin, Work::Unpack, swap_.block);
             swap_step();
             work(Event::Kind::WorkEnd, Work::Unpack, swap_.block);
@@ -203,7 +203,7 @@ Activity Core::step(uint32_t budget_us) {
     // next step has its work (a step without a clock is one piece of work).
     if (!mid_bands && !frame_wanted() && !scheduler_.busy() && !swap_piece()) (void)refine_for_view();
     if ((frame_wanted() && presenter_.can_draw()) ||
-        ((scheduler_.busy() || swap_.block != kNoBlock || swap_pending() || scene_.bounding() || framer_.busy() || glide_.phase != Glide::Phase::None) &&
+        ((scheduler_.busy() || swap_.block != kNone || swap_pending() || scene_.bounding() || framer_.busy() || glide_.phase != Glide::Phase::None) &&
          !mid_bands)) {
         return Activity::Busy;
     }

@@ -32,7 +32,6 @@ public:
     Result set_library(const void* data, uint32_t bytes, void* memory, uint32_t memory_bytes);
     Result open_model(uint32_t index);
     uint32_t model_index() const { return model_index_; }
-    static constexpr uint32_t kNoModel = ~0u;
     Activity step(uint32_t budget_us);
     void flush_done() { presenter_.flush_done(); }
     void command(const module::Command& c);
@@ -43,7 +42,7 @@ public:
     void set_tangent_edges(bool shown);
     Stats stats() const;
     bool carved() const { return carved_; }
-    Result configure() { return presenter_.configure(config_.display, config_.frame_budget_us, config_.interface); }
+    Result configure() { return presenter_.configure(config_.display, config_.frame_budget_us, config_.interface, *this); }
 
     // Pieces of work, in units: a frame's (a triangle's set-up or 64 pixels: about a thousand
     // instructions on the ARM926) and a face's (geom::FaceJob units: about five thousand).
@@ -71,7 +70,7 @@ public:
     Result set_orbit(const Orbit& o);
     void show_view(StandardView v);
     void fit();
-    Result fit_part(uint32_t part, uint32_t face = ~0u); // a face of it, or the whole part
+    Result fit_part(uint32_t part, uint32_t face = kNone); // a face of it, or the whole part
     void set_parallel(bool parallel);
     float detail() const;
     Result set_detail(float factor);
@@ -164,7 +163,6 @@ private:
     bool refine_for_view(); // true when it started (or tried) a refinement (detail.cpp)
     bool refine_check_ = false;
     // Blocks of a model larger than the memory brought in as the view nears them (swap.cpp).
-    static constexpr uint32_t kNoBlock = ~0u;
     static constexpr float kSwapPixels = 32.0f;     // a left-out block this large on the screen comes in
     static constexpr uint32_t kSwapBytes = 16384;   // decoded a piece at a time
     bool swap_for_view();                           // true when it began one
@@ -186,7 +184,7 @@ private:
     void forget_left_out_picks();
     bool swap_check_ = false;
     struct Swap {
-        uint32_t block = kNoBlock; // being decoded
+        uint32_t block = kNone; // being decoded
         bool decoded = false;      // (opened and begun in the next piece)
         geom::PackDecoder decoder;
     } swap_;
@@ -194,7 +192,7 @@ private:
     geom::Library library_;
     void* library_memory_ = nullptr;
     uint32_t library_memory_bytes_ = 0;
-    uint32_t model_index_ = kNoModel, pending_model_ = kNoModel;
+    uint32_t model_index_ = kNone, pending_model_ = kNone;
     uint32_t seen_moves_ = 0, seen_refined_ = 0; // the scene's moves and refinements the frames know of
     void detail_view_changed(); // when the view moved since the faces were last judged: judged again
     bool judge_with_view();     // the spheres' view from the camera's, if it moved (true then)
@@ -203,7 +201,7 @@ private:
     float detail_radius_ = 0;
     bool detail_section_ = false; // a section was on: every back face may show
     static constexpr uint32_t kDetailInstances = 8; // a part's instances kept for the next of its faces
-    uint32_t detail_part_ = ~0u, detail_count_ = 0, detail_instances_[kDetailInstances] = {};
+    uint32_t detail_part_ = kNone, detail_count_ = 0, detail_instances_[kDetailInstances] = {};
     uint32_t pack_bytes_ = 0, pack_file_bytes_ = 0;
     bool carved_ = false;
     bool user_moved_ = false; // the view was moved since load (no framing again when the faces are in)
@@ -218,7 +216,7 @@ private:
     static constexpr uint32_t kGlideUs = 400000, kGlideFrames = 10;
     static constexpr uint32_t kDoubleTapUs = 400000;
     static constexpr int kDoubleTapSlop = 12; // pixels
-    void glide_to(const module::View& v, uint32_t instance = ~0u, uint32_t face = ~0u);
+    void glide_to(const module::View& v, uint32_t instance = kNone, uint32_t face = kNone);
     bool glide_step(); // Moving: the camera advanced (a frame is wanted); false when it has arrived
     // Picked faces (measuring: the last two), their exact surfaces, and the panel's text.
     struct Picked {
@@ -240,7 +238,7 @@ private:
     bool tap_parts(int16_t x, int16_t y); // a tap on the parts list (true: it was the list's)
     bool tap_models(int16_t x, int16_t y); // a tap on the models chooser (library.cpp)
     void toggle_models();
-    uint32_t chosen_part_ = ~0u;
+    uint32_t chosen_part_ = kNone;
     uint8_t section_kind_ = 0; // 0 off, 1 the picked plane, 2 x, 3 y, 4 z (or the application's)
     // Double tap: the last tap's place and time (without a clock: a second tap on the same spot).
     int16_t tap_x_ = -1000, tap_y_ = -1000;

@@ -139,7 +139,7 @@ bool Core::refine_for_view() {
         return false;
     }
     for (;;) { // (a block refused, for want of room, is passed over the next time round)
-        uint32_t best = ~0u;
+        uint32_t best = kNone;
         float best_gap = 1, best_tolerance = 0;
         for (uint32_t b = 0; b < scene_.block_count(); ++b) {
             const module::Block& block = scene_.block(b);
@@ -150,7 +150,7 @@ bool Core::refine_for_view() {
             const float gap = finer >= kRefineStep && on_screen ? finer : coarser >= kRefineStep ? coarser : 0;
             if (gap > best_gap) best = b, best_gap = gap, best_tolerance = want;
         }
-        if (best == ~0u) {
+        if (best == kNone) {
             refine_check_ = false;
             return false;
         }
@@ -177,10 +177,10 @@ uint32_t Core::block_order(void* self) {
     for (uint32_t b = 0; b < n; ++b) {
         module::Block& block = scene.block(b);
         block.pixels = block.left_out ? 0 : c.block_pixels(b);
-        block.next = b + 1 < n ? b + 1 : kNoBlock;
+        block.next = b + 1 < n ? b + 1 : kNone;
     }
-    uint32_t head = n ? 0 : kNoBlock;
-    return n ? c.sort_blocks(head, n) : kNoBlock;
+    uint32_t head = n ? 0 : kNone;
+    return n ? c.sort_blocks(head, n) : kNone;
 }
 
 // The first `count` blocks of the chain from `head` sorted (largest first); head moves past them.
@@ -188,16 +188,16 @@ uint32_t Core::sort_blocks(uint32_t& head, uint32_t count) {
     if (count == 1) {
         const uint32_t one = head;
         head = scene_.block(one).next;
-        scene_.block(one).next = kNoBlock;
+        scene_.block(one).next = kNone;
         return one;
     }
     uint32_t a = sort_blocks(head, count / 2), b = sort_blocks(head, count - count / 2);
-    uint32_t first = kNoBlock, *tail = &first;
-    while (a != kNoBlock && b != kNoBlock) {
+    uint32_t first = kNone, *tail = &first;
+    while (a != kNone && b != kNone) {
         uint32_t& take = scene_.block(b).pixels > scene_.block(a).pixels ? b : a;
         *tail = take, tail = &scene_.block(take).next, take = scene_.block(take).next;
     }
-    *tail = a != kNoBlock ? a : b;
+    *tail = a != kNone ? a : b;
     return first;
 }
 

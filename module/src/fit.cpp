@@ -43,7 +43,7 @@ bool Framer::run(const Scene& scene, Camera& camera, uint32_t units) {
             budget = budget > 64 ? budget - 64 : 0; // the adjustment's own cost
             continue;
         }
-        if (only_instance_ != ~0u && instance_ != only_instance_) {
+        if (only_instance_ != kNone && instance_ != only_instance_) {
             ++instance_;
             continue;
         }
@@ -53,7 +53,7 @@ bool Framer::run(const Scene& scene, Camera& camera, uint32_t units) {
             part_ = scene.part(instances[instance_].shell);
             face_ = part_.first_face, phase_ = 0, k_ = 0;
             uint32_t first = 0, count = 0;
-            by_edges_ = only_face_ == ~0u && !samples.count.empty() && scene.part_edges(instances[instance_].shell, first, count);
+            by_edges_ = only_face_ == kNone && !samples.count.empty() && scene.part_edges(instances[instance_].shell, first, count);
             edge_ = first, edge_end_ = first + count;
             curved_only_ = false;
             budget = budget > 32 ? budget - 32 : 0;
@@ -100,7 +100,7 @@ bool Framer::run(const Scene& scene, Camera& camera, uint32_t units) {
             have_transform_ = false;
             continue;
         }
-        if (only_face_ != ~0u && face_ != only_face_) {
+        if (only_face_ != kNone && face_ != only_face_) {
             ++face_;
             continue;
         }

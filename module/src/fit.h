@@ -29,8 +29,8 @@ public:
     static constexpr int kRounds = 8;
     static constexpr float kFill = 0.85f; // of the free area
 
-    // Frame the whole model (face = ~0u) or one face of one instance, on a width x height screen.
-    void start(uint16_t width, uint16_t height, FreeArea taken, uint32_t instance = ~0u, uint32_t face = ~0u, float fill = kFill);
+    // Frame the whole model (face = kNone) or one face of one instance, on a width x height screen.
+    void start(uint16_t width, uint16_t height, FreeArea taken, uint32_t instance = kNone, uint32_t face = kNone, float fill = kFill);
     void stop() { busy_ = false; }
     bool busy() const { return busy_; }
     // Up to `units` of work on `camera`; true when the framing is done (or there was nothing to frame).
@@ -45,7 +45,7 @@ private:
     bool busy_ = false;
     uint16_t width_ = 0, height_ = 0;
     FreeArea taken_;
-    uint32_t only_instance_ = ~0u, only_face_ = ~0u;
+    uint32_t only_instance_ = kNone, only_face_ = kNone;
     float fill_ = kFill;
     int round_ = 0;
     // Where the round's scan stands: instance, face, then the face's vertices (phase 0) and its

@@ -24,7 +24,7 @@ Result Core::set_library(const void* data, uint32_t bytes, void* memory, uint32_
     if (const Result r = lib.open(data, bytes); !r.ok()) return r;
     library_ = lib;
     library_memory_ = memory, library_memory_bytes_ = memory_bytes;
-    model_index_ = kNoModel; // (a model open now is none of this library's)
+    model_index_ = kNone; // (a model open now is none of this library's)
     presenter_.overlay().set_library(&library_);
     return {};
 }
@@ -47,7 +47,7 @@ Result Core::open_model(uint32_t index) {
     emit(failed);
     presenter_.overlay().mark_broken(index); // (the person holding it sees it in the chooser)
     // The model open before comes back (its file is intact in the library; load() dropped it).
-    if (before != kNoModel && before != index) {
+    if (before != kNone && before != index) {
         const geom::Library::Entry b = library_.entry(before);
         if (load(b.file, b.bytes, library_memory_, library_memory_bytes_).ok()) model_index_ = before;
     }

@@ -115,7 +115,7 @@ uint32_t Overlay::part_rows() const {
 void Overlay::set_chosen(uint32_t part) {
     chosen_ = part;
     const uint32_t rows = part_rows();
-    if (part == ~0u || rows == 0) return;
+    if (part == kNone || rows == 0) return;
     if (part < first_row_) first_row_ = part;
     if (part >= first_row_ + rows) first_row_ = part - rows + 1;
 }
@@ -298,9 +298,9 @@ void Overlay::parts_list(const render::Target& t) const {
     const int32_t third = p.width / 3, y = p.y + p.height - kPartsFooter;
     for (int i = 0; i < 3; ++i) {
         const int32_t x = p.x + i * third, w = i == 2 ? p.width - 2 * third : third;
-        render::fill_rect(t, x + 1, y + 1, w - 2, kPartsFooter - 2, chosen_ == ~0u && i < 2 ? kBar : kButton);
+        render::fill_rect(t, x + 1, y + 1, w - 2, kPartsFooter - 2, chosen_ == kNone && i < 2 ? kBar : kButton);
         render::draw_text(t, x + (w - render::text_width(kLabels[i])) / 2, y + (kPartsFooter - render::kGlyphHeight) / 2, kLabels[i],
-                          chosen_ == ~0u && i < 2 ? kDim : kText);
+                          chosen_ == kNone && i < 2 ? kDim : kText);
     }
 }
 

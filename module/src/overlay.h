@@ -65,7 +65,7 @@ public:
     void set_scene(const Scene* scene) { scene_ = scene; }
     void set_parts(bool open) { parts_open_ = open, first_row_ = 0, models_open_ = models_open_ && !open; }
     bool parts_open() const { return parts_open_ && button_count_ > 0; }
-    void set_chosen(uint32_t part); // highlighted row (scrolled into the list); ~0u: none
+    void set_chosen(uint32_t part); // highlighted row (scrolled into the list); kNone: none
     struct PartsHit {
         enum class Kind : uint8_t { None, Panel, Row, Box, Up, Down, Hide, Isolate, All } kind = Kind::None;
         uint32_t part = 0;
@@ -87,7 +87,7 @@ public:
     bool broken(uint32_t model) const { return model < pack::kMaxLibraryEntries && (broken_[model / 32] >> (model % 32)) & 1u; }
     void set_models(bool open, uint32_t current) {
         models_open_ = open && library_ && library_->count() > 0, current_model_ = current, first_model_ = 0;
-        if (current != kNoRow && current >= model_rows()) first_model_ = current - model_rows() + 1; // (the open one in view)
+        if (current != kNone && current >= model_rows()) first_model_ = current - model_rows() + 1; // (the open one in view)
         parts_open_ = parts_open_ && !models_open_;
     }
     bool models_open() const { return models_open_ && button_count_ > 0; }
@@ -147,11 +147,10 @@ private:
     float slider_value_ = 0.5f;
     const Scene* scene_ = nullptr;
     bool parts_open_ = false;
-    uint32_t first_row_ = 0, chosen_ = ~0u;
+    uint32_t first_row_ = 0, chosen_ = kNone;
     const geom::Library* library_ = nullptr;
     bool models_open_ = false;
-    static constexpr uint32_t kNoRow = ~0u;
-    uint32_t current_model_ = kNoRow, first_model_ = 0;
+    uint32_t current_model_ = kNone, first_model_ = 0;
     uint32_t broken_[pack::kMaxLibraryEntries / 32] = {};
 };
 

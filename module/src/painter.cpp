@@ -255,7 +255,7 @@ uint32_t Painter::highlighted_faces(uint32_t first, uint32_t count, const Transf
     uint32_t work = 0;
     auto again = [&](uint32_t f) {
         uint32_t used;
-        (void)face(f, t, rows, 0, ~0u, used);
+        (void)face(f, t, rows, 0, kNone, used);
         work += used + 1;
     };
     nearer_ = true;

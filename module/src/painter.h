@@ -59,7 +59,7 @@ public:
     // While the view is dragged, shaded faces are drawn without their B-rep edges (a third of a
     // frame's work): the edges come back when it rests. Wireframe and hidden line keep theirs.
     void set_dragging(bool on) { dragging_ = on; }
-    // Picked faces drawn in the highlight colour (face ~0u: none), and the instance being drawn.
+    // Picked faces drawn in the highlight colour (face kNone: none), and the instance being drawn.
     void set_highlight(uint32_t face0, uint32_t instance0, uint32_t face1, uint32_t instance1) {
         hl_[0] = {face0, instance0}, hl_[1] = {face1, instance1};
     }
@@ -72,8 +72,8 @@ public:
     // Every face of the instance being drawn lies inside the view and the rows (its part's
     // sphere does: Transform::Sight::In): no face is tested on its own.
     void set_inside(bool on) { inside_ = on; }
-    // The part chosen in the parts list (every face in the highlight colour; ~0u: none), and
-    // the part see-through mode draws solid (~0u: every part see-through).
+    // The part chosen in the parts list (every face in the highlight colour; kNone: none), and
+    // the part see-through mode draws solid (kNone: every part see-through).
     void set_part(uint32_t instance) { part_ = instance; }
     // Faces drawn into a faces layer take their own colours (no highlight: the layer holds the
     // view's faces whatever is picked); the highlighted ones are drawn again over its copy.
@@ -160,7 +160,7 @@ private:
     DisplayMode mode_ = DisplayMode::ShadedEdges;
     bool tangent_edges_ = true;
     struct Highlight {
-        uint32_t face = ~0u, instance = ~0u;
+        uint32_t face = kNone, instance = kNone;
     } hl_[2];
     uint32_t instance_ = 0;
     uint32_t stamp_ = 1;    // the projection cache's points of this instance's drawing carry it
@@ -172,7 +172,7 @@ private:
     bool inside_ = false;
     bool plain_ = false;      // set_plain()
     bool nearer_ = false;     // highlighted_faces(): vertices a depth unit nearer
-    uint32_t part_ = ~0u, focus_ = ~0u;
+    uint32_t part_ = kNone, focus_ = kNone;
     uint32_t refused_ = 0;
 };
 

@@ -52,8 +52,8 @@ void Core::picked(const Event& e) {
 
 void Core::highlight() {
     focus();
-    painter_.set_highlight(picked_count_ > 0 ? picked_[0].face : ~0u, picked_count_ > 0 ? picked_[0].instance : ~0u,
-                           picked_count_ > 1 ? picked_[1].face : ~0u, picked_count_ > 1 ? picked_[1].instance : ~0u);
+    painter_.set_highlight(picked_count_ > 0 ? picked_[0].face : kNone, picked_count_ > 0 ? picked_[0].instance : kNone,
+                           picked_count_ > 1 ? picked_[1].face : kNone, picked_count_ > 1 ? picked_[1].instance : kNone);
 }
 
 Result Core::describe(const Picked& p, geom::FaceGeometry& g) const {

@@ -4,7 +4,8 @@
 
 namespace facet::module {
 
-Result Presenter::configure(const Display& d, uint32_t frame_budget_us, Interface interface) {
+Result Presenter::configure(const Display& d, uint32_t frame_budget_us, Interface interface, Viewer& viewer) {
+    viewer_ = &viewer;
     auto bad = [](const char* what) { return Result::fail(Status::OutOfRange, what, {"display"}); };
     if (d.width == 0 || d.height == 0 || d.width > 4096 || d.height > 4096) return bad("width and height must be 1 to 4096");
     if (d.band_lines == 0 || d.band_lines > d.height) return bad("band_lines must be 1 to the height (the height: full frames)");
@@ -266,7 +267,7 @@ void Presenter::flush(uint32_t pass) {
         buf_[b].applied = job_.applied_to;
     }
     // (in the screen's coordinates: facet's rectangle at (x, y) of it)
-    display_.flush(display_.user, Area{display_.x, uint16_t(display_.y + t.y0), t.width, t.rows}, t.pixels); // may call flush_done()
+    display_.flush(*viewer_, display_.user, Area{display_.x, uint16_t(display_.y + t.y0), t.width, t.rows}, t.pixels); // may call flush_done()
     if (!last) {
         ++job_.band;
         job_.stage = Job::Stage::Begin;

@@ -50,8 +50,9 @@ public:
               const Clock& clock)
         : scene_(scene), camera_(camera), painter_(painter), raster_(raster), emit_(emit), clock_(clock) {}
 
-    // Checks the display's buffers; nothing is drawn before a model is loaded.
-    Result configure(const Display& display, uint32_t frame_budget_us, Interface interface);
+    // Checks the display's buffers; nothing is drawn before a model is loaded. `viewer`: the one
+    // the display's flush is told of.
+    Result configure(const Display& display, uint32_t frame_budget_us, Interface interface, Viewer& viewer);
     Overlay& overlay() { return overlay_; }
     const Overlay& overlay() const { return overlay_; }
     // What the status bar shows that the presenter does not know (the level of detail).
@@ -93,6 +94,7 @@ public:
     void set_catch_up(bool on) { catch_up_ = on; }
 
 private:
+    Viewer* viewer_ = nullptr; // (configure())
     void run_piece(uint32_t units, uint32_t pass); // run()'s piece, timed by run()
     struct Job {
         bool active = false, full = false, boxes = false, dragging = false;

@@ -6,6 +6,7 @@
 // before it (Block::first_face...), and a block's pack numbers its own from 0. Positions are
 // quantized once per face (shell coordinates, diag/2^20 units); normals are Q14.
 #include "facet/sizes.h"
+#include "facet/types.h"
 #include "geom/pack.h"
 #include "geom/pack_index.h"
 #include "geom/tessellate.h"
@@ -67,7 +68,7 @@ struct Block {
     bool leaving = false; // chosen to make room for a block the view brings in (swap.cpp)
     bool broken = false;  // found corrupt as it was brought in: left out for good
     float pixels = 0;     // its box's size on the screen when last judged (swap.cpp)
-    uint32_t next = ~0u;  // the next block a pass takes (Scheduler's BlockOrder)
+    uint32_t next = kNone;  // the next block a pass takes (Scheduler's BlockOrder)
     uint32_t faces = 0, edges = 0;
 };
 

@@ -17,7 +17,7 @@ void Scheduler::begin_pass(float tolerance) {
     in_edge_ = false;
     face_ = 0;
     in_face_ = false;
-    refine_block_ = kNoBlock;
+    refine_block_ = kNone;
     sweep_ = revisit_ = false;
     scene_.samples().used = 0;
     for (uint32_t b = 0; b < scene_.block_count(); ++b) {
@@ -182,18 +182,18 @@ void Scheduler::revisit() {
 }
 
 void Scheduler::all_blocks() {
-    face_ = face_end_ = 0, next_block_ = kNoBlock, ordered_ = false;
+    face_ = face_end_ = 0, next_block_ = kNone, ordered_ = false;
 }
 
 bool Scheduler::next_block() {
     if (!ordered_) { // (once the pass or sweep reaches its first face: the view framed by then)
         ordered_ = true;
-        next_block_ = order_.fn ? order_.fn(order_.user) : scene_.block_count() ? 0 : kNoBlock;
+        next_block_ = order_.fn ? order_.fn(order_.user) : scene_.block_count() ? 0 : kNone;
         if (!order_.fn) {
-            for (uint32_t b = 0; b < scene_.block_count(); ++b) scene_.block(b).next = b + 1 < scene_.block_count() ? b + 1 : kNoBlock;
+            for (uint32_t b = 0; b < scene_.block_count(); ++b) scene_.block(b).next = b + 1 < scene_.block_count() ? b + 1 : kNone;
         }
     }
-    while (next_block_ != kNoBlock) {
+    while (next_block_ != kNone) {
         const Block& b = scene_.block(next_block_);
         next_block_ = b.next;
         if (b.left_out || b.faces == 0) continue;
@@ -274,7 +274,7 @@ void Scheduler::finish_face(const Result& done) {
 void Scheduler::end_faces() {
     const Totals& t = scene_.totals();
     const bool was_refine = refining(), was_sweep = sweep_ || was_refine;
-    if (was_refine) refine_block_ = kNoBlock, ++refined_;
+    if (was_refine) refine_block_ = kNone, ++refined_;
     stage_ = Stage::Idle, sweep_ = false;
     // A sweep follows a view change, and a refinement (what it freed may bring faces in).
     if ((revisit_ || was_refine) && t.deferred > 0) stage_ = Stage::Faces, sweep_ = true, all_blocks();
@@ -377,7 +377,7 @@ void Scheduler::refine_sample(uint32_t units) {
         e.pass = {pass_, refine_tolerance_, s.used};
         e.why = r.within({"refining block", refine_block_});
         emit_(e);
-        refine_block_ = kNoBlock, stage_ = Stage::Idle;
+        refine_block_ = kNone, stage_ = Stage::Idle;
         return;
     }
     if (next_edge_ < edges) return;

@@ -33,7 +33,7 @@ struct BlockTolerance {
 };
 
 // The order a pass or a sweep takes the blocks in (what shows largest first): the first block,
-// the others chained by Block::next (kNoBlock ends it). None given: the pack's order.
+// the others chained by Block::next (kNone ends it). None given: the pack's order.
 struct BlockOrder {
     uint32_t (*fn)(void* user) = nullptr;
     void* user = nullptr;
@@ -77,7 +77,7 @@ public:
     static constexpr float kCoarsestFirst = pack::kCoarsestFirst;
     // Whether the samples' pool has room for `need` more (compacted first if short; not while busy).
     bool make_sample_room(uint32_t need);
-    bool refining() const { return refine_block_ != kNoBlock; }
+    bool refining() const { return refine_block_ != kNone; }
     uint32_t refined() const { return refined_; } // refinements finished
     void stop() { stage_ = Stage::Idle, started_ = false; }
 
@@ -98,7 +98,6 @@ private:
     Result sample_edges(uint32_t end, uint32_t units);
     void refine_sample(uint32_t units);
     bool evict_unwanted(); // the meshes of done faces the view does not want now (true: some)
-    static constexpr uint32_t kNoBlock = ~0u;
     bool next_face(); // past faces not to tessellate now; false when the piece is spent on them
     // A pass's or a sweep's faces: every block's, block after block in order_'s order (asked for
     // when the first face is reached), face_ .. face_end_ the current block's.
@@ -136,11 +135,11 @@ private:
     geom::EdgeSampler sampler_;
     uint32_t face_ = 0;        // the face being tessellated
     uint32_t face_end_ = 0;    // past the faces of this block (a pass, a sweep) or refinement
-    uint32_t next_block_ = kNoBlock; // the block after this one in order (a pass, a sweep)
+    uint32_t next_block_ = kNone; // the block after this one in order (a pass, a sweep)
     bool ordered_ = false;     // the order asked for in this pass or sweep
     BlockOrder order_;
     bool in_face_ = false;
-    uint32_t refine_block_ = kNoBlock; // the block being refined
+    uint32_t refine_block_ = kNone; // the block being refined
     float refine_tolerance_ = 0;
     uint32_t refine_from_ = 0;         // its new samples' first in the pool
     uint32_t refined_ = 0;

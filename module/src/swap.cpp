@@ -39,7 +39,7 @@ uint32_t Core::block_samples(uint32_t b) const {
 // The choice and the room made (blocks left out, the pack memory compacted) as a piece of
 // unpacking work, when there is a choice to make.
 bool Core::swap_piece() {
-    if (!swap_pending() || swap_.block != kNoBlock) return false;
+    if (!swap_pending() || swap_.block != kNone) return false;
     work(Event::Kind::WorkBegin, Work::Unpack, 0);
     const bool begun = swap_for_view();
     work(Event::Kind::WorkEnd, Work::Unpack, 0);
@@ -47,20 +47,20 @@ bool Core::swap_piece() {
 }
 
 bool Core::swap_for_view() {
-    if (!swap_pending() || swap_.block != kNoBlock || scheduler_.busy() || scene_.bounding() || framer_.busy() ||
+    if (!swap_pending() || swap_.block != kNone || scheduler_.busy() || scene_.bounding() || framer_.busy() ||
         glide_.phase != Glide::Phase::None) {
         return false;
     }
     swap_check_ = false;
     // Every block's size on the screen, once (Block::pixels); the largest left out first.
-    uint32_t best = kNoBlock;
+    uint32_t best = kNone;
     float best_pixels = kBackPixels;
     for (uint32_t b = 0; b < scene_.block_count(); ++b) {
         module::Block& block = scene_.block(b);
         block.pixels = block_pixels(b);
         if (block.left_out && !block.refused && !block.broken && block.pixels >= best_pixels) best = b, best_pixels = block.pixels;
     }
-    if (best == kNoBlock) return false;
+    if (best == kNone) return false;
     swap_check_ = true; // the next one at the next moment nothing else is under way (this one in or not)
     return swap_in(best);
 }
@@ -78,14 +78,14 @@ bool Core::swap_in(uint32_t best) {
     // The victims chosen first (Block::leaving), left out only if together they make the room.
     uint32_t victims = 0;
     while ((room < need || samples < need_samples) && best_pixels >= kSwapPixels) {
-        uint32_t victim = kNoBlock;
+        uint32_t victim = kNone;
         float least = 0.5f * best_pixels;
         for (uint32_t b = 0; b < blocks; ++b) {
             const module::Block& block = scene_.block(b);
             if (block.left_out || block.leaving) continue;
-            if (block.pixels <= least && (victim == kNoBlock || block.pixels < least)) victim = b, least = block.pixels;
+            if (block.pixels <= least && (victim == kNone || block.pixels < least)) victim = b, least = block.pixels;
         }
-        if (victim == kNoBlock) break;
+        if (victim == kNone) break;
         scene_.block(victim).leaving = true;
         room += module::block_memory(unpacked_, victim), samples += block_samples(victim);
         ++victims;
@@ -132,7 +132,7 @@ void Core::swap_finish(const geom::PackDecoder* decoder) {
         (void)swap_failed(b, r);
         return;
     }
-    swap_.block = kNoBlock;
+    swap_.block = kNone;
     swap_check_ = true; // (the next one, once this one is in)
     presenter_.invalidate();
     if (!scheduler_.begin_refine(b, wanted_tolerance(b, scheduler_.tolerance(), kFinest, nullptr))) {
@@ -143,7 +143,7 @@ void Core::swap_finish(const geom::PackDecoder* decoder) {
 }
 
 bool Core::leave_out_unseen(uint32_t keep) {
-    if (!unpacked_.memory || scheduler_.busy() || swap_.block != kNoBlock) return false;
+    if (!unpacked_.memory || scheduler_.busy() || swap_.block != kNone) return false;
     uint32_t dropped = 0;
     for (uint32_t b = 0; b < scene_.block_count(); ++b) {
         if (b == keep || scene_.block(b).left_out || block_pixels(b) > 0) continue;
@@ -172,7 +172,7 @@ void Core::forget_left_out_picks() {
 // A block that could not come in: said by a PassFailed event naming it, and left out (a box)
 // until the view changes, or for good when it is corrupt (anything but a want of room).
 bool Core::swap_failed(uint32_t b, const Result& why) {
-    swap_.block = kNoBlock;
+    swap_.block = kNone;
     scene_.block(b).refused = true;
     scene_.block(b).broken = scene_.block(b).broken || why.status != Status::Full;
     Event e{};

@@ -92,7 +92,7 @@ void Core::section_at(float at, bool relative) {
 }
 
 void Core::choose(uint32_t part) {
-    chosen_part_ = scene_.loaded() && part < scene_.instances().size() ? part : ~0u;
+    chosen_part_ = scene_.loaded() && part < scene_.instances().size() ? part : kNone;
     presenter_.overlay().set_chosen(chosen_part_);
     focus();
     highlight_changed();
@@ -107,7 +107,7 @@ void Core::highlight_changed() {
 
 void Core::focus() {
     painter_.set_part(chosen_part_);
-    painter_.set_focus(chosen_part_ != ~0u ? chosen_part_ : picked_count_ > 0 ? picked_[0].instance : ~0u);
+    painter_.set_focus(chosen_part_ != kNone ? chosen_part_ : picked_count_ > 0 ? picked_[0].instance : kNone);
 }
 
 Result Core::show(uint32_t part, bool shown) {
@@ -156,12 +156,12 @@ void Core::tool(Action a) {
         presenter_.overlay().set_chosen(chosen_part_);
         presenter_.redraw(); // (the list opened or closed)
         return;
-    case Action::NextPart: choose(chosen_part_ == ~0u || chosen_part_ + 1 >= parts ? 0 : chosen_part_ + 1); return;
+    case Action::NextPart: choose(chosen_part_ == kNone || chosen_part_ + 1 >= parts ? 0 : chosen_part_ + 1); return;
     case Action::HidePart:
-        if (chosen_part_ != ~0u) (void)show(chosen_part_, false); // past kMaxHideable: stays shown (show() says why)
+        if (chosen_part_ != kNone) (void)show(chosen_part_, false); // past kMaxHideable: stays shown (show() says why)
         return;
     case Action::IsolatePart:
-        if (chosen_part_ != ~0u) (void)isolate(chosen_part_); // (likewise)
+        if (chosen_part_ != kNone) (void)isolate(chosen_part_); // (likewise)
         return;
     case Action::ShowAllParts: show_all(); return;
     default: return;
@@ -175,7 +175,7 @@ bool Core::tap_parts(int16_t x, int16_t y) {
     switch (h.kind) {
     case Kind::None: return false;
     case Kind::Panel: return true;
-    case Kind::Row: choose(h.part == chosen_part_ ? ~0u : h.part); return true; // a second tap lets go
+    case Kind::Row: choose(h.part == chosen_part_ ? kNone : h.part); return true; // a second tap lets go
     case Kind::Box: (void)show(h.part, !scene_.shown(h.part)); return true;     // refused past kMaxHideable
     case Kind::Up: o.scroll(-int32_t(o.part_rows()) + 1); break;
     case Kind::Down: o.scroll(int32_t(o.part_rows()) - 1); break;

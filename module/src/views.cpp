@@ -25,7 +25,7 @@ void Core::glide_to(const module::View& v, uint32_t instance, uint32_t face) {
     if (sampled) {
         // A face is framed to fill less: it is seen among its neighbours.
         framer_.start(config_.display.width, config_.display.height, presenter_.overlay().taken(), instance, face,
-                      face == ~0u ? module::Framer::kFill : 0.6f);
+                      face == kNone ? module::Framer::kFill : 0.6f);
     }
 }
 
@@ -109,7 +109,7 @@ void Core::fit() {
 }
 
 Result Core::fit_part(uint32_t part, uint32_t face) {
-    if (const Result r = face == ~0u ? check_part(part) : check_face(part, face); !r.ok()) return r;
+    if (const Result r = face == kNone ? check_part(part) : check_face(part, face); !r.ok()) return r;
     glide_to(camera_.view(), part, face);
     return {};
 }

@@ -82,7 +82,7 @@ struct Reader {
     int16_t s() { return kShorts[byte() % (sizeof kShorts / sizeof kShorts[0])]; }
 };
 
-void flush(void*, const facet_area*, const facet_rgb565*) {}
+void flush(facet_viewer*, void*, const facet_area*, const facet_rgb565*) {}
 void on_event(void*, const facet_event*) {}
 uint32_t clock_us(void* user) { return (*static_cast<uint32_t*>(user) += 700); }
 
@@ -108,7 +108,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     cfg.display.flush = flush;
     cfg.on_event = on_event;
     if (shape & 8) cfg.now_us = clock_us, cfg.clock_user = &now;
-    cfg.interface = (shape >> 4) % 3;
+    cfg.interface = facet_interface((shape >> 4) % 3);
     static std::vector<uint64_t> workspace(facet_workspace_bytes(nullptr) / 8 + 1);
     facet_result why;
     facet_viewer* v = facet_create(&cfg, workspace.data(), workspace.size() * 8, &why);
@@ -127,7 +127,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         case 5: facet_touch(v, in.byte() % 4, in.s(), in.s(), in.byte() & 1); break;
         case 6: facet_act(v, facet_action(in.byte())); break;
         case 7: {
-            facet_orbit o = {in.f(), in.f(), in.f(), {in.f(), in.f()}, uint8_t(in.byte() & 1)};
+            facet_orbit o = {in.f(), in.f(), in.f(), {in.f(), in.f()}, (in.byte() & 1) != 0};
             (void)facet_set_orbit(v, &o);
             break;
         }
@@ -146,7 +146,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         case 20: (void)facet_isolate_part(v, in.u()); break;
         case 21: (void)facet_choose_part(v, in.u()); break;
         case 22: {
-            facet_section s = {uint8_t(in.byte() & 1), {in.f(), in.f(), in.f()}, in.f()};
+            facet_section s = {(in.byte() & 1) != 0, {in.f(), in.f(), in.f()}, in.f()};
             (void)facet_set_section(v, &s);
             break;
         }

@@ -30,8 +30,9 @@ static facet_viewer *viewer;
         }                                                                                           \
     } while (0)
 
-static void flush(void *user, const facet_area *a, const facet_rgb565 *pixels) {
+static void flush(facet_viewer *v, void *user, const facet_area *a, const facet_rgb565 *pixels) {
     int y;
+    CHECK(v == viewer); /* the viewer that drew it: no global needed to call facet_flush_done() */
     CHECK(user == (void *)screen);
     CHECK(a->x == origin_x && a->width == W && a->height <= LINES && a->y >= origin_y && a->y + a->height <= origin_y + H);
     for (y = 0; y < a->height; ++y) memcpy(&screen[(a->y - origin_y + y) * W], pixels + y * W, W * 2);
@@ -65,7 +66,6 @@ int main(int argc, char **argv) {
     facet_config_init(&cfg);
     /* The model's counts planned at load (0), one face's working memory at its default. */
     CHECK(cfg.capacity.faces == 0 && cfg.capacity.face_points == FACET_DEFAULT_FACE_POINTS && cfg.step_slack_us > 0);
-    CHECK(facet_workspace_bytes(&cfg.capacity) == FACET_WORKSPACE_BASE_BYTES);
     cfg.display.width = W;
     cfg.display.height = H;
     cfg.display.band_lines = LINES;
@@ -82,6 +82,15 @@ int main(int argc, char **argv) {
      * not 8-byte aligned; then a scan-out display in bands. The least the formula says opens. */
     CHECK(facet_create(&cfg, workspace, 1024, &why) == NULL && why.status == FACET_FULL);
     CHECK(facet_create(&cfg, workspace, FACET_WORKSPACE_BASE_BYTES - 1, &why) == NULL && why.status == FACET_FULL);
+    /* A face of twice the points takes more than the default's workspace: refused there, with
+     * the bytes it needs. An interface the module does not know is refused too. */
+    cfg.capacity.face_points *= 2;
+    CHECK(facet_create(&cfg, workspace, FACET_WORKSPACE_BASE_BYTES, &why) == NULL && why.status == FACET_FULL &&
+          why.where_index == facet_workspace_bytes(&cfg.capacity) && why.where_index > FACET_WORKSPACE_BASE_BYTES);
+    cfg.capacity.face_points /= 2;
+    cfg.interface = (facet_interface)7;
+    CHECK(facet_create(&cfg, workspace, sizeof workspace, &why) == NULL && why.status == FACET_OUT_OF_RANGE);
+    cfg.interface = FACET_INTERFACE_FULL;
     CHECK(facet_create(&cfg, NULL, sizeof workspace, &why) == NULL && why.status == FACET_OUT_OF_RANGE);
     memset(workspace, 0xA5, 64);
     CHECK(facet_create(&cfg, workspace + 4, sizeof workspace - 4, &why) == NULL && why.status == FACET_OUT_OF_RANGE);
@@ -154,7 +163,7 @@ int main(int argc, char **argv) {
      * reduced to the status line. Flush areas come in the screen's coordinates (flush()
      * checks), and so do touches: one in the rectangle picks, one outside it is the product's. */
     origin_x = cfg.display.x = 7, origin_y = cfg.display.y = 5;
-    cfg.interface = 2;
+    cfg.interface = FACET_INTERFACE_STATUS_LINE;
     viewer = facet_create(&cfg, workspace, sizeof workspace, &why);
     CHECK(viewer != NULL && why.status == FACET_OK);
     if (!viewer) return 1;

@@ -32,8 +32,8 @@ static int failures;
     } while (0)
 #define NEAR(a, b, eps) (fabs((double)(a) - (double)(b)) <= (eps))
 
-static void flush(void *user, const facet_area *a, const facet_rgb565 *pixels) {
-    (void)user, (void)a, (void)pixels;
+static void flush(facet_viewer *v, void *user, const facet_area *a, const facet_rgb565 *pixels) {
+    (void)v, (void)user, (void)a, (void)pixels;
 }
 
 static void on_event(void *user, const facet_event *e) {
@@ -80,7 +80,7 @@ static uint32_t find_face(facet_viewer *v, facet_surface surface, int axis, doub
         if (facet_get_face(v, 0, i, &f).status != FACET_OK || f.surface != surface) continue;
         if (axis < 0 || NEAR(f.axis[axis], sign, 1e-6)) return i;
     }
-    return 0xFFFFFFFFu;
+    return FACET_NONE;
 }
 
 /* Every call with what it must refuse; nothing may crash, and the refusals say so. */
@@ -130,13 +130,13 @@ static void misuse(facet_viewer *loaded) {
     m = facet_measure(none, &f, &f);
     CHECK(m.kind == FACET_MEASURE_NONE);
     CHECK(facet_get_measurement_lines(none, lines) == 0);
-    CHECK(facet_part_count(none) == 0);
+    CHECK(facet_get_part_count(none) == 0);
     CHECK(facet_get_part(none, 0).faces == 0);
     CHECK(facet_show_part(none, 0, 0).status == FACET_OUT_OF_RANGE);
     CHECK(facet_isolate_part(none, 0).status == FACET_OUT_OF_RANGE);
     facet_show_all_parts(none);
     CHECK(facet_choose_part(none, 0).status == FACET_OUT_OF_RANGE);
-    CHECK(facet_chosen_part(none) == 0xFFFFFFFFu);
+    CHECK(facet_get_chosen_part(none) == FACET_NONE);
     CHECK(facet_get_section(none).on == 0);
     CHECK(facet_set_section(none, &sec).status == FACET_OUT_OF_RANGE);
     CHECK(facet_section_through(none, 0, 0).status == FACET_OUT_OF_RANGE);
@@ -161,19 +161,19 @@ static void misuse(facet_viewer *loaded) {
     CHECK(facet_get_face(loaded, 0, 0, NULL).status == FACET_OUT_OF_RANGE);
     CHECK(facet_get_face(loaded, 1, 0, &f).status == FACET_OUT_OF_RANGE && f.hit == 0);
     CHECK(facet_get_face(loaded, 0, 1000000, &f).status == FACET_OUT_OF_RANGE);
-    CHECK(facet_select(loaded, 0, 0xFFFFFFFFu).status == FACET_OUT_OF_RANGE);
+    CHECK(facet_select(loaded, 0, FACET_NONE).status == FACET_OUT_OF_RANGE);
     CHECK(facet_get_selection(loaded, NULL) == 0);
     CHECK(facet_measure(loaded, NULL, &f).kind == FACET_MEASURE_NONE);
     f.hit = 1, f.part = 7, f.face = 3;
     CHECK(facet_measure(loaded, &f, &f).kind == FACET_MEASURE_NONE);
     CHECK(facet_get_measurement_lines(loaded, NULL) == 0);
     CHECK(facet_fit_part(loaded, 1).status == FACET_OUT_OF_RANGE);
-    CHECK(facet_fit_face(loaded, 0, 0xFFFFFFFFu).status == FACET_OUT_OF_RANGE);
+    CHECK(facet_fit_face(loaded, 0, FACET_NONE).status == FACET_OUT_OF_RANGE);
     CHECK(facet_show_part(loaded, 5, 0).status == FACET_OUT_OF_RANGE);
     CHECK(facet_isolate_part(loaded, 5).status == FACET_OUT_OF_RANGE);
     CHECK(facet_get_part(loaded, 5).name != NULL && facet_get_part(loaded, 5).faces == 0);
     CHECK(facet_choose_part(loaded, 5).status == FACET_OUT_OF_RANGE);
-    CHECK(facet_chosen_part(loaded) == 0xFFFFFFFFu);
+    CHECK(facet_get_chosen_part(loaded) == FACET_NONE);
     CHECK(facet_set_section(loaded, NULL).status == FACET_OUT_OF_RANGE);
     CHECK(facet_section_across(loaded, 3).status == FACET_OUT_OF_RANGE);
     CHECK(facet_section_through(loaded, 0, 1000000).status == FACET_OUT_OF_RANGE);
@@ -185,7 +185,7 @@ static void misuse(facet_viewer *loaded) {
     CHECK(facet_set_section(loaded, &sec).status == FACET_OUT_OF_RANGE && facet_get_section(loaded).on == 0);
     sec.normal[0] = 0, sec.offset_mm = 0;
     CHECK(facet_move_section(loaded, 1).status == FACET_NOT_FOUND);
-    CHECK(facet_get_key_binding(facet_key_binding_count()).help == NULL);
+    CHECK(facet_get_key_binding(facet_get_key_binding_count()).help == NULL);
 
     /* A viewer with no model yet: every call, refused where it returns a result. */
     empty = make(no_model, sizeof no_model);
@@ -206,7 +206,7 @@ static void misuse(facet_viewer *loaded) {
     facet_clear_selection(empty);
     facet_set_measuring(empty, 1);
     CHECK(facet_get_measuring(empty) == 0);
-    CHECK(facet_part_count(empty) == 0);
+    CHECK(facet_get_part_count(empty) == 0);
     CHECK(facet_show_part(empty, 0, 0).status == FACET_OUT_OF_RANGE);
     CHECK(facet_isolate_part(empty, 0).status == FACET_NOT_FOUND);
     facet_show_all_parts(empty);
@@ -253,7 +253,7 @@ int main(int argc, char **argv) {
     CHECK(model.radius_mm > 0);
 
     /* The key table. */
-    n = facet_key_binding_count();
+    n = facet_get_key_binding_count();
     CHECK(n > 10);
     for (i = 0; i < n; ++i) CHECK(facet_get_key_binding(i).help != NULL && facet_get_key_binding(i).action != FACET_ACTION_NONE);
 
@@ -283,7 +283,7 @@ int main(int argc, char **argv) {
     settle(v);
     o = facet_get_orbit(v);
     cylinder = find_face(v, FACET_SURFACE_CYLINDER, -1, 0);
-    CHECK(cylinder != 0xFFFFFFFFu);
+    CHECK(cylinder != FACET_NONE);
     CHECK(facet_fit_face(v, 0, cylinder).status == FACET_OK);
     settle(v);
     CHECK(facet_get_orbit(v).dolly < o.dolly);
@@ -322,7 +322,7 @@ int main(int argc, char **argv) {
     /* Faces: exact values. The top and bottom planes (normals +z and -z), a cylinder. */
     plane_up = find_face(v, FACET_SURFACE_PLANE, 2, 1);
     plane_down = find_face(v, FACET_SURFACE_PLANE, 2, -1);
-    CHECK(plane_up != 0xFFFFFFFFu && plane_down != 0xFFFFFFFFu);
+    CHECK(plane_up != FACET_NONE && plane_down != FACET_NONE);
     CHECK(facet_get_face(v, 0, plane_up, &up).status == FACET_OK && up.hit && up.part == 0 && up.face == plane_up);
     CHECK(facet_get_face(v, 0, plane_down, &down).status == FACET_OK);
     CHECK(facet_get_face(v, 0, cylinder, &cyl).status == FACET_OK && cyl.radius_mm > 0);
@@ -356,7 +356,7 @@ int main(int argc, char **argv) {
     CHECK(facet_get_selection(v, sel) == 0 && facet_get_measurement_lines(v, lines) == 0);
 
     /* Parts. */
-    CHECK(facet_part_count(v) == 1 && facet_get_part(v, 0).name[0] != 0 && facet_get_part(v, 0).faces == model.faces);
+    CHECK(facet_get_part_count(v) == 1 && facet_get_part(v, 0).name[0] != 0 && facet_get_part(v, 0).faces == model.faces);
     CHECK(facet_show_part(v, 0, 0).status == FACET_OK && facet_get_part(v, 0).shown == 0);
     settle(v);
     CHECK(facet_pick(v, W / 2, H / 2).hit == 0); /* hidden: nothing to pick */
@@ -364,9 +364,9 @@ int main(int argc, char **argv) {
     CHECK(facet_get_part(v, 0).shown == 1);
     CHECK(facet_isolate_part(v, 0).status == FACET_OK && facet_get_part(v, 0).shown == 1);
     facet_choose_part(v, 0);
-    CHECK(facet_chosen_part(v) == 0);
-    facet_choose_part(v, 0xFFFFFFFFu);
-    CHECK(facet_chosen_part(v) == 0xFFFFFFFFu);
+    CHECK(facet_get_chosen_part(v) == 0);
+    facet_choose_part(v, FACET_NONE);
+    CHECK(facet_get_chosen_part(v) == FACET_NONE);
 
     /* The section plane: across z through the middle, moved, through a planar face, off. */
     CHECK(facet_section_across(v, 2).status == FACET_OK);
@@ -397,11 +397,11 @@ int main(int argc, char **argv) {
         CHECK(facet_set_library(v, pack, (uint32_t)size, NULL, 0).status == FACET_CORRUPT);
         CHECK(facet_set_library(NULL, pack, (uint32_t)size, NULL, 0).status == FACET_OUT_OF_RANGE);
         CHECK(facet_open_model(v, 0).status == FACET_NOT_FOUND && facet_open_model(NULL, 0).status == FACET_OUT_OF_RANGE);
-        CHECK(facet_model_index(v) == 0xFFFFFFFFu && facet_model_index(NULL) == 0xFFFFFFFFu);
+        CHECK(facet_get_model_index(v) == FACET_NONE && facet_get_model_index(NULL) == FACET_NONE);
     }
     facet_unload(NULL);
     facet_unload(v);
-    CHECK(facet_get_model(v).faces == 0 && facet_part_count(v) == 0 && facet_step(v, 1000) == FACET_ACTIVITY_IDLE);
+    CHECK(facet_get_model(v).faces == 0 && facet_get_part_count(v) == 0 && facet_step(v, 1000) == FACET_ACTIVITY_IDLE);
     CHECK(facet_load(v, pack, (uint32_t)size, NULL, 0).status == FACET_OK);
     settle(v);
     CHECK(facet_get_model(v).faces == model.faces && facet_get_stats(v).done > 0);

@@ -35,7 +35,7 @@ struct Fit {
 constexpr double kCentreSlack = 0.02; // box centre within 2% of the short side of the screen centre
 constexpr double kMinFill = module::Framer::kFill - 0.05, kMaxFill = module::Framer::kFill + 0.07; // the box's larger extent over the area's
 
-void flush(void*, const Area&, const Rgb565*) {}
+void flush(Viewer&, void*, const Area&, const Rgb565*) {}
 
 Fit check(const std::vector<uint8_t>& file, Screen s) {
     Fit fit;

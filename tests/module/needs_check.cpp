@@ -35,7 +35,7 @@ struct Run {
     Stats stats{};
 };
 
-void flush(void*, const Area&, const Rgb565*) {}
+void flush(Viewer&, void*, const Area&, const Rgb565*) {}
 
 Run run_at(const std::vector<uint8_t>& file, size_t workspace_bytes, uint32_t pack_memory_bytes, bool refined) {
     Run out;

@@ -83,7 +83,7 @@ struct App {
             cfg.display.faces = layer.data(), cfg.display.faces_depth = layer_depth.data();
         }
         cfg.display.mode = mode;
-        cfg.display.flush = [](void* self, const Area& a, const Rgb565* px) { static_cast<App*>(self)->flushed(a, px); };
+        cfg.display.flush = [](Viewer&, void* self, const Area& a, const Rgb565* px) { static_cast<App*>(self)->flushed(a, px); };
         cfg.display.user = this;
         cfg.display.x = at_x, cfg.display.y = at_y;
         cfg.on_event = [](void* self, const Event& e) { static_cast<App*>(self)->events.push_back(e); };

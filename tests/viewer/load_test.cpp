@@ -101,7 +101,7 @@ TEST(Viewer, CreateRefusesMissingOrSmallBuffers) {
     std::vector<uint16_t> z(160 * 120);
     auto config = [&]() {
         Config c;
-        c.display = {160, 120, 120, {px.data(), nullptr}, {z.data(), nullptr}, Flush::Copy, [](void*, const Area&, const Rgb565*) {}, nullptr};
+        c.display = {160, 120, 120, {px.data(), nullptr}, {z.data(), nullptr}, Flush::Copy, [](Viewer&, void*, const Area&, const Rgb565*) {}, nullptr};
         return c;
     };
     Result why;

@@ -16,7 +16,7 @@ struct Level {
     std::string failed;         // why a pass or the model failed otherwise
 };
 
-void no_flush(void*, const Area&, const Rgb565*) {}
+void no_flush(facet::Viewer&, void*, const Area&, const Rgb565*) {}
 
 void on_event(void* user, const Event& e) {
     auto& level = *static_cast<Level*>(user);

@@ -192,12 +192,12 @@ bool Session::open(const Options& o, std::string& error) {
     return true;
 }
 
-void Session::flush(void* self, const facet::Area& a, const facet::Rgb565* pixels) {
+void Session::flush(facet::Viewer& viewer, void* self, const facet::Area& a, const facet::Rgb565* pixels) {
     Session& s = *static_cast<Session*>(self);
     for (uint16_t y = 0; y < a.height; ++y)
         std::memcpy(&s.screen_[size_t(a.y + y) * s.opt_.width + a.x], pixels + size_t(y) * a.width, size_t(a.width) * 2);
     if (s.on_flush) s.on_flush(s.flush_user, a);
-    s.viewer_->flush_done(); // copied out
+    viewer.flush_done(); // copied out
 }
 
 bool Session::capture(const std::string& name) {

@@ -63,7 +63,7 @@ public:
     bool capture(const std::string& name);
 
 private:
-    static void flush(void* self, const facet::Area& area, const facet::Rgb565* pixels);
+    static void flush(facet::Viewer& viewer, void* self, const facet::Area& area, const facet::Rgb565* pixels);
     static void event(void* self, const facet::Event& e);
     void command(const std::string& text);
     void record(uint32_t length); // record_'s first `length` bytes on the standard output

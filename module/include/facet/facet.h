@@ -17,8 +17,10 @@
 #ifndef FACET_FACET_H
 #define FACET_FACET_H
 
+#include "facet/base.h"
 #include "facet/sizes.h"
 
+#include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
 
@@ -34,13 +36,15 @@ typedef uint16_t facet_rgb565;
  * calls refuse the numbers they do not know (FACET_OUT_OF_RANGE) or ignore them where they
  * return nothing. */
 
+/* What a call says: Ok, or the kind of failure (the text says more). A face whose geometry the
+ * tessellation refuses (degenerate, loops that cross) is CORRUPT here. */
 typedef enum {
     FACET_OK = 0, FACET_OUT_OF_RANGE, FACET_FULL, FACET_CORRUPT, FACET_UNSUPPORTED, FACET_NOT_FOUND, FACET_BUSY,
-    FACET_DEGENERATE, FACET_CROSSING, FACET_IO, FACET_STATUS_WIDE_ = 0x7FFFFFFF
+    FACET_STATUS_WIDE_ = 0x7FFFFFFF
 } facet_status;
 
 /* A status, what went wrong and where ("face 12, loop 3"); kinds NULL when not given, indexes
- * 0xFFFFFFFF when a whole thing is meant. */
+ * FACET_NONE when a whole thing is meant. */
 typedef struct {
     facet_status status;
     const char *what;
@@ -68,7 +72,8 @@ typedef struct {
     facet_rgb565 *buffers[2];      /* width * band_lines pixels each; the second may be NULL */
     uint16_t *depth[2];            /* width * band_lines entries; one, or one per draw buffer */
     facet_flush_mode mode;
-    void (*flush)(void *user, const facet_area *area, const facet_rgb565 *pixels);
+    /* The area of the screen in `pixels` is ready; the viewer that drew it (for facet_flush_done()). */
+    void (*flush)(facet_viewer *viewer, void *user, const facet_area *area, const facet_rgb565 *pixels);
     void *user;
     uint16_t x, y; /* facet's rectangle at (x, y) of the screen (copy mode): flush areas and touch in the screen's */
     /* A faces layer (optional; full frames): width * height pixels and depth entries where the
@@ -96,15 +101,20 @@ typedef struct {
         struct { uint32_t face; } failed;
         struct { uint32_t pass, faces, failed, triangles, vertices, mesh_bytes, arena_peak_bytes; float tolerance_mm; } tessellated;
         /* frame: triangles set up, culled, pixels depth-tested (drawn or hidden), ... */
-        struct { uint32_t triangles, culled, pixels, cost_us, pieces, faces_done, faces_total, pass; uint8_t full, boxes; } frame;
-        struct { uint8_t step; uint32_t budget_us, used_us; } budget;
-        struct { uint8_t hit; uint32_t face, instance, shell; uint8_t surface_type; int16_t x, y; } pick;
+        struct { uint32_t triangles, culled, pixels, cost_us, pieces, faces_done, faces_total, pass; bool full, boxes; } frame;
+        struct { bool step; uint32_t budget_us, used_us; } budget;
+        struct { bool hit; uint32_t face, instance, shell; uint8_t surface_type; int16_t x, y; } pick;
         struct { float yaw_deg, pitch_deg, zoom; } view;
         struct { facet_work what; uint32_t item; } work;
         struct { uint32_t index; } model;
     } u;
     facet_result why; /* FACE_FAILED, PASS_FAILED, MODEL_FAILED */
 } facet_event;
+
+/* facet's own on-screen interface: none (the product's own drives facet_act()), the status line, or all. */
+typedef enum {
+    FACET_INTERFACE_OFF = 0, FACET_INTERFACE_STATUS_LINE = 1, FACET_INTERFACE_FULL = 2, FACET_INTERFACE_WIDE_ = 0x7FFFFFFF
+} facet_interface;
 
 typedef struct {
     facet_display display;
@@ -114,7 +124,7 @@ typedef struct {
     uint32_t (*now_us)(void *user);
     void *clock_user;
     uint32_t frame_budget_us, step_slack_us;
-    int interface; /* facet's own on-screen interface: 0 none, 1 all (facet_config_init), 2 the status line alone */
+    facet_interface interface; /* facet's own on-screen interface (facet_config_init: FACET_INTERFACE_FULL) */
     float screen_error_px; /* a far part's chordal error at rest (facet_config_init: 0.5); 0: every face, one tolerance */
 } facet_config;
 
@@ -160,12 +170,12 @@ uint32_t facet_library_count(const void *library, uint32_t bytes);
 facet_result facet_library_model(const void *library, uint32_t bytes, uint32_t index, facet_library_model_t *out);
 facet_result facet_set_library(facet_viewer *viewer, const void *library, uint32_t bytes, void *memory, uint32_t memory_bytes);
 facet_result facet_open_model(facet_viewer *viewer, uint32_t index);
-uint32_t facet_model_index(const facet_viewer *viewer); /* 0xFFFFFFFF: none from the library */
+uint32_t facet_get_model_index(const facet_viewer *viewer); /* FACET_NONE: none from the library */
 void facet_flush_done(facet_viewer *viewer); /* any context, an interrupt included */
 void facet_key(facet_viewer *viewer, uint32_t key);
 void facet_pointer(facet_viewer *viewer, int16_t dx, int16_t dy, uint8_t buttons);
 void facet_wheel(facet_viewer *viewer, int16_t clicks);
-void facet_touch(facet_viewer *viewer, uint8_t id, int16_t x, int16_t y, int down);
+void facet_touch(facet_viewer *viewer, uint8_t id, int16_t x, int16_t y, bool down);
 facet_stats facet_get_stats(const facet_viewer *viewer);
 
 /* Every action of the built-in interface, as its keys and buttons do it (facet::Action). */
@@ -182,7 +192,7 @@ typedef enum {
 void facet_act(facet_viewer *viewer, facet_action action); /* as if its key were pressed */
 /* The keys' table, for a help screen: how many, and each (NULL help past the last). */
 typedef struct { uint32_t key; facet_action action; const char *help; } facet_key_binding;
-uint32_t facet_key_binding_count(void);
+uint32_t facet_get_key_binding_count(void);
 facet_key_binding facet_get_key_binding(uint32_t index);
 
 /* The loaded model (zeros and "" before a load). */
@@ -198,13 +208,13 @@ facet_model_info facet_get_model(const facet_viewer *viewer);
 /* The camera: an orbit about the model's centre (yaw about z, then pitch, degrees; the eye's
  * distance as a factor of the fitted one, < 1 closer, 0.05 to 20; a pan in mm along the screen's
  * right and up; parallel or perspective), set at once; the standard views and fits glide. */
-typedef struct { float yaw_deg, pitch_deg, dolly, pan_mm[2]; uint8_t parallel; } facet_orbit;
+typedef struct { float yaw_deg, pitch_deg, dolly, pan_mm[2]; bool parallel; } facet_orbit;
 typedef enum {
     FACET_VIEW_FRONT, FACET_VIEW_BACK, FACET_VIEW_RIGHT, FACET_VIEW_LEFT, FACET_VIEW_TOP, FACET_VIEW_BOTTOM, FACET_VIEW_ISO,
     FACET_VIEW_WIDE_ = 0x7FFFFFFF
 } facet_standard_view;
 /* For marks of one's own over the model (facet::Viewer::CameraView says how to project). */
-typedef struct { float rotation[9], target_mm[3], distance_mm, focal_px; uint8_t parallel; } facet_camera;
+typedef struct { float rotation[9], target_mm[3], distance_mm, focal_px; bool parallel; } facet_camera;
 facet_orbit facet_get_orbit(const facet_viewer *viewer);
 facet_result facet_set_orbit(facet_viewer *viewer, const facet_orbit *orbit);
 facet_camera facet_get_camera(const facet_viewer *viewer);
@@ -212,7 +222,7 @@ facet_result facet_show_view(facet_viewer *viewer, facet_standard_view view);
 void facet_fit(facet_viewer *viewer);
 facet_result facet_fit_part(facet_viewer *viewer, uint32_t part);
 facet_result facet_fit_face(facet_viewer *viewer, uint32_t part, uint32_t face);
-void facet_set_parallel(facet_viewer *viewer, int parallel);
+void facet_set_parallel(facet_viewer *viewer, bool parallel);
 
 typedef enum {
     FACET_MODE_SHADED_EDGES, FACET_MODE_SHADED, FACET_MODE_WIREFRAME, FACET_MODE_HIDDEN_LINE, FACET_MODE_SEE_THROUGH,
@@ -220,9 +230,9 @@ typedef enum {
 } facet_display_mode;
 facet_display_mode facet_get_display_mode(const facet_viewer *viewer);
 facet_result facet_set_display_mode(facet_viewer *viewer, facet_display_mode mode);
-/* Tangent edges (between faces that meet smoothly: a fillet's sides): 1 drawn (the default), 0 left out. */
-int facet_get_tangent_edges(const facet_viewer *viewer);
-void facet_set_tangent_edges(facet_viewer *viewer, int shown);
+/* Tangent edges (between faces that meet smoothly: a fillet's sides): drawn (the default) or left out. */
+bool facet_get_tangent_edges(const facet_viewer *viewer);
+void facet_set_tangent_edges(facet_viewer *viewer, bool shown);
 /* The level of detail as a factor of the default tolerance: 1/8 (finest) to 16. */
 float facet_get_detail(const facet_viewer *viewer);
 facet_result facet_set_detail(facet_viewer *viewer, float factor);
@@ -233,10 +243,10 @@ typedef enum {
     FACET_SURFACE_TORUS, FACET_SURFACE_BSPLINE, FACET_SURFACE_REVOLUTION, FACET_SURFACE_EXTRUSION
 } facet_surface;
 typedef struct {
-    uint8_t hit;
+    bool hit;
     uint32_t part, face;
     facet_surface surface;
-    uint8_t hole;
+    bool hole;
     double origin_mm[3], axis[3], offset_mm, radius_mm, minor_mm, half_angle_deg;
     int16_t x, y;
 } facet_face_facts;
@@ -246,7 +256,7 @@ typedef enum {
 } facet_measure_kind;
 typedef struct {
     facet_measure_kind kind;
-    uint8_t parallel, has_distance;
+    bool parallel, has_distance;
     double distance_mm, angle_deg;
 } facet_measurement;
 /* The face drawn at a screen point (the screen's coordinates, as facet_touch), selecting nothing. */
@@ -256,8 +266,8 @@ facet_result facet_get_face(const facet_viewer *viewer, uint32_t part, uint32_t 
 facet_result facet_select(facet_viewer *viewer, uint32_t part, uint32_t face);
 void facet_clear_selection(facet_viewer *viewer);
 uint32_t facet_get_selection(const facet_viewer *viewer, facet_face_facts out[2]);
-void facet_set_measuring(facet_viewer *viewer, int on);
-int facet_get_measuring(const facet_viewer *viewer);
+void facet_set_measuring(facet_viewer *viewer, bool on);
+bool facet_get_measuring(const facet_viewer *viewer);
 facet_measurement facet_measure(const facet_viewer *viewer, const facet_face_facts *a, const facet_face_facts *b);
 /* The measurement panel's lines (up to 3, valid until the next input or load). */
 uint32_t facet_get_measurement_lines(const facet_viewer *viewer, const char *lines[3]);
@@ -266,18 +276,18 @@ uint32_t facet_get_measurement_lines(const facet_viewer *viewer, const char *lin
 typedef struct {
     const char *name, *instance; /* the part's and the occurrence's own ("" when none) */
     uint32_t faces;
-    uint8_t shown;
+    bool shown;
 } facet_part;
-uint32_t facet_part_count(const facet_viewer *viewer);
+uint32_t facet_get_part_count(const facet_viewer *viewer);
 facet_part facet_get_part(const facet_viewer *viewer, uint32_t index); /* "" and zeros past the last */
-facet_result facet_show_part(facet_viewer *viewer, uint32_t index, int shown);
+facet_result facet_show_part(facet_viewer *viewer, uint32_t index, bool shown);
 facet_result facet_isolate_part(facet_viewer *viewer, uint32_t index);
 void facet_show_all_parts(facet_viewer *viewer);
-facet_result facet_choose_part(facet_viewer *viewer, uint32_t index); /* 0xFFFFFFFF: none */
-uint32_t facet_chosen_part(const facet_viewer *viewer);
+facet_result facet_choose_part(facet_viewer *viewer, uint32_t index); /* FACET_NONE: none */
+uint32_t facet_get_chosen_part(const facet_viewer *viewer);
 
 /* The section plane: normal . p = offset_mm; the side the normal points to is cut away. */
-typedef struct { uint8_t on; float normal[3], offset_mm; } facet_section;
+typedef struct { bool on; float normal[3], offset_mm; } facet_section;
 facet_section facet_get_section(const facet_viewer *viewer);
 facet_result facet_set_section(facet_viewer *viewer, const facet_section *plane);
 facet_result facet_section_through(facet_viewer *viewer, uint32_t part, uint32_t face); /* a planar face */

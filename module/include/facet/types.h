@@ -4,12 +4,18 @@
 // a measurement and the camera say.
 #include "core/pixel.h"
 #include "core/status.h"
+#include "facet/base.h"
 #include "facet/sizes.h"
 
 #include <cstddef>
 #include <cstdint>
 
 namespace facet {
+
+class Viewer;
+
+// No part, no face, no model: the one "none" (FACET_NONE in C).
+constexpr uint32_t kNone = FACET_NONE;
 
 // One face's working memory (face_points, loops, slivers) is laid out by create(); the model's
 // arrays by load(), for its faces and edges in the room left: 0 plans a count, a number fixes it.
@@ -44,8 +50,9 @@ struct Display {
     uint16_t* depth[2] = {};          // depth buffers, width * band_lines entries: one, or one per draw
                                       // buffer (full frames: faces fill in without redrawing it whole)
     Flush mode = Flush::Copy;
-    // The area of the screen in `pixels` (area.width * area.height, row after row) is ready.
-    void (*flush)(void* user, const Area& area, const Rgb565* pixels) = nullptr;
+    // The area of the screen in `pixels` (area.width * area.height, row after row) is ready;
+    // `viewer` drew it (flush_done() once it is taken or shown).
+    void (*flush)(Viewer& viewer, void* user, const Area& area, const Rgb565* pixels) = nullptr;
     void* user = nullptr;
     uint16_t x = 0, y = 0; // facet's rectangle at (x, y) of the screen (Copy): flush areas and touch in the screen's
     // A faces layer (optional; full frames): width * height pixels and as many depth entries,

@@ -72,7 +72,7 @@ public:
     // model that cannot be opened is said (ModelFailed, why) and the one open before comes back.
     Result set_library(const void* library, uint32_t bytes, void* memory = nullptr, uint32_t memory_bytes = 0);
     Result open_model(uint32_t index);
-    uint32_t model_index() const; // the library's model open; ~0u: none (or one load() was given)
+    uint32_t model_index() const; // the library's model open; kNone: none (or one load() was given)
 
     // Does pieces of work (a frame, a piece of a face's tessellation) until `budget_us` have
     // passed on the clock, and at least one piece. A piece takes at most about a millisecond
@@ -152,7 +152,7 @@ public:
     Result isolate_part(uint32_t index); // shown alone
     void show_all_parts();
     static constexpr uint32_t kMaxHideableParts = 4096;
-    Result choose_part(uint32_t index); // highlighted (see-through mode: drawn solid); ~0u: none (OutOfRange: no such part)
+    Result choose_part(uint32_t index); // highlighted (see-through mode: drawn solid); kNone: none (OutOfRange: no such part)
     uint32_t chosen_part() const;
 
     // The section plane: normal . p = offset_mm (the placed model's coordinates, mm); the side
