@@ -33,6 +33,17 @@ function(facet_board_capability board capability out)
     set(${out} ${value} PARENT_SCOPE)
 endfunction()
 
+# A value of a board's description (boards/<board>/board.json) at the keys given, or "" when it
+# is absent or null: facet_board_get(qemu-versatilepb out tests budgets).
+function(facet_board_get board out)
+    file(READ ${CMAKE_SOURCE_DIR}/boards/${board}/board.json json)
+    string(JSON value ERROR_VARIABLE missing GET "${json}" ${ARGN})
+    if(missing OR value STREQUAL "null")
+        set(value "")
+    endif()
+    set(${out} "${value}" PARENT_SCOPE)
+endfunction()
+
 # Reads boards/<board>/board.json, the board's one description, and writes what the build
 # needs from it: the CPU flags, the config header the firmware sizes its buffers from
 # (facet_board_config.h) and the linker script's memory map and pack region (board_memory.ld).
