@@ -84,7 +84,11 @@ def main():
             target = local if local in files else None
             if target is None:
                 found = by_suffix.get(inc, [])
-                target = found[0] if len(found) == 1 else None
+                if len(found) > 1:  # which one the compiler takes depends on the include path: name one
+                    problems.append(f'{f}:{n}: includes "{inc}", which names {len(found)} files of the tree '
+                                    f'({", ".join(found)}): the layers cannot tell which')
+                    continue
+                target = found[0] if found else None
             if target is None:
                 if inc == BOARD_CONFIG:
                     kind = '(board config)'

@@ -33,6 +33,13 @@ TEST(Overlay, BandsGetTheirRowsOfTheBar) {
     std::vector<Rgb565> whole(W * H, 1), depth(W * H);
     Overlay o;
     o.progress({whole.data(), depth.data(), W, H, 0, H}, 3, 8);
+    // The whole screen as the bar should be (not only as the same code draws it): 3/8 done.
+    for (uint16_t y = 0; y < H; ++y) {
+        for (uint16_t x = 0; x < W; ++x) {
+            const Rgb565 want = y < H - Overlay::kBarRows ? 1 : (x < W * 3 / 8 ? Overlay::kDone : Overlay::kLeft);
+            ASSERT_EQ(whole[y * W + x], want) << x << "," << y;
+        }
+    }
     for (uint16_t band : {1, 3, 7}) {
         std::vector<Rgb565> screen(W * H, 1);
         for (uint16_t y0 = 0; y0 < H; y0 += band) {
