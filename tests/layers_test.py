@@ -21,6 +21,7 @@ STD_C = {'assert.h', 'ctype.h', 'errno.h', 'float.h', 'limits.h', 'math.h', 'std
          'stdint.h', 'stdio.h', 'stdlib.h', 'string.h', 'time.h', 'unistd.h', 'fcntl.h', 'signal.h', 'inttypes.h'}
 BOARD_CONFIG = 'facet_board_config.h'
 PEERS = {'tgx.h'}
+DOC_MAX_BYTES = 16_500
 MAX_LINES = 600
 MODULE_MAX_LINES = 500 # the module's files, smaller still (the module issue's rule)
 
@@ -52,9 +53,10 @@ def rule_for(rules, path):
 def main():
     root = os.path.abspath(sys.argv[1])
     rules = table(root)
-    files = [f for f in subprocess.run(['git', 'ls-files', '--cached', '--others', '--exclude-standard'], cwd=root,
-                                        capture_output=True, text=True, check=True).stdout.split('\n')
-             if f.endswith(SOURCE) and not f.startswith(('build/', 'out/'))]
+    files_all = [f for f in subprocess.run(['git', 'ls-files', '--cached', '--others', '--exclude-standard'], cwd=root,
+                                            capture_output=True, text=True, check=True).stdout.split('\n')
+                 if f and not f.startswith(('build/', 'out/')) and os.path.exists(os.path.join(root, f))]
+    files = [f for f in files_all if f.endswith(SOURCE)]
     by_suffix = {}
     for f in files:
         parts = f.split('/')
@@ -105,6 +107,12 @@ def main():
                 continue  # the file's own folder
             if not any(target.startswith(a) for a in allowed if not a.startswith('(')):
                 problems.append(f'{f}:{n}: includes "{inc}" ({target}): {folder} may include {" ".join(allowed)}')
+    # The docs: a page each idea, each under about 15 KB (docs/bench/ holds the benches' output).
+    for page in sorted(f for f in files_all if f.startswith('docs/') and f.endswith('.md') and not f.startswith('docs/bench/')):
+        size = os.path.getsize(os.path.join(root, page))
+        if size > DOC_MAX_BYTES:
+            problems.append(f'{page}: {size:,} bytes (a page under about 15 KB, at most {DOC_MAX_BYTES:,}: split it by idea, '
+                            f'or keep what it says now and leave its history to git)')
     viewer_h = os.path.join(root, 'module', 'include', 'facet', 'viewer.h')
     n = sum(1 for _ in open(viewer_h))
     if n >= 250:

@@ -62,8 +62,8 @@ void Core::unload() {
     presenter_.reset();
     scene_.close();
     pack_bytes_ = pack_file_bytes_ = 0;
-    model_index_ = kNone, pending_model_ = kNone;
-    picked_count_ = 0;
+    models_.forget();
+    selection_.clear();
     chosen_part_ = kNone;
     camera_.set_section({});
     section_kind_ = 0;
@@ -126,10 +126,96 @@ bool Core::boxes_while_sampling() const {
     return scheduler_.sampling() && scheduler_.pass() == 0 && scene_.blocked();
 }
 
+// What step() finds at the top of each round, in this order (presenter_.can_draw() takes a
+// finished flush: it is asked once a round, and only when a frame is wanted).
+Core::Round Core::round() {
+    Round r;
+    r.frame = frame_wanted() && presenter_.can_draw();
+    r.mid_bands = presenter_.drawing() && config_.display.band_lines < config_.display.height;
+    r.framing = scene_.bounding() || framer_.busy() || glide_.phase == Glide::Phase::Framing;
+    return r;
+}
+
+// The sources of work, in priority order: each round runs a piece of the first that has one
+// (docs/viewer.md shows the table). Nothing but a frame's own bands runs between the bands of
+// one frame (they show one state of the model).
+const Core::Source Core::kSources[] = {
+    {"framing", &Core::framing_ready, &Core::run_framing},      // the view being framed: no frame until it sits
+    {"glide", &Core::glide_ready, &Core::run_glide},            // the last frame is out: the glide's next step
+    {"frame", &Core::frame_ready, &Core::run_frame},            // the screen is behind and a buffer is free
+    {"tessellation", &Core::tessellation_ready, &Core::run_tessellation}, // the scheduler's pass, sweep or refinement
+    {"decoding", &Core::decoding_ready, &Core::run_decoding},   // a block the view brings in, a piece at a time
+    {"start", &Core::start_ready, &Core::run_start},            // a block to bring in, or one to refine, begun
+};
+
+bool Core::framing_ready(const Round& r) const { return r.framing && !r.mid_bands; }
+bool Core::glide_ready(const Round& r) const { return glide_.phase == Glide::Phase::Moving && !frame_wanted() && !r.mid_bands; }
+bool Core::frame_ready(const Round& r) const { return r.frame; }
+bool Core::tessellation_ready(const Round& r) const { return scheduler_.busy() && !r.mid_bands; }
+bool Core::decoding_ready(const Round& r) const { return swap_.block != kNone && !r.mid_bands; }
+bool Core::start_ready(const Round& r) const { return !r.mid_bands; }
+
+bool Core::run_framing() {
+    work(Event::Kind::WorkBegin, Work::Fit, 0);
+    if (scene_.bounding()) {
+        (void)scene_.bound(kFrameUnits * module::Framer::kPointsPerUnit * 4); // (a bounded point: a quarter of a projected one)
+    } else if (glide_.phase == Glide::Phase::Framing) {
+        if (framer_.run(scene_, glide_.target, kFrameUnits)) {
+            glide_.phase = Glide::Phase::Moving;
+            glide_.from = camera_.view();
+            glide_.t0 = now(), glide_.frames = 0;
+        }
+    } else if (framer_.run(scene_, camera_, kFrameUnits)) {
+        if (!module::same_view(camera_.view(), framed_from_)) presenter_.invalidate();
+    }
+    work(Event::Kind::WorkEnd, Work::Fit, 0);
+    return true;
+}
+
+bool Core::run_glide() {
+    glide_step();
+    return true;
+}
+
+bool Core::run_frame() {
+    presenter_.set_boxes(boxes_while_sampling());
+    presenter_.set_dragging(controls_.dragging() || glide_.phase == Glide::Phase::Moving);
+    const Work w = presenter_.work();
+    work(Event::Kind::WorkBegin, w, 0);
+    presenter_.run(kFrameUnits, scheduler_.pass());
+    work(Event::Kind::WorkEnd, w, 0);
+    return true;
+}
+
+bool Core::run_tessellation() {
+    const Work w = scheduler_.work();
+    const uint32_t item = scheduler_.item();
+    work(Event::Kind::WorkBegin, w, item);
+    const bool sweeping = scheduler_.sweeping();
+    (void)scheduler_.run(kTessUnits); // busy: there was a piece to do
+    // A sweep's faces show as they come (Presenter::wanted) and all at its end.
+    // (The same faces: the frames since drew each as it came, the whole one its edges and specks.)
+    if (sweeping && !scheduler_.sweeping() && scene_.totals().finished() != presenter_.shown_finished()) presenter_.redraw();
+    // Meshes or samples moved (a cache compacted), or a block refined: the frames whole again.
+    if (scene_.moves() != seen_moves_ || scheduler_.refined() != seen_refined_) {
+        seen_moves_ = scene_.moves(), seen_refined_ = scheduler_.refined();
+        presenter_.invalidate();
+    }
+    work(Event::Kind::WorkEnd, w, item);
+    return true;
+}
+
+bool Core::run_decoding() {
+    work(Event::Kind::WorkBegin, Work::Unpack, swap_.block);
+    swap_step();
+    work(Event::Kind::WorkEnd, Work::Unpack, swap_.block);
+    return true;
+}
+
+bool Core::run_start() { return swap_piece() || refine_for_view(); } // false: nothing to begin
+
 Activity Core::step(uint32_t budget_us) {
-    if (pending_model_ != kNone) { // a model the chooser asked for (a failure is its event)
-        const uint32_t m = pending_model_;
-        pending_model_ = kNone;
+    if (const uint32_t m = models_.take_asked(); m != kNone) { // a model the chooser asked for (a failure is its event)
         (void)open_model(m);
         return Activity::Busy;
     }
@@ -138,56 +224,14 @@ Activity Core::step(uint32_t budget_us) {
     for (;;) {
         // Faces left to their edges are judged again when the view has moved (not while it is being framed).
         if (!scene_.bounding() && !framer_.busy() && glide_.phase == Glide::Phase::None) detail_view_changed();
-        // A frame when the screen is behind and a buffer is free; tessellation otherwise, but
-        // not between the bands of one frame (they show one state of the model).
-        const bool frame = frame_wanted() && presenter_.can_draw();
-        const bool mid_bands = presenter_.drawing() && config_.display.band_lines < config_.display.height;
-        const bool gliding = glide_.phase == Glide::Phase::Framing;
-        if ((scene_.bounding() || framer_.busy() || gliding) && !mid_bands) { // the view being framed: no frame until it sits
-            work(Event::Kind::WorkBegin, Work::Fit, 0);
-            if (scene_.bounding()) {
-                (void)scene_.bound(kFrameUnits * module::Framer::kPointsPerUnit * 4); // (a bounded point: a quarter of a projected one)
-            } else if (gliding) {
-                if (framer_.run(scene_, glide_.target, kFrameUnits)) {
-                    glide_.phase = Glide::Phase::Moving;
-                    glide_.from = camera_.view();
-                    glide_.t0 = now(), glide_.frames = 0;
-                }
-            } else if (framer_.run(scene_, camera_, kFrameUnits)) {
-                if (!module::same_view(camera_.view(), framed_from_)) presenter_.invalidate();
-            }
-            work(Event::Kind::WorkEnd, Work::Fit, 0);
-        } else if (glide_.phase == Glide::Phase::Moving && !frame_wanted() && !mid_bands) {
-            glide_step(); // the last frame is out: the next step of the glide
-        } else if (frame) {
-            presenter_.set_boxes(boxes_while_sampling());
-            presenter_.set_dragging(controls_.dragging() || glide_.phase == Glide::Phase::Moving);
-            const Work w = presenter_.work();
-            work(Event::Kind::WorkBegin, w, 0);
-            presenter_.run(kFrameUnits, scheduler_.pass());
-            work(Event::Kind::WorkEnd, w, 0);
-        } else if (scheduler_.busy() && !mid_bands) {
-            const Work w = scheduler_.work();
-            const uint32_t item = scheduler_.item();
-            work(Event::Kind::WorkBegin, w, item);
-            const bool sweeping = scheduler_.sweeping();
-            (void)scheduler_.run(kTessUnits); // busy: there was a piece to do
-            // A sweep's faces show as they come (Presenter::wanted) and all at its end.
-            // (The same faces: the frames since drew each as it came, the whole one its edges and specks.)
-            if (sweeping && !scheduler_.sweeping() && scene_.totals().finished() != presenter_.shown_finished()) presenter_.redraw();
-            // Meshes or samples moved (a cache compacted), or a block refined: the frames whole again.
-            if (scene_.moves() != seen_moves_ || scheduler_.refined() != seen_refined_) {
-                seen_moves_ = scene_.moves(), seen_refined_ = scheduler_.refined();
-                presenter_.invalidate();
-            }
-            work(Event::Kind::WorkEnd, w, item);
-        } else if (swap_.block != kNone && !mid_bands) {
-            work(Event::Kind::WorkBegin, Work::Unpack, swap_.block);
-            swap_step();
-            work(Event::Kind::WorkEnd, Work::Unpack, swap_.block);
-        } else if (mid_bands || (!swap_piece() && !refine_for_view())) {
+        const Round r = round();
+        bool ran = false;
+        for (const Source& s : kSources) {
+            if (!(this->*s.ready)(r)) continue;
+            ran = (this->*s.run)();
             break;
         }
+        if (!ran) break; // nothing to do now (or only the bands of a frame waiting for a buffer)
         if (!config_.now_us || now() - t0 >= budget_us) break;
     }
     const uint32_t used = now() - t0;
@@ -197,10 +241,14 @@ Activity Core::step(uint32_t budget_us) {
         e.budget = {true, budget_us, used};
         emit(e);
     }
-    // What is left: work that can go on, or only a flush_done() that can free a buffer.
+    return activity();
+}
+
+// What is left after a step: work that can go on, or only a flush_done() that can free a
+// buffer. With nothing else left, a block the view wants at another level is begun now, so
+// that the next step has its work (a step without a clock is one piece of work).
+Activity Core::activity() {
     const bool mid_bands = presenter_.drawing() && config_.display.band_lines < config_.display.height;
-    // Nothing else left: a block the view wants at another level is begun now, so that the
-    // next step has its work (a step without a clock is one piece of work).
     if (!mid_bands && !frame_wanted() && !scheduler_.busy() && !swap_piece()) (void)refine_for_view();
     if ((frame_wanted() && presenter_.can_draw()) ||
         ((scheduler_.busy() || swap_.block != kNone || swap_pending() || scene_.bounding() || framer_.busy() || glide_.phase != Glide::Phase::None) &&

@@ -7,10 +7,12 @@
 #include "geom/library.h"
 #include "geom/measure.h"
 #include "loader.h"
+#include "models.h"
 #include "painter.h"
 #include "presenter.h"
 #include "scene.h"
 #include "scheduler.h"
+#include "selection.h"
 #include "workspace.h"
 
 namespace facet::module {
@@ -31,7 +33,7 @@ public:
     // (opened at the next step, outside the input's handling).
     Result set_library(const void* data, uint32_t bytes, void* memory, uint32_t memory_bytes);
     Result open_model(uint32_t index);
-    uint32_t model_index() const { return model_index_; }
+    uint32_t model_index() const { return models_.open(); }
     Activity step(uint32_t budget_us);
     void flush_done() { presenter_.flush_done(); }
     void command(const module::Command& c);
@@ -111,6 +113,33 @@ private:
     uint32_t now() const { return config_.now_us ? config_.now_us(config_.clock_user) : 0; }
     bool frame_wanted() const;
     bool boxes_while_sampling() const;
+    // step()'s sources of work (core.cpp: kSources, in priority order): each says whether it has
+    // a piece now, from what the round found, and runs one (false: it had none after all).
+    struct Round {
+        bool frame = false;     // a frame is wanted and a buffer can take it
+        bool mid_bands = false; // the bands of a frame under way: nothing else between them
+        bool framing = false;   // the bounds or the framing (of the view or of a glide's end) under way
+    };
+    Round round();
+    struct Source {
+        const char* name;
+        bool (Core::*ready)(const Round&) const;
+        bool (Core::*run)();
+    };
+    static const Source kSources[];
+    bool framing_ready(const Round& r) const;
+    bool glide_ready(const Round& r) const;
+    bool frame_ready(const Round& r) const;
+    bool tessellation_ready(const Round& r) const;
+    bool decoding_ready(const Round& r) const;
+    bool start_ready(const Round& r) const;
+    bool run_framing();
+    bool run_glide();
+    bool run_frame();
+    bool run_tessellation();
+    bool run_decoding();
+    bool run_start();
+    Activity activity(); // after a step: Busy, Waiting (for flush_done()) or Idle
     void tap(int16_t x, int16_t y);      // a tap or click on facet's rectangle: a button, the parts list, or a pick
     Event pick_at(int16_t x, int16_t y); // the Picked event of the face under (x, y) (facet's rectangle)
     void view_changed();
@@ -144,22 +173,19 @@ private:
     // decoded packs and arrays fit with room to tessellate; the default (all) when all fit.
     module::BlockCut cut_blocks(const void* file, uint32_t file_bytes, uint32_t file_size, void* memory, uint32_t memory_bytes) const;
     float default_tolerance_ = 0;
-    static constexpr float kFinerDetail = 8.0f, kCoarserDetail = 16.0f; // set_detail()'s range about the default
     // The level of detail the view asks for (detail.cpp): a face under kMinFacePixels across in
     // every instance of its part, or off the screen, is left to its edges until the view changes.
     static constexpr float kMinFacePixels = float(module::kFacePixels);
     static bool wants_face(void* self, uint32_t face);
     // Each block's tolerance in a pass: Config::screen_error_px at its nearest point (detail.cpp).
-    static constexpr float kCoarsest = 4.0f;
     static float block_tolerance(void* self, uint32_t block, float pass_tolerance);
     // The blocks a pass or a sweep takes, largest on the screen first (detail.cpp).
     static uint32_t block_order(void* self);
     uint32_t sort_blocks(uint32_t& head, uint32_t count);
     // The tolerance the view asks of block b (mm): between the finer of pass_tolerance / finest
-    // and the block's own share of it (its size over the model's) and kCoarsest times it;
+    // and the block's own share of it (its size over the model's) and DetailScale::kBlockCoarsest times it;
     // on_screen (if given): whether its box shows.
     float wanted_tolerance(uint32_t b, float pass_tolerance, float finest, bool* on_screen);
-    static constexpr float kFinest = 16.0f, kRefineStep = 2.0f;
     bool refine_for_view(); // true when it started (or tried) a refinement (detail.cpp)
     bool refine_check_ = false;
     // Blocks of a model larger than the memory brought in as the view nears them (swap.cpp).
@@ -189,10 +215,7 @@ private:
         geom::PackDecoder decoder;
     } swap_;
     module::Unpacked unpacked_; // a blocked pack's blocks and pack memory
-    geom::Library library_;
-    void* library_memory_ = nullptr;
-    uint32_t library_memory_bytes_ = 0;
-    uint32_t model_index_ = kNone, pending_model_ = kNone;
+    module::Models models_; // a library's models (models.h)
     uint32_t seen_moves_ = 0, seen_refined_ = 0; // the scene's moves and refinements the frames know of
     void detail_view_changed(); // when the view moved since the faces were last judged: judged again
     bool judge_with_view();     // the spheres' view from the camera's, if it moved (true then)
@@ -218,12 +241,9 @@ private:
     static constexpr int kDoubleTapSlop = 12; // pixels
     void glide_to(const module::View& v, uint32_t instance = kNone, uint32_t face = kNone);
     bool glide_step(); // Moving: the camera advanced (a frame is wanted); false when it has arrived
-    // Picked faces (measuring: the last two), their exact surfaces, and the panel's text.
-    struct Picked {
-        uint32_t face, instance;
-    };
-    Picked picked_[2] = {};
-    uint32_t picked_count_ = 0;
+    // The faces picked (selection.h), their exact surfaces, and the panel's text.
+    using Picked = module::Selection::Face;
+    module::Selection selection_;
     uint8_t next_view_ = 0; // the toolbar's VIEW button: the next standard view
     void picked(const Event& e); // a pick: highlight, measure, the panel
     Result describe(const Picked& p, geom::FaceGeometry& g) const; // the picked face's exact geometry, placed

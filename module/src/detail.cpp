@@ -15,6 +15,8 @@
 #include <cmath>
 
 namespace facet {
+
+using Scale = module::DetailScale; // (detail_scale.h)
 namespace {
 
 // A cylinder's or a cone's face as SphereView::faces_away takes it; false for other surfaces, a
@@ -75,7 +77,7 @@ bool Core::wants_face(void* self, uint32_t f) {
     const bool closed = !c.detail_section_ && scene.part(part).closed;
     enum class Facing : uint8_t { Unknown, Plane, Round, Neither } facing = closed ? Facing::Unknown : Facing::Neither;
     module::RoundFace round;
-    const float sag = kCoarsest * c.scheduler_.tolerance(); // (its mesh's chords: at most its block's tolerance inside it)
+    const float sag = Scale::kBlockCoarsest * c.scheduler_.tolerance(); // (its mesh's chords: at most its block's tolerance inside it)
     auto shows = [&](const pack::Instance& inst) {
         float w[3];
         module::place(inst.m, p, w);
@@ -103,7 +105,7 @@ bool Core::wants_face(void* self, uint32_t f) {
 // A block's tolerance: the pass's (the default, or the bias the user chose) scaled by how far
 // the block lies: Config::screen_error_px (half a pixel) at its nearest point in the view the
 // pass starts from (before the first pass is framed: the whole model's sphere fitted), never
-// finer than the pass's and at most kCoarsest times it. A part near the eye gets the pass's
+// finer than the pass's and at most Scale::kBlockCoarsest times it. A part near the eye gets the pass's
 // own; a far one coarser.
 float Core::block_tolerance(void* self, uint32_t b, float pass_tolerance) {
     return static_cast<Core*>(self)->wanted_tolerance(b, pass_tolerance, 1, nullptr);
@@ -124,13 +126,13 @@ float Core::wanted_tolerance(uint32_t b, float pass_tolerance, float finest, boo
     const float own = scene_.radius() > 0 ? pass_tolerance * std::min(1.0f, r / scene_.radius()) : pass_tolerance;
     const float floor = std::max(own, pass_tolerance / finest);
     if (t < floor) t = floor;
-    if (t > kCoarsest * pass_tolerance) t = kCoarsest * pass_tolerance;
+    if (t > Scale::kBlockCoarsest * pass_tolerance) t = Scale::kBlockCoarsest * pass_tolerance;
     return t;
 }
 
 // When nothing else is under way and the view has changed: the block whose level is furthest
-// from what the view now asks for (kRefineStep times too coarse and on the screen, or as many
-// times too fine) is tessellated again at that level, down to kFinest times finer than the pass
+// from what the view now asks for (Scale::kStep times too coarse and on the screen, or as many
+// times too fine) is tessellated again at that level, down to Scale::kRefineFinest times finer than the pass
 // for a part of a large model zoomed into (wanted_tolerance). One at a time, largest gap first;
 // none while a finger drags the view. Once at the view's level, a block moves again only when
 // the view has moved by that factor.
@@ -145,9 +147,9 @@ bool Core::refine_for_view() {
             const module::Block& block = scene_.block(b);
             if (!(block.tolerance > 0) || block.refused) continue;
             bool on_screen = true;
-            const float want = wanted_tolerance(b, scheduler_.tolerance(), kFinest, &on_screen);
+            const float want = wanted_tolerance(b, scheduler_.tolerance(), Scale::kRefineFinest, &on_screen);
             const float finer = block.tolerance / want, coarser = want / block.tolerance;
-            const float gap = finer >= kRefineStep && on_screen ? finer : coarser >= kRefineStep ? coarser : 0;
+            const float gap = finer >= Scale::kStep && on_screen ? finer : coarser >= Scale::kStep ? coarser : 0;
             if (gap > best_gap) best = b, best_gap = gap, best_tolerance = want;
         }
         if (best == kNone) {
@@ -156,10 +158,10 @@ bool Core::refine_for_view() {
         }
         if (scheduler_.begin_refine(best, best_tolerance)) return true;
         // No room: blocks off the screen make it, where they can come back (swap.cpp); short
-        // of it still, a finer level part of the way (kRefineStep at a time from the wanted).
+        // of it still, a finer level part of the way (Scale::kStep at a time from the wanted).
         const float now = scene_.block(best).tolerance;
         const bool left = leave_out_unseen(best);
-        for (float t = best_tolerance * (left ? 1 : kRefineStep); t < now / kRefineStep * 1.001f; t *= kRefineStep) {
+        for (float t = best_tolerance * (left ? 1 : Scale::kStep); t < now / Scale::kStep * 1.001f; t *= Scale::kStep) {
             scene_.block(best).refused = false;
             if (scheduler_.begin_refine(best, t)) return true;
         }
@@ -221,7 +223,7 @@ float Core::detail() const { return default_tolerance_ > 0 ? scheduler_.toleranc
 
 Result Core::set_detail(float factor) {
     if (!scene_.loaded()) return Result::fail(Status::NotFound, "no model is loaded");
-    if (!(factor >= 1.0f / kFinerDetail && factor <= kCoarserDetail)) { // (NaN too)
+    if (!(factor >= Scale::kUserFinest && factor <= Scale::kUserCoarsest)) { // (NaN too)
         return Result::fail(Status::OutOfRange, "the detail factor is outside 1/8 to 16");
     }
     if (factor == detail()) return {};

@@ -20,23 +20,19 @@ Result library_model(const void* data, uint32_t bytes, uint32_t index, LibraryMo
 }
 
 Result Core::set_library(const void* data, uint32_t bytes, void* memory, uint32_t memory_bytes) {
-    geom::Library lib;
-    if (const Result r = lib.open(data, bytes); !r.ok()) return r;
-    library_ = lib;
-    library_memory_ = memory, library_memory_bytes_ = memory_bytes;
-    model_index_ = kNone; // (a model open now is none of this library's)
-    presenter_.overlay().set_library(&library_);
+    if (const Result r = models_.set(data, bytes, memory, memory_bytes); !r.ok()) return r;
+    presenter_.overlay().set_library(&models_.library());
     return {};
 }
 
 Result Core::open_model(uint32_t index) {
-    if (library_.count() == 0) return Result::fail(Status::NotFound, "no library is set");
-    if (index >= library_.count()) return Result::fail(Status::OutOfRange, "no such model in the library", {"model", index});
-    const uint32_t before = model_index_;
-    const geom::Library::Entry e = library_.entry(index);
-    const Result r = load(e.file, e.bytes, library_memory_, library_memory_bytes_);
+    if (models_.count() == 0) return Result::fail(Status::NotFound, "no library is set");
+    if (index >= models_.count()) return Result::fail(Status::OutOfRange, "no such model in the library", {"model", index});
+    const uint32_t before = models_.open();
+    const geom::Library::Entry e = models_.entry(index);
+    const Result r = load(e.file, e.bytes, models_.memory(), models_.memory_bytes());
     if (r.ok()) {
-        model_index_ = index;
+        models_.opened(index);
         presenter_.overlay().set_models(false, index);
         return r;
     }
@@ -48,10 +44,10 @@ Result Core::open_model(uint32_t index) {
     presenter_.overlay().mark_broken(index); // (the person holding it sees it in the chooser)
     // The model open before comes back (its file is intact in the library; load() dropped it).
     if (before != kNone && before != index) {
-        const geom::Library::Entry b = library_.entry(before);
-        if (load(b.file, b.bytes, library_memory_, library_memory_bytes_).ok()) model_index_ = before;
+        const geom::Library::Entry b = models_.entry(before);
+        if (load(b.file, b.bytes, models_.memory(), models_.memory_bytes()).ok()) models_.opened(before);
     }
-    presenter_.overlay().set_models(true, model_index_); // (the chooser stays for another)
+    presenter_.overlay().set_models(true, models_.open()); // (the chooser stays for another)
     presenter_.invalidate();
     return r;
 }
@@ -65,7 +61,7 @@ bool Core::tap_models(int16_t x, int16_t y) {
     switch (h.kind) {
     case Kind::None: return false;
     case Kind::Row:
-        if (h.part != model_index_) pending_model_ = h.part;
+        models_.ask(h.part);
         return true;
     case Kind::Up: o.scroll_models(-int32_t(o.model_rows()) + 1); break;
     case Kind::Down: o.scroll_models(int32_t(o.model_rows()) - 1); break;
@@ -77,7 +73,7 @@ bool Core::tap_models(int16_t x, int16_t y) {
 
 void Core::toggle_models() {
     module::Overlay& o = presenter_.overlay();
-    o.set_models(!o.models_open(), model_index_);
+    o.set_models(!o.models_open(), models_.open());
     presenter_.redraw(); // (the chooser alone)
 }
 

@@ -36,15 +36,8 @@ void Core::tap(int16_t x, int16_t y) {
 }
 
 void Core::picked(const Event& e) {
-    if (!e.pick.hit) {
-        picked_count_ = 0; // a tap on nothing clears the selection
-    } else if (presenter_.overlay().measuring() && picked_count_ == 1) {
-        picked_[1] = {e.pick.face, e.pick.instance};
-        picked_count_ = 2;
-    } else {
-        picked_[0] = {e.pick.face, e.pick.instance};
-        picked_count_ = 1;
-    }
+    if (!e.pick.hit) selection_.clear(); // a tap on nothing clears the selection
+    else selection_.pick({e.pick.face, e.pick.instance}, presenter_.overlay().measuring());
     highlight();
     show_measurement();
     highlight_changed();
@@ -52,8 +45,7 @@ void Core::picked(const Event& e) {
 
 void Core::highlight() {
     focus();
-    painter_.set_highlight(picked_count_ > 0 ? picked_[0].face : kNone, picked_count_ > 0 ? picked_[0].instance : kNone,
-                           picked_count_ > 1 ? picked_[1].face : kNone, picked_count_ > 1 ? picked_[1].instance : kNone);
+    painter_.set_highlight(selection_.face(0), selection_.instance(0), selection_.face(1), selection_.instance(1));
 }
 
 Result Core::describe(const Picked& p, geom::FaceGeometry& g) const {
@@ -62,7 +54,7 @@ Result Core::describe(const Picked& p, geom::FaceGeometry& g) const {
 }
 
 void Core::show_measurement() {
-    if (config_.interface != Interface::Full || picked_count_ == 0) {
+    if (config_.interface != Interface::Full || selection_.count() == 0) {
         presenter_.overlay().set_lines(nullptr, 0);
         return;
     }
@@ -70,13 +62,13 @@ void Core::show_measurement() {
     char lines[3][module::Overlay::kLineChars];
     const char* ptrs[3] = {lines[0], lines[1], lines[2]};
     geom::FaceGeometry g[2];
-    for (uint32_t i = 0; i < picked_count_; ++i) {
-        const Picked& p = picked_[i];
+    for (uint32_t i = 0; i < selection_.count(); ++i) {
+        const Picked& p = selection_[i];
         if (!describe(p, g[i]).ok()) return;
         module::describe(g[i], p.face, unit, lines[i], sizeof lines[i]);
     }
-    uint32_t n = picked_count_;
-    if (picked_count_ == 2) module::describe(geom::relate(g[0], g[1]), unit, lines[n++], sizeof lines[0]);
+    uint32_t n = selection_.count();
+    if (n == 2) module::describe(geom::relate(g[0], g[1]), unit, lines[n++], sizeof lines[0]);
     else if (presenter_.overlay().measuring()) format(lines[n++], sizeof lines[0], "MEAS: tap a second face");
     presenter_.overlay().set_lines(ptrs, n);
 }
@@ -135,21 +127,21 @@ Result Core::select(uint32_t part, uint32_t face) {
 }
 
 void Core::clear_selection() {
-    if (picked_count_ == 0) return;
+    if (selection_.count() == 0) return;
     Event e{};
     e.kind = Event::Kind::Picked; // (a pick of nothing)
     picked(e);
 }
 
 uint32_t Core::selection(FaceFacts out[2]) const {
-    for (uint32_t i = 0; i < picked_count_; ++i) (void)facts(picked_[i].instance, picked_[i].face, out[i]); // (forgotten when left out)
-    return picked_count_;
+    for (uint32_t i = 0; i < selection_.count(); ++i) (void)facts(selection_[i].instance, selection_[i].face, out[i]); // (forgotten when left out)
+    return selection_.count();
 }
 
 void Core::set_measuring(bool on) {
     if (!scene_.loaded() || on == measuring()) return;
     presenter_.overlay().set_measuring(on);
-    if (picked_count_ > 1) picked_count_ = 1; // measuring starts from the face picked, if any
+    selection_.keep_first();
     show_measurement();
     highlight();
     highlight_changed();

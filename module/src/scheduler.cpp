@@ -122,19 +122,19 @@ void Scheduler::sample(uint32_t units) {
     scene_.quantize_samples(quantized_, final_to);
     quantized_ = final_to;
     if (r.status == Status::Busy) return;
-    if (r.status == Status::Full && pass_ == 0 && opt_.tolerance < kCoarsestFirst * first_tolerance_) {
+    if (r.status == Status::Full && pass_ == 0 && opt_.tolerance < DetailScale::kFirstPassCoarsest * first_tolerance_) {
         // The first level, short of room for the model's edges: a coarser one (twice the
-        // tolerance, up to kCoarsestFirst times the asked one), rather than nothing on the screen.
+        // tolerance, up to DetailScale::kFirstPassCoarsest times the asked one), rather than nothing on the screen.
         const float first = first_tolerance_;
         started_ = false;
-        begin_pass(std::min(2 * opt_.tolerance, kCoarsestFirst * first));
+        begin_pass(std::min(2 * opt_.tolerance, DetailScale::kFirstPassCoarsest * first));
         first_tolerance_ = first;
         return;
     }
     if (!r.ok()) {
         // No room for the model's edges at this tolerance. Later passes go back to the previous
         // one's samples (the same bits: its mesh stays valid); at load, with no room even at
-        // kCoarsestFirst times the tolerance, nothing can be shown.
+        // DetailScale::kFirstPassCoarsest times the tolerance, nothing can be shown.
         Event e{};
         e.kind = Event::Kind::PassFailed;
         e.pass = {pass_, opt_.tolerance, s.used};

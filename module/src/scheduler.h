@@ -3,6 +3,7 @@
 // piece), then tessellates the faces one after the other (a piece of a face per piece), each
 // appended to the scene's mesh as it is finished. A new level of detail starts a new pass.
 #include "core/last_call.h"
+#include "detail_scale.h"
 #include "facet/viewer.h"
 #include "geom/tessellate.h"
 #include "scene.h"
@@ -74,7 +75,6 @@ public:
     static constexpr uint32_t kNewBlockSamplesPerEdge = 6;
     // The first pass, short of room for the model's edges, takes coarser levels up to this many
     // times the tolerance asked (model_needs()'s least workspace is the room at this level).
-    static constexpr float kCoarsestFirst = pack::kCoarsestFirst;
     // Whether the samples' pool has room for `need` more (compacted first if short; not while busy).
     bool make_sample_room(uint32_t need);
     bool refining() const { return refine_block_ != kNone; }

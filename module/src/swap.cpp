@@ -13,6 +13,8 @@
 
 namespace facet {
 
+using Scale = module::DetailScale; // (detail_scale.h)
+
 bool Core::block_sphere(uint32_t b, float centre[3], float& radius) const {
     float lo[3], hi[3], r2 = 0;
     scene_.block_box(b, lo, hi);
@@ -135,7 +137,7 @@ void Core::swap_finish(const geom::PackDecoder* decoder) {
     swap_.block = kNone;
     swap_check_ = true; // (the next one, once this one is in)
     presenter_.invalidate();
-    if (!scheduler_.begin_refine(b, wanted_tolerance(b, scheduler_.tolerance(), kFinest, nullptr))) {
+    if (!scheduler_.begin_refine(b, wanted_tolerance(b, scheduler_.tolerance(), Scale::kRefineFinest, nullptr))) {
         // No room for its samples even after the caches made some: a box again until the view changes.
         scene_.drop_block(b);
         scene_.block(b).refused = true;
@@ -159,12 +161,7 @@ bool Core::leave_out_unseen(uint32_t keep) {
 // A face picked in a block left out is no longer there to describe or highlight: the
 // selection and the measurement go (as after a tap on nothing).
 void Core::forget_left_out_picks() {
-    uint32_t kept = 0;
-    for (uint32_t i = 0; i < picked_count_; ++i) {
-        if (!scene_.block_of_face(picked_[i].face).left_out) picked_[kept++] = picked_[i];
-    }
-    if (kept == picked_count_) return;
-    picked_count_ = kept;
+    if (!selection_.forget([&](const Picked& p) { return scene_.block_of_face(p.face).left_out; })) return;
     highlight();
     show_measurement();
 }

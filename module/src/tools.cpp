@@ -37,7 +37,7 @@ void Core::section_next() {
             section_kind_ = 0;
             return;
         }
-        if (kind == 1 ? picked_count_ > 0 && section_through(picked_[0].instance, picked_[0].face).ok() : section_across(uint8_t(kind - 2)).ok()) return;
+        if (kind == 1 ? selection_.count() > 0 && section_through(selection_[0].instance, selection_[0].face).ok() : section_across(uint8_t(kind - 2)).ok()) return;
     }
 }
 
@@ -107,7 +107,7 @@ void Core::highlight_changed() {
 
 void Core::focus() {
     painter_.set_part(chosen_part_);
-    painter_.set_focus(chosen_part_ != kNone ? chosen_part_ : picked_count_ > 0 ? picked_[0].instance : kNone);
+    painter_.set_focus(chosen_part_ != kNone ? chosen_part_ : selection_.first_instance());
 }
 
 Result Core::show(uint32_t part, bool shown) {
@@ -119,8 +119,7 @@ Result Core::show(uint32_t part, bool shown) {
     }
     scene_.set_shown(part, shown);
     if (!shown) { // what is hidden is not picked
-        for (uint32_t i = 0; i < picked_count_; ++i)
-            if (picked_[i].instance == part) picked_count_ = 0;
+        if (selection_.forget([&](const Picked& p) { return p.instance == part; })) selection_.clear(); // (the whole selection goes)
         highlight();
         show_measurement();
     }

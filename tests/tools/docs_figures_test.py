@@ -16,7 +16,6 @@ PLACES = [
     ('docs/module.md', r'`FACET_WORKSPACE_BASE_BYTES` \(([0-9,]+)', 'workspace_base_bytes'),
     ('docs/module.md', r'`FACET_WORKSPACE_BYTES_DEFAULT` \(([0-9,]+)\)', 'workspace_default_bytes'),
     ('docs/module.md', r'LZMA: plus ([0-9,]+) bytes of decoder state', 'lzma_state_bytes'),
-    ('docs/pack-format.md', r'LZMA needs ([0-9,]+) bytes of decoder state', 'lzma_state_bytes'),
     ('docs/pack-format.md', r'\n?([0-9,]+) bytes at the very end\)', 'lzma_state_bytes'),
 ]
 

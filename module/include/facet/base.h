@@ -1,6 +1,6 @@
 /* facet: what the C API (facet/facet.h) and the C++ one (facet/viewer.h) share: the module's
  * version, and the one value that means "none" wherever an index or a count could be one. C99
- * and C++ alike. docs/module.md lists what changed from version to version. */
+ * and C++ alike. docs/module-api.md lists what changed from version to version. */
 #ifndef FACET_BASE_H
 #define FACET_BASE_H
 

@@ -76,7 +76,7 @@ public:
 
     // Does pieces of work (a frame, a piece of a face's tessellation) until `budget_us` have
     // passed on the clock, and at least one piece. A piece takes at most about a millisecond
-    // on a 600 MHz core (docs/module.md: the measured bound).
+    // on a 600 MHz core (docs/viewer.md, "Pieces of work": the measured bound).
     Activity step(uint32_t budget_us);
 
     // The last flushed area is taken (Flush::Copy) or shown (Flush::Scanout). Any context.

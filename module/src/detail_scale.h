@@ -1,0 +1,23 @@
+#pragma once
+// The levels of detail the viewer works with, in one place: each a factor of a chordal
+// tolerance (larger: coarser). The default tolerance is the model's (geom::default_tolerance:
+// 0.1% of its diagonal); a pass has one tolerance; each block of a pass has its own from the view.
+#include "geom/pack_format.h"
+
+namespace facet::module {
+
+struct DetailScale {
+    // Viewer::set_detail(): the user's factor of the default tolerance, from 1/8 (finer) to 16.
+    static constexpr float kUserFinest = 1.0f / 8.0f, kUserCoarsest = 16.0f;
+    // A block's tolerance in a pass (from its nearest point on the screen): at most this many
+    // times the pass's (a far part).
+    static constexpr float kBlockCoarsest = 4.0f;
+    // A block refined as the view nears it: down to this many times finer than the pass's,
+    // a level kStep times apart from the one it has (both ways) before it is made again.
+    static constexpr float kRefineFinest = 16.0f, kStep = 2.0f;
+    // The first pass short of room goes coarser, up to this many times the tolerance asked for
+    // (what facet-pack's Needs are measured to).
+    static constexpr float kFirstPassCoarsest = pack::kCoarsestFirst;
+};
+
+} // namespace facet::module
