@@ -180,6 +180,11 @@ constexpr bool kMouse = ${_mouse_cpp}, kTouch = ${_touch_cpp}, kScreenshots = ${
     endif()
 endmacro()
 
+# Builds that do not depend on where the tree was checked out: __FILE__ (the asserts' messages)
+# relative to the source folder, so the same source makes the same image anywhere (and
+# docs/budgets.md's code sizes hold on every clone).
+add_compile_options(-fmacro-prefix-map=${CMAKE_SOURCE_DIR}/=)
+
 if(CMAKE_CROSSCOMPILING)
     set(FACET_TARGET_BUILD ON)
     if(NOT FACET_BOARD)

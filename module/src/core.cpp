@@ -15,7 +15,7 @@ void Core::relay(void* self, const Event& e) {
     case Event::Kind::PassFailed: c.presenter_.set_tolerance(c.scheduler_.tolerance()); break; // back to the previous level
     case Event::Kind::Sampled: // the new level's wireframe; the first one frames the placed model
         if (e.pass.pass == 0) { // in the direction the user chose meanwhile, if any (each bounds the sampled model)
-            if (c.glide_.phase != Glide::Phase::None) c.glide_to(c.glide_.target.view());
+            if (!c.glide_.idle()) c.glide_to(c.glide_.target().view());
             else c.fit_view(c.user_moved_);
         }
         c.presenter_.invalidate();
@@ -58,7 +58,7 @@ void Core::unload() {
     framer_.stop();
     swap_.block = kNone, swap_check_ = false;
     unpacked_ = {};
-    glide_.phase = Glide::Phase::None;
+    glide_.stop();
     presenter_.reset();
     scene_.close();
     pack_bytes_ = pack_file_bytes_ = 0;
@@ -100,7 +100,7 @@ Result Core::load(const void* file, uint32_t file_bytes, void* memory, uint32_t 
     pack_bytes_ = unpacked.bytes;
     const uint32_t bytes = pack_bytes_;
     default_tolerance_ = geom::default_tolerance(scene_.box_min(), scene_.box_max());
-    detail_part_ = kNone, detail_radius_ = 0; // judged afresh
+    judge_.reset(); // judged afresh
     camera_.fit();
     user_moved_ = false;
     Event e{};
@@ -114,7 +114,7 @@ Result Core::load(const void* file, uint32_t file_bytes, void* memory, uint32_t 
 }
 
 bool Core::frame_wanted() const {
-    if (!scene_.loaded() || scene_.bounding() || framer_.busy() || glide_.phase == Glide::Phase::Framing) return false;
+    if (!scene_.loaded() || scene_.bounding() || framer_.busy() || glide_.framing()) return false;
     if (scheduler_.sampling() && !boxes_while_sampling()) return false; // no edge may be drawn meanwhile
     const module::Totals& t = scene_.totals();
     return presenter_.wanted(t.finished(), t.faces);
@@ -132,7 +132,7 @@ Core::Round Core::round() {
     Round r;
     r.frame = frame_wanted() && presenter_.can_draw();
     r.mid_bands = presenter_.drawing() && config_.display.band_lines < config_.display.height;
-    r.framing = scene_.bounding() || framer_.busy() || glide_.phase == Glide::Phase::Framing;
+    r.framing = scene_.bounding() || framer_.busy() || glide_.framing();
     return r;
 }
 
@@ -149,7 +149,7 @@ const Core::Source Core::kSources[] = {
 };
 
 bool Core::framing_ready(const Round& r) const { return r.framing && !r.mid_bands; }
-bool Core::glide_ready(const Round& r) const { return glide_.phase == Glide::Phase::Moving && !frame_wanted() && !r.mid_bands; }
+bool Core::glide_ready(const Round& r) const { return glide_.moving() && !frame_wanted() && !r.mid_bands; }
 bool Core::frame_ready(const Round& r) const { return r.frame; }
 bool Core::tessellation_ready(const Round& r) const { return scheduler_.busy() && !r.mid_bands; }
 bool Core::decoding_ready(const Round& r) const { return swap_.block != kNone && !r.mid_bands; }
@@ -159,11 +159,9 @@ bool Core::run_framing() {
     work(Event::Kind::WorkBegin, Work::Fit, 0);
     if (scene_.bounding()) {
         (void)scene_.bound(kFrameUnits * module::Framer::kPointsPerUnit * 4); // (a bounded point: a quarter of a projected one)
-    } else if (glide_.phase == Glide::Phase::Framing) {
-        if (framer_.run(scene_, glide_.target, kFrameUnits)) {
-            glide_.phase = Glide::Phase::Moving;
-            glide_.from = camera_.view();
-            glide_.t0 = now(), glide_.frames = 0;
+    } else if (glide_.framing()) {
+        if (framer_.run(scene_, glide_.target(), kFrameUnits)) {
+            glide_.framed(camera_.view(), now());
         }
     } else if (framer_.run(scene_, camera_, kFrameUnits)) {
         if (!module::same_view(camera_.view(), framed_from_)) presenter_.invalidate();
@@ -179,7 +177,7 @@ bool Core::run_glide() {
 
 bool Core::run_frame() {
     presenter_.set_boxes(boxes_while_sampling());
-    presenter_.set_dragging(controls_.dragging() || glide_.phase == Glide::Phase::Moving);
+    presenter_.set_dragging(controls_.dragging() || glide_.moving());
     const Work w = presenter_.work();
     work(Event::Kind::WorkBegin, w, 0);
     presenter_.run(kFrameUnits, scheduler_.pass());
@@ -223,7 +221,7 @@ Activity Core::step(uint32_t budget_us) {
     const uint32_t t0 = now();
     for (;;) {
         // Faces left to their edges are judged again when the view has moved (not while it is being framed).
-        if (!scene_.bounding() && !framer_.busy() && glide_.phase == Glide::Phase::None) detail_view_changed();
+        if (!scene_.bounding() && !framer_.busy() && glide_.idle()) detail_view_changed();
         const Round r = round();
         bool ran = false;
         for (const Source& s : kSources) {
@@ -251,7 +249,7 @@ Activity Core::activity() {
     const bool mid_bands = presenter_.drawing() && config_.display.band_lines < config_.display.height;
     if (!mid_bands && !frame_wanted() && !scheduler_.busy() && !swap_piece()) (void)refine_for_view();
     if ((frame_wanted() && presenter_.can_draw()) ||
-        ((scheduler_.busy() || swap_.block != kNone || swap_pending() || scene_.bounding() || framer_.busy() || glide_.phase != Glide::Phase::None) &&
+        ((scheduler_.busy() || swap_.block != kNone || swap_pending() || scene_.bounding() || framer_.busy() || !glide_.idle()) &&
          !mid_bands)) {
         return Activity::Busy;
     }
@@ -333,7 +331,7 @@ void Core::act(Action a) {
         presenter_.invalidate();
         return;
     case Action::Projection:
-        set_parallel(!(glide_.phase != Glide::Phase::None ? glide_.target.view() : camera_.view()).ortho);
+        set_parallel(!(glide_.going_to(camera_.view())).ortho);
         return;
     case Action::Coarser:
     case Action::Finer:

@@ -2,7 +2,9 @@
 // The viewer behind facet::Viewer: its parts, in the workspace, and the loop of step().
 #include "camera.h"
 #include "controls.h"
+#include "face_judge.h"
 #include "fit.h"
+#include "glide.h"
 #include "facet/viewer.h"
 #include "geom/library.h"
 #include "geom/measure.h"
@@ -14,12 +16,6 @@
 #include "scheduler.h"
 #include "selection.h"
 #include "workspace.h"
-
-namespace facet::module {
-
-class Core;
-
-} // namespace facet::module
 
 namespace facet {
 
@@ -173,10 +169,6 @@ private:
     // decoded packs and arrays fit with room to tessellate; the default (all) when all fit.
     module::BlockCut cut_blocks(const void* file, uint32_t file_bytes, uint32_t file_size, void* memory, uint32_t memory_bytes) const;
     float default_tolerance_ = 0;
-    // The level of detail the view asks for (detail.cpp): a face under kMinFacePixels across in
-    // every instance of its part, or off the screen, is left to its edges until the view changes.
-    static constexpr float kMinFacePixels = float(module::kFacePixels);
-    static bool wants_face(void* self, uint32_t face);
     // Each block's tolerance in a pass: Config::screen_error_px at its nearest point (detail.cpp).
     static float block_tolerance(void* self, uint32_t block, float pass_tolerance);
     // The blocks a pass or a sweep takes, largest on the screen first (detail.cpp).
@@ -219,24 +211,11 @@ private:
     uint32_t seen_moves_ = 0, seen_refined_ = 0; // the scene's moves and refinements the frames know of
     void detail_view_changed(); // when the view moved since the faces were last judged: judged again
     bool judge_with_view();     // the spheres' view from the camera's, if it moved (true then)
-    module::SphereView detail_{};
-    module::View detail_view_{};
-    float detail_radius_ = 0;
-    bool detail_section_ = false; // a section was on: every back face may show
-    static constexpr uint32_t kDetailInstances = 8; // a part's instances kept for the next of its faces
-    uint32_t detail_part_ = kNone, detail_count_ = 0, detail_instances_[kDetailInstances] = {};
+    module::FaceJudge judge_; // which faces the view wants (face_judge.h)
     uint32_t pack_bytes_ = 0, pack_file_bytes_ = 0;
     bool carved_ = false;
     bool user_moved_ = false; // the view was moved since load (no framing again when the faces are in)
-    // A glide to a new view: the end view framed first (on its own camera), then the camera
-    // moved there over kGlideUs (or kGlideFrames frames without a clock), a frame at each step.
-    struct Glide {
-        enum class Phase : uint8_t { None, Framing, Moving } phase = Phase::None;
-        module::Camera target;
-        module::View from;
-        uint32_t t0 = 0, frames = 0;
-    } glide_;
-    static constexpr uint32_t kGlideUs = 400000, kGlideFrames = 10;
+    module::Glide glide_; // a glide to a new view (glide.h)
     static constexpr uint32_t kDoubleTapUs = 400000;
     static constexpr int kDoubleTapSlop = 12; // pixels
     void glide_to(const module::View& v, uint32_t instance = kNone, uint32_t face = kNone);

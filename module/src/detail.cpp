@@ -1,6 +1,6 @@
 // The level of detail the view asks for: which faces are worth their triangles now.
 //
-// A face is tessellated when some instance of its part shows it at least kMinFacePixels across
+// A face is tessellated when some instance of its part shows it at least FaceJudge::kMinPixels across
 // (its sphere, bounded by its edges' samples, at its nearest point), on the screen, and (a
 // closed part's plane, cylinder or cone face, no section on) facing the eye; the rest are
 // deferred (FaceState::Deferred): drawn by their edges, and judged again once the view changes
@@ -17,91 +17,6 @@
 namespace facet {
 
 using Scale = module::DetailScale; // (detail_scale.h)
-namespace {
-
-// A cylinder's or a cone's face as SphereView::faces_away takes it; false for other surfaces, a
-// cone face reaching its apex, or a range of u it cannot read.
-bool round_face(const module::Scene& scene, uint32_t f, module::RoundFace& r) {
-    const module::Block& block = scene.block_of_face(f);
-    const pack::Face& F = block.pack.faces()[f - block.first_face];
-    const pack::Surface& S = block.pack.surfaces()[F.surface];
-    const auto type = pack::SurfaceType(S.type);
-    if (type != pack::SurfaceType::Cylinder && type != pack::SurfaceType::Cone) return false;
-    const pack::Frame& frame = geom::frame_of(block.pack, S);
-    r.radius = 0, r.sin_a = 0, r.cos_a = 1;
-    if (type == pack::SurfaceType::Cylinder) {
-        r.radius = geom::params<pack::CylinderParams>(block.pack, S).radius;
-    } else {
-        const pack::ConeParams& cone = geom::params<pack::ConeParams>(block.pack, S);
-        r.radius = cone.ref_radius;
-        geom::sincos_f(cone.semi_angle, r.sin_a, r.cos_a);
-        // Its normal as below holds on the apex's near side: both ends of v there.
-        if (!(r.radius + F.uv_min[1] * r.sin_a > 0 && r.radius + F.uv_max[1] * r.sin_a > 0) || !(r.cos_a > 0)) return false;
-    }
-    r.span = F.uv_max[0] - F.uv_min[0];
-    if (!(r.span >= 0) || !(r.radius > 0)) return false;
-    for (int k = 0; k < 3; ++k) r.o[k] = frame.origin[k], r.x[k] = frame.x[k], r.y[k] = frame.y[k], r.z[k] = frame.z[k];
-    r.sign = (F.reversed ? -1.0f : 1.0f) * (geom::left_handed(frame) ? -1.0f : 1.0f); // (du x dv: geom::left_handed)
-    geom::sincos_f(F.uv_min[0], r.s0, r.c0);
-    geom::sincos_f(F.uv_max[0], r.s1, r.c1);
-    return true;
-}
-
-} // namespace
-
-bool Core::wants_face(void* self, uint32_t f) {
-    Core& c = *static_cast<Core*>(self);
-    const module::Scene& scene = c.scene_;
-    const module::FaceInfo& F = scene.face(f);
-    if (F.radius <= 0 || !(c.config_.screen_error_px > 0)) return true; // nothing to bound it by; or the view chooses no detail
-    c.judge_with_view();
-    const uint32_t part = scene.shell_of(f);
-    const auto instances = scene.instances();
-    if (part != c.detail_part_) { // its instances (the first few; more are looked up each time)
-        c.detail_part_ = part, c.detail_count_ = 0;
-        for (uint32_t i = 0; i < instances.size(); ++i) {
-            if (instances[i].shell != part) continue;
-            if (c.detail_count_ < kDetailInstances) c.detail_instances_[c.detail_count_] = i;
-            ++c.detail_count_;
-        }
-    }
-    const float u = scene.unit();
-    const float p[3] = {float(F.centre[0]) * u, float(F.centre[1]) * u, float(F.centre[2]) * u}, r = float(F.radius) * u;
-    // A closed part's face turned away from the eye shows nothing unless a section opens the
-    // solid (Transform::hides_plane): a plane, a cylinder's or a cone's face is left for when
-    // the view turns it round.
-    // Its size first: most faces of a large model left out are left out for it, and it costs a
-    // fraction of the tests of which way a face looks (those, and their set-up, only for a face
-    // that is large enough somewhere).
-    float on_plane[3], normal[3];
-    const bool closed = !c.detail_section_ && scene.part(part).closed;
-    enum class Facing : uint8_t { Unknown, Plane, Round, Neither } facing = closed ? Facing::Unknown : Facing::Neither;
-    module::RoundFace round;
-    const float sag = Scale::kBlockCoarsest * c.scheduler_.tolerance(); // (its mesh's chords: at most its block's tolerance inside it)
-    auto shows = [&](const pack::Instance& inst) {
-        float w[3];
-        module::place(inst.m, p, w);
-        if (c.detail_.pixels(w, r) < kMinFacePixels) return false;
-        if (facing == Facing::Unknown) {
-            facing = scene.face_plane(f, on_plane, normal) ? Facing::Plane : round_face(scene, f, round) ? Facing::Round : Facing::Neither;
-        }
-        if (facing == Facing::Plane) {
-            float wn[3];
-            module::place(inst.m, on_plane, w), module::place(inst.m, normal, wn, false);
-            return !c.detail_.faces_away(w, wn);
-        }
-        return !(facing == Facing::Round && c.detail_.faces_away(round, inst.m, sag));
-    };
-    if (c.detail_count_ <= kDetailInstances) {
-        for (uint32_t k = 0; k < c.detail_count_; ++k)
-            if (shows(instances[c.detail_instances_[k]])) return true;
-        return false;
-    }
-    for (const pack::Instance& inst : instances)
-        if (inst.shell == part && shows(inst)) return true;
-    return false;
-}
-
 // A block's tolerance: the pass's (the default, or the bias the user chose) scaled by how far
 // the block lies: Config::screen_error_px (half a pixel) at its nearest point in the view the
 // pass starts from (before the first pass is framed: the whole model's sphere fitted), never
@@ -117,9 +32,9 @@ float Core::wanted_tolerance(uint32_t b, float pass_tolerance, float finest, boo
     float centre[3], r;
     if (!block_sphere(b, centre, r)) return pass_tolerance;
     (void)judge_with_view();
-    if (on_screen) *on_screen = detail_.pixels(centre, r) > 0;
+    if (on_screen) *on_screen = judge_.view().pixels(centre, r) > 0;
     const float bias = pass_tolerance / default_tolerance_;
-    float t = bias * config_.screen_error_px * detail_.mm_per_pixel(centre, r);
+    float t = bias * config_.screen_error_px * judge_.view().mm_per_pixel(centre, r);
     // Never finer than the block would take as a model of its own (its share of the model's
     // size: a part of a large assembly zoomed into gets its own detail, a one-block model
     // keeps the pass's), nor than `finest` times the pass's.
@@ -137,7 +52,7 @@ float Core::wanted_tolerance(uint32_t b, float pass_tolerance, float finest, boo
 // none while a finger drags the view. Once at the view's level, a block moves again only when
 // the view has moved by that factor.
 bool Core::refine_for_view() {
-    if (!refine_check_ || scheduler_.busy() || controls_.dragging() || scene_.bounding() || framer_.busy() || glide_.phase != Glide::Phase::None) {
+    if (!refine_check_ || scheduler_.busy() || controls_.dragging() || scene_.bounding() || framer_.busy() || !glide_.idle()) {
         return false;
     }
     for (;;) { // (a block refused, for want of room, is passed over the next time round)
@@ -203,13 +118,7 @@ uint32_t Core::sort_blocks(uint32_t& head, uint32_t count) {
     return first;
 }
 
-bool Core::judge_with_view() {
-    const bool section = camera_.section().on;
-    if (detail_radius_ == scene_.radius() && section == detail_section_ && module::same_view(camera_.view(), detail_view_)) return false;
-    detail_ = camera_.sphere_view(scene_, config_.display.width, config_.display.height);
-    detail_view_ = camera_.view(), detail_radius_ = scene_.radius(), detail_section_ = section;
-    return true;
-}
+bool Core::judge_with_view() { return judge_.update(); }
 
 void Core::detail_view_changed() {
     if (!judge_with_view()) return;

@@ -28,7 +28,7 @@ float Core::block_pixels(uint32_t b) {
     float centre[3], r;
     if (!block_sphere(b, centre, r)) return 0;
     (void)judge_with_view();
-    return detail_.pixels(centre, r);
+    return judge_.view().pixels(centre, r);
 }
 
 uint32_t Core::block_samples(uint32_t b) const {
@@ -50,7 +50,7 @@ bool Core::swap_piece() {
 
 bool Core::swap_for_view() {
     if (!swap_pending() || swap_.block != kNone || scheduler_.busy() || scene_.bounding() || framer_.busy() ||
-        glide_.phase != Glide::Phase::None) {
+        !glide_.idle()) {
         return false;
     }
     swap_check_ = false;

@@ -17,11 +17,9 @@ void Core::bound(bool sampled) {
 void Core::glide_to(const module::View& v, uint32_t instance, uint32_t face) {
     if (!scene_.loaded()) return;
     framer_.stop(); // a glide frames its own end view
-    glide_.target.set_view(v);
-    glide_.target.reframe();
+    glide_.begin(v);
     const bool sampled = !scheduler_.sampling();
     bound(sampled);
-    glide_.phase = Glide::Phase::Framing;
     if (sampled) {
         // A face is framed to fill less: it is seen among its neighbours.
         framer_.start(config_.display.width, config_.display.height, presenter_.overlay().taken(), instance, face,
@@ -30,26 +28,7 @@ void Core::glide_to(const module::View& v, uint32_t instance, uint32_t face) {
 }
 
 bool Core::glide_step() {
-    const module::View &a = glide_.from, &b = glide_.target.view();
-    float s = config_.now_us ? float(now() - glide_.t0) / float(kGlideUs) : float(++glide_.frames) / float(kGlideFrames);
-    if (s >= 1) {
-        camera_.set_view(b);
-        glide_.phase = Glide::Phase::None;
-        view_changed();
-        return true;
-    }
-    s = s * s * (3 - 2 * s); // eased in and out
-    constexpr float kPi = 3.14159265358979f;
-    float dyaw = b.yaw - a.yaw; // the short way round
-    while (dyaw > kPi) dyaw -= 2 * kPi;
-    while (dyaw < -kPi) dyaw += 2 * kPi;
-    module::View v = b;
-    v.yaw = a.yaw + dyaw * s;
-    v.pitch = a.pitch + (b.pitch - a.pitch) * s;
-    v.zoom = a.zoom + (b.zoom - a.zoom) * s;
-    v.pan_x = a.pan_x + (b.pan_x - a.pan_x) * s;
-    v.pan_y = a.pan_y + (b.pan_y - a.pan_y) * s;
-    camera_.set_view(v);
+    camera_.set_view(glide_.next(config_.now_us != nullptr, now()));
     view_changed();
     return true;
 }
@@ -92,7 +71,7 @@ Result Core::set_orbit(const Orbit& o) {
     if (!(std::fabs(o.pan_mm[0]) <= most && std::fabs(o.pan_mm[1]) <= most)) {
         return Result::fail(Status::OutOfRange, "the orbit's pan takes the model further than 64 of its radii away");
     }
-    glide_.phase = Glide::Phase::None;
+    glide_.stop();
     framer_.stop();
     camera_.set_view({o.yaw_deg / kDegrees, o.pitch_deg / kDegrees, o.dolly, o.pan_mm[0], o.pan_mm[1], o.parallel});
     view_changed();
@@ -116,7 +95,7 @@ Result Core::fit_part(uint32_t part, uint32_t face) {
 
 void Core::set_parallel(bool parallel) {
     // From the view under way if a glide is (a standard view asked for just before stays asked for).
-    module::View v = glide_.phase != Glide::Phase::None ? glide_.target.view() : camera_.view();
+    module::View v = glide_.going_to(camera_.view());
     if (v.ortho == parallel) return;
     v.ortho = parallel;
     glide_to(v); // framed again: a parallel view of the same zoom is not the same size

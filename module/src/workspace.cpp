@@ -155,7 +155,8 @@ Result model_needs(const void* file, uint32_t file_bytes, ModelNeeds& needs) {
 
 Core::Core(const Config& config, Carver& k, uint8_t* end)
     : config_(config), emitter_{relay, this}, painter_(scene_, raster_), scheduler_(scene_, emitter_),
-      presenter_(scene_, camera_, painter_, raster_, emitter_, {config.now_us, config.clock_user}) {
+      presenter_(scene_, camera_, painter_, raster_, emitter_, {config.now_us, config.clock_user}),
+      judge_(scene_, camera_, scheduler_, config_) {
     Carve c{k, {}, {}, {}, {}, {}};
     module::base_plan(config.capacity, geom::kPatchCacheWords, c);
     carved_ = k.fits() && c.face_bound.ok();
@@ -164,7 +165,7 @@ Core::Core(const Config& config, Carver& k, uint8_t* end)
     end_ = end;
     c.scheduler.max_face_vertices = uint32_t(c.projected.size());
     scheduler_.init(c.scheduler);
-    scheduler_.set_filter({&Core::wants_face, this});
+    scheduler_.set_filter({&module::FaceJudge::wants, &judge_});
     scheduler_.set_block_tolerance({&Core::block_tolerance, this});
     scheduler_.set_block_order({&Core::block_order, this});
     painter_.init(c.painter);

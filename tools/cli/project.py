@@ -26,6 +26,9 @@ def add(sub):
                        'ASan/UBSan, reference images, QEMU on the boards, the simulator headless, link-time guards, '
                        'the layers of DEVELOPERS.md.')
     p.add_argument('-R', '--only', metavar='REGEX', help="only the tests whose names match (ctest's -R)")
+    p.add_argument('--quick', action='store_true',
+                   help='the edit loop: the host build and its own tests only (no ARM builds, QEMU, sanitizers, '
+                   'fuzzing or the corpus-wide sweeps); ./facet test before saying a change is done')
     p.set_defaults(run=cmd_test)
 
     p = sub.add_parser('fuzz', help='a long fuzz run (libFuzzer: cdt, pack, tessellate, api; facet-pack on mutated STEP: step)',
@@ -63,8 +66,20 @@ def cmd_build(args, parser):
     return 0
 
 
+# What --quick leaves out: everything that needs the ARM builds or the fuzzers, and the host
+# tests that run over the whole corpus (each a minute or more of a 2-core machine).
+QUICK_EXCLUDES = r'^(qemu\.|guard\.|fuzz\.|mimxrt1060-evkb\.|cdt\.no_floating_point|docs\.budgets|mesh\.|pack\.every|' \
+                 r'reliability\.large|module\.model_needs_keeps)'
+
+
 def cmd_test(args, parser):
     setup()
+    if args.quick:
+        build('host')
+        only = ['-R', args.only] if args.only else []
+        say('host: unit tests and the quick host checks (--quick: no QEMU, sanitizers or fuzzing)')
+        return 0 if run(['ctest', '--test-dir', 'build/host', '-j', jobs(), '--output-on-failure', '--timeout', '600',
+                         '-E', QUICK_EXCLUDES] + only) == 0 else 1
     build()
     only = ['-R', args.only] if args.only else []
     status = 0

@@ -1,0 +1,105 @@
+// Which faces the view wants now (face_judge.h).
+#include "face_judge.h"
+
+#include "geom/fmath.h"
+#include "geom/params.h"
+
+namespace facet::module {
+namespace {
+
+// A cylinder's or a cone's face as SphereView::faces_away takes it; false for other surfaces, a
+// cone face reaching its apex, or a range of u it cannot read.
+bool round_face(const Scene& scene, uint32_t f, RoundFace& r) {
+    const Block& block = scene.block_of_face(f);
+    const pack::Face& F = block.pack.faces()[f - block.first_face];
+    const pack::Surface& S = block.pack.surfaces()[F.surface];
+    const auto type = pack::SurfaceType(S.type);
+    if (type != pack::SurfaceType::Cylinder && type != pack::SurfaceType::Cone) return false;
+    const pack::Frame& frame = geom::frame_of(block.pack, S);
+    r.radius = 0, r.sin_a = 0, r.cos_a = 1;
+    if (type == pack::SurfaceType::Cylinder) {
+        r.radius = geom::params<pack::CylinderParams>(block.pack, S).radius;
+    } else {
+        const pack::ConeParams& cone = geom::params<pack::ConeParams>(block.pack, S);
+        r.radius = cone.ref_radius;
+        geom::sincos_f(cone.semi_angle, r.sin_a, r.cos_a);
+        // Its normal as below holds on the apex's near side: both ends of v there.
+        if (!(r.radius + F.uv_min[1] * r.sin_a > 0 && r.radius + F.uv_max[1] * r.sin_a > 0) || !(r.cos_a > 0)) return false;
+    }
+    r.span = F.uv_max[0] - F.uv_min[0];
+    if (!(r.span >= 0) || !(r.radius > 0)) return false;
+    for (int k = 0; k < 3; ++k) r.o[k] = frame.origin[k], r.x[k] = frame.x[k], r.y[k] = frame.y[k], r.z[k] = frame.z[k];
+    r.sign = (F.reversed ? -1.0f : 1.0f) * (geom::left_handed(frame) ? -1.0f : 1.0f); // (du x dv: geom::left_handed)
+    geom::sincos_f(F.uv_min[0], r.s0, r.c0);
+    geom::sincos_f(F.uv_max[0], r.s1, r.c1);
+    return true;
+}
+
+} // namespace
+
+bool FaceJudge::update() {
+    const bool section = camera_.section().on;
+    if (radius_ == scene_.radius() && section == section_ && same_view(camera_.view(), camera_view_)) return false;
+    view_ = camera_.sphere_view(scene_, config_.display.width, config_.display.height);
+    camera_view_ = camera_.view(), radius_ = scene_.radius(), section_ = section;
+    return true;
+}
+
+bool FaceJudge::wants(void* self, uint32_t f) {
+    FaceJudge& j = *static_cast<FaceJudge*>(self);
+    const Scene& scene = j.scene_;
+    const FaceInfo& F = scene.face(f);
+    if (F.radius <= 0 || !(j.config_.screen_error_px > 0)) return true; // nothing to bound it by; or the view chooses no detail
+    j.update();
+    const uint32_t part = scene.shell_of(f);
+    uint32_t& part_ = j.part_;
+    uint32_t& count_ = j.count_;
+    uint32_t* instances_ = j.instances_;
+    const SphereView& view_ = j.view_;
+    const auto instances = scene.instances();
+    if (part != part_) { // its instances (the first few; more are looked up each time)
+        part_ = part, count_ = 0;
+        for (uint32_t i = 0; i < instances.size(); ++i) {
+            if (instances[i].shell != part) continue;
+            if (count_ < kInstances) instances_[count_] = i;
+            ++count_;
+        }
+    }
+    const float u = scene.unit();
+    const float p[3] = {float(F.centre[0]) * u, float(F.centre[1]) * u, float(F.centre[2]) * u}, r = float(F.radius) * u;
+    // A closed part's face turned away from the eye shows nothing unless a section opens the
+    // solid (Transform::hides_plane): a plane, a cylinder's or a cone's face is left for when
+    // the view turns it round.
+    // Its size first: most faces of a large model left out are left out for it, and it costs a
+    // fraction of the tests of which way a face looks (those, and their set-up, only for a face
+    // that is large enough somewhere).
+    float on_plane[3], normal[3];
+    const bool closed = !j.section_ && scene.part(part).closed;
+    enum class Facing : uint8_t { Unknown, Plane, Round, Neither } facing = closed ? Facing::Unknown : Facing::Neither;
+    RoundFace round;
+    const float sag = DetailScale::kBlockCoarsest * j.scheduler_.tolerance(); // (its mesh's chords: at most its block's tolerance inside it)
+    auto shown = [&](const pack::Instance& inst) {
+        float w[3];
+        place(inst.m, p, w);
+        if (view_.pixels(w, r) < kMinPixels) return false;
+        if (facing == Facing::Unknown) {
+            facing = scene.face_plane(f, on_plane, normal) ? Facing::Plane : round_face(scene, f, round) ? Facing::Round : Facing::Neither;
+        }
+        if (facing == Facing::Plane) {
+            float wn[3];
+            place(inst.m, on_plane, w), place(inst.m, normal, wn, false);
+            return !view_.faces_away(w, wn);
+        }
+        return !(facing == Facing::Round && view_.faces_away(round, inst.m, sag));
+    };
+    if (count_ <= kInstances) {
+        for (uint32_t k = 0; k < count_; ++k)
+            if (shown(instances[instances_[k]])) return true;
+        return false;
+    }
+    for (const pack::Instance& inst : instances)
+        if (inst.shell == part && shown(inst)) return true;
+    return false;
+}
+
+} // namespace facet::module
