@@ -93,7 +93,8 @@ def own_parsers():
 
 def cmd_cdt(args, parser):
     setup()
-    build('host', 'qemu-versatilepb', 'qemu-mps2-an500')
+    build('qemu-versatilepb', 'qemu-mps2-an500')
+    build('host', extra=['facet-bench-cdt'])
     csv = os.path.abspath(args.csv)
     os.makedirs(os.path.dirname(csv), exist_ok=True)
     say('CDT: facet vs CGAL 5.5 (same inputs, same run)')
@@ -117,7 +118,7 @@ def cmd_cdt(args, parser):
 def cmd_mesh(args, parser):
     models = [existing_file(parser, m) for m in args.models] or shared_models()
     setup()
-    build('host')
+    build('host', extra=['facet-bench-mesh'])
     csv = os.path.abspath(args.csv)
     os.makedirs(os.path.dirname(csv), exist_ok=True)
     say('tessellation: facet (geom/ + cdt/) vs Open CASCADE BRepMesh, same shapes, same measurements')

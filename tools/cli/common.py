@@ -91,9 +91,10 @@ def setup():
         raise Failure(f'still missing after apt-get: {" ".join(still) or "(apt-get failed)"}')
 
 
-def build(*names, quiet=False):
+def build(*names, quiet=False, extra=()):
     """Configures (once) and builds presets; warnings, errors and the linkers' memory use shown,
-    the per-file progress lines not."""
+    the per-file progress lines not. `extra`: targets left out of a preset's default build (the
+    host's benches: no test uses them) built too."""
     for preset in names or presets():
         out = os.path.join(ROOT, 'build', preset)
         if not os.path.exists(os.path.join(out, 'build.ninja')):
@@ -105,7 +106,8 @@ def build(*names, quiet=False):
                 raise Failure(f'configure {preset} failed')
         if not quiet:
             say(f'building {preset}')
-        p = subprocess.Popen(['cmake', '--build', out, '-j', jobs()], cwd=ROOT, stdout=subprocess.PIPE,
+        targets = ['--target', 'all', *extra] if extra else []
+        p = subprocess.Popen(['cmake', '--build', out, '-j', jobs()] + targets, cwd=ROOT, stdout=subprocess.PIPE,
                              stderr=subprocess.STDOUT, text=True)
         for line in p.stdout:
             progress = line.startswith('[') and ('] Building' in line or '] Linking' in line)
