@@ -139,24 +139,12 @@ inline Elementary::Elementary(const Pack& pack, const pack::Surface& s) : type_(
         O_ = X_ = Y_ = Z_ = {0, 0, 0};
         return;
     }
-    const pack::Frame& f = frame_of(pack, s);
+    ElementaryRecord e;
+    (void)elementary(pack, s, e);
+    const pack::Frame& f = *e.frame;
     O_ = vec3(f.origin), X_ = vec3(f.x), Y_ = vec3(f.y), Z_ = vec3(f.z);
-    switch (type_) {
-    case pack::SurfaceType::Cylinder: radius_ = params<pack::CylinderParams>(pack, s).radius; break;
-    case pack::SurfaceType::Sphere: radius_ = params<pack::SphereParams>(pack, s).radius; break;
-    case pack::SurfaceType::Cone: {
-        const pack::ConeParams& c = params<pack::ConeParams>(pack, s);
-        radius_ = c.ref_radius;
-        sincos_f(c.semi_angle, sin_a_, cos_a_);
-        break;
-    }
-    case pack::SurfaceType::Torus: {
-        const pack::TorusParams& t = params<pack::TorusParams>(pack, s);
-        radius_ = t.major_radius, minor_ = t.minor_radius;
-        break;
-    }
-    default: break;
-    }
+    radius_ = e.radius, minor_ = e.minor;
+    if (type_ == pack::SurfaceType::Cone) sincos_f(e.semi_angle, sin_a_, cos_a_);
 }
 
 [[gnu::always_inline]] inline SurfacePoint Elementary::at(float u, float v) const {

@@ -80,9 +80,10 @@ Result describe_face(const Pack& pack, uint32_t face, const float* m, FaceGeomet
     case pack::SurfaceType::Cone:
     case pack::SurfaceType::Sphere:
     case pack::SurfaceType::Torus: {
-        const pack::Frame& f = frame_of(pack, S);
+        ElementaryRecord e;
+        (void)elementary(pack, S, e);
+        const pack::Frame& f = *e.frame;
         const D3 O = d3(f.origin), X = d3(f.x), Y = d3(f.y), Z = d3(f.z);
-        const double handed = left_handed(X, Y, Z) ? -1 : 1; // (a left-handed frame turns the natural normal in)
         g.origin = place_point(m, O);
         if (g.type == pack::SurfaceType::Plane) {
             g.axis = unit(place_direction(m, cross(X, Y) * sense));
@@ -90,19 +91,8 @@ Result describe_face(const Pack& pack, uint32_t face, const float* m, FaceGeomet
             break;
         }
         g.axis = unit(place_direction(m, Z));
-        switch (g.type) {
-        case pack::SurfaceType::Cylinder: g.radius = params<pack::CylinderParams>(pack, S).radius; break;
-        case pack::SurfaceType::Sphere: g.radius = params<pack::SphereParams>(pack, S).radius; break;
-        case pack::SurfaceType::Cone:
-            g.radius = params<pack::ConeParams>(pack, S).ref_radius;
-            g.half_angle = params<pack::ConeParams>(pack, S).semi_angle;
-            break;
-        default: // a torus
-            g.radius = params<pack::TorusParams>(pack, S).major_radius;
-            g.minor = params<pack::TorusParams>(pack, S).minor_radius;
-            break;
-        }
-        g.hole = sense * handed < 0;
+        g.radius = e.radius, g.minor = e.minor, g.half_angle = e.semi_angle;
+        g.hole = e.inward(g.reversed); // (its natural normal turned in: a hole's wall)
         break;
     }
     case pack::SurfaceType::BSpline: {

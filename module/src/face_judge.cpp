@@ -15,21 +15,19 @@ bool round_face(const Scene& scene, uint32_t f, RoundFace& r) {
     const pack::Surface& S = block.pack.surfaces()[F.surface];
     const auto type = pack::SurfaceType(S.type);
     if (type != pack::SurfaceType::Cylinder && type != pack::SurfaceType::Cone) return false;
-    const pack::Frame& frame = geom::frame_of(block.pack, S);
-    r.radius = 0, r.sin_a = 0, r.cos_a = 1;
-    if (type == pack::SurfaceType::Cylinder) {
-        r.radius = geom::params<pack::CylinderParams>(block.pack, S).radius;
-    } else {
-        const pack::ConeParams& cone = geom::params<pack::ConeParams>(block.pack, S);
-        r.radius = cone.ref_radius;
-        geom::sincos_f(cone.semi_angle, r.sin_a, r.cos_a);
+    geom::ElementaryRecord e;
+    (void)geom::elementary(block.pack, S, e);
+    const pack::Frame& frame = *e.frame;
+    r.radius = e.radius, r.sin_a = 0, r.cos_a = 1;
+    if (type == pack::SurfaceType::Cone) {
+        geom::sincos_f(e.semi_angle, r.sin_a, r.cos_a);
         // Its normal as below holds on the apex's near side: both ends of v there.
         if (!(r.radius + F.uv_min[1] * r.sin_a > 0 && r.radius + F.uv_max[1] * r.sin_a > 0) || !(r.cos_a > 0)) return false;
     }
     r.span = F.uv_max[0] - F.uv_min[0];
     if (!(r.span >= 0) || !(r.radius > 0)) return false;
     for (int k = 0; k < 3; ++k) r.o[k] = frame.origin[k], r.x[k] = frame.x[k], r.y[k] = frame.y[k], r.z[k] = frame.z[k];
-    r.sign = (F.reversed ? -1.0f : 1.0f) * (geom::left_handed(frame) ? -1.0f : 1.0f); // (du x dv: geom::left_handed)
+    r.sign = e.inward(F.reversed != 0) ? -1.0f : 1.0f; // (du x dv, outward or in: geom::ElementaryRecord)
     geom::sincos_f(F.uv_min[0], r.s0, r.c0);
     geom::sincos_f(F.uv_max[0], r.s1, r.c1);
     return true;

@@ -86,6 +86,42 @@ constexpr bool left_handed(const V& x, const V& y, const V& z) {
 }
 inline bool left_handed(const pack::Frame& f) { return left_handed(f.x, f.y, f.z); }
 
+// An elementary surface's record as one view (plane, cylinder, cone, sphere, torus): its frame
+// and radii, read in one place for every reader (the tessellation's closed forms, measuring,
+// the view's judging of faces).
+struct ElementaryRecord {
+    pack::SurfaceType type = pack::SurfaceType::Plane;
+    const pack::Frame* frame = nullptr;
+    float radius = 0;     // cylinder, sphere; cone: at v = 0; torus: the major radius (the tube's centre)
+    float minor = 0;      // torus: the tube's radius
+    float semi_angle = 0; // cone (rad)
+    // Whether a face on it (reversed or not) has its natural normal, du x dv, pointing into the
+    // material (a hole's wall, a left-handed frame): left_handed()'s rule.
+    bool inward(bool reversed) const { return reversed != left_handed(*frame); }
+};
+// Surface s's record as an ElementaryRecord; false (and `out` untouched) for any other type.
+inline bool elementary(const Pack& pack, const pack::Surface& s, ElementaryRecord& out) {
+    if (!is_elementary(s)) return false;
+    out.type = pack::SurfaceType(s.type);
+    out.frame = &frame_of(pack, s);
+    switch (out.type) {
+    case pack::SurfaceType::Cylinder: out.radius = params<pack::CylinderParams>(pack, s).radius; break;
+    case pack::SurfaceType::Sphere: out.radius = params<pack::SphereParams>(pack, s).radius; break;
+    case pack::SurfaceType::Cone: {
+        const pack::ConeParams& c = params<pack::ConeParams>(pack, s);
+        out.radius = c.ref_radius, out.semi_angle = c.semi_angle;
+        break;
+    }
+    case pack::SurfaceType::Torus: {
+        const pack::TorusParams& t = params<pack::TorusParams>(pack, s);
+        out.radius = t.major_radius, out.minor = t.minor_radius;
+        break;
+    }
+    default: break;
+    }
+    return true;
+}
+
 inline Vec3 vec3(const float (&a)[3]) { return {a[0], a[1], a[2]}; }
 inline Vec2 vec2(const float (&a)[2]) { return {a[0], a[1]}; }
 
