@@ -112,7 +112,7 @@ def run_one(board_name, elf, fpk, out, timeout):
         notes.append(bad.fields().get('why', bad.text()))
     elif code != 0:
         notes.append(exit_note(code))
-    model = (protocol.first(uart, 'model') or protocol.Record('model', [], '')).fields()
+    model = protocol.first_fields(uart, 'model')
     if model.get('boxed_parts'):
         notes.append(f'larger than the memory: {model["boxed_parts"]:,} parts ({model["boxed_faces"]:,} faces) left out, drawn as boxes')
     m = measure(uart, rep.get('regions', []))
@@ -239,7 +239,7 @@ def main():
                     row.update(got)
                     log = os.path.join(args.work, b, name, 'uart.log')
                     text = open(log, errors='replace').read() if os.path.exists(log) else ''
-                    stated = (protocol.first(text, 'model') or protocol.Record('model', [], '')).fields()
+                    stated = protocol.first_fields(text, 'model')
                     if stated:  # (the faces held, and those of the parts left out)
                         row['pack_faces'] = stated['faces'] + stated.get('boxed_faces', 0)
                 row['note'] = '; '.join(notes)

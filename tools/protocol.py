@@ -9,6 +9,7 @@ reader takes them through this module: no reader parses a line itself.
 
   for r in records(uart): ...            every record of a log, in order
   first(uart, 'tessellation')            the first record of a name, or None
+  first_fields(uart, 'model')            its fields, or {} when the log has none
   r.values()                             its words by RECORDS' layout (ints where they are)
   with_regions(uart, regions)            each record with the instruction-count region it opened
   read_session(path, board)              a scripted session's entries (tests/sessions/*.session)
@@ -155,6 +156,12 @@ def records(text, name=None):
 
 def first(text, name):
     return next(records(text, name), None)
+
+
+def first_fields(text, name):
+    """The first record of a name's fields (Record.fields()), or {} when the log has none."""
+    r = first(text, name)
+    return r.fields() if r else {}
 
 
 def tessellation(text, name='tessellation'):

@@ -68,8 +68,6 @@ const char* work_name(Work w) {
     return "work";
 }
 
-uint32_t um(float mm) { return uint32_t(mm * 1000 + 0.5f); }
-
 // A screenshot, on a board with a host to take it (its Capture; QEMU's). The first pass's
 // shots are taken from on_event, inside a step: with step regions on, the wait for the host
 // (as long as the host takes, not the module's work) is a region of its own, "shot", nested in
@@ -117,10 +115,6 @@ void on_event(void*, const Event& e) {
                   e.loaded.boxed_parts, e.loaded.boxed_faces);
         }
         break;
-    case Event::Kind::PassFailed:
-        record(con, e);
-        print(con, "viewer: the edges at tolerance {} um: {} ({})\n", um(e.pass.tolerance_mm), e.why, e.why.status);
-        break;
     case Event::Kind::FrameDone: {
         record(con, e);
         const auto& f = e.frame;
@@ -135,11 +129,9 @@ void on_event(void*, const Event& e) {
         record(con, e);
         if (e.pick.hit) session.measured = true; // its exact values once the event is handled (the panel is set after it)
         break;
-    case Event::Kind::ModelFailed:
-        record(con, e);
-        print(con, "viewer: model {} of the library: {} ({}); the others still open\n", e.model.index + 1, e.why, e.why.status);
-        break;
     case Event::Kind::Pass:
+    case Event::Kind::PassFailed:
+    case Event::Kind::ModelFailed:
     case Event::Kind::Sampled:
     case Event::Kind::Progress:
     case Event::Kind::FaceFailed:

@@ -131,7 +131,7 @@ bool Core::boxes_while_sampling() const {
 Core::Round Core::round() {
     Round r;
     r.frame = frame_wanted() && presenter_.can_draw();
-    r.mid_bands = presenter_.drawing() && config_.display.band_lines < config_.display.height;
+    r.mid_bands = mid_bands();
     r.framing = scene_.bounding() || framer_.busy() || glide_.framing();
     return r;
 }
@@ -140,12 +140,12 @@ Core::Round Core::round() {
 // (docs/viewer.md shows the table). Nothing but a frame's own bands runs between the bands of
 // one frame (they show one state of the model).
 const Core::Source Core::kSources[] = {
-    {"framing", &Core::framing_ready, &Core::run_framing},      // the view being framed: no frame until it sits
-    {"glide", &Core::glide_ready, &Core::run_glide},            // the last frame is out: the glide's next step
-    {"frame", &Core::frame_ready, &Core::run_frame},            // the screen is behind and a buffer is free
-    {"tessellation", &Core::tessellation_ready, &Core::run_tessellation}, // the scheduler's pass, sweep or refinement
-    {"decoding", &Core::decoding_ready, &Core::run_decoding},   // a block the view brings in, a piece at a time
-    {"start", &Core::start_ready, &Core::run_start},            // a block to bring in, or one to refine, begun
+    {&Core::framing_ready, &Core::run_framing},           // framing: the view being framed, no frame until it sits
+    {&Core::glide_ready, &Core::run_glide},               // glide: the last frame is out, the glide's next step
+    {&Core::frame_ready, &Core::run_frame},               // frame: the screen is behind and a buffer is free
+    {&Core::tessellation_ready, &Core::run_tessellation}, // tessellation: the scheduler's pass, sweep or refinement
+    {&Core::decoding_ready, &Core::run_decoding},         // decoding: a block the view brings in, a piece at a time
+    {&Core::start_ready, &Core::run_start},               // start: a block to bring in, or one to refine, begun
 };
 
 bool Core::framing_ready(const Round& r) const { return r.framing && !r.mid_bands; }
@@ -246,7 +246,7 @@ Activity Core::step(uint32_t budget_us) {
 // buffer. With nothing else left, a block the view wants at another level is begun now, so
 // that the next step has its work (a step without a clock is one piece of work).
 Activity Core::activity() {
-    const bool mid_bands = presenter_.drawing() && config_.display.band_lines < config_.display.height;
+    const bool mid_bands = this->mid_bands();
     if (!mid_bands && !frame_wanted() && !scheduler_.busy() && !swap_piece()) (void)refine_for_view();
     if ((frame_wanted() && presenter_.can_draw()) ||
         ((scheduler_.busy() || swap_.block != kNone || swap_pending() || scene_.bounding() || framer_.busy() || !glide_.idle()) &&

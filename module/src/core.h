@@ -117,8 +117,9 @@ private:
         bool framing = false;   // the bounds or the framing (of the view or of a glide's end) under way
     };
     Round round();
+    // The bands of a frame are under way: nothing else runs between them (they show one state).
+    bool mid_bands() const { return presenter_.drawing() && config_.display.band_lines < config_.display.height; }
     struct Source {
-        const char* name;
         bool (Core::*ready)(const Round&) const;
         bool (Core::*run)();
     };

@@ -43,17 +43,12 @@ bool FaceJudge::update() {
     return true;
 }
 
-bool FaceJudge::wants(void* self, uint32_t f) {
-    FaceJudge& j = *static_cast<FaceJudge*>(self);
-    const Scene& scene = j.scene_;
+bool FaceJudge::shows(uint32_t f) {
+    const Scene& scene = scene_;
     const FaceInfo& F = scene.face(f);
-    if (F.radius <= 0 || !(j.config_.screen_error_px > 0)) return true; // nothing to bound it by; or the view chooses no detail
-    j.update();
+    if (F.radius <= 0 || !(config_.screen_error_px > 0)) return true; // nothing to bound it by; or the view chooses no detail
+    update();
     const uint32_t part = scene.shell_of(f);
-    uint32_t& part_ = j.part_;
-    uint32_t& count_ = j.count_;
-    uint32_t* instances_ = j.instances_;
-    const SphereView& view_ = j.view_;
     const auto instances = scene.instances();
     if (part != part_) { // its instances (the first few; more are looked up each time)
         part_ = part, count_ = 0;
@@ -72,10 +67,10 @@ bool FaceJudge::wants(void* self, uint32_t f) {
     // fraction of the tests of which way a face looks (those, and their set-up, only for a face
     // that is large enough somewhere).
     float on_plane[3], normal[3];
-    const bool closed = !j.section_ && scene.part(part).closed;
+    const bool closed = !section_ && scene.part(part).closed;
     enum class Facing : uint8_t { Unknown, Plane, Round, Neither } facing = closed ? Facing::Unknown : Facing::Neither;
     RoundFace round;
-    const float sag = DetailScale::kBlockCoarsest * j.scheduler_.tolerance(); // (its mesh's chords: at most its block's tolerance inside it)
+    const float sag = DetailScale::kBlockCoarsest * scheduler_.tolerance(); // (its mesh's chords: at most its block's tolerance inside it)
     auto shown = [&](const pack::Instance& inst) {
         float w[3];
         place(inst.m, p, w);
@@ -99,5 +94,7 @@ bool FaceJudge::wants(void* self, uint32_t f) {
         if (inst.shell == part && shown(inst)) return true;
     return false;
 }
+
+bool FaceJudge::wants(void* self, uint32_t f) { return static_cast<FaceJudge*>(self)->shows(f); }
 
 } // namespace facet::module

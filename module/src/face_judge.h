@@ -33,6 +33,7 @@ public:
     const SphereView& view() const { return view_; }
 
 private:
+    bool shows(uint32_t f); // wants()'s judgement
     const Scene& scene_;
     const Camera& camera_;
     const Scheduler& scheduler_;

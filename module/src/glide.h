@@ -13,7 +13,6 @@ public:
     enum class Phase : uint8_t { None, Framing, Moving };
     static constexpr uint32_t kUs = 400000, kFrames = 10;
 
-    Phase phase() const { return phase_; }
     bool idle() const { return phase_ == Phase::None; }
     bool framing() const { return phase_ == Phase::Framing; }
     bool moving() const { return phase_ == Phase::Moving; }

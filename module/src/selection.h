@@ -16,8 +16,7 @@ public:
 
     uint32_t count() const { return count_; }
     const Face& operator[](uint32_t i) const { return faces_[i]; }
-    // The face picked first, if any (kNone: none).
-    uint32_t first_instance() const { return count_ > 0 ? faces_[0].instance : kNone; }
+    // Face i's, or kNone past the selection.
     uint32_t face(uint32_t i) const { return i < count_ ? faces_[i].face : kNone; }
     uint32_t instance(uint32_t i) const { return i < count_ ? faces_[i].instance : kNone; }
 
@@ -34,6 +33,13 @@ public:
     // Measuring starts from the face picked, if any.
     void keep_first() {
         if (count_ > 1) count_ = 1;
+    }
+    // Whether `test` holds for a face of the selection.
+    template <typename Test>
+    bool any(Test test) const {
+        for (uint32_t i = 0; i < count_; ++i)
+            if (test(faces_[i])) return true;
+        return false;
     }
     // The faces `gone` says are gone (hidden, or their block left out) leave the selection,
     // the others keep their order. True when some went.

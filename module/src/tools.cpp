@@ -107,7 +107,7 @@ void Core::highlight_changed() {
 
 void Core::focus() {
     painter_.set_part(chosen_part_);
-    painter_.set_focus(chosen_part_ != kNone ? chosen_part_ : selection_.first_instance());
+    painter_.set_focus(chosen_part_ != kNone ? chosen_part_ : selection_.instance(0));
 }
 
 Result Core::show(uint32_t part, bool shown) {
@@ -119,7 +119,7 @@ Result Core::show(uint32_t part, bool shown) {
     }
     scene_.set_shown(part, shown);
     if (!shown) { // what is hidden is not picked
-        if (selection_.forget([&](const Picked& p) { return p.instance == part; })) selection_.clear(); // (the whole selection goes)
+        if (selection_.any([&](const Picked& p) { return p.instance == part; })) selection_.clear(); // (the whole selection goes)
         highlight();
         show_measurement();
     }

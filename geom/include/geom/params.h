@@ -90,7 +90,6 @@ inline bool left_handed(const pack::Frame& f) { return left_handed(f.x, f.y, f.z
 // and radii, read in one place for every reader (the tessellation's closed forms, measuring,
 // the view's judging of faces).
 struct ElementaryRecord {
-    pack::SurfaceType type = pack::SurfaceType::Plane;
     const pack::Frame* frame = nullptr;
     float radius = 0;     // cylinder, sphere; cone: at v = 0; torus: the major radius (the tube's centre)
     float minor = 0;      // torus: the tube's radius
@@ -102,9 +101,8 @@ struct ElementaryRecord {
 // Surface s's record as an ElementaryRecord; false (and `out` untouched) for any other type.
 inline bool elementary(const Pack& pack, const pack::Surface& s, ElementaryRecord& out) {
     if (!is_elementary(s)) return false;
-    out.type = pack::SurfaceType(s.type);
     out.frame = &frame_of(pack, s);
-    switch (out.type) {
+    switch (pack::SurfaceType(s.type)) {
     case pack::SurfaceType::Cylinder: out.radius = params<pack::CylinderParams>(pack, s).radius; break;
     case pack::SurfaceType::Sphere: out.radius = params<pack::SphereParams>(pack, s).radius; break;
     case pack::SurfaceType::Cone: {
