@@ -42,7 +42,7 @@ void Presenter::reset() {
 void Presenter::invalidate() { ++version_, ++faces_version_; }
 
 bool Presenter::wanted(uint32_t finished, uint32_t total) const {
-    if (job_.active) return true;
+    if (job_.active()) return true;
     if (shown_version_ != version_) return true;
     if (finished == shown_finished_) return false;
     // Progress is shown every 1/kProgressFrames of the faces (and at the last one): filling in
@@ -74,16 +74,16 @@ bool Presenter::buffer_free(uint8_t b) const { return !buf_[b].busy; }
 
 bool Presenter::can_draw() {
     take_done();
-    if (!job_.active) return buffer_free(buffers_ == 2 ? uint8_t(next_ & 1) : 0);
-    if (job_.stage == Job::Stage::Begin) return buffer_free(job_.buffer);
-    if (job_.stage == Job::Stage::Flush) return pending_ < 0;
+    if (!job_.active()) return buffer_free(buffers_ == 2 ? uint8_t(next_ & 1) : 0);
+    if (job_.stage == Stage::Begin) return buffer_free(job_.buffer);
+    if (job_.stage == Stage::Flush) return pending_ < 0;
     return true;
 }
 
 void Presenter::start(uint32_t finished) {
     const uint8_t b = buffers_ == 2 ? uint8_t(next_ & 1) : 0;
     job_ = {};
-    job_.active = true;
+    job_.stage = Stage::Begin;
     job_.buffer = b;
     job_.boxes = boxes_;
     job_.dragging = dragging_;
@@ -99,7 +99,7 @@ void Presenter::start(uint32_t finished) {
 }
 
 void Presenter::set_target() {
-    if (job_.into_layer) raster_.set_target({layer_.pixels, layer_.depth, display_.width, display_.height, 0, display_.height});
+    if (into_layer(job_.stage)) raster_.set_target({layer_.pixels, layer_.depth, display_.width, display_.height, 0, display_.height});
     else set_band();
 }
 
@@ -155,7 +155,7 @@ void Presenter::judge_part(uint32_t part, const Transform& t) {
 
 bool Presenter::full_pieces(uint32_t units) {
     const auto instances = scene_.instances();
-    const bool faces = job_.stage == Job::Stage::Faces;
+    const bool faces = job_.stage != Stage::Edges;
     uint32_t spent = 0;
     while (job_.instance < instances.size()) {
         if (!scene_.shown(job_.instance)) { // a hidden part
@@ -245,7 +245,7 @@ bool Presenter::update_pieces(uint32_t units) {
             spent += used + 1;
             if (job_.tri < scene_.face(f).triangle_count) return false;
             job_.tri = 0;
-            if (!job_.layer_update) spent += painter_.face_edges(f, job_.transform, rows, false);
+            if (job_.stage == Stage::BufferNew) spent += painter_.face_edges(f, job_.transform, rows, false);
         }
         if (job_.face < job_.applied_to) return false;
         ++job_.instance;
@@ -270,13 +270,13 @@ void Presenter::flush(uint32_t pass) {
     display_.flush(*viewer_, display_.user, Area{display_.x, uint16_t(display_.y + t.y0), t.width, t.rows}, t.pixels); // may call flush_done()
     if (!last) {
         ++job_.band;
-        job_.stage = Job::Stage::Begin;
+        job_.stage = Stage::Begin;
         job_.buffer = buffers_ == 2 ? uint8_t(next_ & 1) : 0;
         return;
     }
     shown_version_ = job_.version;
     shown_finished_ = job_.finished;
-    job_.active = false;
+    job_.stage = Stage::Idle;
     Event e{};
     e.kind = Event::Kind::FrameDone;
     const render::RasterStats& s = raster_.stats;
@@ -294,8 +294,8 @@ void Presenter::flush(uint32_t pass) {
 }
 
 Work Presenter::work() const {
-    if (job_.active && job_.version == version_) {
-        if (job_.stage == Job::Stage::Overlay) return Work::Overlay;
+    if (job_.active() && job_.version == version_) {
+        if (job_.stage == Stage::Overlay) return Work::Overlay;
         return job_.full ? Work::Frame : Work::Update;
     }
     const uint8_t b = buffers_ == 2 ? uint8_t(next_ & 1) : 0;
@@ -304,87 +304,40 @@ Work Presenter::work() const {
 
 void Presenter::run(uint32_t units, uint32_t pass) {
     piece_start_ = clock_();
-    if (!job_.active || job_.version != version_) job_.pieces = 0; // (a new frame: start() resets it)
+    if (!job_.active() || job_.version != version_) job_.pieces = 0; // (a new frame: start() resets it)
     ++job_.pieces;
     run_piece(units, pass);
-    if (job_.active) job_.cost_us += clock_() - piece_start_;
+    if (job_.active()) job_.cost_us += clock_() - piece_start_;
 }
 
 void Presenter::run_piece(uint32_t units, uint32_t pass) {
     take_done();
-    if (job_.active && job_.version != version_) job_.active = false; // outdated: start over
-    if (!job_.active) start(scene_.totals().finished());
-    if (job_.stage == Job::Stage::Begin) {
+    if (job_.active() && job_.version != version_) job_.stage = Stage::Idle; // outdated: start over
+    if (!job_.active()) start(scene_.totals().finished());
+    if (job_.stage == Stage::Begin) {
         if (!buffer_free(job_.buffer)) return;
-        set_band();
-        job_.stage = Job::Stage::Faces;
-        job_.into_layer = job_.layer_update = false;
-        if (job_.full && layer_holds(job_.applied_to)) { // the faces kept for the view: its copy, then the edges alone
-            job_.copy = true;
-            job_.stage = Job::Stage::Edges;
-        } else if (job_.full && layer_.pixels && !job_.dragging) {
-            // (A frame while the view moves is drawn lighter, into the buffer: the layer keeps
-            // full detail, and the frame once the view rests draws it anew.)
-            job_.into_layer = true;
-            // The faces it lacks (drawn in a pass since), or all of them.
-            job_.layer_update = layer_.version == job_.faces_version;
-            set_target();
-            if (!job_.layer_update) painter_.background(), raster_.clear_depth();
-        } else if (job_.full) {
-            painter_.background();
-            raster_.clear_depth();
-        } else {
-            catch_up();
-            // The faces the layer lacks first (at full detail: it serves the frames when a drag
-            // ends), then the buffer's: the layer stays the view's faces through a pass.
-            job_.into_layer = job_.layer_update = layer_.pixels && layer_.version == job_.faces_version && layer_.applied < job_.applied_to;
-        }
-        job_.instance = 0;
-        job_.face = job_.layer_update ? layer_.applied : job_.full ? 0 : buf_[job_.buffer].applied;
-        job_.face_start = job_.face;
-        job_.tri = 0;
-        job_.have_transform = false, job_.begun = false;
-        // Clearing a band costs about an instruction a pixel (colour and depth): a whole
-        // 640x480 frame is 0.4 M on the ARM926, a piece of its own (a piece stays near 1 M).
-        const uint32_t spent = 1 + uint32_t(raster_.target().rows) * display_.width / 1024;
-        if (spent * 2 >= units) return;
-        units -= spent;
+        if (!begin_stage(units)) return; // (the clearing was the piece)
     }
     // (One frame, one look: its bands and pieces alike. Faces drawn into the layer are drawn at
     // full detail, the layer serving the frames once a drag ends, and in their own colours.)
-    painter_.set_dragging(job_.dragging && !job_.into_layer);
-    painter_.set_plain(job_.into_layer);
-    if (job_.copy) { // the view's faces, kept, into the draw buffer
+    painter_.set_dragging(job_.dragging && !into_layer(job_.stage));
+    painter_.set_plain(into_layer(job_.stage));
+    switch (job_.stage) {
+    case Stage::CopyLayer: // the view's faces, kept, into the draw buffer
         set_band();
         copy_layer();
-        job_.copy = false;
+        job_.restart(Stage::Edges, 0);
         return;
-    }
-    if (job_.stage == Job::Stage::Faces || job_.stage == Job::Stage::Edges) {
-        set_target(); // (the faces layer, or the band)
-        const bool done = job_.full && !job_.layer_update ? full_pieces(units) : update_pieces(units);
-        if (job_.into_layer) set_band(); // (between pieces the target is the draw buffer's)
-        if (!done) return;
-        if (job_.into_layer) layer_.version = job_.faces_version, layer_.applied = job_.applied_to; // (the view's faces)
-        if (!job_.full && job_.layer_update) { // the layer's faces are in: now the buffer's, with their edges
-            job_.into_layer = job_.layer_update = false;
-            job_.face = job_.face_start = buf_[job_.buffer].applied;
-            job_.instance = 0, job_.tri = 0, job_.have_transform = false;
-            return;
-        }
-        if (job_.full && job_.stage == Job::Stage::Faces) {
-            // Into the draw buffer (a piece of its own: about 0.2 M instructions at 640x480 on
-            // the ARM926), the edges over them from the next piece on.
-            job_.copy = job_.into_layer;
-            job_.stage = Job::Stage::Edges;
-            job_.into_layer = job_.layer_update = false;
-            job_.instance = 0, job_.face = 0, job_.tri = 0, job_.have_transform = false, job_.begun = false;
-            return;
-        }
-        job_.stage = Job::Stage::Overlay;
-        return; // the overlay is a piece of its own (Work::Overlay: its cost is measured apart)
-    }
-    if (job_.stage == Job::Stage::Overlay) {
+    case Stage::LayerAll:
+    case Stage::LayerNew:
+    case Stage::BufferAll:
+    case Stage::Edges:
+    case Stage::BufferNew:
+        if (!draw_stage(units)) return;
+        if (into_layer(job_.stage)) layer_.version = job_.faces_version, layer_.applied = job_.applied_to; // (the view's faces)
+        job_.restart(after(job_.stage), job_.stage == Stage::LayerNew && !job_.full ? buf_[job_.buffer].applied : 0);
+        return; // (the next stage in a piece of its own: a copy, or the overlay, is measured apart)
+    case Stage::Overlay: {
         StatusInfo s;
         s.name = scene_.model_name();
         // (A sweep's faces count again as they come in: the bar never shows more than all.)
@@ -393,11 +346,64 @@ void Presenter::run_piece(uint32_t units, uint32_t pass) {
         s.frame_us = last_frame_us_, s.tolerance_mm = tolerance_mm_, s.mode = painter_.mode(), s.ortho = camera_.view().ortho;
         s.tangent_edges = painter_.tangent_edges();
         overlay_.draw(raster_.target(), s);
-        job_.stage = Job::Stage::Flush;
+        job_.stage = Stage::Flush;
+        [[fallthrough]];
     }
-    take_done();
-    if (pending_ >= 0) return; // the previous flush is still in flight
-    flush(pass);
+    case Stage::Flush:
+        take_done();
+        if (pending_ >= 0) return; // the previous flush is still in flight
+        flush(pass);
+        return;
+    case Stage::Idle:
+    case Stage::Begin: return;
+    }
+}
+
+bool Presenter::begin_stage(uint32_t& units) {
+    set_band();
+    Stage first;
+    if (job_.full && layer_holds(job_.applied_to)) {
+        first = Stage::CopyLayer; // the faces kept for the view: its copy, then the edges alone
+    } else if (job_.full && layer_.pixels && !job_.dragging) {
+        // (A frame while the view moves is drawn lighter, into the buffer: the layer keeps full
+        // detail, and the frame once the view rests draws it anew.) The faces it lacks (drawn
+        // in a pass since), or all of them.
+        first = layer_.version == job_.faces_version ? Stage::LayerNew : Stage::LayerAll;
+    } else if (job_.full) {
+        first = Stage::BufferAll;
+    } else {
+        catch_up();
+        // The faces the layer lacks first (at full detail: it serves the frames when a drag
+        // ends), then the buffer's: the layer stays the view's faces through a pass.
+        first = layer_.pixels && layer_.version == job_.faces_version && layer_.applied < job_.applied_to ? Stage::LayerNew
+                                                                                                          : Stage::BufferNew;
+    }
+    job_.restart(first, first == Stage::LayerNew ? layer_.applied : job_.full ? 0 : buf_[job_.buffer].applied);
+    set_target();
+    if (first == Stage::LayerAll || first == Stage::BufferAll) painter_.background(), raster_.clear_depth();
+    // Clearing a band costs about an instruction a pixel (colour and depth): a whole 640x480
+    // frame is 0.4 M on the ARM926, a piece of its own (a piece stays near 1 M).
+    const uint32_t spent = 1 + uint32_t(raster_.target().rows) * display_.width / 1024;
+    if (spent * 2 >= units) return false;
+    units -= spent;
+    return true;
+}
+
+bool Presenter::draw_stage(uint32_t units) {
+    set_target(); // (the faces layer, or the band)
+    const bool whole = job_.stage == Stage::LayerAll || job_.stage == Stage::BufferAll || job_.stage == Stage::Edges;
+    const bool done = whole ? full_pieces(units) : update_pieces(units);
+    if (into_layer(job_.stage)) set_band(); // (between pieces the target is the draw buffer's)
+    return done;
+}
+
+Presenter::Stage Presenter::after(Stage done) const {
+    switch (done) {
+    case Stage::LayerAll: return Stage::CopyLayer;
+    case Stage::LayerNew: return job_.full ? Stage::CopyLayer : Stage::BufferNew;
+    case Stage::BufferAll: return Stage::Edges;
+    default: return Stage::Overlay; // (Edges, BufferNew)
+    }
 }
 
 } // namespace facet::module

@@ -76,7 +76,7 @@ public:
     void set_dragging(bool on) { dragging_ = on; }
     // The kind of the piece run() would do next.
     Work work() const;
-    bool drawing() const { return job_.active; }
+    bool drawing() const { return job_.active(); }
 
     // Any context (a DMA interrupt, another thread): one store. At most one flush is in flight
     // (a frame's flush begins once the last is done), so calls for it are one event however
@@ -96,20 +96,38 @@ public:
 private:
     Viewer* viewer_ = nullptr; // (configure())
     void run_piece(uint32_t units, uint32_t pass); // run()'s piece, timed by run()
+    // A frame's stages, one after another (each a piece or more of work), by the kind of frame:
+    //   whole, into the draw buffer:   Begin, BufferAll, Edges, Overlay, Flush
+    //   whole, the faces layer kept:   Begin, CopyLayer, Edges, Overlay, Flush
+    //   whole, through the layer:      Begin, LayerAll (or LayerNew: the faces it lacks), CopyLayer, Edges, Overlay, Flush
+    //   an update (the faces since):   Begin, [LayerNew: the faces the layer lacks], BufferNew, Overlay, Flush
+    // Flush ends the frame (Idle) or, with partial rendering, begins its next band (Begin).
+    enum class Stage : uint8_t {
+        Idle,      // no frame under way
+        Begin,     // waiting for the buffer; then the band cleared and the frame's way chosen
+        LayerAll,  // every instance's faces, into the faces layer (cleared)
+        LayerNew,  // the faces the layer lacks, into it (no edges)
+        BufferAll, // every instance's faces, into the band of the draw buffer (cleared)
+        CopyLayer, // the faces layer into the draw buffer (a piece of its own)
+        Edges,     // every instance's edges, specks and boxes over the faces
+        BufferNew, // the faces the buffer lacks, with their edges
+        Overlay,   // the status bar and the tools (a piece of its own: Work::Overlay)
+        Flush,     // handed to the display once the previous flush is done
+    };
+    // Whether a stage draws into the faces layer (full detail, plain colours).
+    static constexpr bool into_layer(Stage s) { return s == Stage::LayerAll || s == Stage::LayerNew; }
     struct Job {
-        bool active = false, full = false, boxes = false, dragging = false;
+        Stage stage = Stage::Idle;
+        bool full = false;            // a whole frame (not an update)
+        bool boxes = false, dragging = false; // set_boxes(), set_dragging() as the frame began
         uint8_t buffer = 0;
-        uint16_t band = 0;            // full frames: the band being drawn
-        // Whole frames: Faces (every instance's faces), then Edges (every instance's edges,
-        // specks and boxes); an update: Faces (the faces since, with their edges).
-        enum class Stage : uint8_t { Begin, Faces, Edges, Overlay, Flush } stage = Stage::Begin;
-        bool into_layer = false;      // the Faces stage draws into the faces layer
-        bool layer_update = false;    // and only the faces the layer lacks (done_order from face_start)
-        bool copy = false;            // the faces layer to copy into the draw buffer (a piece of its own)
-        bool begun = false;           // the Edges stage: the instance's edges reset (and, from a layer, its highlights drawn)
-        uint32_t face_start = 0;      // an update's (or a layer update's) first done_order index
-        uint32_t instance = 0, face = 0; // cursor: the instance, and the face within its shell (or done_order index)
-        uint32_t tri = 0;             // and the next triangle of that face
+        uint16_t band = 0;            // partial rendering: the band being drawn
+        uint32_t face_start = 0;      // the New stages: the first done_order index
+        // Cursor: the instance, the face within its shell (or done_order index), the next
+        // triangle of that face; the Edges stage: the instance's edges reset (and, from a layer,
+        // its highlights drawn).
+        uint32_t instance = 0, face = 0, tri = 0;
+        bool begun = false;
         bool have_transform = false;
         Transform transform{};
         Transform::Sight sight = Transform::Sight::Across; // where the instance's part lies
@@ -118,7 +136,17 @@ private:
         uint32_t cost_us = 0;
         uint32_t pieces = 0;          // pieces of work this frame took so far
         render::RasterStats stats;
+        bool active() const { return stage != Stage::Idle; }
+        // The next stage's cursor: from the first instance, at done_order index `face`.
+        void restart(Stage next, uint32_t from_face) {
+            stage = next, instance = 0, face = face_start = from_face, tri = 0, have_transform = false, begun = false;
+        }
     };
+    // Begin: the band made the target (cleared for a whole frame drawn anew) and the first
+    // drawing stage chosen; false when that was the piece (`units` less what it cost).
+    bool begin_stage(uint32_t& units);
+    bool draw_stage(uint32_t units);   // a drawing stage's piece; true when the stage is done
+    Stage after(Stage done) const;     // the stage that follows a drawing stage done
     void start(uint32_t finished);
     void set_band();
     // Whether buffer b's next frame is an update (the faces since it was drawn), not a whole
