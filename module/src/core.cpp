@@ -56,8 +56,7 @@ void Core::work(Event::Kind kind, Work what, uint32_t item) {
 void Core::unload() {
     scheduler_.stop();
     framer_.stop();
-    swap_.block = kNone, swap_check_ = false;
-    unpacked_ = {};
+    swapper_.open({});
     glide_.stop();
     presenter_.reset();
     scene_.close();
@@ -94,13 +93,12 @@ Result Core::load(const void* file, uint32_t file_bytes, void* memory, uint32_t 
     if (decoding) work(Event::Kind::WorkEnd, Work::Unpack, 0);
     if (!decoded.ok()) return decoded;
     if (Result r = module::open_unpacked(unpacked, scene_); !r.ok()) return r;
-    unpacked_ = unpacked;
+    swapper_.open(unpacked);
     if (Result r = plan(scene_.face_count(), scene_.edge_count(), scene_.edge_count() - scene_.left_out().edges, model_end); !r.ok()) return r;
     pack_file_bytes_ = file_size;
     pack_bytes_ = unpacked.bytes;
     const uint32_t bytes = pack_bytes_;
-    default_tolerance_ = geom::default_tolerance(scene_.box_min(), scene_.box_max());
-    judge_.reset(); // judged afresh
+    detail_.reset(geom::default_tolerance(scene_.box_min(), scene_.box_max())); // (judged afresh)
     camera_.fit();
     user_moved_ = false;
     Event e{};
@@ -109,7 +107,7 @@ Result Core::load(const void* file, uint32_t file_bytes, void* memory, uint32_t 
                 uint32_t(scene_.instances().size()), bytes,
                 pack_file_bytes_, scene_.left_out().parts, scene_.left_out().faces};
     emit(e);
-    scheduler_.begin_pass(default_tolerance_);
+    scheduler_.begin_pass(detail_.default_tolerance());
     return {};
 }
 
@@ -152,7 +150,7 @@ bool Core::framing_ready(const Round& r) const { return r.framing && !r.mid_band
 bool Core::glide_ready(const Round& r) const { return glide_.moving() && !frame_wanted() && !r.mid_bands; }
 bool Core::frame_ready(const Round& r) const { return r.frame; }
 bool Core::tessellation_ready(const Round& r) const { return scheduler_.busy() && !r.mid_bands; }
-bool Core::decoding_ready(const Round& r) const { return swap_.block != kNone && !r.mid_bands; }
+bool Core::decoding_ready(const Round& r) const { return swapper_.decoding() != kNone && !r.mid_bands; }
 bool Core::start_ready(const Round& r) const { return !r.mid_bands; }
 
 bool Core::run_framing() {
@@ -204,13 +202,44 @@ bool Core::run_tessellation() {
 }
 
 bool Core::run_decoding() {
-    work(Event::Kind::WorkBegin, Work::Unpack, swap_.block);
-    swap_step();
-    work(Event::Kind::WorkEnd, Work::Unpack, swap_.block);
+    const uint32_t block = swapper_.decoding();
+    work(Event::Kind::WorkBegin, Work::Unpack, block);
+    swapper_.step();
+    work(Event::Kind::WorkEnd, Work::Unpack, block);
     return true;
 }
 
 bool Core::run_start() { return swap_piece() || refine_for_view(); } // false: nothing to begin
+
+// The choice and the room made (blocks left out, the pack memory compacted) as a piece of
+// unpacking work, when there is a choice to make.
+bool Core::swap_piece() {
+    if (!swap_pending() || swapper_.decoding() != kNone) return false;
+    work(Event::Kind::WorkBegin, Work::Unpack, 0);
+    const bool begun = settled() && swapper_.begin();
+    work(Event::Kind::WorkEnd, Work::Unpack, 0);
+    return begun;
+}
+
+bool Core::refine_for_view() { return !controls_.dragging() && settled() && detail_.refine(swapper_); }
+
+void Core::blocks_left_out(void* self) { static_cast<Core*>(self)->forget_left_out_picks(); }
+
+// A face picked in a block left out is no longer there to describe or highlight: the
+// selection and the measurement go (as after a tap on nothing).
+void Core::forget_left_out_picks() {
+    if (!selection_.forget([&](const Picked& p) { return scene_.block_of_face(p.face).left_out; })) return;
+    highlight();
+    show_measurement();
+}
+
+// The level of detail as a factor of the default tolerance (the screen error scales with it).
+float Core::detail() const { return detail_.factor(); }
+
+Result Core::set_detail(float factor) {
+    if (!scene_.loaded()) return Result::fail(Status::NotFound, "no model is loaded");
+    return detail_.set_factor(factor);
+}
 
 Activity Core::step(uint32_t budget_us) {
     if (const uint32_t m = models_.take_asked(); m != kNone) { // a model the chooser asked for (a failure is its event)
@@ -221,7 +250,7 @@ Activity Core::step(uint32_t budget_us) {
     const uint32_t t0 = now();
     for (;;) {
         // Faces left to their edges are judged again when the view has moved (not while it is being framed).
-        if (!scene_.bounding() && !framer_.busy() && glide_.idle()) detail_view_changed();
+        if (settled() && detail_.view_changed()) swapper_.view_changed();
         const Round r = round();
         bool ran = false;
         for (const Source& s : kSources) {
@@ -249,7 +278,7 @@ Activity Core::activity() {
     const bool mid_bands = this->mid_bands();
     if (!mid_bands && !frame_wanted() && !scheduler_.busy() && !swap_piece()) (void)refine_for_view();
     if ((frame_wanted() && presenter_.can_draw()) ||
-        ((scheduler_.busy() || swap_.block != kNone || swap_pending() || scene_.bounding() || framer_.busy() || !glide_.idle()) &&
+        ((scheduler_.busy() || swapper_.decoding() != kNone || swap_pending() || scene_.bounding() || framer_.busy() || !glide_.idle()) &&
          !mid_bands)) {
         return Activity::Busy;
     }

@@ -2,6 +2,7 @@
 // The viewer behind facet::Viewer: its parts, in the workspace, and the loop of step().
 #include "camera.h"
 #include "controls.h"
+#include "detail.h"
 #include "face_judge.h"
 #include "fit.h"
 #include "glide.h"
@@ -15,6 +16,7 @@
 #include "scene.h"
 #include "scheduler.h"
 #include "selection.h"
+#include "swap.h"
 #include "workspace.h"
 
 namespace facet {
@@ -169,50 +171,19 @@ private:
     // A blocked pack larger than the memory: the blocks it keeps (the largest), so that their
     // decoded packs and arrays fit with room to tessellate; the default (all) when all fit.
     module::BlockCut cut_blocks(const void* file, uint32_t file_bytes, uint32_t file_size, void* memory, uint32_t memory_bytes) const;
-    float default_tolerance_ = 0;
-    // Each block's tolerance in a pass: Config::screen_error_px at its nearest point (detail.cpp).
-    static float block_tolerance(void* self, uint32_t block, float pass_tolerance);
-    // The blocks a pass or a sweep takes, largest on the screen first (detail.cpp).
-    static uint32_t block_order(void* self);
-    uint32_t sort_blocks(uint32_t& head, uint32_t count);
-    // The tolerance the view asks of block b (mm): between the finer of pass_tolerance / finest
-    // and the block's own share of it (its size over the model's) and DetailScale::kBlockCoarsest times it;
-    // on_screen (if given): whether its box shows.
-    float wanted_tolerance(uint32_t b, float pass_tolerance, float finest, bool* on_screen);
-    bool refine_for_view(); // true when it started (or tried) a refinement (detail.cpp)
-    bool refine_check_ = false;
-    // Blocks of a model larger than the memory brought in as the view nears them (swap.cpp).
-    static constexpr float kSwapPixels = 32.0f;     // a left-out block this large on the screen comes in
-    static constexpr uint32_t kSwapBytes = 16384;   // decoded a piece at a time
-    bool swap_for_view();                           // true when it began one
-    bool swap_piece();                              // swap_for_view() as a piece of work (Work::Unpack)
-    bool swap_in(uint32_t b);                       // block b (left out; Block::pixels set): true when begun
-    bool swap_pending() const {                     // blocks still to look at, nothing else under way
-        return swap_check_ && scene_.blocked() && scene_.left_out().blocks > 0 && unpacked_.memory && !controls_.dragging();
-    }
-    void swap_step();                               // a piece of the block's decoding
-    void swap_finish(const geom::PackDecoder* decoder);
-    bool swap_failed(uint32_t b, const Result& why);
-    bool block_sphere(uint32_t b, float centre[3], float& radius) const; // around its box (mm); false: empty
-    float block_pixels(uint32_t b);                 // its box's sphere across on the screen
-    uint32_t block_samples(uint32_t b) const;       // the samples its edges hold
-    static constexpr float kBackPixels = 5.0f;      // one this large comes back where there is room (as tiny parts are boxes)
-    // Room for a refinement of block `keep`: every held block off the screen left out (a model
-    // read block by block, whose blocks can come back). True when some were.
-    bool leave_out_unseen(uint32_t keep);
+    // The blocks' levels (detail.h) and the blocks brought in as the view nears them (swap.h).
+    module::FaceJudge judge_; // which faces the view wants (face_judge.h)
+    module::Detail detail_;
+    module::Swapper swapper_;
+    // Nothing moves the view on its own: no bounds or framing under way, no glide.
+    bool settled() const { return !scene_.bounding() && !framer_.busy() && glide_.idle(); }
+    bool swap_pending() const { return swapper_.pending() && !controls_.dragging(); } // blocks to look at, no drag
+    bool swap_piece();     // a block brought in begun, as a piece of work (Work::Unpack): true when begun
+    bool refine_for_view(); // a block's level begun again for the view: true when begun (or tried)
+    static void blocks_left_out(void* self); // (Swapper::LeftOut) the picks in them go
     void forget_left_out_picks();
-    bool swap_check_ = false;
-    struct Swap {
-        uint32_t block = kNone; // being decoded
-        bool decoded = false;      // (opened and begun in the next piece)
-        geom::PackDecoder decoder;
-    } swap_;
-    module::Unpacked unpacked_; // a blocked pack's blocks and pack memory
     module::Models models_; // a library's models (models.h)
     uint32_t seen_moves_ = 0, seen_refined_ = 0; // the scene's moves and refinements the frames know of
-    void detail_view_changed(); // when the view moved since the faces were last judged: judged again
-    bool judge_with_view();     // the spheres' view from the camera's, if it moved (true then)
-    module::FaceJudge judge_; // which faces the view wants (face_judge.h)
     uint32_t pack_bytes_ = 0, pack_file_bytes_ = 0;
     bool carved_ = false;
     bool user_moved_ = false; // the view was moved since load (no framing again when the faces are in)

@@ -7,34 +7,35 @@
 // (the scheduler's sweep), so zooming in brings in what grew and turning what came round. Each
 // block's level follows the view too: set as a pass reaches it, and refined or coarsened when
 // the view has moved far enough (refine_for_view).
-#include "core.h"
+#include "detail.h"
+#include "swap.h"
 #include "geom/fmath.h"
 #include "geom/params.h"
 
 #include <algorithm>
 #include <cmath>
 
-namespace facet {
+namespace facet::module {
 
-using Scale = module::DetailScale; // (detail_scale.h)
+using Scale = DetailScale; // (detail_scale.h)
 // A block's tolerance: the pass's (the default, or the bias the user chose) scaled by how far
 // the block lies: Config::screen_error_px (half a pixel) at its nearest point in the view the
 // pass starts from (before the first pass is framed: the whole model's sphere fitted), never
 // finer than the pass's and at most Scale::kBlockCoarsest times it. A part near the eye gets the pass's
 // own; a far one coarser.
-float Core::block_tolerance(void* self, uint32_t b, float pass_tolerance) {
-    return static_cast<Core*>(self)->wanted_tolerance(b, pass_tolerance, 1, nullptr);
+float Detail::block_tolerance(void* self, uint32_t b, float pass_tolerance) {
+    return static_cast<Detail*>(self)->wanted_tolerance(b, pass_tolerance, 1, nullptr);
 }
 
-float Core::wanted_tolerance(uint32_t b, float pass_tolerance, float finest, bool* on_screen) {
+float Detail::wanted_tolerance(uint32_t b, float pass_tolerance, float finest, bool* on_screen) {
     if (on_screen) *on_screen = true;
-    if (default_tolerance_ <= 0 || !(config_.screen_error_px > 0)) return pass_tolerance;
+    if (default_tolerance_ <= 0 || !(screen_error_px_ > 0)) return pass_tolerance;
     float centre[3], r;
     if (!block_sphere(b, centre, r)) return pass_tolerance;
-    (void)judge_with_view();
+    (void)judge_.update();
     if (on_screen) *on_screen = judge_.view().pixels(centre, r) > 0;
     const float bias = pass_tolerance / default_tolerance_;
-    float t = bias * config_.screen_error_px * judge_.view().mm_per_pixel(centre, r);
+    float t = bias * screen_error_px_ * judge_.view().mm_per_pixel(centre, r);
     // Never finer than the block would take as a model of its own (its share of the model's
     // size: a part of a large assembly zoomed into gets its own detail, a one-block model
     // keeps the pass's), nor than `finest` times the pass's.
@@ -51,15 +52,13 @@ float Core::wanted_tolerance(uint32_t b, float pass_tolerance, float finest, boo
 // for a part of a large model zoomed into (wanted_tolerance). One at a time, largest gap first;
 // none while a finger drags the view. Once at the view's level, a block moves again only when
 // the view has moved by that factor.
-bool Core::refine_for_view() {
-    if (!refine_check_ || scheduler_.busy() || controls_.dragging() || scene_.bounding() || framer_.busy() || !glide_.idle()) {
-        return false;
-    }
+bool Detail::refine(Swapper& room) {
+    if (!check_ || scheduler_.busy()) return false;
     for (;;) { // (a block refused, for want of room, is passed over the next time round)
         uint32_t best = kNone;
         float best_gap = 1, best_tolerance = 0;
         for (uint32_t b = 0; b < scene_.block_count(); ++b) {
-            const module::Block& block = scene_.block(b);
+            const Block& block = scene_.block(b);
             if (!(block.tolerance > 0) || block.refused) continue;
             bool on_screen = true;
             const float want = wanted_tolerance(b, scheduler_.tolerance(), Scale::kRefineFinest, &on_screen);
@@ -68,14 +67,14 @@ bool Core::refine_for_view() {
             if (gap > best_gap) best = b, best_gap = gap, best_tolerance = want;
         }
         if (best == kNone) {
-            refine_check_ = false;
+            check_ = false;
             return false;
         }
         if (scheduler_.begin_refine(best, best_tolerance)) return true;
         // No room: blocks off the screen make it, where they can come back (swap.cpp); short
         // of it still, a finer level part of the way (Scale::kStep at a time from the wanted).
         const float now = scene_.block(best).tolerance;
-        const bool left = leave_out_unseen(best);
+        const bool left = room.leave_out_unseen(best);
         for (float t = best_tolerance * (left ? 1 : Scale::kStep); t < now / Scale::kStep * 1.001f; t *= Scale::kStep) {
             scene_.block(best).refused = false;
             if (scheduler_.begin_refine(best, t)) return true;
@@ -87,12 +86,12 @@ bool Core::refine_for_view() {
 // Work in screen order: a pass or a sweep takes the blocks largest on the screen first (their
 // boxes' spheres; off the screen last), so what the view shows large is shaded first. A merge
 // sort of the chain (Block::next), stable: equal ones keep the pack's order.
-uint32_t Core::block_order(void* self) {
-    Core& c = *static_cast<Core*>(self);
-    module::Scene& scene = c.scene_;
+uint32_t Detail::block_order(void* self) {
+    Detail& c = *static_cast<Detail*>(self);
+    Scene& scene = c.scene_;
     const uint32_t n = scene.block_count();
     for (uint32_t b = 0; b < n; ++b) {
-        module::Block& block = scene.block(b);
+        Block& block = scene.block(b);
         block.pixels = block.left_out ? 0 : c.block_pixels(b);
         block.next = b + 1 < n ? b + 1 : kNone;
     }
@@ -101,7 +100,7 @@ uint32_t Core::block_order(void* self) {
 }
 
 // The first `count` blocks of the chain from `head` sorted (largest first); head moves past them.
-uint32_t Core::sort_blocks(uint32_t& head, uint32_t count) {
+uint32_t Detail::sort_blocks(uint32_t& head, uint32_t count) {
     if (count == 1) {
         const uint32_t one = head;
         head = scene_.block(one).next;
@@ -118,26 +117,37 @@ uint32_t Core::sort_blocks(uint32_t& head, uint32_t count) {
     return first;
 }
 
-bool Core::judge_with_view() { return judge_.update(); }
-
-void Core::detail_view_changed() {
-    if (!judge_with_view()) return;
-    refine_check_ = swap_check_ = true;
-    for (uint32_t b = 0; b < scene_.block_count(); ++b) scene_.block(b).refused = false; // (the room may differ now)
-    if (scene_.totals().deferred > 0) scheduler_.revisit();
+bool Detail::block_sphere(uint32_t b, float centre[3], float& radius) const {
+    float lo[3], hi[3], r2 = 0;
+    scene_.block_box(b, lo, hi);
+    if (!(lo[0] <= hi[0])) return false;
+    for (int k = 0; k < 3; ++k) centre[k] = 0.5f * (lo[k] + hi[k]), r2 += 0.25f * (hi[k] - lo[k]) * (hi[k] - lo[k]);
+    radius = std::sqrt(r2);
+    return true;
 }
 
-// The level of detail as a factor of the default tolerance (the screen error scales with it).
-float Core::detail() const { return default_tolerance_ > 0 ? scheduler_.tolerance() / default_tolerance_ : 1.0f; }
+float Detail::block_pixels(uint32_t b) {
+    float centre[3], r;
+    if (!block_sphere(b, centre, r)) return 0;
+    (void)judge_.update();
+    return judge_.view().pixels(centre, r);
+}
 
-Result Core::set_detail(float factor) {
-    if (!scene_.loaded()) return Result::fail(Status::NotFound, "no model is loaded");
+bool Detail::view_changed() {
+    if (!judge_.update()) return false;
+    check_ = true;
+    for (uint32_t b = 0; b < scene_.block_count(); ++b) scene_.block(b).refused = false; // (the room may differ now)
+    if (scene_.totals().deferred > 0) scheduler_.revisit();
+    return true;
+}
+
+Result Detail::set_factor(float factor) {
     if (!(factor >= Scale::kUserFinest && factor <= Scale::kUserCoarsest)) { // (NaN too)
         return Result::fail(Status::OutOfRange, "the detail factor is outside 1/8 to 16");
     }
-    if (factor == detail()) return {};
+    if (factor == this->factor()) return {};
     scheduler_.begin_pass(default_tolerance_ * factor);
     return {};
 }
 
-} // namespace facet
+} // namespace facet::module

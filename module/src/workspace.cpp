@@ -156,7 +156,8 @@ Result model_needs(const void* file, uint32_t file_bytes, ModelNeeds& needs) {
 Core::Core(const Config& config, Carver& k, uint8_t* end)
     : config_(config), emitter_{relay, this}, painter_(scene_, raster_), scheduler_(scene_, emitter_),
       presenter_(scene_, camera_, painter_, raster_, emitter_, {config.now_us, config.clock_user}),
-      judge_(scene_, camera_, scheduler_, config_) {
+      judge_(scene_, camera_, scheduler_, config_), detail_(scene_, scheduler_, judge_, config.screen_error_px),
+      swapper_(scene_, scheduler_, presenter_, detail_, emitter_) {
     Carve c{k, {}, {}, {}, {}, {}};
     module::base_plan(config.capacity, geom::kPatchCacheWords, c);
     carved_ = k.fits() && c.face_bound.ok();
@@ -166,8 +167,9 @@ Core::Core(const Config& config, Carver& k, uint8_t* end)
     c.scheduler.max_face_vertices = uint32_t(c.projected.size());
     scheduler_.init(c.scheduler);
     scheduler_.set_filter({&module::FaceJudge::wants, &judge_});
-    scheduler_.set_block_tolerance({&Core::block_tolerance, this});
-    scheduler_.set_block_order({&Core::block_order, this});
+    scheduler_.set_block_tolerance({&module::Detail::block_tolerance, &detail_});
+    scheduler_.set_block_order({&module::Detail::block_order, &detail_});
+    swapper_.set_left_out({&Core::blocks_left_out, this});
     painter_.init(c.painter);
     projected_ = c.projected;
     controls_.set_screen(config.display.width, config.display.height);
