@@ -16,7 +16,7 @@ const Core& core(const Viewer* v) { return *static_cast<const Core*>(v); }
 } // namespace
 
 Result Viewer::load(const void* file, uint32_t file_bytes, void* memory, uint32_t memory_bytes) {
-    return core(this).load(file, file_bytes, memory, memory_bytes);
+    return module::public_result(core(this).load(file, file_bytes, memory, memory_bytes));
 }
 Activity Viewer::step(uint32_t budget_us) { return core(this).step(budget_us); }
 void Viewer::flush_done() { core(this).flush_done(); }

@@ -2,6 +2,7 @@
 #include "facet/facet.h"
 
 #include "facet/viewer.h"
+#include "public_result.h"
 #include "workspace.h"
 #include "core/format.h"
 
@@ -31,19 +32,10 @@ static_assert(int(Surface::Extrusion) == FACET_SURFACE_EXTRUSION && int(Surface:
               "the C surfaces are facet::Surface");
 static_assert(int(Measurement::Kind::Points) == FACET_MEASURE_POINTS, "the C measurement kinds are facet::Measurement's");
 
-// The public statuses (facet_status); geometry the tessellation refuses (Degenerate, Crossing)
-// is Corrupt input to a caller, a transfer that failed (Io) Unsupported (the module does none).
-facet_status public_status(Status s) {
-    switch (s) {
-    case Status::Degenerate:
-    case Status::Crossing: return FACET_CORRUPT;
-    case Status::Io: return FACET_UNSUPPORTED;
-    default: return facet_status(s);
-    }
-}
-
+// The public statuses (facet_status: public_result.h's; the C++ calls give them already, and
+// this holds for the C module's own refusals too).
 facet_result to_c(const Result& r) {
-    return {public_status(r.status), r.what, r.where.kind, r.where.index, r.at.kind, r.at.index};
+    return {facet_status(module::public_status(r.status)), r.what, r.where.kind, r.where.index, r.at.kind, r.at.index};
 }
 Result from_c(const facet_result& r) {
     return {Status(r.status), r.what, {r.where_kind, r.where_index}, {r.at_kind, r.at_index}};

@@ -38,6 +38,14 @@ void Core::relay(void* self, const Event& e) {
     c.emit(e);
 }
 
+void Core::emit(const Event& e) const {
+    if (!config_.on_event) return;
+    if (module::is_public(e.why.status)) return config_.on_event(config_.event_user, e);
+    Event told = e;
+    told.why = module::public_result(e.why);
+    config_.on_event(config_.event_user, told);
+}
+
 void Core::drain() {
     for (uint32_t i = 0; i < held_count_; ++i) emit(held_[i]);
     held_count_ = 0;
@@ -64,10 +72,8 @@ void Core::unload() {
     models_.forget();
     selection_.clear();
     chosen_part_ = kNone;
-    camera_.set_section({});
-    section_kind_ = 0;
+    sectioning_.reset();
     module::Overlay& o = presenter_.overlay();
-    o.set_slider(false, 0.5f);
     o.set_chosen(kNone);
     o.set_lines(nullptr, 0);
     highlight();
@@ -296,7 +302,7 @@ void Core::command(const module::Command& c) {
     case Kind::Pan: camera_.pan_pixels(c.dx, c.dy, scene_.radius(), d.width, d.height); break;
     case Kind::Dolly: camera_.dolly(c.factor); break;
     case Kind::Pick: tap(c.x, c.y); return;
-    case Kind::Slide: section_at(presenter_.overlay().slider_at(c.y), false); return;
+    case Kind::Slide: sectioning_.at(presenter_.overlay().slider_at(c.y), false); return;
     }
     view_changed();
 }

@@ -13,8 +13,10 @@
 #include "models.h"
 #include "painter.h"
 #include "presenter.h"
+#include "public_result.h"
 #include "scene.h"
 #include "scheduler.h"
+#include "section.h"
 #include "selection.h"
 #include "swap.h"
 #include "workspace.h"
@@ -85,8 +87,8 @@ public:
     Result isolate(uint32_t part);
     void show_all();
     Result section_through(uint32_t part, uint32_t face);
-    Result section_across(uint8_t axis);
-    Result move_section(float by_mm);
+    Result section_across(uint8_t axis) { return sectioning_.across(axis); }
+    Result move_section(float by_mm) { return sectioning_.move(by_mm); }
     ModelInfo model() const;
     // Ok when `face` is a face of `part` whose exact geometry is at hand (its block decoded).
     Result check_face(uint32_t part, uint32_t face) const;
@@ -97,15 +99,11 @@ public:
     Result show(uint32_t part, bool shown);
     void choose(uint32_t part);
     uint32_t chosen_part() const { return chosen_part_; }
-    void set_section(const module::Section& s) {
-        camera_.set_section(s);
-        section_kind_ = s.on ? 4 : 0; // the cycle goes on from here to off
-        section_changed();
-    }
+    void set_section(const module::Section& s) { sectioning_.set(s, module::Sectioning::Kind::Z); } // (the cycle goes on to off)
 
 private:
     static void relay(void* self, const Event& e); // the parts' events: act on some, pass all on
-    void emit(const Event& e) const { if (config_.on_event) config_.on_event(config_.event_user, e); }
+    void emit(const Event& e) const; // to the application, its `why` with a public status (public_result.h)
     void drain(); // the events held back while a piece of work ran
     void work(Event::Kind kind, Work what, uint32_t item);
     uint32_t now() const { return config_.now_us ? config_.now_us(config_.clock_user) : 0; }
@@ -175,6 +173,7 @@ private:
     module::FaceJudge judge_; // which faces the view wants (face_judge.h)
     module::Detail detail_;
     module::Swapper swapper_;
+    module::Sectioning sectioning_; // the section plane as a tool (section.h)
     // Nothing moves the view on its own: no bounds or framing under way, no glide.
     bool settled() const { return !scene_.bounding() && !framer_.busy() && glide_.idle(); }
     bool swap_pending() const { return swapper_.pending() && !controls_.dragging(); } // blocks to look at, no drag
@@ -202,15 +201,10 @@ private:
     void show_measurement();
     void focus(); // the painter's chosen part and see-through focus
     void highlight_changed(); // the picked faces or the chosen part changed: a whole frame (the faces kept, but in see-through mode)
-    void section_next();
-    void section_at(float at, bool relative);
-    void section_changed();
-    void section_range(const module::Section& s, float& lo, float& hi) const;
     bool tap_parts(int16_t x, int16_t y); // a tap on the parts list (true: it was the list's)
     bool tap_models(int16_t x, int16_t y); // a tap on the models chooser (library.cpp)
     void toggle_models();
     uint32_t chosen_part_ = kNone;
-    uint8_t section_kind_ = 0; // 0 off, 1 the picked plane, 2 x, 3 y, 4 z (or the application's)
     // Double tap: the last tap's place and time (without a clock: a second tap on the same spot).
     int16_t tap_x_ = -1000, tap_y_ = -1000;
     uint32_t tap_t_ = 0;

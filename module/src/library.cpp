@@ -79,9 +79,9 @@ void Core::toggle_models() {
 
 void Viewer::unload() { static_cast<Core*>(this)->unload(); }
 Result Viewer::set_library(const void* library, uint32_t bytes, void* memory, uint32_t memory_bytes) {
-    return static_cast<Core*>(this)->set_library(library, bytes, memory, memory_bytes);
+    return module::public_result(static_cast<Core*>(this)->set_library(library, bytes, memory, memory_bytes));
 }
-Result Viewer::open_model(uint32_t index) { return static_cast<Core*>(this)->open_model(index); }
+Result Viewer::open_model(uint32_t index) { return module::public_result(static_cast<Core*>(this)->open_model(index)); }
 uint32_t Viewer::model_index() const { return static_cast<const Core*>(this)->model_index(); }
 
 } // namespace facet

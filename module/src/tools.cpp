@@ -1,45 +1,12 @@
-// The viewer's tools beyond the camera: the section plane (its slider and keys) and the parts
-// list (choose, hide, show, isolate), for the on-screen interface and the public API alike.
+// The viewer's tools beyond the camera, for the on-screen interface and the public API alike:
+// the toolbar's actions, a section through a picked face (the plane itself: section.h), and the
+// parts list (choose, hide, show, isolate).
 #include "core.h"
 #include "geom/measure.h"
 
-#include <cmath>
-
 namespace facet {
 
-namespace {
-
-constexpr float kStep = 1.0f / 32; // SectionIn / SectionOut: of the model's diameter
 static_assert(module::Scene::kMaxHideable == Viewer::kMaxHideableParts);
-
-} // namespace
-
-// The range a section plane moves in: the placed model's sphere along its normal.
-void Core::section_range(const module::Section& s, float& lo, float& hi) const {
-    const float* c = scene_.centre();
-    const float at = s.n[0] * c[0] + s.n[1] * c[1] + s.n[2] * c[2];
-    lo = at - scene_.radius(), hi = at + scene_.radius();
-}
-
-void Core::section_changed() {
-    const module::Section& s = camera_.section();
-    float lo, hi;
-    section_range(s, lo, hi);
-    presenter_.overlay().set_slider(s.on && config_.interface == Interface::Full, hi > lo ? (s.offset - lo) / (hi - lo) : 0.5f);
-    presenter_.invalidate();
-}
-
-void Core::section_next() {
-    // off -> the picked planar face's plane (when one is picked) -> x -> y -> z -> off
-    for (uint8_t kind = uint8_t((section_kind_ + 1) % 5);; kind = uint8_t((kind + 1) % 5)) {
-        if (kind == 0) {
-            set_section(module::Section{});
-            section_kind_ = 0;
-            return;
-        }
-        if (kind == 1 ? selection_.count() > 0 && section_through(selection_[0].instance, selection_[0].face).ok() : section_across(uint8_t(kind - 2)).ok()) return;
-    }
-}
 
 // Through a planar face, cutting away what lies beyond it (its outward side): the slider then
 // moves the plane into the part.
@@ -51,44 +18,8 @@ Result Core::section_through(uint32_t part, uint32_t face) {
     s.on = true;
     for (int k = 0; k < 3; ++k) s.n[k] = float(f.axis[k]);
     s.offset = float(f.offset_mm);
-    set_section(s);
-    section_kind_ = 1;
+    sectioning_.set(s, module::Sectioning::Kind::Picked);
     return {};
-}
-
-Result Core::section_across(uint8_t axis) {
-    if (!scene_.loaded()) return Result::fail(Status::NotFound, "no model is loaded");
-    if (axis > 2) return Result::fail(Status::OutOfRange, "the axis is 0 (x), 1 (y) or 2 (z)", {"axis", axis});
-    module::Section s;
-    s.on = true;
-    s.n[0] = axis == 0, s.n[1] = axis == 1, s.n[2] = axis == 2;
-    s.offset = scene_.centre()[axis]; // through the model's middle
-    set_section(s);
-    section_kind_ = uint8_t(axis + 2);
-    return {};
-}
-
-Result Core::move_section(float by_mm) {
-    const module::Section& s = camera_.section();
-    if (!scene_.loaded() || !s.on) return Result::fail(Status::NotFound, "no section is on");
-    if (!std::isfinite(by_mm)) return Result::fail(Status::OutOfRange, "the distance must be finite");
-    float lo, hi;
-    section_range(s, lo, hi);
-    section_at(hi > lo ? by_mm / (hi - lo) : 0, true);
-    return {};
-}
-
-// The plane moved to `at` of its range (0: the near end, 1: the far end; clamped), or by
-// `by` of it from where it is.
-void Core::section_at(float at, bool relative) {
-    module::Section s = camera_.section();
-    if (!s.on) return;
-    float lo, hi;
-    section_range(s, lo, hi);
-    if (relative && hi > lo) at += (s.offset - lo) / (hi - lo);
-    s.offset = lo + (at < 0 ? 0 : at > 1 ? 1 : at) * (hi - lo);
-    camera_.set_section(s);
-    section_changed();
 }
 
 void Core::choose(uint32_t part) {
@@ -147,9 +78,11 @@ void Core::tool(Action a) {
     if (!scene_.loaded()) return;
     const uint32_t parts = uint32_t(scene_.instances().size());
     switch (a) {
-    case Action::Section: section_next(); return;
-    case Action::SectionIn: section_at(-kStep, true); return;
-    case Action::SectionOut: section_at(kStep, true); return;
+    case Action::Section: // (through the picked face's plane, when it is one)
+        sectioning_.next([&] { return selection_.count() > 0 && section_through(selection_[0].instance, selection_[0].face).ok(); });
+        return;
+    case Action::SectionIn: sectioning_.at(-module::Sectioning::kStep, true); return;
+    case Action::SectionOut: sectioning_.at(module::Sectioning::kStep, true); return;
     case Action::Parts:
         presenter_.overlay().set_parts(!presenter_.overlay().parts_open());
         presenter_.overlay().set_chosen(chosen_part_);

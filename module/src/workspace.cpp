@@ -157,7 +157,8 @@ Core::Core(const Config& config, Carver& k, uint8_t* end)
     : config_(config), emitter_{relay, this}, painter_(scene_, raster_), scheduler_(scene_, emitter_),
       presenter_(scene_, camera_, painter_, raster_, emitter_, {config.now_us, config.clock_user}),
       judge_(scene_, camera_, scheduler_, config_), detail_(scene_, scheduler_, judge_, config.screen_error_px),
-      swapper_(scene_, scheduler_, presenter_, detail_, emitter_) {
+      swapper_(scene_, scheduler_, presenter_, detail_, emitter_),
+      sectioning_(scene_, camera_, presenter_, config.interface == Interface::Full) {
     Carve c{k, {}, {}, {}, {}, {}};
     module::base_plan(config.capacity, geom::kPatchCacheWords, c);
     carved_ = k.fits() && c.face_bound.ok();

@@ -171,3 +171,29 @@ TEST(Viewer, PartsCarryTheirNamesFromThePack) {
     EXPECT_TRUE(app.v->part(1).shown);
     EXPECT_EQ(app.v->show_part(2, false).status, Status::OutOfRange);
 }
+
+// Only public statuses leave the module (module/src/public_result.h, used where results leave:
+// the Viewer's loading calls and every event): the layers' own kinds are said as what they mean
+// to a caller, with the text and places kept.
+TEST(Viewer, TheLayersOwnStatusesLeaveAsPublicOnes) {
+    static_assert(module::public_status(Status::Degenerate) == Status::Corrupt);
+    static_assert(module::public_status(Status::Crossing) == Status::Corrupt);
+    static_assert(module::public_status(Status::Io) == Status::Unsupported);
+    for (Status s : {Status::Ok, Status::OutOfRange, Status::Full, Status::Corrupt, Status::Unsupported, Status::NotFound, Status::Busy}) {
+        EXPECT_EQ(module::public_status(s), s);
+        EXPECT_TRUE(module::is_public(s));
+    }
+    const Result r = module::public_result(Result::fail(Status::Crossing, "loops cross", {"face", 12}, {"loop", 3}));
+    EXPECT_EQ(r.status, Status::Corrupt);
+    EXPECT_EQ(text(r), "face 12, loop 3: loops cross");
+    // A model's whole life (load, faces, frames, a pick): every event's status a public one.
+    App app;
+    ASSERT_TRUE(app.create().ok());
+    ASSERT_TRUE(app.load(polygon_and_triangle(FACET_DEFAULT_FACE_POINTS + 500)).ok());
+    app.run();
+    app.v->touch(0, int16_t(app.w / 2), int16_t(app.h / 2), true);
+    app.v->touch(0, int16_t(app.w / 2), int16_t(app.h / 2), false);
+    app.run();
+    ASSERT_EQ(app.count(Event::Kind::FaceFailed), 1);
+    for (const Event& e : app.events) EXPECT_TRUE(module::is_public(e.why.status)) << int(e.kind);
+}

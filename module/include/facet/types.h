@@ -14,6 +14,11 @@ namespace facet {
 
 class Viewer;
 
+// Every call that can fail returns a Result (core/status.h: its Status, what went wrong and
+// where). The Viewer's calls and events give the public statuses only: Ok, OutOfRange, Full,
+// Corrupt, Unsupported, NotFound and Busy (geometry the tessellation refuses is Corrupt, its
+// text says why); Degenerate, Crossing and Io are the layers' own and never reach you.
+
 // No part, no face, no model: the one "none" (FACET_NONE in C).
 constexpr uint32_t kNone = FACET_NONE;
 
