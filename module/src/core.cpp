@@ -70,13 +70,11 @@ void Core::unload() {
     scene_.close();
     pack_bytes_ = pack_file_bytes_ = 0;
     models_.forget();
-    selection_.clear();
-    chosen_part_ = kNone;
     sectioning_.reset();
     module::Overlay& o = presenter_.overlay();
     o.set_chosen(kNone);
     o.set_lines(nullptr, 0);
-    highlight();
+    picks_.reset();
 }
 
 Result Core::load(const void* file, uint32_t file_bytes, void* memory, uint32_t memory_bytes) {
@@ -234,9 +232,7 @@ void Core::blocks_left_out(void* self) { static_cast<Core*>(self)->forget_left_o
 // A face picked in a block left out is no longer there to describe or highlight: the
 // selection and the measurement go (as after a tap on nothing).
 void Core::forget_left_out_picks() {
-    if (!selection_.forget([&](const Picked& p) { return scene_.block_of_face(p.face).left_out; })) return;
-    highlight();
-    show_measurement();
+    picks_.forget([&](const module::Picks::Face& p) { return scene_.block_of_face(p.face).left_out; });
 }
 
 // The level of detail as a factor of the default tolerance (the screen error scales with it).

@@ -12,12 +12,12 @@
 #include "loader.h"
 #include "models.h"
 #include "painter.h"
+#include "picks.h"
 #include "presenter.h"
 #include "public_result.h"
 #include "scene.h"
 #include "scheduler.h"
 #include "section.h"
-#include "selection.h"
 #include "swap.h"
 #include "workspace.h"
 
@@ -82,7 +82,7 @@ public:
     void clear_selection();
     uint32_t selection(FaceFacts out[2]) const;
     void set_measuring(bool on);
-    bool measuring() const { return presenter_.overlay().measuring(); }
+    bool measuring() const { return picks_.measuring(); }
     Measurement measure(const FaceFacts& a, const FaceFacts& b) const;
     Result isolate(uint32_t part);
     void show_all();
@@ -98,7 +98,7 @@ public:
     void tool(Action a);
     Result show(uint32_t part, bool shown);
     void choose(uint32_t part);
-    uint32_t chosen_part() const { return chosen_part_; }
+    uint32_t chosen_part() const { return picks_.chosen(); }
     void set_section(const module::Section& s) { sectioning_.set(s, module::Sectioning::Kind::Z); } // (the cycle goes on to off)
 
 private:
@@ -191,20 +191,11 @@ private:
     static constexpr int kDoubleTapSlop = 12; // pixels
     void glide_to(const module::View& v, uint32_t instance = kNone, uint32_t face = kNone);
     bool glide_step(); // Moving: the camera advanced (a frame is wanted); false when it has arrived
-    // The faces picked (selection.h), their exact surfaces, and the panel's text.
-    using Picked = module::Selection::Face;
-    module::Selection selection_;
+    module::Picks picks_; // the faces picked and the part chosen, shown (picks.h)
     uint8_t next_view_ = 0; // the toolbar's VIEW button: the next standard view
-    void picked(const Event& e); // a pick: highlight, measure, the panel
-    Result describe(const Picked& p, geom::FaceGeometry& g) const; // the picked face's exact geometry, placed
-    void highlight();            // the painter's highlight from picked_
-    void show_measurement();
-    void focus(); // the painter's chosen part and see-through focus
-    void highlight_changed(); // the picked faces or the chosen part changed: a whole frame (the faces kept, but in see-through mode)
     bool tap_parts(int16_t x, int16_t y); // a tap on the parts list (true: it was the list's)
     bool tap_models(int16_t x, int16_t y); // a tap on the models chooser (library.cpp)
     void toggle_models();
-    uint32_t chosen_part_ = kNone;
     // Double tap: the last tap's place and time (without a clock: a second tap on the same spot).
     int16_t tap_x_ = -1000, tap_y_ = -1000;
     uint32_t tap_t_ = 0;

@@ -35,44 +35,6 @@ void Core::tap(int16_t x, int16_t y) {
     }
 }
 
-void Core::picked(const Event& e) {
-    if (!e.pick.hit) selection_.clear(); // a tap on nothing clears the selection
-    else selection_.pick({e.pick.face, e.pick.instance}, presenter_.overlay().measuring());
-    highlight();
-    show_measurement();
-    highlight_changed();
-}
-
-void Core::highlight() {
-    focus();
-    painter_.set_highlight(selection_.face(0), selection_.instance(0), selection_.face(1), selection_.instance(1));
-}
-
-Result Core::describe(const Picked& p, geom::FaceGeometry& g) const {
-    const module::Block& b = scene_.block_of_face(p.face);
-    return geom::describe_face(b.pack, p.face - b.first_face, scene_.instances()[p.instance].m, g);
-}
-
-void Core::show_measurement() {
-    if (config_.interface != Interface::Full || selection_.count() == 0) {
-        presenter_.overlay().set_lines(nullptr, 0);
-        return;
-    }
-    const float unit = scene_.source_unit_mm();
-    char lines[3][module::Overlay::kLineChars];
-    const char* ptrs[3] = {lines[0], lines[1], lines[2]};
-    geom::FaceGeometry g[2];
-    for (uint32_t i = 0; i < selection_.count(); ++i) {
-        const Picked& p = selection_[i];
-        if (!describe(p, g[i]).ok()) return;
-        module::describe(g[i], p.face, unit, lines[i], sizeof lines[i]);
-    }
-    uint32_t n = selection_.count();
-    if (n == 2) module::describe(geom::relate(g[0], g[1]), unit, lines[n++], sizeof lines[0]);
-    else if (presenter_.overlay().measuring()) format(lines[n++], sizeof lines[0], "MEAS: tap a second face");
-    presenter_.overlay().set_lines(ptrs, n);
-}
-
 Result Core::check_part(uint32_t part) const {
     if (!scene_.loaded()) return Result::fail(Status::NotFound, "no model is loaded");
     if (part >= scene_.instances().size()) return Result::fail(Status::OutOfRange, "no such part", {"part", part});
@@ -95,7 +57,7 @@ Result Core::facts(uint32_t part, uint32_t face, FaceFacts& out) const {
     out = {};
     if (const Result r = check_face(part, face); !r.ok()) return r;
     geom::FaceGeometry g;
-    if (const Result r = describe({face, part}, g); !r.ok()) return r;
+    if (const Result r = picks_.describe({face, part}, g); !r.ok()) return r;
     static_assert(uint8_t(Surface::Extrusion) == uint8_t(pack::SurfaceType::Extrusion) && uint8_t(Surface::Plane) == uint8_t(pack::SurfaceType::Plane),
                   "Surface is pack::SurfaceType");
     out.hit = true, out.part = part, out.face = face;
@@ -119,39 +81,30 @@ FaceFacts Core::pick(int16_t x, int16_t y) {
 
 Result Core::select(uint32_t part, uint32_t face) {
     if (const Result r = check_face(part, face); !r.ok()) return r;
-    Event e{};
-    e.kind = Event::Kind::Picked;
-    e.pick = {true, face, part, scene_.instances()[part].shell, scene_.surface_type(face), 0, 0};
-    picked(e);
+    picks_.picked(true, {face, part});
     return {};
 }
 
 void Core::clear_selection() {
-    if (selection_.count() == 0) return;
-    Event e{};
-    e.kind = Event::Kind::Picked; // (a pick of nothing)
-    picked(e);
+    if (picks_.selection().count() > 0) picks_.picked(false, {});
 }
 
 uint32_t Core::selection(FaceFacts out[2]) const {
-    for (uint32_t i = 0; i < selection_.count(); ++i) (void)facts(selection_[i].instance, selection_[i].face, out[i]); // (forgotten when left out)
-    return selection_.count();
+    const module::Selection& s = picks_.selection();
+    for (uint32_t i = 0; i < s.count(); ++i) (void)facts(s[i].instance, s[i].face, out[i]); // (forgotten when left out)
+    return s.count();
 }
 
 void Core::set_measuring(bool on) {
     if (!scene_.loaded() || on == measuring()) return;
-    presenter_.overlay().set_measuring(on);
-    selection_.keep_first();
-    show_measurement();
-    highlight();
-    highlight_changed();
+    picks_.set_measuring(on);
 }
 
 Measurement Core::measure(const FaceFacts& a, const FaceFacts& b) const {
     Measurement m;
     geom::FaceGeometry g[2];
     if (!a.hit || !b.hit || !check_face(a.part, a.face).ok() || !check_face(b.part, b.face).ok() ||
-        !describe({a.face, a.part}, g[0]).ok() || !describe({b.face, b.part}, g[1]).ok()) {
+        !picks_.describe({a.face, a.part}, g[0]).ok() || !picks_.describe({b.face, b.part}, g[1]).ok()) {
         return m;
     }
     const geom::Relation r = geom::relate(g[0], g[1]);

@@ -22,24 +22,7 @@ Result Core::section_through(uint32_t part, uint32_t face) {
     return {};
 }
 
-void Core::choose(uint32_t part) {
-    chosen_part_ = scene_.loaded() && part < scene_.instances().size() ? part : kNone;
-    presenter_.overlay().set_chosen(chosen_part_);
-    focus();
-    highlight_changed();
-}
-
-void Core::highlight_changed() {
-    // The faces keep their pixels but the highlighted ones (drawn over the faces layer), unless
-    // see-through mode draws the part in focus solid and the rest see-through.
-    if (painter_.mode() == DisplayMode::SeeThrough) presenter_.invalidate();
-    else presenter_.redraw();
-}
-
-void Core::focus() {
-    painter_.set_part(chosen_part_);
-    painter_.set_focus(chosen_part_ != kNone ? chosen_part_ : selection_.instance(0));
-}
+void Core::choose(uint32_t part) { picks_.choose(scene_.loaded() && part < scene_.instances().size() ? part : kNone); }
 
 Result Core::show(uint32_t part, bool shown) {
     if (!scene_.loaded() || part >= scene_.instances().size()) {
@@ -49,11 +32,7 @@ Result Core::show(uint32_t part, bool shown) {
         return Result::fail(Status::OutOfRange, "only the first parts can be hidden (Viewer::kMaxHideableParts)", {"part", part});
     }
     scene_.set_shown(part, shown);
-    if (!shown) { // what is hidden is not picked
-        if (selection_.any([&](const Picked& p) { return p.instance == part; })) selection_.clear(); // (the whole selection goes)
-        highlight();
-        show_measurement();
-    }
+    if (!shown) picks_.hidden(part); // what is hidden is not picked
     presenter_.invalidate();
     return {};
 }
@@ -79,21 +58,24 @@ void Core::tool(Action a) {
     const uint32_t parts = uint32_t(scene_.instances().size());
     switch (a) {
     case Action::Section: // (through the picked face's plane, when it is one)
-        sectioning_.next([&] { return selection_.count() > 0 && section_through(selection_[0].instance, selection_[0].face).ok(); });
+        sectioning_.next([&] {
+            const module::Selection& s = picks_.selection();
+            return s.count() > 0 && section_through(s[0].instance, s[0].face).ok();
+        });
         return;
     case Action::SectionIn: sectioning_.at(-module::Sectioning::kStep, true); return;
     case Action::SectionOut: sectioning_.at(module::Sectioning::kStep, true); return;
     case Action::Parts:
         presenter_.overlay().set_parts(!presenter_.overlay().parts_open());
-        presenter_.overlay().set_chosen(chosen_part_);
+        presenter_.overlay().set_chosen(picks_.chosen());
         presenter_.redraw(); // (the list opened or closed)
         return;
-    case Action::NextPart: choose(chosen_part_ == kNone || chosen_part_ + 1 >= parts ? 0 : chosen_part_ + 1); return;
+    case Action::NextPart: choose(picks_.chosen() == kNone || picks_.chosen() + 1 >= parts ? 0 : picks_.chosen() + 1); return;
     case Action::HidePart:
-        if (chosen_part_ != kNone) (void)show(chosen_part_, false); // past kMaxHideable: stays shown (show() says why)
+        if (picks_.chosen() != kNone) (void)show(picks_.chosen(), false); // past kMaxHideable: stays shown (show() says why)
         return;
     case Action::IsolatePart:
-        if (chosen_part_ != kNone) (void)isolate(chosen_part_); // (likewise)
+        if (picks_.chosen() != kNone) (void)isolate(picks_.chosen()); // (likewise)
         return;
     case Action::ShowAllParts: show_all(); return;
     default: return;
@@ -107,7 +89,7 @@ bool Core::tap_parts(int16_t x, int16_t y) {
     switch (h.kind) {
     case Kind::None: return false;
     case Kind::Panel: return true;
-    case Kind::Row: choose(h.part == chosen_part_ ? kNone : h.part); return true; // a second tap lets go
+    case Kind::Row: choose(h.part == picks_.chosen() ? kNone : h.part); return true; // a second tap lets go
     case Kind::Box: (void)show(h.part, !scene_.shown(h.part)); return true;     // refused past kMaxHideable
     case Kind::Up: o.scroll(-int32_t(o.part_rows()) + 1); break;
     case Kind::Down: o.scroll(int32_t(o.part_rows()) - 1); break;

@@ -55,6 +55,10 @@ static_assert(bytes_per<&Capacity::mesh_triangles>() == FACET_BYTES_PER_MESH_TRI
 constexpr size_t kAlignmentSlack = 8 * (uint32_t(Array::PaletteRgb) + 1 + uint32_t(geom::FaceArray::Patches) + 1);
 static_assert(core_bytes() + packed_bytes(kNothing) + kAlignmentSlack <= FACET_WORKSPACE_FIXED_BYTES,
               "facet/sizes.h: FACET_WORKSPACE_FIXED_BYTES holds the Core, the palettes, the patches and the alignment");
+// And no more than that (on the host, where the Core is largest): the formula stays within 64
+// bytes of the plan (tests/viewer/plan_test.cpp).
+static_assert(sizeof(void*) != 8 || FACET_WORKSPACE_FIXED_BYTES - (core_bytes() + packed_bytes(kNothing) + kAlignmentSlack) < 64,
+              "facet/sizes.h: FACET_WORKSPACE_FIXED_BYTES is more than 64 bytes over what it holds");
 static_assert(layout_bytes(Capacity{}) <= workspace_bytes(Capacity{}), "facet/sizes.h understates the default workspace");
 
 // Lays the plan's arrays out in the workspace and hands each part of the viewer its own.
@@ -158,7 +162,8 @@ Core::Core(const Config& config, Carver& k, uint8_t* end)
       presenter_(scene_, camera_, painter_, raster_, emitter_, {config.now_us, config.clock_user}),
       judge_(scene_, camera_, scheduler_, config_), detail_(scene_, scheduler_, judge_, config.screen_error_px),
       swapper_(scene_, scheduler_, presenter_, detail_, emitter_),
-      sectioning_(scene_, camera_, presenter_, config.interface == Interface::Full) {
+      sectioning_(scene_, camera_, presenter_, config.interface == Interface::Full),
+      picks_(scene_, painter_, presenter_, config.interface == Interface::Full) {
     Carve c{k, {}, {}, {}, {}, {}};
     module::base_plan(config.capacity, geom::kPatchCacheWords, c);
     carved_ = k.fits() && c.face_bound.ok();

@@ -1,0 +1,87 @@
+// What the user has picked, shown (picks.h).
+#include "picks.h"
+#include "core/format.h"
+#include "describe.h"
+
+namespace facet::module {
+
+void Picks::reset() {
+    selection_.clear();
+    chosen_ = kNone;
+    highlight();
+}
+
+void Picks::picked(bool hit, const Face& f) {
+    if (!hit) selection_.clear(); // a tap on nothing clears the selection
+    else selection_.pick(f, measuring());
+    shown();
+    redraw();
+}
+
+void Picks::set_measuring(bool on) {
+    presenter_.overlay().set_measuring(on);
+    selection_.keep_first();
+    shown();
+    redraw();
+}
+
+void Picks::choose(uint32_t part) {
+    chosen_ = part;
+    presenter_.overlay().set_chosen(chosen_);
+    focus();
+    redraw();
+}
+
+void Picks::hidden(uint32_t part) {
+    if (selection_.any([&](const Face& p) { return p.instance == part; })) selection_.clear(); // (the whole selection goes)
+    shown();
+}
+
+void Picks::shown() {
+    highlight();
+    panel();
+}
+
+void Picks::highlight() {
+    focus();
+    painter_.set_highlight(selection_.face(0), selection_.instance(0), selection_.face(1), selection_.instance(1));
+}
+
+void Picks::focus() {
+    painter_.set_part(chosen_);
+    painter_.set_focus(chosen_ != kNone ? chosen_ : selection_.instance(0));
+}
+
+void Picks::redraw() {
+    // The faces keep their pixels but the highlighted ones (drawn over the faces layer), unless
+    // see-through mode draws the part in focus solid and the rest see-through.
+    if (painter_.mode() == DisplayMode::SeeThrough) presenter_.invalidate();
+    else presenter_.redraw();
+}
+
+Result Picks::describe(const Face& p, geom::FaceGeometry& g) const {
+    const Block& b = scene_.block_of_face(p.face);
+    return geom::describe_face(b.pack, p.face - b.first_face, scene_.instances()[p.instance].m, g);
+}
+
+void Picks::panel() {
+    if (!panel_ || selection_.count() == 0) {
+        presenter_.overlay().set_lines(nullptr, 0);
+        return;
+    }
+    const float unit = scene_.source_unit_mm();
+    char lines[3][Overlay::kLineChars];
+    const char* ptrs[3] = {lines[0], lines[1], lines[2]};
+    geom::FaceGeometry g[2];
+    for (uint32_t i = 0; i < selection_.count(); ++i) {
+        const Face& p = selection_[i];
+        if (!describe(p, g[i]).ok()) return;
+        module::describe(g[i], p.face, unit, lines[i], sizeof lines[i]);
+    }
+    uint32_t n = selection_.count();
+    if (n == 2) module::describe(geom::relate(g[0], g[1]), unit, lines[n++], sizeof lines[0]);
+    else if (measuring()) format(lines[n++], sizeof lines[0], "MEAS: tap a second face");
+    presenter_.overlay().set_lines(ptrs, n);
+}
+
+} // namespace facet::module
