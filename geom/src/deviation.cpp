@@ -1,6 +1,6 @@
 #include "geom/deviation.h"
 
-#include "elementary.h"
+#include "geom/elementary.h"
 #include "geom/fmath.h"
 #include "geom/params.h"
 
@@ -48,7 +48,7 @@ float newton_distance(const Pack& pack, const Surface& S, Vec3 p, Vec2 uv, const
 float distance_to_surface(const Pack& pack, uint32_t face, Vec3 p, Vec2 uv_guess) {
     const pack::Face& F = pack.faces()[face];
     const Surface& S = pack.surfaces()[F.surface];
-    if (is_elementary(S)) return std::fabs(detail::Elementary(pack, S).signed_distance(p));
+    if (is_elementary(S)) return std::fabs(Elementary(pack, S).signed_distance(p));
     const float wu = 0.05f * (F.uv_max[0] - F.uv_min[0]), wv = 0.05f * (F.uv_max[1] - F.uv_min[1]);
     Box box{{F.uv_min[0] - wu, F.uv_min[1] - wv}, {F.uv_max[0] + wu, F.uv_max[1] + wv}};
     if (S.type == uint8_t(SurfaceType::BSpline)) {

@@ -1,11 +1,15 @@
-#include "elementary.h"
+#include "geom/elementary.h"
 
 #include "face_internal.h"
 #include "geom/fmath.h"
 
 #include <algorithm>
 
-namespace facet::geom::detail {
+namespace facet::geom {
+
+using detail::kTwoPi;
+using detail::max_arc_angle;
+
 namespace {
 
 using pack::SurfaceType;
@@ -114,4 +118,4 @@ Elementary::FlatBound Elementary::flat_bound(float tol, float v_min, float v_max
     }
 }
 
-} // namespace facet::geom::detail
+} // namespace facet::geom

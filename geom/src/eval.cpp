@@ -1,6 +1,6 @@
 #include "geom/eval.h"
 #include "bspline.h"
-#include "elementary.h"
+#include "geom/elementary.h"
 #include "geom/fmath.h"
 
 namespace facet::geom {
@@ -8,7 +8,6 @@ namespace {
 
 using namespace facet::pack;
 using detail::basis;
-using detail::Elementary;
 
 // w turned about the unit axis D by the angle whose cosine and sine are cu and su (Rodrigues).
 Vec3 turn(Vec3 D, Vec3 w, float cu, float su) { return w * cu + cross(D, w) * su + D * (dot(D, w) * (1 - cu)); }

@@ -1,5 +1,5 @@
 // A face's loops into its (u,v) domain (tessellate_face steps 1 and 3b).
-#include "elementary.h"
+#include "geom/elementary.h"
 #include "face_internal.h"
 #include "geom/fmath.h"
 

@@ -20,7 +20,7 @@
 //     grid's 25 exact distances are measured instead of modelled. The point goes where it peaks
 //     (never on a constrained edge: that is a chord of a B-rep edge, within the tolerance by
 //     edge sampling).
-#include "elementary.h"
+#include "geom/elementary.h"
 #include "face_internal.h"
 #include "geom/patches.h"
 #include "geom/fmath.h"
@@ -139,8 +139,8 @@ struct Context {
     const Pack& pack;
     const Surface& S;
     bool elementary;
-    detail::Elementary shape; // its closed forms (none unless elementary)
-    detail::Elementary::FlatBound flat; // what needs no samples (elementary surfaces)
+    Elementary shape; // its closed forms (none unless elementary)
+    Elementary::FlatBound flat; // what needs no samples (elementary surfaces)
     bool seams;    // the face's loops run along a seam (each side of it: points twice in 3D)
     uint32_t loop_points; // the points from the loops' samples (refinement's come after them)
     float tol2;
@@ -215,7 +215,7 @@ struct Context {
         const Vec3 e0 = P[2] - P[1], e1 = P[0] - P[2], e2 = P[1] - P[0];
         const float l0 = dot(e0, e0), l1 = dot(e1, e1), l2 = dot(e2, e2);
         if (std::max({l0, l1, l2}) <= tol2) return m;
-        using Flat = detail::Elementary::FlatBound::Kind;
+        using Flat = Elementary::FlatBound::Kind;
         switch (flat.kind) {
         case Flat::Everywhere: return m;
         case Flat::USpan: {

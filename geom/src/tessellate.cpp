@@ -1,7 +1,7 @@
 #include "geom/tessellate.h"
 #include "geom/patches.h"
 
-#include "elementary.h"
+#include "geom/elementary.h"
 #include "face_internal.h"
 #include "geom/fmath.h"
 
@@ -63,7 +63,7 @@ class FaceNormals {
 public:
     FaceNormals(const Pack& pack, const Surface& S, const pack::Face& F, std::span<uint32_t> patches)
         : pack_(pack), S_(S), F_(F), elementary_(is_elementary(S)), flip_(F.reversed ? -1.0f : 1.0f), patches_(pack, S, patches) {
-        if (elementary_) closed_ = detail::Elementary(pack, S).normals(flip_);
+        if (elementary_) closed_ = Elementary(pack, S).normals(flip_);
     }
 
     // What a vertex's normal costs, in eighths of a work unit: closed form, from a B-spline's
@@ -96,7 +96,7 @@ private:
     const pack::Face& F_;
     bool elementary_;
     float flip_;
-    detail::Elementary::Normals closed_;
+    Elementary::Normals closed_;
     mutable PatchCache patches_;
 };
 
@@ -106,7 +106,7 @@ private:
 // fixed-point patches).
 void bending(const Pack& pack, const Surface& S, const pack::Face& F, float u, float v, PatchCache& patches, float& ku,
              float& kv) {
-    if (is_elementary(S)) return detail::Elementary(pack, S).bending(v, ku, kv);
+    if (is_elementary(S)) return Elementary(pack, S).bending(v, ku, kv);
     auto turn = [&](float du, float dv) { // |n(+) - n(-)| / |S(+) - S(-)|
         auto eval = [&](float x, float y) { return patches.usable() ? patches.point_and_derivatives(x, y) : eval_surface(pack, S, x, y); };
         const SurfacePoint a = eval(u + du, v + dv), b = eval(u - du, v - dv);

@@ -9,6 +9,9 @@
 //   Sphere    P(u,v) = O + R cos v (cos u X + sin u Y) + R sin v Z
 //   Torus     P(u,v) = O + (R + r cos v)(cos u X + sin u Y) + r sin v Z
 //
+// geom's one interface to these surfaces, for the tessellation and the module alike: the frame
+// and radii (read from the record by params.h's ElementaryRecord), points and derivatives,
+// the inverse (a point's (u,v)), oriented normals in closed form, bending and distance.
 // Made once per surface (a face's set-up, refinement) or per call where a caller evaluates
 // one point; the cone's sine and cosine are taken once, when it is made.
 #include "geom/eval.h"
@@ -17,7 +20,7 @@
 
 #include <cmath>
 
-namespace facet::geom::detail {
+namespace facet::geom {
 
 class Elementary {
 public:
@@ -204,4 +207,4 @@ inline Elementary::Normals Elementary::normals(float flip) const {
     return n;
 }
 
-} // namespace facet::geom::detail
+} // namespace facet::geom
