@@ -32,10 +32,11 @@ static_assert(int(Surface::Extrusion) == FACET_SURFACE_EXTRUSION && int(Surface:
               "the C surfaces are facet::Surface");
 static_assert(int(Measurement::Kind::Points) == FACET_MEASURE_POINTS, "the C measurement kinds are facet::Measurement's");
 
-// The public statuses (facet_status: public_result.h's; the C++ calls give them already, and
-// this holds for the C module's own refusals too).
+// The public statuses (facet_status): what the C++ calls and events give (public_result.h),
+// and the C module's own refusals.
 facet_result to_c(const Result& r) {
-    return {facet_status(module::public_status(r.status)), r.what, r.where.kind, r.where.index, r.at.kind, r.at.index};
+    FACET_DEBUG_ASSERT("module", module::is_public(r.status));
+    return {facet_status(r.status), r.what, r.where.kind, r.where.index, r.at.kind, r.at.index};
 }
 Result from_c(const facet_result& r) {
     return {Status(r.status), r.what, {r.where_kind, r.where_index}, {r.at_kind, r.at_index}};

@@ -71,9 +71,6 @@ void Core::unload() {
     pack_bytes_ = pack_file_bytes_ = 0;
     models_.forget();
     sectioning_.reset();
-    module::Overlay& o = presenter_.overlay();
-    o.set_chosen(kNone);
-    o.set_lines(nullptr, 0);
     picks_.reset();
 }
 
@@ -154,7 +151,7 @@ bool Core::framing_ready(const Round& r) const { return r.framing && !r.mid_band
 bool Core::glide_ready(const Round& r) const { return glide_.moving() && !frame_wanted() && !r.mid_bands; }
 bool Core::frame_ready(const Round& r) const { return r.frame; }
 bool Core::tessellation_ready(const Round& r) const { return scheduler_.busy() && !r.mid_bands; }
-bool Core::decoding_ready(const Round& r) const { return swapper_.decoding() != kNone && !r.mid_bands; }
+bool Core::decoding_ready(const Round& r) const { return swapper_.decoding() && !r.mid_bands; }
 bool Core::start_ready(const Round& r) const { return !r.mid_bands; }
 
 bool Core::run_framing() {
@@ -206,7 +203,7 @@ bool Core::run_tessellation() {
 }
 
 bool Core::run_decoding() {
-    const uint32_t block = swapper_.decoding();
+    const uint32_t block = swapper_.block();
     work(Event::Kind::WorkBegin, Work::Unpack, block);
     swapper_.step();
     work(Event::Kind::WorkEnd, Work::Unpack, block);
@@ -218,7 +215,7 @@ bool Core::run_start() { return swap_piece() || refine_for_view(); } // false: n
 // The choice and the room made (blocks left out, the pack memory compacted) as a piece of
 // unpacking work, when there is a choice to make.
 bool Core::swap_piece() {
-    if (!swap_pending() || swapper_.decoding() != kNone) return false;
+    if (!swap_pending()) return false;
     work(Event::Kind::WorkBegin, Work::Unpack, 0);
     const bool begun = settled() && swapper_.begin();
     work(Event::Kind::WorkEnd, Work::Unpack, 0);
@@ -280,7 +277,7 @@ Activity Core::activity() {
     const bool mid_bands = this->mid_bands();
     if (!mid_bands && !frame_wanted() && !scheduler_.busy() && !swap_piece()) (void)refine_for_view();
     if ((frame_wanted() && presenter_.can_draw()) ||
-        ((scheduler_.busy() || swapper_.decoding() != kNone || swap_pending() || scene_.bounding() || framer_.busy() || !glide_.idle()) &&
+        ((scheduler_.busy() || swapper_.decoding() || swap_pending() || !settled()) &&
          !mid_bands)) {
         return Activity::Busy;
     }

@@ -12,7 +12,7 @@ uint32_t library_count(const void* data, uint32_t bytes) {
 Result library_model(const void* data, uint32_t bytes, uint32_t index, LibraryModel& out) {
     out = {nullptr, 0, ""};
     geom::Library lib;
-    if (const Result r = lib.open(data, bytes); !r.ok()) return r;
+    if (const Result r = lib.open(data, bytes); !r.ok()) return module::public_result(r);
     if (index >= lib.count()) return Result::fail(Status::OutOfRange, "no such model in the library", {"model", index});
     const geom::Library::Entry e = lib.entry(index);
     out = {e.file, e.bytes, e.name};

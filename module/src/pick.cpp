@@ -2,9 +2,7 @@
 // projection as the frame; the nearest triangle that covers the pixel's centre), its exact
 // facts, the selection (a tap's, or select()'s) and measuring between two faces.
 #include "core.h"
-#include "describe.h"
 #include "geom/measure.h"
-#include "core/format.h"
 
 #include <cstdlib>
 
@@ -57,7 +55,7 @@ Result Core::facts(uint32_t part, uint32_t face, FaceFacts& out) const {
     out = {};
     if (const Result r = check_face(part, face); !r.ok()) return r;
     geom::FaceGeometry g;
-    if (const Result r = picks_.describe({face, part}, g); !r.ok()) return r;
+    if (const Result r = scene_.face_geometry(face, part, g); !r.ok()) return r;
     static_assert(uint8_t(Surface::Extrusion) == uint8_t(pack::SurfaceType::Extrusion) && uint8_t(Surface::Plane) == uint8_t(pack::SurfaceType::Plane),
                   "Surface is pack::SurfaceType");
     out.hit = true, out.part = part, out.face = face;
@@ -104,7 +102,7 @@ Measurement Core::measure(const FaceFacts& a, const FaceFacts& b) const {
     Measurement m;
     geom::FaceGeometry g[2];
     if (!a.hit || !b.hit || !check_face(a.part, a.face).ok() || !check_face(b.part, b.face).ok() ||
-        !picks_.describe({a.face, a.part}, g[0]).ok() || !picks_.describe({b.face, b.part}, g[1]).ok()) {
+        !scene_.face_geometry(a.face, a.part, g[0]).ok() || !scene_.face_geometry(b.face, b.part, g[1]).ok()) {
         return m;
     }
     const geom::Relation r = geom::relate(g[0], g[1]);

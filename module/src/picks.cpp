@@ -2,13 +2,15 @@
 #include "picks.h"
 #include "core/format.h"
 #include "describe.h"
+#include "geom/measure.h"
 
 namespace facet::module {
 
 void Picks::reset() {
     selection_.clear();
     chosen_ = kNone;
-    highlight();
+    presenter_.overlay().set_chosen(kNone);
+    shown();
 }
 
 void Picks::picked(bool hit, const Face& f) {
@@ -59,11 +61,6 @@ void Picks::redraw() {
     else presenter_.redraw();
 }
 
-Result Picks::describe(const Face& p, geom::FaceGeometry& g) const {
-    const Block& b = scene_.block_of_face(p.face);
-    return geom::describe_face(b.pack, p.face - b.first_face, scene_.instances()[p.instance].m, g);
-}
-
 void Picks::panel() {
     if (!panel_ || selection_.count() == 0) {
         presenter_.overlay().set_lines(nullptr, 0);
@@ -75,7 +72,7 @@ void Picks::panel() {
     geom::FaceGeometry g[2];
     for (uint32_t i = 0; i < selection_.count(); ++i) {
         const Face& p = selection_[i];
-        if (!describe(p, g[i]).ok()) return;
+        if (!scene_.face_geometry(p.face, p.instance, g[i]).ok()) return;
         module::describe(g[i], p.face, unit, lines[i], sizeof lines[i]);
     }
     uint32_t n = selection_.count();

@@ -3,7 +3,6 @@
 // chosen in the parts list, drawn by the painter (the picked faces in the highlight colour, the
 // chosen part in focus) and described on the panel (each face's exact facts, and between two
 // faces their distance and angle).
-#include "geom/measure.h"
 #include "painter.h"
 #include "presenter.h"
 #include "scene.h"
@@ -40,9 +39,6 @@ public:
     void forget(Gone gone) {
         if (selection_.forget(gone)) shown();
     }
-    // The picked face's exact geometry, placed by its instance.
-    [[nodiscard]] Result describe(const Face& p, geom::FaceGeometry& g) const;
-
 private:
     void shown();       // the painter's highlight and focus, the panel's lines
     void highlight();   // the painter's highlight from the selection (and the focus)

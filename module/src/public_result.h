@@ -1,9 +1,10 @@
 #pragma once
-// What leaves the module (the Viewer's calls and events, and so the C API) carries the public
-// statuses only: Ok, OutOfRange, Full, Corrupt, Unsupported, NotFound and Busy. The layers'
-// own kinds are said as what they mean to a caller: geometry the tessellation refuses
-// (Degenerate, Crossing) is Corrupt input, a transfer that failed (Io) Unsupported (the module
-// does none). The text and the places keep the cause ("face 12: loops cross").
+// What leaves the module (the Viewer's calls and events, create(), model_needs() and
+// library_model(), and so the C API) carries the public statuses only: Ok, OutOfRange, Full,
+// Corrupt, Unsupported, NotFound and Busy. The layers' own kinds are said as what they mean to
+// a caller: geometry the tessellation refuses (Degenerate, Crossing) is Corrupt input, a
+// transfer that failed (Io) Unsupported (the module does none). The text and the places keep
+// the cause ("face 12: loops cross").
 #include "core/status.h"
 
 namespace facet::module {

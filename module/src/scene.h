@@ -11,6 +11,10 @@
 #include "geom/pack_index.h"
 #include "geom/tessellate.h"
 
+namespace facet::geom {
+struct FaceGeometry;
+} // namespace facet::geom
+
 #include <algorithm>
 #include <cstdint>
 #include <span>
@@ -159,6 +163,8 @@ public:
         return b.pack.faces()[f - b.first_face];
     }
     uint8_t surface_type(uint32_t f) const; // pack::SurfaceType of the face's surface
+    // Face f's exact geometry as instance i places it (geom/measure.h); its block must be in.
+    [[nodiscard]] Result face_geometry(uint32_t f, uint32_t instance, geom::FaceGeometry& out) const;
     // A plane face's plane in its part's coordinates (mm): a point and the unit normal out of
     // the face (its surface's, du x dv: z, or -z in a left-handed frame; turned when the face is
     // reversed). False for other surfaces.

@@ -1,13 +1,19 @@
 // What the scene says of a face from its pack and its edges' samples, without its mesh: its
-// surface's kind, its plane (in floats, and its normal in Q14 without soft float), a point of
+// exact geometry placed, its surface's kind, its plane (in floats, and its normal in Q14 without soft float), a point of
 // its boundary.
 #include "scene.h"
 
+#include "geom/measure.h"
 #include "geom/params.h"
 
 #include <bit>
 
 namespace facet::module {
+
+Result Scene::face_geometry(uint32_t f, uint32_t instance, geom::FaceGeometry& out) const {
+    const Block& b = block_of_face(f);
+    return geom::describe_face(b.pack, f - b.first_face, instances()[instance].m, out);
+}
 
 uint8_t Scene::surface_type(uint32_t f) const {
     const Block& b = block_of_face(f);

@@ -13,7 +13,7 @@ uint32_t Swapper::block_samples(uint32_t b) const {
 }
 
 bool Swapper::begin() {
-    if (!pending() || block_ != kNone || scheduler_.busy()) return false;
+    if (!pending() || scheduler_.busy()) return false;
     check_ = false;
     // Every block's size on the screen, once (Block::pixels); the largest left out first.
     uint32_t best = kNone;

@@ -42,9 +42,10 @@ public:
     // The view changed: the left-out blocks are looked at again.
     void view_changed() { check_ = true; }
     // Blocks to look at, nothing decoding (the caller's to know: no drag).
-    bool pending() const { return check_ && scene_.blocked() && scene_.left_out().blocks > 0 && unpacked_.memory; }
-    // The block being decoded (kNone: none).
-    uint32_t decoding() const { return block_; }
+    bool pending() const { return check_ && block_ == kNone && scene_.blocked() && scene_.left_out().blocks > 0 && unpacked_.memory; }
+    // A block is being decoded: block() (kNone: none).
+    bool decoding() const { return block_ != kNone; }
+    uint32_t block() const { return block_; }
 
     // With nothing else under way (the caller's to know: no framing, glide or drag): the
     // left-out block largest on the screen begun, with the room made. True when begun.

@@ -2,7 +2,6 @@
 // the toolbar's actions, a section through a picked face (the plane itself: section.h), and the
 // parts list (choose, hide, show, isolate).
 #include "core.h"
-#include "geom/measure.h"
 
 namespace facet {
 

@@ -113,7 +113,10 @@ struct Carve {
 
 uint32_t pack_memory_bytes(const void* file, uint32_t file_bytes) { return module::pack_memory_need(file, file_bytes); }
 
-Result model_needs(const void* file, uint32_t file_bytes, ModelNeeds& needs) {
+namespace {
+
+// model_needs() before its status is made public.
+Result needs_of(const void* file, uint32_t file_bytes, ModelNeeds& needs) {
     needs = {};
     const geom::PackFileKind kind = file ? geom::pack_file_kind(file, file_bytes) : geom::PackFileKind::Unknown;
     pack::Needs measured{};
@@ -155,6 +158,11 @@ Result model_needs(const void* file, uint32_t file_bytes, ModelNeeds& needs) {
     needs.least_workspace_bytes = std::max(needs.least_workspace_bytes, workspace_bytes(Capacity{}));
     needs.workspace_bytes = std::max((roomy + 7) / 8 * 8, needs.least_workspace_bytes);
     return {};
+}
+} // namespace
+
+Result model_needs(const void* file, uint32_t file_bytes, ModelNeeds& needs) {
+    return module::public_result(needs_of(file, file_bytes, needs));
 }
 
 Core::Core(const Config& config, Carver& k, uint8_t* end)
@@ -271,7 +279,7 @@ Viewer* Viewer::create(const Config& config, void* workspace, size_t bytes, Resu
 
 Viewer* create_viewer(const Config& config, void* workspace, size_t bytes, size_t least, Result* why) {
     auto refuse = [&](Result r) -> Viewer* {
-        if (why) *why = r;
+        if (why) *why = module::public_result(r);
         return nullptr;
     };
     if (!workspace || (reinterpret_cast<uintptr_t>(workspace) & 7)) {
