@@ -3,6 +3,7 @@
 #include "geom/inflate.h"
 #include "geom/unlzma.h"
 
+#include <algorithm>
 #include <cstring>
 
 namespace facet::geom {
@@ -91,7 +92,7 @@ uint32_t stored_pack_bytes(const void* data, uint32_t available) {
     return read_head(data, available, h) && h.pack_bytes <= kMaxBytes ? h.pack_bytes : 0;
 }
 
-Result stored_pack_counts(const void* data, uint32_t available, PackCounts& out, LzmaProbs& probs) {
+Result stored_pack_counts(const void* data, uint32_t available, PackCounts& out, LzmaProbs& probs, bool head_only) {
     out = {};
     // The head and the section table: decoded alone for a compressed file (its first bytes need
     // no more of the output than themselves).
@@ -103,9 +104,10 @@ Result stored_pack_counts(const void* data, uint32_t available, PackCounts& out,
         std::memcpy(head, data, have);
     } else if (kind == PackFileKind::Lzma) {
         CompressedHead h;
-        if (!read_head(data, available, h) || uint64_t(sizeof(LzmaHead)) + h.stream_bytes > available) {
+        if (!read_head(data, available, h) || (!head_only && uint64_t(sizeof(LzmaHead)) + h.stream_bytes > available)) {
             return Result::fail(Status::Corrupt, "the compressed head is cut short or the file truncated", kFile);
         }
+        if (head_only) h.stream_bytes = std::min<uint32_t>(h.stream_bytes, available - uint32_t(sizeof(LzmaHead)));
         const uint32_t want = h.pack_bytes < sizeof head ? h.pack_bytes : uint32_t(sizeof head);
         LzmaDecoder d;
         const auto* in = static_cast<const uint8_t*>(data) + sizeof(LzmaHead);
@@ -114,9 +116,10 @@ Result stored_pack_counts(const void* data, uint32_t available, PackCounts& out,
         have = d.written(); // (a stream longer than the head is no fault here)
     } else if (kind == PackFileKind::Deflated) {
         CompressedHead h;
-        if (!read_head(data, available, h) || uint64_t(sizeof(DeflatedHead)) + h.stream_bytes > available) {
+        if (!read_head(data, available, h) || (!head_only && uint64_t(sizeof(DeflatedHead)) + h.stream_bytes > available)) {
             return Result::fail(Status::Corrupt, "the compressed head is cut short or the file truncated", kFile);
         }
+        if (head_only) h.stream_bytes = std::min<uint32_t>(h.stream_bytes, available - uint32_t(sizeof(DeflatedHead)));
         const uint32_t want = h.pack_bytes < sizeof head ? h.pack_bytes : uint32_t(sizeof head);
         const auto* in = static_cast<const uint8_t*>(data) + sizeof(DeflatedHead);
         const Result r = inflate({in, h.stream_bytes}, {head, want}, have);

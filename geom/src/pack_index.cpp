@@ -59,7 +59,7 @@ Result PackIndex::fail(const char* what, uint32_t section, uint32_t index) {
     return Result::fail(Status::Corrupt, what, index_place(section, index));
 }
 
-Result PackIndex::open(const void* data, uint32_t size) {
+Result PackIndex::open(const void* data, uint32_t size, uint32_t file_bytes) {
     *this = PackIndex{};
     const uint8_t* base = static_cast<const uint8_t*>(data);
     if (!data || (reinterpret_cast<uintptr_t>(data) & 3)) return fail("the index is not 4-byte aligned", 0, 0);
@@ -69,11 +69,12 @@ Result PackIndex::open(const void* data, uint32_t size) {
     if (h->version != kBlockedVersion) return fail("unsupported version", 0, 0);
     if (h->header_bytes != sizeof(IndexHeader)) return fail("unexpected header size", 0, 0);
     if (h->flags != 0 || h->reserved[0] != 0 || h->reserved[1] != 0) return fail("the header's flags or reserved fields are not 0", 0, 0);
-    if (h->total_bytes > size) return fail("the file is longer than the bytes given (truncated)", 0, 0);
+    if (h->total_bytes > file_bytes) return fail("the file is longer than the bytes given (truncated)", 0, 0);
     if (h->total_bytes > kMaxBlockedBytes) return fail("larger than the 256 MiB limit", 0, 0);
     if (h->index_bytes < sizeof(IndexHeader) || h->index_bytes > h->total_bytes || (h->index_bytes & 3)) {
         return fail("the index's size is out of range", 0, 0);
     }
+    if (h->index_bytes > size) return fail("the index is longer than the bytes read of it", 0, 0);
     if (h->section_count > kMaxSections) return fail("too many sections", 0, 0);
     const uint64_t table_end = sizeof(IndexHeader) + uint64_t(h->section_count) * sizeof(SectionEntry);
     if (table_end > h->index_bytes) return fail("section table runs past the index", 0, 0);
@@ -121,6 +122,7 @@ Result PackIndex::open(const void* data, uint32_t size) {
     }
     base_ = base;
     header_ = h;
+    mapped_ = size >= h->total_bytes;
     return check_records();
 }
 

@@ -12,7 +12,8 @@ namespace {
 
 using namespace facet;
 
-static_assert(int(Status::Busy) == FACET_BUSY && int(Status::NotFound) == FACET_NOT_FOUND, "the C statuses are facet::Status's public ones");
+static_assert(int(Status::Busy) == FACET_BUSY && int(Status::NotFound) == FACET_NOT_FOUND && int(Status::Io) == FACET_IO,
+              "the C statuses are facet::Status's public ones");
 static_assert(int(Interface::Full) == FACET_INTERFACE_FULL && int(Interface::StatusLine) == FACET_INTERFACE_STATUS_LINE,
               "the C interfaces are facet::Interface");
 static_assert(int(Event::Kind::ModelFailed) == FACET_EVENT_MODEL_FAILED && int(Event::Kind::Picked) == FACET_EVENT_PICKED,

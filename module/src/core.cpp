@@ -69,6 +69,8 @@ void Core::unload() {
     presenter_.reset();
     scene_.close();
     pack_bytes_ = pack_file_bytes_ = 0;
+    reader_.close();
+    open_path_[0] = 0;
     models_.forget();
     sectioning_.reset();
     picks_.reset();
@@ -76,27 +78,35 @@ void Core::unload() {
 
 Result Core::load(const void* file, uint32_t file_bytes, void* memory, uint32_t memory_bytes) {
     unload();
+    return open_pack(file, file_bytes, memory, memory_bytes, nullptr);
+}
+
+// A pack file opened into the scene (nothing loaded): in memory, or with a reader on storage a
+// blocked pack's index read into the pack memory (storage.cpp).
+Result Core::open_pack(const void* file, uint32_t file_bytes, void* memory, uint32_t memory_bytes, module::Reader* reader) {
     if (geom::is_library(file, file_bytes)) {
         return Result::fail(Status::Unsupported, "a library of several models: set_library() and open_model() open one");
     }
     const geom::PackFileKind kind = file ? geom::pack_file_kind(file, file_bytes) : geom::PackFileKind::Unknown;
+    if (reader && kind != geom::PackFileKind::Blocked) return Result::fail(Status::Corrupt, "no blocked pack's index here");
     const bool decoding = kind != geom::PackFileKind::Pack && kind != geom::PackFileKind::Unknown;
-    const uint32_t file_size = file ? geom::pack_file_bytes(file, file_bytes) : 0; // (a file in the pack memory is decoded over)
+    // (a file in the pack memory is decoded over; an index read from storage is counted in the need)
+    const uint32_t file_size = reader ? 0 : file ? geom::pack_file_bytes(file, file_bytes) : 0;
     uint8_t* model_end = end_;
     // A blocked pack larger than the memory: its largest blocks, the rest as boxes.
     const module::BlockCut cut =
-        kind == geom::PackFileKind::Blocked ? cut_blocks(file, file_bytes, file_size, memory, memory_bytes) : module::BlockCut{};
-    const uint32_t need = file ? module::pack_memory_need(file, file_bytes, cut) : 0;
+        kind == geom::PackFileKind::Blocked ? cut_blocks(file, file_bytes, file_size, memory, memory_bytes, reader) : module::BlockCut{};
+    const uint32_t need = file ? module::pack_memory_need(file, file_bytes, cut, reader) : 0;
     if (Result r = place_pack(file, file_size, need, memory, memory_bytes, model_end); !r.ok()) return r;
     if (decoding) work(Event::Kind::WorkBegin, Work::Unpack, 0);
     module::Unpacked unpacked;
-    const Result decoded = module::unpack(file, file_bytes, memory, memory_bytes, cut, unpacked);
+    const Result decoded = module::unpack(file, file_bytes, memory, memory_bytes, cut, unpacked, reader);
     if (decoding) work(Event::Kind::WorkEnd, Work::Unpack, 0);
     if (!decoded.ok()) return decoded;
     if (Result r = module::open_unpacked(unpacked, scene_); !r.ok()) return r;
     swapper_.open(unpacked);
     if (Result r = plan(scene_.face_count(), scene_.edge_count(), scene_.edge_count() - scene_.left_out().edges, model_end); !r.ok()) return r;
-    pack_file_bytes_ = file_size;
+    pack_file_bytes_ = reader ? reader->bytes() : file_size;
     pack_bytes_ = unpacked.bytes;
     const uint32_t bytes = pack_bytes_;
     detail_.reset(geom::default_tolerance(scene_.box_min(), scene_.box_max())); // (judged afresh)

@@ -34,6 +34,15 @@ public:
     Result set_library(const void* data, uint32_t bytes, void* memory, uint32_t memory_bytes);
     Result open_model(uint32_t index);
     uint32_t model_index() const { return models_.open(); }
+    // Models on the product's storage (storage.cpp).
+    Result set_storage(const Storage& storage, const char* folder, void* memory, uint32_t memory_bytes);
+    Result open_file(const char* path, void* memory, uint32_t memory_bytes);
+    void read_done(Status status) {
+        if (module::Reader* l = lister_) l->done(status);
+        else reader_.done(status);
+    }
+    Result storage_changed(bool present);
+    const module::Models& models() const { return models_; }
     Activity step(uint32_t budget_us);
     void flush_done() { presenter_.flush_done(); }
     void command(const module::Command& c);
@@ -107,6 +116,7 @@ private:
     void drain(); // the events held back while a piece of work ran
     void work(Event::Kind kind, Work what, uint32_t item);
     uint32_t now() const { return config_.now_us ? config_.now_us(config_.clock_user) : 0; }
+    module::Reader::Clock clock() const { return {config_.now_us, config_.clock_user}; }
     bool frame_wanted() const;
     bool boxes_while_sampling() const;
     // step()'s sources of work (core.cpp: kSources, in priority order): each says whether it has
@@ -168,7 +178,9 @@ private:
                       uint8_t*& model_end) const;
     // A blocked pack larger than the memory: the blocks it keeps (the largest), so that their
     // decoded packs and arrays fit with room to tessellate; the default (all) when all fit.
-    module::BlockCut cut_blocks(const void* file, uint32_t file_bytes, uint32_t file_size, void* memory, uint32_t memory_bytes) const;
+    module::BlockCut cut_blocks(const void* file, uint32_t file_bytes, uint32_t file_size, void* memory, uint32_t memory_bytes,
+                                const module::Reader* reader) const;
+    Result open_pack(const void* file, uint32_t file_bytes, void* memory, uint32_t memory_bytes, module::Reader* reader);
     // The blocks' levels (detail.h) and the blocks brought in as the view nears them (swap.h).
     module::FaceJudge judge_; // which faces the view wants (face_judge.h)
     module::Detail detail_;
@@ -181,7 +193,18 @@ private:
     bool refine_for_view(); // a block's level begun again for the view: true when begun (or tried)
     static void blocks_left_out(void* self); // (Swapper::LeftOut) the picks in them go
     void forget_left_out_picks();
-    module::Models models_; // a library's models (models.h)
+    module::Models models_; // a library's models, or a storage folder's (models.h)
+    // The product's storage (set_storage()), the model's file open on it (its path), and a
+    // file being listed (its reads' read_done()).
+    Storage storage_{};
+    bool has_storage_ = false, storage_present_ = false;
+    module::Reader reader_;
+    module::Reader* volatile lister_ = nullptr;
+    char open_path_[module::Models::kFolderBytes + kStorageNameBytes] = {};
+    uint32_t open_crc_ = 0; // the open file's index CRC (a card put back is the same card)
+    Result list_storage();
+    Result load_listed(uint32_t index); // the chooser's model `index` (library.cpp)
+    Result reopen_storage_file(); // the storage came back: the open model's file again, if unchanged
     uint32_t seen_moves_ = 0, seen_refined_ = 0; // the scene's moves and refinements the frames know of
     uint32_t pack_bytes_ = 0, pack_file_bytes_ = 0;
     bool carved_ = false;

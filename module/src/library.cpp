@@ -21,16 +21,26 @@ Result library_model(const void* data, uint32_t bytes, uint32_t index, LibraryMo
 
 Result Core::set_library(const void* data, uint32_t bytes, void* memory, uint32_t memory_bytes) {
     if (const Result r = models_.set(data, bytes, memory, memory_bytes); !r.ok()) return r;
-    presenter_.overlay().set_library(&models_.library());
+    presenter_.overlay().set_library(&models_);
     return {};
 }
 
+// Model `index` of the list loaded: a library's in place, a storage folder's through it.
+Result Core::load_listed(uint32_t index) {
+    if (!models_.on_storage()) {
+        const geom::Library::Entry e = models_.entry(index);
+        return load(e.file, e.bytes, models_.memory(), models_.memory_bytes());
+    }
+    char path[sizeof open_path_];
+    if (!models_.path(index, path, sizeof path)) return Result::fail(Status::OutOfRange, "the file's path is too long", {"model", index});
+    return open_file(path, models_.memory(), models_.memory_bytes());
+}
+
 Result Core::open_model(uint32_t index) {
-    if (models_.count() == 0) return Result::fail(Status::NotFound, "no library is set");
-    if (index >= models_.count()) return Result::fail(Status::OutOfRange, "no such model in the library", {"model", index});
+    if (models_.count() == 0) return Result::fail(Status::NotFound, "no library or storage folder with models is set");
+    if (index >= models_.count()) return Result::fail(Status::OutOfRange, "no such model in the list", {"model", index});
     const uint32_t before = models_.open();
-    const geom::Library::Entry e = models_.entry(index);
-    const Result r = load(e.file, e.bytes, models_.memory(), models_.memory_bytes());
+    const Result r = load_listed(index);
     if (r.ok()) {
         models_.opened(index);
         presenter_.overlay().set_models(false, index);
@@ -42,11 +52,8 @@ Result Core::open_model(uint32_t index) {
     failed.why = r;
     emit(failed);
     presenter_.overlay().mark_broken(index); // (the person holding it sees it in the chooser)
-    // The model open before comes back (its file is intact in the library; load() dropped it).
-    if (before != kNone && before != index) {
-        const geom::Library::Entry b = models_.entry(before);
-        if (load(b.file, b.bytes, models_.memory(), models_.memory_bytes()).ok()) models_.opened(before);
-    }
+    // The model open before comes back (its file is intact; load() dropped it).
+    if (before != kNone && before != index && load_listed(before).ok()) models_.opened(before);
     presenter_.overlay().set_models(true, models_.open()); // (the chooser stays for another)
     presenter_.invalidate();
     return r;

@@ -5,6 +5,7 @@
 // blocks read in place). When the file itself lies inside the pack memory, it is first moved to the memory's
 // end and decoded from there.
 #include "geom/pack_file.h"
+#include "reader.h"
 #include "scene.h"
 
 #include <cstdint>
@@ -24,8 +25,9 @@ bool kept(const geom::PackIndex& index, uint32_t b, const BlockCut& cut);
 void kept_counts(const geom::PackIndex& index, const BlockCut& cut, uint32_t& faces, uint32_t& edges);
 
 // The pack memory a file needs (facet::pack_memory_bytes()), with a blocked pack's blocks as
-// `cut` keeps them; 0 for one read in place, or unreadable.
-uint32_t pack_memory_need(const void* file, uint32_t file_bytes, const BlockCut& cut = {});
+// `cut` keeps them; 0 for one read in place, or unreadable. A blocked pack on storage (its index
+// at `file`, `file_bytes` long): the index, each block read, and the largest block's staging.
+uint32_t pack_memory_need(const void* file, uint32_t file_bytes, const BlockCut& cut = {}, const Reader* reader = nullptr);
 uint32_t pack_memory_need(const geom::PackIndex& index, const BlockCut& cut); // a blocked pack's, from its index
 
 // A pack file made readable: a whole pack's bytes, or a blocked pack's index and its blocks
@@ -43,11 +45,15 @@ struct Unpacked {
     uint8_t* memory = nullptr;
     uint32_t limit = 0;
     geom::LzmaProbs* probs = nullptr;
+    Reader* reader = nullptr; // the blocks' file, on storage (null: in memory with the index)
 };
 
 // Blocks brought in and left out as the view asks (a model larger than the memory):
 // The pack memory block b takes decoded (0 when it is read in place from the file).
 uint32_t block_memory(const Unpacked& u, uint32_t b);
+// The room block b takes while it is read from storage and decoded: its stored bytes (0 when
+// it is in memory, or plain).
+uint32_t block_staging(const Unpacked& u, uint32_t b);
 // The pack memory free for decoded blocks: what the table and the blocks held leave up to
 // u.limit (once compact_blocks() has moved them together).
 uint32_t free_block_memory(const Unpacked& u);
@@ -55,15 +61,20 @@ uint32_t free_block_memory(const Unpacked& u);
 // views moved with its bytes: u.bytes then ends the last.
 void compact_blocks(Unpacked& u);
 // Block b (left out) begun: decoded at u.bytes by `decoder` (its run() to go on until done), or
-// at once when read in place. Full when the room up to u.limit is short.
+// at once when read in place. Full when the room up to u.limit is short. From storage, its read
+// begun (Busy while it goes on: u.reader->poll(), then decode_block()).
 Result start_block(Unpacked& u, uint32_t b, geom::PackDecoder& decoder);
+// Block b read from storage (start_block()'s read ended): its decoding begun (a plain one: done).
+Result decode_block(Unpacked& u, uint32_t b, geom::PackDecoder& decoder);
 // Block b decoded (`decoder` done; none for one read in place): opened, checked against the
 // index and taken into the scene; u.bytes past it.
 Result finish_block(Unpacked& u, uint32_t b, const geom::PackDecoder* decoder, Scene& scene);
 
 // Decodes `file` into the pack memory as its form asks (the work a profile calls unpacking); a
-// blocked pack's blocks `cut` does not keep are left out.
-Result unpack(const void* file, uint32_t file_bytes, void* memory, uint32_t memory_bytes, const BlockCut& cut, Unpacked& out);
+// blocked pack's blocks `cut` does not keep are left out. With a reader, `file` is a blocked
+// pack's index read from it (in the pack memory), and the blocks kept are read through it.
+Result unpack(const void* file, uint32_t file_bytes, void* memory, uint32_t memory_bytes, const BlockCut& cut, Unpacked& out,
+              Reader* reader = nullptr);
 // Validates what unpack() made and opens it into the scene.
 Result open_unpacked(Unpacked& u, Scene& scene);
 

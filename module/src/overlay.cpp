@@ -186,7 +186,7 @@ void Overlay::status(const render::Target& t, const StatusInfo& s) const {
     char name[kNameCells * 4 + 1];
     format(name, sizeof name, "{}", s.name);
     render::cut_text(name, kNameCells);
-    if (library_ && library_->count() > 0 && button_count_ > 0) {
+    if (has_models() && button_count_ > 0) {
         render::fill_rect(t, 0, 0, render::text_width(name) + 6, status_rows_, models_open_ ? kButtonOn : kButton);
     }
     // A model larger than the memory: "faces 900/900 +4100 boxed" (the parts left out).
@@ -322,20 +322,36 @@ void Overlay::models_list(const render::Target& t) const {
     const Area p = parts_panel();
     if (p.height < 2 * kRow) return;
     char text[128];
-    format(text, sizeof text, "MODELS {}", library_->count());
+    if (!library_->on_storage()) {
+        format(text, sizeof text, "MODELS {}", library_->count());
+    } else if (storage_gone_) {
+        format(text, sizeof text, "MODELS: the card is gone");
+    } else if (library_->unlisted()) {
+        format(text, sizeof text, "MODELS {} in {} (+{} not listed)", library_->count(), library_->folder(), library_->unlisted());
+    } else {
+        format(text, sizeof text, "MODELS {} in {}", library_->count(), library_->folder());
+    }
     list_head(t, p, text);
     for (uint32_t r = 0; r < model_rows() && first_model_ + r < library_->count(); ++r) {
         const uint32_t m = first_model_ + r;
         const int32_t y = p.y + kRow + int32_t(r) * kRow;
         if (m == current_model_) render::fill_rect(t, p.x, y, p.width - 1, kRow, kButtonOn);
-        format(text, sizeof text, broken(m) ? "{} cannot open: {}" : "{} {}", m + 1, library_->entry(m).name);
+        if (library_->on_storage()) { // "2 PUMP.FPK  812 KB  3656 faces"
+            const Models::Listed& f = library_->listed(m);
+            char faces[24] = "";
+            if (f.library) format(faces, sizeof faces, "  library");
+            else if (f.faces != kNone) format(faces, sizeof faces, "  {} faces", f.faces);
+            format(text, sizeof text, broken(m) ? "{} cannot open: {}" : "{} {}  {} KB{}", m + 1, f.name, (f.bytes + 1023) / 1024, faces);
+        } else {
+            format(text, sizeof text, broken(m) ? "{} cannot open: {}" : "{} {}", m + 1, library_->name(m));
+        }
         render::cut_text(text, (p.width - 8) / render::kCellWidth);
         render::draw_text(t, p.x + 4, y + (kRow - render::kGlyphHeight) / 2, text, broken(m) ? kDim : kText);
     }
 }
 
 bool Overlay::name_at(int16_t x, int16_t y) const {
-    return library_ && library_->count() > 0 && button_count_ > 0 && y >= 0 && y < status_rows_ && x >= 0 &&
+    return has_models() && button_count_ > 0 && y >= 0 && y < status_rows_ && x >= 0 &&
            x < kNameCells * render::kCellWidth + 6;
 }
 

@@ -6,7 +6,7 @@
 // while the faces fill in. Text in facet's own bitmap font (render/text.h). Everything is
 // opaque (an incremental frame draws over the last one) and clipped to the target's band.
 #include "facet/viewer.h"
-#include "geom/library.h"
+#include "models.h"
 #include "render/raster.h"
 #include "scene.h"
 
@@ -77,7 +77,7 @@ public:
 
     // The models chooser (a library's): the parts list's panel, a row per model, the one open
     // highlighted; a tap on a row opens it. (Opening it closes the parts list.)
-    void set_library(const geom::Library* library) {
+    void set_library(const Models* library) {
         library_ = library;
         for (uint32_t& w : broken_) w = 0;
     }
@@ -86,11 +86,14 @@ public:
     }
     bool broken(uint32_t model) const { return model < pack::kMaxLibraryEntries && (broken_[model / 32] >> (model % 32)) & 1u; }
     void set_models(bool open, uint32_t current) {
-        models_open_ = open && library_ && library_->count() > 0, current_model_ = current, first_model_ = 0;
+        models_open_ = open && has_models(), current_model_ = current, first_model_ = 0;
         if (current != kNone && current >= model_rows()) first_model_ = current - model_rows() + 1; // (the open one in view)
         parts_open_ = parts_open_ && !models_open_;
     }
     bool models_open() const { return models_open_ && button_count_ > 0; }
+    // A chooser to show: a library's models, or a storage folder's (listed even when empty: it says so).
+    bool has_models() const { return library_ && (library_->count() > 0 || library_->on_storage()); }
+    void set_storage_gone(bool gone) { storage_gone_ = gone; }
     // With a library, the model's name at the status bar's left end is a button (drawn as one):
     // a tap on it opens the chooser, for a person with only the screen.
     bool name_at(int16_t x, int16_t y) const;
@@ -148,7 +151,8 @@ private:
     const Scene* scene_ = nullptr;
     bool parts_open_ = false;
     uint32_t first_row_ = 0, chosen_ = kNone;
-    const geom::Library* library_ = nullptr;
+    const Models* library_ = nullptr;
+    bool storage_gone_ = false;
     bool models_open_ = false;
     uint32_t current_model_ = kNone, first_model_ = 0;
     uint32_t broken_[pack::kMaxLibraryEntries / 32] = {};

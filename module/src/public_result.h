@@ -1,21 +1,20 @@
 #pragma once
 // What leaves the module (the Viewer's calls and events, create(), model_needs() and
 // library_model(), and so the C API) carries the public statuses only: Ok, OutOfRange, Full,
-// Corrupt, Unsupported, NotFound and Busy. The layers' own kinds are said as what they mean to
-// a caller: geometry the tessellation refuses (Degenerate, Crossing) is Corrupt input, a
-// transfer that failed (Io) Unsupported (the module does none). The text and the places keep
-// the cause ("face 12: loops cross").
+// Corrupt, Unsupported, NotFound, Busy and Io (the product's storage failed: facet/storage.h).
+// The tessellation's own kinds are said as what they mean to a caller: geometry it refuses
+// (Degenerate, Crossing) is Corrupt input. The text and the places keep the cause ("face 12:
+// loops cross").
 #include "core/status.h"
 
 namespace facet::module {
 
-constexpr bool is_public(Status s) { return s != Status::Degenerate && s != Status::Crossing && s != Status::Io; }
+constexpr bool is_public(Status s) { return s != Status::Degenerate && s != Status::Crossing; }
 
 constexpr Status public_status(Status s) {
     switch (s) {
     case Status::Degenerate:
     case Status::Crossing: return Status::Corrupt;
-    case Status::Io: return Status::Unsupported;
     default: return s;
     }
 }

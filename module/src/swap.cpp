@@ -34,13 +34,13 @@ bool Swapper::bring_in(uint32_t best) {
     // The room it needs: its decoded pack's, and its samples' (as load plans a block: six an
     // edge; the pool compacted first if short). Held blocks under half its size make it, the
     // least seen first, for a block at least kSwapPixels across; under that, only room free.
-    const uint32_t need = block_memory(unpacked_, best);
+    const uint32_t need = block_memory(unpacked_, best), stage = block_staging(unpacked_, best);
     const uint32_t need_samples = Scheduler::kNewBlockSamplesPerEdge * scene_.block(best).edges + 2;
     (void)scheduler_.make_sample_room(need_samples);
     uint64_t room = free_block_memory(unpacked_), samples = scene_.samples_room();
     // The victims chosen first (Block::leaving), left out only if together they make the room.
     uint32_t victims = 0;
-    while ((room < need || samples < need_samples) && best_pixels >= kSwapPixels) {
+    while ((room < need + stage || samples < need_samples) && best_pixels >= kSwapPixels) {
         uint32_t victim = kNone;
         float least = 0.5f * best_pixels;
         for (uint32_t b = 0; b < blocks; ++b) {
@@ -53,7 +53,7 @@ bool Swapper::bring_in(uint32_t best) {
         room += block_memory(unpacked_, victim), samples += block_samples(victim);
         ++victims;
     }
-    const bool fits = room >= need && samples >= need_samples;
+    const bool fits = room >= need + stage && samples >= need_samples;
     for (uint32_t b = 0; b < blocks && victims; ++b) {
         Block& block = scene_.block(b);
         if (!block.leaving) continue;
@@ -68,14 +68,28 @@ bool Swapper::bring_in(uint32_t best) {
     presenter_.invalidate();
     compact_blocks(unpacked_); // (the free room after the blocks held)
     block_ = best, decoded_ = false;
-    if (Result r = start_block(unpacked_, best, decoder_); !r.ok() && r.status != Status::Busy) return failed(best, r);
-    if (need == 0) finish(nullptr); // read in place
+    const Result r = start_block(unpacked_, best, decoder_);
+    reading_ = unpacked_.reader && unpacked_.reader->reading();
+    if (!r.ok() && r.status != Status::Busy) return failed(best, r);
+    if (need == 0 || (r.ok() && stage == 0)) finish(nullptr); // read in place, or read to its place
     return true;
 }
 
 // A piece of decoding (LZMA: kSwapBytes; DEFLATE: the block at once, up to about 64 KB), then
 // in a piece of its own the block opened (checked) and begun.
 void Swapper::step() {
+    if (reading_) { // from storage: the read ended, then its decoding begun
+        Result r = unpacked_.reader->poll();
+        if (r.status == Status::Busy) return;
+        reading_ = false;
+        if (r.ok()) r = decode_block(unpacked_, block_, decoder_);
+        if (r.ok()) {
+            finish(nullptr); // (a plain block: read to its place)
+        } else if (r.status != Status::Busy) {
+            (void)failed(block_, r.within({"block", block_}));
+        }
+        return;
+    }
     if (decoded_) {
         finish(&decoder_);
         return;
@@ -105,6 +119,11 @@ void Swapper::finish(const geom::PackDecoder* decoder) {
     }
 }
 
+void Swapper::storage_back() {
+    for (uint32_t b = 0; b < scene_.block_count(); ++b) scene_.block(b).refused = false;
+    check_ = true;
+}
+
 bool Swapper::leave_out_unseen(uint32_t keep) {
     if (!unpacked_.memory || scheduler_.busy() || block_ != kNone) return false;
     uint32_t dropped = 0;
@@ -124,7 +143,8 @@ bool Swapper::leave_out_unseen(uint32_t keep) {
 bool Swapper::failed(uint32_t b, const Result& why) {
     block_ = kNone;
     scene_.block(b).refused = true;
-    scene_.block(b).broken = scene_.block(b).broken || why.status != Status::Full;
+    // (a storage that failed, or went away, may be back: Io is not for good)
+    scene_.block(b).broken = scene_.block(b).broken || (why.status != Status::Full && why.status != Status::Io);
     Event e{};
     e.kind = Event::Kind::PassFailed;
     e.pass = {scheduler_.pass(), scheduler_.tolerance(), scene_.samples().used};

@@ -37,8 +37,10 @@ public:
     // A new model's blocks and pack memory (none: {}), nothing under way.
     void open(const Unpacked& unpacked) {
         unpacked_ = unpacked;
-        block_ = kNone, check_ = false;
+        block_ = kNone, check_ = false, reading_ = false;
     }
+    // The storage came back: blocks it failed to give are looked at again.
+    void storage_back();
     // The view changed: the left-out blocks are looked at again.
     void view_changed() { check_ = true; }
     // Blocks to look at, nothing decoding (the caller's to know: no drag).
@@ -50,7 +52,8 @@ public:
     // With nothing else under way (the caller's to know: no framing, glide or drag): the
     // left-out block largest on the screen begun, with the room made. True when begun.
     bool begin();
-    // A piece of the block's decoding, or, once decoded, the block opened and its level begun.
+    // A piece of the block's decoding (from storage: its read looked at first), or, once decoded,
+    // the block opened and its level begun.
     void step();
     // Room for a refinement of block `keep`: every held block off the screen left out. True
     // when some were.
@@ -75,6 +78,7 @@ private:
     bool check_ = false;    // the view changed since the left-out blocks were last looked at
     uint32_t block_ = kNone; // being decoded
     bool decoded_ = false;  // (opened and begun in the next piece)
+    bool reading_ = false;  // its bytes being read from storage (Unpacked::reader)
     geom::PackDecoder decoder_;
 };
 

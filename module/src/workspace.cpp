@@ -220,9 +220,12 @@ Result Core::place_pack(const void* file, uint32_t file_size, uint32_t need, voi
 // whole model needs only the least that opens it). By bisection: on the size above which all
 // are kept, then on the last block kept among those of the next size (copies of a part have
 // equal boxes).
-module::BlockCut Core::cut_blocks(const void* file, uint32_t file_bytes, uint32_t file_size, void* memory, uint32_t memory_bytes) const {
+module::BlockCut Core::cut_blocks(const void* file, uint32_t file_bytes, uint32_t file_size, void* memory, uint32_t memory_bytes,
+                                  const module::Reader* reader) const {
     geom::PackIndex index;
-    if ((reinterpret_cast<uintptr_t>(file) & 3) || !index.open(file, file_bytes).ok()) return {}; // (load() says why)
+    if ((reinterpret_cast<uintptr_t>(file) & 3) || !index.open(file, file_bytes, reader ? reader->bytes() : file_bytes).ok()) {
+        return {}; // (load() says why)
+    }
     uint32_t all_faces, all_edges;
     module::kept_counts(index, {}, all_faces, all_edges);
     auto fits = [&](const module::BlockCut& cut) {

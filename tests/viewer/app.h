@@ -57,6 +57,8 @@ struct App {
     uint32_t flushes = 0, pending = 0;
     uint32_t clock_us = 0, tick_us = 0; // a fake clock: each read advances it
     bool use_clock = false;
+    void (*on_clock)(void* user) = nullptr; // told of each clock read (time passing: a storage's transfer ends)
+    void* clock_user = nullptr;
     Interface interface = Interface::Off; // the model alone (the on-screen interface has tests of its own)
     // facet's rectangle on a larger screen (Display::x, y): the screen's size (0: w x h) and where.
     uint16_t screen_w = 0, screen_h = 0, at_x = 0, at_y = 0;
@@ -91,6 +93,7 @@ struct App {
         if (use_clock) {
             cfg.now_us = [](void* self) {
                 App& a = *static_cast<App*>(self);
+                if (a.on_clock) a.on_clock(a.clock_user);
                 return a.clock_us += a.tick_us;
             };
             cfg.clock_user = this;

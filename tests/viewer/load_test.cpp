@@ -178,8 +178,8 @@ TEST(Viewer, PartsCarryTheirNamesFromThePack) {
 TEST(Viewer, TheLayersOwnStatusesLeaveAsPublicOnes) {
     static_assert(module::public_status(Status::Degenerate) == Status::Corrupt);
     static_assert(module::public_status(Status::Crossing) == Status::Corrupt);
-    static_assert(module::public_status(Status::Io) == Status::Unsupported);
-    for (Status s : {Status::Ok, Status::OutOfRange, Status::Full, Status::Corrupt, Status::Unsupported, Status::NotFound, Status::Busy}) {
+    for (Status s : {Status::Ok, Status::OutOfRange, Status::Full, Status::Corrupt, Status::Unsupported, Status::NotFound, Status::Busy,
+                     Status::Io}) {
         EXPECT_EQ(module::public_status(s), s);
         EXPECT_TRUE(module::is_public(s));
     }

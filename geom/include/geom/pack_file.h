@@ -66,13 +66,14 @@ uint32_t stored_pack_bytes(const void* data, uint32_t available);
 
 // The counts of a whole pack's records and its Needs, from its head and section table alone (a
 // compressed file's first few hundred bytes decoded, an LZMA one's with `probs`).
-// Not validated: the pack's own open() checks them when it is read.
+// Not validated: the pack's own open() checks them when it is read. head_only: `data` is the
+// file's first bytes only (enough for the head: a file listed on storage).
 struct PackCounts {
     uint32_t faces = 0, edges = 0, shells = 0;
     bool has_needs = false; // the pack's Needs record (written in its head by the packer)
     pack::Needs needs{};
 };
-Result stored_pack_counts(const void* data, uint32_t available, PackCounts& out, LzmaProbs& probs);
+Result stored_pack_counts(const void* data, uint32_t available, PackCounts& out, LzmaProbs& probs, bool head_only = false);
 
 // Makes the file loaded at region[0, loaded) a pack at region[0, bytes). A compressed file is
 // moved to the region's end and decoded to its start: it needs the pack's size plus its own

@@ -22,7 +22,12 @@ class PackIndex {
 public:
     // Corrupt, with the bad record as the place, unless every check passes. `size`: the bytes
     // available at `data` (the file's own size is in its header: it may be shorter).
-    Result open(const void* data, uint32_t size);
+    Result open(const void* data, uint32_t size) { return open(data, size, size); }
+    // The index alone at `data` (`size` bytes, at least the index's), of a file of `file_bytes`
+    // read from storage: its blocks are not in memory (mapped() is false).
+    Result open(const void* data, uint32_t size, uint32_t file_bytes);
+    // The whole file lies in memory with the index: block_file() reads a block in place.
+    bool mapped() const { return mapped_; }
 
     const pack::IndexHeader& header() const { return *header_; }
     std::span<const pack::Block> blocks() const { return blocks_; }
@@ -30,7 +35,7 @@ public:
     std::span<const pack::Instance> instances() const { return instances_; }
     // What the whole model takes on a device (pack::Needs); null when the index says nothing.
     const pack::Needs* needs() const { return needs_.empty() ? nullptr : needs_.data(); }
-    // Block b as stored: an LZMA file or a plain pack (geom/pack_file.h reads either).
+    // Block b as stored: an LZMA file or a plain pack (geom/pack_file.h reads either). mapped() only.
     std::span<const uint8_t> block_file(uint32_t b) const {
         return {base_ + blocks_[b].offset, blocks_[b].stored_bytes};
     }
@@ -50,6 +55,7 @@ private:
     }
 
     const uint8_t* base_ = nullptr;
+    bool mapped_ = false;
     const pack::IndexHeader* header_ = nullptr;
     std::span<const pack::Block> blocks_;
     std::span<const pack::Part> parts_;

@@ -40,6 +40,7 @@ typedef uint16_t facet_rgb565;
  * tessellation refuses (degenerate, loops that cross) is CORRUPT here. */
 typedef enum {
     FACET_OK = 0, FACET_OUT_OF_RANGE, FACET_FULL, FACET_CORRUPT, FACET_UNSUPPORTED, FACET_NOT_FOUND, FACET_BUSY,
+    FACET_IO = 9, /* the product's storage failed (facet/storage.h: a card pulled) */
     FACET_STATUS_WIDE_ = 0x7FFFFFFF
 } facet_status;
 

@@ -18,6 +18,7 @@
 // interrupt): it only sets a flag. The callbacks run inside step() and load() on that thread and
 // may call flush_done() and the queries only. Input from an interrupt is queued by the
 // application and fed from its thread. Several Viewers (each with its own memory) are independent.
+#include "facet/storage.h"
 #include "facet/types.h"
 
 #include <cstddef>
@@ -73,6 +74,22 @@ public:
     Result set_library(const void* library, uint32_t bytes, void* memory = nullptr, uint32_t memory_bytes = 0);
     Result open_model(uint32_t index);
     uint32_t model_index() const; // the library's model open; kNone: none (or one load() was given)
+
+    // Models on the product's own storage (facet/storage.h: a memory card, USB, SPI flash, an
+    // RTOS filesystem). set_storage() lists `folder`'s pack files ("" or "/": the root) for the
+    // chooser, with their sizes and face counts; open_model() opens one of them, open_file() any
+    // by its path. A blocked pack (facet-pack's default) has its index read into `memory` (or
+    // the workspace's end) and its blocks as the view needs them; another pack is read whole
+    // into it and decoded there. Io: the storage failed (a read that never ends is given up
+    // after 5 s); NotFound: no such folder or file.
+    Result set_storage(const Storage& storage, const char* folder = "", void* memory = nullptr, uint32_t memory_bytes = 0);
+    Result open_file(const char* path);
+    // A storage read that returned Busy has ended (any context: a DMA or card interrupt).
+    void read_done(Status status);
+    // The storage went away (false: a card pulled: the model on screen stays, what it had not
+    // read stays boxes, the chooser is empty) or came back (true: the folder listed again, and
+    // the open model's blocks read again if its file is the same).
+    Result storage_changed(bool present);
 
     // Does pieces of work (a frame, a piece of a face's tessellation) until `budget_us` have
     // passed on the clock, and at least one piece. A piece takes at most about a millisecond
