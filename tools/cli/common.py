@@ -18,6 +18,7 @@ PACKAGES = [
     'cmake', 'ninja-build', 'g++', 'python3',
     'gcc-arm-none-eabi', 'binutils-arm-none-eabi', 'libnewlib-arm-none-eabi', 'libstdc++-arm-none-eabi-newlib',
     'qemu-system-arm',
+    'mtools', 'dosfstools',  # the memory card's images (FAT), as a PC makes them
     'libgtest-dev', 'libbenchmark-dev', 'libgmp-dev', 'zlib1g-dev', 'liblzma-dev',
     'clang', 'libclang-rt-14-dev',
     'libcgal-dev', 'gnuplot-nox', 'libsdl2-dev',
