@@ -6,7 +6,7 @@
 
 From Python: board.load('qemu-versatilepb') -> dict, with 'pack_address' and 'pack_bytes' as
 integers and 'size' as 'WxH'; board.can('qemu-versatilepb', 'mouse') -> what it can do (its
-"capabilities": screenshots, mouse, touch, bench, flash_runner); board.qemu_boards() -> the
+"capabilities": card, screenshots, mouse, touch, bench, flash_runner); board.qemu_boards() -> the
 boards QEMU runs (those with a "qemu" machine).
 """
 import json

@@ -43,6 +43,8 @@ RECORDS = {
     'end': ('region',),
     # the viewer (facet/records.h), and the firmware around it (firmware/viewer/main.cpp)
     'library': ('index', '=bytes', 'bytes', 'name...'),
+    'card': ('index', '=bytes', 'bytes', '=faces', 'faces', 'name...'),
+    'card_changed': ('state',),
     'model': ('pairs...',),
     'load_failed': ('status', 'why...'),
     'model_failed': ('model', 'status', 'why...'),

@@ -1,4 +1,5 @@
 // QEMU versatilepb board: reset sequence, driver singletons, captures and the memory report.
+#include "card_pl181.h"
 #include "clock_sp804.h"
 #include "console_pl011.h"
 #include "display_pl110.h"
@@ -23,6 +24,7 @@ Pl110Display display;
 boards::UartInput uart_input(console);
 Pl050Mouse mouse;
 bool mouse_ok = false;
+Pl181Card card;
 
 // Keys from the UART and the PS/2 mouse, in one stream.
 class BoardInput final : public hal::Input {
@@ -31,7 +33,7 @@ public:
         return (mouse_ok && mouse.poll(event)) || uart_input.poll(event);
     }
 } input;
-hal::Board the_board{board_config::kName, console, clock, display, input, &qemu::runner()};
+hal::Board the_board{board_config::kName, console, clock, display, input, &qemu::runner(), &card};
 } // namespace
 } // namespace facet::versatilepb
 

@@ -19,6 +19,7 @@
 //                       handled); "!shot NAME" + Enter: a screenshot (once the viewer has
 //                       drawn all the input before it); "!budget US" + Enter: step
 //                       budget, each step an instruction-count region; ESC leaves a command
+#include "card_storage.h"
 #include "facet/records.h"
 #include "facet/viewer.h"
 #include "facet_board_config.h"
@@ -320,6 +321,51 @@ hal::FreeRam take_faces_layer(hal::Console& con, hal::FreeRam ram, Display& d) {
     return {ram.start + used, (ram.bytes - used) & ~size_t(7)};
 }
 
+// The card's root folder in the chooser and its first model that opens (each listed on the
+// console: "@card N name bytes faces"); false when there is no card or nothing on it opens.
+bool open_card(firmware::CardStorage& card, hal::Card& slot, Viewer& v, Result& opened) {
+    hal::Console& con = session.board->console;
+    if (!slot.present()) return false;
+    if (Result r = card.mount(slot); !r.ok()) {
+        print(con, "viewer: the card cannot be read: {} ({})\n", r, r.status);
+        return false;
+    }
+    if (Result r = v.set_storage(card.storage(), "/"); !r.ok()) {
+        print(con, "viewer: the card's folder cannot be listed: {} ({})\n", r, r.status);
+        return false;
+    }
+    const uint32_t n = v.model_count();
+    print(con, "viewer: a card with {} models (key b lists them)\n", n);
+    for (uint32_t i = 0; i < n; ++i) {
+        Viewer::ListedModel m;
+        if (v.listed_model(i, m).ok()) print(con, "@card {} bytes {} faces {} {}\n", i + 1, m.bytes, m.faces == kNone ? 0 : m.faces, m.name);
+    }
+    for (uint32_t i = 0; i < n; ++i) {
+        opened = v.open_model(i);
+        if (opened.ok()) return true;
+    }
+    return n > 0; // (said: no model of the card opens)
+}
+
+// The pack region's pack, or its library's first model that opens.
+Result open_region(Viewer& v, const uint8_t* region, uint32_t models) {
+    hal::Console& con = session.board->console;
+    if (models > 0) {
+        print(con, "viewer: a library of {} models (key b lists them)\n", models);
+        for (uint32_t i = 0; i < models; ++i) {
+            LibraryModel m;
+            if (library_model(region, board_config::kPackBytes, i, m).ok()) print(con, "@library {} bytes {} {}\n", i + 1, m.bytes, m.name); // (the name last: it may hold spaces)
+        }
+    }
+    // A library opens its first model that opens (the others' failures said as they fail).
+    Result opened = models > 0 ? v.set_library(region, board_config::kPackBytes) : v.load(region, board_config::kPackBytes);
+    for (uint32_t i = 0; models > 0 && opened.ok() && i < models; ++i) {
+        if (v.open_model(i).ok()) break;
+        if (i + 1 == models) opened = Result::fail(Status::Corrupt, "no model of the library opens");
+    }
+    return opened;
+}
+
 } // namespace
 
 int facet_main(hal::Board& board) {
@@ -350,26 +396,19 @@ int facet_main(hal::Board& board) {
         return 1;
     }
     Viewer& v = *session.viewer;
-    if (models > 0) {
-        print(con, "viewer: a library of {} models (key b lists them)\n", models);
-        for (uint32_t i = 0; i < models; ++i) {
-            LibraryModel m;
-            if (library_model(region, board_config::kPackBytes, i, m).ok()) print(con, "@library {} bytes {} {}\n", i + 1, m.bytes, m.name); // (the name last: it may hold spaces)
-        }
-    }
-    // A library opens its first model that opens (the others' failures said as they fail).
-    Result opened = models > 0 ? v.set_library(region, board_config::kPackBytes) : v.load(region, board_config::kPackBytes);
-    for (uint32_t i = 0; models > 0 && opened.ok() && i < models; ++i) {
-        if (v.open_model(i).ok()) break;
-        if (i + 1 == models) opened = Result::fail(Status::Corrupt, "no model of the library opens");
-    }
+    // A memory card with models comes first (QEMU: ./facet run --card; the EVKB's microSD): its
+    // root folder's packs in the chooser; else the pack region's pack or library.
+    static firmware::CardStorage card;
+    Result opened = Result::fail(Status::NotFound, "no model on the card");
+    const bool from_card = board.card && open_card(card, *board.card, v, opened);
+    if (!from_card) opened = open_region(v, region, models);
     if (Result r = opened; !r.ok()) {
         char line[kRecordBytes];
         write_record(con, load_failed_record(r, line, sizeof line), line);
         print(con, "viewer: no valid pack: {} ({})\n", r, r.status);
         const bool blank = (region[0] == 0 && region[1] == 0 && region[2] == 0 && region[3] == 0) ||
                            (region[0] == 0xFF && region[1] == 0xFF && region[2] == 0xFF && region[3] == 0xFF);
-        if (blank) {
+        if (blank && !from_card) {
             print(con, "viewer: nothing was loaded at {} ({})\n", hex(board_config::kPackAddress),
                   board_config::kPackWritable ? "run.py --load MODEL.fpk@ADDRESS" : "./facet flash MODEL.step writes one there");
         }
@@ -388,6 +427,10 @@ int facet_main(hal::Board& board) {
             }
         }
         if (session.flush_pending && !board.display.busy()) session.flush_pending = false, v.flush_done();
+        if (Result why; card.poll(v, why)) { // a card pulled or put back
+            print(con, "@card_changed {}\n", card.present() ? "inserted" : "removed");
+            if (!why.ok()) print(con, "viewer: the card: {} ({})\n", why, why.status);
+        }
         if (session.measured) { // the picked faces' exact values, for the host (report.json)
             session.measured = false;
             const char* lines[3];

@@ -102,7 +102,8 @@ float Overlay::slider_at(int16_t y) const {
 }
 
 Area Overlay::parts_panel() const {
-    const int32_t w = toolbar_x_ / 2 < 200 ? toolbar_x_ / 2 : 200;
+    // (the models chooser wider: a file's name, size and faces)
+    const int32_t w = models_open_ ? (toolbar_x_ - 4 < 360 ? toolbar_x_ - 4 : 360) : toolbar_x_ / 2 < 200 ? toolbar_x_ / 2 : 200;
     const int32_t bottom = height_ - (line_count_ ? line_count_ * render::kLineHeight + 4 : 0);
     return area(0, status_rows_, w, bottom - status_rows_);
 }

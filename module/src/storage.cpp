@@ -254,6 +254,18 @@ Result Viewer::open_file(const char* path) {
     Core& c = *static_cast<Core*>(this);
     return module::public_result(c.open_file(path, c.models().memory(), c.models().memory_bytes()));
 }
+uint32_t Viewer::model_count() const { return static_cast<const Core*>(this)->models().count(); }
+Result Viewer::listed_model(uint32_t index, ListedModel& out) const {
+    const module::Models& m = static_cast<const Core*>(this)->models();
+    out = {"", 0, kNone};
+    if (index >= m.count()) return Result::fail(Status::OutOfRange, "no such model in the list", {"model", index});
+    if (m.on_storage()) {
+        out = {m.listed(index).name, m.listed(index).bytes, m.listed(index).faces};
+    } else {
+        out = {m.entry(index).name, m.entry(index).bytes, kNone};
+    }
+    return {};
+}
 void Viewer::read_done(Status status) { static_cast<Core*>(this)->read_done(status); }
 Result Viewer::storage_changed(bool present) { return module::public_result(static_cast<Core*>(this)->storage_changed(present)); }
 

@@ -2,6 +2,7 @@
 example, and the evaluation board's image."""
 import json
 import os
+import subprocess
 import sys
 
 from common import (INCOMPLETE_MESH, OVER_BUDGET, ROOT, Failure, build, existing_file, fresh, library_of, model_pack,
@@ -11,6 +12,7 @@ RUN_BOARD = 'qemu-versatilepb'  # the main job's: an ARM926 without an FPU, like
 SHOTS = ['wireframe', 'half', 'done', 'turned', 'dragged', 'zoomed', 'views', 'hidden-line', 'section', 'parts',
          'measure']
 LIBRARY_SHOTS = ['wireframe', 'half', 'done', 'turned', 'chooser', 'second']
+CARD_ROW_Y, CARD_ROW_H = 42, 20  # the chooser's first row's middle and its rows' height (module/src/overlay.cpp)
 
 
 def add(sub):
@@ -25,6 +27,9 @@ def add(sub):
                    'a library on the device, the chooser (key b) opening the second (tests/sessions/library.session)')
     p.add_argument('--window', action='store_true', help='a QEMU window to use yourself instead of the script '
                    '(keys on the terminal, the mouse in the window; h lists the keys, q quits)')
+    p.add_argument('--card', action='store_true', help='the models on a memory card instead: each packed onto a FAT32 '
+                   'image (out/run/card.img; the sample part and an assembly of it unless models are given) in the '
+                   "SD slot; the viewer lists them and opens the first, the session opens each from the chooser")
     p.set_defaults(run=cmd_run)
 
     p = sub.add_parser('sim', help='the desktop simulator: the module in an SDL window',
@@ -62,11 +67,46 @@ def add(sub):
     p.set_defaults(run=cmd_flash)
 
 
+def card_of(models, out):
+    """The models packed onto a card image (the sample part and a few copies of it placed as an
+    assembly when none are given), and a session that opens each from the chooser."""
+    import card
+    if not models:
+        say('making the sample part and an assembly of it (Open CASCADE): out/run/sample.step, sample-assembly.step')
+        sample = os.path.join(out, 'sample.step')
+        if run([tool('facet-sample-model'), sample], stdout=subprocess.DEVNULL) != 0:
+            raise Failure('cannot make the sample part')
+        assembly = os.path.join(out, 'sample-assembly.step')
+        if run([tool('facet-assembly'), assembly, '--faces', '600', sample], stdout=subprocess.DEVNULL) != 0:
+            raise Failure('cannot make the sample assembly')
+        models = [sample, assembly]
+    files = []
+    for i, m in enumerate(models):
+        base = os.path.splitext(os.path.basename(m))[0]
+        files.append((model_pack(m, out, name=f'card-{i + 1}'), f'{base}.fpk'))
+    image = os.path.join(out, 'card.img')
+    size = card.make(image, files)
+    say(f'a {size >> 20} MiB FAT32 card: ' + ', '.join(f'{n} ({os.path.getsize(p):,} bytes)' for p, n in files))
+    shots = ['wireframe', 'half', 'done', 'chooser']
+    lines = ['# ./facet run --card: the first model opens; then the chooser (key b) opens each of the others', 'screen 640x480',
+             'keys b', 'keys !shot chooser\\n', 'keys b']
+    for i in range(1, len(files)):
+        lines += ['keys b', f'point 60 {CARD_ROW_Y + CARD_ROW_H * i}', 'press left', 'release left', f'keys !shot model-{i + 1}\\n']
+        shots.append(f'model-{i + 1}')
+    lines.append('keys q')
+    session = os.path.join(out, 'card.session')
+    with open(session, 'w') as f:
+        f.write('\n'.join(lines) + '\n')
+    return image, session, shots, ' + '.join(n for _, n in files)
+
+
 def cmd_run(args, parser):
     models = [existing_file(parser, m) for m in args.model]
     setup()
     build(RUN_BOARD, 'host')
     out = fresh(os.path.join(ROOT, 'out', 'run'))
+    if args.card:
+        return run_card(args, models, out)
     if not models:
         say('making the sample part (Open CASCADE): out/run/sample.step')
     if len(models) > 1:  # a library: the device lists them, the session opens the second from its chooser
@@ -94,6 +134,34 @@ def cmd_run(args, parser):
     say('screenshots out/run/{' + ','.join(shots) + '}.png, budget report out/run/budgets.json (.md)')
     for p in json.load(open(os.path.join(out, 'report.json'))).get('picks', []):
         print(f'  picked face {p["face"]}: {"; ".join(p["lines"])}')
+    if rc == OVER_BUDGET:
+        raise Failure('OVER BUDGET (exit 4): out/run/budgets.md says where', OVER_BUDGET)
+    if rc == INCOMPLETE_MESH:
+        raise Failure('INCOMPLETE MESH (exit 5): faces failed on the device, out/run/uart.log says why', INCOMPLETE_MESH)
+    if rc != 0:
+        raise Failure(f'the budget report failed (exit {rc})')
+    return 0
+
+
+def run_card(args, models, out):
+    image, session, shots, name = card_of(models, out)
+    say(f'booting the viewer in QEMU ({RUN_BOARD}) with the card in its SD slot (PL181)')
+    cmd = [sys.executable, 'tools/qemu/run.py', '--board', RUN_BOARD, '--elf', f'build/{RUN_BOARD}/firmware/facet-viewer.elf',
+           '--out', out, '--card', image, '--icount', '--timeout', '900']
+    cmd += ['--window'] if args.window else ['--quiet', '--session', session]
+    if run(cmd) != 0:
+        log = os.path.join(out, 'uart.log')
+        if os.path.exists(log):
+            print(''.join(open(log).readlines()[-20:]), file=sys.stderr)
+        raise Failure('the viewer run failed (out/run/uart.log)')
+    if args.window:
+        return 0
+    rc = run([sys.executable, 'tools/budgets.py', os.path.join(out, 'report.json'), '--json', os.path.join(out, 'budgets.json'),
+              '--markdown', os.path.join(out, 'budgets.md'), '--model', name, '--strict'])
+    missing = [s for s in shots if not os.path.exists(os.path.join(out, f'{s}.png'))]
+    if missing:
+        raise Failure('screenshots missing: ' + ', '.join(missing) + ' (out/run/uart.log)')
+    say('screenshots out/run/{' + ','.join(shots) + '}.png, budget report out/run/budgets.json (.md)')
     if rc == OVER_BUDGET:
         raise Failure('OVER BUDGET (exit 4): out/run/budgets.md says where', OVER_BUDGET)
     if rc == INCOMPLETE_MESH:

@@ -121,6 +121,7 @@ def main():
     ap.add_argument('--elf', required=True)
     ap.add_argument('--out', required=True, help='directory for uart.log, screenshots, report.json')
     ap.add_argument('--load', action='append', default=[], metavar='FILE@ADDR')
+    ap.add_argument('--card', metavar='IMAGE', help="a memory card image (FAT) in the board's SD slot (board.json capabilities.card)")
     ap.add_argument('--type', default='', help='text typed into the UART at boot')
     ap.add_argument('--session', action='append', default=[], metavar='NAME|FILE',
                     help='a scripted session: tests/sessions/NAME.session or a file (before the --send entries)')
@@ -173,6 +174,12 @@ def main():
         if not path or not addr:
             raise SystemExit(f'run.py: --load wants FILE@ADDR, got {spec}')
         cmd += ['-device', f'loader,file={os.path.abspath(path)},addr={addr},force-raw=on']
+    if args.card:
+        if not boards.can(args.board, 'card'):
+            raise SystemExit(f'run.py: {args.board} has no memory card slot (board.json capabilities.card)')
+        if not os.path.isfile(args.card):
+            raise SystemExit(f'run.py: no card image {args.card}')
+        cmd += ['-drive', f'if=sd,format=raw,id=card,file={os.path.abspath(args.card)}']
     if args.icount:
         plugin = find_plugin()
         if not plugin:

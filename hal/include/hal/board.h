@@ -1,6 +1,7 @@
 #pragma once
 // What a board gives the portable code. Each board implements board() and the free functions.
 #include "hal/capture.h"
+#include "hal/card.h"
 #include "hal/clock.h"
 #include "hal/console.h"
 #include "hal/display.h"
@@ -15,6 +16,7 @@ struct Board {
     Display& display;
     Input& input;
     Capture* capture = nullptr; // screenshots for a watching host (QEMU); null: none
+    Card* card = nullptr;       // a memory card slot (hal/card.h); null: none
 };
 
 // The board's singletons, ready to use (startup has initialised them).

@@ -83,6 +83,14 @@ public:
     // into it and decoded there. Io: the storage failed (a read that never ends is given up
     // after 5 s); NotFound: no such folder or file.
     Result set_storage(const Storage& storage, const char* folder = "", void* memory = nullptr, uint32_t memory_bytes = 0);
+    // The chooser's models (a library's, or the storage folder's): how many, and each one's name,
+    // file size and faces (kNone: not known before it is opened).
+    struct ListedModel {
+        const char* name; // UTF-8
+        uint32_t bytes, faces;
+    };
+    uint32_t model_count() const;
+    Result listed_model(uint32_t index, ListedModel& out) const;
     Result open_file(const char* path);
     // A storage read that returned Busy has ended (any context: a DMA or card interrupt).
     void read_done(Status status);
