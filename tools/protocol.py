@@ -200,7 +200,7 @@ def pointer_to(x, y):
     return entries
 
 
-QEMU_ENTRIES = ('keys', 'mouse', 'move', 'press', 'release')
+QEMU_ENTRIES = ('keys', 'mouse', 'move', 'press', 'release', 'card')
 SIM_ENTRIES = ('wheel', 'drag', 'pinch', 'tap', 'click')  # the simulator's own (tools/sim/session.h)
 
 
@@ -213,6 +213,7 @@ def read_session(path, board=None):
       press [BUTTON]       a mouse button down (left, right, middle), held until 'release'
       release [BUTTON]     and up again
       point X Y            the pointer to screen pixel (X, Y) (moves from the corner)
+      card out|in          the memory card pulled from its slot, or put back (run.py --card)
       include NAME         tests/sessions/NAME.session's entries here
       screen WxH           the screen the pointer moves were written for
       [CAPABILITY] ENTRY   the entry only on a board that has it (board.json "capabilities")

@@ -70,7 +70,7 @@ void Core::unload() {
     scene_.close();
     pack_bytes_ = pack_file_bytes_ = 0;
     reader_.close();
-    open_path_[0] = 0;
+    open_path_[0] = 0, open_crc_ = 0;
     models_.forget();
     sectioning_.reset();
     picks_.reset();

@@ -201,7 +201,7 @@ private:
     module::Reader reader_;
     module::Reader* volatile lister_ = nullptr;
     char open_path_[module::Models::kFolderBytes + kStorageNameBytes] = {};
-    uint32_t open_crc_ = 0; // the open file's index CRC (a card put back is the same card)
+    uint32_t open_crc_ = 0; // a blocked pack's index CRC | 1 (a card put back holds the same file); 0: none
     Result list_storage();
     Result load_listed(uint32_t index); // the chooser's model `index` (library.cpp)
     Result reopen_storage_file(); // the storage came back: the open model's file again, if unchanged

@@ -150,6 +150,9 @@ Result Core::list_storage() {
     }
     lister_ = nullptr;
     storage_.dir_close(storage_.user, dir);
+    for (uint32_t i = 0; open_path_[0] && i < models_.count(); ++i) { // (the model open, listed again)
+        if (models_.path(i, path, sizeof path) && std::strcmp(path, open_path_) == 0) models_.opened(i);
+    }
     return {};
 }
 
@@ -203,7 +206,7 @@ Result Core::open_file(const char* path, void* memory, uint32_t memory_bytes) {
         return r;
     }
     std::memcpy(open_path_, path, std::strlen(path) + 1);
-    open_crc_ = h.crc32;
+    open_crc_ = kind == geom::PackFileKind::Blocked ? h.crc32 | 1u : 0; // (never 0 for a blocked pack)
     return {};
 }
 
@@ -222,7 +225,7 @@ Result Core::storage_changed(bool present) {
         return {};
     }
     Result listed = list_storage();
-    if (open_path_[0] && !reader_.is_open() && scene_.loaded()) {
+    if (open_crc_ && !reader_.is_open() && scene_.loaded()) { // (a blocked pack's: the others are read whole)
         if (Result r = reopen_storage_file(); !r.ok() && listed.ok()) listed = r;
     }
     return listed;
@@ -239,7 +242,7 @@ Result Core::reopen_storage_file() {
     again.close();
     if (!read.ok()) return Result::fail(Status::Io, "the open model's file cannot be read again", kStorage);
     std::memcpy(&h, head, sizeof h);
-    if (h.crc32 != open_crc_ || h.total_bytes != pack_file_bytes_) {
+    if ((h.crc32 | 1u) != open_crc_ || h.total_bytes != pack_file_bytes_) {
         return Result::fail(Status::NotFound, "the storage put back holds another file where the open model's was (its blocks stay boxes)", kStorage);
     }
     if (Result r = reader_.open(storage_, open_path_, clock()); !r.ok()) return r;

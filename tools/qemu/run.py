@@ -307,6 +307,18 @@ def main():
                             {'type': 'rel', 'data': {'axis': 'y', 'value': int(p[1])}}])
                     except (OSError, RuntimeError, IndexError, ValueError) as e:
                         report['failures'].append(f'move {rest}: {e}')
+                elif kind == 'card':  # the card pulled out or put back (QEMU's removable medium)
+                    try:
+                        if qmp is None:
+                            qmp = Qmp(qmp_path)
+                        if not args.card:
+                            raise ValueError('no --card')
+                        if rest.strip() == 'out':
+                            qmp.command('eject', device='card', force=True)
+                        else:
+                            qmp.command('blockdev-change-medium', device='card', filename=os.path.abspath(args.card), format='raw')
+                    except (OSError, RuntimeError, ValueError) as e:
+                        report['failures'].append(f'card {rest}: {e}')
                 else:
                     report['failures'].append(f'unknown script entry: {entry}')
                 if enq:
