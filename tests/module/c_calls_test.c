@@ -216,6 +216,47 @@ static void misuse(facet_viewer *loaded) {
     CHECK(facet_step(empty, 1000) == FACET_ACTIVITY_IDLE);
 }
 
+/* A storage of one file, "/models/sample.fpk" (the pack in memory), through C callbacks. */
+typedef struct {
+    const uint8_t *bytes;
+    uint32_t size;
+    int open_files, listed, present;
+} mem_storage;
+static facet_status mem_open(void *user, const char *path, void **file, uint32_t *bytes) {
+    mem_storage *m = (mem_storage *)user;
+    if (!m->present) return FACET_IO;
+    if (strcmp(path, "/models/sample.fpk") != 0) return FACET_NOT_FOUND;
+    *file = m, *bytes = m->size;
+    ++m->open_files;
+    return FACET_OK;
+}
+static facet_status mem_read(void *user, void *file, uint32_t offset, void *into, uint32_t bytes) {
+    mem_storage *m = (mem_storage *)user;
+    (void)file;
+    if (!m->present) return FACET_IO;
+    memcpy(into, m->bytes + offset, bytes);
+    return FACET_OK;
+}
+static void mem_close(void *user, void *file) {
+    (void)file;
+    --((mem_storage *)user)->open_files;
+}
+static facet_status mem_dir_open(void *user, const char *path, void **dir) {
+    mem_storage *m = (mem_storage *)user;
+    if (strcmp(path, "/models") != 0) return FACET_NOT_FOUND;
+    m->listed = 0, *dir = m;
+    return FACET_OK;
+}
+static facet_status mem_dir_read(void *user, void *dir, facet_storage_entry *entry) {
+    mem_storage *m = (mem_storage *)user;
+    (void)dir;
+    if (m->listed++ > 0) return FACET_NOT_FOUND;
+    strcpy(entry->name, "sample.fpk");
+    entry->bytes = m->size, entry->folder = false;
+    return FACET_OK;
+}
+static void mem_dir_close(void *user, void *dir) { (void)user, (void)dir; }
+
 int main(int argc, char **argv) {
     FILE *file;
     long size;
@@ -398,6 +439,35 @@ int main(int argc, char **argv) {
         CHECK(facet_set_library(NULL, pack, (uint32_t)size, NULL, 0).status == FACET_OUT_OF_RANGE);
         CHECK(facet_open_model(v, 0).status == FACET_NOT_FOUND && facet_open_model(NULL, 0).status == FACET_OUT_OF_RANGE);
         CHECK(facet_get_model_index(v) == FACET_NONE && facet_get_model_index(NULL) == FACET_NONE);
+    }
+    /* The same pack as a file on the product's storage: listed with its size and faces, opened, a
+     * card pulled (the list empty, the model stays) and put back. */
+    {
+        static mem_storage mem;
+        static facet_storage store = {&mem, mem_open, mem_read, mem_close, mem_dir_open, mem_dir_read, mem_dir_close};
+        facet_listed_model lm;
+        mem.bytes = (const uint8_t *)pack, mem.size = (uint32_t)size, mem.present = 1;
+        CHECK(facet_set_storage(v, &store, "/nowhere", NULL, 0).status == FACET_NOT_FOUND);
+        CHECK(facet_set_storage(v, &store, "/models", NULL, 0).status == FACET_OK);
+        CHECK(facet_model_count(v) == 1 && facet_model_count(NULL) == 0);
+        CHECK(facet_listed_model_get(v, 0, &lm).status == FACET_OK && strcmp(lm.name, "sample.fpk") == 0 && lm.bytes == (uint32_t)size);
+        CHECK(lm.faces == model.faces);
+        CHECK(facet_listed_model_get(v, 1, &lm).status == FACET_OUT_OF_RANGE && facet_listed_model_get(v, 0, NULL).status == FACET_OUT_OF_RANGE);
+        CHECK(facet_open_model(v, 0).status == FACET_OK && facet_get_model_index(v) == 0);
+        settle(v);
+        CHECK(facet_get_model(v).faces == model.faces && facet_get_stats(v).done > 0);
+        CHECK(facet_open_file(v, "/models/none.fpk").status == FACET_NOT_FOUND && facet_open_file(NULL, "x").status == FACET_OUT_OF_RANGE);
+        CHECK(facet_open_file(v, "/models/sample.fpk").status == FACET_OK);
+        settle(v);
+        mem.present = 0;
+        CHECK(facet_storage_changed(v, false).status == FACET_OK && facet_model_count(v) == 0);
+        CHECK(facet_get_model(v).faces == model.faces); /* the model stays */
+        CHECK(facet_open_file(v, "/models/sample.fpk").status == FACET_IO);
+        mem.present = 1;
+        CHECK(facet_storage_changed(v, true).status == FACET_OK && facet_model_count(v) == 1);
+        CHECK(facet_set_storage(v, NULL, "/", NULL, 0).status == FACET_OUT_OF_RANGE && facet_storage_changed(NULL, true).status == FACET_OUT_OF_RANGE);
+        facet_read_done(NULL, FACET_OK);
+        CHECK(mem.open_files == 0);
     }
     facet_unload(NULL);
     facet_unload(v);

@@ -172,6 +172,35 @@ facet_result facet_library_model(const void *library, uint32_t bytes, uint32_t i
 facet_result facet_set_library(facet_viewer *viewer, const void *library, uint32_t bytes, void *memory, uint32_t memory_bytes);
 facet_result facet_open_model(facet_viewer *viewer, uint32_t index);
 uint32_t facet_get_model_index(const facet_viewer *viewer); /* FACET_NONE: none from the library */
+
+/* Models on the product's own storage (facet/storage.h says the same in C++): a memory card,
+ * USB mass storage, SPI flash, a file of an RTOS filesystem, behind callbacks shaped as LVGL's
+ * lv_fs_drv_t and FatFs: open a file by its path (its handle and size), read bytes at an offset
+ * (FACET_OK: there; FACET_BUSY: a transfer goes on and facet_read_done() says when it ends, from
+ * any context), close it; a folder's entries for the chooser (optional: NULL lists nothing). The
+ * facet_storage itself must stay where it is while the viewer uses it (a static, as LVGL's
+ * drivers are). facet_set_storage lists `folder`'s *.fpk files (with sizes and faces) in the
+ * chooser; facet_open_model opens one, facet_open_file any by its path; a blocked pack is read
+ * an index and then a block at a time, never whole. FACET_IO: the storage failed. */
+typedef struct { char name[96]; uint32_t bytes; bool folder; } facet_storage_entry;
+typedef struct {
+    void *user;
+    facet_status (*open)(void *user, const char *path, void **file, uint32_t *bytes);
+    facet_status (*read)(void *user, void *file, uint32_t offset, void *into, uint32_t bytes);
+    void (*close)(void *user, void *file);
+    facet_status (*dir_open)(void *user, const char *path, void **dir);
+    facet_status (*dir_read)(void *user, void *dir, facet_storage_entry *entry); /* FACET_NOT_FOUND: the end */
+    void (*dir_close)(void *user, void *dir);
+} facet_storage;
+facet_result facet_set_storage(facet_viewer *viewer, const facet_storage *storage, const char *folder, void *memory,
+                               uint32_t memory_bytes);
+facet_result facet_open_file(facet_viewer *viewer, const char *path);
+void facet_read_done(facet_viewer *viewer, facet_status status); /* any context */
+facet_result facet_storage_changed(facet_viewer *viewer, bool present); /* a card pulled (false) or put back */
+/* The chooser's models (a library's or the storage folder's): name, file size, faces (FACET_NONE: unknown). */
+typedef struct { const char *name; uint32_t bytes, faces; } facet_listed_model;
+uint32_t facet_model_count(const facet_viewer *viewer);
+facet_result facet_listed_model_get(const facet_viewer *viewer, uint32_t index, facet_listed_model *out);
 void facet_flush_done(facet_viewer *viewer); /* any context, an interrupt included */
 void facet_key(facet_viewer *viewer, uint32_t key);
 void facet_pointer(facet_viewer *viewer, int16_t dx, int16_t dy, uint8_t buttons);
