@@ -117,7 +117,8 @@ Result Core::list_storage() {
     presenter_.overlay().set_storage_gone(false);
     presenter_.invalidate();
     if (!storage_.dir_open || !storage_.dir_read || !storage_.dir_close) return {};
-    for (uint32_t polls = 0; reader_.reading() && !reader_.ended(); ++polls) {
+    // (the open model's transfer under way ended first: the storage does one at a time)
+    for (uint32_t polls = 0; !reader_.idle(); ++polls) {
         if (polls > module::Reader::kWaitPolls) return Result::fail(Status::Io, "the storage did not end a read", kStorage);
     }
     char folder[module::Models::kFolderBytes];

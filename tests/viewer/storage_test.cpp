@@ -100,6 +100,7 @@ TEST(Storage, ABlockedPackFromStorageDrawsWhatItDrawsFromMemoryReadingOneBlockAt
             uint32_t largest = index.header().index_bytes;
             for (const pack::Block& b : index.blocks()) largest = std::max(largest, b.stored_bytes);
             EXPECT_LE(card.largest_read, largest);
+            EXPECT_LE(card.largest_read, module::Reader::kChunkBytes) << "a transfer at a time (a piece of work each)";
             EXPECT_LT(card.largest_read, file.size() / 2);
             EXPECT_EQ(sd.v->stats().pack_file_bytes, file.size());
             EXPECT_EQ(sd.count(Event::Kind::PassFailed), 0);
