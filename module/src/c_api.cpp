@@ -120,6 +120,35 @@ const Viewer* cpp(const facet_viewer* v) { return reinterpret_cast<const Viewer*
 
 } // namespace
 
+namespace {
+// The C storage's callbacks behind the C++ Storage's (user: the caller's facet_storage, which stays).
+Result storage_result(facet_status s, const char* what) {
+    return s == FACET_OK ? Result{} : Result::fail(Status(int32_t(s)), what, {"storage"});
+}
+const facet_storage* of(void* user) { return static_cast<const facet_storage*>(user); }
+Storage storage_of(const facet_storage* c) {
+    Storage s;
+    s.user = const_cast<facet_storage*>(c);
+    if (c->open) s.open = [](void* u, const char* path, void** f, uint32_t* n) { return storage_result(of(u)->open(of(u)->user, path, f, n), "the storage's open failed"); };
+    if (c->read) s.read = [](void* u, void* f, uint32_t at, void* into, uint32_t n) { return storage_result(of(u)->read(of(u)->user, f, at, into, n), "the storage's read failed"); };
+    if (c->close) s.close = [](void* u, void* f) { of(u)->close(of(u)->user, f); };
+    if (c->dir_open) s.dir_open = [](void* u, const char* path, void** d) { return storage_result(of(u)->dir_open(of(u)->user, path, d), "the storage's dir_open failed"); };
+    if (c->dir_read) {
+        s.dir_read = [](void* u, void* d, StorageEntry* e) {
+            facet_storage_entry c{};
+            const facet_status st = of(u)->dir_read(of(u)->user, d, &c);
+            static_assert(sizeof c.name == sizeof e->name, "the C entry's name is the C++ one's");
+            std::memcpy(e->name, c.name, sizeof e->name);
+            e->name[sizeof e->name - 1] = 0;
+            e->bytes = c.bytes, e->folder = c.folder;
+            return storage_result(st, "the storage's dir_read failed");
+        };
+    }
+    if (c->dir_close) s.dir_close = [](void* u, void* d) { of(u)->dir_close(of(u)->user, d); };
+    return s;
+}
+} // namespace
+
 extern "C" {
 
 size_t facet_describe(const facet_result* r, char* buffer, size_t size) { return r ? describe(from_c(*r), buffer, size) : 0; }
@@ -228,34 +257,6 @@ facet_result facet_open_model(facet_viewer* v, uint32_t index) {
 }
 uint32_t facet_get_model_index(const facet_viewer* v) { return v ? cpp(v)->model_index() : kNone; }
 
-namespace {
-// The C storage's callbacks behind the C++ Storage's (user: the caller's facet_storage, which stays).
-Result storage_result(facet_status s, const char* what) {
-    return s == FACET_OK ? Result{} : Result::fail(Status(int32_t(s)), what, {"storage"});
-}
-const facet_storage* of(void* user) { return static_cast<const facet_storage*>(user); }
-Storage storage_of(const facet_storage* c) {
-    Storage s;
-    s.user = const_cast<facet_storage*>(c);
-    if (c->open) s.open = [](void* u, const char* path, void** f, uint32_t* n) { return storage_result(of(u)->open(of(u)->user, path, f, n), "the storage's open failed"); };
-    if (c->read) s.read = [](void* u, void* f, uint32_t at, void* into, uint32_t n) { return storage_result(of(u)->read(of(u)->user, f, at, into, n), "the storage's read failed"); };
-    if (c->close) s.close = [](void* u, void* f) { of(u)->close(of(u)->user, f); };
-    if (c->dir_open) s.dir_open = [](void* u, const char* path, void** d) { return storage_result(of(u)->dir_open(of(u)->user, path, d), "the storage's dir_open failed"); };
-    if (c->dir_read) {
-        s.dir_read = [](void* u, void* d, StorageEntry* e) {
-            facet_storage_entry c{};
-            const facet_status st = of(u)->dir_read(of(u)->user, d, &c);
-            static_assert(sizeof c.name == sizeof e->name, "the C entry's name is the C++ one's");
-            std::memcpy(e->name, c.name, sizeof e->name);
-            e->name[sizeof e->name - 1] = 0;
-            e->bytes = c.bytes, e->folder = c.folder;
-            return storage_result(st, "the storage's dir_read failed");
-        };
-    }
-    if (c->dir_close) s.dir_close = [](void* u, void* d) { of(u)->dir_close(of(u)->user, d); };
-    return s;
-}
-} // namespace
 
 facet_result facet_set_storage(facet_viewer* v, const facet_storage* storage, const char* folder, void* memory, uint32_t memory_bytes) {
     FACET_NEED_VIEWER(v);

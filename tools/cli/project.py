@@ -31,10 +31,10 @@ def add(sub):
                    'fuzzing or the corpus-wide sweeps); ./facet test before saying a change is done')
     p.set_defaults(run=cmd_test)
 
-    p = sub.add_parser('fuzz', help='a long fuzz run (libFuzzer: cdt, pack, tessellate, api; facet-pack on mutated STEP: step)',
+    p = sub.add_parser('fuzz', help='a long fuzz run (libFuzzer: cdt, pack, storage, tessellate, api; facet-pack on mutated STEP: step)',
                        description='A long libFuzzer run (ASan + UBSan; default 10,000,000 executions over every core), '
                        'the corpus kept in out/fuzz/TARGET. Exit 1 if anything was found.')
-    p.add_argument('target', choices=['cdt', 'pack', 'tessellate', 'api', 'step'])
+    p.add_argument('target', choices=['cdt', 'pack', 'storage', 'tessellate', 'api', 'step'])
     p.add_argument('--runs', type=positive, default=10_000_000, metavar='N')
     p.add_argument('--jobs', type=positive, default=int(jobs()), metavar='J')
     p.add_argument('--seed', type=positive, default=None, metavar='S',
@@ -114,7 +114,7 @@ def cmd_fuzz(args, parser):
     corpus, artifacts, logs = (os.path.join(out, d) for d in ('corpus', 'artifacts', 'logs'))
     for d in (corpus, artifacts, logs):
         os.makedirs(d, exist_ok=True)
-    for seed in glob.glob(os.path.join(ROOT, 'tests', 'fuzz', 'corpus', t, '*')):
+    for seed in glob.glob(os.path.join(ROOT, 'tests', 'fuzz', 'corpus', 'pack' if t == 'storage' else t, '*')):  # (storage: the pack seeds, as files)
         dest = os.path.join(corpus, os.path.basename(seed))
         if not os.path.exists(dest):
             shutil.copy(seed, dest)
