@@ -14,16 +14,18 @@ def last_error(r):
     return (r.stderr.strip().splitlines() or [f'exit {r.returncode}'])[-1]
 
 
-def boot(board, elf, fpk, out, session, timeout):
+def boot(board, elf, fpk, out, session, timeout, card=None):
     """(report, uart log, exit code) of the run, or (None, None, why) when there is none: a pack
-    over the board's pack region, a runner that wrote no report. `board` as tools/board.py loads it."""
+    over the board's pack region, a runner that wrote no report. `board` as tools/board.py loads it.
+    card: a memory card image holding the pack instead (the board's SD slot; nothing loaded)."""
     size = os.path.getsize(fpk)
-    if size > board['pack_bytes']:
+    if card is None and size > board['pack_bytes']:
         return None, None, f'pack file {size:,} B > the board\'s pack region {board["pack_bytes"]:,} B'
     sends = [x for s in session for x in ('--send', s)]
+    source = ['--card', card] if card else ['--load', f'{fpk}@{board["pack"]["address"]}']
     r = subprocess.run([sys.executable, os.path.join(ROOT, 'tools', 'qemu', 'run.py'), '--board', board['name'],
-                        '--elf', elf, '--out', out, '--load', f'{fpk}@{board["pack"]["address"]}', '--icount',
-                        '--timeout', str(timeout), '--quiet'] + sends, capture_output=True, text=True)
+                        '--elf', elf, '--out', out, '--icount', '--timeout', str(timeout), '--quiet'] + source + sends,
+                       capture_output=True, text=True)
     rep_path = os.path.join(out, 'report.json')
     if not os.path.exists(rep_path):
         return None, None, f'the runner wrote no report (exit {r.returncode})'

@@ -4,9 +4,11 @@
 Each assembly is made with Open CASCADE (tools/assembly: copies of shared models on a grid,
 `distinct` copies or `instances` of each model), packed (facet-pack's default: blocked, LZMA),
 loaded at the board's pack address and shown; then turned (four key turns), zoomed in on the
-centre (six steps) and quit (tests/sessions/scale.session). One CSV row per board and assembly:
+centre (six steps) and quit (tests/sessions/scale.session). With --sources ram,card each pack
+also comes from a memory card image (tools/card.py) in the board's SD slot, nothing loaded into
+RAM (boards with capabilities.card). One CSV row per board, assembly and source:
 
-  board,kind,faces,pack_faces,step_bytes,pack_bytes,first_frame_instructions,first_view_instructions,
+  board,kind,source,faces,pack_faces,step_bytes,pack_bytes,first_frame_instructions,first_view_instructions,
   frame_rest_instructions,frame_rest_sharp_instructions,frame_turning_max_instructions,
   frame_zoomed_instructions,frame_dragging_max_instructions,triangles,deferred_faces,peak_ram_bytes,note
 
@@ -42,11 +44,12 @@ import sys
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, 'tools'))
 import board as boards  # noqa: E402
+import card  # noqa: E402
 import protocol  # noqa: E402
 from budget_rules import first_view, peak_ram  # noqa: E402
 from boot import boot, exit_note, last_error  # noqa: E402  (bench/boot.py: the benches' one run)
 
-COLUMNS = ['board', 'kind', 'faces', 'pack_faces', 'step_bytes', 'pack_bytes', 'first_frame_instructions', 'first_view_instructions',
+COLUMNS = ['board', 'kind', 'source', 'faces', 'pack_faces', 'step_bytes', 'pack_bytes', 'first_frame_instructions', 'first_view_instructions',
            'frame_rest_instructions', 'frame_rest_sharp_instructions', 'frame_turning_max_instructions', 'frame_zoomed_instructions',
            'frame_dragging_max_instructions', 'triangles',
            'deferred_faces', 'peak_ram_bytes', 'note']
@@ -101,10 +104,10 @@ def make(tool, args, what):
     return f'{what}: {last_error(r)}' if r.returncode != 0 else None
 
 
-def run_one(board_name, elf, fpk, out, timeout):
+def run_one(board_name, elf, fpk, out, timeout, image=None):
     board = boards.load(board_name)
     row, notes = {}, []
-    rep, uart, code = boot(board, elf, fpk, out, protocol.read_session(protocol.session_path('scale'), board_name), timeout)
+    rep, uart, code = boot(board, elf, fpk, out, protocol.read_session(protocol.session_path('scale'), board_name), timeout, image)
     if rep is None:
         return row, [code]
     bad = protocol.first(uart, 'load_failed')
@@ -136,12 +139,12 @@ def markdown(rows, date):
     m = lambda v: f'{v / 1e6:,.1f}' if isinstance(v, int) else '-'
     lines = [f'Measured {date} by `./facet bench scale` (exact QEMU instruction counts, M = million instructions, '
              '600 M = 1 s at 600 MHz; the goals of issue 25: first view 1,200 M for 10 k faces, a frame at rest 20 M).',
-             '', '| board | kind | faces | faces in the pack | pack KB | first frame M | first view M | frame at rest M '
+             '', '| board | kind | from | faces | faces in the pack | pack KB | first frame M | first view M | frame at rest M '
              '| at rest, tangent edges left out M | turning M | dragging M | zoomed M | triangles | deferred faces | peak RAM MiB | note |',
-             '|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|']
+             '|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|']
     for r in rows:
         peak = r.get('peak_ram_bytes')
-        lines.append(f'| {r["board"]} | {r["kind"]} | {r.get("faces", "-")} | {r.get("pack_faces", "-")} | '
+        lines.append(f'| {r["board"]} | {r["kind"]} | {r.get("source", "ram")} | {r.get("faces", "-")} | {r.get("pack_faces", "-")} | '
                      f'{r["pack_bytes"] // 1024 if r.get("pack_bytes") else "-"} | '
                      f'{m(r.get("first_frame_instructions"))} | {m(r.get("first_view_instructions"))} | '
                      f'{m(r.get("frame_rest_instructions"))} | {m(r.get("frame_rest_sharp_instructions"))} | '
@@ -201,6 +204,7 @@ def main():
     ap.add_argument('--faces', default='1000,3000,10000,30000')
     ap.add_argument('--kinds', default='distinct,instances')
     ap.add_argument('--boards', default='qemu-versatilepb,qemu-mps2-evkb')
+    ap.add_argument('--sources', default='ram', help='ram, card (an SD card image in the slot of a board with one), or both')
     ap.add_argument('--timeout', type=int, default=3600, help='seconds of wall clock per run')
     ap.add_argument('--date', default='')
     ap.add_argument('--strict', action='store_true', help='exit 1 unless every figure of every row was measured')
@@ -227,17 +231,24 @@ def main():
             stale = os.path.exists(packer) and os.path.exists(fpk) and os.path.getmtime(fpk) < os.path.getmtime(packer)
             if not why and (not os.path.exists(fpk) or stale):
                 why = make([args.packer], [step, '-o', fpk, '--quiet'], 'facet-pack')
-            for b in board_names:
-                row = {'board': b, 'kind': kind, 'faces': faces}
+            for b, source in [(b, s) for b in board_names for s in args.sources.split(',')]:
+                if source == 'card' and not boards.can(b, 'card'):
+                    continue
+                row = {'board': b, 'kind': kind, 'source': source, 'faces': faces}
                 notes = []
+                run_dir = os.path.join(args.work, b, name + ('-card' if source == 'card' else ''))
                 if why:
                     notes.append(why)
                 else:
                     row['step_bytes'], row['pack_bytes'] = os.path.getsize(step), os.path.getsize(fpk)
-                    got, notes = run_one(b, os.path.join(args.build, b, 'firmware', 'facet-viewer.elf'), fpk,
-                                         os.path.join(args.work, b, name), args.timeout)
+                    image = None
+                    if source == 'card':
+                        image = os.path.join(args.work, name + '.img')
+                        if not os.path.exists(image) or os.path.getmtime(image) < os.path.getmtime(fpk):
+                            card.make(image, [(fpk, name + '.fpk')])
+                    got, notes = run_one(b, os.path.join(args.build, b, 'firmware', 'facet-viewer.elf'), fpk, run_dir, args.timeout, image)
                     row.update(got)
-                    log = os.path.join(args.work, b, name, 'uart.log')
+                    log = os.path.join(run_dir, 'uart.log')
                     text = open(log, errors='replace').read() if os.path.exists(log) else ''
                     stated = protocol.first_fields(text, 'model')
                     if stated:  # (the faces held, and those of the parts left out)
@@ -245,7 +256,7 @@ def main():
                 row['note'] = '; '.join(notes)
                 rows.append(row)
                 fv = row.get('first_view_instructions')
-                print(f'{b} {name}: ' + (f'first view {fv / 1e6:,.0f} M, frame at rest '
+                print(f'{b} {name} {source}: ' + (f'first view {fv / 1e6:,.0f} M, frame at rest '
                                          f'{(row.get("frame_rest_instructions") or 0) / 1e6:.1f} M'
                                          if fv else 'not measured') + (f' ({row["note"]})' if row['note'] else ''),
                       flush=True)
@@ -263,7 +274,7 @@ def main():
     figures = ('first_frame_instructions', 'first_view_instructions', 'frame_rest_instructions',
                'frame_rest_sharp_instructions', 'frame_turning_max_instructions', 'frame_zoomed_instructions', 'peak_ram_bytes')
     if args.strict:  # (the test of this script) every figure of every row
-        missing = [f'{r["board"]} {r["kind"]}-{r["faces"]}: {c}' for r in rows for c in figures if r.get(c) in (None, '')]
+        missing = [f'{r["board"]} {r["kind"]}-{r["faces"]} {r["source"]}: {c}' for r in rows for c in figures if r.get(c) in (None, '')]
         for m in missing:
             print(f'scale.py: not measured: {m}', file=sys.stderr)
         return 1 if missing else 0

@@ -45,6 +45,7 @@ RECORDS = {
     'library': ('index', '=bytes', 'bytes', 'name...'),
     'card': ('index', '=bytes', 'bytes', '=faces', 'faces', 'name...'),
     'card_changed': ('state',),
+    'card_slot': ('controller', 'text...'),
     'model': ('pairs...',),
     'load_failed': ('status', 'why...'),
     'model_failed': ('model', 'status', 'why...'),

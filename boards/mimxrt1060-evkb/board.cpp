@@ -5,7 +5,8 @@
 // the ROM's speed from flash. Then, in order: the watchdogs off, the hot code into ITCM, the
 // vector table, .data and .bss, the MPU and the caches, 600 MHz, the pins, the console and the
 // clock, the panel's reset, the touch controller (which one answers says which panel is on the
-// connector, and so its timings), the LCD controller, the backlight; then facet_main.
+// connector, and so its timings), the LCD controller, the backlight, the microSD slot; then
+// facet_main.
 #include "clocks.h"
 #include "cortex_m.h"
 #include "facet_board_config.h"
@@ -22,6 +23,7 @@
 #include "pins.h"
 #include "runtime.h"
 #include "touch.h"
+#include "usdhc.h"
 
 #include <initializer_list>
 
@@ -35,7 +37,8 @@ Lcdif display;
 Lpi2c i2c(lpi2c::kLpi2c1);
 Touch touch;
 BoardInput input(console, touch, clock);
-hal::Board the_board{board_config::kName, console, clock, display, input};
+UsdhcCard card;
+hal::Board the_board{board_config::kName, console, clock, display, input, nullptr, &card};
 
 // The watchdogs the ROM may have left running (WDOG1/2 by fuse; the RTWDOG runs out of reset on
 // some parts): off, as NXP's SystemInit does (RM, WDOG: WCR.WDE; RTWDOG: unlock with
@@ -109,6 +112,8 @@ extern "C" [[noreturn]] void board_reset() {
     mmio::modify(gpio::kGpio2 + gpio::kDr, 1u << 31, 1u << 31); // backlight on
     // SW8 (GPIO5_IO00): an input (GDIR bit 0 clear, its reset state).
     mmio::modify(gpio::kGpio5 + gpio::kGdir, 1u, 0);
+    card.init(); // the microSD slot: its pins, power and clock (the card is started when the viewer asks)
+    print(console, "@card_slot uSDHC1 {}\n", card.present() ? "card in" : "empty");
     runtime::run_main();
 }
 

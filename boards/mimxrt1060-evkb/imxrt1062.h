@@ -13,8 +13,8 @@ constexpr uint32_t kCacrr = kBase + 0x10;  // ARM_PODF 2:0
 constexpr uint32_t kCbcdr = kBase + 0x14;  // SEMC_CLK_SEL 6, SEMC_ALT_CLK_SEL 7, IPG_PODF 9:8,
                                            // AHB_PODF 12:10, SEMC_PODF 18:16, PERIPH_CLK_SEL 25
 constexpr uint32_t kCbcmr = kBase + 0x18;  // PERIPH_CLK2_SEL 13:12, PRE_PERIPH_CLK_SEL 19:18, LCDIF_PODF 25:23
-constexpr uint32_t kCscmr1 = kBase + 0x1C; // PERCLK_PODF 5:0, PERCLK_CLK_SEL 6
-constexpr uint32_t kCscdr1 = kBase + 0x24; // UART_CLK_PODF 5:0, UART_CLK_SEL 6
+constexpr uint32_t kCscmr1 = kBase + 0x1C; // PERCLK_PODF 5:0, PERCLK_CLK_SEL 6, USDHC1_CLK_SEL 16 (0: PLL2 PFD2)
+constexpr uint32_t kCscdr1 = kBase + 0x24; // UART_CLK_PODF 5:0, UART_CLK_SEL 6, USDHC1_PODF 13:11
 constexpr uint32_t kCscdr2 = kBase + 0x38; // LCDIF_PRED 14:12, LCDIF_PRE_CLK_SEL 17:15,
                                            // LPI2C_CLK_SEL 18, LPI2C_CLK_PODF 24:19
 constexpr uint32_t kCdhipr = kBase + 0x48; // handshake busy: SEMC 0, AHB 1, PERIPH2 3, PERIPH 5, ARM 16
@@ -31,6 +31,7 @@ constexpr uint32_t kPllVideo = kBase + 0xA0;  // DIV_SELECT 6:0, POWERDOWN 12, E
 constexpr uint32_t kPllVideoNum = kBase + 0xB0;
 constexpr uint32_t kPllVideoDenom = kBase + 0xC0;
 constexpr uint32_t kMisc2 = kBase + 0x170;    // VIDEO_DIV 31:30 (0: /1, 1: /2, 3: /4)
+constexpr uint32_t kPfd528 = kBase + 0x100;   // PLL2's PFDs: PFD2_FRAC 21:16 (528 MHz x 18 / FRAC)
 constexpr uint32_t kPowerdown = 1u << 12, kEnable = 1u << 13, kBypass = 1u << 16, kLock = 1u << 31;
 } // namespace analog
 
@@ -57,6 +58,7 @@ constexpr uint32_t kMuxAdB0 = 0x401F80BC, kPadAdB0 = 0x401F82AC; // GPIO_AD_B0_0
 constexpr uint32_t kMuxAdB1 = 0x401F80FC, kPadAdB1 = 0x401F82EC; // GPIO_AD_B1_00
 constexpr uint32_t kMuxB0 = 0x401F813C, kPadB0 = 0x401F832C;     // GPIO_B0_00
 constexpr uint32_t kMuxB1 = 0x401F817C, kPadB1 = 0x401F836C;     // GPIO_B1_00
+constexpr uint32_t kMuxSdB0 = 0x401F81BC, kPadSdB0 = 0x401F83AC; // GPIO_SD_B0_00
 constexpr uint32_t kLpi2c1SclSelect = 0x401F84CC;                 // daisy chain inputs
 constexpr uint32_t kLpi2c1SdaSelect = 0x401F84D0;
 constexpr uint32_t kSnvsMuxWakeup = 0x400A8000, kSnvsPadWakeup = 0x400A8018; // IOMUXC_SNVS

@@ -73,6 +73,8 @@ def add(sub):
     p.add_argument('--faces', default='1000,3000,10000,30000', metavar='N,M')
     p.add_argument('--kinds', default='distinct,instances', metavar='A,B')
     p.add_argument('--boards', default='qemu-versatilepb,qemu-mps2-evkb', metavar='A,B')
+    p.add_argument('--sources', default='ram', metavar='ram,card', help='where the pack comes from: loaded into RAM, '
+                   'and/or a memory card image in the SD slot of a board with one (docs/storage.md)')
     p.set_defaults(run=cmd_scale)
 
     p = kinds.add_parser('itcm', help="profile the EVKB's configuration, rewrite its ITCM code list",
@@ -182,7 +184,7 @@ def cmd_scale(args, parser):
         '(QEMU, exact instruction counts; the assemblies are made once, the largest in minutes)')
     return run([sys.executable, 'bench/scale.py', '--assembly', tool('facet-assembly'), '--packer', tool('facet-pack'),
                 '--build', 'build', '--work', os.path.join(ROOT, 'out', 'bench', 'scale'), '--csv', csv,
-                '--faces', args.faces, '--kinds', args.kinds, '--boards', args.boards,
+                '--faces', args.faces, '--kinds', args.kinds, '--boards', args.boards, '--sources', args.sources,
                 '--date', datetime.date.today().isoformat()] + models)
 
 
