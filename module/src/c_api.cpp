@@ -274,8 +274,8 @@ facet_result facet_storage_changed(facet_viewer* v, bool present) {
     FACET_NEED_VIEWER(v);
     return to_c(cpp(v)->storage_changed(present));
 }
-uint32_t facet_model_count(const facet_viewer* v) { return v ? cpp(v)->model_count() : 0; }
-facet_result facet_listed_model_get(const facet_viewer* v, uint32_t index, facet_listed_model* out) {
+uint32_t facet_get_model_count(const facet_viewer* v) { return v ? cpp(v)->model_count() : 0; }
+facet_result facet_get_listed_model(const facet_viewer* v, uint32_t index, facet_listed_model* out) {
     FACET_NEED_VIEWER(v);
     if (!out) return to_c(Result::fail(Status::OutOfRange, "no facet_listed_model to fill"));
     Viewer::ListedModel m;

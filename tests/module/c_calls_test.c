@@ -449,10 +449,10 @@ int main(int argc, char **argv) {
         mem.bytes = (const uint8_t *)pack, mem.size = (uint32_t)size, mem.present = 1;
         CHECK(facet_set_storage(v, &store, "/nowhere", NULL, 0).status == FACET_NOT_FOUND);
         CHECK(facet_set_storage(v, &store, "/models", NULL, 0).status == FACET_OK);
-        CHECK(facet_model_count(v) == 1 && facet_model_count(NULL) == 0);
-        CHECK(facet_listed_model_get(v, 0, &lm).status == FACET_OK && strcmp(lm.name, "sample.fpk") == 0 && lm.bytes == (uint32_t)size);
+        CHECK(facet_get_model_count(v) == 1 && facet_get_model_count(NULL) == 0);
+        CHECK(facet_get_listed_model(v, 0, &lm).status == FACET_OK && strcmp(lm.name, "sample.fpk") == 0 && lm.bytes == (uint32_t)size);
         CHECK(lm.faces == model.faces);
-        CHECK(facet_listed_model_get(v, 1, &lm).status == FACET_OUT_OF_RANGE && facet_listed_model_get(v, 0, NULL).status == FACET_OUT_OF_RANGE);
+        CHECK(facet_get_listed_model(v, 1, &lm).status == FACET_OUT_OF_RANGE && facet_get_listed_model(v, 0, NULL).status == FACET_OUT_OF_RANGE);
         CHECK(facet_open_model(v, 0).status == FACET_OK && facet_get_model_index(v) == 0);
         settle(v);
         CHECK(facet_get_model(v).faces == model.faces && facet_get_stats(v).done > 0);
@@ -460,11 +460,11 @@ int main(int argc, char **argv) {
         CHECK(facet_open_file(v, "/models/sample.fpk").status == FACET_OK);
         settle(v);
         mem.present = 0;
-        CHECK(facet_storage_changed(v, false).status == FACET_OK && facet_model_count(v) == 0);
+        CHECK(facet_storage_changed(v, false).status == FACET_OK && facet_get_model_count(v) == 0);
         CHECK(facet_get_model(v).faces == model.faces); /* the model stays */
         CHECK(facet_open_file(v, "/models/sample.fpk").status == FACET_IO);
         mem.present = 1;
-        CHECK(facet_storage_changed(v, true).status == FACET_OK && facet_model_count(v) == 1);
+        CHECK(facet_storage_changed(v, true).status == FACET_OK && facet_get_model_count(v) == 1);
         CHECK(facet_set_storage(v, NULL, "/", NULL, 0).status == FACET_OUT_OF_RANGE && facet_storage_changed(NULL, true).status == FACET_OUT_OF_RANGE);
         facet_read_done(NULL, FACET_OK);
         CHECK(mem.open_files == 0);

@@ -8,6 +8,7 @@
 #include "fake_storage.h"
 #include "pack_blocks.h"
 #include "pack_io.h"
+#include "packs.h"
 
 #include <string>
 #include <vector>
@@ -314,4 +315,44 @@ TEST(Storage, CallsRefuseWhatTheyCannotTake) {
     EXPECT_EQ(app.v->open_file("/missing.fpk").status, Status::NotFound);
     EXPECT_EQ(app.v->open_file(nullptr).status, Status::OutOfRange);
     EXPECT_EQ(app.v->set_storage(card.storage(), std::string(200, 'x').c_str()).status, Status::OutOfRange);
+}
+
+// A pack larger than the EVKB's 7 MiB flash region and than the workspace opens from storage:
+// its index read, its largest blocks in, the rest boxes; zooming in reads more, a block at a time.
+TEST(Storage, APackLargerThanTheFlashAndTheWorkspaceOpensFromStorage) {
+    // Parts of long outlines (a 3,000-gon each): a large pack of few faces, as plain blocks.
+    const Bytes part = polygon_and_triangle(3000);
+    std::vector<Pack> packs(7u * 1024 * 1024 / part.size() + 8);
+    for (Pack& p : packs) ASSERT_TRUE(p.open(part.data(), uint32_t(part.size())).ok());
+    const Bytes combined = combine_packs(packs, 400.0f);
+    Pack whole;
+    ASSERT_TRUE(whole.open(combined.data(), uint32_t(combined.size())).ok());
+    Bytes file;
+    std::string error;
+    ASSERT_TRUE(make_blocked(whole, {}, {64 * 1024, BlockStore::Plain}, file, error)) << error;
+    ASSERT_GT(file.size(), 7u << 20) << "larger than the EVKB's pack region";
+    FakeStorage card;
+    card.files["/big.fpk"] = file;
+    App app;
+    start(app, card, 6u << 20); // (a workspace smaller than the file)
+    ASSERT_TRUE(app.v->set_storage(card.storage(), "/").ok());
+    const Result r = app.v->open_model(0);
+    ASSERT_TRUE(r.ok()) << text(r);
+    const Event* loaded = app.last(Event::Kind::Loaded);
+    ASSERT_NE(loaded, nullptr);
+    EXPECT_GT(loaded->loaded.boxed_parts, 0u) << "larger than the memory: some parts boxes";
+    EXPECT_LT(loaded->loaded.boxed_parts, packs.size());
+    app.run();
+    EXPECT_GT(app.v->stats().done, 0u);
+    EXPECT_LE(card.largest_read, module::Reader::kChunkBytes);
+    EXPECT_LT(card.bytes_read, file.size()) << "never the whole file";
+    const uint64_t read_at_open = card.bytes_read;
+    for (int k = 0; k < 12; ++k) app.v->wheel(1);
+    app.run();
+    EXPECT_GT(card.bytes_read, read_at_open) << "blocks read as the view nears them";
+    for (const Event& e : app.events) {
+        if (e.kind == Event::Kind::PassFailed) {
+            EXPECT_EQ(e.why.status, Status::Full) << text(e.why);
+        }
+    }
 }

@@ -199,8 +199,8 @@ void facet_read_done(facet_viewer *viewer, facet_status status); /* any context 
 facet_result facet_storage_changed(facet_viewer *viewer, bool present); /* a card pulled (false) or put back */
 /* The chooser's models (a library's or the storage folder's): name, file size, faces (FACET_NONE: unknown). */
 typedef struct { const char *name; uint32_t bytes, faces; } facet_listed_model;
-uint32_t facet_model_count(const facet_viewer *viewer);
-facet_result facet_listed_model_get(const facet_viewer *viewer, uint32_t index, facet_listed_model *out);
+uint32_t facet_get_model_count(const facet_viewer *viewer);
+facet_result facet_get_listed_model(const facet_viewer *viewer, uint32_t index, facet_listed_model *out);
 void facet_flush_done(facet_viewer *viewer); /* any context, an interrupt included */
 void facet_key(facet_viewer *viewer, uint32_t key);
 void facet_pointer(facet_viewer *viewer, int16_t dx, int16_t dy, uint8_t buttons);
