@@ -36,7 +36,9 @@ public:
     uint32_t model_index() const { return models_.open(); }
     // Models on the product's storage (storage.cpp).
     Result set_storage(const Storage& storage, const char* folder, void* memory, uint32_t memory_bytes);
-    Result open_file(const char* path, void* memory, uint32_t memory_bytes);
+    // A pack file on the storage, or (offset, length) a library's model inside one.
+    static constexpr uint32_t kWhole = 0xFFFFFFFFu;
+    Result open_file(const char* path, void* memory, uint32_t memory_bytes, uint32_t offset = 0, uint32_t length = kWhole);
     void read_done(Status status) {
         if (module::Reader* l = lister_) l->done(status);
         else reader_.done(status);
@@ -201,6 +203,7 @@ private:
     module::Reader reader_;
     module::Reader* volatile lister_ = nullptr;
     char open_path_[module::Models::kFolderBytes + kStorageNameBytes] = {};
+    uint32_t open_offset_ = 0, open_length_ = kWhole; // (a library's model)
     uint32_t open_crc_ = 0; // a blocked pack's index CRC | 1 (a card put back holds the same file); 0: none
     Result list_storage();
     Result load_listed(uint32_t index); // the chooser's model `index` (library.cpp)

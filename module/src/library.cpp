@@ -33,7 +33,10 @@ Result Core::load_listed(uint32_t index) {
     }
     char path[sizeof open_path_];
     if (!models_.path(index, path, sizeof path)) return Result::fail(Status::OutOfRange, "the file's path is too long", {"model", index});
-    return open_file(path, models_.memory(), models_.memory_bytes());
+    const module::Models::Listed& l = models_.listed(index);
+    if (l.unreadable) return Result::fail(Status::Corrupt, "a library whose table does not read (its CRC or an entry)", {"model", index});
+    return l.library ? open_file(path, models_.memory(), models_.memory_bytes(), l.offset, l.bytes)
+                     : open_file(path, models_.memory(), models_.memory_bytes());
 }
 
 Result Core::open_model(uint32_t index) {

@@ -17,12 +17,14 @@ public:
     static constexpr uint32_t kMaxListed = 48;  // a storage folder's pack files listed (the rest counted: unlisted())
     static constexpr uint32_t kFolderBytes = 96; // the folder's path
 
-    // A storage folder's pack file, as listed.
+    // A storage folder's pack file, or a model of a library file in it, as listed.
     struct Listed {
-        char name[kStorageNameBytes];
-        uint32_t bytes;
-        uint32_t faces; // kNone: its head does not say (it says why when opened)
-        bool library;   // a library (*.flb): its models are not opened from storage
+        char name[kStorageNameBytes];          // the file's
+        char model[pack::kLibraryNameBytes];   // a library's model's name ("" for a file of its own)
+        uint32_t offset, bytes;                // the model file within the file (0, the file's size)
+        uint32_t faces;                        // kNone: its head does not say (it says why when opened)
+        bool library;                          // a library's model (offset, bytes), or a library
+        bool unreadable;                       // whose table does not read (said when opened)
     };
 
     // The library's table (checked); its models are loaded into `memory` (or, given none, the
@@ -55,7 +57,8 @@ public:
     const Listed& listed(uint32_t index) const { return files_[index]; } // on_storage()
     geom::Library::Entry entry(uint32_t index) const { return library_.entry(index); } // a library's
     // A listed file's path on the storage: the folder's, '/', its name (false: it does not fit).
-    bool path(uint32_t index, char* out, uint32_t bytes) const;
+    bool path(uint32_t index, char* out, uint32_t bytes) const { return folder_path(files_[index].name, out, bytes); }
+    bool folder_path(const char* name, char* out, uint32_t bytes) const;
     void* memory() const { return memory_; }
     uint32_t memory_bytes() const { return memory_bytes_; }
 

@@ -337,12 +337,14 @@ void Overlay::models_list(const render::Target& t) const {
         const uint32_t m = first_model_ + r;
         const int32_t y = p.y + kRow + int32_t(r) * kRow;
         if (m == current_model_) render::fill_rect(t, p.x, y, p.width - 1, kRow, kButtonOn);
-        if (library_->on_storage()) { // "2 PUMP.FPK  812 KB  3656 faces"
+        if (library_->on_storage()) { // "2 PUMP.FPK  812 KB  3656 faces", "3 Pump (LINE.FLB)  812 KB ..."
             const Models::Listed& f = library_->listed(m);
-            char faces[24] = "";
-            if (f.library) format(faces, sizeof faces, "  library");
-            else if (f.faces != kNone) format(faces, sizeof faces, "  {} faces", f.faces);
-            format(text, sizeof text, broken(m) ? "{} cannot open: {}" : "{} {}  {} KB{}", m + 1, f.name, (f.bytes + 1023) / 1024, faces);
+            char faces[24] = "", name[Models::kFolderBytes + pack::kLibraryNameBytes + 4];
+            if (f.faces != kNone) format(faces, sizeof faces, "  {} faces", f.faces);
+            if (f.unreadable) format(name, sizeof name, "{} (library)", f.name);
+            else if (f.library) format(name, sizeof name, "{} ({})", f.model[0] ? f.model : "model", f.name);
+            else format(name, sizeof name, "{}", f.name);
+            format(text, sizeof text, broken(m) ? "{} cannot open: {}" : "{} {}  {} KB{}", m + 1, name, (f.bytes + 1023) / 1024, faces);
         } else {
             format(text, sizeof text, broken(m) ? "{} cannot open: {}" : "{} {}", m + 1, library_->name(m));
         }

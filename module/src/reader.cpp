@@ -17,13 +17,19 @@ Result Reader::open(const Storage& storage, const char* path, const Clock& clock
     if (Result r = storage.open(storage.user, path, &file, &bytes); !r.ok()) {
         return r.status == Status::Busy ? Result::fail(Status::Io, "the storage's open() said Busy (open is synchronous)", kStorage) : r;
     }
-    storage_ = storage, clock_ = clock, file_ = file, opened_ = true, bytes_ = bytes;
+    storage_ = storage, clock_ = clock, file_ = file, opened_ = true, bytes_ = size_ = bytes, base_ = 0;
     return {};
+}
+
+bool Reader::window(uint32_t offset, uint32_t length) {
+    if (offset > size_ || length > size_ - offset) return false;
+    base_ = offset, bytes_ = length;
+    return true;
 }
 
 void Reader::close() {
     if (opened_ && !pending_) storage_.close(storage_.user, file_);
-    file_ = nullptr, opened_ = false, bytes_ = 0, pending_ = false, left_ = 0;
+    file_ = nullptr, opened_ = false, bytes_ = size_ = base_ = 0, pending_ = false, left_ = 0;
 }
 
 void Reader::lost() {
@@ -47,7 +53,7 @@ Result Reader::transfer() {
     asked_ = left_ < kChunkBytes ? left_ : kChunkBytes;
     done_.store(0, kDoneStore);
     started_us_ = now(), polls_ = 0;
-    const Result r = storage_.read(storage_.user, file_, at_, into_, asked_);
+    const Result r = storage_.read(storage_.user, file_, base_ + at_, into_, asked_);
     if (r.status == Status::Busy) {
         pending_ = true;
         return r;

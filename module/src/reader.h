@@ -28,7 +28,11 @@ public:
     Result open(const Storage& storage, const char* path, const Clock& clock);
     void close();
     bool is_open() const { return file_ != nullptr || opened_; }
-    uint32_t bytes() const { return bytes_; }
+    uint32_t bytes() const { return bytes_; } // the window's (the whole file's unless window())
+    uint32_t size() const { return size_; }   // the whole file's
+    // Reads from here on within [offset, offset + length) of the file (a library's model: a file
+    // inside it), offsets counted from its start. False when it lies past the file's end.
+    bool window(uint32_t offset, uint32_t length);
 
     // A read begun (its first transfer asked): Ok when the bytes are there, Busy while it goes
     // on (poll()), else why not. Bytes past the file's end are Corrupt (the pack says more than
@@ -65,7 +69,7 @@ private:
     uint8_t* into_ = nullptr;
     void* file_ = nullptr;
     bool opened_ = false; // (a storage may hand a null handle)
-    uint32_t bytes_ = 0;
+    uint32_t bytes_ = 0, size_ = 0, base_ = 0; // the window's size, the file's, the window's start
     bool pending_ = false;
     std::atomic<uint32_t> done_{0};
 };

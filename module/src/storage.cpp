@@ -63,6 +63,44 @@ uint32_t listed_faces(module::Reader& r) {
     }
 }
 
+// A library's models listed, each a row of its own (name, size, faces), after its table was read
+// and checked (CRC, each entry inside the file); false when it does not read (the file is then
+// one row that says so when opened).
+bool list_library(module::Reader& r, module::Models::Listed row, module::Models& models) {
+    pack::LibraryHeader h;
+    alignas(8) uint8_t buf[16 * sizeof(pack::LibraryEntry)];
+    if (r.bytes() < sizeof h || !r.read(0, &h, sizeof h).ok()) return false;
+    if (std::memcmp(h.magic, pack::kLibraryMagic, 4) != 0 || h.version != pack::kLibraryVersion || h.count == 0 ||
+        h.count > pack::kMaxLibraryEntries || h.total_bytes > r.bytes()) {
+        return false;
+    }
+    const uint32_t table_end = uint32_t(sizeof h + h.count * sizeof(pack::LibraryEntry));
+    if (table_end > h.total_bytes) return false;
+    uint32_t crc = 0; // (the table read twice: checked whole first, then listed)
+    for (uint32_t at = sizeof h; at < table_end; at += sizeof buf) {
+        const uint32_t n = std::min<uint32_t>(sizeof buf, table_end - at);
+        if (!r.read(at, buf, n).ok()) return false;
+        crc = pack::crc32(buf, n, crc);
+    }
+    if (crc != h.crc32) return false;
+    for (uint32_t i = 0; i < h.count; ++i) {
+        pack::LibraryEntry e;
+        if (!r.read(uint32_t(sizeof h + i * sizeof e), &e, sizeof e).ok()) return false;
+        const bool inside = e.offset >= table_end && e.offset <= h.total_bytes && e.bytes <= h.total_bytes - e.offset;
+        if (!inside || (e.offset & 7) || e.bytes == 0 || std::memchr(e.name, 0, sizeof e.name) == nullptr) return false;
+    }
+    for (uint32_t i = 0; i < h.count; ++i) {
+        pack::LibraryEntry e;
+        if (!r.window(0, r.size()) || !r.read(uint32_t(sizeof h + i * sizeof e), &e, sizeof e).ok()) return false;
+        module::Models::Listed l = row;
+        std::memcpy(l.model, e.name, sizeof l.model);
+        l.offset = e.offset, l.bytes = e.bytes, l.faces = kNone, l.library = true, l.unreadable = false;
+        if (r.window(e.offset, e.bytes)) l.faces = listed_faces(r);
+        if (!models.add(l)) break; // (counted: unlisted())
+    }
+    return true;
+}
+
 } // namespace
 
 namespace module {
@@ -86,13 +124,13 @@ bool Models::add(const Listed& file) {
     return true;
 }
 
-bool Models::path(uint32_t index, char* out, uint32_t bytes) const {
-    const size_t f = std::strlen(folder_), n = std::strlen(files_[index].name);
+bool Models::folder_path(const char* name, char* out, uint32_t bytes) const {
+    const size_t f = std::strlen(folder_), n = std::strlen(name);
     const bool slash = f > 0 && folder_[f - 1] != '/';
     if (f + slash + n + 1 > bytes) return false;
     std::memcpy(out, folder_, f);
     if (slash) out[f] = '/';
-    std::memcpy(out + f + slash, files_[index].name, n + 1);
+    std::memcpy(out + f + slash, name, n + 1);
     return true;
 }
 
@@ -139,35 +177,45 @@ Result Core::list_storage() {
         }
         e.name[kStorageNameBytes - 1] = 0;
         module::Models::Listed l{};
-        if (e.folder || !pack_name(e.name, l.library)) continue;
+        bool library = false;
+        if (e.folder || !pack_name(e.name, library)) continue;
         std::memcpy(l.name, e.name, sizeof l.name);
-        l.bytes = e.bytes, l.faces = kNone;
-        if (!models_.add(l)) continue;
-        const uint32_t i = models_.count() - 1;
-        if (!l.library && models_.path(i, path, sizeof path) && file.open(storage_, path, clock()).ok()) {
-            models_.set_faces(i, listed_faces(file));
+        l.bytes = e.bytes, l.faces = kNone, l.library = library;
+        const bool opened = models_.folder_path(l.name, path, sizeof path) && file.open(storage_, path, clock()).ok();
+        if (library && opened && list_library(file, l, models_)) {
             file.close();
+            continue;
         }
+        if (opened && !library) l.faces = listed_faces(file);
+        if (opened) file.close();
+        l.unreadable = library; // (a library whose table does not read: a row that says so when opened)
+        models_.add(l);
     }
     lister_ = nullptr;
     storage_.dir_close(storage_.user, dir);
     for (uint32_t i = 0; open_path_[0] && i < models_.count(); ++i) { // (the model open, listed again)
-        if (models_.path(i, path, sizeof path) && std::strcmp(path, open_path_) == 0) models_.opened(i);
+        if (models_.path(i, path, sizeof path) && std::strcmp(path, open_path_) == 0 && models_.listed(i).offset == open_offset_) {
+            models_.opened(i);
+        }
     }
     return {};
 }
 
-Result Core::open_file(const char* path, void* memory, uint32_t memory_bytes) {
+Result Core::open_file(const char* path, void* memory, uint32_t memory_bytes, uint32_t offset, uint32_t length) {
     unload();
     if (!has_storage_) return Result::fail(Status::NotFound, "no storage is set (set_storage())", kStorage);
     if (!storage_present_) return Result::fail(Status::Io, "the storage is gone (storage_changed(false))", kStorage);
     if (!path || std::strlen(path) + 1 > sizeof open_path_) return Result::fail(Status::OutOfRange, "no path, or one longer than 190 bytes", kStorage);
     if (Result r = reader_.open(storage_, path, clock()); !r.ok()) return r;
+    const bool in_library = length != kWhole;
+    if (in_library && !reader_.window(offset, length)) {
+        return Result::fail(Status::Corrupt, "the library's model lies past the end of its file", kStorage);
+    }
     alignas(8) uint8_t head[sizeof(pack::IndexHeader)];
     const uint32_t file_bytes = reader_.bytes(), head_bytes = std::min<uint32_t>(sizeof head, file_bytes);
     if (Result r = reader_.read(0, head, head_bytes); !r.ok()) return r;
-    if (geom::is_library(head, head_bytes)) {
-        return Result::fail(Status::Unsupported, "a library (*.flb) is opened from memory (set_library()); on storage, its models as *.fpk files", kStorage);
+    if (geom::is_library(head, head_bytes)) { // (its models are the list's rows: set_storage(), open_model())
+        return Result::fail(Status::Unsupported, "a library of several models: set_storage() lists them, open_model() opens one", kStorage);
     }
     const geom::PackFileKind kind = geom::pack_file_kind(head, head_bytes);
     if (kind == geom::PackFileKind::Unknown) return Result::fail(Status::Corrupt, "no pack here (neither FPK1, FPX1, FPZ1 nor FPB1)", {"pack file"});
@@ -207,6 +255,7 @@ Result Core::open_file(const char* path, void* memory, uint32_t memory_bytes) {
         return r;
     }
     std::memcpy(open_path_, path, std::strlen(path) + 1);
+    open_offset_ = offset, open_length_ = length;
     open_crc_ = kind == geom::PackFileKind::Blocked ? h.crc32 | 1u : 0; // (never 0 for a blocked pack)
     return {};
 }
@@ -235,6 +284,7 @@ Result Core::storage_changed(bool present) {
 Result Core::reopen_storage_file() {
     module::Reader again;
     if (Result r = again.open(storage_, open_path_, clock()); !r.ok()) return r;
+    if (open_length_ != kWhole && !again.window(open_offset_, open_length_)) return Result::fail(Status::NotFound, "the open model's file changed", kStorage);
     alignas(8) uint8_t head[sizeof(pack::IndexHeader)];
     pack::IndexHeader h;
     lister_ = &again; // (its read_done())
@@ -247,6 +297,7 @@ Result Core::reopen_storage_file() {
         return Result::fail(Status::NotFound, "the storage put back holds another file where the open model's was (its blocks stay boxes)", kStorage);
     }
     if (Result r = reader_.open(storage_, open_path_, clock()); !r.ok()) return r;
+    if (open_length_ != kWhole) (void)reader_.window(open_offset_, open_length_);
     swapper_.storage_back();
     return {};
 }
@@ -263,8 +314,9 @@ Result Viewer::listed_model(uint32_t index, ListedModel& out) const {
     const module::Models& m = static_cast<const Core*>(this)->models();
     out = {"", 0, kNone};
     if (index >= m.count()) return Result::fail(Status::OutOfRange, "no such model in the list", {"model", index});
-    if (m.on_storage()) {
-        out = {m.listed(index).name, m.listed(index).bytes, m.listed(index).faces};
+    if (m.on_storage()) { // (a library's model: its own name)
+        const module::Models::Listed& l = m.listed(index);
+        out = {l.library && !l.unreadable && l.model[0] ? l.model : l.name, l.bytes, l.faces};
     } else {
         out = {m.entry(index).name, m.entry(index).bytes, kNone};
     }

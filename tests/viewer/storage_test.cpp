@@ -185,6 +185,41 @@ TEST(Storage, TheChooserListsTheFoldersPackFilesWithSizesAndFaces) {
     EXPECT_EQ(app.v->set_storage(card.storage(), "/nowhere").status, Status::NotFound);
 }
 
+// A library file (facet-pack --library) on the card: each of its models a row of the chooser,
+// named, sized and counted, opened from inside the file; one whose table is damaged is a row
+// that says so when opened, and the others still open.
+TEST(Storage, ALibraryOnTheCardListsEachOfItsModels) {
+    const Bytes a = parts(4, BlockStore::Lzma), b = parts(3, BlockStore::Lzma, false);
+    Bytes lib;
+    std::string error;
+    ASSERT_TRUE(make_library({a, b}, lib, error)) << error;
+    Bytes damaged = lib;
+    damaged[16 + 8] ^= 0x5A; // (its first entry's name: the table's CRC fails)
+    FakeStorage card;
+    card.files["/line.flb"] = lib;
+    card.files["/old.flb"] = damaged;
+    App app;
+    start(app, card);
+    ASSERT_TRUE(app.v->set_storage(card.storage(), "/").ok());
+    ASSERT_EQ(app.v->model_count(), 3u);
+    Viewer::ListedModel m[3];
+    for (uint32_t i = 0; i < 3; ++i) ASSERT_TRUE(app.v->listed_model(i, m[i]).ok());
+    EXPECT_EQ(m[0].bytes, a.size());
+    EXPECT_EQ(m[0].faces, faces_of(a));
+    EXPECT_EQ(m[1].bytes, b.size());
+    EXPECT_EQ(m[1].faces, faces_of(b));
+    EXPECT_STREQ(m[2].name, "old.flb");
+    for (uint32_t i = 0; i < 2; ++i) {
+        const Result r = app.v->open_model(i);
+        ASSERT_TRUE(r.ok()) << text(r);
+        app.run();
+        EXPECT_EQ(app.v->stats().faces + app.last(Event::Kind::Loaded)->loaded.boxed_faces, m[i].faces);
+    }
+    EXPECT_EQ(app.v->open_model(2).status, Status::Corrupt);
+    EXPECT_EQ(app.v->model_index(), 1u) << "the model before is back";
+    EXPECT_EQ(app.v->open_file("/line.flb").status, Status::Unsupported) << "a library opens by its rows";
+}
+
 // Bad files on a card: each is said (ModelFailed, its row marked), the model open before comes
 // back, and the good ones still open.
 TEST(Storage, ABadFileIsSaidAndTheOtherModelsStillOpen) {
