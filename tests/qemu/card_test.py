@@ -9,6 +9,8 @@ pack and a subfolder beside them, in the board's SD slot (run.py --card).
   2. The card pulled and put back (tests/sessions/card-swap.session): the model stays on screen,
      the chooser says the card is gone; back, the truncated file is said and the first model
      comes back, then the second opens.
+  3. An exFAT card (its boot sector) with the models in RAM beside it: said ("format it FAT32"),
+     and the models in RAM open.
 
   card_test.py --board B --elf ELF --packer facet-pack --work DIR MODEL.step MODEL.step
 """
@@ -122,12 +124,28 @@ def main():
     for n in ('chooser-out', 'chooser-back', 'after'):
         if not os.path.exists(os.path.join(swap, n + '.png')):
             problems.append(f'the swap: no screenshot {n}')
+    # 3. A card the reader cannot take: said, and the pack where the board loads it opens.
+    exfat = os.path.join(args.work, 'exfat.img')
+    with open(exfat, 'wb') as f:
+        boot_sector = bytearray(512)
+        boot_sector[0:3] = b'\xEB\x76\x90'
+        boot_sector[3:11] = b'EXFAT   '
+        boot_sector[510:512] = b'\x55\xAA'
+        f.write(boot_sector)
+        f.truncate(64 << 20)
+    other = os.path.join(args.work, 'exfat')
+    code, uart_x, said = boot(args, other, 'library', ['--card', exfat, '--load', f'{lib}@{board["pack"]["address"]}'])
+    if 'the card cannot be read' not in uart_x or 'exFAT' not in uart_x:
+        problems.append('an exFAT card was not said ("the card cannot be read ... exFAT")')
+    if code != 0 or [r.values()['faces'] for r in protocol.records(uart_x, 'model')] != faces:
+        problems.append(f'with an exFAT card in the slot the models in RAM did not open (exit {code})')
     if problems:
         print(f'FAIL {args.board} card: ' + '; '.join(problems))
         print(uart[-1500:])
         return 1
     print(f'{args.board} card: {len(listed)} files listed; two models opened from the card with the pixels they have from RAM; '
-          f'pulled and put back: the model stayed, a truncated file said, the others opened ({faces} faces)')
+          f'pulled and put back: the model stayed, a truncated file said, the others opened; an exFAT card said '
+          f'({faces} faces)')
     return 0
 
 
