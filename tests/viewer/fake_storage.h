@@ -5,6 +5,7 @@
 #include "facet/viewer.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <cstring>
 #include <map>
 #include <string>

@@ -34,13 +34,14 @@ Bytes parts(uint32_t count, BlockStore store, bool blocked = true) {
     return file;
 }
 
-uint32_t faces_of(const Bytes& file) {
+ModelNeeds needs_of(const Bytes& file) {
     std::vector<uint64_t> aligned(file.size() / 8 + 1);
     std::memcpy(aligned.data(), file.data(), file.size());
     ModelNeeds needs{};
     EXPECT_TRUE(model_needs(aligned.data(), uint32_t(file.size()), needs).ok());
-    return needs.faces;
+    return needs;
 }
+uint32_t faces_of(const Bytes& file) { return needs_of(file).faces; }
 
 // An app with a clock that makes the storage's deferred reads end, in `workspace` bytes (0: the default).
 void start(App& app, FakeStorage& card, size_t workspace = 0) {
@@ -114,12 +115,7 @@ TEST(Storage, ABlockedPackFromStorageDrawsWhatItDrawsFromMemoryReadingOneBlockAt
 TEST(Storage, BlocksLeftOutAreReadFromStorageAsTheViewNearsThem) {
     for (const bool deferred : {false, true}) {
         const Bytes file = parts(12, BlockStore::Lzma);
-        ModelNeeds needs{};
-        {
-            std::vector<uint64_t> aligned(file.size() / 8 + 1);
-            std::memcpy(aligned.data(), file.data(), file.size());
-            ASSERT_TRUE(model_needs(aligned.data(), uint32_t(file.size()), needs).ok());
-        }
+        const ModelNeeds needs = needs_of(file);
         // A workspace that leaves parts out from storage (its index takes room there too).
         FakeStorage card;
         card.files["/twelve.fpk"] = file;
@@ -277,12 +273,7 @@ TEST(Storage, ACardPulledMidReadLeavesTheModelOnScreenAndPutBackGoesOn) {
         card.deferred = deferred;
         App sd;
         uint32_t boxed = 0;
-        ModelNeeds needs{};
-        {
-            std::vector<uint64_t> aligned(file.size() / 8 + 1);
-            std::memcpy(aligned.data(), file.data(), file.size());
-            ASSERT_TRUE(model_needs(aligned.data(), uint32_t(file.size()), needs).ok());
-        }
+        const ModelNeeds needs = needs_of(file);
         for (size_t room = needs.least_workspace_bytes + needs.pack_memory_bytes; room > workspace_bytes() + 4096; room = room * 31 / 32) {
             sd = App{};
             start(sd, card, room);

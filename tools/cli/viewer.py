@@ -123,14 +123,24 @@ def cmd_run(args, parser):
            '--elf', f'build/{RUN_BOARD}/firmware/facet-viewer.elf', '--out', out,
            '--load', f'{fpk}@{pack_address(RUN_BOARD)}', '--icount', '--timeout', '900']
     cmd += ['--window'] if args.window else ['--quiet', '--session', 'library' if len(models) > 1 else 'run']
+    return boot_and_report(cmd, out, name, LIBRARY_SHOTS if len(models) > 1 else SHOTS, args.window)
+
+
+def boot_and_report(cmd, out, name, shots, window):
+    """The viewer booted (cmd: run.py's), then the budget report and the screenshots said; a
+    Failure when the run failed or a shot is missing, exit 4 over a budget, 5 when faces failed."""
     if run(cmd) != 0:
         log = os.path.join(out, 'uart.log')
         if os.path.exists(log):
             print(''.join(open(log).readlines()[-20:]), file=sys.stderr)
         raise Failure('the viewer run failed (out/run/uart.log)')
+    if window:
+        return 0
     rc = run([sys.executable, 'tools/budgets.py', os.path.join(out, 'report.json'), '--json', os.path.join(out, 'budgets.json'),
               '--markdown', os.path.join(out, 'budgets.md'), '--model', name, '--strict'])
-    shots = LIBRARY_SHOTS if len(models) > 1 else SHOTS
+    missing = [s for s in shots if not os.path.exists(os.path.join(out, f'{s}.png'))]
+    if missing:
+        raise Failure('screenshots missing: ' + ', '.join(missing) + ' (out/run/uart.log)')
     say('screenshots out/run/{' + ','.join(shots) + '}.png, budget report out/run/budgets.json (.md)')
     for p in json.load(open(os.path.join(out, 'report.json'))).get('picks', []):
         print(f'  picked face {p["face"]}: {"; ".join(p["lines"])}')
@@ -149,26 +159,7 @@ def run_card(args, models, out):
     cmd = [sys.executable, 'tools/qemu/run.py', '--board', RUN_BOARD, '--elf', f'build/{RUN_BOARD}/firmware/facet-viewer.elf',
            '--out', out, '--card', image, '--icount', '--timeout', '900']
     cmd += ['--window'] if args.window else ['--quiet', '--session', session]
-    if run(cmd) != 0:
-        log = os.path.join(out, 'uart.log')
-        if os.path.exists(log):
-            print(''.join(open(log).readlines()[-20:]), file=sys.stderr)
-        raise Failure('the viewer run failed (out/run/uart.log)')
-    if args.window:
-        return 0
-    rc = run([sys.executable, 'tools/budgets.py', os.path.join(out, 'report.json'), '--json', os.path.join(out, 'budgets.json'),
-              '--markdown', os.path.join(out, 'budgets.md'), '--model', name, '--strict'])
-    missing = [s for s in shots if not os.path.exists(os.path.join(out, f'{s}.png'))]
-    if missing:
-        raise Failure('screenshots missing: ' + ', '.join(missing) + ' (out/run/uart.log)')
-    say('screenshots out/run/{' + ','.join(shots) + '}.png, budget report out/run/budgets.json (.md)')
-    if rc == OVER_BUDGET:
-        raise Failure('OVER BUDGET (exit 4): out/run/budgets.md says where', OVER_BUDGET)
-    if rc == INCOMPLETE_MESH:
-        raise Failure('INCOMPLETE MESH (exit 5): faces failed on the device, out/run/uart.log says why', INCOMPLETE_MESH)
-    if rc != 0:
-        raise Failure(f'the budget report failed (exit {rc})')
-    return 0
+    return boot_and_report(cmd, out, name, shots, args.window)
 
 
 def cmd_sim(args, parser):
