@@ -2,6 +2,7 @@
 
 #include "pack_io.h"
 #include "pack_writer.h"
+#include "proxies.h"
 
 #include "core/format.h"
 #include "geom/bounds.h"
@@ -9,6 +10,7 @@
 #include "geom/pack_index.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <map>
 
@@ -219,7 +221,8 @@ bool make_blocked(const Pack& whole, const std::vector<PartBox>& given, const Bl
     }
     // The index: header, table, sections; then the blocks.
     std::vector<Instance> instances(whole.instances().begin(), whole.instances().end());
-    const uint32_t kSections = 6 + (whole.needs() ? 1 : 0);
+    const bool proxied = options.proxies && options.proxies->size() == shells;
+    const uint32_t kSections = 6 + (whole.needs() ? 1 : 0) + (proxied ? 3 : 0);
     out.assign(sizeof(IndexHeader) + kSections * sizeof(SectionEntry), 0);
     std::vector<SectionEntry> table;
     append(out, table, IndexSectionId::Blocks, blocks); // offsets filled in below
@@ -244,6 +247,39 @@ bool make_blocked(const Pack& whole, const std::vector<PartBox>& given, const Bl
     append(out, table, IndexSectionId::InstanceNames, instance_names);
     append(out, table, IndexSectionId::Names, pool);
     if (whole.needs()) append(out, table, IndexSectionId::Needs, std::vector<pack::Needs>{*whole.needs()});
+    if (proxied) { // each part's proxy, its corners quantized over its box
+        std::vector<pack::ProxyPart> records;
+        std::vector<pack::ProxyVertex> corners;
+        std::vector<pack::ProxyTriangle> triangles;
+        for (uint32_t s = 0; s < shells; ++s) {
+            const Proxy& x = (*options.proxies)[s];
+            pack::ProxyPart r{uint32_t(corners.size()), uint32_t(x.points.size()), uint32_t(triangles.size()),
+                              uint32_t(x.triangles.size() / 3), x.error_mm, {0, 0, 0, 0}};
+            if (x.colour < whole.colours().size()) r.colour = whole.colours()[x.colour], r.colour.a = 255;
+            if (x.points.size() > 65535) r.vertex_count = r.triangle_count = 0; // (never: proxies are small)
+            for (uint32_t v = 0; v < r.vertex_count; ++v) {
+                pack::ProxyVertex q{};
+                const float p[3] = {x.points[v].x, x.points[v].y, x.points[v].z};
+                for (int k = 0; k < 3; ++k) {
+                    const float e = boxes[s].max[k] - boxes[s].min[k];
+                    const float f = e > 0 ? (p[k] - boxes[s].min[k]) / e : 0.0f;
+                    q.q[k] = uint16_t(std::lround(std::clamp(f, 0.0f, 1.0f) * 65535.0f));
+                }
+                corners.push_back(q);
+            }
+            for (uint32_t t = 0; t < r.triangle_count; ++t) {
+                pack::ProxyTriangle tri{};
+                for (int k = 0; k < 3; ++k) tri.v[k] = uint16_t(x.triangles[3 * t + k]);
+                const float n[3] = {x.normals[t].x, x.normals[t].y, x.normals[t].z};
+                for (int k = 0; k < 3; ++k) tri.n[k] = int8_t(std::lround(std::clamp(n[k], -1.0f, 1.0f) * 127.0f));
+                triangles.push_back(tri);
+            }
+            records.push_back(r);
+        }
+        append(out, table, IndexSectionId::ProxyParts, records);
+        append(out, table, IndexSectionId::ProxyVertices, corners);
+        append(out, table, IndexSectionId::ProxyTriangles, triangles);
+    }
     std::memcpy(out.data() + sizeof(IndexHeader), table.data(), table.size() * sizeof(SectionEntry));
     out.resize((out.size() + 3) & ~size_t(3), 0);
     const uint32_t index_bytes = uint32_t(out.size());

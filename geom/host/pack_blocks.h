@@ -19,10 +19,12 @@ struct PartBox {
 
 enum class BlockStore : uint8_t { Lzma, Deflated, Plain };
 
+struct Proxy; // (proxies.h)
 struct BlockOptions {
     uint32_t block_bytes = 64 * 1024; // a block's decoded size to aim at: shells are grouped until
                                       // the next would pass it (a larger shell is a block alone)
     BlockStore store = BlockStore::Lzma;
+    const std::vector<Proxy>* proxies = nullptr; // each shell's (proxies.h), into the index; none: no proxies
 };
 
 // The blocked pack of `whole` (validated): its shells, in order, grouped into blocks; its

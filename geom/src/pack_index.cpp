@@ -37,6 +37,9 @@ Place index_place(uint32_t id, uint32_t index) {
     case IndexSectionId::Blocks: return {"index section Blocks record", index};
     case IndexSectionId::Parts: return {"index section Parts record", index};
     case IndexSectionId::Needs: return {"index section Needs record", index};
+    case IndexSectionId::ProxyParts: return {"index section ProxyParts record", index};
+    case IndexSectionId::ProxyVertices: return {"index section ProxyVertices record", index};
+    case IndexSectionId::ProxyTriangles: return {"index section ProxyTriangles record", index};
     }
     return {"index header"};
 }
@@ -96,6 +99,9 @@ Result PackIndex::open(const void* data, uint32_t size, uint32_t file_bytes) {
         case IndexSectionId::Blocks: record = sizeof(pack::Block); break;
         case IndexSectionId::Parts: record = sizeof(pack::Part); break;
         case IndexSectionId::Needs: record = sizeof(pack::Needs); break;
+        case IndexSectionId::ProxyParts: record = sizeof(pack::ProxyPart); break;
+        case IndexSectionId::ProxyVertices: record = sizeof(pack::ProxyVertex); break;
+        case IndexSectionId::ProxyTriangles: record = sizeof(pack::ProxyTriangle); break;
         default: continue; // unknown sections are skipped
         }
         if (seen & (1u << s.id)) return fail("section appears twice", s.id, 0);
@@ -118,12 +124,41 @@ Result PackIndex::open(const void* data, uint32_t size, uint32_t file_bytes) {
             if (const char* why = pack::needs_problem(*reinterpret_cast<const pack::Needs*>(at))) return fail(why, s.id, 0);
             needs_ = {reinterpret_cast<const pack::Needs*>(at), 1};
             break;
+        case IndexSectionId::ProxyParts: proxy_parts_ = {reinterpret_cast<const pack::ProxyPart*>(at), s.count}; break;
+        case IndexSectionId::ProxyVertices: proxy_vertices_ = {reinterpret_cast<const pack::ProxyVertex*>(at), s.count}; break;
+        case IndexSectionId::ProxyTriangles: proxy_triangles_ = {reinterpret_cast<const pack::ProxyTriangle*>(at), s.count}; break;
         }
     }
     base_ = base;
     header_ = h;
     mapped_ = size >= h->total_bytes;
-    return check_records();
+    if (Result r = check_records(); !r.ok()) return r;
+    return check_proxies();
+}
+
+// The proxies, when there are: one record per part, each inside the pools, every triangle's
+// corners its part's, normals of about unit length.
+Result PackIndex::check_proxies() {
+    constexpr uint32_t P = uint32_t(IndexSectionId::ProxyParts), T = uint32_t(IndexSectionId::ProxyTriangles);
+    if (proxy_parts_.empty() && proxy_vertices_.empty() && proxy_triangles_.empty()) return {};
+    if (proxy_parts_.size() != parts_.size()) return fail("not one proxy per part", P, 0);
+    for (uint32_t p = 0; p < proxy_parts_.size(); ++p) {
+        const pack::ProxyPart& x = proxy_parts_[p];
+        if (uint64_t(x.first_vertex) + x.vertex_count > proxy_vertices_.size() || x.vertex_count > 65535 ||
+            uint64_t(x.first_triangle) + x.triangle_count > proxy_triangles_.size()) {
+            return fail("the proxy's vertices or triangles lie outside their pools", P, p);
+        }
+        if (!finite(x.error_mm) || !(x.error_mm >= 0)) return fail("the proxy's error is not a finite length", P, p);
+        for (uint32_t t = x.first_triangle; t < x.first_triangle + x.triangle_count; ++t) {
+            const pack::ProxyTriangle& tri = proxy_triangles_[t];
+            if (tri.v[0] >= x.vertex_count || tri.v[1] >= x.vertex_count || tri.v[2] >= x.vertex_count || tri.reserved) {
+                return fail("a proxy triangle's corner is not its part's (or reserved is not 0)", T, t);
+            }
+            const int32_t n2 = tri.n[0] * tri.n[0] + tri.n[1] * tri.n[1] + tri.n[2] * tri.n[2];
+            if (n2 < 90 * 90 || n2 > 140 * 140) return fail("a proxy triangle's normal is not of unit length", T, t);
+        }
+    }
+    return {};
 }
 
 Result PackIndex::check_records() {

@@ -98,8 +98,14 @@ public:
     // end of an edge drawn) is taken from the projection cache: the same point, the same pixels.
     uint32_t face_edges(uint32_t f, const Transform& t, Rows rows, bool once);
     // The part's box (Scene::part_box) as twelve lines: while its edges are not sampled yet, for
-    // a part left out of a model larger than the memory, and for one tiny() on the screen.
+    // a part left out of a model larger than the memory, and for one tiny() on the screen, where
+    // it has no proxy.
     uint32_t part_box(uint32_t part, const Transform& t);
+    // A part's proxy (a coarse mesh of it in a blocked pack's index: geom/host/proxies.h) stands
+    // for it where a box would: drawn with the faces, in its colour, each triangle lit by its
+    // own normal. draws_proxy(): the part has one and the mode draws faces (else its box).
+    bool draws_proxy(uint32_t part) const;
+    uint32_t part_proxy(uint32_t part, const Transform& t);
     // Whether a part's sphere (Scene::part_sphere) is under a few pixels across: the part is
     // drawn as its box until it grows.
     bool tiny(const int32_t sphere_centre[3], int32_t radius, const Transform& t);

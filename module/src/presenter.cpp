@@ -182,9 +182,11 @@ bool Presenter::full_pieces(uint32_t units) {
             continue;
         }
         if (job_.boxes || scene_.part_boxed(shell) || job_.tiny) {
-            // (a part left out, or brought in and not sampled yet: its box; a tiny one until it
-            // grows: lines, with the edges)
-            if (!faces) spent += painter_.part_box(shell, t);
+            // (a part left out, or brought in and not sampled yet, and a tiny one until it
+            // grows: its proxy with the faces, or, with none, its box with the edges)
+            const bool proxy = painter_.draws_proxy(shell);
+            if (faces && proxy) spent += painter_.part_proxy(shell, t);
+            if (!faces && !proxy) spent += painter_.part_box(shell, t);
             ++job_.instance;
             job_.have_transform = false;
             if (spent >= units) return false;

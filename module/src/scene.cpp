@@ -8,7 +8,6 @@ namespace facet::module {
 namespace {
 
 constexpr float kUnitsPerDiagonal = 1048576.0f; // 2^20: mesh quantum = diagonal / 2^20
-constexpr uint32_t kDefaultRgb = 0x00CDBEB4;    // light warm grey (B,G,R bytes)
 
 // The sphere around a box (lo <= hi, mesh units): its centre, and half its diagonal rounded up
 // (a unit for the centre's rounding, two more) -- as tight as a sphere holding the box can be,

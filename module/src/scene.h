@@ -21,6 +21,8 @@ struct FaceGeometry;
 
 namespace facet::module {
 
+constexpr uint32_t kDefaultRgb = 0x00CDBEB4; // a face (or proxy) with no colour: light warm grey (B,G,R bytes)
+
 struct DrawVertex {
     int32_t p[3];   // shell coordinates in units of the pack's diagonal / 2^20
     int16_t n[3];   // unit normal, Q14
@@ -138,6 +140,7 @@ public:
     // A sphere holding its box (mesh units, as FaceInfo's): false as part_box.
     bool part_sphere(uint32_t part, int32_t centre[3], int32_t& radius) const;
     bool blocked() const { return blocked_; } // a blocked pack: its index has the parts' boxes
+    const geom::PackIndex& index() const { return index_; } // (a blocked pack's: its parts' boxes and proxies)
     // What a model larger than the memory left out (its blocks not decoded, loader.h): its
     // parts are drawn as their boxes.
     struct LeftOut {

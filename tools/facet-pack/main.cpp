@@ -28,6 +28,7 @@
 #include "occt_to_pack.h"
 #include "reference.h"
 #include "pack_blocks.h"
+#include "proxies.h"
 #include "pack_io.h"
 #include "geom/pack_index.h"
 #include "facet/viewer.h"
@@ -72,6 +73,7 @@ using namespace facet;
 namespace {
 
 constexpr size_t kLzmaUpTo = 1u << 20; // decoded bytes a pack is LZMA-compressed up to (above: DEFLATE)
+constexpr uint32_t kProxyTriangles = 96; // the most a part's proxy has (geom/host/proxies.h)
 
 int usage() {
     std::fprintf(stderr, "usage: facet-pack MODEL.step -o MODEL.fpk [--plain|--deflate|--lzma] [--whole] [--unit mm|cm|m|in|ft] [--partial] [--reference FACES.json] [--quiet]\n"
@@ -322,6 +324,11 @@ int run(int argc, char** argv) {
         }
         geom::BlockOptions options;
         options.store = plain ? geom::BlockStore::Plain : deflated ? geom::BlockStore::Deflated : geom::BlockStore::Lzma;
+        // Each part's proxy in the index: drawn where the view shows it small (geom/host/proxies.h).
+        if (!quiet) packer::progress("making the parts' proxies");
+        std::vector<geom::Proxy> proxies;
+        if (!geom::make_proxies(opened, kProxyTriangles, proxies, error)) return die(error);
+        options.proxies = &proxies;
         if (!geom::make_blocked(opened, packer::part_boxes(packer.prototypes), options, bytes, error)) return die(error);
         geom::PackIndex index;
         if (const Result r = index.open(bytes.data(), uint32_t(bytes.size())); !r.ok()) {

@@ -381,6 +381,12 @@ enum class IndexSectionId : uint32_t {
     Blocks = 16,
     Parts = 17,
     Needs = uint32_t(SectionId::Needs), // (optional) the whole model's
+    // Proxies (optional, all three or none): each part's coarse mesh, drawn where the view shows
+    // the part small instead of its block's exact geometry (geom/host/proxies.h): ProxyParts a
+    // record per part, ProxyVertices and ProxyTriangles the pools its records index.
+    ProxyParts = 19,
+    ProxyVertices = 20,
+    ProxyTriangles = 21,
 };
 
 struct Block {
@@ -405,6 +411,28 @@ struct Part {
     float box_max[3];
 };
 static_assert(sizeof(Part) == 40);
+
+// A part's proxy: its corners and triangles in the pools, how far it may stray from the part's
+// surface (mm), and its colour.
+struct ProxyPart {
+    uint32_t first_vertex, vertex_count;     // ProxyVertices [first, first + count), at most 65,535
+    uint32_t first_triangle, triangle_count; // ProxyTriangles
+    float error_mm;
+    Colour colour; // a = 0: none (the viewer's default colour)
+};
+static_assert(sizeof(ProxyPart) == 24);
+// A corner over its part's box: box_min + q / 65535 x (box_max - box_min).
+struct ProxyVertex {
+    uint16_t q[3];
+};
+static_assert(sizeof(ProxyVertex) == 6);
+// Three corners (the part's own numbers), wound as its faces, and the unit normal x 127.
+struct ProxyTriangle {
+    uint16_t v[3];
+    int8_t n[3];
+    uint8_t reserved; // 0
+};
+static_assert(sizeof(ProxyTriangle) == 10);
 
 // A library: several model files (any of the kinds above) in one, as a device's flash holds
 // them: a LibraryHeader, LibraryEntry[count], then each file at its offset, 8-byte aligned, so

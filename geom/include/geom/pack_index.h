@@ -33,6 +33,10 @@ public:
     std::span<const pack::Block> blocks() const { return blocks_; }
     std::span<const pack::Part> parts() const { return parts_; }
     std::span<const pack::Instance> instances() const { return instances_; }
+    // Each part's proxy (pack_format.h: ProxyParts): empty when the index has none.
+    std::span<const pack::ProxyPart> proxy_parts() const { return proxy_parts_; }
+    std::span<const pack::ProxyVertex> proxy_vertices() const { return proxy_vertices_; }
+    std::span<const pack::ProxyTriangle> proxy_triangles() const { return proxy_triangles_; }
     // What the whole model takes on a device (pack::Needs); null when the index says nothing.
     const pack::Needs* needs() const { return needs_.empty() ? nullptr : needs_.data(); }
     // Block b as stored: an LZMA file or a plain pack (geom/pack_file.h reads either). mapped() only.
@@ -63,6 +67,10 @@ private:
     std::span<const char> names_;
     std::span<const uint32_t> part_names_, instance_names_;
     std::span<const pack::Needs> needs_;
+    std::span<const pack::ProxyPart> proxy_parts_;
+    std::span<const pack::ProxyVertex> proxy_vertices_;
+    std::span<const pack::ProxyTriangle> proxy_triangles_;
+    Result check_proxies();
 };
 
 // The place of record `index` of index section `id` ("index section Parts record" 3).

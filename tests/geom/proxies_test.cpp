@@ -1,0 +1,122 @@
+// Parts' proxies (geom/host/proxies.h, issue 52): each part of a model of every surface kind
+// gets a coarse mesh within its triangle cap, inside its box, wound as its faces (its normals
+// point out of a closed solid), with an error bound that covers how far it strays; the index
+// carries them (ProxyParts, ProxyVertices, ProxyTriangles), checked when it is opened.
+#include "../geom/shapes.h"
+#include "geom/bounds.h"
+#include "geom/pack_index.h"
+#include "pack_blocks.h"
+#include "proxies.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <string>
+#include <vector>
+
+using namespace facet;
+using namespace facet::geom;
+using facet::test::Bytes;
+
+namespace {
+
+Bytes shapes_pack(uint32_t copies) {
+    const test::Bytes shapes[] = {test::plate_with_holes(), test::sphere(), test::torus(), test::trimmed_bspline()};
+    std::vector<Pack> packs(copies);
+    for (uint32_t k = 0; k < copies; ++k) EXPECT_TRUE(packs[k].open(shapes[k % 4].data(), uint32_t(shapes[k % 4].size())).ok());
+    return combine_packs(packs, 150.0f);
+}
+
+} // namespace
+
+TEST(Proxies, EachPartHasACoarseMeshWithinItsCapAndBox) {
+    const Bytes bytes = shapes_pack(4);
+    Pack pack;
+    ASSERT_TRUE(pack.open(bytes.data(), uint32_t(bytes.size())).ok());
+    for (const uint32_t cap : {12u, 40u, 200u}) {
+        std::vector<Proxy> proxies;
+        std::string error;
+        ASSERT_TRUE(make_proxies(pack, cap, proxies, error)) << error;
+        ASSERT_EQ(proxies.size(), pack.shells().size());
+        for (uint32_t s = 0; s < proxies.size(); ++s) {
+            const Proxy& p = proxies[s];
+            ASSERT_GT(p.triangles.size(), 0u) << "shell " << s;
+            EXPECT_LE(p.triangles.size() / 3, std::max(cap, 4u) * 2) << "shell " << s << " near its cap (the coarsest grid takes what is left)";
+            EXPECT_EQ(p.normals.size(), p.triangles.size() / 3);
+            for (uint32_t v : p.triangles) EXPECT_LT(v, p.points.size());
+            for (const Vec3& n : p.normals) EXPECT_NEAR(length(n), 1.0f, 1e-3f);
+            // Inside the shell's box, grown by the error bound.
+            const Box3 box = shell_box(pack, s);
+            for (const Vec3& q : p.points) {
+                const float c[3] = {q.x, q.y, q.z};
+                for (int k = 0; k < 3; ++k) {
+                    EXPECT_GE(c[k], box.lo[k] - p.error_mm) << "shell " << s;
+                    EXPECT_LE(c[k], box.hi[k] + p.error_mm) << "shell " << s;
+                }
+            }
+            EXPECT_GT(p.error_mm, 0.0f);
+        }
+    }
+}
+
+// A closed solid's proxy is wound as its faces: its triangles' normals point away from its
+// centre on the whole (the sphere's all of them).
+TEST(Proxies, AClosedSolidsProxyFacesOut) {
+    const test::Bytes sphere = test::sphere();
+    Pack pack;
+    ASSERT_TRUE(pack.open(sphere.data(), uint32_t(sphere.size())).ok());
+    std::vector<Proxy> proxies;
+    std::string error;
+    ASSERT_TRUE(make_proxies(pack, 80, proxies, error)) << error;
+    ASSERT_EQ(proxies.size(), 1u);
+    const Proxy& p = proxies[0];
+    Vec3 centre{0, 0, 0};
+    for (const Vec3& q : p.points) centre = centre + q;
+    centre = centre * (1.0f / float(p.points.size()));
+    uint32_t out = 0;
+    for (size_t t = 0; t < p.normals.size(); ++t) {
+        const Vec3 mid = (p.points[p.triangles[3 * t]] + p.points[p.triangles[3 * t + 1]] + p.points[p.triangles[3 * t + 2]]) * (1.0f / 3);
+        out += dot(p.normals[t], mid - centre) > 0;
+    }
+    EXPECT_EQ(out, p.normals.size());
+}
+
+TEST(Proxies, TheIndexCarriesThemAndRefusesBadOnes) {
+    const Bytes bytes = shapes_pack(8);
+    Pack pack;
+    ASSERT_TRUE(pack.open(bytes.data(), uint32_t(bytes.size())).ok());
+    std::vector<Proxy> proxies;
+    std::string error;
+    ASSERT_TRUE(make_proxies(pack, 48, proxies, error)) << error;
+    BlockOptions options{1, BlockStore::Lzma, &proxies};
+    Bytes file;
+    ASSERT_TRUE(make_blocked(pack, {}, options, file, error)) << error;
+    std::vector<uint32_t> aligned(file.size() / 4 + 1);
+    std::memcpy(aligned.data(), file.data(), file.size());
+    PackIndex index;
+    ASSERT_TRUE(index.open(aligned.data(), uint32_t(file.size())).ok());
+    ASSERT_EQ(index.proxy_parts().size(), index.parts().size());
+    for (uint32_t s = 0; s < proxies.size(); ++s) {
+        EXPECT_EQ(index.proxy_parts()[s].triangle_count, proxies[s].triangles.size() / 3);
+        EXPECT_EQ(index.proxy_parts()[s].vertex_count, proxies[s].points.size());
+    }
+    // Without proxies: an index as before (none).
+    Bytes plain;
+    ASSERT_TRUE(make_blocked(pack, {}, {1, BlockStore::Lzma, nullptr}, plain, error));
+    std::vector<uint32_t> a2(plain.size() / 4 + 1);
+    std::memcpy(a2.data(), plain.data(), plain.size());
+    ASSERT_TRUE(index.open(a2.data(), uint32_t(plain.size())).ok());
+    EXPECT_TRUE(index.proxy_parts().empty());
+    // A triangle's corner past its part's vertices, fixed up with the CRC: refused, with its place.
+    ASSERT_TRUE(index.open(aligned.data(), uint32_t(file.size())).ok());
+    const auto* h = reinterpret_cast<const pack::IndexHeader*>(aligned.data());
+    auto* tri = const_cast<pack::ProxyTriangle*>(index.proxy_triangles().data());
+    tri[0].v[1] = 60000;
+    auto* mh = reinterpret_cast<pack::IndexHeader*>(aligned.data());
+    mh->crc32 = pack::crc32(reinterpret_cast<const uint8_t*>(aligned.data()) + pack::kIndexCrcFrom, h->index_bytes - pack::kIndexCrcFrom);
+    const Result r = index.open(aligned.data(), uint32_t(file.size()));
+    EXPECT_EQ(r.status, Status::Corrupt);
+    EXPECT_NE(std::string(r.where.kind ? r.where.kind : "").find("ProxyTriangles"), std::string::npos);
+}

@@ -1,0 +1,121 @@
+// Parts' proxies on the screen (issue 52): a part whose block is left out of a model larger than
+// the memory is drawn as its proxy (a coarse mesh in the index), shaded in its colour, not as
+// its box; in wireframe, where no face is drawn, its box.
+#include "../geom/shapes.h"
+#include "app.h"
+#include "pack_blocks.h"
+#include "proxies.h"
+
+#include <string>
+#include <vector>
+
+using namespace facet;
+using namespace facet::geom;
+using namespace facet::test;
+
+namespace {
+
+constexpr Rgb565 kBoxColour = rgb565(96, 104, 128); // (painter.cpp)
+
+// Twelve parts of every surface kind, a part a block, with or without their proxies.
+Bytes twelve(bool proxies) {
+    const Bytes shapes[] = {plate_with_holes(), sphere(), torus(), trimmed_bspline()};
+    std::vector<Pack> packs(12);
+    for (uint32_t k = 0; k < 12; ++k) EXPECT_TRUE(packs[k].open(shapes[k % 4].data(), uint32_t(shapes[k % 4].size())).ok());
+    const Bytes combined = combine_packs(packs, 150.0f);
+    Pack whole;
+    EXPECT_TRUE(whole.open(combined.data(), uint32_t(combined.size())).ok());
+    std::vector<Proxy> made;
+    std::string error;
+    EXPECT_TRUE(make_proxies(whole, 64, made, error)) << error;
+    Bytes file;
+    EXPECT_TRUE(make_blocked(whole, {}, {1, BlockStore::Lzma, proxies ? &made : nullptr}, file, error)) << error;
+    return file;
+}
+
+// The model in the largest workspace that leaves some parts out (as swap_test's), run to rest.
+bool open_in_part(App& app, const Bytes& file, uint32_t& boxed) {
+    std::vector<uint64_t> aligned(file.size() / 8 + 1);
+    std::memcpy(aligned.data(), file.data(), file.size());
+    ModelNeeds needs;
+    if (const Result r = model_needs(aligned.data(), uint32_t(file.size()), needs); !r.ok()) {
+        ADD_FAILURE() << text(r);
+        return false;
+    }
+    const size_t base = workspace_bytes();
+    for (size_t room = needs.least_workspace_bytes + needs.pack_memory_bytes - base; room > 4096; room = room * 31 / 32) {
+        app = App{};
+        app.w = 320, app.h = 240;
+        app.workspace_size = base + room;
+        if (!app.create().ok()) return false;
+        if (const Result r = app.load(file); !r.ok()) {
+            if (r.status == Status::Full) continue;
+            ADD_FAILURE() << text(r);
+            return false;
+        }
+        boxed = app.last(Event::Kind::Loaded)->loaded.boxed_parts;
+        if (boxed >= 4 && boxed < 12) {
+            app.run();
+            return true;
+        }
+    }
+    return false;
+}
+
+struct Look {
+    size_t box = 0, drawn = 0; // pixels of the box colour; pixels not the background's
+};
+Look look(const App& app) {
+    Look l;
+    const std::vector<Rgb565> screen = app.screen();
+    for (size_t i = 0; i < screen.size(); ++i) {
+        l.box += screen[i] == kBoxColour;
+        l.drawn += screen[i] != screen[i - i % app.w]; // (a row's background: its left end)
+    }
+    return l;
+}
+
+} // namespace
+
+TEST(Proxies, PartsLeftOutAreDrawnAsTheirProxiesNotBoxes) {
+    App with, without;
+    uint32_t boxed_with = 0, boxed_without = 0;
+    ASSERT_TRUE(open_in_part(with, twelve(true), boxed_with));
+    ASSERT_TRUE(open_in_part(without, twelve(false), boxed_without));
+    const Look a = look(with), b = look(without);
+    EXPECT_GT(b.box, 0u) << "without proxies, the parts left out are boxes";
+    EXPECT_EQ(a.box, 0u) << "with them, no box at rest";
+    // Each part left out covers pixels of its own about its centre (shaded triangles).
+    const Core& core = *static_cast<const Core*>(with.v);
+    const module::Scene& scene = core.scene();
+    const std::vector<Rgb565> screen = with.screen();
+    uint32_t shown = 0;
+    for (uint32_t i = 0; i < scene.instances().size(); ++i) {
+        const uint32_t part = scene.instances()[i].shell;
+        if (!scene.part_left_out(part)) continue;
+        int32_t centre[3], radius;
+        ASSERT_TRUE(scene.part_sphere(part, centre, radius));
+        module::Projected p;
+        core.camera().transform(scene, i, with.w, with.h).project(centre, p);
+        const int32_t x = render::subpixel::pixel_of(p.s.x), y = render::subpixel::pixel_of(p.s.y);
+        uint32_t covered = 0;
+        for (int32_t dy = -4; dy <= 4; ++dy)
+            for (int32_t dx = -4; dx <= 4; ++dx) {
+                const int32_t px = x + dx, py = y + dy;
+                if (px < 0 || py < 0 || px >= with.w || py >= with.h) continue;
+                const size_t at = size_t(py) * with.w + px;
+                covered += screen[at] != screen[at - at % with.w] && screen[at] != kBoxColour;
+            }
+        EXPECT_GT(covered, 4u) << "part " << part << " left out, drawn as its proxy at (" << x << ", " << y << ")";
+        ++shown;
+    }
+    EXPECT_EQ(shown, scene.left_out().parts);
+    EXPECT_GT(shown, 0u);
+    // Wireframe draws no face: the boxes again.
+    ASSERT_TRUE(with.v->set_display_mode(DisplayMode::Wireframe).ok());
+    with.run();
+    EXPECT_GT(look(with).box, 0u);
+    ASSERT_TRUE(with.v->set_display_mode(DisplayMode::HiddenLine).ok());
+    with.run();
+    EXPECT_EQ(look(with).box, 0u) << "hidden line: proxies as paper faces";
+}
