@@ -8,8 +8,8 @@
 // Reads may end at once (return Ok) or later (return Busy, then call Viewer::read_done() once,
 // from any context: a DMA or card interrupt). The module reads a blocked pack's index first and
 // then each block when the view needs it, into its own pack memory, one block at a time: it never
-// holds the whole file. A read that fails (a card pulled: Io) leaves its block a box until the
-// storage is back (Viewer::storage_changed()).
+// holds the whole file. A read that fails (a card pulled: Io) leaves its block out (its parts
+// drawn as their proxies, or boxes) until the storage is back (Viewer::storage_changed()).
 #include "core/status.h"
 
 #include <cstdint>

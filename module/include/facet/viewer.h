@@ -95,7 +95,7 @@ public:
     // A storage read that returned Busy has ended (any context: a DMA or card interrupt).
     void read_done(Status status);
     // The storage went away (false: a card pulled: the model on screen stays, what it had not
-    // read stays boxes, the chooser is empty) or came back (true: the folder listed again, and
+    // read stays out: proxies or boxes; the chooser is empty) or came back (true: the folder listed again, and
     // the open model's blocks read again if its file is the same).
     Result storage_changed(bool present);
 
