@@ -14,6 +14,8 @@
 
 namespace facet::module {
 
+constexpr uint32_t kPaper = 0x00FFFFFFu; // hidden-line faces (and proxies): white
+
 // The smallest face worth its triangles: one under this many pixels across (its sphere's
 // diameter) wherever the view shows it is left untessellated, drawn by its edges or as a speck
 // until the view makes it larger (detail.cpp, painter.cpp). Its edges, a pixel wide, cover
