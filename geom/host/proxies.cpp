@@ -1,6 +1,7 @@
 // Parts' proxies: a coarse tessellation, merged on a grid (proxies.h).
 #include "proxies.h"
 
+#include "edge_pool.h"
 #include "geom/tessellate.h"
 
 #include <algorithm>
@@ -82,23 +83,12 @@ bool make_proxies(const Pack& pack, uint32_t max_triangles, std::vector<Proxy>& 
     out.assign(pack.shells().size(), Proxy{});
     TessOptions opt;
     opt.tolerance = kCoarser * default_tolerance(pack);
-    const size_t ne = pack.edges().size();
-    std::vector<uint32_t> ef(ne);
-    std::vector<uint16_t> ec(ne);
-    std::vector<float> et;
-    std::vector<Vec3> ep;
-    EdgeSamples samples{};
-    for (size_t pool = ne * 16 + 1024;; pool *= 4) {
-        et.assign(pool, 0.0f);
-        ep.assign(pool, Vec3{});
-        samples = EdgeSamples{ef, ec, et, ep};
-        const Result r = sample_edges(pack, opt, samples);
-        if (r.ok()) break;
-        if (r.status != Status::Full || pool > (size_t(1) << 26)) {
-            error = std::string("proxies: the edges cannot be sampled: ") + r.what;
-            return false;
-        }
+    EdgePool edges;
+    if (const Result r = edges.sample(pack, opt, pack.edges().size() * 16 + 1024); !r.ok()) {
+        error = std::string("proxies: the edges cannot be sampled: ") + r.what;
+        return false;
     }
+    const EdgeSamples& samples = edges.samples;
     const FaceCapacity capacity{32760, 32760, 4096, kPatchCacheWords};
     std::vector<uint64_t> face_memory(face_storage_bytes(capacity) / 8 + 1);
     FaceStorage storage;

@@ -25,6 +25,7 @@
 #include "geom/tessellate.h"
 #include "file_io.h"
 #include "mesh_topology.h"
+#include "edge_pool.h"
 #include "pack_io.h"
 
 #include <algorithm>
@@ -176,37 +177,26 @@ int main(int argc, char** argv) {
     // Buffers: edge samples (once per edge, shared by every face and instance; the pool grows
     // until it holds them), the device's 16-bit CDT arena, one shell's mesh.
     const size_t ne = pack.edges().size();
-    std::vector<uint32_t> ef(ne);
-    std::vector<uint16_t> ec(ne);
-    std::vector<float> et;
-    std::vector<Vec3> ep;
-    EdgeSamples samples{};
+    EdgePool edges;
     const auto t_start = std::chrono::steady_clock::now();
-    for (size_t pool = ne * 64 + 1024;; pool *= 4) {
-        et.assign(pool, 0.0f);
-        ep.assign(pool, Vec3{});
-        samples = EdgeSamples{ef, ec, et, ep};
-        const Result r = sample_edges(pack, opt, samples);
-        if (r.ok()) break;
+    if (const Result r = edges.sample(pack, opt, ne * 64 + 1024); !r.ok()) {
         describe(r, text, sizeof text);
-        if (r.status != Status::Full || pool > (size_t(1) << 26)) {
-            // Say which tolerance does work: the first of 4x, 16x, ... coarser that samples.
-            std::string hint;
-            for (float t = opt.tolerance * 4; r.status == Status::Full && t < 1e9f; t *= 4) {
-                TessOptions o = opt;
-                o.tolerance = t;
-                EdgeSamples trial{ef, ec, et, ep};
-                if (sample_edges(pack, o, trial).ok()) {
-                    char h[120];
-                    std::snprintf(h, sizeof h, "; --tolerance %.4g mm samples every edge (the default is %.4g mm)", t,
-                                  default_tol);
-                    hint = h;
-                    break;
-                }
+        // Say which tolerance does work: the first of 4x, 16x, ... coarser that samples.
+        std::string hint;
+        for (float t = opt.tolerance * 4; r.status == Status::Full && t < 1e9f; t *= 4) {
+            TessOptions o = opt;
+            o.tolerance = t;
+            EdgeSamples trial{edges.first, edges.count, edges.t, edges.p};
+            if (sample_edges(pack, o, trial).ok()) {
+                char h[120];
+                std::snprintf(h, sizeof h, "; --tolerance %.4g mm samples every edge (the default is %.4g mm)", t, default_tol);
+                hint = h;
+                break;
             }
-            return die(std::string("edge sampling at --tolerance ") + std::to_string(opt.tolerance) + " mm: " + text + hint);
         }
+        return die(std::string("edge sampling at --tolerance ") + std::to_string(opt.tolerance) + " mm: " + text + hint);
     }
+    const EdgeSamples& samples = edges.samples;
     // One face's storage as the device's (its patches too: the same meshes), at this capacity.
     const FaceCapacity capacity{uint32_t(face_points), uint32_t(face_points), 4096, kPatchCacheWords};
     std::vector<uint64_t> face_memory(face_storage_bytes(capacity) / 8 + 1);
