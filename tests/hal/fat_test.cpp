@@ -118,8 +118,16 @@ std::vector<uint8_t> make_image(const std::string& name, const std::string& fat,
     run(tool("mcopy") + m + d + "/small.bin ::/models/A.FPK");
     run(tool("mcopy") + m + d + "/small.bin ::/readme.txt");
     run(tool("mcopy") + m + d + "/nested.bin '::/models/old/deeper/Zahnrad-grün.fpk'");
-    // Enough files that the folder takes more than one cluster.
-    for (int k = 0; k < 70; ++k) run(tool("mcopy") + m + d + "/small.bin ::/models/part-number-" + std::to_string(k) + "-long-name.fpk");
+    // Enough files that the folder takes more than one cluster (copied in one call).
+    const std::string many = d + "/many";
+    std::filesystem::create_directories(many);
+    std::string sources;
+    for (int k = 0; k < 70; ++k) {
+        const std::string f = many + "/part-number-" + std::to_string(k) + "-long-name.fpk";
+        write_file(f, c.small);
+        sources += " " + f;
+    }
+    run(tool("mcopy") + m + sources + " ::/models/");
     return read_file(img);
 }
 
