@@ -58,7 +58,7 @@ bool Framer::run(const Scene& scene, Camera& camera, uint32_t units) {
             curved_only_ = false;
             budget = budget > 32 ? budget - 32 : 0;
             int32_t corners[8][3];
-            if (scene.part_left_out(instances[instance_].shell)) { // a part left out (drawn as its box): its box's corners
+            if (scene.part_left_out(instances[instance_].shell)) { // a part left out (drawn as its proxy): its box's corners
                 if (scene.part_corners(instances[instance_].shell, corners)) {
                     for (const int32_t* q : corners) {
                         t_.project(q, p);

@@ -22,7 +22,7 @@ struct FreeArea {
 struct StatusInfo {
     const char* name = ""; // the model's
     uint32_t finished = 0, total = 0, triangles = 0;
-    uint32_t boxed_faces = 0; // a model larger than the memory: the faces of the parts it left out, drawn as boxes
+    uint32_t boxed_faces = 0; // a model larger than the memory: the faces of the parts it left out, drawn as their proxies
     uint32_t frame_us = 0; // the last full frame's cost (0: no clock)
     float tolerance_mm = 0;
     DisplayMode mode = DisplayMode::ShadedEdges;

@@ -109,7 +109,7 @@ public:
     bool draws_proxy(uint32_t part) const;
     uint32_t part_proxy(uint32_t part, const Transform& t);
     // Whether a part's sphere (Scene::part_sphere) is under a few pixels across: the part is
-    // drawn as its box until it grows.
+    // drawn as its proxy (or box) until it grows.
     bool tiny(const int32_t sphere_centre[3], int32_t radius, const Transform& t);
     void reset_edges(uint32_t part); // (its edges: all of them where a part's are not known apart)
     // The rows of the screen being drawn (the target's band) for culling.

@@ -46,7 +46,7 @@ Result Core::check_face(uint32_t part, uint32_t face) const {
         return Result::fail(Status::OutOfRange, "the face is not one of the part's", {"face", face}, {"part", part});
     }
     if (scene_.face(face).state == module::FaceState::Absent) { // its block is not decoded: no exact geometry at hand
-        return Result::fail(Status::NotFound, "the face's part is left out (drawn as its box) until the view brings it in", {"face", face});
+        return Result::fail(Status::NotFound, "the face's part is left out (drawn as its proxy) until the view brings it in", {"face", face});
     }
     return {};
 }

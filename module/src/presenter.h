@@ -131,7 +131,7 @@ private:
         bool have_transform = false;
         Transform transform{};
         Transform::Sight sight = Transform::Sight::Across; // where the instance's part lies
-        bool tiny = false;            // and whether it is a few pixels across (drawn as its box)
+        bool tiny = false;            // and whether it is a few pixels across (drawn as its proxy, or box)
         uint32_t version = 0, faces_version = 0, finished = 0, applied_to = 0;
         uint32_t cost_us = 0;
         uint32_t pieces = 0;          // pieces of work this frame took so far

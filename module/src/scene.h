@@ -32,7 +32,7 @@ static_assert(sizeof(DrawVertex) == FACET_BYTES_PER_MESH_VERTEX);
 // Deferred: too small on the screen (or off it) to be worth its triangles for now; drawn by its
 // edges, its sphere bounded from them, tessellated when the view makes it large enough.
 // Absent: its block is left out of a model larger than the memory (not decoded; its parts
-// drawn as their boxes), outside the totals until the view brings the block in.
+// drawn as their proxies, or boxes), outside the totals until the view brings the block in.
 enum class FaceState : uint8_t { Pending, Done, Failed, Deferred, Absent };
 
 // +1 for a right-handed frame (x cross y along z), -1 for a left-handed one: a surface's du x dv
@@ -67,7 +67,7 @@ struct Block {
     // until the view changes or a new pass begins.
     bool refused = false;
     // Left out of a model larger than the memory (loader.h): not decoded (its pack empty), its
-    // faces absent and its edges unsampled; its parts are drawn as their boxes. Numbered all
+    // faces absent and its edges unsampled; its parts are drawn as their proxies. Numbered all
     // the same (`faces`, `edges`: its parts' counts in the index), so that it can come in and
     // go out again as the view asks (Scene::take_block, drop_block) without renumbering.
     bool left_out = false;
@@ -142,7 +142,7 @@ public:
     bool blocked() const { return blocked_; } // a blocked pack: its index has the parts' boxes
     const geom::PackIndex& index() const { return index_; } // (a blocked pack's: its parts' boxes and proxies)
     // What a model larger than the memory left out (its blocks not decoded, loader.h): its
-    // parts are drawn as their boxes.
+    // parts are drawn as their proxies (or boxes).
     struct LeftOut {
         uint32_t blocks = 0, parts = 0, faces = 0, edges = 0;
     };

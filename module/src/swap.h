@@ -1,6 +1,6 @@
 #pragma once
 // Blocks brought in as the view comes near them: a model larger than the memory is opened with
-// its largest blocks, the rest left out and drawn as their boxes (loader.h). When the view has
+// its largest blocks, the rest left out and drawn as their proxies, or boxes (loader.h). When the view has
 // changed and nothing else is under way, the left-out block largest on the screen is brought
 // in: where there is room for its decoded pack and its samples (kBackPixels across at least),
 // or, for one kSwapPixels across or more, where held blocks under half its size on the screen

@@ -230,7 +230,7 @@ typedef struct {
     const char *name, *unit; /* the STEP file's top product; its length unit: mm, cm, m, in, ft or units */
     float unit_mm;
     uint32_t parts, faces, edges;
-    uint32_t boxed_parts, boxed_faces; /* larger than the memory: parts left out now (drawn as boxes) */
+    uint32_t boxed_parts, boxed_faces; /* larger than the memory: parts left out now (drawn as their proxies, or boxes) */
     float centre_mm[3], radius_mm;     /* the placed model's sphere */
 } facet_model_info;
 facet_model_info facet_get_model(const facet_viewer *viewer);

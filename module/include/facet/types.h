@@ -219,7 +219,7 @@ struct ModelInfo {
     const char* unit = "";  // the file's length unit: mm, cm, m, in, ft, or units
     float unit_mm = 1;
     uint32_t parts = 0, faces = 0, edges = 0;
-    uint32_t boxed_parts = 0, boxed_faces = 0; // larger than the memory: parts left out now (drawn as boxes)
+    uint32_t boxed_parts = 0, boxed_faces = 0; // larger than the memory: parts left out now (drawn as their proxies, or boxes)
     float centre_mm[3] = {0, 0, 0}, radius_mm = 0; // the placed model's sphere
 };
 
