@@ -29,6 +29,14 @@ uint32_t staging(const geom::PackIndex& index, uint32_t b) {
     return !index.mapped() && k.stored_bytes != k.pack_bytes ? align8(k.stored_bytes) : 0;
 }
 
+// Where block b's stored bytes are staged before they are decoded: just below `end` (the room's
+// end: where the index lies). And a block read to its place: a plain pack, or the file lies.
+uint8_t* staged_at(const Unpacked& u, uint32_t b, uint32_t end) { return u.memory + ((end - staging(u.index, b)) & ~7u); }
+Result plain_block(const uint8_t* at, uint32_t b, uint32_t bytes) {
+    if (geom::pack_file_kind(at, bytes) == geom::PackFileKind::Pack) return {};
+    return Result::fail(Status::Corrupt, "a block of its pack's size is no plain pack", {"block", b});
+}
+
 // What a blocked pack needs: its table of blocks, each block decoded (4-byte aligned), and an
 // LZMA decoder's state (with its alignment). 0 when the index does not read. On storage, also
 // its index and the room to stage the largest block kept.
@@ -52,13 +60,11 @@ Result load_block(Unpacked& u, uint32_t b, uint32_t at, uint32_t end) {
     if (uint64_t(at) + entry.pack_bytes + stage > end) return Result::fail(Status::Full, "the decoded blocks do not fit the pack memory", here);
     std::span<const uint8_t> file;
     if (u.reader) {
-        uint8_t* into = stage ? u.memory + ((end - stage) & ~7u) : u.memory + at;
+        uint8_t* into = stage ? staged_at(u, b, end) : u.memory + at;
         if (Result r = u.reader->read(entry.offset, into, entry.stored_bytes); !r.ok()) return r.within(here);
         file = {into, entry.stored_bytes};
         if (!stage) {
-            if (geom::pack_file_kind(into, entry.stored_bytes) != geom::PackFileKind::Pack) {
-                return Result::fail(Status::Corrupt, "a block of its pack's size is no plain pack", here);
-            }
+            if (Result r = plain_block(into, b, entry.stored_bytes); !r.ok()) return r;
             u.blocks[b].data = into;
             return {};
         }
@@ -287,7 +293,7 @@ Result start_block(Unpacked& u, uint32_t b, geom::PackDecoder& decoder) {
     if (room == 0) return {};
     if (uint64_t(u.bytes) + room + stage > u.limit) return Result::fail(Status::Full, "no room in the pack memory for the block", {"block", b});
     if (!u.reader) return decoder.start(u.index.block_file(b), {u.memory + u.bytes, entry.pack_bytes}, *u.probs).within({"block", b});
-    uint8_t* into = stage ? u.memory + ((u.limit - stage) & ~7u) : u.memory + u.bytes;
+    uint8_t* into = stage ? staged_at(u, b, u.limit) : u.memory + u.bytes;
     const Result r = u.reader->start(entry.offset, into, entry.stored_bytes);
     if (r.ok()) return decode_block(u, b, decoder);
     return r.status == Status::Busy ? r : r.within({"block", b});
@@ -295,14 +301,8 @@ Result start_block(Unpacked& u, uint32_t b, geom::PackDecoder& decoder) {
 
 Result decode_block(Unpacked& u, uint32_t b, geom::PackDecoder& decoder) {
     const pack::Block& entry = u.index.blocks()[b];
-    const uint32_t stage = staging(u.index, b);
-    if (!stage) { // a plain block, read to its place
-        if (geom::pack_file_kind(u.memory + u.bytes, entry.stored_bytes) != geom::PackFileKind::Pack) {
-            return Result::fail(Status::Corrupt, "a block of its pack's size is no plain pack", {"block", b});
-        }
-        return {};
-    }
-    const uint8_t* file = u.memory + ((u.limit - stage) & ~7u);
+    if (!staging(u.index, b)) return plain_block(u.memory + u.bytes, b, entry.stored_bytes); // (read to its place)
+    const uint8_t* file = staged_at(u, b, u.limit);
     return decoder.start({file, entry.stored_bytes}, {u.memory + u.bytes, entry.pack_bytes}, *u.probs).within({"block", b});
 }
 

@@ -69,13 +69,8 @@ uint32_t listed_faces(module::Reader& r) {
 bool list_library(module::Reader& r, module::Models::Listed row, module::Models& models) {
     pack::LibraryHeader h;
     alignas(8) uint8_t buf[16 * sizeof(pack::LibraryEntry)];
-    if (r.bytes() < sizeof h || !r.read(0, &h, sizeof h).ok()) return false;
-    if (std::memcmp(h.magic, pack::kLibraryMagic, 4) != 0 || h.version != pack::kLibraryVersion || h.count == 0 ||
-        h.count > pack::kMaxLibraryEntries || h.total_bytes > r.bytes()) {
-        return false;
-    }
-    const uint32_t table_end = uint32_t(sizeof h + h.count * sizeof(pack::LibraryEntry));
-    if (table_end > h.total_bytes) return false;
+    if (r.bytes() < sizeof h || !r.read(0, &h, sizeof h).ok() || !geom::check_library_head(h, r.bytes()).ok()) return false;
+    const uint32_t table_end = geom::library_table_end(h);
     uint32_t crc = 0; // (the table read twice: checked whole first, then listed)
     for (uint32_t at = sizeof h; at < table_end; at += sizeof buf) {
         const uint32_t n = std::min<uint32_t>(sizeof buf, table_end - at);
@@ -85,9 +80,7 @@ bool list_library(module::Reader& r, module::Models::Listed row, module::Models&
     if (crc != h.crc32) return false;
     for (uint32_t i = 0; i < h.count; ++i) {
         pack::LibraryEntry e;
-        if (!r.read(uint32_t(sizeof h + i * sizeof e), &e, sizeof e).ok()) return false;
-        const bool inside = e.offset >= table_end && e.offset <= h.total_bytes && e.bytes <= h.total_bytes - e.offset;
-        if (!inside || (e.offset & 7) || e.bytes == 0 || std::memchr(e.name, 0, sizeof e.name) == nullptr) return false;
+        if (!r.read(uint32_t(sizeof h + i * sizeof e), &e, sizeof e).ok() || !geom::library_entry_sound(e, h)) return false;
     }
     for (uint32_t i = 0; i < h.count; ++i) {
         pack::LibraryEntry e;

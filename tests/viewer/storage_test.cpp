@@ -54,6 +54,20 @@ void start(App& app, FakeStorage& card, size_t workspace = 0) {
     card.viewer = app.v;
 }
 
+// `file` (the card's /twelve.fpk) opened in the largest workspace that leaves 4 to 11 of its 12
+// parts out: how many it left out (0: no such workspace).
+uint32_t open_in_part(App& sd, FakeStorage& card, const Bytes& file) {
+    const ModelNeeds needs = needs_of(file);
+    for (size_t room = needs.least_workspace_bytes + needs.pack_memory_bytes; room > workspace_bytes() + 4096; room = room * 31 / 32) {
+        sd = App{};
+        start(sd, card, room);
+        if (!sd.v->set_storage(card.storage(), "/").ok() || !sd.v->open_model(0).ok()) continue;
+        const uint32_t boxed = sd.last(Event::Kind::Loaded)->loaded.boxed_parts;
+        if (boxed >= 4 && boxed < 12) return boxed;
+    }
+    return 0;
+}
+
 // The same steps of input on two apps: a turn, zooms toward the middle, a pan, fit.
 template <typename F>
 void each_view(App& app, F&& after) {
@@ -115,23 +129,12 @@ TEST(Storage, ABlockedPackFromStorageDrawsWhatItDrawsFromMemoryReadingOneBlockAt
 TEST(Storage, BlocksLeftOutAreReadFromStorageAsTheViewNearsThem) {
     for (const bool deferred : {false, true}) {
         const Bytes file = parts(12, BlockStore::Lzma);
-        const ModelNeeds needs = needs_of(file);
         // A workspace that leaves parts out from storage (its index takes room there too).
         FakeStorage card;
         card.files["/twelve.fpk"] = file;
         card.deferred = deferred;
         App sd;
-        uint32_t boxed = 0;
-        size_t room = needs.least_workspace_bytes + needs.pack_memory_bytes;
-        for (; room > workspace_bytes() + 4096; room = room * 31 / 32) {
-            sd = App{};
-            start(sd, card, room);
-            ASSERT_TRUE(sd.v->set_storage(card.storage(), "/").ok());
-            if (!sd.v->open_model(0).ok()) continue;
-            boxed = sd.last(Event::Kind::Loaded)->loaded.boxed_parts;
-            if (boxed >= 4 && boxed < 12) break;
-        }
-        ASSERT_TRUE(boxed >= 4 && boxed < 12) << "a workspace that leaves some parts out";
+        ASSERT_GT(open_in_part(sd, card, file), 0u) << "a workspace that leaves some parts out";
         sd.run();
         const uint32_t reads_at_open = card.reads;
         const module::Scene& scene = static_cast<const Core*>(sd.v)->scene();
@@ -272,17 +275,7 @@ TEST(Storage, ACardPulledMidReadLeavesTheModelOnScreenAndPutBackGoesOn) {
         card.files["/twelve.fpk"] = file;
         card.deferred = deferred;
         App sd;
-        uint32_t boxed = 0;
-        const ModelNeeds needs = needs_of(file);
-        for (size_t room = needs.least_workspace_bytes + needs.pack_memory_bytes; room > workspace_bytes() + 4096; room = room * 31 / 32) {
-            sd = App{};
-            start(sd, card, room);
-            ASSERT_TRUE(sd.v->set_storage(card.storage(), "/").ok());
-            if (!sd.v->open_model(0).ok()) continue;
-            boxed = sd.last(Event::Kind::Loaded)->loaded.boxed_parts;
-            if (boxed >= 4 && boxed < 12) break;
-        }
-        ASSERT_TRUE(boxed >= 4 && boxed < 12);
+        ASSERT_GT(open_in_part(sd, card, file), 0u) << "a workspace that leaves some parts out";
         sd.run();
         const Stats before = sd.v->stats();
         card.pull_after_reads = 0; // the next read finds the card gone

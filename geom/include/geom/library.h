@@ -15,6 +15,16 @@ namespace facet::geom {
 // Whether the bytes start a library (its magic; open() checks the rest).
 bool is_library(const void* data, uint32_t available);
 
+// A library's head checked against the bytes it has (its magic, version, count, total and the
+// table inside it), and one entry of its table against the head (inside the library, after the
+// table, aligned, not empty, its name terminated): Library::open's checks, and a reader's that
+// reads the table from storage a piece at a time. The table's CRC is the caller's.
+Result check_library_head(const pack::LibraryHeader& h, uint32_t available);
+bool library_entry_sound(const pack::LibraryEntry& e, const pack::LibraryHeader& h);
+constexpr uint32_t library_table_end(const pack::LibraryHeader& h) {
+    return uint32_t(sizeof h + h.count * sizeof(pack::LibraryEntry));
+}
+
 class Library {
 public:
     struct Entry {
