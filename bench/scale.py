@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
-"""./facet bench scale: assemblies of 1 k to 30 k faces through the viewer firmware in QEMU.
+"""./facet bench scale: assemblies of 1 k to 100 k faces through the viewer firmware in QEMU.
 
 Each assembly is made with Open CASCADE (tools/assembly: copies of shared models on a grid,
-`distinct` copies or `instances` of each model), packed (facet-pack's default: blocked, LZMA),
+`distinct` copies, `instances` of each model, or `mixed`: distinct copies up to 30 k faces
+and instances of them beyond: a machine of many parts, some repeated), packed (facet-pack's default: blocked, LZMA),
 loaded at the board's pack address and shown; then turned (four key turns), zoomed in on the
 centre (six steps) and quit (tests/sessions/scale.session). With --sources ram,card each pack
 also comes from a memory card image (tools/card.py) in the board's SD slot, nothing loaded into
@@ -10,7 +11,8 @@ RAM (boards with capabilities.card). One CSV row per board, assembly and source:
 
   board,kind,source,faces,pack_faces,step_bytes,pack_bytes,first_frame_instructions,first_view_instructions,
   frame_rest_instructions,frame_rest_sharp_instructions,frame_turning_max_instructions,
-  frame_zoomed_instructions,frame_dragging_max_instructions,triangles,deferred_faces,peak_ram_bytes,note
+  frame_zoomed_instructions,frame_dragging_max_instructions,frame_max_instructions,triangles,deferred_faces,
+  left_out_faces,peak_ram_bytes,note
 
   faces: the assembly's size as asked (its placed faces are a little over); pack_faces: the
   faces the pack holds (for instances, those of the parts once each);
@@ -24,14 +26,16 @@ RAM (boards with capabilities.card). One CSV row per board, assembly and source:
   smoothly, which the pack marks; a pack made before it marked them has none); turning: the
   largest frame while the view turns by keys; dragging: the largest frame while the mouse drags
   it (a board with a mouse; the frames a drag draws lighter); zoomed: the frame once the zoomed
-  view's faces are in.
+  view's faces are in; worst: the largest full frame of the session after the first view
+  (what ./facet run holds to a frame's budget); left out: the faces of the parts the memory
+  left out at load (drawn as their parts' proxies, or boxes from a pack without them).
 
 The markdown table and a PNG plot (cost against faces, log-log) go beside the CSV. Exact guest
 instruction counts (the facet-icount plugin); 600 M = 1 s at 600 MHz. A run that fails says why
 in the note; nothing is left out silently.
 
   scale.py --assembly facet-assembly --packer facet-pack --build build --work DIR --csv FILE
-           [--faces 1000,3000,10000,30000] [--kinds distinct,instances]
+           [--faces 1000,3000,10000,30000,100000] [--kinds distinct,instances,mixed]
            [--boards qemu-versatilepb,qemu-mps2-evkb] MODEL.step...
 """
 import argparse
@@ -51,14 +55,15 @@ from boot import boot, exit_note, last_error  # noqa: E402  (bench/boot.py: the 
 
 COLUMNS = ['board', 'kind', 'source', 'faces', 'pack_faces', 'step_bytes', 'pack_bytes', 'first_frame_instructions', 'first_view_instructions',
            'frame_rest_instructions', 'frame_rest_sharp_instructions', 'frame_turning_max_instructions', 'frame_zoomed_instructions',
-           'frame_dragging_max_instructions', 'triangles',
-           'deferred_faces', 'peak_ram_bytes', 'note']
+           'frame_dragging_max_instructions', 'frame_max_instructions', 'triangles',
+           'deferred_faces', 'left_out_faces', 'peak_ram_bytes', 'note']
+MIXED_DISTINCT_FACES = 30_000  # kind mixed: distinct copies up to these faces, instances of them beyond
 
 
 def measure(uart, regions):
     """The run's figures from its log and regions: the first frame and view (as ./facet run
     budgets them), then the frames of each phase of the session, split by its screenshots."""
-    out = {'turning': [], 'dragging': []}
+    out = {'turning': [], 'dragging': [], 'all': []}
     out['first_frame'], out['first_view'] = first_view(uart, regions)
     pieces = []               # the pieces of the frame under way
     phase = 'load'            # load, rest (after the first shot), sharp, edges, turned, dragged, zoomed
@@ -73,6 +78,8 @@ def measure(uart, regions):
             n = r.values().get('pieces', 1)
             last = sum(pieces[-n:]) if len(pieces) >= n else None
             pieces = []
+            if tessellated and last is not None:
+                out['all'].append(last)
             if phase == 'load' and tessellated:
                 out['rest'] = last
             elif phase == 'rest' and last is not None:
@@ -117,7 +124,8 @@ def run_one(board_name, elf, fpk, out, timeout, image=None):
         notes.append(exit_note(code))
     model = protocol.first_fields(uart, 'model')
     if model.get('boxed_parts'):
-        notes.append(f'larger than the memory: {model["boxed_parts"]:,} parts ({model["boxed_faces"]:,} faces) left out, drawn as boxes')
+        notes.append(f'larger than the memory: {model["boxed_parts"]:,} parts left out at load')
+    row['left_out_faces'] = model.get('boxed_faces', 0) if model else ''
     m = measure(uart, rep.get('regions', []))
     for key, col in (('first_frame', 'first_frame_instructions'), ('first_view', 'first_view_instructions'),
                      ('rest', 'frame_rest_instructions'), ('sharp', 'frame_rest_sharp_instructions'),
@@ -129,6 +137,8 @@ def run_one(board_name, elf, fpk, out, timeout, image=None):
         row['frame_turning_max_instructions'] = max(m['turning'])
     if m['dragging']:
         row['frame_dragging_max_instructions'] = max(m['dragging'])
+    if m['all']:
+        row['frame_max_instructions'] = max(m['all'])
     peak = peak_ram(rep)
     if peak is not None:
         row['peak_ram_bytes'] = peak
@@ -140,8 +150,9 @@ def markdown(rows, date):
     lines = [f'Measured {date} by `./facet bench scale` (exact QEMU instruction counts, M = million instructions, '
              '600 M = 1 s at 600 MHz; the goals of issue 25: first view 1,200 M for 10 k faces, a frame at rest 20 M).',
              '', '| board | kind | from | faces | faces in the pack | pack KB | first frame M | first view M | frame at rest M '
-             '| at rest, tangent edges left out M | turning M | dragging M | zoomed M | triangles | deferred faces | peak RAM MiB | note |',
-             '|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|']
+             '| at rest, tangent edges left out M | turning M | dragging M | zoomed M | worst frame M | triangles | deferred faces '
+             '| faces left out | peak RAM MiB | note |',
+             '|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|']
     for r in rows:
         peak = r.get('peak_ram_bytes')
         lines.append(f'| {r["board"]} | {r["kind"]} | {r.get("source", "ram")} | {r.get("faces", "-")} | {r.get("pack_faces", "-")} | '
@@ -150,8 +161,9 @@ def markdown(rows, date):
                      f'{m(r.get("frame_rest_instructions"))} | {m(r.get("frame_rest_sharp_instructions"))} | '
                      f'{m(r.get("frame_turning_max_instructions"))} | '
                      f'{m(r.get("frame_dragging_max_instructions"))} | '
-                     f'{m(r.get("frame_zoomed_instructions"))} | {r.get("triangles", "-")} | '
-                     f'{r.get("deferred_faces", "-")} | {f"{peak / (1 << 20):.2f}" if peak else "-"} | {r.get("note", "")} |')
+                     f'{m(r.get("frame_zoomed_instructions"))} | {m(r.get("frame_max_instructions"))} | {r.get("triangles", "-")} | '
+                     f'{r.get("deferred_faces", "-")} | {r.get("left_out_faces", "-")} | '
+                     f'{f"{peak / (1 << 20):.2f}" if peak else "-"} | {r.get("note", "")} |')
     return '\n'.join(lines) + '\n'
 
 
@@ -201,8 +213,9 @@ def main():
     ap.add_argument('--build', required=True, help='the build tree holding <board>/firmware/facet-viewer.elf')
     ap.add_argument('--work', required=True)
     ap.add_argument('--csv', required=True)
-    ap.add_argument('--faces', default='1000,3000,10000,30000')
-    ap.add_argument('--kinds', default='distinct,instances')
+    ap.add_argument('--faces', default='1000,3000,10000,30000,100000')
+    ap.add_argument('--kinds', default='distinct,instances,mixed', help='mixed: above 30 k faces only (at or below, it is distinct); '
+                    'distinct above 30 k faces only when mixed is not asked')
     ap.add_argument('--boards', default='qemu-versatilepb,qemu-mps2-evkb')
     ap.add_argument('--sources', default='ram', help='ram, card (an SD card image in the slot of a board with one), or both')
     ap.add_argument('--timeout', type=int, default=3600, help='seconds of wall clock per run')
@@ -217,15 +230,20 @@ def main():
         if not os.path.exists(os.path.join(args.build, b, 'firmware', 'facet-viewer.elf')):
             raise SystemExit(f'scale.py: no facet-viewer.elf for {b} under {args.build}')
     rows = []
-    for kind in args.kinds.split(','):
+    kinds = args.kinds.split(',')
+    for kind in kinds:
         for faces in [int(f) for f in args.faces.split(',')]:
+            if kind == 'mixed' and faces <= MIXED_DISTINCT_FACES:
+                continue  # (the same assembly as distinct)
+            if kind == 'distinct' and faces > MIXED_DISTINCT_FACES and 'mixed' in kinds:
+                continue  # (mixed stands for it: distinct copies that large are gigabytes of STEP)
             name = f'{kind}-{faces}'
             step = os.path.join(args.work, name + '.step')
             fpk = os.path.join(args.work, name + '.fpk')
             why = None
             if not os.path.exists(step):  # made once (minutes for the largest); delete the folder to remake
-                why = make([args.assembly], [step, '--faces', str(faces)] + (['--instances'] if kind == 'instances' else [])
-                           + args.models, 'facet-assembly')
+                how = {'instances': ['--instances'], 'mixed': ['--distinct', str(min(faces, MIXED_DISTINCT_FACES))]}.get(kind, [])
+                why = make([args.assembly], [step, '--faces', str(faces)] + how + args.models, 'facet-assembly')
             # Packed again when the packer is newer than the pack (what it writes may have grown).
             packer = shutil.which(args.packer) or args.packer
             stale = os.path.exists(packer) and os.path.exists(fpk) and os.path.getmtime(fpk) < os.path.getmtime(packer)

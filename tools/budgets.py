@@ -16,7 +16,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import protocol  # noqa: E402
 from budget_rules import (MHZ, PEAK_RAM_GOAL, RAM_BUDGET, analyse, by_model, first_view, first_view_budget,  # noqa: E402
-                          frame_budget, peak_ram, tessellation_budget, unpack_instructions)
+                          frame_budget, peak_ram, tessellation_budget, unpack_instructions, FRAME_BUDGET_MOST)
 
 
 def main():
@@ -172,7 +172,8 @@ def main():
         print(f'  peak RAM this model needed: {out["ram_peak_bytes"]:,} bytes ({out["ram_peak_bytes"] / (1 << 20):.2f} MiB; '
               f'goal {PEAK_RAM_GOAL >> 20} MiB): display and depth buffers, code, stack high-water, the pack, '
               f'the viewer storage at its peak')
-    print(f'  full frames (budget {frame_budget(0):,.0f} instructions = 33.3 ms at {MHZ} MHz per 10k triangles):')
+    print(f'  full frames (budget {frame_budget(0):,.0f} instructions = 33.3 ms at {MHZ} MHz per 10k triangles, '
+          f'at most {FRAME_BUDGET_MOST:,}):')
     for f in out['frames']:
         n = f['instructions']
         print(f'    {f["name"]:<10} {f["triangles"]:>7,} triangles {n:>12,} instructions = {n / (MHZ * 1000):.2f} ms'

@@ -58,7 +58,7 @@ def main():
            'state while it is decoded). Budgets, asserted on the ARM926 and on the MIMXRT1060-EVKB\'s configuration (qemu-mps2-evkb:',
            'its memories, linker script and start-up on QEMU\'s Cortex-M7; docs/boards.md) and reported for the',
            'plain mps2 (code in RAM there, counted as RAM; on the EVKB it stays in flash): all RAM <= 32 MiB',
-           '(link time and MMU), the first pass\'s tessellation <= 600 M (up to 5,000 faces; beyond, 120 k a face: the first view\'s rate, so that for a large model the first view binds), the first view (load to the first frame with the faces in) <= 1.2 G per 10,000 faces (at least 1.2 G), a frame <= 20 M per 10,000 triangles in view.',
+           '(link time and MMU), the first view (load to the first frame with the faces in) <= 1.2 G whatever the model\'s size, the first pass\'s tessellation within it <= 600 M (up to 5,000 faces; beyond, 120 k a face up to the first view\'s 1.2 G), a frame <= 20 M per 10,000 triangles in view and at most 40 M (none grows with the model past these: issue 52).',
            'With several models (`./facet run A.step B.step`: a library, the session opening the second from',
            'the chooser), each model opened is held to the tessellation and first-view budgets on its own, its',
            'first view counted from the unpack that opened it (`budgets.json`: `models_opened_later`).', '']

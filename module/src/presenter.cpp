@@ -37,6 +37,27 @@ void Presenter::reset() {
     ++faces_version_, layer_.version = 0, layer_.applied = 0;
     shown_version_ = shown_finished_ = 0;
     job_ = {};
+    ++kept_stamp_; // (another model: none kept)
+}
+
+const Transform& Presenter::transform_of(uint32_t instance) {
+    const View& v = camera_.view();
+    const Section& s = camera_.section();
+    const float* c = scene_.centre();
+    KeptFor& k = kept_for_;
+    if (!same_view(k.view, v) || k.section.on != s.on || k.section.n[0] != s.n[0] || k.section.n[1] != s.n[1] ||
+        k.section.n[2] != s.n[2] || k.section.offset != s.offset || k.width != display_.width || k.height != display_.height ||
+        k.radius != scene_.radius() || k.unit != scene_.unit() || k.centre[0] != c[0] || k.centre[1] != c[1] || k.centre[2] != c[2]) {
+        k = {v, s, display_.width, display_.height, scene_.radius(), {c[0], c[1], c[2]}, scene_.unit()};
+        ++kept_stamp_;
+    }
+    if (instance >= kKeptTransforms) return made_ = camera_.transform(scene_, instance, display_.width, display_.height);
+    KeptTransform& kept = kept_[instance];
+    if (kept.stamp != kept_stamp_) {
+        kept.transform = camera_.transform(scene_, instance, display_.width, display_.height);
+        kept.stamp = kept_stamp_;
+    }
+    return kept.transform;
 }
 
 void Presenter::invalidate() { ++version_, ++faces_version_; }
@@ -165,7 +186,7 @@ bool Presenter::full_pieces(uint32_t units) {
         const uint32_t shell = instances[job_.instance].shell;
         const Part sh = scene_.part(shell);
         if (!job_.have_transform) {
-            job_.transform = camera_.transform(scene_, job_.instance, display_.width, display_.height);
+            job_.transform = transform_of(job_.instance);
             job_.have_transform = true;
             painter_.set_instance(job_.instance);
             judge_part(shell, job_.transform);
@@ -236,7 +257,7 @@ bool Presenter::update_pieces(uint32_t units) {
             const uint32_t f = scene_.done_face(job_.face);
             if (f < sh.first_face || f >= sh.first_face + sh.face_count) continue;
             if (!job_.have_transform) {
-                job_.transform = camera_.transform(scene_, job_.instance, display_.width, display_.height);
+                job_.transform = transform_of(job_.instance);
                 job_.have_transform = true;
                 painter_.set_instance(job_.instance);
                 painter_.set_inside(false); // (a face or two at a time: each tested)

@@ -1,13 +1,15 @@
 // facet-assembly: a large assembly made of the shared models, for ./facet bench scale and for
 // trying facet on a machine-sized model. Written as STEP (AP214) with Open CASCADE:
 //
-//   facet-assembly OUT.step --faces N [--instances] MODEL.step...
+//   facet-assembly OUT.step --faces N [--instances | --distinct M] MODEL.step...
 //
 // Copies of the models, taken in turn, stand on a square grid (z up) until the assembly has at
 // least N faces. Distinct copies (the default): each copy is a part of its own, its geometry
 // copied (BRepBuilderAPI_Copy), as an assembly of separately modelled parts is. --instances:
 // each model is one part, placed once per copy (one product, many occurrences), as repeated
-// standard parts are. Each copy keeps its model's parts and their placements; parts are
+// standard parts are. --distinct M: distinct copies until they hold M faces, then instances of
+// those copies, in turn, up to N (a machine of many distinct parts, some repeated: the 100 k-face
+// assembly of ./facet bench scale). Each copy keeps its model's parts and their placements; parts are
 // coloured by the model they come from and named "MODEL #K".
 //
 // Exit codes: 0 written, 1 error (the reason on stderr), 2 usage.
@@ -45,7 +47,7 @@
 namespace {
 
 int usage() {
-    std::fprintf(stderr, "usage: facet-assembly OUT.step --faces N [--instances] MODEL.step...\n");
+    std::fprintf(stderr, "usage: facet-assembly OUT.step --faces N [--instances | --distinct M] MODEL.step...\n");
     return 2;
 }
 
@@ -77,17 +79,19 @@ const double kColours[][3] = {{0.72, 0.74, 0.78}, {0.80, 0.62, 0.36}, {0.45, 0.6
 
 int main(int argc, char** argv) {
     const char* out = nullptr;
-    long faces = 0;
+    long faces = 0, distinct = 0;
     bool instances = false;
     std::vector<std::string> models;
     for (int i = 1; i < argc; ++i) {
-        if (!std::strcmp(argv[i], "--faces") && i + 1 < argc) {
+        if ((!std::strcmp(argv[i], "--faces") || !std::strcmp(argv[i], "--distinct")) && i + 1 < argc) {
+            const bool of_distinct = argv[i][2] == 'd';
             char* end = nullptr;
-            faces = std::strtol(argv[++i], &end, 10);
-            if (!end || *end || faces <= 0 || faces > 10000000) {
-                std::fprintf(stderr, "facet-assembly: error: --faces %s: a count from 1 to 10,000,000\n", argv[i]);
+            const long n = std::strtol(argv[++i], &end, 10);
+            if (!end || *end || n <= 0 || n > 10000000) {
+                std::fprintf(stderr, "facet-assembly: error: %s %s: a count from 1 to 10,000,000\n", argv[i - 1], argv[i]);
                 return 2;
             }
+            (of_distinct ? distinct : faces) = n;
         } else if (!std::strcmp(argv[i], "--instances")) {
             instances = true;
         } else if (argv[i][0] == '-') {
@@ -98,7 +102,7 @@ int main(int argc, char** argv) {
             models.push_back(argv[i]);
         }
     }
-    if (!out || faces == 0 || models.empty()) return usage();
+    if (!out || faces == 0 || models.empty() || (instances && distinct)) return usage();
     for (auto& p : Message::DefaultMessenger()->Printers()) p->SetTraceLevel(Message_Fail);
 
     std::vector<Source> sources;
@@ -124,8 +128,11 @@ int main(int argc, char** argv) {
     }
     // The copies, in turn, until there are enough faces.
     std::vector<int> copies;
+    size_t fresh = 0; // --distinct: the distinct copies (the first ones), the rest instances of them in turn
     for (long total = 0; total < faces;) {
-        const int k = int(copies.size() % sources.size());
+        const bool again = distinct && total >= distinct && fresh > 0;
+        const int k = again ? copies[(copies.size() - fresh) % fresh] : int(copies.size() % sources.size());
+        fresh += !again && copies.size() == fresh;
         copies.push_back(k);
         total += sources[size_t(k)].faces;
     }
@@ -142,12 +149,15 @@ int main(int argc, char** argv) {
     const TDF_Label top = shapes->NewShape();
     TDataStd_Name::Set(top, TCollection_ExtendedString((stem(out)).c_str()));
     std::vector<TDF_Label> shared(sources.size()); // --instances: one part per model
-    long total = 0;
+    std::vector<TDF_Label> made;                   // --distinct: the distinct copies
+    long total = 0, distinct_total = 0;
     try {
         for (size_t i = 0; i < copies.size(); ++i) {
-            const Source& s = sources[size_t(copies[i])];
             TDF_Label part;
-            if (instances && !shared[size_t(copies[i])].IsNull()) {
+            if (distinct && i >= fresh) part = made[(i - fresh) % fresh]; // an instance of a distinct copy, in turn
+            const Source& s = sources[size_t(copies[i])];
+            if (!part.IsNull()) {
+            } else if (instances && !shared[size_t(copies[i])].IsNull()) {
                 part = shared[size_t(copies[i])];
             } else {
                 const TopoDS_Shape shape = instances ? TopoDS_Shape(s.shape) : BRepBuilderAPI_Copy(s.shape).Shape();
@@ -157,6 +167,7 @@ int main(int argc, char** argv) {
                 const double* c = kColours[size_t(copies[i]) % (sizeof kColours / sizeof kColours[0])];
                 colours->SetColor(part, Quantity_Color(c[0], c[1], c[2], Quantity_TOC_sRGB), XCAFDoc_ColorSurf);
                 if (instances) shared[size_t(copies[i])] = part;
+                if (distinct) made.push_back(part), distinct_total += s.faces;
             }
             // Its cell: the model's box centred on it, standing on z = 0.
             gp_Trsf at;
@@ -172,7 +183,12 @@ int main(int argc, char** argv) {
     } catch (const Standard_Failure& f) {
         return die(std::string("Open CASCADE: ") + f.GetMessageString());
     }
-    std::printf("%s: %zu %s of %zu models, %ld faces, on a %d x %d grid of %.0f mm\n", out, copies.size(),
-                instances ? "instances" : "distinct copies", sources.size(), total, side, side, cell);
+    if (distinct) {
+        std::printf("%s: %zu distinct copies of %zu models (%ld faces) and %zu instances of them, %ld faces, on a %d x %d grid of %.0f mm\n",
+                    out, made.size(), sources.size(), distinct_total, copies.size() - made.size(), total, side, side, cell);
+    } else {
+        std::printf("%s: %zu %s of %zu models, %ld faces, on a %d x %d grid of %.0f mm\n", out, copies.size(),
+                    instances ? "instances" : "distinct copies", sources.size(), total, side, side, cell);
+    }
     return 0;
 }

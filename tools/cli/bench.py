@@ -62,16 +62,17 @@ def add(sub):
     p.add_argument('models', nargs='*', metavar='MODEL.step[@finerN]')
     p.set_defaults(run=cmd_render)
 
-    p = kinds.add_parser('scale', help='assemblies of 1 k to 30 k faces through the viewer in QEMU',
+    p = kinds.add_parser('scale', help='assemblies of 1 k to 100 k faces through the viewer in QEMU',
                          description='Assemblies made with Open CASCADE from shared models (nist_ctc_02, nist_ctc_04, '
                          'mechanism, tail_section_asm), as distinct copies and as instances, of 1 k, 3 k, 10 k and 30 k '
-                         'faces, through the viewer in QEMU on the ARM926 and the EVKB\'s configuration: pack bytes, '
+                         'faces, and mixed (distinct copies to 30 k faces, instances of them beyond) of 100 k, through the viewer in QEMU on the ARM926 and the EVKB\'s configuration: pack bytes, '
                          'first wireframe, first view, frames at rest, turning and zoomed, triangles, peak RAM; a CSV '
                          '(default out/bench/scale.csv), a markdown table and a PNG plot beside it. The assemblies are '
                          'made once into out/bench/scale/ (the largest takes minutes); long: not part of ./facet test.')
     p.add_argument('--csv', default=os.path.join(ROOT, 'out', 'bench', 'scale.csv'))
-    p.add_argument('--faces', default='1000,3000,10000,30000', metavar='N,M')
-    p.add_argument('--kinds', default='distinct,instances', metavar='A,B')
+    p.add_argument('--faces', default='1000,3000,10000,30000,100000', metavar='N,M')
+    p.add_argument('--kinds', default='distinct,instances,mixed', metavar='A,B',
+                   help='mixed: distinct copies to 30 k faces, instances of them beyond (above 30 k faces only)')
     p.add_argument('--boards', default='qemu-versatilepb,qemu-mps2-evkb', metavar='A,B')
     p.add_argument('--sources', default='ram', metavar='ram,card', help='where the pack comes from: loaded into RAM, '
                    'and/or a memory card image in the SD slot of a board with one (docs/storage.md)')
