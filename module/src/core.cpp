@@ -220,7 +220,11 @@ bool Core::run_decoding() {
     return true;
 }
 
-bool Core::run_start() { return swap_piece() || refine_for_view(); } // false: nothing to begin
+// False: nothing to begin. Over the triangles' bound, blocks are made coarser before another comes in.
+bool Core::run_start() {
+    if (settled() && detail_.bound_triangles()) return swapper_.leave_out_unseen(kNone) || refine_for_view() || swap_piece();
+    return swap_piece() || refine_for_view();
+}
 
 // The choice and the room made (blocks left out, the pack memory compacted) as a piece of
 // unpacking work, when there is a choice to make.
@@ -285,7 +289,7 @@ Activity Core::step(uint32_t budget_us) {
 // that the next step has its work (a step without a clock is one piece of work).
 Activity Core::activity() {
     const bool mid_bands = this->mid_bands();
-    if (!mid_bands && !frame_wanted() && !scheduler_.busy() && !swap_piece()) (void)refine_for_view();
+    if (!mid_bands && !frame_wanted() && !scheduler_.busy()) (void)run_start();
     if ((frame_wanted() && presenter_.can_draw()) ||
         ((scheduler_.busy() || swapper_.decoding() || swap_pending() || !settled()) &&
          !mid_bands)) {

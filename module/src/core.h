@@ -72,6 +72,7 @@ public:
     // For tests of the parts behind the public API (the fitted view of every model).
     const module::Camera& camera() const { return camera_; }
     const module::Scene& scene() const { return scene_; }
+    const module::Detail& detail_level() const { return detail_; } // (tests)
     const Display& display() const { return config_.display; }
     const module::Overlay& overlay() const { return presenter_.overlay(); }
     module::Painter& painter() { return painter_; }

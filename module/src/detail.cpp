@@ -35,14 +35,14 @@ float Detail::wanted_tolerance(uint32_t b, float pass_tolerance, float finest, b
     (void)judge_.update();
     if (on_screen) *on_screen = judge_.view().pixels(centre, r) > 0;
     const float bias = pass_tolerance / default_tolerance_;
-    float t = bias * screen_error_px_ * judge_.view().mm_per_pixel(centre, r);
+    float t = bias * screen_error_px_ * crowd_ * judge_.view().mm_per_pixel(centre, r);
     // Never finer than the block would take as a model of its own (its share of the model's
     // size: a part of a large assembly zoomed into gets its own detail, a one-block model
     // keeps the pass's), nor than `finest` times the pass's.
     const float own = scene_.radius() > 0 ? pass_tolerance * std::min(1.0f, r / scene_.radius()) : pass_tolerance;
     const float floor = std::max(own, pass_tolerance / finest);
     if (t < floor) t = floor;
-    if (t > Scale::kBlockCoarsest * pass_tolerance) t = Scale::kBlockCoarsest * pass_tolerance;
+    if (t > Scale::kBlockCoarsest * crowd_ * pass_tolerance) t = Scale::kBlockCoarsest * crowd_ * pass_tolerance;
     return t;
 }
 
@@ -63,7 +63,7 @@ bool Detail::refine(Swapper& room) {
             bool on_screen = true;
             const float want = wanted_tolerance(b, scheduler_.tolerance(), Scale::kRefineFinest, &on_screen);
             const float finer = block.tolerance / want, coarser = want / block.tolerance;
-            const float gap = finer >= Scale::kStep && on_screen ? finer : coarser >= Scale::kStep ? coarser : 0;
+            const float gap = finer >= Scale::kStep && on_screen && !crowded_ ? finer : coarser >= Scale::kStep ? coarser : 0;
             if (gap > best_gap) best = b, best_gap = gap, best_tolerance = want;
         }
         if (best == kNone) {
@@ -81,6 +81,29 @@ bool Detail::refine(Swapper& room) {
         }
         scene_.block(best).refused = true; // (passed over the next time round, whatever refused it)
     }
+}
+
+uint32_t Detail::triangle_bound() const {
+    const SphereView& v = judge_.view();
+    const uint32_t pixels = uint32_t(4.0f * v.half_w * v.half_h);
+    return std::max(pixels / Scale::kPixelsPerTriangle, Scale::kLeastTriangleBound);
+}
+
+// A blocked model's triangles bounded by the screen (issue 52): past the bound, every block's
+// screen error is taken kStep times coarser (refine() then makes again the blocks now twice
+// finer than the view asks, largest gap first); under a quarter of it, kStep finer again.
+// The bound counts every triangle held, on the screen or not (blocks off it are the first to
+// give their room: swap.cpp).
+bool Detail::bound_triangles() {
+    if (!scene_.blocked() || scene_.block_count() < 2) return false; // (a part alone keeps the detail it was given)
+    const uint32_t held = scene_.totals().triangles, bound = triangle_bound();
+    if (held > bound && crowd_ < Scale::kCrowdCoarsest) {
+        crowd_ *= Scale::kStep, check_ = true;
+    } else if (held < bound / 4 && crowd_ > 1) {
+        crowd_ /= Scale::kStep, check_ = true;
+    }
+    crowded_ = held > bound;
+    return crowded_;
 }
 
 // Work in screen order: a pass or a sweep takes the blocks largest on the screen first (their

@@ -23,6 +23,7 @@ public:
     // A new model, whose default tolerance is `mm` (geom::default_tolerance): judged afresh.
     void reset(float mm) {
         default_tolerance_ = mm;
+        crowd_ = 1, crowded_ = false;
         judge_.reset();
     }
     float default_tolerance() const { return default_tolerance_; }
@@ -49,6 +50,12 @@ public:
     // furthest from its level begun again at it, the room made by `room` if short. True when
     // one was begun (or tried).
     bool refine(Swapper& room);
+    // The screen error's factor the triangles' bound asks for now (1: none; DetailScale).
+    float crowd() const { return crowd_; }
+    uint32_t triangle_bound() const;
+    // crowd() set from the triangles held against triangle_bound(): true while they are over it
+    // (the blocks are then made coarser before any other comes in).
+    bool bound_triangles();
 
 private:
     uint32_t sort_blocks(uint32_t& head, uint32_t count);
@@ -58,6 +65,8 @@ private:
     float screen_error_px_;
     float default_tolerance_ = 0;
     bool check_ = false; // the view moved since the blocks' levels were last looked at
+    float crowd_ = 1;    // crowd(): the screen error times this
+    bool crowded_ = false; // over the bound when last looked: blocks are only made coarser
 };
 
 } // namespace facet::module
