@@ -187,6 +187,7 @@ bool Core::run_glide() {
 bool Core::run_frame() {
     presenter_.set_boxes(boxes_while_sampling());
     presenter_.set_dragging(controls_.dragging() || glide_.moving());
+    presenter_.set_crowded(detail_.crowd() > 1);
     const Work w = presenter_.work();
     work(Event::Kind::WorkBegin, w, 0);
     presenter_.run(kFrameUnits, scheduler_.pass());
@@ -222,7 +223,10 @@ bool Core::run_decoding() {
 
 // False: nothing to begin. Over the triangles' bound, blocks are made coarser before another comes in.
 bool Core::run_start() {
-    if (settled() && detail_.bound_triangles()) return swapper_.leave_out_unseen(kNone) || refine_for_view() || swap_piece();
+    const float crowd = detail_.crowd();
+    const bool over = settled() && detail_.bound_triangles();
+    if (detail_.crowd() != crowd) presenter_.redraw(); // (edges of small faces in or out: Painter::set_crowded)
+    if (over) return swapper_.leave_out_unseen(kNone) || refine_for_view() || swap_piece();
     return swap_piece() || refine_for_view();
 }
 

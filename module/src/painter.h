@@ -25,6 +25,8 @@ constexpr int32_t kFacePixels = 4;
 // While the view is dragged, a face under this across is drawn as a splat in its colour, not
 // as its triangles (coarser detail while dragging, for the frame rate).
 constexpr int32_t kSplatPixels = 2 * kFacePixels;
+// In a crowded view, a shaded face under this across is drawn without its edges (Painter::set_crowded).
+constexpr int32_t kCrowdedEdgePixels = 2 * kFacePixels;
 
 // A mesh point as the instance being drawn projects it: a slot of the painter's projection
 // cache (Painter::point).
@@ -61,6 +63,11 @@ public:
     // While the view is dragged, shaded faces are drawn without their B-rep edges (a third of a
     // frame's work): the edges come back when it rests. Wireframe and hidden line keep theirs.
     void set_dragging(bool on) { dragging_ = on; }
+    // A crowded view (Detail::crowd(): more triangles than the screen's bound): shaded with
+    // edges, a face drawn by its triangles under kCrowdedEdgePixels across leaves its edges out
+    // (a knot of lines a few pixels long, a third of such a frame's work); a larger neighbour
+    // still draws the edge they share.
+    void set_crowded(bool on) { crowded_ = on; }
     // Picked faces drawn in the highlight colour (face kNone: none), and the instance being drawn.
     void set_highlight(uint32_t face0, uint32_t instance0, uint32_t face1, uint32_t instance1) {
         hl_[0] = {face0, instance0}, hl_[1] = {face1, instance1};
@@ -165,6 +172,7 @@ private:
     Memory mem_{};
     uint32_t next_palette_ = 0; // the palette slot to reuse next
     bool dragging_ = false;
+    bool crowded_ = false;
     DisplayMode mode_ = DisplayMode::ShadedEdges;
     bool tangent_edges_ = true;
     struct Highlight {

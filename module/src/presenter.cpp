@@ -107,7 +107,7 @@ void Presenter::start(uint32_t finished) {
     job_.stage = Stage::Begin;
     job_.buffer = b;
     job_.boxes = boxes_;
-    job_.dragging = dragging_;
+    job_.dragging = dragging_, job_.crowded = crowded_;
     job_.full = !updates(b);
     job_.version = version_;
     job_.finished = finished;
@@ -344,6 +344,7 @@ void Presenter::run_piece(uint32_t units, uint32_t pass) {
     // (One frame, one look: its bands and pieces alike. Faces drawn into the layer are drawn at
     // full detail, the layer serving the frames once a drag ends, and in their own colours.)
     painter_.set_dragging(job_.dragging && !into_layer(job_.stage));
+    painter_.set_crowded(job_.crowded);
     painter_.set_plain(into_layer(job_.stage));
     switch (job_.stage) {
     case Stage::CopyLayer: // the view's faces, kept, into the draw buffer

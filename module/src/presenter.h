@@ -74,6 +74,8 @@ public:
     void set_boxes(bool boxes) { boxes_ = boxes; }
     // Frames begun while the view is dragged are drawn lighter (Painter::set_dragging).
     void set_dragging(bool on) { dragging_ = on; }
+    // Frames begun from now on are of a crowded view (Painter::set_crowded).
+    void set_crowded(bool on) { crowded_ = on; }
     // The kind of the piece run() would do next.
     Work work() const;
     bool drawing() const { return job_.active(); }
@@ -119,7 +121,7 @@ private:
     struct Job {
         Stage stage = Stage::Idle;
         bool full = false;            // a whole frame (not an update)
-        bool boxes = false, dragging = false; // set_boxes(), set_dragging() as the frame began
+        bool boxes = false, dragging = false, crowded = false; // set_boxes(), set_dragging(), set_crowded() as the frame began
         uint8_t buffer = 0;
         uint16_t band = 0;            // partial rendering: the band being drawn
         uint32_t face_start = 0;      // the New stages: the first done_order index
@@ -182,6 +184,7 @@ private:
     bool catch_up_ = true;     // set_catch_up()
     bool boxes_ = false;       // set_boxes()
     bool dragging_ = false;    // set_dragging()
+    bool crowded_ = false;     // set_crowded()
     uint16_t bands_ = 1;
 
     uint32_t version_ = 1;      // the picture's state: +1 whenever every buffer must be redrawn
