@@ -11,8 +11,8 @@ RAM (boards with capabilities.card). One CSV row per board, assembly and source:
 
   board,kind,source,faces,pack_faces,step_bytes,pack_bytes,first_frame_instructions,first_view_instructions,
   frame_rest_instructions,frame_rest_sharp_instructions,frame_turning_max_instructions,
-  frame_zoomed_instructions,frame_dragging_max_instructions,frame_max_instructions,triangles,deferred_faces,
-  left_out_faces,peak_ram_bytes,note
+  frame_zoomed_instructions,frame_dragging_max_instructions,frame_max_instructions,zoom_detail_instructions,
+  triangles,deferred_faces,left_out_faces,peak_ram_bytes,note
 
   faces: the assembly's size as asked (its placed faces are a little over); pack_faces: the
   faces the pack holds (for instances, those of the parts once each);
@@ -27,7 +27,8 @@ RAM (boards with capabilities.card). One CSV row per board, assembly and source:
   largest frame while the view turns by keys; dragging: the largest frame while the mouse drags
   it (a board with a mouse; the frames a drag draws lighter); zoomed: the frame once the zoomed
   view's faces are in; worst: the largest full frame of the session after the first view
-  (what ./facet run holds to a frame's budget); left out: the faces of the parts the memory
+  (what ./facet run holds to a frame's budget); zoom to detail: every piece of work from the
+  zoom's last step to the zoomed view at its level of detail (budget_rules.zoom_detail); left out: the faces of the parts the memory
   left out at load (drawn as their parts' proxies, or boxes from a pack without them).
 
 The markdown table and a PNG plot (cost against faces, log-log) go beside the CSV. Exact guest
@@ -50,12 +51,12 @@ sys.path.insert(0, os.path.join(ROOT, 'tools'))
 import board as boards  # noqa: E402
 import card  # noqa: E402
 import protocol  # noqa: E402
-from budget_rules import first_view, peak_ram  # noqa: E402
+from budget_rules import first_view, peak_ram, zoom_detail  # noqa: E402
 from boot import boot, exit_note, last_error  # noqa: E402  (bench/boot.py: the benches' one run)
 
 COLUMNS = ['board', 'kind', 'source', 'faces', 'pack_faces', 'step_bytes', 'pack_bytes', 'first_frame_instructions', 'first_view_instructions',
            'frame_rest_instructions', 'frame_rest_sharp_instructions', 'frame_turning_max_instructions', 'frame_zoomed_instructions',
-           'frame_dragging_max_instructions', 'frame_max_instructions', 'triangles',
+           'frame_dragging_max_instructions', 'frame_max_instructions', 'zoom_detail_instructions', 'triangles',
            'deferred_faces', 'left_out_faces', 'peak_ram_bytes', 'note']
 MIXED_DISTINCT_FACES = 30_000  # kind mixed: distinct copies up to these faces, instances of them beyond
 
@@ -100,6 +101,7 @@ def measure(uart, regions):
                 out['zoomed'] = last
             phase = {'first': 'rest', 'sharp': 'sharp', 'edges': 'edges', 'turned': 'turned', 'dragged': 'dragged',
                      'zoomed': 'zoomed'}.get(shot, phase)
+    out['zoom_detail'] = zoom_detail(uart, regions)
     stats = list(protocol.records(uart, 'stats'))  # the viewer's totals as it ends
     if stats and stats[-1].fields():
         out['deferred'], out['triangles'] = stats[-1].values()['deferred'], stats[-1].values()['triangles']
@@ -129,7 +131,7 @@ def run_one(board_name, elf, fpk, out, timeout, image=None):
     m = measure(uart, rep.get('regions', []))
     for key, col in (('first_frame', 'first_frame_instructions'), ('first_view', 'first_view_instructions'),
                      ('rest', 'frame_rest_instructions'), ('sharp', 'frame_rest_sharp_instructions'),
-                     ('zoomed', 'frame_zoomed_instructions'),
+                     ('zoomed', 'frame_zoomed_instructions'), ('zoom_detail', 'zoom_detail_instructions'),
                      ('triangles', 'triangles'), ('deferred', 'deferred_faces')):
         if m.get(key) is not None:
             row[col] = m[key]
@@ -148,11 +150,12 @@ def run_one(board_name, elf, fpk, out, timeout, image=None):
 def markdown(rows, date):
     m = lambda v: f'{v / 1e6:,.1f}' if isinstance(v, int) else '-'
     lines = [f'Measured {date} by `./facet bench scale` (exact QEMU instruction counts, M = million instructions, '
-             '600 M = 1 s at 600 MHz; the goals of issue 25: first view 1,200 M for 10 k faces, a frame at rest 20 M).',
+             '600 M = 1 s at 600 MHz; the budgets, whatever the model (issue 52): first view 1,200 M, a frame at rest 20 M, '
+             'every frame 40 M, a zoom to its detail 600 M).',
              '', '| board | kind | from | faces | faces in the pack | pack KB | first frame M | first view M | frame at rest M '
-             '| at rest, tangent edges left out M | turning M | dragging M | zoomed M | worst frame M | triangles | deferred faces '
+             '| at rest, tangent edges left out M | turning M | dragging M | zoomed M | worst frame M | zoom to detail M | triangles | deferred faces '
              '| faces left out | peak RAM MiB | note |',
-             '|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|']
+             '|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|']
     for r in rows:
         peak = r.get('peak_ram_bytes')
         lines.append(f'| {r["board"]} | {r["kind"]} | {r.get("source", "ram")} | {r.get("faces", "-")} | {r.get("pack_faces", "-")} | '
@@ -161,7 +164,8 @@ def markdown(rows, date):
                      f'{m(r.get("frame_rest_instructions"))} | {m(r.get("frame_rest_sharp_instructions"))} | '
                      f'{m(r.get("frame_turning_max_instructions"))} | '
                      f'{m(r.get("frame_dragging_max_instructions"))} | '
-                     f'{m(r.get("frame_zoomed_instructions"))} | {m(r.get("frame_max_instructions"))} | {r.get("triangles", "-")} | '
+                     f'{m(r.get("frame_zoomed_instructions"))} | {m(r.get("frame_max_instructions"))} | '
+                     f'{m(r.get("zoom_detail_instructions"))} | {r.get("triangles", "-")} | '
                      f'{r.get("deferred_faces", "-")} | {r.get("left_out_faces", "-")} | '
                      f'{f"{peak / (1 << 20):.2f}" if peak else "-"} | {r.get("note", "")} |')
     return '\n'.join(lines) + '\n'
@@ -181,11 +185,11 @@ def plot(csv_path):
             dat = os.path.join(os.path.dirname(csv_path), f'.scale-{b}-{k}.dat')
             with open(dat, 'w') as f:
                 for r in mine:
-                    f.write(' '.join([r['faces']] + [str(int(r[c]) / 1e6) if r[c] else 'NaN' for c in
+                    f.write(' '.join([r['faces']] + [str(int(r[c]) / 1e6) if r.get(c) else 'NaN' for c in
                                                      ('first_view_instructions', 'frame_rest_instructions',
-                                                      'frame_zoomed_instructions')]) + '\n')
+                                                      'frame_max_instructions')]) + '\n')
             dats.append(dat)
-            for col, what in ((2, 'first view'), (3, 'frame at rest'), (4, 'zoomed frame')):
+            for col, what in ((2, 'first view'), (3, 'frame at rest'), (4, 'worst frame')):
                 series.append(f"'{dat}' using 1:{col} with linespoints title '{b} {k}: {what}'")
     if not series:
         return None
@@ -198,7 +202,7 @@ set xlabel 'faces of the assembly (as asked)'
 set ylabel 'million instructions (600 = 1 s at 600 MHz)'
 set key outside right
 set grid
-plot {', '.join(series)}, 1200 with lines dashtype 2 title 'first view goal (10 k faces)', 20 with lines dashtype 3 title 'frame goal'
+plot {', '.join(series)}, 1200 with lines dashtype 2 title 'first view budget', 20 with lines dashtype 3 title 'frame at rest budget', 40 with lines dashtype 4 title 'frame budget'
 """
     subprocess.run(['gnuplot'], input=script, text=True, check=True)
     for d in dats:

@@ -8,8 +8,9 @@ slower). The first view (every piece of work from load to the first frame after 
 <= 1.2 G (2 s), whatever the model's size; within it the first pass's tessellation <= 600 M (1 s)
 for a model of up to 5,000 faces, beyond that 120 k a face up to the first view's 1.2 G; one
 frame <= 20 M instructions per 10,000 triangles in view, at least 20 M (30 frames/s), at most
-40 M (15 frames/s) whatever the triangles; the on-screen interface <= 500 k instructions a
-frame.
+40 M (15 frames/s) whatever the triangles; a frame at rest (the last before the viewer is idle)
+<= 20 M; a zoom's last step to its view's faces in at their level <= 600 M (1 s); the on-screen
+interface <= 500 k instructions a frame.
 """
 import protocol
 
@@ -21,6 +22,8 @@ TESSELLATION_BUDGET = 600_000_000  # the first pass's tessellation, 1 s, for a m
 TESSELLATION_FACES = 5_000
 FRAME_BUDGET_PER_10K = 20_000_000
 FRAME_BUDGET_MOST = 40_000_000  # issue 52: every frame, whatever the model (15 frames/s)
+REST_FRAME_BUDGET = 20_000_000  # issue 52: a frame at rest, whatever the model
+ZOOM_DETAIL_BUDGET = 600_000_000  # issue 52: a zoom's last step to its full detail, 1 s
 
 
 def peak_ram(rep):
@@ -98,15 +101,32 @@ def tessellation_budget(faces):
     return min(TESSELLATION_BUDGET * max(1.0, faces / TESSELLATION_FACES), FIRST_VIEW_BUDGET)
 
 
-def frame_budget(triangles):
-    return min(FRAME_BUDGET_PER_10K * max(1.0, triangles / 10_000), FRAME_BUDGET_MOST)
+def frame_budget(triangles, rest=False):
+    return min(FRAME_BUDGET_PER_10K * max(1.0, triangles / 10_000), REST_FRAME_BUDGET if rest else FRAME_BUDGET_MOST)
+
+
+def zoom_detail(uart, regions, shot='zoomed', pairs=None):
+    """Every piece of work from a zoom's last step (the last '@view' before the screenshot
+    `shot`, which a session takes once the viewer is idle) to that screenshot: the zoomed view
+    brought to its level of detail (blocks brought in and made again, faces the view now wants,
+    frames). None where the log has no such screenshot after a view change."""
+    spent = None
+    for r, region in (pairs if pairs is not None else protocol.with_regions(uart, regions)):
+        if r.name == 'view':
+            spent = 0
+        elif region and region['name'] in WORK_REGIONS:
+            spent = None if spent is None else spent + (region['instructions'] or 0)
+        elif r.name in ('shot', 'dump') and r.fields() and r.values().get('name') == shot:
+            return spent
+    return None
 
 
 def analyse(uart, regions, pairs=None):
     """Per pass: tessellation instructions (its pieces of sampling and faces); per full frame:
     its pieces' instructions (the last 'pieces' frame and overlay regions before its '@frame'
     line: a frame the view outdated while it was drawn is not one), the overlay's part of them,
-    the mesh's triangles then and the cost the firmware's own clock gave it (us at 600 MHz).
+    the mesh's triangles then, the cost the firmware's own clock gave it (us at 600 MHz) and
+    whether it is a frame at rest (the last before an '@idle': what the screen then shows).
     `pairs`: one model's records and regions (by_model) instead of the log's."""
     tess, frames, tri_now, pass_no, pieces, overlay, closed = {}, [], 0, -1, [], [], False
     models = 0  # a library's models opened in turn: the passes of the first keyed by number, the others' by model too
@@ -120,12 +140,14 @@ def analyse(uart, regions, pairs=None):
             closed = True  # the pass is in: what follows is the view's (sweeps, refinements)
         elif r.name == 'progress':
             tri_now = r.values()['triangles']
+        elif r.name == 'idle' and frames and frames[-1]['rest'] is None:
+            frames[-1]['rest'] = True
         elif r.name == 'frame':
             kv = r.values()
             n = kv.get('pieces', 1)
             mine = pieces[-n:] if len(pieces) >= n else [None]
             frames.append({'instructions': None if None in mine else sum(mine), 'triangles': tri_now, 'pass': pass_no,
-                           'overlay': overlay[-1] if overlay else 0, 'cost_us': int(kv.get('cost_us', 0))})
+                           'overlay': overlay[-1] if overlay else 0, 'cost_us': int(kv.get('cost_us', 0)), 'rest': None})
             pieces, overlay = [], []
         elif region:
             n = region['instructions']

@@ -16,7 +16,8 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import protocol  # noqa: E402
 from budget_rules import (MHZ, PEAK_RAM_GOAL, RAM_BUDGET, analyse, by_model, first_view, first_view_budget,  # noqa: E402
-                          frame_budget, peak_ram, tessellation_budget, unpack_instructions, FRAME_BUDGET_MOST)
+                          frame_budget, peak_ram, tessellation_budget, unpack_instructions, zoom_detail, FRAME_BUDGET_MOST,
+                          REST_FRAME_BUDGET, ZOOM_DETAIL_BUDGET)
 
 
 def main():
@@ -35,9 +36,10 @@ def main():
     passes, frame_list = analyse(uart, rep['regions'])
     tess = passes.get(0)
     t = protocol.tessellation(uart) or {}
-    frames = [{'name': f'frame {i + 1}', 'instructions': f['instructions'], 'triangles': f['triangles'],
+    frames = [{'name': f'frame {i + 1}', 'instructions': f['instructions'], 'triangles': f['triangles'], 'rest': bool(f['rest']),
                'ms_at_600mhz': None if f['instructions'] is None else round(f['instructions'] / 600e3, 2)}
               for i, f in enumerate(frame_list)]
+    zoom = zoom_detail(uart, rep['regions'])
     first_frame, view = first_view(uart, rep['regions'])
     view_budget = first_view_budget(t['faces']) if t.get('faces') else None
     tess_budget = tessellation_budget(t.get('faces') or 0)
@@ -67,6 +69,10 @@ def main():
         'first_view_budget_instructions': None if view_budget is None else int(view_budget),
         'frames': frames,
         'frame_budget_instructions_per_10k_triangles': int(frame_budget(0)),
+        'frame_budget_most_instructions': FRAME_BUDGET_MOST,
+        'frame_at_rest_budget_instructions': REST_FRAME_BUDGET,
+        'zoom_detail_instructions': zoom,
+        'zoom_detail_budget_instructions': ZOOM_DETAIL_BUDGET,
         'tessellation_budget_instructions': int(tess_budget),
         'exit_code': rep['exit_code'],
     }
@@ -90,9 +96,11 @@ def main():
     if total > RAM_BUDGET:
         fails.append(f'RAM {total} bytes > {RAM_BUDGET}')
     for f in out['frames']:
-        if f['instructions'] is None or f['instructions'] > frame_budget(f['triangles']):
-            fails.append(f'{f["name"]} ({f["triangles"]:,} triangles): {f["instructions"]} instructions > '
-                         f'{frame_budget(f["triangles"]):,.0f}')
+        if f['instructions'] is None or f['instructions'] > frame_budget(f['triangles'], f['rest']):
+            fails.append(f'{f["name"]} ({f["triangles"]:,} triangles{", at rest" if f["rest"] else ""}): {f["instructions"]} '
+                         f'instructions > {frame_budget(f["triangles"], f["rest"]):,.0f}')
+    if zoom is not None and zoom > ZOOM_DETAIL_BUDGET:
+        fails.append(f'zoomed in to its detail: {zoom:,} instructions > {ZOOM_DETAIL_BUDGET:,}')
     if tess is not None and tess > tess_budget:
         fails.append(f'tessellation: {tess:,} instructions > {tess_budget:,.0f}')
     if view is not None and view_budget is not None and view > view_budget:
@@ -119,10 +127,13 @@ def main():
             if view is not None and view_budget is not None:
                 fh.write(f'| first view (load to the first frame with the faces in) | {view:,} instructions '
                          f'({view / 600e3:.0f} ms) | {view_budget:,.0f} ({view_budget / 600e6:.1f} s) |\n')
+            if zoom is not None:
+                fh.write(f'| zoomed in: its last step to its detail | {zoom:,} instructions ({zoom / 600e3:.0f} ms) '
+                         f'| {ZOOM_DETAIL_BUDGET:,} ({ZOOM_DETAIL_BUDGET / 600e6:.1f} s) |\n')
             for f in out['frames']:
                 if f['instructions'] is not None:
-                    fh.write(f'| {f["name"]} ({f["triangles"]:,} triangles) | {f["instructions"]:,} '
-                             f'({f["instructions"] / 600e3:.1f} ms) | {frame_budget(f["triangles"]):,.0f} |\n')
+                    fh.write(f'| {f["name"]} ({f["triangles"]:,} triangles{", at rest" if f["rest"] else ""}) | {f["instructions"]:,} '
+                             f'({f["instructions"] / 600e3:.1f} ms) | {frame_budget(f["triangles"], f["rest"]):,.0f} |\n')
             for m in later:
                 if m['tri_instructions'] is not None:
                     fh.write(f'| model opened {m["opened"]}: tessellation ({m["faces"]} faces) | {m["tri_instructions"]:,} '
@@ -172,12 +183,14 @@ def main():
         print(f'  peak RAM this model needed: {out["ram_peak_bytes"]:,} bytes ({out["ram_peak_bytes"] / (1 << 20):.2f} MiB; '
               f'goal {PEAK_RAM_GOAL >> 20} MiB): display and depth buffers, code, stack high-water, the pack, '
               f'the viewer storage at its peak')
+    if zoom is not None:
+        print(f'  zoomed in, its last step to its detail: {zoom:,} instructions = {zoom / 600e3:.0f} ms (budget {ZOOM_DETAIL_BUDGET:,})')
     print(f'  full frames (budget {frame_budget(0):,.0f} instructions = 33.3 ms at {MHZ} MHz per 10k triangles, '
-          f'at most {FRAME_BUDGET_MOST:,}):')
+          f'at most {FRAME_BUDGET_MOST:,}; at rest at most {REST_FRAME_BUDGET:,}):')
     for f in out['frames']:
         n = f['instructions']
         print(f'    {f["name"]:<10} {f["triangles"]:>7,} triangles {n:>12,} instructions = {n / (MHZ * 1000):.2f} ms'
-              if n is not None else f'    {f["name"]:<10} not counted')
+              f'{"  at rest" if f["rest"] else ""}' if n is not None else f'    {f["name"]:<10} not counted')
     for msg in fails:
         print(f'  OVER BUDGET / FAILED: {msg}')
     print(f'  within budget: {"yes" if out["within_budget"] else "NO"}')

@@ -247,7 +247,8 @@ public:
     // (false when it is short, or nothing moved).
     bool compact_samples(std::span<uint32_t> scratch);
     uint32_t samples_room() const { return uint32_t(std::min(mem_.samples.t.size(), mem_.samples.p.size())) - mem_.samples.used; }
-    // Counts every move of meshes or samples: frames drawn before one must be drawn whole again.
+    // Counts every move of meshes and every block dropped: frames drawn before one must be drawn
+    // whole again (samples moved, or a block taken in, change nothing drawn).
     uint32_t moves() const { return moves_; }
     void mark_failed(uint32_t face);
     // A face not tessellated: its sphere from its edges' samples (radius 0 when it has none),

@@ -99,8 +99,7 @@ bool Scene::compact_samples(std::span<uint32_t> scratch) {
         top += count;
     }
     if (top == s.used) return false;
-    s.used = top;
-    ++moves_;
+    s.used = top; // (the same samples, moved: nothing drawn changes)
     return true;
 }
 
@@ -116,8 +115,7 @@ Result Scene::take_block(uint32_t b) {
     for (uint32_t e = block.first_edge; e < block.first_edge + block.edges; ++e) mem_.samples.first[e] = 0, mem_.samples.count[e] = 0;
     for (uint32_t f = block.first_face; f < block.first_face + block.faces; ++f) mem_.faces[f] = no_mesh(FaceState::Pending);
     tally_left_out(b, false);
-    totals_.faces += block.faces;
-    ++moves_;
+    totals_.faces += block.faces; // (drawn as while left out, its proxy or box, until its edges are sampled)
     return {};
 }
 

@@ -64,8 +64,10 @@ bool Swapper::bring_in(uint32_t best) {
         scene_.block(best).refused = true;
         return false;
     }
-    if (victims) told_left_out();
-    presenter_.invalidate();
+    // Parts left out change from their faces to their proxies (or boxes); with none, nothing
+    // on the screen changes (the block chosen stays as it is drawn, left out, until its edges
+    // are sampled: Core::run_tessellation).
+    if (victims) told_left_out(), presenter_.invalidate();
     compact_blocks(unpacked_); // (the free room after the blocks held)
     block_ = best, decoded_ = false;
     const Result r = start_block(unpacked_, best, decoder_);
@@ -111,7 +113,8 @@ void Swapper::finish(const geom::PackDecoder* decoder) {
     }
     block_ = kNone;
     check_ = true; // (the next one, once this one is in)
-    presenter_.invalidate();
+    // (Its parts are drawn as they were while left out, their proxies or boxes, until their
+    // edges are sampled: the frames change then, Core::run_tessellation.)
     if (!scheduler_.begin_refine(b, detail_.wanted_tolerance(b, scheduler_.tolerance(), Scale::kRefineFinest, nullptr))) {
         // No room for its samples even after the caches made some: a box again until the view changes.
         scene_.drop_block(b);
