@@ -224,9 +224,9 @@ bool Core::run_decoding() {
 // False: nothing to begin. Over the triangles' bound, blocks are made coarser before another comes in.
 bool Core::run_start() {
     const float crowd = detail_.crowd();
-    const bool over = settled() && detail_.bound_triangles();
+    const bool over = settled() && detail_.bound_triangles(presenter_.triangles_in_view());
     if (detail_.crowd() != crowd) presenter_.redraw(); // (edges of small faces in or out: Painter::set_crowded)
-    if (over) return swapper_.leave_out_unseen(kNone) || refine_for_view() || swap_piece();
+    if (over) return refine_for_view() || swap_piece();
     return swap_piece() || refine_for_view();
 }
 

@@ -89,14 +89,14 @@ uint32_t Detail::triangle_bound() const {
     return std::max(pixels / Scale::kPixelsPerTriangle, Scale::kLeastTriangleBound);
 }
 
-// A blocked model's triangles bounded by the screen (issue 52): past the bound, every block's
+// A blocked model's triangles bounded by the screen (issue 52): past the bound (the triangles a
+// frame of the view takes, each instance's: what its cost follows), every block's
 // screen error is taken kStep times coarser (refine() then makes again the blocks now twice
 // finer than the view asks, largest gap first); under a quarter of it, kStep finer again.
-// The bound counts every triangle held, on the screen or not (blocks off it are the first to
-// give their room: swap.cpp).
-bool Detail::bound_triangles() {
+// Before any frame, the triangles held count instead.
+bool Detail::bound_triangles(uint32_t in_view) {
     if (!scene_.blocked() || scene_.block_count() < 2) return false; // (a part alone keeps the detail it was given)
-    const uint32_t held = scene_.totals().triangles, bound = triangle_bound();
+    const uint32_t held = in_view ? in_view : scene_.totals().triangles, bound = triangle_bound();
     if (held > bound && crowd_ < Scale::kCrowdCoarsest) {
         crowd_ *= Scale::kStep, check_ = true;
     } else if (held < bound / 4 && crowd_ > 1) {

@@ -53,9 +53,10 @@ public:
     // The screen error's factor the triangles' bound asks for now (1: none; DetailScale).
     float crowd() const { return crowd_; }
     uint32_t triangle_bound() const;
-    // crowd() set from the triangles held against triangle_bound(): true while they are over it
-    // (the blocks are then made coarser before any other comes in).
-    bool bound_triangles();
+    // crowd() set from the triangles in view (every instance's, as the last whole frame took
+    // them: `in_view`; 0, none drawn yet: those held) against triangle_bound(): true while they
+    // are over it (the blocks are then made coarser before any other comes in).
+    bool bound_triangles(uint32_t in_view);
 
 private:
     uint32_t sort_blocks(uint32_t& head, uint32_t count);

@@ -37,6 +37,7 @@ void Presenter::reset() {
     ++faces_version_, layer_.version = 0, layer_.applied = 0;
     shown_version_ = shown_finished_ = 0;
     job_ = {};
+    in_view_ = 0;
     ++kept_stamp_; // (another model: none kept)
 }
 
@@ -305,6 +306,7 @@ void Presenter::flush(uint32_t pass) {
     const render::RasterStats& s = raster_.stats;
     const uint32_t cost = job_.cost_us + (clock_() - piece_start_);
     if (job_.full) last_frame_us_ = cost;
+    if (job_.full && job_.all_faces && bands_ == 1) in_view_ = s.triangles + s.culled;
     const uint32_t total = scene_.totals().faces, finished = job_.finished < total ? job_.finished : total;
     e.frame = {s.triangles, s.culled, s.pixels, cost, job_.pieces, finished, total, pass, job_.full, job_.boxes};
     emit_(e);
@@ -405,6 +407,7 @@ bool Presenter::begin_stage(uint32_t& units) {
     job_.restart(first, first == Stage::LayerNew ? layer_.applied : job_.full ? 0 : buf_[job_.buffer].applied);
     set_target();
     if (first == Stage::LayerAll || first == Stage::BufferAll) painter_.background(), raster_.clear_depth();
+    job_.all_faces = first == Stage::LayerAll || first == Stage::BufferAll;
     // Clearing a band costs about an instruction a pixel (colour and depth): a whole 640x480
     // frame is 0.4 M on the ARM926, a piece of its own (a piece stays near 1 M).
     const uint32_t spent = 1 + uint32_t(raster_.target().rows) * display_.width / 1024;

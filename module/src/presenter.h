@@ -79,6 +79,10 @@ public:
     // The kind of the piece run() would do next.
     Work work() const;
     bool drawing() const { return job_.active(); }
+    // The triangles the last whole frame that drew every face took to the rasterizer (drawn or
+    // culled), every instance's: what a frame of this view costs (0: none yet; with partial
+    // rendering, a band's alone is not the view's, and none is counted).
+    uint32_t triangles_in_view() const { return in_view_; }
 
     // Any context (a DMA interrupt, another thread): one store. At most one flush is in flight
     // (a frame's flush begins once the last is done), so calls for it are one event however
@@ -130,6 +134,7 @@ private:
         // its highlights drawn).
         uint32_t instance = 0, face = 0, tri = 0;
         bool begun = false;
+        bool all_faces = false;       // the frame draws every face (LayerAll or BufferAll), not the layer's copy
         bool have_transform = false;
         Transform transform{};
         Transform::Sight sight = Transform::Sight::Across; // where the instance's part lies
@@ -224,6 +229,7 @@ private:
     Overlay overlay_;
     float tolerance_mm_ = 0;
     uint32_t last_frame_us_ = 0; // the last whole frame's cost
+    uint32_t in_view_ = 0;       // triangles_in_view()
 };
 
 } // namespace facet::module
