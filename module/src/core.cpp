@@ -204,10 +204,17 @@ bool Core::run_tessellation() {
     // A sweep's faces show as they come (Presenter::wanted) and all at its end.
     // (The same faces: the frames since drew each as it came, the whole one its edges and specks.)
     if (sweeping && !scheduler_.sweeping() && scene_.totals().finished() != presenter_.shown_finished()) presenter_.redraw();
-    // Meshes or samples moved (a cache compacted), or a block refined: the frames whole again.
-    if (scene_.moves() != seen_moves_ || scheduler_.refined() != seen_refined_) {
+    // Meshes moved (a cache compacted, a block dropped): the frames whole again. A block made
+    // again or brought in: the same, or, while more are coming in, once the last of them is
+    // (whole_frame_owed_; the updates meanwhile draw each face as it comes).
+    if (scene_.moves() != seen_moves_) {
         seen_moves_ = scene_.moves(), seen_refined_ = scheduler_.refined();
         presenter_.invalidate();
+        whole_frame_owed_ = false;
+    } else if (scheduler_.refined() != seen_refined_) {
+        seen_refined_ = scheduler_.refined();
+        whole_frame_owed_ = true;
+        pay_whole_frame();
     }
     work(Event::Kind::WorkEnd, w, item);
     return true;
@@ -219,6 +226,14 @@ bool Core::run_decoding() {
     swapper_.step();
     work(Event::Kind::WorkEnd, Work::Unpack, block);
     return true;
+}
+
+// The whole frame owed once the blocks coming in are in (none waiting, none being decoded or
+// tessellated).
+void Core::pay_whole_frame() {
+    if (!whole_frame_owed_ || swap_pending() || swapper_.decoding() || scheduler_.busy()) return;
+    whole_frame_owed_ = false;
+    presenter_.invalidate();
 }
 
 // False: nothing to begin. Over the triangles' bound, blocks are made coarser before another comes in.
@@ -294,6 +309,7 @@ Activity Core::step(uint32_t budget_us) {
 Activity Core::activity() {
     const bool mid_bands = this->mid_bands();
     if (!mid_bands && !frame_wanted() && !scheduler_.busy()) (void)run_start();
+    pay_whole_frame();
     if ((frame_wanted() && presenter_.can_draw()) ||
         ((scheduler_.busy() || swapper_.decoding() || swap_pending() || !settled()) &&
          !mid_bands)) {

@@ -210,6 +210,8 @@ private:
     Result load_listed(uint32_t index); // the chooser's model `index` (library.cpp)
     Result reopen_storage_file(); // the storage came back: the open model's file again, if unchanged
     uint32_t seen_moves_ = 0, seen_refined_ = 0; // the scene's moves and refinements the frames know of
+    bool whole_frame_owed_ = false;              // a refinement's whole frame, once the blocks coming in are in
+    void pay_whole_frame();
     uint32_t pack_bytes_ = 0, pack_file_bytes_ = 0;
     bool carved_ = false;
     bool user_moved_ = false; // the view was moved since load (no framing again when the faces are in)

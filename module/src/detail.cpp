@@ -93,10 +93,10 @@ uint32_t Detail::triangle_bound() const {
 // frame of the view takes, each instance's: what its cost follows), every block's
 // screen error is taken kStep times coarser (refine() then makes again the blocks now twice
 // finer than the view asks, largest gap first); under a quarter of it, kStep finer again.
-// Before any frame, the triangles held count instead.
+// The triangles held count when they are more (a block brought in since that frame).
 bool Detail::bound_triangles(uint32_t in_view) {
     if (!scene_.blocked() || scene_.block_count() < 2) return false; // (a part alone keeps the detail it was given)
-    const uint32_t held = in_view ? in_view : scene_.totals().triangles, bound = triangle_bound();
+    const uint32_t held = std::max(in_view, scene_.totals().triangles), bound = triangle_bound();
     if (held > bound && crowd_ < Scale::kCrowdCoarsest) {
         crowd_ *= Scale::kStep, check_ = true;
     } else if (held < bound / 4 && crowd_ > 1) {

@@ -54,8 +54,9 @@ public:
     float crowd() const { return crowd_; }
     uint32_t triangle_bound() const;
     // crowd() set from the triangles in view (every instance's, as the last whole frame took
-    // them: `in_view`; 0, none drawn yet: those held) against triangle_bound(): true while they
-    // are over it (the blocks are then made coarser before any other comes in).
+    // them: `in_view`), or those held if more (blocks come in between whole frames), against
+    // triangle_bound(): true while they are over it (the blocks are then made coarser before
+    // any other comes in).
     bool bound_triangles(uint32_t in_view);
 
 private:
