@@ -321,7 +321,7 @@ uint32_t Painter::face_edges(uint32_t f, const Transform& t, Rows rows, bool onc
         if (const uint32_t work = speck(f, t, kShownPixels)) return work;
     }
     if (info.state == FaceState::Done && !done_faces_show_edges()) return 0; // (a face not in yet shows its edges)
-    if (crowded_ && info.state == FaceState::Done && mode_ == DisplayMode::ShadedEdges && !lit(f)) {
+    if (crowded_ && info.state == FaceState::Done && (mode_ == DisplayMode::ShadedEdges || mode_ == DisplayMode::HiddenLine) && !lit(f)) {
         Projected centre;
         if (under(info.centre, info.radius, t, kCrowdedEdgePixels, centre)) return 1; // (its neighbours' edges outline it)
     }

@@ -64,9 +64,9 @@ public:
     // frame's work): the edges come back when it rests. Wireframe and hidden line keep theirs.
     void set_dragging(bool on) { dragging_ = on; }
     // A crowded view (Detail::crowd(): more triangles than the screen's bound): shaded with
-    // edges, a face drawn by its triangles under kCrowdedEdgePixels across leaves its edges out
-    // (a knot of lines a few pixels long, a third of such a frame's work); a larger neighbour
-    // still draws the edge they share.
+    // edges or in hidden line, a face drawn by its triangles under kCrowdedEdgePixels across
+    // leaves its edges out (a knot of lines a few pixels long, a third of such a frame's work);
+    // a larger neighbour still draws the edge they share. The wireframe keeps every edge.
     void set_crowded(bool on) { crowded_ = on; }
     // Picked faces drawn in the highlight colour (face kNone: none), and the instance being drawn.
     void set_highlight(uint32_t face0, uint32_t instance0, uint32_t face1, uint32_t instance1) {
