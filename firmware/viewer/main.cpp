@@ -112,7 +112,7 @@ void on_event(void*, const Event& e) {
     case Event::Kind::Loaded:
         record(con, e);
         if (e.loaded.boxed_parts) {
-            print(con, "viewer: the model is larger than the memory: {} parts ({} faces) left out, drawn as their boxes\n",
+            print(con, "viewer: the model is larger than the memory: {} parts ({} faces) left out, drawn as their proxies (boxes without)\n",
                   e.loaded.boxed_parts, e.loaded.boxed_faces);
         }
         break;

@@ -190,9 +190,10 @@ void Overlay::status(const render::Target& t, const StatusInfo& s) const {
     if (has_models() && button_count_ > 0) {
         render::fill_rect(t, 0, 0, render::text_width(name) + 6, status_rows_, models_open_ ? kButtonOn : kButton);
     }
-    // A model larger than the memory: "faces 900/900 +4100 boxed" (the parts left out).
+    // A model larger than the memory: "faces 900/900 +4100 left out" (the faces of the parts left
+    // out, drawn as their proxies, or boxes from a pack without them).
     char boxed[24] = "";
-    if (s.boxed_faces) format(boxed, sizeof boxed, " +{} boxed", s.boxed_faces);
+    if (s.boxed_faces) format(boxed, sizeof boxed, " +{} left out", s.boxed_faces);
     format(text, sizeof text, "{}{}faces {}/{}{}  {} tri  lod {} mm  {}  {}", name, name[0] ? "  " : "", s.finished, s.total, boxed,
            s.triangles, fixed(tol, 3), mode_name(s.mode), s.ortho ? "parallel" : "persp");
     const TimeField f = time_field();
