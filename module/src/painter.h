@@ -25,7 +25,7 @@ constexpr int32_t kFacePixels = 4;
 // While the view is dragged, a face under this across is drawn as a splat in its colour, not
 // as its triangles (coarser detail while dragging, for the frame rate).
 constexpr int32_t kSplatPixels = 2 * kFacePixels;
-// In a crowded view, a shaded face under this across is drawn without its edges (Painter::set_crowded).
+// In a crowded view, a face under this across is drawn without its edges (Painter::set_crowded).
 constexpr int32_t kCrowdedEdgePixels = 2 * kFacePixels;
 
 // A mesh point as the instance being drawn projects it: a slot of the painter's projection

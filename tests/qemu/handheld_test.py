@@ -107,7 +107,7 @@ def main():
     # Every frame of the session within the frame budget.
     uart = open(os.path.join(dev, 'uart.log')).read() if os.path.exists(os.path.join(dev, 'uart.log')) else ''
     _, frames = analyse(uart, rep.get('regions', []))
-    over = [f for f in frames if f['instructions'] and f['instructions'] > frame_budget(f['triangles'])]
+    over = [f for f in frames if f['instructions'] and f['instructions'] > frame_budget(f['triangles'], f['rest'])]
     if not frames or over:
         problems.append(f'{len(frames)} frames, {len(over)} over the frame budget')
     else:

@@ -31,7 +31,8 @@ sys.path.insert(0, os.path.join(ROOT, 'tools'))
 import board as boards  # noqa: E402
 import img  # noqa: E402
 import protocol  # noqa: E402
-from budget_rules import OVERLAY_BUDGET, analyse, first_view, first_view_budget, frame_budget, peak_ram, tessellation_budget, unpack_instructions  # noqa: E402
+from budget_rules import (OVERLAY_BUDGET, ZOOM_DETAIL_BUDGET, analyse, first_view, first_view_budget, frame_budget, peak_ram,  # noqa: E402
+                          tessellation_budget, unpack_instructions, zoom_detail)
 
 def session(board):
     """tests/sessions/viewer.session for this board (the drag only where it has a mouse)."""
@@ -121,7 +122,7 @@ def main():
         t0 = tess.get(0)
         if t0 is None or not frames or any(f['instructions'] is None for f in frames):
             problems.append('instruction counts missing')
-        worst = max(frames, key=lambda f: f['instructions'] / frame_budget(f['triangles'])) if frames else None
+        worst = max(frames, key=lambda f: f['instructions'] / frame_budget(f['triangles'], f['rest'])) if frames else None
         budget_notes = []
         if t0 is not None and t and t0 > tessellation_budget(t['faces']):
             budget_notes.append(f'tessellation {t0:,} > {tessellation_budget(t["faces"]):,.0f}')
@@ -131,9 +132,12 @@ def main():
         elif t and view > first_view_budget(t['faces']):
             budget_notes.append(f'first view {view:,} > {first_view_budget(t["faces"]):,.0f}')
         for f in frames:
-            if f['instructions'] and f['instructions'] > frame_budget(f['triangles']):
-                budget_notes.append(f'frame of {f["triangles"]:,} triangles: {f["instructions"]:,} > '
-                                    f'{frame_budget(f["triangles"]):,.0f}')
+            if f['instructions'] and f['instructions'] > frame_budget(f['triangles'], f['rest']):
+                budget_notes.append(f'frame of {f["triangles"]:,} triangles{" at rest" if f["rest"] else ""}: {f["instructions"]:,} > '
+                                    f'{frame_budget(f["triangles"], f["rest"]):,.0f}')
+        zoom = zoom_detail(uart, rep['regions'])
+        if zoom is not None and zoom > ZOOM_DETAIL_BUDGET:
+            budget_notes.append(f'zoomed in to its detail: {zoom:,} > {ZOOM_DETAIL_BUDGET:,}')
         # The on-screen interface: at most 0.5 M instructions a frame.
         overlay_max = max((f.get('overlay', 0) for f in frames), default=0)
         if overlay_max > OVERLAY_BUDGET:

@@ -153,13 +153,10 @@ int main(int argc, char** argv) {
     long total = 0, distinct_total = 0;
     try {
         for (size_t i = 0; i < copies.size(); ++i) {
-            TDF_Label part;
-            if (distinct && i >= fresh) part = made[(i - fresh) % fresh]; // an instance of a distinct copy, in turn
             const Source& s = sources[size_t(copies[i])];
-            if (!part.IsNull()) {
-            } else if (instances && !shared[size_t(copies[i])].IsNull()) {
-                part = shared[size_t(copies[i])];
-            } else {
+            // An instance: of a distinct copy, in turn (--distinct), or of its model (--instances).
+            TDF_Label part = distinct && i >= fresh ? made[(i - fresh) % fresh] : instances ? shared[size_t(copies[i])] : TDF_Label();
+            if (part.IsNull()) {
                 const TopoDS_Shape shape = instances ? TopoDS_Shape(s.shape) : BRepBuilderAPI_Copy(s.shape).Shape();
                 part = shapes->AddShape(shape, false);
                 const std::string name = instances ? s.name : s.name + " #" + std::to_string(i + 1);
