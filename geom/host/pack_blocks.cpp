@@ -155,6 +155,12 @@ void place(const Instance& inst, const PartBox& b, float lo[3], float hi[3]) {
     }
 }
 
+// Two proxies of one mesh (a part simple enough that a coarser level is the finer one).
+bool same_mesh(const Proxy& a, const Proxy& b) {
+    return a.triangles == b.triangles && a.points.size() == b.points.size() &&
+           std::memcmp(a.points.data(), b.points.data(), a.points.size() * sizeof(Vec3)) == 0;
+}
+
 } // namespace
 
 bool make_blocked(const Pack& whole, const std::vector<PartBox>& given, const BlockOptions& options, std::vector<uint8_t>& out,
@@ -221,7 +227,8 @@ bool make_blocked(const Pack& whole, const std::vector<PartBox>& given, const Bl
     }
     // The index: header, table, sections; then the blocks.
     std::vector<Instance> instances(whole.instances().begin(), whole.instances().end());
-    const bool proxied = options.proxies && options.proxies->size() == shells;
+    const size_t levels = options.proxies && shells ? options.proxies->size() / shells : 0;
+    const bool proxied = levels >= 1 && levels <= pack::kMostProxyLevels && options.proxies->size() == levels * shells;
     const uint32_t kSections = 6 + (whole.needs() ? 1 : 0) + (proxied ? 3 : 0);
     out.assign(sizeof(IndexHeader) + kSections * sizeof(SectionEntry), 0);
     std::vector<SectionEntry> table;
@@ -247,34 +254,42 @@ bool make_blocked(const Pack& whole, const std::vector<PartBox>& given, const Bl
     append(out, table, IndexSectionId::InstanceNames, instance_names);
     append(out, table, IndexSectionId::Names, pool);
     if (whole.needs()) append(out, table, IndexSectionId::Needs, std::vector<pack::Needs>{*whole.needs()});
-    if (proxied) { // each part's proxy, its corners quantized over its box
-        std::vector<pack::ProxyPart> records;
+    if (proxied) { // each part's proxies, their corners quantized over its box
+        std::vector<pack::ProxyPart> records(levels * shells);
         std::vector<pack::ProxyVertex> corners;
         std::vector<pack::ProxyTriangle> triangles;
         for (uint32_t s = 0; s < shells; ++s) {
-            const Proxy& x = (*options.proxies)[s];
-            pack::ProxyPart r{uint32_t(corners.size()), uint32_t(x.points.size()), uint32_t(triangles.size()),
-                              uint32_t(x.triangles.size() / 3), x.error_mm, {0, 0, 0, 0}};
-            if (x.colour < whole.colours().size()) r.colour = whole.colours()[x.colour], r.colour.a = 255;
-            if (x.points.size() > 65535) r.vertex_count = r.triangle_count = 0; // (never: proxies are small)
-            for (uint32_t v = 0; v < r.vertex_count; ++v) {
-                pack::ProxyVertex q{};
-                const float p[3] = {x.points[v].x, x.points[v].y, x.points[v].z};
-                for (int k = 0; k < 3; ++k) {
-                    const float e = boxes[s].max[k] - boxes[s].min[k];
-                    const float f = e > 0 ? (p[k] - boxes[s].min[k]) / e : 0.0f;
-                    q.q[k] = uint16_t(std::lround(std::clamp(f, 0.0f, 1.0f) * 65535.0f));
+            for (size_t l = levels; l-- > 0;) { // finest first: a coarser level is as far as it, or farther
+                const Proxy& x = (*options.proxies)[s * levels + l];
+                pack::ProxyPart& r = records[s * levels + l];
+                r = {uint32_t(corners.size()), uint32_t(x.points.size()), uint32_t(triangles.size()), uint32_t(x.triangles.size() / 3),
+                     x.error_mm, {0, 0, 0, 0}};
+                if (l + 1 < levels) r.error_mm = std::max(r.error_mm, records[s * levels + l + 1].error_mm);
+                if (x.colour < whole.colours().size()) r.colour = whole.colours()[x.colour], r.colour.a = 255;
+                if (x.points.size() > 65535) r.vertex_count = r.triangle_count = 0; // (never: proxies are small)
+                if (l + 1 < levels && same_mesh(x, (*options.proxies)[s * levels + l + 1])) { // the finer one's: shared
+                    const pack::ProxyPart& finer = records[s * levels + l + 1];
+                    r.first_vertex = finer.first_vertex, r.first_triangle = finer.first_triangle;
+                    continue;
                 }
-                corners.push_back(q);
+                for (uint32_t v = 0; v < r.vertex_count; ++v) {
+                    pack::ProxyVertex q{};
+                    const float p[3] = {x.points[v].x, x.points[v].y, x.points[v].z};
+                    for (int k = 0; k < 3; ++k) {
+                        const float e = boxes[s].max[k] - boxes[s].min[k];
+                        const float f = e > 0 ? (p[k] - boxes[s].min[k]) / e : 0.0f;
+                        q.q[k] = uint16_t(std::lround(std::clamp(f, 0.0f, 1.0f) * 65535.0f));
+                    }
+                    corners.push_back(q);
+                }
+                for (uint32_t t = 0; t < r.triangle_count; ++t) {
+                    pack::ProxyTriangle tri{};
+                    for (int k = 0; k < 3; ++k) tri.v[k] = uint16_t(x.triangles[3 * t + k]);
+                    const float n[3] = {x.normals[t].x, x.normals[t].y, x.normals[t].z};
+                    for (int k = 0; k < 3; ++k) tri.n[k] = int8_t(std::lround(std::clamp(n[k], -1.0f, 1.0f) * 127.0f));
+                    triangles.push_back(tri);
+                }
             }
-            for (uint32_t t = 0; t < r.triangle_count; ++t) {
-                pack::ProxyTriangle tri{};
-                for (int k = 0; k < 3; ++k) tri.v[k] = uint16_t(x.triangles[3 * t + k]);
-                const float n[3] = {x.normals[t].x, x.normals[t].y, x.normals[t].z};
-                for (int k = 0; k < 3; ++k) tri.n[k] = int8_t(std::lround(std::clamp(n[k], -1.0f, 1.0f) * 127.0f));
-                triangles.push_back(tri);
-            }
-            records.push_back(r);
         }
         append(out, table, IndexSectionId::ProxyParts, records);
         append(out, table, IndexSectionId::ProxyVertices, corners);

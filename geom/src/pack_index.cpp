@@ -136,12 +136,16 @@ Result PackIndex::open(const void* data, uint32_t size, uint32_t file_bytes) {
     return check_proxies();
 }
 
-// The proxies, when there are: one record per part, each inside the pools, every triangle's
-// corners its part's, normals of about unit length.
+// The proxies, when there are: 1 to kMostProxyLevels records per part, each inside the pools,
+// each level as far as the next finer or farther, every triangle's corners its part's,
+// normals of about unit length.
 Result PackIndex::check_proxies() {
     constexpr uint32_t P = uint32_t(IndexSectionId::ProxyParts), T = uint32_t(IndexSectionId::ProxyTriangles);
     if (proxy_parts_.empty() && proxy_vertices_.empty() && proxy_triangles_.empty()) return {};
-    if (proxy_parts_.size() != parts_.size()) return fail("not one proxy per part", P, 0);
+    const size_t levels = proxy_parts_.size() / parts_.size();
+    if (proxy_parts_.size() % parts_.size() || levels < 1 || levels > pack::kMostProxyLevels) {
+        return fail("not 1 to kMostProxyLevels proxy levels per part", P, 0);
+    }
     for (uint32_t p = 0; p < proxy_parts_.size(); ++p) {
         const pack::ProxyPart& x = proxy_parts_[p];
         if (uint64_t(x.first_vertex) + x.vertex_count > proxy_vertices_.size() || x.vertex_count > 65535 ||
@@ -149,6 +153,7 @@ Result PackIndex::check_proxies() {
             return fail("the proxy's vertices or triangles lie outside their pools", P, p);
         }
         if (!finite(x.error_mm) || !(x.error_mm >= 0)) return fail("the proxy's error is not a finite length", P, p);
+        if (p % levels && !(x.error_mm <= proxy_parts_[p - 1].error_mm)) return fail("a proxy level is farther than the one coarser", P, p);
         for (uint32_t t = x.first_triangle; t < x.first_triangle + x.triangle_count; ++t) {
             const pack::ProxyTriangle& tri = proxy_triangles_[t];
             if (tri.v[0] >= x.vertex_count || tri.v[1] >= x.vertex_count || tri.v[2] >= x.vertex_count || tri.reserved) {

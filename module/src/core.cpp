@@ -1,5 +1,6 @@
 // The viewer's core: load and unload, the loop of step(), input's commands and the actions.
 #include "core.h"
+#include "detail_scale.h"
 #include "geom/pack_file.h"
 #include "loader.h"
 
@@ -188,6 +189,10 @@ bool Core::run_frame() {
     presenter_.set_boxes(boxes_while_sampling());
     presenter_.set_dragging(controls_.dragging() || glide_.moving());
     presenter_.set_crowded(detail_.crowd() > 1);
+    // (A part left out whose proxy is not within the view's error is on its way in: it stands
+    // as one at the crowd's coarsest error, so a first frame, every part left out, is not
+    // drawn at the finest.)
+    presenter_.set_proxy_error(config_.screen_error_px * detail_.crowd(), config_.screen_error_px * module::DetailScale::kCrowdCoarsest);
     const Work w = presenter_.work();
     work(Event::Kind::WorkBegin, w, 0);
     presenter_.run(kFrameUnits, scheduler_.pass());

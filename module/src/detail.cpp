@@ -35,14 +35,15 @@ float Detail::wanted_tolerance(uint32_t b, float pass_tolerance, float finest, b
     (void)judge_.update();
     if (on_screen) *on_screen = judge_.view().pixels(centre, r) > 0;
     const float bias = pass_tolerance / default_tolerance_;
-    float t = bias * screen_error_px_ * crowd_ * judge_.view().mm_per_pixel(centre, r);
+    const float crowd = std::min(crowd_, Scale::kCrowdMeshCoarsest);
+    float t = bias * screen_error_px_ * crowd * judge_.view().mm_per_pixel(centre, r);
     // Never finer than the block would take as a model of its own (its share of the model's
     // size: a part of a large assembly zoomed into gets its own detail, a one-block model
     // keeps the pass's), nor than `finest` times the pass's.
     const float own = scene_.radius() > 0 ? pass_tolerance * std::min(1.0f, r / scene_.radius()) : pass_tolerance;
     const float floor = std::max(own, pass_tolerance / finest);
     if (t < floor) t = floor;
-    if (t > Scale::kBlockCoarsest * crowd_ * pass_tolerance) t = Scale::kBlockCoarsest * crowd_ * pass_tolerance;
+    if (t > Scale::kBlockCoarsest * crowd * pass_tolerance) t = Scale::kBlockCoarsest * crowd * pass_tolerance;
     return t;
 }
 
@@ -59,7 +60,7 @@ bool Detail::refine(Swapper& room) {
         float best_gap = 1, best_tolerance = 0;
         for (uint32_t b = 0; b < scene_.block_count(); ++b) {
             const Block& block = scene_.block(b);
-            if (!(block.tolerance > 0) || block.refused) continue;
+            if (!(block.tolerance > 0) || block.refused || served_by_proxies(b)) continue;
             bool on_screen = true;
             const float want = wanted_tolerance(b, scheduler_.tolerance(), Scale::kRefineFinest, &on_screen);
             const float finer = block.tolerance / want, coarser = want / block.tolerance;
@@ -92,16 +93,32 @@ uint32_t Detail::triangle_bound() const {
 // A blocked model's triangles bounded by the screen (issue 52): past the bound (the triangles a
 // frame of the view takes, each instance's: what its cost follows), every block's
 // screen error is taken kStep times coarser (refine() then makes again the blocks now twice
-// finer than the view asks, largest gap first); under a quarter of it, kStep finer again.
-// The triangles held count when they are more (a block brought in since that frame).
+// finer than the view asks, largest gap first, and more parts are drawn as their proxies);
+// under a quarter of it (half, where the parts have proxies: they cost little to change),
+// kStep finer again, though never to a crowd this view was over the bound at. Where the parts have no proxies, the triangles
+// held count when they are more (a block brought in since that frame); where they have, what
+// is held is not what is drawn.
 bool Detail::bound_triangles(uint32_t in_view) {
     if (!scene_.blocked() || scene_.block_count() < 2) return false; // (a part alone keeps the detail it was given)
-    const uint32_t held = std::max(in_view, scene_.totals().triangles), bound = triangle_bound();
-    if (held > bound && crowd_ < Scale::kCrowdCoarsest) {
-        crowd_ *= Scale::kStep, check_ = true;
-    } else if (held < bound / 4 && crowd_ > 1) {
-        crowd_ /= Scale::kStep, check_ = true;
+    const bool proxies = scene_.index().proxy_levels() > 0;
+    const uint32_t held = proxies ? in_view : std::max(in_view, scene_.totals().triangles), bound = triangle_bound();
+    if (proxies && !judged_crowd_) {
+        // The first look: the frames so far drew the parts left out at their coarsest, so a
+        // view where two triangles a face, every instance's, pass the bound starts as crowded
+        // as it can be (its parts as proxies, no block brought in for them), and is made finer
+        // as its frames show room.
+        uint64_t least = 0;
+        for (const auto& i : scene_.instances()) least += 2 * uint64_t(scene_.index().parts()[i.shell].face_count); // (left out or not)
+        if (least > bound) crowd_ = Scale::kCrowdCoarsest, check_ = true;
+    } else if (held != judged_held_) { // (once a frame: the next one shows what this step did)
+        if (held > bound && crowd_ < (proxies ? Scale::kCrowdCoarsest : Scale::kCrowdMeshCoarsest)) {
+            over_crowd_ = std::max(over_crowd_, crowd_);
+            crowd_ *= Scale::kStep, check_ = true;
+        } else if (held < bound / (proxies ? 2 : 4) && crowd_ > 1 && crowd_ / Scale::kStep > over_crowd_) {
+            crowd_ /= Scale::kStep, check_ = true; // (never back to a crowd this view was over the bound at)
+        }
     }
+    judged_crowd_ = true, judged_held_ = held;
     crowded_ = held > bound;
     return crowded_;
 }
@@ -149,6 +166,21 @@ bool Detail::block_sphere(uint32_t b, float centre[3], float& radius) const {
     return true;
 }
 
+bool Detail::served_by_proxies(uint32_t b) {
+    const geom::PackIndex& index = scene_.index();
+    const uint32_t levels = scene_.blocked() ? index.proxy_levels() : 0;
+    float centre[3], r;
+    if (levels == 0 || !(crowd_ > 1) || !(screen_error_px_ > 0) || !block_sphere(b, centre, r)) return false;
+    (void)judge_.update();
+    const float allowed_mm = screen_error_px_ * crowd_ * judge_.view().mm_per_pixel(centre, r);
+    const Block& block = scene_.block(b);
+    for (uint32_t p = block.first_part; p < scene_.part_count() && scene_.part(p).block == b; ++p) {
+        const pack::ProxyPart& finest = index.proxy(p, levels - 1);
+        if (finest.triangle_count == 0 || !(finest.error_mm <= allowed_mm)) return false;
+    }
+    return true;
+}
+
 float Detail::block_pixels(uint32_t b) {
     float centre[3], r;
     if (!block_sphere(b, centre, r)) return 0;
@@ -158,7 +190,7 @@ float Detail::block_pixels(uint32_t b) {
 
 bool Detail::view_changed() {
     if (!judge_.update()) return false;
-    check_ = true;
+    check_ = true, over_crowd_ = 0;
     for (uint32_t b = 0; b < scene_.block_count(); ++b) scene_.block(b).refused = false; // (the room may differ now)
     if (scene_.totals().deferred > 0) scheduler_.revisit();
     return true;

@@ -23,7 +23,7 @@ public:
     // A new model, whose default tolerance is `mm` (geom::default_tolerance): judged afresh.
     void reset(float mm) {
         default_tolerance_ = mm;
-        crowd_ = 1, crowded_ = false;
+        crowd_ = 1, crowded_ = false, judged_crowd_ = false, judged_held_ = 0, over_crowd_ = 0;
         judge_.reset();
     }
     float default_tolerance() const { return default_tolerance_; }
@@ -41,6 +41,11 @@ public:
     // times it; on_screen (if given): whether its box shows.
     float wanted_tolerance(uint32_t b, float pass_tolerance, float finest, bool* on_screen);
     bool block_sphere(uint32_t b, float centre[3], float& radius) const; // around its box (mm); false: empty
+    // Whether every part of block b is drawn as its proxy wherever the view shows it: the view
+    // is crowded, and each part's finest proxy strays by no more than the crowd's screen error
+    // at the block's nearest point (Painter::proxy_level asks it of each instance, at its own,
+    // farther). Such a block is neither brought in nor made again for the view.
+    bool served_by_proxies(uint32_t b);
     float block_pixels(uint32_t b);                                      // its box's sphere across on the screen
 
     // The view may have moved: when it has (true), the faces left to their edges and the
@@ -69,6 +74,9 @@ private:
     bool check_ = false; // the view moved since the blocks' levels were last looked at
     float crowd_ = 1;    // crowd(): the screen error times this
     bool crowded_ = false; // over the bound when last looked: blocks are only made coarser
+    bool judged_crowd_ = false; // bound_triangles() has looked since reset()
+    uint32_t judged_held_ = 0;  // at the triangles it last looked at
+    float over_crowd_ = 0;      // the largest crowd this view was over the bound at (0: none)
 };
 
 } // namespace facet::module

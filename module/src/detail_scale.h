@@ -18,12 +18,15 @@ struct DetailScale {
     // The first pass short of room goes coarser, up to this many times the tolerance asked for
     // (what facet-pack's Needs are measured to).
     static constexpr float kFirstPassCoarsest = pack::kCoarsestFirst;
-    // Triangles bounded by the screen (issue 52): a blocked model holding more triangles than
-    // one per kPixelsPerTriangle pixels of the view (at least kLeastTriangleBound) takes its
-    // screen error kStep times coarser, up to kCrowdCoarsest times; under a quarter of the
-    // bound, kStep finer again. (640x480: 19,200 triangles; 480x272: 8,192.)
+    // Triangles bounded by the screen (issue 52): a blocked model whose last whole frame took
+    // more triangles than one per kPixelsPerTriangle pixels of the view (at least
+    // kLeastTriangleBound) takes its screen error kStep times coarser, up to kCrowdCoarsest
+    // times for the parts drawn as their proxies and kCrowdMeshCoarsest times for the blocks'
+    // tessellations; under a quarter of the bound, kStep finer again. (640x480: 19,200
+    // triangles; 480x272: 8,192.) A part left out, on its way in, stands as a proxy within
+    // kCrowdCoarsest times the screen error.
     static constexpr uint32_t kPixelsPerTriangle = 16, kLeastTriangleBound = 8192;
-    static constexpr float kCrowdCoarsest = 4.0f;
+    static constexpr float kCrowdCoarsest = 16.0f, kCrowdMeshCoarsest = 4.0f;
 };
 
 } // namespace facet::module

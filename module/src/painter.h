@@ -110,11 +110,25 @@ public:
     // a part left out of a model larger than the memory, and for one tiny() on the screen, where
     // it has no proxy.
     uint32_t part_box(uint32_t part, const Transform& t);
-    // A part's proxy (a coarse mesh of it in a blocked pack's index: geom/host/proxies.h) stands
-    // for it where a box would: drawn with the faces, in its colour, each triangle lit by its
-    // own normal. draws_proxy(): the part has one and the mode draws faces (else its box).
-    bool draws_proxy(uint32_t part) const;
-    uint32_t part_proxy(uint32_t part, const Transform& t);
+    // A part's proxy (a coarse mesh of it in a blocked pack's index, at a few levels:
+    // geom/host/proxies.h) stands for it where a box would (`must`: left out, not sampled yet,
+    // tiny), and, in a crowded view, for a part in memory (not a lit part, nor one the section
+    // crosses) whose own faces have more triangles, at the coarsest level that strays on the
+    // screen by no more than the view's proxy error; a part that must and has none so near, at the coarsest within the left-out
+    // error (else the finest: a block on its way in). Drawn with the faces, in its colour, each
+    // triangle lit by its own normal. proxy_level(): the level, or kNone (the part's own
+    // faces, or its box where it must and the mode draws no faces).
+    // (Coarsest: a must before the view's triangles are known, the first frames of a model.)
+    enum class ProxyNeed : uint8_t { Optional, Must, Coarsest };
+    uint32_t proxy_level(uint32_t part, const int32_t sphere_centre[3], int32_t radius, const Transform& t, ProxyNeed need);
+    uint32_t part_proxy(uint32_t part, const Transform& t, uint32_t level);
+    uint32_t own_triangles(uint32_t part) const; // its faces' now
+    // The screen error a proxy may have (pixels): the view's (its screen error times its
+    // crowd), and one that stands for a part left out (coarser) until it comes in.
+    void set_proxy_error(float pixels, float left_out_pixels) {
+        proxy_subpixels_ = int32_t(pixels * float(render::subpixel::kPerPixel));
+        left_out_subpixels_ = int32_t(left_out_pixels * float(render::subpixel::kPerPixel));
+    }
     // Whether a part's sphere (Scene::part_sphere) is under a few pixels across: the part is
     // drawn as its proxy (or box) until it grows.
     bool tiny(const int32_t sphere_centre[3], int32_t radius, const Transform& t);
@@ -173,6 +187,7 @@ private:
     uint32_t next_palette_ = 0; // the palette slot to reuse next
     bool dragging_ = false;
     bool crowded_ = false;
+    int32_t proxy_subpixels_ = 0, left_out_subpixels_ = 0; // set_proxy_error()
     DisplayMode mode_ = DisplayMode::ShadedEdges;
     bool tangent_edges_ = true;
     struct Highlight {

@@ -1,21 +1,65 @@
-// A part's proxy drawn where its box would be (painter.h: draws_proxy(), part_proxy()): the
-// coarse mesh a blocked pack's index holds for it (geom/host/proxies.h), placed by the
-// instance's transform, flat-shaded in its colour.
+// A part's proxy drawn where its box would be, or for the part where the view is crowded
+// (painter.h: proxy_level(), part_proxy()): a coarse mesh a blocked pack's index holds for it
+// (geom/host/proxies.h), placed by the instance's transform, flat-shaded in its colour.
 #include "painter.h"
 
 #include <cmath>
 
 namespace facet::module {
-bool Painter::draws_proxy(uint32_t part) const {
-    const auto proxies = scene_.index().proxy_parts();
-    return mode_ != DisplayMode::Wireframe && scene_.blocked() && part < proxies.size() && proxies[part].triangle_count > 0 &&
-           proxies[part].vertex_count <= mem_.projected.size();
+uint32_t Painter::proxy_level(uint32_t part, const int32_t sphere_centre[3], int32_t radius, const Transform& t, ProxyNeed need) {
+    const geom::PackIndex& index = scene_.index();
+    const uint32_t levels = scene_.blocked() && part < index.parts().size() ? index.proxy_levels() : 0;
+    if (levels == 0 || mode_ == DisplayMode::Wireframe) return kNone;
+    const bool must = need != ProxyNeed::Optional;
+    if (!must) { // a part in memory: only in a crowded view, and drawn as itself where it is lit or cut
+        if (!crowded_ || proxy_subpixels_ <= 0 || radius <= 0 || part_ == instance_ || hl_[0].instance == instance_ ||
+            hl_[1].instance == instance_) {
+            return kNone;
+        }
+        if (t.cut.on) {
+            int32_t x, y, d;
+            t.to_view(sphere_centre, x, y, d);
+            const int64_t rv = (int64_t(radius) * t.k16) >> 16, side = t.cut.side(x, y, d), r = (rv + rv / 8 + 2) * 16384;
+            if (side >= -r && side <= r) return kNone;
+        }
+    }
+    // The coarsest level within the view's proxy error; for a part that must stand as one and
+    // has none so near, the coarsest within the left-out error, else the finest.
+    uint32_t finest = kNone, left_out = kNone;
+    if (need == ProxyNeed::Coarsest) {
+        for (uint32_t l = 0; l < levels; ++l) {
+            const pack::ProxyPart& x = index.proxy(part, l);
+            if (x.triangle_count && x.vertex_count <= mem_.projected.size()) return l;
+        }
+        return kNone;
+    }
+    const float per_unit = 0.5f / scene_.unit(); // (a sphere of half the error: across() gives its diameter)
+    for (uint32_t l = 0; l < levels; ++l) {
+        const pack::ProxyPart& x = index.proxy(part, l);
+        if (x.triangle_count == 0 || x.vertex_count > mem_.projected.size()) continue;
+        finest = l;
+        if (radius <= 0) continue;
+        Projected centre;
+        const float half = x.error_mm * per_unit;
+        const int32_t strays = half < float(radius) ? across(sphere_centre, int32_t(half) + 1, t, centre) : -1;
+        if (strays < 0) continue;
+        if (strays <= proxy_subpixels_) return must || x.triangle_count < own_triangles(part) ? l : kNone;
+        if (strays <= left_out_subpixels_ && left_out == kNone) left_out = l;
+    }
+    return !must ? kNone : left_out != kNone ? left_out : finest;
 }
 
-uint32_t Painter::part_proxy(uint32_t part, const Transform& t) {
-    if (!draws_proxy(part)) return 1;
+// The triangles the part's own faces have now (a proxy stands for it only with fewer).
+uint32_t Painter::own_triangles(uint32_t part) const {
+    const Part sh = scene_.part(part);
+    uint32_t n = 0;
+    for (uint32_t f = sh.first_face; f < sh.first_face + sh.face_count; ++f) n += scene_.face(f).triangle_count;
+    return n;
+}
+
+uint32_t Painter::part_proxy(uint32_t part, const Transform& t, uint32_t level) {
     const geom::PackIndex& index = scene_.index();
-    const pack::ProxyPart& x = index.proxy_parts()[part];
+    const pack::ProxyPart& x = index.proxy(part, level);
     const pack::Part& p = index.parts()[part];
     // A corner q (0-65535 over the part's box) in the mesh's units: base + q x step / 2^16.
     int32_t base[3], step[3];
@@ -40,10 +84,18 @@ uint32_t Painter::part_proxy(uint32_t part, const Transform& t) {
     const uint32_t pixels = raster_.stats.pixels;
     const pack::ProxyTriangle* tri = index.proxy_triangles().data() + x.first_triangle;
     for (uint32_t k = 0; k < x.triangle_count; ++k) {
+        const Projected &pa = P[tri[k].v[0]], &pb = P[tri[k].v[second]], &pc = P[tri[k].v[third]];
+        if (cull == render::Cull::Back && !(pa.out | pb.out | pc.out)) { // turned away: culled before it is lit
+            const int64_t area2 = int64_t(pb.s.x - pa.s.x) * (pc.s.y - pa.s.y) - int64_t(pb.s.y - pa.s.y) * (pc.s.x - pa.s.x);
+            if (area2 >= 0) {
+                ++raster_.stats.culled;
+                continue;
+            }
+        }
         // Flat: each triangle lit by its own normal (x 127 in the pack; Q14 here).
         const int16_t n[3] = {int16_t(tri[k].n[0] * 129), int16_t(tri[k].n[1] * 129), int16_t(tri[k].n[2] * 129)};
         const uint8_t shade = white ? uint8_t(200 + ((t.shade(n) * 55) >> 8)) : t.shade(n);
-        Projected a = P[tri[k].v[0]], b = P[tri[k].v[second]], cc = P[tri[k].v[third]];
+        Projected a = pa, b = pb, cc = pc;
         a.s.shade = b.s.shade = cc.s.shade = shade;
         if (!(a.out | b.out | cc.out)) refused_ += !ok(raster_.draw(a.s, b.s, cc.s, pal, cull));
         else triangle(t, a, b, cc, pal, cull, nullptr);

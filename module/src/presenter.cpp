@@ -108,7 +108,7 @@ void Presenter::start(uint32_t finished) {
     job_.stage = Stage::Begin;
     job_.buffer = b;
     job_.boxes = boxes_;
-    job_.dragging = dragging_, job_.crowded = crowded_;
+    job_.dragging = dragging_, job_.crowded = crowded_, job_.proxy_pixels = proxy_pixels_, job_.left_out_pixels = left_out_pixels_;
     job_.full = !updates(b);
     job_.version = version_;
     job_.finished = finished;
@@ -168,11 +168,17 @@ void Presenter::catch_up() {
     buf_[b].applied = buf_[o].applied;
 }
 
-void Presenter::judge_part(uint32_t part, const Transform& t) {
+void Presenter::judge_part(uint32_t part, const Transform& t, bool must) {
     int32_t centre[3], radius;
     const bool known = scene_.part_sphere(part, centre, radius);
     job_.sight = known ? t.sight(centre, radius, painter_.rows(t)) : Transform::Sight::Across;
     job_.tiny = known && job_.sight != Transform::Sight::Out && painter_.tiny(centre, radius, t);
+    job_.level = kNone;
+    if (job_.sight == Transform::Sight::Out) return;
+    if (!known) centre[0] = centre[1] = centre[2] = 0, radius = 0;
+    using Need = Painter::ProxyNeed;
+    const Need need = !(must || job_.tiny) ? Need::Optional : job_.boxes || in_view_ == 0 ? Need::Coarsest : Need::Must;
+    job_.level = painter_.proxy_level(part, centre, radius, t, need);
 }
 
 bool Presenter::full_pieces(uint32_t units) {
@@ -190,7 +196,7 @@ bool Presenter::full_pieces(uint32_t units) {
             job_.transform = transform_of(job_.instance);
             job_.have_transform = true;
             painter_.set_instance(job_.instance);
-            judge_part(shell, job_.transform);
+            judge_part(shell, job_.transform, job_.boxes || scene_.part_boxed(shell));
             painter_.set_inside(job_.sight == Transform::Sight::In);
         }
         const Transform& t = job_.transform;
@@ -203,11 +209,12 @@ bool Presenter::full_pieces(uint32_t units) {
             if (spent >= units) return false;
             continue;
         }
-        if (job_.boxes || scene_.part_boxed(shell) || job_.tiny) {
-            // (a part left out, or brought in and not sampled yet, and a tiny one until it
-            // grows: its proxy with the faces, or, with none, its box with the edges)
-            const bool proxy = painter_.draws_proxy(shell);
-            if (faces && proxy) spent += painter_.part_proxy(shell, t);
+        if (job_.boxes || scene_.part_boxed(shell) || job_.tiny || job_.level != kNone) {
+            // (a part left out, or brought in and not sampled yet, a tiny one until it grows,
+            // and one a crowded view shows small: its proxy with the faces, or, with none, its
+            // box with the edges)
+            const bool proxy = job_.level != kNone;
+            if (faces && proxy) spent += painter_.part_proxy(shell, t, job_.level);
             if (!faces && !proxy) spent += painter_.part_box(shell, t);
             ++job_.instance;
             job_.have_transform = false;
@@ -262,6 +269,11 @@ bool Presenter::update_pieces(uint32_t units) {
                 job_.have_transform = true;
                 painter_.set_instance(job_.instance);
                 painter_.set_inside(false); // (a face or two at a time: each tested)
+                judge_part(instances[job_.instance].shell, job_.transform, false);
+                if (job_.level != kNone) { // drawn as its proxy: none of its faces
+                    job_.face = job_.applied_to;
+                    break;
+                }
             }
             const Rows rows = painter_.rows(job_.transform);
             uint32_t used;
@@ -306,7 +318,7 @@ void Presenter::flush(uint32_t pass) {
     const render::RasterStats& s = raster_.stats;
     const uint32_t cost = job_.cost_us + (clock_() - piece_start_);
     if (job_.full) last_frame_us_ = cost;
-    if (job_.full && job_.all_faces && bands_ == 1) in_view_ = s.triangles + s.culled;
+    if (job_.full && job_.all_faces && !job_.boxes && bands_ == 1) in_view_ = s.triangles + s.culled; // (not a frame of boxes: of the layout alone)
     const uint32_t total = scene_.totals().faces, finished = job_.finished < total ? job_.finished : total;
     e.frame = {s.triangles, s.culled, s.pixels, cost, job_.pieces, finished, total, pass, job_.full, job_.boxes};
     emit_(e);
@@ -347,6 +359,7 @@ void Presenter::run_piece(uint32_t units, uint32_t pass) {
     // full detail, the layer serving the frames once a drag ends, and in their own colours.)
     painter_.set_dragging(job_.dragging && !into_layer(job_.stage));
     painter_.set_crowded(job_.crowded);
+    painter_.set_proxy_error(job_.proxy_pixels, job_.left_out_pixels);
     painter_.set_plain(into_layer(job_.stage));
     switch (job_.stage) {
     case Stage::CopyLayer: // the view's faces, kept, into the draw buffer

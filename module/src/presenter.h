@@ -76,6 +76,9 @@ public:
     void set_dragging(bool on) { dragging_ = on; }
     // Frames begun from now on are of a crowded view (Painter::set_crowded).
     void set_crowded(bool on) { crowded_ = on; }
+    // Frames begun from now on draw proxies that stray up to this on the screen (pixels:
+    // Painter::set_proxy_error).
+    void set_proxy_error(float pixels, float left_out_pixels) { proxy_pixels_ = pixels, left_out_pixels_ = left_out_pixels; }
     // The kind of the piece run() would do next.
     Work work() const;
     bool drawing() const { return job_.active(); }
@@ -126,6 +129,7 @@ private:
         Stage stage = Stage::Idle;
         bool full = false;            // a whole frame (not an update)
         bool boxes = false, dragging = false, crowded = false; // set_boxes(), set_dragging(), set_crowded() as the frame began
+        float proxy_pixels = 0, left_out_pixels = 0; // set_proxy_error() as the frame began
         uint8_t buffer = 0;
         uint16_t band = 0;            // partial rendering: the band being drawn
         uint32_t face_start = 0;      // the New stages: the first done_order index
@@ -139,6 +143,7 @@ private:
         Transform transform{};
         Transform::Sight sight = Transform::Sight::Across; // where the instance's part lies
         bool tiny = false;            // and whether it is a few pixels across (drawn as its proxy, or box)
+        uint32_t level = kNone;       // the proxy level it is drawn at (Painter::proxy_level), or kNone
         uint32_t version = 0, faces_version = 0, finished = 0, applied_to = 0;
         uint32_t cost_us = 0;
         uint32_t pieces = 0;          // pieces of work this frame took so far
@@ -164,7 +169,11 @@ private:
     void catch_up();
     void take_done();
     bool buffer_free(uint8_t b) const;
-    void judge_part(uint32_t part, const Transform& t); // job_.sight and job_.tiny, by its sphere (none known: Across)
+    // job_.sight, job_.tiny and job_.level, by its sphere (none known: Across); `must`: a
+    // proxy or box whatever its size (left out, not sampled yet, a frame of boxes): the
+    // coarsest proxy while the view's triangles are not known yet (a frame of boxes, or before
+    // the first whole frame).
+    void judge_part(uint32_t part, const Transform& t, bool must);
     bool full_pieces(uint32_t units);   // the stage's pass over the instances (faces, or edges); true when done
     bool update_pieces(uint32_t units); // the faces since the buffer (or the layer) was last drawn
     void set_target();                  // the stage's: the faces layer, or the band of the draw buffer
@@ -190,6 +199,7 @@ private:
     bool boxes_ = false;       // set_boxes()
     bool dragging_ = false;    // set_dragging()
     bool crowded_ = false;     // set_crowded()
+    float proxy_pixels_ = 0, left_out_pixels_ = 0; // set_proxy_error()
     uint16_t bands_ = 1;
 
     uint32_t version_ = 1;      // the picture's state: +1 whenever every buffer must be redrawn

@@ -21,7 +21,9 @@ bool Swapper::begin() {
     for (uint32_t b = 0; b < scene_.block_count(); ++b) {
         Block& block = scene_.block(b);
         block.pixels = detail_.block_pixels(b);
-        if (block.left_out && !block.refused && !block.broken && block.pixels >= best_pixels) best = b, best_pixels = block.pixels;
+        if (block.left_out && !block.refused && !block.broken && block.pixels >= best_pixels && !detail_.served_by_proxies(b)) {
+            best = b, best_pixels = block.pixels;
+        }
     }
     if (best == kNone) return false;
     check_ = true; // the next one at the next moment nothing else is under way (this one in or not)

@@ -38,7 +38,7 @@ TEST(Proxies, EachPartHasACoarseMeshWithinItsCapAndBox) {
     for (const uint32_t cap : {12u, 40u, 200u}) {
         std::vector<Proxy> proxies;
         std::string error;
-        ASSERT_TRUE(make_proxies(pack, cap, proxies, error)) << error;
+        ASSERT_TRUE(make_proxies(pack, std::span(&cap, 1), proxies, error)) << error;
         ASSERT_EQ(proxies.size(), pack.shells().size());
         for (uint32_t s = 0; s < proxies.size(); ++s) {
             const Proxy& p = proxies[s];
@@ -69,7 +69,8 @@ TEST(Proxies, AClosedSolidsProxyFacesOut) {
     ASSERT_TRUE(pack.open(sphere.data(), uint32_t(sphere.size())).ok());
     std::vector<Proxy> proxies;
     std::string error;
-    ASSERT_TRUE(make_proxies(pack, 80, proxies, error)) << error;
+    const uint32_t caps[] = {80};
+    ASSERT_TRUE(make_proxies(pack, caps, proxies, error)) << error;
     ASSERT_EQ(proxies.size(), 1u);
     const Proxy& p = proxies[0];
     Vec3 centre{0, 0, 0};
@@ -89,7 +90,8 @@ TEST(Proxies, TheIndexCarriesThemAndRefusesBadOnes) {
     ASSERT_TRUE(pack.open(bytes.data(), uint32_t(bytes.size())).ok());
     std::vector<Proxy> proxies;
     std::string error;
-    ASSERT_TRUE(make_proxies(pack, 48, proxies, error)) << error;
+    const uint32_t caps[] = {12, 48};
+    ASSERT_TRUE(make_proxies(pack, caps, proxies, error)) << error;
     BlockOptions options{1, BlockStore::Lzma, &proxies};
     Bytes file;
     ASSERT_TRUE(make_blocked(pack, {}, options, file, error)) << error;
@@ -97,10 +99,18 @@ TEST(Proxies, TheIndexCarriesThemAndRefusesBadOnes) {
     std::memcpy(aligned.data(), file.data(), file.size());
     PackIndex index;
     ASSERT_TRUE(index.open(aligned.data(), uint32_t(file.size())).ok());
-    ASSERT_EQ(index.proxy_parts().size(), index.parts().size());
-    for (uint32_t s = 0; s < proxies.size(); ++s) {
-        EXPECT_EQ(index.proxy_parts()[s].triangle_count, proxies[s].triangles.size() / 3);
-        EXPECT_EQ(index.proxy_parts()[s].vertex_count, proxies[s].points.size());
+    ASSERT_EQ(index.proxy_levels(), 2u);
+    ASSERT_EQ(index.proxy_parts().size(), 2 * index.parts().size());
+    for (uint32_t s = 0; s < index.parts().size(); ++s) {
+        for (uint32_t l = 0; l < 2; ++l) {
+            const pack::ProxyPart& x = index.proxy(s, l);
+            EXPECT_EQ(x.triangle_count, proxies[2 * s + l].triangles.size() / 3) << "part " << s << " level " << l;
+            EXPECT_EQ(x.vertex_count, proxies[2 * s + l].points.size());
+            EXPECT_LE(x.triangle_count, caps[l]);
+        }
+        // The coarser level as far as the finer, or farther; fewer triangles.
+        EXPECT_GE(index.proxy(s, 0).error_mm, index.proxy(s, 1).error_mm);
+        EXPECT_LE(index.proxy(s, 0).triangle_count, index.proxy(s, 1).triangle_count);
     }
     // Without proxies: an index as before (none).
     Bytes plain;
@@ -113,10 +123,20 @@ TEST(Proxies, TheIndexCarriesThemAndRefusesBadOnes) {
     ASSERT_TRUE(index.open(aligned.data(), uint32_t(file.size())).ok());
     const auto* h = reinterpret_cast<const pack::IndexHeader*>(aligned.data());
     auto* tri = const_cast<pack::ProxyTriangle*>(index.proxy_triangles().data());
+    auto* levels = const_cast<pack::ProxyPart*>(index.proxy_parts().data());
+    const uint16_t corner = tri[0].v[1];
     tri[0].v[1] = 60000;
     auto* mh = reinterpret_cast<pack::IndexHeader*>(aligned.data());
     mh->crc32 = pack::crc32(reinterpret_cast<const uint8_t*>(aligned.data()) + pack::kIndexCrcFrom, h->index_bytes - pack::kIndexCrcFrom);
     const Result r = index.open(aligned.data(), uint32_t(file.size()));
     EXPECT_EQ(r.status, Status::Corrupt);
     EXPECT_NE(std::string(r.where.kind ? r.where.kind : "").find("ProxyTriangles"), std::string::npos);
+    // A finer level that claims to stray farther than the coarser: refused, with its record.
+    tri[0].v[1] = corner;
+    levels[3].error_mm = levels[2].error_mm * 2 + 1;
+    mh->crc32 = pack::crc32(reinterpret_cast<const uint8_t*>(aligned.data()) + pack::kIndexCrcFrom, h->index_bytes - pack::kIndexCrcFrom);
+    const Result farther = index.open(aligned.data(), uint32_t(file.size()));
+    EXPECT_EQ(farther.status, Status::Corrupt);
+    EXPECT_NE(std::string(farther.what).find("farther"), std::string::npos) << farther.what;
+    EXPECT_EQ(farther.where.index, 3u);
 }

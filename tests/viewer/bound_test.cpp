@@ -16,8 +16,9 @@ using namespace facet::test;
 // Triangles bounded by the screen (issue 52): an assembly of several blocks holding more
 // triangles than one per DetailScale::kPixelsPerTriangle pixels of the view (at least
 // kLeastTriangleBound) takes its screen error coarser, block by block, until it holds fewer or
-// its error is DetailScale::kCrowdCoarsest times the view's; every part stays watertight, and
-// the same assembly with the bound out of reach (a larger screen) keeps its finer level.
+// its error is DetailScale::kCrowdMeshCoarsest times the view's (a pack without proxies);
+// every part stays watertight, and the same assembly with the bound out of reach (a larger
+// screen) keeps its finer level.
 TEST(Blocked, AnAssemblyHoldsTheTrianglesTheScreenBoundsItTo) {
     const Bytes shapes[] = {sphere(), torus(), sphere(), torus(), trimmed_bspline(), plate_with_holes()};
     std::vector<Pack> packs(6);
@@ -41,7 +42,7 @@ TEST(Blocked, AnAssemblyHoldsTheTrianglesTheScreenBoundsItTo) {
         if (w == 320) {
             EXPECT_EQ(bound, module::DetailScale::kLeastTriangleBound);
             EXPECT_GT(detail.crowd(), 1.0f) << "the bound was reached";
-            EXPECT_TRUE(held.back() <= bound || detail.crowd() == module::DetailScale::kCrowdCoarsest) << held.back() << " triangles";
+            EXPECT_TRUE(held.back() <= bound || detail.crowd() == module::DetailScale::kCrowdMeshCoarsest) << held.back() << " triangles";
         } else {
             EXPECT_EQ(bound, uint32_t(1280 * 960) / module::DetailScale::kPixelsPerTriangle);
             EXPECT_EQ(detail.crowd(), 1.0f) << "under the bound";

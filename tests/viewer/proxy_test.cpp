@@ -1,8 +1,11 @@
 // Parts' proxies on the screen (issue 52): a part whose block is left out of a model larger than
 // the memory is drawn as its proxy (a coarse mesh in the index), shaded in its colour, not as
-// its box; in wireframe, where no face is drawn, its box.
+// its box; in wireframe, where no face is drawn, its box. A view crowded past its triangles'
+// bound draws its parts as their proxies where they stray little enough on the screen, and
+// a part zoomed into is drawn as itself again.
 #include "../geom/shapes.h"
 #include "app.h"
+#include "detail.h"
 #include "pack_blocks.h"
 #include "proxies.h"
 
@@ -15,7 +18,8 @@ using namespace facet::test;
 
 namespace {
 
-constexpr Rgb565 kBoxColour = rgb565(96, 104, 128); // (painter.cpp)
+constexpr Rgb565 kBoxColour = rgb565(96, 104, 128);  // (painter.cpp)
+constexpr Rgb565 kEdgeColour = rgb565(28, 30, 38);   // (painter.cpp)
 
 // Twelve parts of every surface kind, a part a block, with or without their proxies.
 Bytes twelve(bool proxies) {
@@ -27,7 +31,8 @@ Bytes twelve(bool proxies) {
     EXPECT_TRUE(whole.open(combined.data(), uint32_t(combined.size())).ok());
     std::vector<Proxy> made;
     std::string error;
-    EXPECT_TRUE(make_proxies(whole, 64, made, error)) << error;
+    const uint32_t caps[] = {16, 64};
+    EXPECT_TRUE(make_proxies(whole, caps, made, error)) << error;
     Bytes file;
     EXPECT_TRUE(make_blocked(whole, {}, {1, BlockStore::Lzma, proxies ? &made : nullptr}, file, error)) << error;
     return file;
@@ -118,4 +123,60 @@ TEST(Proxies, PartsLeftOutAreDrawnAsTheirProxiesNotBoxes) {
     ASSERT_TRUE(with.v->set_display_mode(DisplayMode::HiddenLine).ok());
     with.run();
     EXPECT_EQ(look(with).box, 0u) << "hidden line: proxies as paper faces";
+}
+
+// A crowded view (more triangles than its bound: a small screen, the detail 8 times finer):
+// with proxies standing for the parts whose own meshes are larger, it comes within its bound
+// at a finer screen error than without; every part still shows about its centre, and no box;
+// a part then framed alone is drawn as itself (its block in, its faces tessellated, its edges
+// drawn: a proxy has none).
+TEST(Proxies, ACrowdedViewDrawsPartsAsProxiesAndAPartZoomedIntoAsItself) {
+    float crowd[2] = {};
+    for (const bool proxies : {false, true}) {
+        App app;
+        app.w = 320, app.h = 240, app.lines = app.h;
+        ASSERT_TRUE(app.create().ok());
+        ASSERT_TRUE(app.load(twelve(proxies)).ok());
+        app.run();
+        ASSERT_TRUE(app.v->set_detail(0.125f).ok());
+        app.run();
+        const Core& core = *static_cast<const Core*>(app.v);
+        EXPECT_GT(core.detail_level().crowd(), 1.0f) << "the bound was reached";
+        const Event* frame = app.last_full_frame();
+        ASSERT_NE(frame, nullptr);
+        EXPECT_LE(frame->frame.triangles + frame->frame.culled, core.detail_level().triangle_bound()) << "within the bound at rest";
+        crowd[proxies] = core.detail_level().crowd();
+        if (!proxies) continue;
+        EXPECT_EQ(look(app).box, 0u);
+        const module::Scene& scene = core.scene();
+        const std::vector<Rgb565> screen = app.screen();
+        for (uint32_t i = 0; i < scene.instances().size(); ++i) {
+            int32_t centre[3], radius;
+            ASSERT_TRUE(scene.part_sphere(scene.instances()[i].shell, centre, radius));
+            module::Projected p;
+            core.camera().transform(scene, i, app.w, app.h).project(centre, p);
+            const int32_t x = render::subpixel::pixel_of(p.s.x), y = render::subpixel::pixel_of(p.s.y);
+            uint32_t covered = 0;
+            for (int32_t dy = -3; dy <= 3; ++dy)
+                for (int32_t dx = -3; dx <= 3; ++dx) {
+                    const int32_t px = x + dx, py = y + dy;
+                    if (px < 0 || py < 0 || px >= app.w || py >= app.h) continue;
+                    const size_t at = size_t(py) * app.w + px;
+                    covered += screen[at] != screen[at - at % app.w];
+                }
+            EXPECT_GT(covered, 4u) << "instance " << i << " shows at (" << x << ", " << y << ")";
+        }
+        // One part framed: the part is itself, edges and all.
+        const uint32_t part = 7; // (a trimmed B-spline sheet: its boundary drawn as edges)
+        ASSERT_TRUE(app.v->fit_part(part).ok());
+        app.run();
+        EXPECT_FALSE(scene.part_left_out(part));
+        const module::Part sh = scene.part(part);
+        ASSERT_GT(sh.face_count, 0u);
+        EXPECT_EQ(scene.face(sh.first_face).state, module::FaceState::Done);
+        size_t edges = 0;
+        for (const Rgb565 c : app.screen()) edges += c == kEdgeColour;
+        EXPECT_GT(edges, size_t(app.w)) << "its edges drawn";
+    }
+    EXPECT_LT(crowd[1], crowd[0]) << "with proxies, the view is within its bound at a finer screen error";
 }

@@ -73,7 +73,7 @@ using namespace facet;
 namespace {
 
 constexpr size_t kLzmaUpTo = 1u << 20; // decoded bytes a pack is LZMA-compressed up to (above: DEFLATE)
-constexpr uint32_t kProxyTriangles = 96; // the most a part's proxy has (geom/host/proxies.h)
+constexpr uint32_t kProxyLevels[] = {48, 192, 768}; // the most triangles a part's proxy has at each level (geom/host/proxies.h)
 
 int usage() {
     std::fprintf(stderr, "usage: facet-pack MODEL.step -o MODEL.fpk [--plain|--deflate|--lzma] [--whole] [--unit mm|cm|m|in|ft] [--partial] [--reference FACES.json] [--quiet]\n"
@@ -327,7 +327,7 @@ int run(int argc, char** argv) {
         // Each part's proxy in the index: drawn where the view shows it small (geom/host/proxies.h).
         if (!quiet) packer::progress("making the parts' proxies");
         std::vector<geom::Proxy> proxies;
-        if (!geom::make_proxies(opened, kProxyTriangles, proxies, error)) return die(error);
+        if (!geom::make_proxies(opened, kProxyLevels, proxies, error)) return die(error);
         options.proxies = &proxies;
         if (!geom::make_blocked(opened, packer::part_boxes(packer.prototypes), options, bytes, error)) return die(error);
         geom::PackIndex index;

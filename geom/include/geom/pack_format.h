@@ -412,8 +412,11 @@ struct Part {
 };
 static_assert(sizeof(Part) == 40);
 
-// A part's proxy: its corners and triangles in the pools, how far it may stray from the part's
-// surface (mm), and its colour.
+// A part's proxy at one level: its corners and triangles in the pools, how far it may stray from
+// the part's surface (mm), and its colour. ProxyParts holds a whole number of levels per part
+// (1 to kMostProxyLevels): part p's level l at p x levels + l, the coarsest first, each as far
+// as the next finer or farther. Levels alike may share their corners and triangles.
+constexpr uint32_t kMostProxyLevels = 4;
 struct ProxyPart {
     uint32_t first_vertex, vertex_count;     // ProxyVertices [first, first + count), at most 65,535
     uint32_t first_triangle, triangle_count; // ProxyTriangles

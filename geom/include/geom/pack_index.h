@@ -33,8 +33,11 @@ public:
     std::span<const pack::Block> blocks() const { return blocks_; }
     std::span<const pack::Part> parts() const { return parts_; }
     std::span<const pack::Instance> instances() const { return instances_; }
-    // Each part's proxy (pack_format.h: ProxyParts): empty when the index has none.
+    // Each part's proxies (pack_format.h: ProxyParts), proxy_levels() of them: empty when the
+    // index has none.
     std::span<const pack::ProxyPart> proxy_parts() const { return proxy_parts_; }
+    uint32_t proxy_levels() const { return parts_.empty() ? 0 : uint32_t(proxy_parts_.size() / parts_.size()); }
+    const pack::ProxyPart& proxy(uint32_t part, uint32_t level) const { return proxy_parts_[part * proxy_levels() + level]; }
     std::span<const pack::ProxyVertex> proxy_vertices() const { return proxy_vertices_; }
     std::span<const pack::ProxyTriangle> proxy_triangles() const { return proxy_triangles_; }
     // What the whole model takes on a device (pack::Needs); null when the index says nothing.
