@@ -99,6 +99,11 @@ bool make_proxies(const Pack& pack, std::span<const uint32_t> caps, std::vector<
             level = simplified(level, caps[l]);
             out[s * levels + l] = proxy_of(level, whole, opt.tolerance, colour);
         }
+        // A finer level with more than half the part's own triangles (at the proxies'
+        // tolerance) spares a frame little: it is the next coarser one again (shared in the
+        // index), and the part itself is drawn where that is too coarse.
+        for (size_t l = 1; l < levels; ++l)
+            if (2 * out[s * levels + l].triangles.size() > whole.triangles.size()) out[s * levels + l] = out[s * levels + l - 1];
     }
     return true;
 }

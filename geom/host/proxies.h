@@ -25,7 +25,8 @@ struct Proxy {
 
 // The proxies of every shell of `pack` at each level: shell s's level l at s x levels + l, the
 // level at most caps[l] triangles (caps ascending: the coarsest first, as ProxyParts orders
-// them; at most pack::kMostProxyLevels). False (with the reason) when the pack's edges cannot
+// them; at most pack::kMostProxyLevels); a finer level with more than half the triangles of
+// the part's tessellation is the coarser one again. False (with the reason) when the pack's edges cannot
 // be sampled; a shell whose faces give no triangle has empty proxies (drawn as its box).
 bool make_proxies(const Pack& pack, std::span<const uint32_t> caps, std::vector<Proxy>& out, std::string& error);
 

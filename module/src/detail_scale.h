@@ -25,7 +25,7 @@ struct DetailScale {
     // tessellations; under a quarter of the bound, kStep finer again. (640x480: 19,200
     // triangles; 480x272: 8,192.) A part left out, on its way in, stands as a proxy within
     // kCrowdCoarsest times the screen error.
-    static constexpr uint32_t kPixelsPerTriangle = 16, kLeastTriangleBound = 8192;
+    static constexpr uint32_t kPixelsPerTriangle = 16, kLeastTriangleBound = pack::kLeastTriangleBound;
     static constexpr float kCrowdCoarsest = 16.0f, kCrowdMeshCoarsest = 4.0f;
 };
 

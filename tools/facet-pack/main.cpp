@@ -324,11 +324,18 @@ int run(int argc, char** argv) {
         }
         geom::BlockOptions options;
         options.store = plain ? geom::BlockStore::Plain : deflated ? geom::BlockStore::Deflated : geom::BlockStore::Lzma;
-        // Each part's proxy in the index: drawn where the view shows it small (geom/host/proxies.h).
-        if (!quiet) packer::progress("making the parts' proxies");
+        // Each part's proxies in the index, drawn where the view shows it small
+        // (geom/host/proxies.h), where they may pay their bytes: a model whose mesh at the
+        // default level, every instance's (the parts' mean), passes the fewest triangles a
+        // screen bounds a view to, so a view of it can be crowded.
         std::vector<geom::Proxy> proxies;
-        if (!geom::make_proxies(opened, kProxyLevels, proxies, error)) return die(error);
-        options.proxies = &proxies;
+        const pack::Needs* needs = opened.needs();
+        const size_t parts = std::max<size_t>(opened.shells().size(), 1);
+        if (!needs || uint64_t(needs->mesh_triangles) * opened.instances().size() / parts > pack::kLeastTriangleBound) {
+            if (!quiet) packer::progress("making the parts' proxies");
+            if (!geom::make_proxies(opened, kProxyLevels, proxies, error)) return die(error);
+            options.proxies = &proxies;
+        }
         if (!geom::make_blocked(opened, packer::part_boxes(packer.prototypes), options, bytes, error)) return die(error);
         geom::PackIndex index;
         if (const Result r = index.open(bytes.data(), uint32_t(bytes.size())); !r.ok()) {

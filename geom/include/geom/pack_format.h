@@ -87,6 +87,10 @@ struct Needs {
 };
 static_assert(sizeof(Needs) == 24, "pack::Needs is 6 words");
 constexpr float kCoarsestFirst = 16.0f;
+// The fewest triangles a viewer bounds a view to however small its screen (module's
+// DetailScale): a model whose mesh, every instance's, passes it can be crowded, and facet-pack
+// gives its parts proxies.
+constexpr uint32_t kLeastTriangleBound = 8192;
 // Why a Needs record cannot be what a packer measured (null: it can): a count past 2^31.
 inline const char* needs_problem(const Needs& n) {
     for (uint32_t c : {n.samples, n.mesh_vertices, n.mesh_triangles, n.coarse_samples, n.coarse_vertices, n.coarse_triangles})
