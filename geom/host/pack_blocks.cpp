@@ -282,9 +282,19 @@ bool make_blocked(const Pack& whole, const std::vector<PartBox>& given, const Bl
                     }
                     corners.push_back(q);
                 }
+                // Each side's other triangle: the one with the same side the other way (the first
+                // found, where a collapse left three on one side).
+                std::map<std::pair<uint32_t, uint32_t>, uint32_t> side_of;
+                for (uint32_t t = 0; t < r.triangle_count; ++t)
+                    for (int k = 0; k < 3; ++k) side_of.try_emplace({x.triangles[3 * t + k], x.triangles[3 * t + (k + 1) % 3]}, t);
                 for (uint32_t t = 0; t < r.triangle_count; ++t) {
                     pack::ProxyTriangle tri{};
                     for (int k = 0; k < 3; ++k) tri.v[k] = uint16_t(x.triangles[3 * t + k]);
+                    for (int k = 0; k < 3; ++k) {
+                        const auto other = side_of.find({x.triangles[3 * t + (k + 1) % 3], x.triangles[3 * t + k]});
+                        tri.across[k] = other != side_of.end() && other->second < pack::kNoProxyNeighbour ? uint16_t(other->second)
+                                                                                                           : pack::kNoProxyNeighbour;
+                    }
                     const float n[3] = {x.normals[t].x, x.normals[t].y, x.normals[t].z};
                     for (int k = 0; k < 3; ++k) tri.n[k] = int8_t(std::lround(std::clamp(n[k], -1.0f, 1.0f) * 127.0f));
                     triangles.push_back(tri);

@@ -137,8 +137,8 @@ Result PackIndex::open(const void* data, uint32_t size, uint32_t file_bytes) {
 }
 
 // The proxies, when there are: 1 to kMostProxyLevels records per part, each inside the pools,
-// each level as far as the next finer or farther, every triangle's corners its part's,
-// normals of about unit length.
+// each level as far as the next finer or farther, every triangle's corners its part's and
+// neighbours its level's, normals of about unit length.
 Result PackIndex::check_proxies() {
     constexpr uint32_t P = uint32_t(IndexSectionId::ProxyParts), T = uint32_t(IndexSectionId::ProxyTriangles);
     if (proxy_parts_.empty() && proxy_vertices_.empty() && proxy_triangles_.empty()) return {};
@@ -158,6 +158,9 @@ Result PackIndex::check_proxies() {
             const pack::ProxyTriangle& tri = proxy_triangles_[t];
             if (tri.v[0] >= x.vertex_count || tri.v[1] >= x.vertex_count || tri.v[2] >= x.vertex_count || tri.reserved) {
                 return fail("a proxy triangle's corner is not its part's (or reserved is not 0)", T, t);
+            }
+            for (const uint16_t a : tri.across) {
+                if (a != pack::kNoProxyNeighbour && a >= x.triangle_count) return fail("a proxy triangle's neighbour is not its level's", T, t);
             }
             const int32_t n2 = tri.n[0] * tri.n[0] + tri.n[1] * tri.n[1] + tri.n[2] * tri.n[2];
             if (n2 < 90 * 90 || n2 > 140 * 140) return fail("a proxy triangle's normal is not of unit length", T, t);

@@ -8,8 +8,6 @@
 namespace facet::module {
 namespace {
 
-constexpr uint16_t kLineBias = 384; // depth units edges are pulled toward the eye
-constexpr Rgb565 kEdgeColour = rgb565(28, 30, 38);
 constexpr Rgb565 kBoxColour = rgb565(96, 104, 128); // a part's box before its edges are in
 constexpr uint32_t kNoColour = 0xFF000000u; // no palette in the slot (colours are 24-bit)
 constexpr uint32_t kPicked = 0x00C830FFu;   // the picked face (B, G, R bytes: magenta, rare in CAD colours)

@@ -15,6 +15,8 @@
 namespace facet::module {
 
 constexpr uint32_t kPaper = 0x00FFFFFFu; // hidden-line faces (and proxies): white
+constexpr uint16_t kLineBias = 384;       // depth units edges are pulled toward the eye
+constexpr Rgb565 kEdgeColour = rgb565(28, 30, 38);
 
 // The smallest face worth its triangles: one under this many pixels across (its sphere's
 // diameter) wherever the view shows it is left untessellated, drawn by its edges or as a speck
@@ -123,6 +125,9 @@ public:
     uint32_t proxy_level(uint32_t part, const int32_t sphere_centre[3], int32_t radius, const Transform& t, ProxyNeed need);
     uint32_t part_proxy(uint32_t part, const Transform& t, uint32_t level);
     uint32_t own_triangles(uint32_t part) const; // its faces' now
+    void project_proxy(uint32_t part, const pack::ProxyPart& x, const Transform& t);
+    // Hidden line: the proxy's outline and creases, over the faces (painter_proxy.cpp); the work.
+    uint32_t proxy_outline(uint32_t part, const Transform& t, uint32_t level);
     // The screen error a proxy may have (pixels): the view's (its screen error times its
     // crowd), and one that stands for a part left out (coarser) until it comes in.
     void set_proxy_error(float pixels, float left_out_pixels) {

@@ -57,11 +57,11 @@ uint32_t Painter::own_triangles(uint32_t part) const {
     return n;
 }
 
-uint32_t Painter::part_proxy(uint32_t part, const Transform& t, uint32_t level) {
+// The level's corners projected into mem_.projected (the cut's side marked), over the part's
+// box: corner q (0-65535) in the mesh's units is base + q x step / 2^16.
+void Painter::project_proxy(uint32_t part, const pack::ProxyPart& x, const Transform& t) {
     const geom::PackIndex& index = scene_.index();
-    const pack::ProxyPart& x = index.proxy(part, level);
     const pack::Part& p = index.parts()[part];
-    // A corner q (0-65535 over the part's box) in the mesh's units: base + q x step / 2^16.
     int32_t base[3], step[3];
     const float inv = 1.0f / scene_.unit();
     for (int k = 0; k < 3; ++k) {
@@ -76,6 +76,13 @@ uint32_t Painter::part_proxy(uint32_t part, const Transform& t, uint32_t level) 
         t.project(q, P[v]);
         if (t.cut.on && t.cut.side(P[v].x, P[v].y, P[v].d) > 0) P[v].out |= kOutCut;
     }
+}
+
+uint32_t Painter::part_proxy(uint32_t part, const Transform& t, uint32_t level) {
+    const geom::PackIndex& index = scene_.index();
+    const pack::ProxyPart& x = index.proxy(part, level);
+    project_proxy(part, x, t);
+    const Projected* P = mem_.projected.data();
     const bool white = mode_ == DisplayMode::HiddenLine;
     const pack::Colour c = x.colour;
     const render::Palette& pal = palette(white ? kPaper : c.a ? uint32_t(c.r) | uint32_t(c.g) << 8 | uint32_t(c.b) << 16 : kDefaultRgb);
@@ -101,6 +108,49 @@ uint32_t Painter::part_proxy(uint32_t part, const Transform& t, uint32_t level) 
         else triangle(t, a, b, cc, pal, cull, nullptr);
     }
     return 1 + x.vertex_count / 4 + x.triangle_count + (raster_.stats.pixels - pixels) / 64;
+}
+
+// Hidden line: a proxy's outline (sides between a triangle that shows and one that does not, or
+// at a rim) and its creases (sides whose triangles' normals part by more than about 35
+// degrees), depth-tested over the faces as a part's edges are. A closed part's triangles turned
+// away do not show; an open one's show both sides. A level of more than kOutlineTriangles
+// triangles (none the packer makes) draws none.
+uint32_t Painter::proxy_outline(uint32_t part, const Transform& t, uint32_t level) {
+    constexpr uint32_t kOutlineTriangles = 2048;
+    constexpr int32_t kCrease = 13200; // cos 35 degrees x 127^2
+    const geom::PackIndex& index = scene_.index();
+    const pack::ProxyPart& x = index.proxy(part, level);
+    if (mode_ != DisplayMode::HiddenLine || x.triangle_count > kOutlineTriangles) return 1;
+    project_proxy(part, x, t);
+    const Projected* P = mem_.projected.data();
+    const pack::ProxyTriangle* tri = index.proxy_triangles().data() + x.first_triangle;
+    uint32_t shows[kOutlineTriangles / 32] = {}, front[kOutlineTriangles / 32] = {};
+    for (uint32_t k = 0; k < x.triangle_count; ++k) {
+        const Projected &a = P[tri[k].v[0]], &b = P[tri[k].v[1]], &c = P[tri[k].v[2]];
+        if (a.out | b.out | c.out) continue; // (near the eye, past the band or cut away: no line of it)
+        const int64_t area2 = int64_t(b.s.x - a.s.x) * (c.s.y - a.s.y) - int64_t(b.s.y - a.s.y) * (c.s.x - a.s.x);
+        const bool faces_eye = t.mirrored ? area2 > 0 : area2 < 0; // (counter-clockwise on the screen, y down)
+        if (faces_eye) front[k / 32] |= 1u << (k % 32);
+        if (faces_eye || !t.closed) shows[k / 32] |= 1u << (k % 32);
+    }
+    auto bit = [](const uint32_t* bits, uint32_t k) { return (bits[k / 32] >> (k % 32)) & 1u; };
+    uint32_t lines = 0;
+    for (uint32_t k = 0; k < x.triangle_count; ++k) {
+        if (!bit(shows, k)) continue;
+        for (int side = 0; side < 3; ++side) {
+            const uint16_t n = tri[k].across[side];
+            bool draw = n == pack::kNoProxyNeighbour || !bit(shows, n);
+            if (!draw && k < n) {
+                const int32_t dot = tri[k].n[0] * tri[n].n[0] + tri[k].n[1] * tri[n].n[1] + tri[k].n[2] * tri[n].n[2];
+                draw = bit(front, k) != bit(front, n) || dot < kCrease;
+            }
+            if (!draw) continue;
+            const Projected &a = P[tri[k].v[side]], &b = P[tri[k].v[(side + 1) % 3]];
+            refused_ += !ok(raster_.line(a.s, b.s, kEdgeColour, kLineBias));
+            ++lines;
+        }
+    }
+    return 1 + x.vertex_count / 4 + x.triangle_count / 4 + lines;
 }
 
 } // namespace facet::module

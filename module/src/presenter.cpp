@@ -215,6 +215,7 @@ bool Presenter::full_pieces(uint32_t units) {
             // box with the edges)
             const bool proxy = job_.level != kNone;
             if (faces && proxy) spent += painter_.part_proxy(shell, t, job_.level);
+            if (!faces && proxy) spent += painter_.proxy_outline(shell, t, job_.level);
             if (!faces && !proxy) spent += painter_.part_box(shell, t);
             ++job_.instance;
             job_.have_transform = false;

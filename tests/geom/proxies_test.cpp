@@ -108,6 +108,21 @@ TEST(Proxies, TheIndexCarriesThemAndRefusesBadOnes) {
             EXPECT_EQ(x.vertex_count, proxies[2 * s + l].points.size());
             EXPECT_LE(x.triangle_count, caps[l]);
         }
+        // Each side's neighbour has the side the other way round.
+        for (uint32_t l = 0; l < 2; ++l) {
+            const pack::ProxyPart& x = index.proxy(s, l);
+            const pack::ProxyTriangle* t = index.proxy_triangles().data() + x.first_triangle;
+            for (uint32_t k = 0; k < x.triangle_count; ++k)
+                for (int side = 0; side < 3; ++side) {
+                    const uint16_t n = t[k].across[side];
+                    if (n == pack::kNoProxyNeighbour) continue;
+                    ASSERT_LT(n, x.triangle_count);
+                    const uint16_t a = t[k].v[side], b = t[k].v[(side + 1) % 3];
+                    bool back = false;
+                    for (int j = 0; j < 3; ++j) back = back || (t[n].v[j] == b && t[n].v[(j + 1) % 3] == a);
+                    EXPECT_TRUE(back) << "part " << s << " level " << l << " triangle " << k << " side " << side;
+                }
+        }
         // The coarser level as far as the finer, or farther; fewer triangles.
         EXPECT_GE(index.proxy(s, 0).error_mm, index.proxy(s, 1).error_mm);
         EXPECT_LE(index.proxy(s, 0).triangle_count, index.proxy(s, 1).triangle_count);
@@ -131,8 +146,16 @@ TEST(Proxies, TheIndexCarriesThemAndRefusesBadOnes) {
     const Result r = index.open(aligned.data(), uint32_t(file.size()));
     EXPECT_EQ(r.status, Status::Corrupt);
     EXPECT_NE(std::string(r.where.kind ? r.where.kind : "").find("ProxyTriangles"), std::string::npos);
-    // A finer level that claims to stray farther than the coarser: refused, with its record.
+    // A neighbour past its level's triangles: refused.
     tri[0].v[1] = corner;
+    const uint16_t across = tri[0].across[0];
+    tri[0].across[0] = pack::kNoProxyNeighbour - 1; // (no level has so many)
+    mh->crc32 = pack::crc32(reinterpret_cast<const uint8_t*>(aligned.data()) + pack::kIndexCrcFrom, h->index_bytes - pack::kIndexCrcFrom);
+    const Result stranger = index.open(aligned.data(), uint32_t(file.size()));
+    EXPECT_EQ(stranger.status, Status::Corrupt);
+    EXPECT_NE(std::string(stranger.what).find("neighbour"), std::string::npos) << stranger.what;
+    tri[0].across[0] = across;
+    // A finer level that claims to stray farther than the coarser: refused, with its record.
     levels[3].error_mm = levels[2].error_mm * 2 + 1;
     mh->crc32 = pack::crc32(reinterpret_cast<const uint8_t*>(aligned.data()) + pack::kIndexCrcFrom, h->index_bytes - pack::kIndexCrcFrom);
     const Result farther = index.open(aligned.data(), uint32_t(file.size()));

@@ -123,6 +123,24 @@ TEST(Proxies, PartsLeftOutAreDrawnAsTheirProxiesNotBoxes) {
     ASSERT_TRUE(with.v->set_display_mode(DisplayMode::HiddenLine).ok());
     with.run();
     EXPECT_EQ(look(with).box, 0u) << "hidden line: proxies as paper faces";
+    // ... outlined: lines about each part left out.
+    const std::vector<Rgb565> lined = with.screen();
+    for (uint32_t i = 0; i < scene.instances().size(); ++i) {
+        const uint32_t part = scene.instances()[i].shell;
+        if (!scene.part_left_out(part)) continue;
+        int32_t centre[3], radius;
+        ASSERT_TRUE(scene.part_sphere(part, centre, radius));
+        module::Projected p;
+        core.camera().transform(scene, i, with.w, with.h).project(centre, p);
+        const int32_t x = render::subpixel::pixel_of(p.s.x), y = render::subpixel::pixel_of(p.s.y);
+        uint32_t lines = 0;
+        for (int32_t dy = -12; dy <= 12; ++dy)
+            for (int32_t dx = -12; dx <= 12; ++dx) {
+                const int32_t px = x + dx, py = y + dy;
+                if (px >= 0 && py >= 0 && px < with.w && py < with.h) lines += lined[size_t(py) * with.w + px] == kEdgeColour;
+            }
+        EXPECT_GT(lines, 4u) << "part " << part << " left out, outlined in hidden line";
+    }
 }
 
 // A crowded view (more triangles than its bound: a small screen, the detail 8 times finer):

@@ -433,13 +433,17 @@ struct ProxyVertex {
     uint16_t q[3];
 };
 static_assert(sizeof(ProxyVertex) == 6);
-// Three corners (the part's own numbers), wound as its faces, and the unit normal x 127.
+// Three corners (the part's own numbers), wound as its faces, the unit normal x 127, and the
+// triangle across each side (side k from v[k] to v[k + 1]; its level's own numbers;
+// kNoProxyNeighbour at a rim): a hidden-line view draws a proxy's outline and creases by them.
+constexpr uint16_t kNoProxyNeighbour = 0xFFFF;
 struct ProxyTriangle {
     uint16_t v[3];
     int8_t n[3];
     uint8_t reserved; // 0
+    uint16_t across[3];
 };
-static_assert(sizeof(ProxyTriangle) == 10);
+static_assert(sizeof(ProxyTriangle) == 16);
 
 // A library: several model files (any of the kinds above) in one, as a device's flash holds
 // them: a LibraryHeader, LibraryEntry[count], then each file at its offset, 8-byte aligned, so
