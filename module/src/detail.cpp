@@ -91,36 +91,47 @@ uint32_t Detail::triangle_bound() const {
 }
 
 // A blocked model's triangles bounded by the screen (issue 52): past the bound (the triangles a
-// frame of the view takes, each instance's: what its cost follows), every block's
-// screen error is taken kStep times coarser (refine() then makes again the blocks now twice
-// finer than the view asks, largest gap first, and more parts are drawn as their proxies);
-// under a quarter of it (half, where the parts have proxies: they cost little to change),
-// kStep finer again, though never to a crowd this view was over the bound at. Where the parts have no proxies, the triangles
-// held count when they are more (a block brought in since that frame); where they have, what
-// is held is not what is drawn.
-bool Detail::bound_triangles(uint32_t in_view) {
+// frame of the view takes, each instance's: what its cost follows), or where that frame took
+// longer than `frame_budget_us` (a frame at rest's), every block's screen error is taken kStep
+// times coarser (refine() then makes again the blocks now twice finer than the view asks,
+// largest gap first, and more parts are drawn as their proxies); under a quarter of the bound
+// (half, and half the time, where the parts have proxies: they cost little to change), kStep
+// finer again, though never to a crowd this view was over at. Where the parts have no
+// proxies, the triangles held count when they are more (a block brought in since that
+// frame); where they have, what is held is not what is drawn.
+bool Detail::bound_triangles(uint32_t in_view, uint32_t frame_us, uint32_t frame_budget_us) {
     if (!scene_.blocked() || scene_.block_count() < 2) return false; // (a part alone keeps the detail it was given)
     const bool proxies = scene_.index().proxy_levels() > 0;
     const uint32_t held = proxies ? in_view : std::max(in_view, scene_.totals().triangles), bound = triangle_bound();
-    if (proxies && !judged_crowd_) {
-        // The first look: the frames so far drew the parts left out at their coarsest, so a
-        // view where two triangles a face, every instance's, pass the bound starts as crowded
-        // as it can be (its parts as proxies, no block brought in for them), and is made finer
-        // as its frames show room.
-        uint64_t least = 0;
-        for (const auto& i : scene_.instances()) least += 2 * uint64_t(scene_.index().parts()[i.shell].face_count); // (left out or not)
-        if (least > bound) crowd_ = Scale::kCrowdCoarsest, check_ = true;
-    } else if (held != judged_held_) { // (once a frame: the next one shows what this step did)
-        if (held > bound && crowd_ < (proxies ? Scale::kCrowdCoarsest : Scale::kCrowdMeshCoarsest)) {
+    const bool slow = frame_budget_us && frame_us > frame_budget_us, quick = !frame_budget_us || frame_us < frame_budget_us / 2;
+    if (!judged_crowd_) {
+        look_first();
+    } else if (held != judged_held_ || frame_us != judged_us_) { // (once a frame: the next one shows what this step did)
+        if ((held > bound || slow) && crowd_ < (proxies ? Scale::kCrowdCoarsest : Scale::kCrowdMeshCoarsest)) {
             over_crowd_ = std::max(over_crowd_, crowd_);
             crowd_ *= Scale::kStep, check_ = true;
-        } else if (held < bound / (proxies ? 2 : 4) && crowd_ > 1 && crowd_ / Scale::kStep > over_crowd_) {
-            crowd_ /= Scale::kStep, check_ = true; // (never back to a crowd this view was over the bound at)
+        } else if (held < bound / (proxies ? 2 : 4) && (!proxies || quick) && crowd_ > 1 && crowd_ / Scale::kStep > over_crowd_) {
+            crowd_ /= Scale::kStep, check_ = true; // (never back to a crowd this view was over at)
         }
     }
-    judged_crowd_ = true, judged_held_ = held;
-    crowded_ = held > bound;
+    judged_held_ = held, judged_us_ = frame_us;
+    crowded_ = held > bound || slow;
     return crowded_;
+}
+
+// The first look, before any frame has counted the view's triangles (the first frames draw the
+// parts at their coarsest proxies, which say nothing of it): a view of a model with proxies
+// where two triangles a face, every instance's, pass the bound starts as crowded as it can be
+// (its parts as proxies, no block brought in for them), and is made finer as its frames show
+// room.
+void Detail::look_first() {
+    if (judged_crowd_) return;
+    judged_crowd_ = true;
+    if (!scene_.blocked() || scene_.block_count() < 2 || scene_.index().proxy_levels() == 0) return;
+    (void)judge_.update();
+    uint64_t least = 0;
+    for (const auto& i : scene_.instances()) least += 2 * uint64_t(scene_.index().parts()[i.shell].face_count); // (left out or not)
+    if (least > triangle_bound()) crowd_ = Scale::kCrowdCoarsest, check_ = true;
 }
 
 // Work in screen order: a pass or a sweep takes the blocks largest on the screen first (their

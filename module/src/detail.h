@@ -23,7 +23,7 @@ public:
     // A new model, whose default tolerance is `mm` (geom::default_tolerance): judged afresh.
     void reset(float mm) {
         default_tolerance_ = mm;
-        crowd_ = 1, crowded_ = false, judged_crowd_ = false, judged_held_ = 0, over_crowd_ = 0;
+        crowd_ = 1, crowded_ = false, judged_crowd_ = false, judged_held_ = 0, judged_us_ = 0, over_crowd_ = 0;
         judge_.reset();
     }
     float default_tolerance() const { return default_tolerance_; }
@@ -60,9 +60,13 @@ public:
     uint32_t triangle_bound() const;
     // crowd() set from the triangles in view (every instance's, as the last whole frame took
     // them: `in_view`), or those held if more (blocks come in between whole frames), against
-    // triangle_bound(): true while they are over it (the blocks are then made coarser before
-    // any other comes in).
-    bool bound_triangles(uint32_t in_view);
+    // triangle_bound(), and from that frame's time (`frame_us`) against `frame_budget_us`
+    // (0: none): true while either is over (the blocks are then made coarser before any other
+    // comes in).
+    bool bound_triangles(uint32_t in_view, uint32_t frame_us = 0, uint32_t frame_budget_us = 0);
+    // Before the first frame: a model whose faces pass the bound at two triangles each starts
+    // crowded (once a model; bound_triangles() does it too).
+    void look_first();
 
 private:
     uint32_t sort_blocks(uint32_t& head, uint32_t count);
@@ -75,7 +79,7 @@ private:
     float crowd_ = 1;    // crowd(): the screen error times this
     bool crowded_ = false; // over the bound when last looked: blocks are only made coarser
     bool judged_crowd_ = false; // bound_triangles() has looked since reset()
-    uint32_t judged_held_ = 0;  // at the triangles it last looked at
+    uint32_t judged_held_ = 0, judged_us_ = 0; // at the triangles and the frame's time it last looked at
     float over_crowd_ = 0;      // the largest crowd this view was over the bound at (0: none)
 };
 

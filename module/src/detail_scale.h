@@ -27,6 +27,10 @@ struct DetailScale {
     // kCrowdCoarsest times the screen error.
     static constexpr uint32_t kPixelsPerTriangle = 16, kLeastTriangleBound = pack::kLeastTriangleBound;
     static constexpr float kCrowdCoarsest = 16.0f, kCrowdMeshCoarsest = 4.0f;
+    // A view whose whole frame takes longer than a frame at rest may (Config::frame_budget_us,
+    // else this: 20 M instructions at 600 MHz, tools/budget_rules.py's) is crowded too; one
+    // under half of it has room.
+    static constexpr uint32_t kRestFrameUs = 33333;
 };
 
 } // namespace facet::module

@@ -124,7 +124,7 @@ public:
     enum class ProxyNeed : uint8_t { Optional, Must, Coarsest };
     uint32_t proxy_level(uint32_t part, const int32_t sphere_centre[3], int32_t radius, const Transform& t, ProxyNeed need);
     uint32_t part_proxy(uint32_t part, const Transform& t, uint32_t level);
-    uint32_t own_triangles(uint32_t part) const; // its faces' now
+    uint32_t own_triangles(uint32_t part) const; // its faces' now, or two a face if more
     void project_proxy(uint32_t part, const pack::ProxyPart& x, const Transform& t);
     // Hidden line: the proxy's outline and creases, over the faces (painter_proxy.cpp); the work.
     uint32_t proxy_outline(uint32_t part, const Transform& t, uint32_t level);

@@ -3,6 +3,7 @@
 // (geom/host/proxies.h), placed by the instance's transform, flat-shaded in its colour.
 #include "painter.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace facet::module {
@@ -49,12 +50,13 @@ uint32_t Painter::proxy_level(uint32_t part, const int32_t sphere_centre[3], int
     return !must ? kNone : left_out != kNone ? left_out : finest;
 }
 
-// The triangles the part's own faces have now (a proxy stands for it only with fewer).
+// The triangles the part's own faces have now, or two a face if more (what it will have: a
+// proxy stands for it only with fewer).
 uint32_t Painter::own_triangles(uint32_t part) const {
     const Part sh = scene_.part(part);
     uint32_t n = 0;
     for (uint32_t f = sh.first_face; f < sh.first_face + sh.face_count; ++f) n += scene_.face(f).triangle_count;
-    return n;
+    return std::max(n, 2 * sh.face_count);
 }
 
 // The level's corners projected into mem_.projected (the cut's side marked), over the part's

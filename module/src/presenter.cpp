@@ -37,7 +37,7 @@ void Presenter::reset() {
     ++faces_version_, layer_.version = 0, layer_.applied = 0;
     shown_version_ = shown_finished_ = 0;
     job_ = {};
-    in_view_ = 0;
+    in_view_ = 0, in_view_us_ = 0;
     ++kept_stamp_; // (another model: none kept)
 }
 
@@ -319,7 +319,9 @@ void Presenter::flush(uint32_t pass) {
     const render::RasterStats& s = raster_.stats;
     const uint32_t cost = job_.cost_us + (clock_() - piece_start_);
     if (job_.full) last_frame_us_ = cost;
-    if (job_.full && job_.all_faces && !job_.boxes && bands_ == 1) in_view_ = s.triangles + s.culled; // (not a frame of boxes: of the layout alone)
+    if (job_.full && job_.all_faces && !job_.boxes && bands_ == 1) { // (not a frame of boxes: of the layout alone)
+        in_view_ = s.triangles + s.culled, in_view_us_ = cost;
+    }
     const uint32_t total = scene_.totals().faces, finished = job_.finished < total ? job_.finished : total;
     e.frame = {s.triangles, s.culled, s.pixels, cost, job_.pieces, finished, total, pass, job_.full, job_.boxes};
     emit_(e);

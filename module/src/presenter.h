@@ -86,6 +86,7 @@ public:
     // culled), every instance's: what a frame of this view costs (0: none yet; with partial
     // rendering, a band's alone is not the view's, and none is counted).
     uint32_t triangles_in_view() const { return in_view_; }
+    uint32_t in_view_us() const { return in_view_us_; } // the time of the frame that counted them
 
     // Any context (a DMA interrupt, another thread): one store. At most one flush is in flight
     // (a frame's flush begins once the last is done), so calls for it are one event however
@@ -223,7 +224,7 @@ private:
     uint32_t piece_start_ = 0;  // the clock when the current piece began
     uint32_t budget_us_ = 0;    // Config::frame_budget_us
     Job job_;
-    static constexpr uint32_t kKeptTransforms = 256;
+    static constexpr uint32_t kKeptTransforms = 1024;
     struct KeptFor { // what every kept transform was made for
         View view;
         Section section;
@@ -239,7 +240,7 @@ private:
     Overlay overlay_;
     float tolerance_mm_ = 0;
     uint32_t last_frame_us_ = 0; // the last whole frame's cost
-    uint32_t in_view_ = 0;       // triangles_in_view()
+    uint32_t in_view_ = 0, in_view_us_ = 0; // triangles_in_view(), in_view_us()
 };
 
 } // namespace facet::module
