@@ -224,7 +224,7 @@ private:
     uint32_t piece_start_ = 0;  // the clock when the current piece began
     uint32_t budget_us_ = 0;    // Config::frame_budget_us
     Job job_;
-    static constexpr uint32_t kKeptTransforms = 1024;
+    static constexpr uint32_t kKeptTransforms = 256;
     struct KeptFor { // what every kept transform was made for
         View view;
         Section section;
