@@ -80,6 +80,28 @@ Look look(const App& app) {
     return l;
 }
 
+// The pixels within `reach` of instance i's part's centre on the screen that `counts` (the
+// pixel, and its row's background: its left end).
+template <typename Counts>
+uint32_t pixels_about(const App& app, const std::vector<Rgb565>& screen, uint32_t i, int32_t reach, Counts counts) {
+    const Core& core = *static_cast<const Core*>(app.v);
+    const module::Scene& scene = core.scene();
+    int32_t centre[3], radius;
+    if (!scene.part_sphere(scene.instances()[i].shell, centre, radius)) return 0;
+    module::Projected p;
+    core.camera().transform(scene, i, app.w, app.h).project(centre, p);
+    const int32_t x = render::subpixel::pixel_of(p.s.x), y = render::subpixel::pixel_of(p.s.y);
+    uint32_t n = 0;
+    for (int32_t dy = -reach; dy <= reach; ++dy)
+        for (int32_t dx = -reach; dx <= reach; ++dx) {
+            const int32_t px = x + dx, py = y + dy;
+            if (px < 0 || py < 0 || px >= app.w || py >= app.h) continue;
+            const size_t at = size_t(py) * app.w + px;
+            n += counts(screen[at], screen[at - at % app.w]);
+        }
+    return n;
+}
+
 } // namespace
 
 TEST(Proxies, PartsLeftOutAreDrawnAsTheirProxiesNotBoxes) {
@@ -98,20 +120,8 @@ TEST(Proxies, PartsLeftOutAreDrawnAsTheirProxiesNotBoxes) {
     for (uint32_t i = 0; i < scene.instances().size(); ++i) {
         const uint32_t part = scene.instances()[i].shell;
         if (!scene.part_left_out(part)) continue;
-        int32_t centre[3], radius;
-        ASSERT_TRUE(scene.part_sphere(part, centre, radius));
-        module::Projected p;
-        core.camera().transform(scene, i, with.w, with.h).project(centre, p);
-        const int32_t x = render::subpixel::pixel_of(p.s.x), y = render::subpixel::pixel_of(p.s.y);
-        uint32_t covered = 0;
-        for (int32_t dy = -4; dy <= 4; ++dy)
-            for (int32_t dx = -4; dx <= 4; ++dx) {
-                const int32_t px = x + dx, py = y + dy;
-                if (px < 0 || py < 0 || px >= with.w || py >= with.h) continue;
-                const size_t at = size_t(py) * with.w + px;
-                covered += screen[at] != screen[at - at % with.w] && screen[at] != kBoxColour;
-            }
-        EXPECT_GT(covered, 4u) << "part " << part << " left out, drawn as its proxy at (" << x << ", " << y << ")";
+        const uint32_t covered = pixels_about(with, screen, i, 4, [](Rgb565 c, Rgb565 back) { return c != back && c != kBoxColour; });
+        EXPECT_GT(covered, 4u) << "part " << part << " left out, drawn as its proxy";
         ++shown;
     }
     EXPECT_EQ(shown, scene.left_out().parts);
@@ -128,17 +138,7 @@ TEST(Proxies, PartsLeftOutAreDrawnAsTheirProxiesNotBoxes) {
     for (uint32_t i = 0; i < scene.instances().size(); ++i) {
         const uint32_t part = scene.instances()[i].shell;
         if (!scene.part_left_out(part)) continue;
-        int32_t centre[3], radius;
-        ASSERT_TRUE(scene.part_sphere(part, centre, radius));
-        module::Projected p;
-        core.camera().transform(scene, i, with.w, with.h).project(centre, p);
-        const int32_t x = render::subpixel::pixel_of(p.s.x), y = render::subpixel::pixel_of(p.s.y);
-        uint32_t lines = 0;
-        for (int32_t dy = -12; dy <= 12; ++dy)
-            for (int32_t dx = -12; dx <= 12; ++dx) {
-                const int32_t px = x + dx, py = y + dy;
-                if (px >= 0 && py >= 0 && px < with.w && py < with.h) lines += lined[size_t(py) * with.w + px] == kEdgeColour;
-            }
+        const uint32_t lines = pixels_about(with, lined, i, 12, [](Rgb565 c, Rgb565) { return c == kEdgeColour; });
         EXPECT_GT(lines, 4u) << "part " << part << " left out, outlined in hidden line";
     }
 }
@@ -169,20 +169,8 @@ TEST(Proxies, ACrowdedViewDrawsPartsAsProxiesAndAPartZoomedIntoAsItself) {
         const module::Scene& scene = core.scene();
         const std::vector<Rgb565> screen = app.screen();
         for (uint32_t i = 0; i < scene.instances().size(); ++i) {
-            int32_t centre[3], radius;
-            ASSERT_TRUE(scene.part_sphere(scene.instances()[i].shell, centre, radius));
-            module::Projected p;
-            core.camera().transform(scene, i, app.w, app.h).project(centre, p);
-            const int32_t x = render::subpixel::pixel_of(p.s.x), y = render::subpixel::pixel_of(p.s.y);
-            uint32_t covered = 0;
-            for (int32_t dy = -3; dy <= 3; ++dy)
-                for (int32_t dx = -3; dx <= 3; ++dx) {
-                    const int32_t px = x + dx, py = y + dy;
-                    if (px < 0 || py < 0 || px >= app.w || py >= app.h) continue;
-                    const size_t at = size_t(py) * app.w + px;
-                    covered += screen[at] != screen[at - at % app.w];
-                }
-            EXPECT_GT(covered, 4u) << "instance " << i << " shows at (" << x << ", " << y << ")";
+            const uint32_t covered = pixels_about(app, screen, i, 3, [](Rgb565 c, Rgb565 back) { return c != back; });
+            EXPECT_GT(covered, 4u) << "instance " << i << " shows";
         }
         // One part framed: the part is itself, edges and all.
         const uint32_t part = 7; // (a trimmed B-spline sheet: its boundary drawn as edges)
