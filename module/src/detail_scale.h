@@ -22,9 +22,9 @@ struct DetailScale {
     // more triangles than one per kPixelsPerTriangle pixels of the view (at least
     // kLeastTriangleBound) takes its screen error kStep times coarser, up to kCrowdCoarsest
     // times for the parts drawn as their proxies and kCrowdMeshCoarsest times for the blocks'
-    // tessellations; under a quarter of the bound, kStep finer again. (640x480: 19,200
-    // triangles; 480x272: 8,192.) A part left out, on its way in, stands as a proxy within
-    // kCrowdCoarsest times the screen error.
+    // tessellations; well under the bound, kStep finer again (Detail::bound_triangles).
+    // (640x480: 19,200 triangles; 480x272: 8,192.) A part left out, on its way in, stands as a
+    // proxy within kCrowdCoarsest times the screen error.
     static constexpr uint32_t kPixelsPerTriangle = 16, kLeastTriangleBound = pack::kLeastTriangleBound;
     static constexpr float kCrowdCoarsest = 16.0f, kCrowdMeshCoarsest = 4.0f;
     // A view whose whole frame takes longer than a frame at rest may (Config::frame_budget_us,

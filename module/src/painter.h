@@ -113,14 +113,15 @@ public:
     // it has no proxy.
     uint32_t part_box(uint32_t part, const Transform& t);
     // A part's proxy (a coarse mesh of it in a blocked pack's index, at a few levels:
-    // geom/host/proxies.h) stands for it where a box would (`must`: left out, not sampled yet,
+    // geom/host/proxies.h) stands for it where a box would (a need: left out, not sampled yet,
     // tiny), and, in a crowded view, for a part in memory (not a lit part, nor one the section
     // crosses) whose own faces have more triangles, at the coarsest level that strays on the
-    // screen by no more than the view's proxy error; a part that must and has none so near, at the coarsest within the left-out
-    // error (else the finest: a block on its way in). Drawn with the faces, in its colour, each
-    // triangle lit by its own normal. proxy_level(): the level, or kNone (the part's own
-    // faces, or its box where it must and the mode draws no faces).
-    // (Coarsest: a must before the view's triangles are known, the first frames of a model.)
+    // screen by no more than the view's proxy error; a part that must and has none so near, at
+    // the coarsest within the left-out error (else the finest: a block on its way in); at the
+    // coarsest of all before the view's triangles are known (Coarsest: a model's first
+    // frames). Drawn with the faces, in its colour, each triangle lit by its own normal.
+    // proxy_level(): the level, or kNone (the part's own faces, or its box where it must and
+    // the mode draws no faces).
     enum class ProxyNeed : uint8_t { Optional, Must, Coarsest };
     uint32_t proxy_level(uint32_t part, const int32_t sphere_centre[3], int32_t radius, const Transform& t, ProxyNeed need);
     uint32_t part_proxy(uint32_t part, const Transform& t, uint32_t level);

@@ -124,7 +124,9 @@ typedef struct {
     void *event_user;
     uint32_t (*now_us)(void *user);
     void *clock_user;
-    uint32_t frame_budget_us, step_slack_us; /* BudgetExceeded past these (0: never); a large assembly's frame over frame_budget_us (0: 33.3 ms) is drawn coarser */
+    /* BudgetExceeded past these (0: never); a large assembly whose whole frame takes longer
+       than frame_budget_us (0: 33.3 ms) is drawn coarser */
+    uint32_t frame_budget_us, step_slack_us;
     facet_interface interface; /* facet's own on-screen interface (facet_config_init: FACET_INTERFACE_FULL) */
     float screen_error_px; /* a far part's chordal error at rest (facet_config_init: 0.5); 0: every face, one tolerance */
 } facet_config;
