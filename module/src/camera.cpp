@@ -95,36 +95,22 @@ float Camera::focal_px(uint16_t width, uint16_t height) {
     return float(focal16(width, height)) / 16;
 }
 
-Transform Camera::transform(const Scene& scene, uint32_t index, uint16_t width, uint16_t height) const {
+ViewBasis Camera::basis(const Scene& scene, uint16_t width, uint16_t height) const {
     const View v = in_range(view_, scene.radius()); // (in range by construction, whatever the view holds)
-    const pack::Instance& inst = scene.instances()[index];
-    Transform in{};
-    float R[9];
+    ViewBasis basis{};
+    float* R = basis.R;
     rotation(v, R);
-    const float* m = inst.m;
-    float A[9];
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) A[3 * i + j] = R[3 * i] * m[j] + R[3 * i + 1] * m[4 + j] + R[3 * i + 2] * m[8 + j];
     const float radius = scene.radius();
-    const float* centre = scene.centre();
-    const float v_per_mm = kViewPerDiagonal / (2 * radius);
-    const float t[3] = {m[3] - centre[0], m[7] - centre[1], m[11] - centre[2]};
-    const float pan[3] = {v.pan_x, v.pan_y, 0};
+    const float* centre = basis.centre = scene.centre();
+    const float v_per_mm = basis.v_per_mm = kViewPerDiagonal / (2 * radius);
+    float* pan = basis.pan;
+    pan[0] = v.pan_x, pan[1] = v.pan_y, pan[2] = 0;
     // View units per mesh unit: 1/16 when the placed model is its shells' own box (the view's
     // diagonal is 2^16 units, the mesh's 2^20); at most 1 (Scene::fit_bounds keeps it so).
-    const float k = scene.unit() * v_per_mm;
-    in.k16 = round_to_int(k * 65536.0f) + 1;
-    for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j) in.a[3 * i + j] = round_to_int(A[3 * i + j] * k * 1073741824.0f); // 2^30
-        in.b[i] = round_to_int((R[3 * i] * t[0] + R[3 * i + 1] * t[1] + R[3 * i + 2] * t[2] + pan[i]) * v_per_mm);
-    }
-    // The light, fixed in view space (upper left, toward the viewer), into shell coordinates.
-    const float L[3] = {-0.38f, 0.5f, 0.78f};
-    for (int j = 0; j < 3; ++j) in.light[j] = round_to_int((A[j] * L[0] + A[3 + j] * L[1] + A[6 + j] * L[2]) * 16384.0f);
-    const float det = m[0] * (m[5] * m[10] - m[6] * m[9]) - m[1] * (m[4] * m[10] - m[6] * m[8]) + m[2] * (m[4] * m[9] - m[5] * m[8]);
-    in.mirrored = det < 0;
-    in.closed = scene.part(inst.shell).closed;
-
+    basis.k = scene.unit() * v_per_mm;
+    basis.k30 = basis.k * 1073741824.0f; // a's scale, 2^30 (a power of two: A k 2^30 rounds as A k)
+    Transform& in = basis.shared;
+    in.k16 = round_to_int(basis.k * 65536.0f) + 1;
     in.dist = eye_distance(v.zoom);
     in.near = kRadiusV / 64;
     in.f16 = focal16(width, height);
@@ -135,28 +121,6 @@ Transform Camera::transform(const Scene& scene, uint32_t index, uint16_t width, 
     in.zk = (int64_t(65535) << 16) / (far - in.near > 1 ? far - in.near : 1);
     in.ortho = v.ortho;
     if (in.ortho) in.ortho_r = render::reciprocal(uint32_t(in.dist));
-    {
-        // The eye (view (0, 0, dist)) and the way to it (view +z) back in shell coordinates:
-        // P = a^-1 (view - b) 2^30, with a's inverse from its cofactors.
-        double m3[9], inv[9];
-        for (int i = 0; i < 9; ++i) m3[i] = double(in.a[i]) / 1073741824.0;
-        inv[0] = m3[4] * m3[8] - m3[5] * m3[7], inv[1] = m3[2] * m3[7] - m3[1] * m3[8], inv[2] = m3[1] * m3[5] - m3[2] * m3[4];
-        inv[3] = m3[5] * m3[6] - m3[3] * m3[8], inv[4] = m3[0] * m3[8] - m3[2] * m3[6], inv[5] = m3[2] * m3[3] - m3[0] * m3[5];
-        inv[6] = m3[3] * m3[7] - m3[4] * m3[6], inv[7] = m3[1] * m3[6] - m3[0] * m3[7], inv[8] = m3[0] * m3[4] - m3[1] * m3[3];
-        const double det3 = m3[0] * inv[0] + m3[1] * inv[3] + m3[2] * inv[6];
-        const double v[3] = {-double(in.b[0]), -double(in.b[1]), double(in.dist) - double(in.b[2])};
-        double most = 0; // the way to the eye: only its direction counts (largest component 2^14)
-        for (int i = 0; i < 3; ++i) {
-            const double e = (inv[3 * i] * v[0] + inv[3 * i + 1] * v[1] + inv[3 * i + 2] * v[2]) / det3;
-            in.eye[i] = int64_t(e + (e >= 0 ? 0.5 : -0.5));
-            most = std::max(most, inv[3 * i + 2] < 0 ? -inv[3 * i + 2] : inv[3 * i + 2]);
-        }
-        const double q = (det3 < 0 ? -16384.0 : 16384.0) / most;
-        for (int i = 0; i < 3; ++i) {
-            const double w = inv[3 * i + 2] * q;
-            in.toward[i] = int32_t(w + (w >= 0 ? 0.5 : -0.5));
-        }
-    }
     if (section_.on) {
         // View space is v = v_per_mm (R (W - centre) + pan), depth d = dist - v_z; the plane
         // n . W = offset in it: (R n) . v / v_per_mm - (R n) . pan + n . centre - offset.
@@ -170,7 +134,62 @@ Transform Camera::transform(const Scene& scene, uint32_t index, uint16_t width, 
         const double c = double(Q) * (double(r[2]) * in.dist + double(v_per_mm) * at);
         in.cut.c = int64_t(c + (c >= 0 ? 0.5 : -0.5));
     }
+    return basis;
+}
+
+Transform Camera::transform(const ViewBasis& basis, const Scene& scene, uint32_t index) {
+    const pack::Instance& inst = scene.instances()[index];
+    Transform in = basis.shared;
+    const float* R = basis.R;
+    const float* m = inst.m;
+    float A[9];
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) A[3 * i + j] = R[3 * i] * m[j] + R[3 * i + 1] * m[4 + j] + R[3 * i + 2] * m[8 + j];
+    const float* centre = basis.centre;
+    const float t[3] = {m[3] - centre[0], m[7] - centre[1], m[11] - centre[2]};
+    const float* pan = basis.pan;
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) in.a[3 * i + j] = round_to_int(A[3 * i + j] * basis.k30);
+        in.b[i] = round_to_int((R[3 * i] * t[0] + R[3 * i + 1] * t[1] + R[3 * i + 2] * t[2] + pan[i]) * basis.v_per_mm);
+    }
+    // The light, fixed in view space (upper left, toward the viewer), into shell coordinates,
+    // Q14 (scaled by a power of two before the products: the same floats as after them).
+    constexpr float Q = 16384.0f, L[3] = {-0.38f * Q, 0.5f * Q, 0.78f * Q};
+    for (int j = 0; j < 3; ++j) in.light[j] = round_to_int(A[j] * L[0] + A[3 + j] * L[1] + A[6 + j] * L[2]);
+    const float det = m[0] * (m[5] * m[10] - m[6] * m[9]) - m[1] * (m[4] * m[10] - m[6] * m[8]) + m[2] * (m[4] * m[9] - m[5] * m[8]);
+    in.mirrored = det < 0;
+    in.closed = scene.part(inst.shell).closed;
     return in;
+}
+
+Transform Camera::transform(const Scene& scene, uint32_t index, uint16_t width, uint16_t height) const {
+    Transform in = transform(basis(scene, width, height), scene, index);
+    in.place_eye();
+    return in;
+}
+
+void Transform::place_eye() {
+    // The eye (view (0, 0, dist)) and the way to it (view +z) back in shell coordinates:
+    // P = a^-1 (view - b) 2^30, with a's inverse from its cofactors.
+    double m3[9], inv[9];
+    for (int i = 0; i < 9; ++i) m3[i] = double(a[i]) / 1073741824.0;
+    inv[0] = m3[4] * m3[8] - m3[5] * m3[7], inv[1] = m3[2] * m3[7] - m3[1] * m3[8], inv[2] = m3[1] * m3[5] - m3[2] * m3[4];
+    inv[3] = m3[5] * m3[6] - m3[3] * m3[8], inv[4] = m3[0] * m3[8] - m3[2] * m3[6], inv[5] = m3[2] * m3[3] - m3[0] * m3[5];
+    inv[6] = m3[3] * m3[7] - m3[4] * m3[6], inv[7] = m3[1] * m3[6] - m3[0] * m3[7], inv[8] = m3[0] * m3[4] - m3[1] * m3[3];
+    const double det3 = m3[0] * inv[0] + m3[1] * inv[3] + m3[2] * inv[6];
+    const double v[3] = {-double(b[0]), -double(b[1]), double(dist) - double(b[2])};
+    double most = 0; // the way to the eye: only its direction counts (largest component 2^14)
+    for (int i = 0; i < 3; ++i) {
+        const double e = (inv[3 * i] * v[0] + inv[3 * i + 1] * v[1] + inv[3 * i + 2] * v[2]) / det3;
+        eye[i] = int64_t(e + (e >= 0 ? 0.5 : -0.5));
+        most = std::max(most, inv[3 * i + 2] < 0 ? -inv[3 * i + 2] : inv[3 * i + 2]);
+    }
+    const double q = (det3 < 0 ? -16384.0 : 16384.0) / most;
+    for (int i = 0; i < 3; ++i) {
+        const double w = inv[3 * i + 2] * q;
+        toward[i] = int32_t(w + (w >= 0 ? 0.5 : -0.5));
+    }
+    eye_placed = true;
 }
 
 SphereView Camera::sphere_view(const Scene& scene, uint16_t width, uint16_t height) const {

@@ -52,8 +52,9 @@ struct Transform {
     int32_t b[3];
     int32_t k16; // view units per mesh unit, 2^16 = 1, rounded up (sizes of spheres)
     int32_t light[3]; // Q14, in shell coordinates
-    int64_t eye[3];     // the eye in shell coordinates (mesh units)
-    int32_t toward[3];  // parallel: the way to the eye in shell coordinates (Q14)
+    int64_t eye[3];     // the eye in shell coordinates (mesh units): place_eye()
+    int32_t toward[3];  // parallel: the way to the eye in shell coordinates (Q14): place_eye()
+    bool eye_placed;    // eye and toward hold (facing() and what uses it need them)
     bool mirrored;
     bool closed;
     bool ortho; // parallel projection: x and y over the centre's depth (dist), not each point's
@@ -62,6 +63,10 @@ struct Transform {
     render::Reciprocal ortho_r; // of dist (ortho)
     CutPlane cut;
 
+    // eye and toward from a, b and dist: a part drawn from its own faces needs them (facing),
+    // one drawn as its proxy or box does not (some 5 k instructions of soft double on the
+    // ARM926, the most of a transform's cost).
+    void place_eye();
     // The rotation part applied to v, before the shift (the one place the 3x3 product is written).
     void rotate(const int32_t v[3], int64_t out[3]) const {
         out[0] = int64_t(a[0]) * v[0] + int64_t(a[1]) * v[1] + int64_t(a[2]) * v[2];
@@ -193,6 +198,18 @@ inline bool same_view(const View& a, const View& b) {
 enum class Standard : uint8_t { Front, Back, Right, Left, Top, Bottom, Iso };
 View standard_view(Standard s, const View& from); // the angles of s, the rest of `from`
 
+// What every instance's transform shares under one view, screen and section (Camera::basis):
+// made once for them all, each instance's transform from it (Camera::transform).
+struct ViewBasis {
+    float R[9];        // Camera::rotation
+    float v_per_mm;    // view units per mm
+    float k;           // view units per mesh unit
+    float k30;         // k 2^30 (Transform::a's scale)
+    float pan[3];      // mm, in view x and y
+    const float* centre; // the scene's (mm)
+    Transform shared;  // the fields that do not depend on the instance: k16, dist and on
+};
+
 class Camera {
 public:
     static constexpr float kTurn = 0.2617993878f; // a key turns by 15 degrees
@@ -231,6 +248,10 @@ public:
     SphereView sphere_view(const Scene& scene, uint16_t width, uint16_t height) const;
     // Instance `instance` of the scene under this camera on a width x height screen.
     Transform transform(const Scene& scene, uint32_t instance, uint16_t width, uint16_t height) const;
+    // The same in two steps: the view's basis once, then each instance's transform from it,
+    // without its eye (Transform::place_eye); equal, field for field, to transform()'s.
+    ViewBasis basis(const Scene& scene, uint16_t width, uint16_t height) const;
+    static Transform transform(const ViewBasis& basis, const Scene& scene, uint32_t instance);
 
 private:
     View view_;

@@ -1,5 +1,7 @@
 #include "presenter.h"
 
+#include <cstring>
+
 #include "render/text.h"
 
 namespace facet::module {
@@ -46,19 +48,46 @@ const Transform& Presenter::transform_of(uint32_t instance) {
     const Section& s = camera_.section();
     const float* c = scene_.centre();
     KeptFor& k = kept_for_;
-    if (!same_view(k.view, v) || k.section.on != s.on || k.section.n[0] != s.n[0] || k.section.n[1] != s.n[1] ||
-        k.section.n[2] != s.n[2] || k.section.offset != s.offset || k.width != display_.width || k.height != display_.height ||
-        k.radius != scene_.radius() || k.unit != scene_.unit() || k.centre[0] != c[0] || k.centre[1] != c[1] || k.centre[2] != c[2]) {
+    const bool same_section = k.section.on == s.on && k.section.n[0] == s.n[0] && k.section.n[1] == s.n[1] &&
+                              k.section.n[2] == s.n[2] && k.section.offset == s.offset;
+    const bool same_placing = same_view(k.view, v) && k.width == display_.width && k.height == display_.height &&
+                              k.radius == scene_.radius() && k.unit == scene_.unit() && k.centre[0] == c[0] &&
+                              k.centre[1] == c[1] && k.centre[2] == c[2];
+    if (!same_section || !same_placing) {
         k = {v, s, display_.width, display_.height, scene_.radius(), {c[0], c[1], c[2]}, scene_.unit()};
-        ++kept_stamp_;
+        basis_ = camera_.basis(scene_, display_.width, display_.height);
+        if (!same_placing) ++kept_stamp_; // (a section alone changes the cut, which the basis holds)
     }
-    if (instance >= kKeptTransforms) return made_ = camera_.transform(scene_, instance, display_.width, display_.height);
-    KeptTransform& kept = kept_[instance];
+    if (instance >= kKeptPlacements) return made_ = Camera::transform(basis_, scene_, instance);
+    KeptPlacement& kept = kept_[instance];
     if (kept.stamp != kept_stamp_) {
-        kept.transform = camera_.transform(scene_, instance, display_.width, display_.height);
+        made_ = Camera::transform(basis_, scene_, instance);
+        std::memcpy(kept.a, made_.a, sizeof kept.a), std::memcpy(kept.b, made_.b, sizeof kept.b);
+        std::memcpy(kept.light, made_.light, sizeof kept.light);
+        kept.mirrored = made_.mirrored, kept.closed = made_.closed;
         kept.stamp = kept_stamp_;
+        return made_;
     }
-    return kept.transform;
+    made_ = basis_.shared;
+    std::memcpy(made_.a, kept.a, sizeof kept.a), std::memcpy(made_.b, kept.b, sizeof kept.b);
+    std::memcpy(made_.light, kept.light, sizeof kept.light);
+    made_.mirrored = kept.mirrored, made_.closed = kept.closed;
+    return made_;
+}
+
+void Presenter::place_eye() {
+    Transform& t = job_.transform;
+    if (t.eye_placed) return;
+    KeptEye& kept = eyes_[job_.instance % kKeptEyes];
+    if (job_.instance < kKeptPlacements && kept.instance == job_.instance && kept.stamp == kept_stamp_) {
+        std::memcpy(t.eye, kept.eye, sizeof t.eye), std::memcpy(t.toward, kept.toward, sizeof t.toward);
+        t.eye_placed = true;
+        return;
+    }
+    t.place_eye();
+    if (job_.instance >= kKeptPlacements) return;
+    kept.instance = job_.instance, kept.stamp = kept_stamp_;
+    std::memcpy(kept.eye, t.eye, sizeof t.eye), std::memcpy(kept.toward, t.toward, sizeof t.toward);
 }
 
 void Presenter::invalidate() { ++version_, ++faces_version_; }
@@ -222,6 +251,7 @@ bool Presenter::full_pieces(uint32_t units) {
             if (spent >= units) return false;
             continue;
         }
+        place_eye(); // (drawn from its faces: which face the eye)
         if (faces) { // each face's triangles
             while (job_.face < sh.face_count && spent < units) {
                 const uint32_t f = sh.first_face + job_.face;
@@ -275,6 +305,7 @@ bool Presenter::update_pieces(uint32_t units) {
                     job_.face = job_.applied_to;
                     break;
                 }
+                place_eye();
             }
             const Rows rows = painter_.rows(job_.transform);
             uint32_t used;

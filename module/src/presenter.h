@@ -179,11 +179,15 @@ private:
     bool update_pieces(uint32_t units); // the faces since the buffer (or the layer) was last drawn
     void set_target();                  // the stage's: the faces layer, or the band of the draw buffer
     void copy_layer();                  // the faces layer into the draw buffer (colour and depth)
-    // Instance i's transform under the camera: kept from frame to frame for the first
-    // kKeptTransforms instances while the view, the section, the screen and the model stay the
-    // same (each stage of a frame takes every instance's, and a pass's frames share one view:
-    // a transform is some 12 k instructions of soft float on the ARM926, issue 52's profile).
+    // Instance i's transform under the camera. What is its own (rotation, shift, light) is
+    // kept from frame to frame for the first kKeptPlacements instances while the view, the
+    // screen and the model stay the same (each stage of a frame takes every instance's, and a
+    // pass's frames share one view: a transform is some 5 k instructions of soft float on the
+    // ARM926, issue 52's profile); the rest is the view's basis, made once a view or section.
     const Transform& transform_of(uint32_t instance);
+    // job_.transform's eye placed (Transform::place_eye; kept for kKeptEyes instances): before
+    // the instance's own faces are drawn.
+    void place_eye();
     bool layer_holds(uint32_t applied) const { return layer_.pixels && layer_.version == faces_version_ && layer_.applied >= applied; }
     void flush(uint32_t pass);
 
@@ -224,19 +228,26 @@ private:
     uint32_t piece_start_ = 0;  // the clock when the current piece began
     uint32_t budget_us_ = 0;    // Config::frame_budget_us
     Job job_;
-    static constexpr uint32_t kKeptTransforms = 256;
+    static constexpr uint32_t kKeptPlacements = 768, kKeptEyes = 128;
     struct KeptFor { // what every kept transform was made for
         View view;
         Section section;
         uint16_t width = 0, height = 0;
         float radius = 0, centre[3] = {0, 0, 0}, unit = 0;
     } kept_for_;
-    uint32_t kept_stamp_ = 1; // the kept transforms' stamp (one that differs: not kept)
-    struct KeptTransform {
+    ViewBasis basis_{};       // what kept_for_'s view gives every transform
+    uint32_t kept_stamp_ = 1; // the kept placements' stamp (one that differs: not kept)
+    struct KeptPlacement {    // an instance's own part of its transform (Transform's fields)
         uint32_t stamp = 0;
-        Transform transform;
-    } kept_[kKeptTransforms];
-    Transform made_{}; // transform_of()'s answer for an instance past the kept ones
+        int32_t a[9], b[3], light[3];
+        bool mirrored, closed;
+    } kept_[kKeptPlacements];
+    struct KeptEye { // an instance's eye (Transform::place_eye), by instance % kKeptEyes
+        uint32_t instance = ~0u, stamp = 0;
+        int64_t eye[3];
+        int32_t toward[3];
+    } eyes_[kKeptEyes];
+    Transform made_{}; // transform_of()'s answer
     Overlay overlay_;
     float tolerance_mm_ = 0;
     uint32_t last_frame_us_ = 0; // the last whole frame's cost

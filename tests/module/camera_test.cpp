@@ -158,6 +158,46 @@ TEST(Camera, ThePlaneFacesTheEyeFromAboveAndAwayFromBelow) {
     EXPECT_TRUE(t.faces_away(p, down));
 }
 
+// A frame makes the view's basis once and each instance's transform from it; the eye is
+// placed only for an instance drawn from its own faces. Field for field the same transform,
+// and the eye placed is where the transform puts the view's eye, (0, 0, dist).
+TEST(Camera, ATransformFromTheViewsBasisIsTheWholeOneAndItsEyeMapsToTheViewsEye) {
+    Model m;
+    Camera cam;
+    cam.orbit(0.4f, 0.3f), cam.dolly(0.7f), cam.pan(3, -2);
+    cam.set_section({true, {0.6f, 0.0f, 0.8f}, 5.0f});
+    for (const bool ortho : {false, true}) {
+        if (ortho) cam.toggle_projection();
+        const Transform whole = cam.transform(m.scene, 0, 480, 272);
+        const ViewBasis basis = cam.basis(m.scene, 480, 272);
+        Transform t = Camera::transform(basis, m.scene, 0);
+        EXPECT_FALSE(t.eye_placed);
+        t.place_eye();
+        ASSERT_TRUE(t.eye_placed);
+        EXPECT_EQ(0, std::memcmp(t.a, whole.a, sizeof t.a));
+        EXPECT_EQ(0, std::memcmp(t.b, whole.b, sizeof t.b));
+        EXPECT_EQ(0, std::memcmp(t.light, whole.light, sizeof t.light));
+        EXPECT_EQ(0, std::memcmp(t.eye, whole.eye, sizeof t.eye));
+        EXPECT_EQ(0, std::memcmp(t.toward, whole.toward, sizeof t.toward));
+        EXPECT_EQ(t.k16, whole.k16);
+        EXPECT_EQ(t.dist, whole.dist);
+        EXPECT_EQ(t.zk, whole.zk);
+        EXPECT_EQ(t.ortho, whole.ortho);
+        EXPECT_TRUE(t.cut.on);
+        EXPECT_EQ(t.cut.c, whole.cut.c);
+        EXPECT_EQ(t.cut.nd, whole.cut.nd);
+        // a eye 2^-30 + b = (0, 0, dist), to a view unit (the eye is rounded to mesh units,
+        // a sixteenth of a view unit here).
+        int64_t r[3];
+        const int32_t e[3] = {int32_t(t.eye[0]), int32_t(t.eye[1]), int32_t(t.eye[2])};
+        for (int k = 0; k < 3; ++k) ASSERT_EQ(e[k], t.eye[k]);
+        t.rotate(e, r);
+        EXPECT_NEAR(double(r[0]) / 1073741824.0 + t.b[0], 0, 1);
+        EXPECT_NEAR(double(r[1]) / 1073741824.0 + t.b[1], 0, 1);
+        EXPECT_NEAR(double(r[2]) / 1073741824.0 + t.b[2], t.dist, 1);
+    }
+}
+
 TEST(Camera, DollyIsBoundedAndPixelPansFollowThePointer) {
     Model m;
     Camera cam;

@@ -73,7 +73,7 @@ using namespace facet;
 namespace {
 
 constexpr size_t kLzmaUpTo = 1u << 20; // decoded bytes a pack is LZMA-compressed up to (above: DEFLATE)
-constexpr uint32_t kProxyLevels[] = {48, 192, 768}; // the most triangles a part's proxy has at each level (geom/host/proxies.h)
+constexpr uint32_t kProxyLevels[] = {12, 48, 192, 768}; // the most triangles a part's proxy has at each level (geom/host/proxies.h)
 
 int usage() {
     std::fprintf(stderr, "usage: facet-pack MODEL.step -o MODEL.fpk [--plain|--deflate|--lzma] [--whole] [--unit mm|cm|m|in|ft] [--partial] [--reference FACES.json] [--quiet]\n"
