@@ -133,6 +133,7 @@ ViewBasis Camera::basis(const Scene& scene, uint16_t width, uint16_t height) con
         in.cut.nx = round_to_int(Q * r[0]), in.cut.ny = round_to_int(Q * r[1]), in.cut.nd = round_to_int(-Q * r[2]);
         const double c = double(Q) * (double(r[2]) * in.dist + double(v_per_mm) * at);
         in.cut.c = int64_t(c + (c >= 0 ? 0.5 : -0.5));
+        in.cut.c_float = float(in.cut.c);
     }
     return basis;
 }

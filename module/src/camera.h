@@ -35,6 +35,7 @@ struct CutPlane {
     bool on = false;
     int32_t nx = 0, ny = 0, nd = 0;
     int64_t c = 0;
+    float c_float = 0; // float(c), once (a 64-bit integer to float is some 550 instructions of soft float)
     int64_t side(int32_t x, int32_t y, int32_t d) const { return int64_t(nx) * x + int64_t(ny) * y + int64_t(nd) * d + c; }
 };
 

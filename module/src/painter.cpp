@@ -105,6 +105,21 @@ void Painter::reset_edges(uint32_t part) {
     for (uint8_t& drawn : mem_.edge_drawn.subspan(first, count)) drawn = 0;
 }
 
+namespace {
+
+// Whether a camera-space point lies in front of twice the near distance and within nine tenths
+// of the guard band (Painter::triangle's planes but the section's keep it, whatever their float
+// rounding).
+bool well_within(const Transform& t, const Projected& p) {
+    if (p.d < 2 * t.near) return false;
+    const int64_t over = t.ortho ? t.dist : p.d;
+    const int64_t X = int64_t(p.x < 0 ? -int64_t(p.x) : p.x) * t.f16, Y = int64_t(p.y < 0 ? -int64_t(p.y) : p.y) * t.f16;
+    const int64_t most = 9 * int64_t(t.guard) * over;
+    return 10 * X <= most && 10 * Y <= most;
+}
+
+} // namespace
+
 void Painter::triangle(const Transform& t, const Projected& a, const Projected& b, const Projected& c,
                        const render::Palette& pal, render::Cull cull, const render::Palette* cap) {
     if (!(a.out | b.out | c.out)) {
@@ -121,7 +136,11 @@ void Painter::triangle(const Transform& t, const Projected& a, const Projected& 
         return;
     }
     if (a.out & b.out & c.out & (kOutNear | kOutCut)) return;
-    // Clip against the near plane and the guard band (camera space, float: this path is rare).
+    // Clip against the near plane and the guard band (camera space, float: this path is rare),
+    // and the section. A triangle whose corners lie well within the others (in integers: twice
+    // the near distance, nine tenths of the band) is clipped by the section's alone: the others
+    // would keep it whole.
+    const bool cut_only = t.cut.on && well_within(t, a) && well_within(t, b) && well_within(t, c);
     struct V {
         float x, y, d, shade;
     };
@@ -133,7 +152,7 @@ void Painter::triangle(const Transform& t, const Projected& a, const Projected& 
     for (int i = 0; i < 3; ++i) poly[i] = {float(src[i]->x), float(src[i]->y), float(src[i]->d), float(src[i]->s.shade)};
     const float dist = float(t.dist);
     // The section's side (a plane in camera space; positive: cut away), scaled to view units.
-    const float cx = float(t.cut.nx), cy = float(t.cut.ny), cd = float(t.cut.nd), cc = float(t.cut.c);
+    const float cx = float(t.cut.nx), cy = float(t.cut.ny), cd = float(t.cut.nd), cc = t.cut.c_float;
     auto plane = [&](const V& v, int k) {
         const float over = t.ortho ? dist : v.d; // the guard band's sides: parallel in a parallel view
         switch (k) {
@@ -145,7 +164,7 @@ void Painter::triangle(const Transform& t, const Projected& a, const Projected& 
         default: return -(cx * v.x + cy * v.y + cd * v.d + cc);
         }
     };
-    for (int k = 0; k < (t.cut.on ? 6 : 5) && n >= 3; ++k) {
+    for (int k = cut_only ? 5 : 0; k < (t.cut.on ? 6 : 5) && n >= 3; ++k) {
         int m = 0;
         for (int i = 0; i < n; ++i) {
             const V& p = poly[i];
