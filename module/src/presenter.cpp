@@ -58,7 +58,7 @@ const Transform& Presenter::transform_of(uint32_t instance) {
         basis_ = camera_.basis(scene_, display_.width, display_.height);
         if (!same_placing) ++kept_stamp_; // (a section alone changes the cut, which the basis holds)
     }
-    if (instance >= kKeptPlacements) return made_ = Camera::transform(basis_, scene_, instance);
+    if (!keep_ || instance >= kKeptPlacements) return made_ = Camera::transform(basis_, scene_, instance);
     KeptPlacement& kept = kept_[instance];
     if (kept.stamp != kept_stamp_) {
         made_ = Camera::transform(basis_, scene_, instance);
@@ -79,7 +79,7 @@ void Presenter::place_eye() {
     Transform& t = job_.transform;
     if (t.eye_placed) return;
     KeptEye& kept = eyes_[job_.instance % kKeptEyes];
-    if (job_.instance < kKeptPlacements && kept.instance == job_.instance && kept.stamp == kept_stamp_) {
+    if (keep_ && job_.instance < kKeptPlacements && kept.instance == job_.instance && kept.stamp == kept_stamp_) {
         std::memcpy(t.eye, kept.eye, sizeof t.eye), std::memcpy(t.toward, kept.toward, sizeof t.toward);
         t.eye_placed = true;
         return;

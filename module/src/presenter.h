@@ -76,6 +76,8 @@ public:
     void set_dragging(bool on) { dragging_ = on; }
     // Frames begun from now on are of a crowded view (Painter::set_crowded).
     void set_crowded(bool on) { crowded_ = on; }
+    // Tests: false makes every transform afresh, none kept (what kept ones must draw the same as).
+    void set_keep_transforms(bool keep) { keep_ = keep; }
     // Frames begun from now on draw proxies that stray up to this on the screen (pixels:
     // Painter::set_proxy_error).
     void set_proxy_error(float pixels, float left_out_pixels) { proxy_pixels_ = pixels, left_out_pixels_ = left_out_pixels; }
@@ -236,6 +238,7 @@ private:
         float radius = 0, centre[3] = {0, 0, 0}, unit = 0;
     } kept_for_;
     ViewBasis basis_{};       // what kept_for_'s view gives every transform
+    bool keep_ = true;        // set_keep_transforms()
     uint32_t kept_stamp_ = 1; // the kept placements' stamp (one that differs: not kept)
     struct KeptPlacement {    // an instance's own part of its transform (Transform's fields)
         uint32_t stamp = 0;

@@ -306,3 +306,31 @@ TEST(Viewer, PointsFromTheProjectionCacheDrawWhatProjectingEachAgainDraws) {
         EXPECT_GE(3 * tally[1].cached, tally[0].projected) << "a third of the points or more from the cache";
     }
 }
+
+// Each instance's own part of its transform is kept from frame to frame while the view stays
+// (a section moved keeps it), its eye while it is drawn from its faces
+// (Presenter::transform_of, place_eye): the same pictures as transforms made afresh for every
+// frame, through sections moved, turns and display modes.
+TEST(Viewer, TransformsKeptFromFrameToFrameDrawWhatTransformsMadeAfreshDraw) {
+    std::vector<std::vector<Rgb565>> screens[2];
+    for (int keep = 0; keep < 2; ++keep) {
+        App app;
+        ASSERT_TRUE(app.create().ok());
+        static_cast<Core*>(app.v)->presenter().set_keep_transforms(keep == 1);
+        ASSERT_TRUE(app.load(two_blocks()).ok());
+        auto look = [&]() {
+            app.run();
+            screens[keep].push_back(app.screen());
+        };
+        look();
+        app.v->key('d'), look();
+        for (const float at : {50.0f, 60.0f, 140.0f}) ASSERT_TRUE(app.v->set_section({true, {1, 0, 0}, at}).ok()), look();
+        for (int mode = 0; mode < 4; ++mode) app.v->key('m'), look();
+        ASSERT_TRUE(app.v->set_section({true, {0.6f, 0.0f, 0.8f}, 10.0f}).ok()), look();
+        app.v->key('d'), look();
+        ASSERT_TRUE(app.v->set_section({false, {1, 0, 0}, 0}).ok()), look();
+    }
+    ASSERT_EQ(screens[0].size(), screens[1].size());
+    for (size_t k = 0; k < screens[0].size(); ++k) EXPECT_TRUE(screens[0][k] == screens[1][k]) << "picture " << k;
+    EXPECT_FALSE(screens[1][2] == screens[1][3]) << "the section moved";
+}
