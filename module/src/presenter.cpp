@@ -39,7 +39,7 @@ void Presenter::reset() {
     ++faces_version_, layer_.version = 0, layer_.applied = 0;
     shown_version_ = shown_finished_ = 0;
     job_ = {};
-    in_view_ = 0, in_view_us_ = 0;
+    in_view_ = 0, in_view_us_ = 0, all_faces_us_ = 0, owed_us_ = 0;
     ++kept_stamp_; // (another model: none kept)
 }
 
@@ -331,7 +331,7 @@ void Presenter::flush(uint32_t pass) {
     if (buffers_ == 2) ++next_;
     const bool last = job_.band + 1 >= bands_;
     if (last) {
-        buf_[b].version = job_.full || buf_[b].version == job_.version ? job_.version : 0;
+        buf_[b].version = !job_.edges_owed && (job_.full || buf_[b].version == job_.version) ? job_.version : 0;
         buf_[b].applied = job_.applied_to;
     }
     // (in the screen's coordinates: facet's rectangle at (x, y) of it)
@@ -342,7 +342,7 @@ void Presenter::flush(uint32_t pass) {
         job_.buffer = buffers_ == 2 ? uint8_t(next_ & 1) : 0;
         return;
     }
-    shown_version_ = job_.version;
+    shown_version_ = job_.edges_owed ? 0 : job_.version; // (edges owed: another frame is wanted)
     shown_finished_ = job_.finished;
     job_.stage = Stage::Idle;
     Event e{};
@@ -350,6 +350,10 @@ void Presenter::flush(uint32_t pass) {
     const render::RasterStats& s = raster_.stats;
     const uint32_t cost = job_.cost_us + (clock_() - piece_start_);
     if (job_.full) last_frame_us_ = cost;
+    if (job_.full && job_.all_faces && !job_.edges_owed) all_faces_us_ = cost;
+    // (A view's faces first: what the frame would have cost, its faces and then its edges.)
+    if (job_.full && !job_.all_faces && owed_us_) all_faces_us_ = owed_us_ + cost;
+    owed_us_ = job_.edges_owed ? cost : 0;
     if (job_.full && job_.all_faces && !job_.boxes && bands_ == 1) { // (not a frame of boxes: of the layout alone)
         in_view_ = s.triangles + s.culled, in_view_us_ = cost;
     }
@@ -399,7 +403,8 @@ void Presenter::run_piece(uint32_t units, uint32_t pass) {
     case Stage::CopyLayer: // the view's faces, kept, into the draw buffer
         set_band();
         copy_layer();
-        job_.restart(Stage::Edges, 0);
+        job_.edges_owed = job_.all_faces && bands_ == 1 && all_faces_us_ > frame_budget() / 4 * 3;
+        job_.restart(job_.edges_owed ? Stage::Overlay : Stage::Edges, 0);
         return;
     case Stage::LayerAll:
     case Stage::LayerNew:

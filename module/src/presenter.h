@@ -16,6 +16,7 @@
 // edges, the overlay, or what a drag left out change: redraw()), a whole frame is that copy
 // and the second pass alone.
 #include "camera.h"
+#include "detail_scale.h"
 #include "facet/viewer.h"
 #include "overlay.h"
 #include "painter.h"
@@ -142,6 +143,10 @@ private:
         uint32_t instance = 0, face = 0, tri = 0;
         bool begun = false;
         bool all_faces = false;       // the frame draws every face (LayerAll or BufferAll), not the layer's copy
+        // Drawn without its Edges stage: a new view's faces first, its frames of every face
+        // having come near the frame budget (3/4 of it: Config::frame_budget_us, else
+        // DetailScale's frame at rest); the next frame draws the edges over the layer's copy.
+        bool edges_owed = false;
         bool have_transform = false;
         Transform transform{};
         Transform::Sight sight = Transform::Sight::Across; // where the instance's part lies
@@ -229,6 +234,9 @@ private:
     std::atomic<uint32_t> done_{0}; // a flush_done() since take_done() last looked (loads and stores only)
     uint32_t piece_start_ = 0;  // the clock when the current piece began
     uint32_t budget_us_ = 0;    // Config::frame_budget_us
+    uint32_t frame_budget() const { return budget_us_ ? budget_us_ : DetailScale::kRestFrameUs; }
+    uint32_t all_faces_us_ = 0; // the last frame of every face's cost, with its edges (owed or not)
+    uint32_t owed_us_ = 0;      // the last frame's cost when it owed its edges
     Job job_;
     static constexpr uint32_t kKeptPlacements = 768, kKeptEyes = 128;
     struct KeptFor { // what every kept transform was made for

@@ -101,6 +101,30 @@ namespace {
     return n;
 }
 
+// The same span with one colour (a triangle whose shade does not change across it: a plane's,
+// Gouraud from equal normals): the same pixels, without stepping the shade.
+[[gnu::always_inline]] inline uint32_t flat_span(uint16_t* d, uint16_t* end, uintptr_t to_out, uint32_t z, uint32_t zs,
+                                                 Rgb565 c) {
+    const uint32_t n = uint32_t(end - d);
+    auto pixel = [&](uint16_t* at, uint32_t zz) {
+        const uint32_t zv = zz >> kFrac;
+        if (zv < *at) {
+            *at = uint16_t(zv);
+            *reinterpret_cast<Rgb565*>(reinterpret_cast<uintptr_t>(at) + to_out) = c;
+        }
+    };
+    if (n & 1) {
+        pixel(d, z);
+        ++d, z += zs;
+    }
+    for (; d < end; d += 2) {
+        pixel(d, z);
+        pixel(d + 1, z + zs);
+        z += 2 * zs;
+    }
+    return n;
+}
+
 inline uintptr_t byte_distance(const uint16_t* from, const Rgb565* to) {
     return reinterpret_cast<uintptr_t>(to) - reinterpret_cast<uintptr_t>(from);
 }
@@ -148,11 +172,19 @@ struct InPlaceRows {
         }
         uint32_t zrow = w.zrow, srow = w.srow;
         const uint32_t zx = w.zx, zy = w.zy, sx = w.sx, sy = w.sy;
-        for (const int32_t* at = span; at < span + 2 * n; at += 2, depth += width, zrow += zy, srow += sy) {
-            const int32_t lo = at[0], hi = at[1];
-            if (lo <= hi) {
-                tested += shade_span(depth + lo, depth + hi + 1, to_out, zrow + zx * uint32_t(lo), zx, srow + sx * uint32_t(lo), sx,
-                                     colour);
+        if (sx == 0 && sy == 0) { // one shade: one colour
+            const Rgb565 c = Rgb565(colour[srow >> kFrac]);
+            for (const int32_t* at = span; at < span + 2 * n; at += 2, depth += width, zrow += zy) {
+                const int32_t lo = at[0], hi = at[1];
+                if (lo <= hi) tested += flat_span(depth + lo, depth + hi + 1, to_out, zrow + zx * uint32_t(lo), zx, c);
+            }
+        } else {
+            for (const int32_t* at = span; at < span + 2 * n; at += 2, depth += width, zrow += zy, srow += sy) {
+                const int32_t lo = at[0], hi = at[1];
+                if (lo <= hi) {
+                    tested += shade_span(depth + lo, depth + hi + 1, to_out, zrow + zx * uint32_t(lo), zx, srow + sx * uint32_t(lo),
+                                         sx, colour);
+                }
             }
         }
         w.zrow = zrow, w.srow = srow;

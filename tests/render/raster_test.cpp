@@ -159,6 +159,37 @@ TEST(Raster, GouraudReproducesVertexShadesAtVertexPixels) {
     for (int x = 1; x < 62; ++x) EXPECT_LE(f.colour[x], f.colour[x - 1]) << x;
 }
 
+// A larger triangle of one shade (a plane's) takes a span loop of one colour
+// (render/src/scan.cpp, flat_span): the same pixels and depths as the same triangle with its
+// shade stepping, every pixel in the one colour.
+TEST(Raster, ATriangleOfOneShadeDrawsTheSameDepthsInOneColour) {
+    constexpr uint16_t W = 160, H = 120;
+    std::mt19937 rng(11);
+    std::uniform_int_distribution<int> coord(-400, 16 * W + 400), z(0, 65535);
+    int large = 0;
+    for (int trial = 0; trial < 300; ++trial) {
+        ScreenVertex t[3];
+        for (ScreenVertex& p : t) p = {coord(rng), coord(rng) * H / W, uint16_t(z(rng)), 100};
+        std::vector<Rgb565> flat_px(W * H, 0), shaded_px(W * H, 0);
+        std::vector<uint16_t> flat_z(W * H), shaded_z(W * H);
+        Rasterizer flat(render::Target{flat_px.data(), flat_z.data(), W, H, 0, H});
+        Rasterizer shaded(render::Target{shaded_px.data(), shaded_z.data(), W, H, 0, H});
+        flat.clear_depth(), shaded.clear_depth();
+        ASSERT_EQ(flat.draw(t[0], t[1], t[2], ramp(), render::Cull::None), Status::Ok);
+        t[1].shade = 180, t[2].shade = 30;
+        ASSERT_EQ(shaded.draw(t[0], t[1], t[2], ramp(), render::Cull::None), Status::Ok);
+        ASSERT_EQ(flat_z, shaded_z) << "trial " << trial;
+        int drawn = 0;
+        for (size_t i = 0; i < flat_z.size(); ++i) {
+            if (flat_z[i] == 0xFFFF) continue;
+            ++drawn;
+            ASSERT_EQ(flat_px[i], Rgb565(100)) << "trial " << trial << " pixel " << i;
+        }
+        large += drawn > 400;
+    }
+    EXPECT_GT(large, 100) << "most of them larger triangles (their rows in place)";
+}
+
 TEST(Raster, PalettesScaleTheColourByTheShade) {
     render::Palette p;
     render::make_palette(p, 255, 128, 64);

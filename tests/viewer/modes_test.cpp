@@ -334,3 +334,31 @@ TEST(Viewer, TransformsKeptFromFrameToFrameDrawWhatTransformsMadeAfreshDraw) {
     for (size_t k = 0; k < screens[0].size(); ++k) EXPECT_TRUE(screens[0][k] == screens[1][k]) << "picture " << k;
     EXPECT_FALSE(screens[1][2] == screens[1][3]) << "the section moved";
 }
+
+// A model whose frames of every face come near the frame budget (3/4 of a frame at rest's 33.3
+// ms here) shows each new view in two frames: its faces first, then their edges over them
+// (Presenter, Job::edges_owed); it ends on the picture a quicker device draws at once.
+TEST(Viewer, ASlowModelShowsANewViewsFacesFirstAndTheirEdgesTheFrameAfter) {
+    std::vector<Rgb565> ends[2], first_frame;
+    int frames[2] = {0, 0};
+    for (int slow = 0; slow < 2; ++slow) {
+        App app;
+        app.faces_layer = true, app.use_clock = true, app.tick_us = slow ? 20000 : 0;
+        ASSERT_TRUE(app.create().ok());
+        ASSERT_TRUE(app.load(two_blocks()).ok());
+        app.run();
+        app.v->key('d'), app.run(); // (a frame of every face, measured)
+        const int before = app.count(Event::Kind::FrameDone);
+        app.v->key('d');
+        for (int i = 0; i < 100000 && app.v->step(100000) != Activity::Idle; ++i) {
+            app.done();
+            if (app.count(Event::Kind::FrameDone) == before + 1 && first_frame.empty() && slow) first_frame = app.screen();
+        }
+        frames[slow] = app.count(Event::Kind::FrameDone) - before;
+        ends[slow] = app.screen();
+    }
+    EXPECT_EQ(frames[0], 1);
+    EXPECT_EQ(frames[1], 2) << "the faces, then their edges";
+    EXPECT_TRUE(ends[0] == ends[1]);
+    EXPECT_FALSE(first_frame == ends[1]) << "the first frame without the edges";
+}

@@ -125,7 +125,8 @@ typedef struct {
     uint32_t (*now_us)(void *user);
     void *clock_user;
     /* BudgetExceeded past these (0: never); a large assembly whose whole frame takes longer
-       than frame_budget_us (0: 33.3 ms) is drawn coarser */
+       than frame_budget_us (0: 33.3 ms) is drawn coarser, and a model whose frames come near
+       it shows a new view's faces a frame before their edges */
     uint32_t frame_budget_us, step_slack_us;
     facet_interface interface; /* facet's own on-screen interface (facet_config_init: FACET_INTERFACE_FULL) */
     float screen_error_px; /* a far part's chordal error at rest (facet_config_init: 0.5); 0: every face, one tolerance */

@@ -116,7 +116,8 @@ struct Config {
     uint32_t (*now_us)(void* user) = nullptr; // optional clock (wraps): step budgets and costs in us;
     void* clock_user = nullptr;               // without one, step() does one piece of work per call
     // BudgetExceeded past these (0: never); a large assembly whose whole frame takes longer than
-    // frame_budget_us (0: 33.3 ms, 20 M instructions at 600 MHz) is drawn coarser (docs/scale.md).
+    // frame_budget_us (0: 33.3 ms, 20 M instructions at 600 MHz) is drawn coarser (docs/scale.md),
+    // and a model whose frames come near it shows a new view's faces a frame before their edges.
     uint32_t frame_budget_us = 0, step_slack_us = 2000;
     float screen_error_px = 0.5f; // a far part's chordal error at rest, pixels; 0: no view-dependent detail (every face, one tolerance)
     Interface interface = Interface::Full; // facet's own on-screen interface (Interface)
