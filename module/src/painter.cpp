@@ -136,10 +136,10 @@ void Painter::triangle(const Transform& t, const Projected& a, const Projected& 
         return;
     }
     if (a.out & b.out & c.out & (kOutNear | kOutCut)) return;
-    // Clip against the near plane and the guard band (camera space, float: this path is rare),
-    // and the section. A triangle whose corners lie well within the others (in integers: twice
-    // the near distance, nine tenths of the band) is clipped by the section's alone: the others
-    // would keep it whole.
+    // Clip against the near plane and the guard band (camera space, float: a rare path but for
+    // a section), and the section. A triangle whose corners lie well within the others (twice
+    // the near distance, nine tenths of the band, in integers) is clipped by the section's alone:
+    // the others would keep it whole.
     const bool cut_only = t.cut.on && well_within(t, a) && well_within(t, b) && well_within(t, c);
     struct V {
         float x, y, d, shade;

@@ -1,6 +1,6 @@
 #include "presenter.h"
 
-#include <cstring>
+#include <cstring> // (std::memcpy)
 
 #include "render/text.h"
 
@@ -62,16 +62,12 @@ const Transform& Presenter::transform_of(uint32_t instance) {
     KeptPlacement& kept = kept_[instance];
     if (kept.stamp != kept_stamp_) {
         made_ = Camera::transform(basis_, scene_, instance);
-        std::memcpy(kept.a, made_.a, sizeof kept.a), std::memcpy(kept.b, made_.b, sizeof kept.b);
-        std::memcpy(kept.light, made_.light, sizeof kept.light);
-        kept.mirrored = made_.mirrored, kept.closed = made_.closed;
+        kept.keep(made_);
         kept.stamp = kept_stamp_;
         return made_;
     }
     made_ = basis_.shared;
-    std::memcpy(made_.a, kept.a, sizeof kept.a), std::memcpy(made_.b, kept.b, sizeof kept.b);
-    std::memcpy(made_.light, kept.light, sizeof kept.light);
-    made_.mirrored = kept.mirrored, made_.closed = kept.closed;
+    kept.into(made_);
     return made_;
 }
 
@@ -251,7 +247,7 @@ bool Presenter::full_pieces(uint32_t units) {
             if (spent >= units) return false;
             continue;
         }
-        place_eye(); // (drawn from its faces: which face the eye)
+        place_eye(); // (drawn from its own faces: which of them face the eye)
         if (faces) { // each face's triangles
             while (job_.face < sh.face_count && spent < units) {
                 const uint32_t f = sh.first_face + job_.face;

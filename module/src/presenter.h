@@ -24,6 +24,7 @@
 #include "scheduler.h"
 
 #include <atomic>
+#include <cstring>
 
 namespace facet::module {
 // flush_done()'s flag: released and acquired where another core may call it; on ARMv5 (one
@@ -186,11 +187,11 @@ private:
     bool update_pieces(uint32_t units); // the faces since the buffer (or the layer) was last drawn
     void set_target();                  // the stage's: the faces layer, or the band of the draw buffer
     void copy_layer();                  // the faces layer into the draw buffer (colour and depth)
-    // Instance i's transform under the camera. What is its own (rotation, shift, light) is
-    // kept from frame to frame for the first kKeptPlacements instances while the view, the
-    // screen and the model stay the same (each stage of a frame takes every instance's, and a
-    // pass's frames share one view: a transform is some 5 k instructions of soft float on the
-    // ARM926, issue 52's profile); the rest is the view's basis, made once a view or section.
+    // Instance i's transform under the camera. What is its own (rotation, shift, light: some
+    // 4 k instructions of soft float on the ARM926, issue 52's profile) is kept from frame to
+    // frame for the first kKeptPlacements instances while the view, the screen and the model
+    // stay the same (each stage of a frame takes every instance's, and a pass's frames share
+    // one view); the rest is the view's basis, made once a view or section.
     const Transform& transform_of(uint32_t instance);
     // job_.transform's eye placed (Transform::place_eye; kept for kKeptEyes instances): before
     // the instance's own faces are drawn.
@@ -252,6 +253,14 @@ private:
         uint32_t stamp = 0;
         int32_t a[9], b[3], light[3];
         bool mirrored, closed;
+        void keep(const Transform& t) {
+            std::memcpy(a, t.a, sizeof a), std::memcpy(b, t.b, sizeof b), std::memcpy(light, t.light, sizeof light);
+            mirrored = t.mirrored, closed = t.closed;
+        }
+        void into(Transform& t) const {
+            std::memcpy(t.a, a, sizeof a), std::memcpy(t.b, b, sizeof b), std::memcpy(t.light, light, sizeof light);
+            t.mirrored = mirrored, t.closed = closed;
+        }
     } kept_[kKeptPlacements];
     struct KeptEye { // an instance's eye (Transform::place_eye), by instance % kKeptEyes
         uint32_t instance = ~0u, stamp = 0;
