@@ -436,10 +436,15 @@ void Rasterizer::scan_small(const ScreenVertex& v0, const ScreenVertex& v1, cons
     Rgb565* prow = t_.pixels + size_t(y - t_.y0) * width;
     const uint32_t* const colour = palette_->colour;
     const uint32_t zsx = at[0].sx, zsy = at[0].sy, ssx = at[1].sx, ssy = at[1].sy;
+    const bool flat = !clamp && ssx == 0 && ssy == 0; // one shade: one colour (flat_span)
+    const Rgb565 flat_colour = Rgb565(colour[(at[1].row >> kFrac) & 0xFF]);
     uint32_t pixels = 0;
     for (;;) {
         if (end > lo) {
-            if (!clamp) {
+            if (flat) {
+                pixels += flat_span(drow + lo, drow + end, byte_distance(drow + lo, prow + lo), at[0].row + zsx * uint32_t(lo), zsx,
+                                    flat_colour);
+            } else if (!clamp) {
                 pixels += shade_in_place(drow + lo, drow + end, prow + lo, at[0].row + zsx * uint32_t(lo), zsx,
                                          at[1].row + ssx * uint32_t(lo), ssx, colour);
             } else {

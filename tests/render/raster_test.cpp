@@ -159,17 +159,20 @@ TEST(Raster, GouraudReproducesVertexShadesAtVertexPixels) {
     for (int x = 1; x < 62; ++x) EXPECT_LE(f.colour[x], f.colour[x - 1]) << x;
 }
 
-// A larger triangle of one shade (a plane's) takes a span loop of one colour
-// (render/src/scan.cpp, flat_span): the same pixels and depths as the same triangle with its
-// shade stepping, every pixel in the one colour.
+// A triangle of one shade (a plane's) takes a span loop of one colour (render/src/scan.cpp,
+// flat_span), large or small: the same pixels and depths as the same triangle with its shade
+// stepping, every pixel in the one colour.
 TEST(Raster, ATriangleOfOneShadeDrawsTheSameDepthsInOneColour) {
     constexpr uint16_t W = 160, H = 120;
     std::mt19937 rng(11);
-    std::uniform_int_distribution<int> coord(-400, 16 * W + 400), z(0, 65535);
-    int large = 0;
-    for (int trial = 0; trial < 300; ++trial) {
+    std::uniform_int_distribution<int> coord(-400, 16 * W + 400), z(0, 65535), small(-160, 160);
+    int large = 0, little = 0;
+    for (int trial = 0; trial < 600; ++trial) {
         ScreenVertex t[3];
         for (ScreenVertex& p : t) p = {coord(rng), coord(rng) * H / W, uint16_t(z(rng)), 100};
+        if (trial % 2) { // a few pixels across (the small triangles' path)
+            for (int k = 1; k < 3; ++k) t[k].x = t[0].x + small(rng), t[k].y = t[0].y + small(rng);
+        }
         std::vector<Rgb565> flat_px(W * H, 0), shaded_px(W * H, 0);
         std::vector<uint16_t> flat_z(W * H), shaded_z(W * H);
         Rasterizer flat(render::Target{flat_px.data(), flat_z.data(), W, H, 0, H});
@@ -185,9 +188,10 @@ TEST(Raster, ATriangleOfOneShadeDrawsTheSameDepthsInOneColour) {
             ++drawn;
             ASSERT_EQ(flat_px[i], Rgb565(100)) << "trial " << trial << " pixel " << i;
         }
-        large += drawn > 400;
+        large += drawn > 400, little += drawn > 0 && drawn < 20;
     }
-    EXPECT_GT(large, 100) << "most of them larger triangles (their rows in place)";
+    EXPECT_GT(large, 100) << "larger triangles (their rows in place)";
+    EXPECT_GT(little, 50) << "small ones";
 }
 
 TEST(Raster, PalettesScaleTheColourByTheShade) {
