@@ -437,7 +437,7 @@ void Rasterizer::scan_small(const ScreenVertex& v0, const ScreenVertex& v1, cons
     const uint32_t* const colour = palette_->colour;
     const uint32_t zsx = at[0].sx, zsy = at[0].sy, ssx = at[1].sx, ssy = at[1].sy;
     const bool flat = !clamp && ssx == 0 && ssy == 0; // one shade: one colour (flat_span)
-    const Rgb565 flat_colour = Rgb565(colour[(at[1].row >> kFrac) & 0xFF]);
+    const Rgb565 flat_colour = flat ? Rgb565(colour[at[1].row >> kFrac]) : Rgb565(0);
     uint32_t pixels = 0;
     for (;;) {
         if (end > lo) {
