@@ -245,9 +245,8 @@ void Core::pay_whole_frame() {
 // False: nothing to begin. Over the triangles' bound, blocks are made coarser before another comes in.
 bool Core::run_start() {
     const float crowd = detail_.crowd();
-    // (A frame at rest's time: the product's frame budget, or DetailScale's.)
-    const uint32_t budget_us = config_.frame_budget_us ? config_.frame_budget_us : module::DetailScale::kRestFrameUs;
-    const bool over = settled() && detail_.bound_triangles(presenter_.triangles_in_view(), presenter_.in_view_us(), budget_us);
+    const bool over =
+        settled() && detail_.bound_triangles(presenter_.triangles_in_view(), presenter_.in_view_us(), presenter_.frame_budget_us());
     if (detail_.crowd() != crowd) presenter_.redraw(); // (edges of small faces in or out: Painter::set_crowded)
     if (over) return refine_for_view() || swap_piece();
     return swap_piece() || refine_for_view();

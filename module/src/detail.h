@@ -60,10 +60,10 @@ public:
     uint32_t triangle_bound() const;
     // crowd() set from the triangles in view (every instance's, as the last whole frame took
     // them: `in_view`; without proxies, those held if more: blocks come in between whole
-    // frames), against triangle_bound(), and from that frame's time (`frame_us`) against `frame_budget_us`
-    // (0: none): true while either is over (the blocks are then made coarser before any other
-    // comes in).
-    bool bound_triangles(uint32_t in_view, uint32_t frame_us = 0, uint32_t frame_budget_us = 0);
+    // frames), against triangle_bound(), and from that frame's time (`frame_us`) against
+    // `frame_budget_us` (0: none): true while either is over (the blocks are then made coarser
+    // before any other comes in).
+    bool bound_triangles(uint32_t in_view, uint32_t frame_us, uint32_t frame_budget_us);
     // Before the first frame: a model whose faces pass the bound at two triangles each starts
     // crowded (once a model; bound_triangles() does it too).
     void look_first();

@@ -123,9 +123,11 @@ Event Core::pick_at(int16_t x, int16_t y) {
     const auto instances = scene_.instances();
     const int64_t sx = render::subpixel::centre(x), sy = render::subpixel::centre(y);
     float best = 1e30f;
+    const module::ViewBasis basis = camera_.basis(scene_, d.width, d.height); // (once: every instance's)
     for (uint32_t i = 0; i < instances.size(); ++i) {
         if (!scene_.shown(i)) continue;
-        const module::Transform t = camera_.transform(scene_, i, d.width, d.height);
+        module::Transform t = module::Camera::transform(basis, scene_, i);
+        t.place_eye(); // (planes turned away are skipped)
         const module::Rows row{t.cy16 - render::subpixel::start(y), render::subpixel::start(y + 1) - t.cy16};
         const module::Part sh = scene_.part(instances[i].shell);
         for (uint32_t f = sh.first_face; f < sh.first_face + sh.face_count; ++f) {

@@ -399,7 +399,7 @@ void Presenter::run_piece(uint32_t units, uint32_t pass) {
     case Stage::CopyLayer: // the view's faces, kept, into the draw buffer
         set_band();
         copy_layer();
-        job_.edges_owed = job_.all_faces && bands_ == 1 && all_faces_us_ > frame_budget() / 4 * 3;
+        job_.edges_owed = job_.all_faces && bands_ == 1 && all_faces_us_ > frame_budget_us() / 4 * 3;
         job_.restart(job_.edges_owed ? Stage::Overlay : Stage::Edges, 0);
         return;
     case Stage::LayerAll:

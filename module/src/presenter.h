@@ -80,6 +80,8 @@ public:
     void set_crowded(bool on) { crowded_ = on; }
     // Tests: false makes every transform afresh, none kept (what kept ones must draw the same as).
     void set_keep_transforms(bool keep) { keep_ = keep; }
+    // A frame at rest's time: Config::frame_budget_us, else DetailScale's.
+    uint32_t frame_budget_us() const { return budget_us_ ? budget_us_ : DetailScale::kRestFrameUs; }
     // Frames begun from now on draw proxies that stray up to this on the screen (pixels:
     // Painter::set_proxy_error).
     void set_proxy_error(float pixels, float left_out_pixels) { proxy_pixels_ = pixels, left_out_pixels_ = left_out_pixels; }
@@ -235,7 +237,6 @@ private:
     std::atomic<uint32_t> done_{0}; // a flush_done() since take_done() last looked (loads and stores only)
     uint32_t piece_start_ = 0;  // the clock when the current piece began
     uint32_t budget_us_ = 0;    // Config::frame_budget_us
-    uint32_t frame_budget() const { return budget_us_ ? budget_us_ : DetailScale::kRestFrameUs; }
     uint32_t all_faces_us_ = 0; // the last frame of every face's cost, with its edges (owed or not)
     uint32_t owed_us_ = 0;      // the last frame's cost when it owed its edges
     Job job_;
