@@ -101,8 +101,17 @@ void Rasterizer::scan(const ScreenVertex& v0, const ScreenVertex& v1, const Scre
     const bool clamp = stipple_ || needs_clamp(v0, v1, v2, pixel_of(std::max(xmax - xmin, ymax - ymin)));
     constexpr int32_t kNear = 1024 * kPerPixel; // 32-bit edge walks within this of the origin
     const bool near = xmin >= -kNear && xmax <= kNear && ymin >= -kNear && ymax <= kNear;
-    if (near) scan_rows<int32_t>(v0, v1, v2, area2, row0, row1, col0, col1, clamp);
-    else scan_rows<int64_t>(v0, v1, v2, area2, row0, row1, col0, col1, clamp);
+    if (!near) {
+        scan_rows<int64_t, false>(v0, v1, v2, area2, row0, row1, col0, col1, clamp);
+    } else if (clamp || col1 - col0 >= row1 - row0) {
+        scan_rows<int32_t, false>(v0, v1, v2, area2, row0, row1, col0, col1, clamp);
+    } else {
+        // Taller than wide (in the band): scanned a column at a time, what a line costs besides
+        // its pixels paid for fewer lines. The same pixels, depths and shades: the edge
+        // functions are the screen's (ties included), the attributes a function of the pixel.
+        const auto swapped = [](const ScreenVertex& v) { return ScreenVertex{v.y, v.x, v.z, v.shade}; };
+        scan_rows<int32_t, true>(swapped(v0), swapped(v2), swapped(v1), area2, col0, col1, row0, row1, false);
+    }
 }
 
 } // namespace facet::render

@@ -27,9 +27,12 @@ struct EdgeWalk {
     enum class Side : uint8_t { Left, Right, Flat } side;
     T q = 0, r = 0, s = 1, dq = 0, dr = 0; // Left/Right: bound = t/s; Flat: q = k
 
-    void start(const ScreenVertex& p, const ScreenVertex& e, int64_t sy) {
+    // `transposed`: p and e are a triangle's vertices with x and y swapped and its edge reversed
+    // (Rasterizer::scan's columns), whose function is the screen edge's: the tie goes the
+    // screen edge's way, bias 0 where that edge goes up or is horizontal going right.
+    void start(const ScreenVertex& p, const ScreenVertex& e, int64_t sy, bool transposed) {
         const int64_t dx = e.x - p.x, dy = e.y - p.y;
-        const int64_t bias = (dy < 0 || (dy == 0 && dx > 0)) ? 0 : 1;
+        const int64_t bias = transposed ? ((dx > 0 || (dx == 0 && dy < 0)) ? 0 : 1) : ((dy < 0 || (dy == 0 && dx > 0)) ? 0 : 1);
         const int64_t k = dx * (sy - p.y) + dy * p.x - bias; // inside: -dy*sx + k >= 0
         int64_t t, step, s;
         if (dy == 0) {
@@ -73,14 +76,15 @@ struct EdgeWalk {
 
 namespace {
 
-// The common case of a span: pixels in place, values within range (no clamps). z and s are
-// the depth and shade at the first pixel, d the first pixel's depth and d + to_out (bytes)
-// its colour: one pointer to step, two pixels a turn. Returns the pixels depth-tested (what a
-// span costs; counting those that pass would cost an instruction a pixel).
-[[gnu::always_inline]] inline uint32_t shade_span(uint16_t* d, uint16_t* end, uintptr_t to_out, uint32_t z, uint32_t zs,
-                                                  uint32_t s, uint32_t ss, const uint32_t* colour) {
+// The common case of a span: n pixels in place, `step` entries apart (1 along a row, the
+// width down a column), values within range (no clamps). z and s are the depth and shade at
+// the first pixel, d the first pixel's depth and d + to_out (bytes) its colour: one pointer to
+// step, two pixels a turn. Returns the pixels depth-tested (what a span costs; counting those
+// that pass would cost an instruction a pixel).
+[[gnu::always_inline]] inline uint32_t shade_span(uint16_t* d, uint32_t n, ptrdiff_t step, uintptr_t to_out, uint32_t z,
+                                                  uint32_t zs, uint32_t s, uint32_t ss, const uint32_t* colour) {
     static_assert(sizeof(Rgb565) == sizeof(uint16_t));
-    const uint32_t n = uint32_t(end - d);
+    uint16_t* const end = d + ptrdiff_t(n) * step;
     auto pixel = [&](uint16_t* at, uint32_t zz, uint32_t sh) {
         const uint32_t zv = zz >> kFrac; // within [0, 65535] on this path (no clamps needed)
         if (zv < *at) {
@@ -90,12 +94,12 @@ namespace {
     };
     if (n & 1) {
         pixel(d, z, s);
-        ++d, z += zs, s += ss;
+        d += step, z += zs, s += ss;
     }
-    for (; d < end; d += 2) {
+    for (; d != end; d += 2 * step) {
         pixel(d, z, s);
         z += zs, s += ss;
-        pixel(d + 1, z, s);
+        pixel(d + step, z, s);
         z += zs, s += ss;
     }
     return n;
@@ -103,9 +107,9 @@ namespace {
 
 // The same span with one colour (a triangle whose shade does not change across it: a plane's,
 // Gouraud from equal normals): the same pixels, without stepping the shade.
-[[gnu::always_inline]] inline uint32_t flat_span(uint16_t* d, uint16_t* end, uintptr_t to_out, uint32_t z, uint32_t zs,
-                                                 Rgb565 c) {
-    const uint32_t n = uint32_t(end - d);
+[[gnu::always_inline]] inline uint32_t flat_span(uint16_t* d, uint32_t n, ptrdiff_t step, uintptr_t to_out, uint32_t z,
+                                                 uint32_t zs, Rgb565 c) {
+    uint16_t* const end = d + ptrdiff_t(n) * step;
     auto pixel = [&](uint16_t* at, uint32_t zz) {
         const uint32_t zv = zz >> kFrac;
         if (zv < *at) {
@@ -115,11 +119,11 @@ namespace {
     };
     if (n & 1) {
         pixel(d, z);
-        ++d, z += zs;
+        d += step, z += zs;
     }
-    for (; d < end; d += 2) {
+    for (; d != end; d += 2 * step) {
         pixel(d, z);
-        pixel(d + 1, z + zs);
+        pixel(d + step, z + zs);
         z += 2 * zs;
     }
     return n;
@@ -129,13 +133,15 @@ inline uintptr_t byte_distance(const uint16_t* from, const Rgb565* to) {
     return reinterpret_cast<uintptr_t>(to) - reinterpret_cast<uintptr_t>(from);
 }
 
-[[gnu::always_inline]] inline uint32_t shade_in_place(uint16_t* d, uint16_t* end, Rgb565* out, uint32_t z,
-                                                      uint32_t zs, uint32_t s, uint32_t ss, const uint32_t* colour) {
-    return shade_span(d, end, byte_distance(d, out), z, zs, s, ss, colour);
+// A row's n pixels from d (depth) and out (colour).
+[[gnu::always_inline]] inline uint32_t shade_in_place(uint16_t* d, uint32_t n, Rgb565* out, uint32_t z, uint32_t zs,
+                                                      uint32_t s, uint32_t ss, const uint32_t* colour) {
+    return shade_span(d, n, 1, byte_distance(d, out), z, zs, s, ss, colour);
 }
 
-// One part of a larger triangle (rows between two vertices), pixels in place: the exact edge
-// walks of its left and right edges, and depth and shade at each row's column 0.
+// One part of a larger triangle (lines between two vertices: rows, or columns where it is
+// scanned transposed), pixels in place: the exact edge walks of its left and right edges, and
+// depth and shade at each line's position 0.
 struct InPlaceRows {
     int32_t lq, lr, ls, ldq, ldr; // left edge: first column first_centre_from(q + (r != 0))
     int32_t rq, rr, rs, rdq, rdr; // right edge: last column last_centre_to(q)
@@ -143,15 +149,21 @@ struct InPlaceRows {
 };
 
 // The hot loop of larger triangles, apart from the rest so it has the registers to itself:
-// rows a chunk at a time, first their columns (the two edge walks alone in registers), then
-// their pixels (a row's span is often a few pixels: slivers, zoomed views, so what a row
-// costs besides its pixels matters as much). Returns the pixels depth-tested.
-[[gnu::noinline]] uint32_t rows_in_place(InPlaceRows& w, int32_t rows, int32_t col0, int32_t col1, uint16_t* depth,
-                                          Rgb565* fb, uint32_t width, const uint32_t* colour) {
+// lines a chunk at a time, first their spans (the two edge walks alone in registers), then
+// their pixels (a line's span is often a few pixels: slivers, zoomed views, so what a line
+// costs besides its pixels matters as much). Rows (kColumns false): `depth` is the first row's
+// column 0, a span's pixels adjacent. Columns (a tall triangle scanned transposed): `depth` is
+// the first column's entry in the band's first row, screen row `origin`; a span's pixels are
+// `width` apart. Returns the pixels depth-tested.
+template <bool kColumns>
+[[gnu::noinline]] uint32_t rows_in_place(InPlaceRows& w, int32_t rows, int32_t col0, int32_t col1, int32_t origin,
+                                          uint16_t* depth, Rgb565* fb, uint32_t width, const uint32_t* colour) {
     constexpr int32_t kChunk = 32;
     int32_t span[2 * kChunk];
     uint32_t tested = 0;
     const uintptr_t to_out = byte_distance(depth, fb);
+    const ptrdiff_t step = kColumns ? ptrdiff_t(width) : 1, line_step = kColumns ? 1 : ptrdiff_t(width);
+    if constexpr (!kColumns) origin = 0;
     while (rows > 0) {
         const int32_t n = rows < kChunk ? rows : kChunk;
         rows -= n;
@@ -174,16 +186,16 @@ struct InPlaceRows {
         const uint32_t zx = w.zx, zy = w.zy, sx = w.sx, sy = w.sy;
         if (sx == 0 && sy == 0) { // one shade: one colour
             const Rgb565 c = Rgb565(colour[srow >> kFrac]);
-            for (const int32_t* at = span; at < span + 2 * n; at += 2, depth += width, zrow += zy) {
+            for (const int32_t* at = span; at < span + 2 * n; at += 2, depth += line_step, zrow += zy) {
                 const int32_t lo = at[0], hi = at[1];
-                if (lo <= hi) tested += flat_span(depth + lo, depth + hi + 1, to_out, zrow + zx * uint32_t(lo), zx, c);
+                if (lo <= hi) tested += flat_span(depth + (lo - origin) * step, uint32_t(hi - lo + 1), step, to_out, zrow + zx * uint32_t(lo), zx, c);
             }
         } else {
-            for (const int32_t* at = span; at < span + 2 * n; at += 2, depth += width, zrow += zy, srow += sy) {
+            for (const int32_t* at = span; at < span + 2 * n; at += 2, depth += line_step, zrow += zy, srow += sy) {
                 const int32_t lo = at[0], hi = at[1];
                 if (lo <= hi) {
-                    tested += shade_span(depth + lo, depth + hi + 1, to_out, zrow + zx * uint32_t(lo), zx, srow + sx * uint32_t(lo),
-                                         sx, colour);
+                    tested += shade_span(depth + (lo - origin) * step, uint32_t(hi - lo + 1), step, to_out, zrow + zx * uint32_t(lo), zx,
+                                         srow + sx * uint32_t(lo), sx, colour);
                 }
             }
         }
@@ -293,14 +305,15 @@ struct Rasterizer::Interp {
 }
 
 // The rows of a larger triangle: each row's span from the three edge walks.
-template <typename T>
+template <typename T, bool kColumns>
 void Rasterizer::scan_rows(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2, int64_t area2,
                              int32_t row0, int32_t row1, int32_t col0, int32_t col1, bool clamp) {
+    static_assert(!kColumns || sizeof(T) == 4, "columns take the 32-bit walks alone");
     const int64_t sy0 = int64_t(row0) * kPerPixel + kHalfPixel; // the first row's centre
     EdgeWalk<T> edges[3];
-    edges[0].start(v1, v2, sy0);
-    edges[1].start(v2, v0, sy0);
-    edges[2].start(v0, v1, sy0);
+    edges[0].start(v1, v2, sy0, kColumns);
+    edges[1].start(v2, v0, sy0, kColumns);
+    edges[2].start(v0, v1, sy0, kColumns);
     Interp at[kAttributes];
     gradients(v0, v1, v2, area2, int32_t(sy0), at);
 
@@ -355,13 +368,14 @@ void Rasterizer::scan_rows(const ScreenVertex& v0, const ScreenVertex& v1, const
         EdgeWalk<T>& L = long_left ? lng : oth;
         EdgeWalk<T>& R = long_left ? oth : lng;
         if constexpr (sizeof(T) == 4) {
-            if (!clamp) {
+            if (kColumns || !clamp) {
                 const int32_t rows = end - y + 1;
                 if (rows > 0) {
                     InPlaceRows w{L.q, L.r, L.s, L.dq, L.dr, R.q, R.r, R.s, R.dq, R.dr, zrow, zx, zy, srow, sx, sy};
-                    const size_t at_row = size_t(y - t_.y0) * t_.width;
-                    stats.pixels += rows_in_place(w, rows, col0, col1, t_.depth + at_row, t_.pixels + at_row, t_.width,
-                                                  palette_->colour);
+                    // (Columns: line y is screen column y, from the band's first row.)
+                    const size_t at = kColumns ? size_t(y) : size_t(y - t_.y0) * t_.width;
+                    stats.pixels += rows_in_place<kColumns>(w, rows, col0, col1, int32_t(t_.y0), t_.depth + at, t_.pixels + at,
+                                                            t_.width, palette_->colour);
                     L.q = w.lq, L.r = w.lr, R.q = w.rq, R.r = w.rr, zrow = w.zrow, srow = w.srow;
                     y = end + 1;
                 }
@@ -371,7 +385,8 @@ void Rasterizer::scan_rows(const ScreenVertex& v0, const ScreenVertex& v1, const
                 continue;
             }
         }
-        // The walks in locals (registers, as far as the core has them).
+        // The walks in locals (registers, as far as the core has them): 64-bit walks, and
+        // attributes clamped (a row at a time, never transposed).
         T lq = L.q, lr = L.r, rq = R.q, rr = R.r;
         const T ls = L.s, ldq = L.dq, ldr = L.dr, rs = R.s, rdq = R.dq, rdr = R.dr;
         uint16_t* const depth = t_.depth;
@@ -391,7 +406,7 @@ void Rasterizer::scan_rows(const ScreenVertex& v0, const ScreenVertex& v1, const
             if (lo > hi) continue;
             if (!clamp) {
                 const size_t row = size_t(y - t_.y0) * width;
-                pixels += shade_in_place(depth + row + lo, depth + row + hi + 1, fb + row + lo, zrow + zx * uint32_t(lo), zx,
+                pixels += shade_in_place(depth + row + lo, uint32_t(hi - lo + 1), fb + row + lo, zrow + zx * uint32_t(lo), zx,
                                          srow + sx * uint32_t(lo), sx, colour);
                 ++spans;
             } else {
@@ -442,10 +457,10 @@ void Rasterizer::scan_small(const ScreenVertex& v0, const ScreenVertex& v1, cons
     for (;;) {
         if (end > lo) {
             if (flat) {
-                pixels += flat_span(drow + lo, drow + end, byte_distance(drow + lo, prow + lo), at[0].row + zsx * uint32_t(lo), zsx,
-                                    flat_colour);
+                pixels += flat_span(drow + lo, uint32_t(end - lo), 1, byte_distance(drow + lo, prow + lo),
+                                    at[0].row + zsx * uint32_t(lo), zsx, flat_colour);
             } else if (!clamp) {
-                pixels += shade_in_place(drow + lo, drow + end, prow + lo, at[0].row + zsx * uint32_t(lo), zsx,
+                pixels += shade_in_place(drow + lo, uint32_t(end - lo), prow + lo, at[0].row + zsx * uint32_t(lo), zsx,
                                          at[1].row + ssx * uint32_t(lo), ssx, colour);
             } else {
                 shade(y, lo, end - 1, at, clamp);
@@ -470,7 +485,7 @@ void Rasterizer::shade(int32_t y, int32_t lo, int32_t hi, const Interp* at, bool
     Rgb565* const line = t_.pixels + row;
     const uint32_t* colour = palette_->colour;
     if (!clamp) {
-        stats.pixels += shade_in_place(drow + lo, drow + hi + 1, line + lo, z, zs, s, ss, colour);
+        stats.pixels += shade_in_place(drow + lo, uint32_t(hi - lo + 1), line + lo, z, zs, s, ss, colour);
         ++stats.spans;
         return;
     }
@@ -486,9 +501,11 @@ void Rasterizer::shade(int32_t y, int32_t lo, int32_t hi, const Interp* at, bool
     ++stats.spans;
 }
 
-template void Rasterizer::scan_rows<int32_t>(const ScreenVertex&, const ScreenVertex&, const ScreenVertex&, int64_t, int32_t,
-                                             int32_t, int32_t, int32_t, bool);
-template void Rasterizer::scan_rows<int64_t>(const ScreenVertex&, const ScreenVertex&, const ScreenVertex&, int64_t, int32_t,
-                                             int32_t, int32_t, int32_t, bool);
+template void Rasterizer::scan_rows<int32_t, false>(const ScreenVertex&, const ScreenVertex&, const ScreenVertex&, int64_t,
+                                                    int32_t, int32_t, int32_t, int32_t, bool);
+template void Rasterizer::scan_rows<int32_t, true>(const ScreenVertex&, const ScreenVertex&, const ScreenVertex&, int64_t,
+                                                   int32_t, int32_t, int32_t, int32_t, bool);
+template void Rasterizer::scan_rows<int64_t, false>(const ScreenVertex&, const ScreenVertex&, const ScreenVertex&, int64_t,
+                                                    int32_t, int32_t, int32_t, int32_t, bool);
 
 } // namespace facet::render

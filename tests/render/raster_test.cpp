@@ -194,6 +194,46 @@ TEST(Raster, ATriangleOfOneShadeDrawsTheSameDepthsInOneColour) {
     EXPECT_GT(little, 50) << "small ones";
 }
 
+TEST(Raster, ATallTriangleDrawsInColumnsWhatItDrawsInRows) {
+    // A triangle taller than wide is scanned a column at a time; in bands of one row it is
+    // always scanned in rows. Slivers and wider ones, shaded and of one shade, on and off the
+    // screen's edges, vertices on pixel centres and edges on their rows and columns (ties):
+    // the same depths and colours both ways.
+    constexpr uint16_t W = 96, H = 120;
+    std::mt19937 rng(29);
+    std::uniform_int_distribution<int> x0(-100, 16 * W + 100), y0(-400, 16 * H / 3), width(1, 16 * 30),
+        height(16 * 25, 16 * H + 400), z(200, 65000), shade(20, 230);
+    int columns = 0;
+    for (int trial = 0; trial < 500; ++trial) {
+        const int x = x0(rng), y = y0(rng), wd = width(rng) / (trial % 3 == 1 ? 8 : 1); // (a third slivers)
+        ScreenVertex t[3] = {{x, y, uint16_t(z(rng)), uint8_t(shade(rng))},
+                             {x + wd, y + height(rng) / 2, uint16_t(z(rng)), uint8_t(shade(rng))},
+                             {x + width(rng) - 16 * 15, y + height(rng), uint16_t(z(rng)), uint8_t(shade(rng))}};
+        if (trial % 4 == 0) {
+            for (ScreenVertex& p : t) p.x = (p.x / 16) * 16 + 8, p.y = (p.y / 16) * 16 + 8; // on pixel centres
+        }
+        if (trial % 5 == 0) t[2].x = t[0].x;          // a vertical edge
+        if (trial % 7 == 0) t[1].shade = t[2].shade = t[0].shade; // one shade
+        std::vector<Rgb565> whole(W * H, 0), rows(W * H, 0), band(W);
+        std::vector<uint16_t> whole_z(W * H), rows_z(W * H), band_z(W);
+        Rasterizer all(render::Target{whole.data(), whole_z.data(), W, H, 0, H});
+        all.clear_depth();
+        ASSERT_EQ(all.draw(t[0], t[1], t[2], ramp(), render::Cull::None), Status::Ok);
+        for (uint16_t r = 0; r < H; ++r) {
+            Rasterizer one(render::Target{band.data(), band_z.data(), W, H, r, 1});
+            one.clear_depth();
+            std::fill(band.begin(), band.end(), 0);
+            ASSERT_EQ(one.draw(t[0], t[1], t[2], ramp(), render::Cull::None), Status::Ok);
+            std::copy(band.begin(), band.end(), rows.begin() + size_t(r) * W);
+            std::copy(band_z.begin(), band_z.end(), rows_z.begin() + size_t(r) * W);
+        }
+        ASSERT_EQ(whole_z, rows_z) << "trial " << trial;
+        ASSERT_EQ(whole, rows) << "trial " << trial;
+        columns += std::count_if(whole_z.begin(), whole_z.end(), [](uint16_t d) { return d != 0xFFFF; }) > 0;
+    }
+    EXPECT_GT(columns, 300) << "triangles that drew";
+}
+
 TEST(Raster, PalettesScaleTheColourByTheShade) {
     render::Palette p;
     render::make_palette(p, 255, 128, 64);

@@ -125,7 +125,9 @@ private:
     struct Interp; // one interpolated attribute (raster.cpp)
     // A larger triangle (positive area) over its box's pixels in the band.
     void scan(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2, int64_t area2, const detail::PixelBox& box);
-    template <typename T>
+    // Rows of the triangle; kColumns: its columns (v0, v1, v2 with x and y swapped, two of them
+    // swapped back to a positive area; rows and columns swapped likewise).
+    template <typename T, bool kColumns>
     void scan_rows(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2, int64_t area2, int32_t row0,
                    int32_t row1, int32_t col0, int32_t col1, bool clamp);
     void scan_small(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2, int64_t area2, int32_t row0,
