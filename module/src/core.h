@@ -73,6 +73,8 @@ public:
     const module::Camera& camera() const { return camera_; }
     const module::Scene& scene() const { return scene_; }
     const module::Detail& detail_level() const { return detail_; } // (tests)
+    const module::Scheduler& scheduler() const { return scheduler_; } // (tests)
+    const Config& config() const { return config_; }                  // (tests)
     const Display& display() const { return config_.display; }
     const module::Overlay& overlay() const { return presenter_.overlay(); }
     module::Painter& painter() { return painter_; }

@@ -40,17 +40,17 @@ bool FaceJudge::update() {
     if (radius_ == scene_.radius() && section == section_ && same_view(camera_.view(), camera_view_)) return false;
     view_ = camera_.sphere_view(scene_, config_.display.width, config_.display.height);
     camera_view_ = camera_.view(), radius_ = scene_.radius(), section_ = section;
+    ++views_;
     return true;
 }
 
-bool FaceJudge::shows(uint32_t f) {
+void FaceJudge::take_part(uint32_t f) {
     const Scene& scene = scene_;
-    const FaceInfo& F = scene.face(f);
-    if (F.radius <= 0 || !(config_.screen_error_px > 0)) return true; // nothing to bound it by; or the view chooses no detail
-    update();
     const uint32_t part = scene.shell_of(f);
-    const auto instances = scene.instances();
+    const Part P = scene.part(part);
+    part_first_ = P.first_face, part_end_ = P.first_face + P.face_count, part_closed_ = P.closed;
     if (part != part_) { // its instances (the first few; more are looked up each time)
+        const auto instances = scene.instances();
         part_ = part, count_ = 0;
         for (uint32_t i = 0; i < instances.size(); ++i) {
             if (instances[i].shell != part) continue;
@@ -58,6 +58,45 @@ bool FaceJudge::shows(uint32_t f) {
             ++count_;
         }
     }
+    part_shown_ = !by_parts_ || part_shows(part), part_view_ = views_;
+}
+
+bool FaceJudge::part_shows(uint32_t part) const {
+    int32_t lo[3], hi[3];
+    if (!scene_.part_box(part, lo, hi)) return true;
+    // A face's sphere (around the box of its samples or of its mesh, inside the part's box)
+    // has its centre's offset from the box's centre and its radius summing to at most the
+    // box's half extents summed: that, with room for the rounding of both spheres.
+    int64_t half = 0;
+    float c[3];
+    const float u = scene_.unit();
+    for (int k = 0; k < 3; ++k) half += (int64_t(hi[k]) - lo[k]) / 2 + 1, c[k] = 0.5f * (float(lo[k]) + float(hi[k])) * u;
+    const float r = (float(half) * (1.0f + 1.0f / 32) + 16.0f) * u;
+    auto shown = [&](const pack::Instance& inst) {
+        float w[3];
+        place(inst.m, c, w);
+        return view_.pixels(w, r) >= kMinPixels;
+    };
+    const auto instances = scene_.instances();
+    if (count_ <= kInstances) {
+        for (uint32_t k = 0; k < count_; ++k)
+            if (shown(instances[instances_[k]])) return true;
+        return false;
+    }
+    for (const pack::Instance& inst : instances)
+        if (inst.shell == part && shown(inst)) return true;
+    return false;
+}
+
+bool FaceJudge::shows(uint32_t f) {
+    const Scene& scene = scene_;
+    const FaceInfo& F = scene.face(f);
+    if (F.radius <= 0 || !(config_.screen_error_px > 0)) return true; // nothing to bound it by; or the view chooses no detail
+    update();
+    if (part_view_ != views_ || !(f >= part_first_ && f < part_end_)) take_part(f);
+    if (!part_shown_) return false;
+    const uint32_t part = part_;
+    const auto instances = scene.instances();
     const float u = scene.unit();
     const float p[3] = {float(F.centre[0]) * u, float(F.centre[1]) * u, float(F.centre[2]) * u}, r = float(F.radius) * u;
     // A closed part's face turned away from the eye shows nothing unless a section opens the
@@ -67,7 +106,7 @@ bool FaceJudge::shows(uint32_t f) {
     // fraction of the tests of which way a face looks (those, and their set-up, only for a face
     // that is large enough somewhere).
     float on_plane[3], normal[3];
-    const bool closed = !section_ && scene.part(part).closed;
+    const bool closed = !section_ && part_closed_;
     enum class Facing : uint8_t { Unknown, Plane, Round, Neither } facing = closed ? Facing::Unknown : Facing::Neither;
     RoundFace round;
     const float sag = DetailScale::kBlockCoarsest * scheduler_.tolerance(); // (its mesh's chords: at most its block's tolerance inside it)

@@ -3,9 +3,11 @@
 // shows it at least kMinPixels across (its sphere, bounded by its edges' samples, at its nearest
 // point), on the screen, and (a closed part's plane, cylinder or cone face, no section on)
 // facing the eye. The rest wait (FaceState::Deferred), drawn by their edges, and are judged
-// again once the view changes. Its own state: the spheres' view from the camera (taken again
-// when the view, the section or the model's radius changed) and the instances of the part last
-// asked about.
+// again once the view changes. A part whose every instance is off the screen or under
+// kMinPixels is judged once for all its faces (a blocked pack's: its index has the part's box).
+// Its own state: the spheres' view from the camera (taken again when the view, the section or
+// the model's radius changed) and the part last asked about: its faces, its instances, and
+// whether it shows at all in this view.
 #include "camera.h"
 #include "painter.h"
 #include "scene.h"
@@ -28,12 +30,18 @@ public:
     static bool wants(void* self, uint32_t f);
     // The spheres' view from the camera's, if it moved: true then.
     bool update();
+    // Parts judged first (the default), or every face alone (tests: the same verdicts).
+    void judge_parts(bool on) { by_parts_ = on, ++views_; }
     // Judged afresh (a new model).
-    void reset() { part_ = kNone, radius_ = 0; }
+    void reset() { part_ = kNone, part_end_ = 0, radius_ = 0, ++views_; }
     const SphereView& view() const { return view_; }
 
 private:
     bool shows(uint32_t f); // wants()'s judgement
+    void take_part(uint32_t f); // the part of face f: its faces, instances and whether it shows
+    // Whether some instance shows the part at least kMinPixels across: its box's sphere, wide
+    // enough to hold every face's sphere. True where its box is not known.
+    bool part_shows(uint32_t part) const;
     const Scene& scene_;
     const Camera& camera_;
     const Scheduler& scheduler_;
@@ -44,6 +52,10 @@ private:
     bool section_ = false; // a section was on: every back face may show
     static constexpr uint32_t kInstances = 8; // a part's instances kept for the next of its faces
     uint32_t part_ = kNone, count_ = 0, instances_[kInstances] = {};
+    uint32_t part_first_ = 0, part_end_ = 0; // its faces
+    bool part_closed_ = false, part_shown_ = true;
+    uint32_t views_ = 0, part_view_ = 0; // views taken (update()); the view the part was judged in
+    bool by_parts_ = true;
 };
 
 } // namespace facet::module

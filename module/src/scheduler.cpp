@@ -18,7 +18,7 @@ void Scheduler::begin_pass(float tolerance) {
     face_ = 0;
     in_face_ = false;
     refine_block_ = kNone;
-    sweep_ = revisit_ = false;
+    sweep_ = revisit_ = room_awaited_ = false;
     scene_.samples().used = 0;
     for (uint32_t b = 0; b < scene_.block_count(); ++b) {
         Block& block = scene_.block(b);
@@ -174,7 +174,7 @@ void Scheduler::revisit() {
     if (!started_ || stage_ == Stage::Sampling) return; // the pass's faces meet the view as it is then
     if (stage_ == Stage::Idle) {
         if (scene_.totals().deferred == 0) return;
-        stage_ = Stage::Faces, sweep_ = true, in_face_ = false;
+        stage_ = Stage::Faces, sweep_ = true, in_face_ = false, room_awaited_ = false;
         all_blocks();
         return;
     }
@@ -249,6 +249,7 @@ void Scheduler::finish_face(const Result& done) {
             r = Result::fail(Status::Full, "no room for the face's finer mesh: kept at its previous level", {"face", face_});
         } else if (later) {
             r = Result::fail(Status::Full, "no room in the mesh: left to its edges until there is", {"face", face_});
+            room_awaited_ = true;
             scene_.defer(face_); // (a face of a block just brought in was pending)
         } else {
             scene_.evict(face_);
@@ -276,8 +277,11 @@ void Scheduler::end_faces() {
     const bool was_refine = refining(), was_sweep = sweep_ || was_refine;
     if (was_refine) refine_block_ = kNone, ++refined_;
     stage_ = Stage::Idle, sweep_ = false;
-    // A sweep follows a view change, and a refinement (what it freed may bring faces in).
-    if ((revisit_ || was_refine) && t.deferred > 0) stage_ = Stage::Faces, sweep_ = true, all_blocks();
+    // A sweep follows a view change, and a refinement while faces wait for room (what it freed
+    // may bring them in). (A block refined or brought in judged its own faces for the view.)
+    if ((revisit_ || (was_refine && room_awaited_)) && t.deferred > 0) {
+        stage_ = Stage::Faces, sweep_ = true, room_awaited_ = false, all_blocks();
+    }
     revisit_ = false;
     if (was_sweep) return;
     Event e{};

@@ -145,6 +145,7 @@ private:
     uint32_t refined_ = 0;
     bool sweep_ = false;       // the faces again after the pass: only the deferred ones
     bool revisit_ = false;     // the view changed during the pass or sweep: a sweep (again) after it
+    bool room_awaited_ = false; // a face the view wants was left to its edges for want of room in the mesh
     geom::FaceJob job_;
 };
 

@@ -1,10 +1,12 @@
 // Culling by parts (issue 25: a frame's cost follows the screen): a part off the view is skipped
 // whole, one inside it spares its faces their own tests, and one a few pixels across is drawn as
-// its box, all by the part's sphere (its box in the index).
+// its box, all by the part's sphere (its box in the index); a part off the view or too small has
+// none of its faces tessellated, judged once.
 #include "app.h"
 #include "assembly.h"
 
 #include <cmath>
+#include <random>
 #include <vector>
 
 using namespace facet;
@@ -82,3 +84,45 @@ TEST(Culling, APartAFewPixelsAcrossIsDrawnAsItsBox) {
     EXPECT_EQ(box_pixels(), at_fit);
 }
 
+
+// The faces a pass or a sweep tessellates (FaceJudge): a part whose sphere, wide enough to hold
+// its faces' spheres, is off the screen or under the faces' least size in every instance is
+// judged once for all its faces. The same verdicts as each face judged alone, for views from
+// afar, close up (the eye among and inside the parts, parts behind it), turned and panned, in
+// perspective and parallel.
+TEST(Culling, APartJudgedWholeGivesItsFacesTheVerdictsEachWouldHaveAlone) {
+    const Bytes whole = assembly();
+    Pack p;
+    ASSERT_TRUE(p.open(whole.data(), uint32_t(whole.size())).ok());
+    Bytes file;
+    std::string error;
+    ASSERT_TRUE(make_blocked(p, {}, {1, BlockStore::Plain}, file, error)) << error; // (each shell's own box)
+    App app;
+    app.w = 320, app.h = 240;
+    ASSERT_TRUE(app.create().ok());
+    ASSERT_TRUE(app.load(file).ok());
+    app.run();
+    Core& core = *static_cast<Core*>(app.v);
+    const module::Scene& scene = core.scene();
+    module::FaceJudge by_parts(scene, core.camera(), core.scheduler(), core.config());
+    module::FaceJudge alone(scene, core.camera(), core.scheduler(), core.config());
+    alone.judge_parts(false);
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> yaw(-180, 180), pitch(-80, 80), pan(-300, 300);
+    const float dollies[] = {0.05f, 0.2f, 0.5f, 1, 3, 20};
+    uint32_t wanted = 0, left = 0;
+    for (int view = 0; view < 60; ++view) {
+        Orbit o;
+        o.yaw_deg = yaw(rng), o.pitch_deg = pitch(rng), o.dolly = dollies[view % 6], o.parallel = view % 7 == 3;
+        if (view % 3) o.pan_mm[0] = pan(rng), o.pan_mm[1] = pan(rng);
+        ASSERT_TRUE(core.set_orbit(o).ok());
+        for (uint32_t f = 0; f < scene.face_count(); ++f) {
+            if (!(scene.face(f).radius > 0)) continue;
+            const bool a = module::FaceJudge::wants(&alone, f);
+            ASSERT_EQ(module::FaceJudge::wants(&by_parts, f), a) << "view " << view << " face " << f;
+            (a ? wanted : left) += 1;
+        }
+    }
+    EXPECT_GT(wanted, 200u);
+    EXPECT_GT(left, 200u);
+}
