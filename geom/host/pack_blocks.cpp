@@ -2,6 +2,7 @@
 
 #include "pack_io.h"
 #include "pack_writer.h"
+#include "groups.h"
 #include "proxies.h"
 
 #include "core/format.h"
@@ -161,6 +162,46 @@ bool same_mesh(const Proxy& a, const Proxy& b) {
            std::memcmp(a.points.data(), b.points.data(), a.points.size() * sizeof(Vec3)) == 0;
 }
 
+// Proxy x's record, its corners quantized over `box` and its triangles (with the triangle across
+// each side: the one with the same side the other way, the first found where a collapse left
+// three on one side) appended to the pools.
+pack::ProxyPart proxy_record(const Pack& whole, const Proxy& x, const PartBox& box, std::vector<pack::ProxyVertex>& corners,
+                             std::vector<pack::ProxyTriangle>& triangles) {
+    pack::ProxyPart r{uint32_t(corners.size()), uint32_t(x.points.size()), uint32_t(triangles.size()), uint32_t(x.triangles.size() / 3),
+                      x.error_mm, {0, 0, 0, 0}};
+    if (x.colour < whole.colours().size()) r.colour = whole.colours()[x.colour], r.colour.a = 255;
+    if (x.points.size() > 65535) { // (never: proxies are small)
+        r.vertex_count = r.triangle_count = 0;
+        return r;
+    }
+    for (uint32_t v = 0; v < r.vertex_count; ++v) {
+        pack::ProxyVertex q{};
+        const float p[3] = {x.points[v].x, x.points[v].y, x.points[v].z};
+        for (int k = 0; k < 3; ++k) {
+            const float e = box.max[k] - box.min[k];
+            const float f = e > 0 ? (p[k] - box.min[k]) / e : 0.0f;
+            q.q[k] = uint16_t(std::lround(std::clamp(f, 0.0f, 1.0f) * 65535.0f));
+        }
+        corners.push_back(q);
+    }
+    std::map<std::pair<uint32_t, uint32_t>, uint32_t> side_of;
+    for (uint32_t t = 0; t < r.triangle_count; ++t)
+        for (int k = 0; k < 3; ++k) side_of.try_emplace({x.triangles[3 * t + k], x.triangles[3 * t + (k + 1) % 3]}, t);
+    for (uint32_t t = 0; t < r.triangle_count; ++t) {
+        pack::ProxyTriangle tri{};
+        for (int k = 0; k < 3; ++k) tri.v[k] = uint16_t(x.triangles[3 * t + k]);
+        for (int k = 0; k < 3; ++k) {
+            const auto other = side_of.find({x.triangles[3 * t + (k + 1) % 3], x.triangles[3 * t + k]});
+            tri.across[k] = other != side_of.end() && other->second < pack::kNoProxyNeighbour ? uint16_t(other->second)
+                                                                                               : pack::kNoProxyNeighbour;
+        }
+        const float n[3] = {x.normals[t].x, x.normals[t].y, x.normals[t].z};
+        for (int k = 0; k < 3; ++k) tri.n[k] = int8_t(std::lround(std::clamp(n[k], -1.0f, 1.0f) * 127.0f));
+        triangles.push_back(tri);
+    }
+    return r;
+}
+
 } // namespace
 
 bool make_blocked(const Pack& whole, const std::vector<PartBox>& given, const BlockOptions& options, std::vector<uint8_t>& out,
@@ -229,7 +270,9 @@ bool make_blocked(const Pack& whole, const std::vector<PartBox>& given, const Bl
     std::vector<Instance> instances(whole.instances().begin(), whole.instances().end());
     const size_t levels = options.proxies && shells ? options.proxies->size() / shells : 0;
     const bool proxied = levels >= 1 && levels <= pack::kMostProxyLevels && options.proxies->size() == levels * shells;
-    const uint32_t kSections = 6 + (whole.needs() ? 1 : 0) + (proxied ? 3 : 0);
+    std::vector<ProxyGroup> near; // groups of instances near each other (groups.h)
+    if (proxied && !options.group_caps.empty() && !make_groups(whole, boxes, *options.proxies, levels, options.group_caps, near, error)) return false;
+    const uint32_t kSections = 6 + (whole.needs() ? 1 : 0) + (proxied ? 3 : 0) + (near.empty() ? 0 : 4);
     out.assign(sizeof(IndexHeader) + kSections * sizeof(SectionEntry), 0);
     std::vector<SectionEntry> table;
     append(out, table, IndexSectionId::Blocks, blocks); // offsets filled in below
@@ -262,48 +305,39 @@ bool make_blocked(const Pack& whole, const std::vector<PartBox>& given, const Bl
             for (size_t l = levels; l-- > 0;) { // finest first: a coarser level is as far as it, or farther
                 const Proxy& x = (*options.proxies)[s * levels + l];
                 pack::ProxyPart& r = records[s * levels + l];
-                r = {uint32_t(corners.size()), uint32_t(x.points.size()), uint32_t(triangles.size()), uint32_t(x.triangles.size() / 3),
-                     x.error_mm, {0, 0, 0, 0}};
-                if (l + 1 < levels) r.error_mm = std::max(r.error_mm, records[s * levels + l + 1].error_mm);
-                if (x.colour < whole.colours().size()) r.colour = whole.colours()[x.colour], r.colour.a = 255;
-                if (x.points.size() > 65535) r.vertex_count = r.triangle_count = 0; // (never: proxies are small)
                 if (l + 1 < levels && same_mesh(x, (*options.proxies)[s * levels + l + 1])) { // the finer one's: shared
-                    const pack::ProxyPart& finer = records[s * levels + l + 1];
-                    r.first_vertex = finer.first_vertex, r.first_triangle = finer.first_triangle;
+                    r = records[s * levels + l + 1];
+                    r.error_mm = std::max(x.error_mm, r.error_mm);
+                    if (x.colour < whole.colours().size()) r.colour = whole.colours()[x.colour], r.colour.a = 255;
                     continue;
                 }
-                for (uint32_t v = 0; v < r.vertex_count; ++v) {
-                    pack::ProxyVertex q{};
-                    const float p[3] = {x.points[v].x, x.points[v].y, x.points[v].z};
-                    for (int k = 0; k < 3; ++k) {
-                        const float e = boxes[s].max[k] - boxes[s].min[k];
-                        const float f = e > 0 ? (p[k] - boxes[s].min[k]) / e : 0.0f;
-                        q.q[k] = uint16_t(std::lround(std::clamp(f, 0.0f, 1.0f) * 65535.0f));
-                    }
-                    corners.push_back(q);
-                }
-                // Each side's other triangle: the one with the same side the other way (the first
-                // found, where a collapse left three on one side).
-                std::map<std::pair<uint32_t, uint32_t>, uint32_t> side_of;
-                for (uint32_t t = 0; t < r.triangle_count; ++t)
-                    for (int k = 0; k < 3; ++k) side_of.try_emplace({x.triangles[3 * t + k], x.triangles[3 * t + (k + 1) % 3]}, t);
-                for (uint32_t t = 0; t < r.triangle_count; ++t) {
-                    pack::ProxyTriangle tri{};
-                    for (int k = 0; k < 3; ++k) tri.v[k] = uint16_t(x.triangles[3 * t + k]);
-                    for (int k = 0; k < 3; ++k) {
-                        const auto other = side_of.find({x.triangles[3 * t + (k + 1) % 3], x.triangles[3 * t + k]});
-                        tri.across[k] = other != side_of.end() && other->second < pack::kNoProxyNeighbour ? uint16_t(other->second)
-                                                                                                           : pack::kNoProxyNeighbour;
-                    }
-                    const float n[3] = {x.normals[t].x, x.normals[t].y, x.normals[t].z};
-                    for (int k = 0; k < 3; ++k) tri.n[k] = int8_t(std::lround(std::clamp(n[k], -1.0f, 1.0f) * 127.0f));
-                    triangles.push_back(tri);
-                }
+                r = proxy_record(whole, x, boxes[s], corners, triangles);
+                if (l + 1 < levels) r.error_mm = std::max(r.error_mm, records[s * levels + l + 1].error_mm);
             }
+        }
+        // The groups' pieces, their corners over each group's box, in the same pools.
+        std::vector<pack::Group> group_records;
+        std::vector<uint32_t> members, instance_group(instances.size(), 0);
+        std::vector<pack::ProxyPart> pieces;
+        for (uint32_t g = 0; g < near.size(); ++g) {
+            const ProxyGroup& x = near[g];
+            pack::Group r{uint32_t(members.size()), uint32_t(x.members.size()), uint32_t(pieces.size()), uint32_t(x.colours.size()), {}, {},
+                          x.member_radius_mm};
+            std::memcpy(r.box_min, x.box.min, sizeof r.box_min);
+            std::memcpy(r.box_max, x.box.max, sizeof r.box_max);
+            for (const uint32_t i : x.members) members.push_back(i), instance_group[i] = g;
+            for (const Proxy& piece : x.pieces) pieces.push_back(proxy_record(whole, piece, x.box, corners, triangles));
+            group_records.push_back(r);
         }
         append(out, table, IndexSectionId::ProxyParts, records);
         append(out, table, IndexSectionId::ProxyVertices, corners);
         append(out, table, IndexSectionId::ProxyTriangles, triangles);
+        if (!near.empty()) {
+            append(out, table, IndexSectionId::Groups, group_records);
+            append(out, table, IndexSectionId::GroupMembers, members);
+            append(out, table, IndexSectionId::GroupPieces, pieces);
+            append(out, table, IndexSectionId::InstanceGroups, instance_group);
+        }
     }
     std::memcpy(out.data() + sizeof(IndexHeader), table.data(), table.size() * sizeof(SectionEntry));
     out.resize((out.size() + 3) & ~size_t(3), 0);

@@ -25,6 +25,9 @@ struct BlockOptions {
                                       // the next would pass it (a larger shell is a block alone)
     BlockStore store = BlockStore::Lzma;
     const std::vector<Proxy>* proxies = nullptr; // each shell's (proxies.h), into the index; none: no proxies
+    // With the proxies, the most triangles a group's proxy has at each level (groups.h), the
+    // coarsest first; empty: no groups.
+    std::span<const uint32_t> group_caps = {};
 };
 
 // The blocked pack of `whole` (validated): its shells, in order, grouped into blocks; its

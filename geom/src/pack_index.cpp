@@ -40,6 +40,10 @@ Place index_place(uint32_t id, uint32_t index) {
     case IndexSectionId::ProxyParts: return {"index section ProxyParts record", index};
     case IndexSectionId::ProxyVertices: return {"index section ProxyVertices record", index};
     case IndexSectionId::ProxyTriangles: return {"index section ProxyTriangles record", index};
+    case IndexSectionId::Groups: return {"index section Groups record", index};
+    case IndexSectionId::GroupMembers: return {"index section GroupMembers record", index};
+    case IndexSectionId::GroupPieces: return {"index section GroupPieces record", index};
+    case IndexSectionId::InstanceGroups: return {"index section InstanceGroups record", index};
     }
     return {"index header"};
 }
@@ -102,6 +106,10 @@ Result PackIndex::open(const void* data, uint32_t size, uint32_t file_bytes) {
         case IndexSectionId::ProxyParts: record = sizeof(pack::ProxyPart); break;
         case IndexSectionId::ProxyVertices: record = sizeof(pack::ProxyVertex); break;
         case IndexSectionId::ProxyTriangles: record = sizeof(pack::ProxyTriangle); break;
+        case IndexSectionId::Groups: record = sizeof(pack::Group); break;
+        case IndexSectionId::GroupMembers:
+        case IndexSectionId::InstanceGroups: record = 4; break;
+        case IndexSectionId::GroupPieces: record = sizeof(pack::ProxyPart); break;
         default: continue; // unknown sections are skipped
         }
         if (seen & (1u << s.id)) return fail("section appears twice", s.id, 0);
@@ -127,43 +135,111 @@ Result PackIndex::open(const void* data, uint32_t size, uint32_t file_bytes) {
         case IndexSectionId::ProxyParts: proxy_parts_ = {reinterpret_cast<const pack::ProxyPart*>(at), s.count}; break;
         case IndexSectionId::ProxyVertices: proxy_vertices_ = {reinterpret_cast<const pack::ProxyVertex*>(at), s.count}; break;
         case IndexSectionId::ProxyTriangles: proxy_triangles_ = {reinterpret_cast<const pack::ProxyTriangle*>(at), s.count}; break;
+        case IndexSectionId::Groups: groups_ = {reinterpret_cast<const pack::Group*>(at), s.count}; break;
+        case IndexSectionId::GroupMembers: group_members_ = {reinterpret_cast<const uint32_t*>(at), s.count}; break;
+        case IndexSectionId::GroupPieces: group_pieces_ = {reinterpret_cast<const pack::ProxyPart*>(at), s.count}; break;
+        case IndexSectionId::InstanceGroups: instance_groups_ = {reinterpret_cast<const uint32_t*>(at), s.count}; break;
         }
     }
     base_ = base;
     header_ = h;
     mapped_ = size >= h->total_bytes;
     if (Result r = check_records(); !r.ok()) return r;
-    return check_proxies();
+    if (Result r = check_proxies(); !r.ok()) return r;
+    return check_groups();
 }
 
 // The proxies, when there are: 1 to kMostProxyLevels records per part, each inside the pools,
 // each level as far as the next finer or farther, every triangle's corners its part's and
 // neighbours its level's, normals of about unit length.
 Result PackIndex::check_proxies() {
-    constexpr uint32_t P = uint32_t(IndexSectionId::ProxyParts), T = uint32_t(IndexSectionId::ProxyTriangles);
+    constexpr uint32_t P = uint32_t(IndexSectionId::ProxyParts);
     if (proxy_parts_.empty() && proxy_vertices_.empty() && proxy_triangles_.empty()) return {};
     const size_t levels = proxy_parts_.size() / parts_.size();
     if (proxy_parts_.size() % parts_.size() || levels < 1 || levels > pack::kMostProxyLevels) {
         return fail("not 1 to kMostProxyLevels proxy levels per part", P, 0);
     }
     for (uint32_t p = 0; p < proxy_parts_.size(); ++p) {
-        const pack::ProxyPart& x = proxy_parts_[p];
-        if (uint64_t(x.first_vertex) + x.vertex_count > proxy_vertices_.size() || x.vertex_count > 65535 ||
-            uint64_t(x.first_triangle) + x.triangle_count > proxy_triangles_.size()) {
-            return fail("the proxy's vertices or triangles lie outside their pools", P, p);
+        if (Result r = check_proxy(proxy_parts_[p], P, p); !r.ok()) return r;
+        if (p % levels && !(proxy_parts_[p].error_mm <= proxy_parts_[p - 1].error_mm)) return fail("a proxy level is farther than the one coarser", P, p);
+    }
+    return {};
+}
+
+// One proxy (a part's level, a group's piece): inside the pools, a finite error, every
+// triangle's corners its own and neighbours its level's, normals of about unit length.
+Result PackIndex::check_proxy(const pack::ProxyPart& x, uint32_t section, uint32_t record) {
+    constexpr uint32_t T = uint32_t(IndexSectionId::ProxyTriangles);
+    if (uint64_t(x.first_vertex) + x.vertex_count > proxy_vertices_.size() || x.vertex_count > 65535 ||
+        uint64_t(x.first_triangle) + x.triangle_count > proxy_triangles_.size()) {
+        return fail("the proxy's vertices or triangles lie outside their pools", section, record);
+    }
+    if (!finite(x.error_mm) || !(x.error_mm >= 0)) return fail("the proxy's error is not a finite length", section, record);
+    for (uint32_t t = x.first_triangle; t < x.first_triangle + x.triangle_count; ++t) {
+        const pack::ProxyTriangle& tri = proxy_triangles_[t];
+        if (tri.v[0] >= x.vertex_count || tri.v[1] >= x.vertex_count || tri.v[2] >= x.vertex_count || tri.reserved) {
+            return fail("a proxy triangle's corner is not its part's (or reserved is not 0)", T, t);
         }
-        if (!finite(x.error_mm) || !(x.error_mm >= 0)) return fail("the proxy's error is not a finite length", P, p);
-        if (p % levels && !(x.error_mm <= proxy_parts_[p - 1].error_mm)) return fail("a proxy level is farther than the one coarser", P, p);
-        for (uint32_t t = x.first_triangle; t < x.first_triangle + x.triangle_count; ++t) {
-            const pack::ProxyTriangle& tri = proxy_triangles_[t];
-            if (tri.v[0] >= x.vertex_count || tri.v[1] >= x.vertex_count || tri.v[2] >= x.vertex_count || tri.reserved) {
-                return fail("a proxy triangle's corner is not its part's (or reserved is not 0)", T, t);
+        for (const uint16_t a : tri.across) {
+            if (a != pack::kNoProxyNeighbour && a >= x.triangle_count) return fail("a proxy triangle's neighbour is not its level's", T, t);
+        }
+        const int32_t n2 = tri.n[0] * tri.n[0] + tri.n[1] * tri.n[1] + tri.n[2] * tri.n[2];
+        if (n2 < 90 * 90 || n2 > 140 * 140) return fail("a proxy triangle's normal is not of unit length", T, t);
+    }
+    return {};
+}
+
+// The groups, when there are (all four sections): the members of group after group in
+// GroupMembers, ascending within each, every one an instance whose InstanceGroups entry is that
+// group (so every instance is a member once), a box, 1 to kMostProxyLevels levels of pieces
+// over the groups' colours, each piece sound and each level as far as the finer or farther.
+Result PackIndex::check_groups() {
+    constexpr uint32_t G = uint32_t(IndexSectionId::Groups), M = uint32_t(IndexSectionId::GroupMembers);
+    constexpr uint32_t X = uint32_t(IndexSectionId::GroupPieces), I = uint32_t(IndexSectionId::InstanceGroups);
+    if (groups_.empty() && group_members_.empty() && group_pieces_.empty() && instance_groups_.empty()) return {};
+    if (groups_.empty()) return fail("group members or pieces without groups", G, 0);
+    if (instance_groups_.size() != instances_.size()) return fail("not one group per instance", I, 0);
+    if (group_members_.size() != instances_.size()) return fail("not one member per instance", M, 0);
+    uint64_t colours = 0;
+    for (uint32_t g = 0; g < groups_.size(); ++g) {
+        if (groups_[g].colours == 0 || groups_[g].colours > 255) return fail("the group's colours are not 1 to 255", G, g);
+        colours += groups_[g].colours;
+    }
+    const uint64_t levels = group_pieces_.size() / colours;
+    if (levels < 1 || levels > pack::kMostProxyLevels || levels * colours != group_pieces_.size()) {
+        return fail("not 1 to kMostProxyLevels levels of pieces over the groups' colours", X, 0);
+    }
+    group_levels_ = uint32_t(levels);
+    uint64_t next_member = 0, next_piece = 0;
+    for (uint32_t g = 0; g < groups_.size(); ++g) {
+        const pack::Group& x = groups_[g];
+        if (x.first_member != next_member || x.member_count == 0 || uint64_t(x.first_member) + x.member_count > group_members_.size()) {
+            return fail("the group's members do not follow the group before's", G, g);
+        }
+        next_member += x.member_count;
+        if (x.first_piece != next_piece) return fail("the group's pieces do not follow the group before's", G, g);
+        next_piece += levels * x.colours;
+        if (!box_ok(x.box_min, x.box_max)) return fail("the group's box is not finite, beyond +-1e8 or inverted", G, g);
+        if (!finite(x.member_radius_mm) || !(x.member_radius_mm >= 0) || !(x.member_radius_mm <= 1e8f)) {
+            return fail("the group's members' radius is not a finite length", G, g);
+        }
+        for (uint32_t m = x.first_member; m < x.first_member + x.member_count; ++m) {
+            const uint32_t i = group_members_[m];
+            if (i >= instances_.size() || instance_groups_[i] != g || (m > x.first_member && !(i > group_members_[m - 1]))) {
+                return fail("a member is not an instance of this group's, or not after the one before", M, m);
             }
-            for (const uint16_t a : tri.across) {
-                if (a != pack::kNoProxyNeighbour && a >= x.triangle_count) return fail("a proxy triangle's neighbour is not its level's", T, t);
+        }
+    }
+    for (uint32_t g = 0; g < groups_.size(); ++g) {
+        const pack::Group& x = groups_[g];
+        for (uint32_t l = 0; l < levels; ++l) {
+            for (uint32_t c = 0; c < x.colours; ++c) {
+                const uint32_t p = group_piece_at(g, l, c);
+                if (Result r = check_proxy(group_pieces_[p], X, p); !r.ok()) return r;
+                if (l && !(group_pieces_[p].error_mm <= group_pieces_[group_piece_at(g, l - 1, c)].error_mm)) {
+                    return fail("a group's level is farther than the one coarser", X, p);
+                }
             }
-            const int32_t n2 = tri.n[0] * tri.n[0] + tri.n[1] * tri.n[1] + tri.n[2] * tri.n[2];
-            if (n2 < 90 * 90 || n2 > 140 * 140) return fail("a proxy triangle's normal is not of unit length", T, t);
         }
     }
     return {};

@@ -140,9 +140,12 @@ ViewBasis Camera::basis(const Scene& scene, uint16_t width, uint16_t height) con
 
 Transform Camera::transform(const ViewBasis& basis, const Scene& scene, uint32_t index) {
     const pack::Instance& inst = scene.instances()[index];
+    return transform(basis, inst.m, scene.part(inst.shell).closed);
+}
+
+Transform Camera::transform(const ViewBasis& basis, const float m[12], bool closed) {
     Transform in = basis.shared;
     const float* R = basis.R;
-    const float* m = inst.m;
     float A[9];
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) A[3 * i + j] = R[3 * i] * m[j] + R[3 * i + 1] * m[4 + j] + R[3 * i + 2] * m[8 + j];
@@ -159,7 +162,7 @@ Transform Camera::transform(const ViewBasis& basis, const Scene& scene, uint32_t
     for (int j = 0; j < 3; ++j) in.light[j] = round_to_int(A[j] * L[0] + A[3 + j] * L[1] + A[6 + j] * L[2]);
     const float det = m[0] * (m[5] * m[10] - m[6] * m[9]) - m[1] * (m[4] * m[10] - m[6] * m[8]) + m[2] * (m[4] * m[9] - m[5] * m[8]);
     in.mirrored = det < 0;
-    in.closed = scene.part(inst.shell).closed;
+    in.closed = closed;
     return in;
 }
 

@@ -253,6 +253,9 @@ public:
     // without its eye (Transform::place_eye); equal, field for field, to transform()'s.
     ViewBasis basis(const Scene& scene, uint16_t width, uint16_t height) const;
     static Transform transform(const ViewBasis& basis, const Scene& scene, uint32_t instance);
+    // A placement `m` (pack::Instance's: row-major 3x4, mm) from the view's basis: an instance's
+    // is this with its part's closedness; the model's own coordinates (a group's) the identity.
+    static Transform transform(const ViewBasis& basis, const float m[12], bool closed);
 
 private:
     View view_;

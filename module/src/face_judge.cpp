@@ -48,44 +48,34 @@ void FaceJudge::take_part(uint32_t f) {
     const Scene& scene = scene_;
     const uint32_t part = scene.shell_of(f);
     const Part P = scene.part(part);
-    part_first_ = P.first_face, part_end_ = P.first_face + P.face_count, part_closed_ = P.closed;
-    if (part != part_) { // its instances (the first few; more are looked up each time)
-        const auto instances = scene.instances();
-        part_ = part, count_ = 0;
-        for (uint32_t i = 0; i < instances.size(); ++i) {
-            if (instances[i].shell != part) continue;
-            if (count_ < kInstances) instances_[count_] = i;
-            ++count_;
-        }
-    }
-    part_shown_ = !by_parts_ || part_shows(part), part_view_ = views_;
-}
-
-bool FaceJudge::part_shows(uint32_t part) const {
+    part_ = part, part_first_ = P.first_face, part_end_ = P.first_face + P.face_count, part_closed_ = P.closed, part_view_ = views_;
+    // Its instances that show it at all (by its box's sphere, wide enough to hold every face's:
+    // its centre's offset and its radius sum to at most the box's half extents summed, with
+    // room for the rounding of both spheres), the first kInstances of them kept for its faces;
+    // more, and each face looks at every instance of the part. No box known (or judge_parts
+    // off): every instance shows it.
     int32_t lo[3], hi[3];
-    if (!scene_.part_box(part, lo, hi)) return true;
-    // A face's sphere (around the box of its samples or of its mesh, inside the part's box)
-    // has its centre's offset from the box's centre and its radius summing to at most the
-    // box's half extents summed: that, with room for the rounding of both spheres.
-    int64_t half = 0;
-    float c[3];
-    const float u = scene_.unit();
-    for (int k = 0; k < 3; ++k) half += (int64_t(hi[k]) - lo[k]) / 2 + 1, c[k] = 0.5f * (float(lo[k]) + float(hi[k])) * u;
-    const float r = (float(half) * (1.0f + 1.0f / 32) + 16.0f) * u;
-    auto shown = [&](const pack::Instance& inst) {
-        float w[3];
-        place(inst.m, c, w);
-        return view_.pixels(w, r) >= kMinPixels;
-    };
-    const auto instances = scene_.instances();
-    if (count_ <= kInstances) {
-        for (uint32_t k = 0; k < count_; ++k)
-            if (shown(instances[instances_[k]])) return true;
-        return false;
+    const bool known = by_parts_ && scene.part_box(part, lo, hi);
+    float c[3] = {0, 0, 0}, r = 0;
+    if (known) {
+        int64_t half = 0;
+        const float u = scene.unit();
+        for (int k = 0; k < 3; ++k) half += (int64_t(hi[k]) - lo[k]) / 2 + 1, c[k] = 0.5f * (float(lo[k]) + float(hi[k])) * u;
+        r = (float(half) * (1.0f + 1.0f / 32) + 16.0f) * u;
     }
-    for (const pack::Instance& inst : instances)
-        if (inst.shell == part && shown(inst)) return true;
-    return false;
+    const auto instances = scene.instances();
+    count_ = 0;
+    for (uint32_t i = 0; i < instances.size(); ++i) {
+        if (instances[i].shell != part) continue;
+        if (known) {
+            float w[3];
+            place(instances[i].m, c, w);
+            if (view_.pixels(w, r) < kMinPixels) continue;
+        }
+        if (count_ < kInstances) instances_[count_] = i;
+        ++count_;
+    }
+    part_shown_ = count_ > 0;
 }
 
 bool FaceJudge::shows(uint32_t f) {

@@ -38,10 +38,7 @@ public:
 
 private:
     bool shows(uint32_t f); // wants()'s judgement
-    void take_part(uint32_t f); // the part of face f: its faces, instances and whether it shows
-    // Whether some instance shows the part at least kMinPixels across: its box's sphere, wide
-    // enough to hold every face's sphere. True where its box is not known.
-    bool part_shows(uint32_t part) const;
+    void take_part(uint32_t f); // the part of face f: its faces, the instances that show it (any?)
     const Scene& scene_;
     const Camera& camera_;
     const Scheduler& scheduler_;
@@ -50,7 +47,7 @@ private:
     View camera_view_{};
     float radius_ = 0;
     bool section_ = false; // a section was on: every back face may show
-    static constexpr uint32_t kInstances = 8; // a part's instances kept for the next of its faces
+    static constexpr uint32_t kInstances = 8; // a part's instances that show it, kept for its faces (count_: all of them)
     uint32_t part_ = kNone, count_ = 0, instances_[kInstances] = {};
     uint32_t part_first_ = 0, part_end_ = 0; // its faces
     bool part_closed_ = false, part_shown_ = true;

@@ -23,8 +23,6 @@ constexpr int32_t kShownPixels = kFacePixels;
 constexpr uint8_t kSpeckShade = 200;        // a speck in the face's colour: lit about halfway
 // A splat's side: about 0.7 of the face's size across (a disc of diameter D holds a square of 0.7 D).
 static_assert(kSplatPixels * 11 / 16 <= render::Rasterizer::kMaxSplat, "the largest splat is one the rasterizer draws");
-// A part under this across (its sphere's) is drawn as its proxy (or box) until it grows (issue 25).
-constexpr int32_t kTinyPartPixels = 5;
 
 // X / d for d >= 1, to about 2^-15 relative, without dividing (render/fixed.h).
 inline int32_t divide(int64_t x, int32_t d) { return render::divide(x, render::reciprocal(uint32_t(d))); }

@@ -29,6 +29,9 @@ constexpr int32_t kFacePixels = 4;
 constexpr int32_t kSplatPixels = 2 * kFacePixels;
 // In a crowded view, a face under this across is drawn without its edges (Painter::set_crowded).
 constexpr int32_t kCrowdedEdgePixels = 2 * kFacePixels;
+// A part under this across (its sphere's) is drawn as its proxy (or box) until it grows (issue
+// 25); a group whose every member is, as the group's proxy.
+constexpr int32_t kTinyPartPixels = 5;
 
 // A mesh point as the instance being drawn projects it: a slot of the painter's projection
 // cache (Painter::point).
@@ -126,7 +129,15 @@ public:
     uint32_t proxy_level(uint32_t part, const int32_t sphere_centre[3], int32_t radius, const Transform& t, ProxyNeed need);
     uint32_t part_proxy(uint32_t part, const Transform& t, uint32_t level);
     uint32_t own_triangles(uint32_t part) const; // its faces' now, or two a face if more
-    void project_proxy(uint32_t part, const pack::ProxyPart& x, const Transform& t);
+    void project_proxy(const float box_min[3], const float box_max[3], const pack::ProxyPart& x, const Transform& t);
+    uint32_t draw_proxy(const pack::ProxyPart& x, const float box_min[3], const float box_max[3], const Transform& t); // the work
+    // A group of instances (a blocked pack's index: pack::Group), placed by the identity: the
+    // level it is drawn at as one proxy, or kNone (its members each); its pieces drawn (the work).
+    uint32_t group_level(uint32_t group, const int32_t sphere_centre[3], int32_t radius, const Transform& t, ProxyNeed need,
+                         uint32_t most_triangles); // (a level with more is not drawn)
+    uint32_t group_proxy(uint32_t group, const Transform& t, uint32_t level);
+    // Whether an instance is lit (picked, or a highlighted face's): drawn as itself, never in a group's proxy.
+    bool lit_instance(uint32_t i) const { return part_ == i || hl_[0].instance == i || hl_[1].instance == i; }
     // Hidden line: the proxy's outline and creases, over the faces (painter_proxy.cpp); the work.
     uint32_t proxy_outline(uint32_t part, const Transform& t, uint32_t level);
     // The screen error a proxy may have (pixels): the view's (its screen error times its
@@ -138,6 +149,8 @@ public:
     // Whether a part's sphere (Scene::part_sphere) is under a few pixels across: the part is
     // drawn as its proxy (or box) until it grows.
     bool tiny(const int32_t sphere_centre[3], int32_t radius, const Transform& t);
+    // Whether every sphere of radius `each` within the sphere (a group's members' parts) is tiny().
+    bool all_tiny(const int32_t sphere_centre[3], int32_t radius, int32_t each, const Transform& t);
     void reset_edges(uint32_t part); // (its edges: all of them where a part's are not known apart)
     // The rows of the screen being drawn (the target's band) for culling.
     Rows rows(const Transform& t) const;

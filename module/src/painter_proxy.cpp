@@ -59,16 +59,16 @@ uint32_t Painter::own_triangles(uint32_t part) const {
     return std::max(n, 2 * sh.face_count);
 }
 
-// The level's corners projected into mem_.projected (the cut's side marked), over the part's
-// box: corner q (0-65535) in the mesh's units is base + q x step / 2^16.
-void Painter::project_proxy(uint32_t part, const pack::ProxyPart& x, const Transform& t) {
+// The level's corners projected into mem_.projected (the cut's side marked), over the box they
+// are quantized in (a part's, a group's): corner q (0-65535) in the mesh's units is
+// base + q x step / 2^16.
+void Painter::project_proxy(const float box_min[3], const float box_max[3], const pack::ProxyPart& x, const Transform& t) {
     const geom::PackIndex& index = scene_.index();
-    const pack::Part& p = index.parts()[part];
     int32_t base[3], step[3];
     const float inv = 1.0f / scene_.unit();
     for (int k = 0; k < 3; ++k) {
-        base[k] = int32_t(std::lround(p.box_min[k] * inv));
-        step[k] = int32_t(std::lround((p.box_max[k] - p.box_min[k]) * inv * (65536.0f / 65535.0f)));
+        base[k] = int32_t(std::lround(box_min[k] * inv));
+        step[k] = int32_t(std::lround((box_max[k] - box_min[k]) * inv * (65536.0f / 65535.0f)));
     }
     Projected* P = mem_.projected.data();
     const pack::ProxyVertex* corners = index.proxy_vertices().data() + x.first_vertex;
@@ -81,9 +81,13 @@ void Painter::project_proxy(uint32_t part, const pack::ProxyPart& x, const Trans
 }
 
 uint32_t Painter::part_proxy(uint32_t part, const Transform& t, uint32_t level) {
+    const pack::Part& p = scene_.index().parts()[part];
+    return draw_proxy(scene_.index().proxy(part, level), p.box_min, p.box_max, t);
+}
+
+uint32_t Painter::draw_proxy(const pack::ProxyPart& x, const float box_min[3], const float box_max[3], const Transform& t) {
     const geom::PackIndex& index = scene_.index();
-    const pack::ProxyPart& x = index.proxy(part, level);
-    project_proxy(part, x, t);
+    project_proxy(box_min, box_max, x, t);
     const Projected* P = mem_.projected.data();
     const bool white = mode_ == DisplayMode::HiddenLine;
     const pack::Colour c = x.colour;
@@ -112,6 +116,55 @@ uint32_t Painter::part_proxy(uint32_t part, const Transform& t, uint32_t level) 
     return 1 + x.vertex_count / 4 + x.triangle_count + (raster_.stats.pixels - pixels) / 64;
 }
 
+bool Painter::all_tiny(const int32_t sphere_centre[3], int32_t radius, int32_t each, const Transform& t) {
+    Projected centre;
+    const int64_t size = across(sphere_centre, each, t, centre); // (at the sphere's centre's depth)
+    if (size < 0) return false;
+    if (t.ortho) return size < kTinyPartPixels * render::subpixel::kPerPixel;
+    const int64_t nearest = int64_t(centre.d) - ((int64_t(radius) * t.k16) >> 16); // (its nearest point's depth)
+    return nearest > 0 && size * centre.d < int64_t(kTinyPartPixels * render::subpixel::kPerPixel) * nearest;
+}
+
+// A group's level, in a shaded view: the coarsest of all for a frame of the layout (Coarsest);
+// the coarsest whose error, at the group's sphere, is within the view's proxy error, for a group
+// whose members stand as proxies anyway (Must: left out, or the group a few pixels across:
+// else within the left-out error) or in a crowded view (Optional); kNone where its members are
+// drawn each.
+uint32_t Painter::group_level(uint32_t g, const int32_t sphere_centre[3], int32_t radius, const Transform& t, ProxyNeed need,
+                              uint32_t most_triangles) {
+    const geom::PackIndex& index = scene_.index();
+    const uint32_t levels = index.group_levels();
+    if (levels == 0 || radius <= 0 || !(mode_ == DisplayMode::Shaded || mode_ == DisplayMode::ShadedEdges)) return kNone;
+    if (need == ProxyNeed::Optional && (!crowded_ || proxy_subpixels_ <= 0)) return kNone;
+    const pack::Group& group = index.groups()[g];
+    uint32_t left_out = kNone;
+    for (uint32_t l = 0; l < levels; ++l) { // (a level's pieces fit the projection's room, or it is not drawn)
+        uint32_t fits = 1, triangles = 0;
+        for (uint32_t c = 0; c < group.colours; ++c) {
+            const pack::ProxyPart& piece = index.group_piece(g, l, c);
+            fits &= piece.vertex_count <= mem_.projected.size();
+            triangles += piece.triangle_count;
+        }
+        if (!fits || triangles > most_triangles) continue;
+        if (need == ProxyNeed::Coarsest) return l;
+        Projected centre;
+        const float half = index.group_piece(g, l, 0).error_mm * 0.5f / scene_.unit();
+        const int32_t strays = half < float(radius) ? across(sphere_centre, int32_t(half) + 1, t, centre) : -1;
+        if (strays < 0) continue;
+        if (strays <= proxy_subpixels_) return l;
+        if (need == ProxyNeed::Must && strays <= left_out_subpixels_ && left_out == kNone) left_out = l;
+    }
+    return left_out;
+}
+
+uint32_t Painter::group_proxy(uint32_t g, const Transform& t, uint32_t level) {
+    const geom::PackIndex& index = scene_.index();
+    const pack::Group& group = index.groups()[g];
+    uint32_t work = 0;
+    for (uint32_t c = 0; c < group.colours; ++c) work += draw_proxy(index.group_piece(g, level, c), group.box_min, group.box_max, t);
+    return work;
+}
+
 // Hidden line: a proxy's outline (sides between a triangle that shows and one that does not, or
 // at a rim) and its creases (sides whose triangles' normals part by more than about 35
 // degrees), depth-tested over the faces as a part's edges are. A closed part's triangles turned
@@ -123,7 +176,8 @@ uint32_t Painter::proxy_outline(uint32_t part, const Transform& t, uint32_t leve
     const geom::PackIndex& index = scene_.index();
     const pack::ProxyPart& x = index.proxy(part, level);
     if (mode_ != DisplayMode::HiddenLine || x.triangle_count > kOutlineTriangles) return 1;
-    project_proxy(part, x, t);
+    const pack::Part& p = index.parts()[part];
+    project_proxy(p.box_min, p.box_max, x, t);
     const Projected* P = mem_.projected.data();
     const pack::ProxyTriangle* tri = index.proxy_triangles().data() + x.first_triangle;
     uint32_t shows[kOutlineTriangles / 32] = {}, front[kOutlineTriangles / 32] = {};

@@ -1,5 +1,6 @@
 #include "presenter.h"
 
+#include <cmath>
 #include <cstring> // (std::memcpy)
 
 #include "render/text.h"
@@ -74,15 +75,16 @@ const Transform& Presenter::transform_of(uint32_t instance) {
 void Presenter::place_eye() {
     Transform& t = job_.transform;
     if (t.eye_placed) return;
-    KeptEye& kept = eyes_[job_.instance % kKeptEyes];
-    if (keep_ && job_.instance < kKeptPlacements && kept.instance == job_.instance && kept.stamp == kept_stamp_) {
+    const uint32_t id = job_.id;
+    KeptEye& kept = eyes_[id % kKeptEyes];
+    if (keep_ && id < kKeptPlacements && kept.instance == id && kept.stamp == kept_stamp_) {
         std::memcpy(t.eye, kept.eye, sizeof t.eye), std::memcpy(t.toward, kept.toward, sizeof t.toward);
         t.eye_placed = true;
         return;
     }
     t.place_eye();
-    if (job_.instance >= kKeptPlacements) return;
-    kept.instance = job_.instance, kept.stamp = kept_stamp_;
+    if (id >= kKeptPlacements) return;
+    kept.instance = id, kept.stamp = kept_stamp_;
     std::memcpy(kept.eye, t.eye, sizeof t.eye), std::memcpy(kept.toward, t.toward, sizeof t.toward);
 }
 
@@ -211,16 +213,24 @@ bool Presenter::full_pieces(uint32_t units) {
     const bool faces = job_.stage != Stage::Edges;
     uint32_t spent = 0;
     while (job_.instance < instances.size()) {
-        if (!scene_.shown(job_.instance)) { // a hidden part
+        if (!job_.have_transform && job_.face == 0) { // at a group's first member: the group whole, off the view or as its proxy
+            if (const uint32_t passed = pass_group(faces, spent)) {
+                job_.instance += passed;
+                if (spent >= units) return false;
+                continue;
+            }
+        }
+        const uint32_t id = job_.id = instance_at(job_.instance);
+        if (!scene_.shown(id)) { // a hidden part
             ++job_.instance;
             continue;
         }
-        const uint32_t shell = instances[job_.instance].shell;
+        const uint32_t shell = instances[id].shell;
         const Part sh = scene_.part(shell);
         if (!job_.have_transform) {
-            job_.transform = transform_of(job_.instance);
+            job_.transform = transform_of(id);
             job_.have_transform = true;
-            painter_.set_instance(job_.instance);
+            painter_.set_instance(id);
             judge_part(shell, job_.transform, job_.boxes || scene_.part_boxed(shell));
             painter_.set_inside(job_.sight == Transform::Sight::In);
         }
@@ -287,6 +297,7 @@ bool Presenter::update_pieces(uint32_t units) {
     // layer lacks, into it, without their edges.)
     while (job_.instance < instances.size()) {
         const Part sh = scene_.part(instances[job_.instance].shell);
+        job_.id = job_.instance;
         if (!scene_.shown(job_.instance)) job_.face = job_.applied_to; // a hidden part: none of its faces
         for (; job_.face < job_.applied_to && spent < units; ++job_.face) {
             const uint32_t f = scene_.done_face(job_.face);
@@ -297,7 +308,11 @@ bool Presenter::update_pieces(uint32_t units) {
                 painter_.set_instance(job_.instance);
                 painter_.set_inside(false); // (a face or two at a time: each tested)
                 judge_part(instances[job_.instance].shell, job_.transform, false);
-                if (job_.level != kNone) { // drawn as its proxy: none of its faces
+                if (job_.level == kNone && scene_.blocked() && !scene_.index().groups().empty()) { // its group drawn whole?
+                    uint32_t level;
+                    if (judge_group(scene_.index().group_of(job_.instance), level) != GroupVerdict::Members) job_.level = 0;
+                }
+                if (job_.level != kNone) { // drawn as its proxy, or in its group's: none of its faces
                     job_.face = job_.applied_to;
                     break;
                 }
@@ -345,7 +360,7 @@ void Presenter::flush(uint32_t pass) {
     e.kind = Event::Kind::FrameDone;
     const render::RasterStats& s = raster_.stats;
     const uint32_t cost = job_.cost_us + (clock_() - piece_start_);
-    if (job_.full) last_frame_us_ = cost;
+    if (job_.full) last_frame_us_ = cost, groups_drawn_ = job_.groups_drawn;
     if (job_.full && job_.all_faces && !job_.edges_owed) all_faces_us_ = cost;
     // (A view's faces first: what the frame would have cost, its faces and then its edges.)
     if (job_.full && !job_.all_faces && owed_us_) all_faces_us_ = owed_us_ + cost;

@@ -93,6 +93,7 @@ public:
     // rendering, a band's alone is not the view's, and none is counted).
     uint32_t triangles_in_view() const { return in_view_; }
     uint32_t in_view_us() const { return in_view_us_; } // the time of the frame that counted them
+    uint32_t groups_drawn() const { return groups_drawn_; } // (tests) the groups the last whole frame drew as their proxies
 
     // Any context (a DMA interrupt, another thread): one store. At most one flush is in flight
     // (a frame's flush begins once the last is done), so calls for it are one event however
@@ -143,7 +144,10 @@ private:
         // Cursor: the instance, the face within its shell (or done_order index), the next
         // triangle of that face; the Edges stage: the instance's edges reset (and, from a layer,
         // its highlights drawn).
+        // (A blocked pack with groups: `instance` is the place in the groups' members, in turn.)
         uint32_t instance = 0, face = 0, tri = 0;
+        uint32_t id = 0;              // the instance drawn (Scene::instances)
+        uint32_t groups_drawn = 0;    // groups drawn as their proxies (faces stages)
         bool begun = false;
         bool all_faces = false;       // the frame draws every face (LayerAll or BufferAll), not the layer's copy
         // Drawn without its Edges stage: a new view's faces first, its frames of every face
@@ -186,6 +190,17 @@ private:
     // the first whole frame).
     void judge_part(uint32_t part, const Transform& t, bool must);
     bool full_pieces(uint32_t units);   // the stage's pass over the instances (faces, or edges); true when done
+    // Groups (a blocked pack's index): the instance at place k of the groups' members in turn
+    // (or k); a group judged whole: off the view, as its proxy (Painter::group_level's, at
+    // `level`: none of its members hidden, lit or cut by the section), or its members each.
+    uint32_t instance_at(uint32_t k) const;
+    enum class GroupVerdict : uint8_t { Members, Out, Proxy };
+    GroupVerdict judge_group(uint32_t group, uint32_t& level);
+    // At job_.instance, the first member of a group: the members the group passes (0: drawn
+    // each), its proxy drawn in a faces stage; `spent` the work.
+    uint32_t pass_group(bool faces, uint32_t& spent);
+    Transform group_transform_{}; // judge_group()'s: the model's own coordinates
+    uint32_t groups_drawn_ = 0;   // groups_drawn()
     bool update_pieces(uint32_t units); // the faces since the buffer (or the layer) was last drawn
     void set_target();                  // the stage's: the faces layer, or the band of the draw buffer
     void copy_layer();                  // the faces layer into the draw buffer (colour and depth)

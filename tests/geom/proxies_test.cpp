@@ -1,10 +1,13 @@
 // Parts' proxies (geom/host/proxies.h, issue 52): each part of a model of every surface kind
 // gets a coarse mesh within its triangle cap, inside its box, wound as its faces (its normals
 // point out of a closed solid), with an error bound that covers how far it strays; the index
-// carries them (ProxyParts, ProxyVertices, ProxyTriangles), checked when it is opened.
+// carries them (ProxyParts, ProxyVertices, ProxyTriangles), checked when it is opened. Groups of
+// nearby instances (geom/host/groups.h) hold every instance once, and their proxies within their
+// caps and boxes; the index carries them (Groups, GroupMembers, GroupPieces, InstanceGroups).
 #include "../geom/shapes.h"
 #include "geom/bounds.h"
 #include "geom/pack_index.h"
+#include "groups.h"
 #include "pack_blocks.h"
 #include "proxies.h"
 
@@ -162,4 +165,77 @@ TEST(Proxies, TheIndexCarriesThemAndRefusesBadOnes) {
     EXPECT_EQ(farther.status, Status::Corrupt);
     EXPECT_NE(std::string(farther.what).find("farther"), std::string::npos) << farther.what;
     EXPECT_EQ(farther.where.index, 3u);
+}
+
+TEST(Groups, EveryInstanceIsInOneGroupAndEachGroupsProxyIsWithinItsCapAndBox) {
+    const Bytes bytes = shapes_pack(40); // (a row of 40 parts: groups of 10)
+    Pack pack;
+    ASSERT_TRUE(pack.open(bytes.data(), uint32_t(bytes.size())).ok());
+    std::vector<Proxy> proxies;
+    std::string error;
+    const uint32_t caps[] = {12, 48}, group_caps[] = {24, 96};
+    ASSERT_TRUE(make_proxies(pack, caps, proxies, error)) << error;
+    BlockOptions options{1, BlockStore::Lzma, &proxies, group_caps};
+    Bytes file;
+    ASSERT_TRUE(make_blocked(pack, {}, options, file, error)) << error;
+    std::vector<uint32_t> aligned(file.size() / 4 + 1);
+    std::memcpy(aligned.data(), file.data(), file.size());
+    PackIndex index;
+    ASSERT_TRUE(index.open(aligned.data(), uint32_t(file.size())).ok());
+    const auto groups = index.groups();
+    ASSERT_GE(groups.size(), 3u);
+    ASSERT_EQ(index.group_levels(), 2u);
+    std::vector<int> seen(index.instances().size(), 0);
+    for (uint32_t g = 0; g < groups.size(); ++g) {
+        const pack::Group& x = groups[g];
+        EXPECT_LE(x.member_count, kMostMembers);
+        for (uint32_t m = x.first_member; m < x.first_member + x.member_count; ++m) {
+            const uint32_t i = index.group_members()[m];
+            ++seen[i];
+            EXPECT_EQ(index.group_of(i), g);
+            // The member's part box, placed (here a shift along x), inside the group's box.
+            const pack::Instance& inst = index.instances()[i];
+            const pack::Part& part = index.parts()[inst.shell];
+            for (int k = 0; k < 3; ++k) {
+                EXPECT_GE(part.box_min[k] + inst.m[4 * k + 3], x.box_min[k] - 1e-3f) << "group " << g << " instance " << i;
+                EXPECT_LE(part.box_max[k] + inst.m[4 * k + 3], x.box_max[k] + 1e-3f) << "group " << g << " instance " << i;
+            }
+        }
+        for (uint32_t l = 0; l < 2; ++l) {
+            uint32_t triangles = 0;
+            for (uint32_t c = 0; c < x.colours; ++c) {
+                const pack::ProxyPart& piece = index.group_piece(g, l, c);
+                triangles += piece.triangle_count;
+                if (l) {
+                    EXPECT_LE(piece.error_mm, index.group_piece(g, 0, c).error_mm) << "the finer level strays less";
+                }
+            }
+            EXPECT_GT(triangles, 0u);
+            EXPECT_LE(triangles, group_caps[l] + 4 * x.colours) << "group " << g << " level " << l << " (each colour's share at least 4)";
+        }
+    }
+    for (uint32_t i = 0; i < seen.size(); ++i) EXPECT_EQ(seen[i], 1) << "instance " << i;
+    // Groups far apart along the row: their boxes do not overlap much (made from space).
+    for (uint32_t g = 1; g < groups.size(); ++g) EXPECT_NE(groups[g].box_min[0], groups[0].box_min[0]);
+
+    // A member listed twice (another dropped), or an instance's group that lists it not: refused.
+    const auto* h = reinterpret_cast<const pack::IndexHeader*>(aligned.data());
+    auto refix = [&] {
+        auto* mh = reinterpret_cast<pack::IndexHeader*>(aligned.data());
+        mh->crc32 = pack::crc32(reinterpret_cast<const uint8_t*>(aligned.data()) + pack::kIndexCrcFrom, h->index_bytes - pack::kIndexCrcFrom);
+        return index.open(aligned.data(), uint32_t(file.size()));
+    };
+    auto* members = const_cast<uint32_t*>(index.group_members().data());
+    const uint32_t kept = members[groups[1].first_member];
+    members[groups[1].first_member] = members[0];
+    const Result twice = refix();
+    EXPECT_EQ(twice.status, Status::Corrupt);
+    EXPECT_NE(std::string(twice.where.kind ? twice.where.kind : "").find("GroupMembers"), std::string::npos);
+    members[groups[1].first_member] = kept;
+    ASSERT_TRUE(refix().ok());
+    auto* group_records = const_cast<pack::Group*>(index.groups().data());
+    group_records[0].box_max[0] = group_records[0].box_min[0] - 1; // an inverted box
+    const Result inverted = refix();
+    EXPECT_EQ(inverted.status, Status::Corrupt);
+    EXPECT_NE(std::string(inverted.where.kind ? inverted.where.kind : "").find("Groups"), std::string::npos);
 }

@@ -21,11 +21,12 @@ namespace {
 constexpr Rgb565 kBoxColour = rgb565(96, 104, 128);  // (painter.cpp)
 constexpr Rgb565 kEdgeColour = rgb565(28, 30, 38);   // (painter.cpp)
 
-// Twelve parts of every surface kind, a part a block, with or without their proxies.
-Bytes twelve(bool proxies) {
+// Twelve parts (or `count`) of every surface kind in a row, a part a block, with or without
+// their proxies (and with them, `grouped`: groups of at most 16 nearby parts).
+Bytes twelve(bool proxies, bool grouped = false, uint32_t count = 12) {
     const Bytes shapes[] = {plate_with_holes(), sphere(), torus(), trimmed_bspline()};
-    std::vector<Pack> packs(12);
-    for (uint32_t k = 0; k < 12; ++k) EXPECT_TRUE(packs[k].open(shapes[k % 4].data(), uint32_t(shapes[k % 4].size())).ok());
+    std::vector<Pack> packs(count);
+    for (uint32_t k = 0; k < count; ++k) EXPECT_TRUE(packs[k].open(shapes[k % 4].data(), uint32_t(shapes[k % 4].size())).ok());
     const Bytes combined = combine_packs(packs, 150.0f);
     Pack whole;
     EXPECT_TRUE(whole.open(combined.data(), uint32_t(combined.size())).ok());
@@ -34,7 +35,9 @@ Bytes twelve(bool proxies) {
     const uint32_t caps[] = {16, 64};
     EXPECT_TRUE(make_proxies(whole, caps, made, error)) << error;
     Bytes file;
-    EXPECT_TRUE(make_blocked(whole, {}, {1, BlockStore::Lzma, proxies ? &made : nullptr}, file, error)) << error;
+    const uint32_t group_caps[] = {48, 192};
+    EXPECT_TRUE(make_blocked(whole, {}, {1, BlockStore::Lzma, proxies ? &made : nullptr, grouped ? group_caps : std::span<const uint32_t>{}}, file, error))
+        << error;
     return file;
 }
 
@@ -185,4 +188,67 @@ TEST(Proxies, ACrowdedViewDrawsPartsAsProxiesAndAPartZoomedIntoAsItself) {
         EXPECT_GT(edges, size_t(app.w)) << "its edges drawn";
     }
     EXPECT_LT(crowd[1], crowd[0]) << "with proxies, the view is within its bound at a finer screen error";
+}
+
+// Groups of nearby parts (the index's Groups): a group off the view is passed whole, which
+// changes no pixel: the same pictures with and without groups where the view is not crowded
+// (fitted, zoomed in with parts off the view, turned).
+TEST(Groups, AGroupOffTheViewIsPassedWholeAndChangesNoPixel) {
+    std::vector<Rgb565> shots[2][3];
+    for (const bool grouped : {false, true}) {
+        App app;
+        app.w = 320, app.h = 240;
+        ASSERT_TRUE(app.create().ok());
+        ASSERT_TRUE(app.load(twelve(true, grouped, 40)).ok()); // (four groups of ten)
+        const Core& core = *static_cast<const Core*>(app.v);
+        ASSERT_EQ(core.scene().index().groups().size(), grouped ? 4u : 0u);
+        app.run();
+        shots[grouped][0] = app.screen();
+        for (int k = 0; k < 6; ++k) app.v->act(Action::ZoomIn);
+        app.run();
+        shots[grouped][1] = app.screen();
+        for (int k = 0; k < 3; ++k) app.v->act(Action::TurnLeft);
+        app.run();
+        shots[grouped][2] = app.screen();
+        EXPECT_EQ(static_cast<Core*>(app.v)->presenter().groups_drawn(), 0u) << "not crowded: no group drawn as its proxy";
+    }
+    for (int k = 0; k < 3; ++k) EXPECT_TRUE(shots[0][k] == shots[1][k]) << "view " << k;
+}
+
+// A group a few pixels across (its members smaller still) is drawn as its proxy, one instead of
+// each member's, as are the groups in the frames of the model's layout while its edges are
+// sampled: no box, about as many pixels drawn as the members' own proxies cover. A part then
+// framed alone is drawn as itself (its group neither small nor crowded).
+TEST(Groups, AGroupAFewPixelsAcrossIsDrawnAsOneProxyAndAPartFramedAsItself) {
+    size_t drawn[2] = {};
+    for (const bool grouped : {false, true}) {
+        App app;
+        app.w = 320, app.h = 240;
+        ASSERT_TRUE(app.create().ok());
+        ASSERT_TRUE(app.load(twelve(true, grouped)).ok());
+        Core& core = *static_cast<Core*>(app.v);
+        uint32_t layout_groups = 0;
+        for (int i = 0; i < 100000 && app.count(Event::Kind::Sampled) == 0; ++i) {
+            (void)app.v->step(1000);
+            app.done();
+            layout_groups = std::max(layout_groups, core.presenter().groups_drawn());
+        }
+        EXPECT_EQ(layout_groups > 0, grouped) << "the layout's frames: each group its coarsest proxy";
+        app.run();
+        for (int k = 0; k < 12; ++k) app.v->act(Action::ZoomOut);
+        app.run();
+        EXPECT_EQ(core.presenter().groups_drawn() > 0, grouped) << "groups a few pixels across";
+        EXPECT_EQ(look(app).box, 0u);
+        drawn[grouped] = look(app).drawn;
+        const uint32_t part = 7;
+        ASSERT_TRUE(app.v->fit_part(part).ok());
+        app.run();
+        EXPECT_EQ(core.presenter().groups_drawn(), 0u) << "the part framed: its group neither small nor crowded";
+        if (!grouped) continue;
+        const module::Part sh = core.scene().part(part);
+        ASSERT_GT(sh.face_count, 0u);
+        EXPECT_EQ(core.scene().face(sh.first_face).state, module::FaceState::Done) << "drawn as itself";
+    }
+    EXPECT_GT(drawn[1], drawn[0] / 2) << "the groups' proxies cover about what their members' do";
+    EXPECT_LT(drawn[1], drawn[0] * 2);
 }

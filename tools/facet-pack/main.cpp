@@ -74,6 +74,7 @@ namespace {
 
 constexpr size_t kLzmaUpTo = 1u << 20; // decoded bytes a pack is LZMA-compressed up to (above: DEFLATE)
 constexpr uint32_t kProxyLevels[] = {12, 48, 192, 768}; // the most triangles a part's proxy has at each level (geom/host/proxies.h)
+constexpr uint32_t kGroupLevels[] = {48, 192};          // a group's proxy's, for its (at most 16) parts (geom/host/groups.h)
 
 int usage() {
     std::fprintf(stderr, "usage: facet-pack MODEL.step -o MODEL.fpk [--plain|--deflate|--lzma] [--whole] [--unit mm|cm|m|in|ft] [--partial] [--reference FACES.json] [--quiet]\n"
@@ -335,6 +336,7 @@ int run(int argc, char** argv) {
             if (!quiet) packer::progress("making the parts' proxies");
             if (!geom::make_proxies(opened, kProxyLevels, proxies, error)) return die(error);
             options.proxies = &proxies;
+            options.group_caps = kGroupLevels;
         }
         if (!geom::make_blocked(opened, packer::part_boxes(packer.prototypes), options, bytes, error)) return die(error);
         geom::PackIndex index;

@@ -391,6 +391,15 @@ enum class IndexSectionId : uint32_t {
     ProxyParts = 19,
     ProxyVertices = 20,
     ProxyTriangles = 21,
+    // Groups (optional, with the proxies; all four or none): instances near each other, culled
+    // as one and drawn as one proxy where the view shows them small (geom/host/groups.h): Groups
+    // a record per group, GroupMembers their instances, GroupPieces their proxies' pieces (their
+    // corners and triangles in the proxies' pools), InstanceGroups each instance's group (a
+    // uint32_t per instance: a reader checks every instance is its group's member once).
+    Groups = 22,
+    GroupMembers = 23,
+    GroupPieces = 24,
+    InstanceGroups = 25,
 };
 
 struct Block {
@@ -444,6 +453,21 @@ struct ProxyTriangle {
     uint16_t across[3];
 };
 static_assert(sizeof(ProxyTriangle) == 16);
+
+// A group of instances: its members, GroupMembers [first_member, first_member + member_count)
+// (instance numbers, ascending; every instance is in exactly one group: InstanceGroups), and its proxy's pieces, a piece
+// per colour at each level: GroupPieces [first_piece + l x colours, + colours) level l's, the
+// coarsest first; the levels (1 to kMostProxyLevels) are GroupPieces' records over every group's
+// colours summed. A piece is a ProxyPart whose
+// corners lie over the group's box (the model's coordinates, mm); each of a level's pieces
+// carries the level's error, as far as the next finer or farther.
+struct Group {
+    uint32_t first_member, member_count;
+    uint32_t first_piece, colours;
+    float box_min[3], box_max[3];
+    float member_radius_mm; // the largest member's part's box's half diagonal: how small its members are
+};
+static_assert(sizeof(Group) == 44);
 
 // A library: several model files (any of the kinds above) in one, as a device's flash holds
 // them: a LibraryHeader, LibraryEntry[count], then each file at its offset, 8-byte aligned, so

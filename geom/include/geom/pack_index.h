@@ -40,6 +40,16 @@ public:
     const pack::ProxyPart& proxy(uint32_t part, uint32_t level) const { return proxy_parts_[part * proxy_levels() + level]; }
     std::span<const pack::ProxyVertex> proxy_vertices() const { return proxy_vertices_; }
     std::span<const pack::ProxyTriangle> proxy_triangles() const { return proxy_triangles_; }
+    // Groups of instances (pack_format.h: Groups), each member of one; empty when the index has
+    // none. Group g's level l (group_levels() of them, the coarsest first) is its pieces
+    // group_piece(g, l, c) for each of its colours c, corners over its box.
+    std::span<const pack::Group> groups() const { return groups_; }
+    std::span<const uint32_t> group_members() const { return group_members_; }
+    uint32_t group_of(uint32_t instance) const { return instance_groups_[instance]; }
+    uint32_t group_levels() const { return group_levels_; }
+    const pack::ProxyPart& group_piece(uint32_t g, uint32_t level, uint32_t colour) const {
+        return group_pieces_[group_piece_at(g, level, colour)];
+    }
     // What the whole model takes on a device (pack::Needs); null when the index says nothing.
     const pack::Needs* needs() const { return needs_.empty() ? nullptr : needs_.data(); }
     // Block b as stored: an LZMA file or a plain pack (geom/pack_file.h reads either). mapped() only.
@@ -74,6 +84,15 @@ private:
     std::span<const pack::ProxyVertex> proxy_vertices_;
     std::span<const pack::ProxyTriangle> proxy_triangles_;
     Result check_proxies();
+    Result check_proxy(const pack::ProxyPart& x, uint32_t section, uint32_t record);
+    Result check_groups();
+    uint32_t group_piece_at(uint32_t g, uint32_t level, uint32_t colour) const {
+        return groups_[g].first_piece + level * groups_[g].colours + colour;
+    }
+    std::span<const pack::Group> groups_;
+    std::span<const uint32_t> group_members_, instance_groups_;
+    std::span<const pack::ProxyPart> group_pieces_;
+    uint32_t group_levels_ = 0;
 };
 
 // The place of record `index` of index section `id` ("index section Parts record" 3).
