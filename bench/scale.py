@@ -50,6 +50,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, 'tools'))
 import board as boards  # noqa: E402
 import card  # noqa: E402
+import img  # noqa: E402
 import protocol  # noqa: E402
 from budget_rules import first_view, peak_ram, zoom_detail  # noqa: E402
 from boot import boot, exit_note, last_error  # noqa: E402  (bench/boot.py: the benches' one run)
@@ -295,8 +296,22 @@ def main():
     print(f'wrote {args.csv}, {md}' + (f', {png}' if png else ''))
     figures = ('first_frame_instructions', 'first_view_instructions', 'frame_rest_instructions',
                'frame_rest_sharp_instructions', 'frame_turning_max_instructions', 'frame_zoomed_instructions', 'peak_ram_bytes')
-    if args.strict:  # (the test of this script) every figure of every row
+    if args.strict:  # (the test of this script) every figure of every row; a card's pictures those from RAM
         missing = [f'{r["board"]} {r["kind"]}-{r["faces"]} {r["source"]}: {c}' for r in rows for c in figures if r.get(c) in (None, '')]
+        for r in rows:
+            if r['source'] != 'card':
+                continue
+            name = f'{r["kind"]}-{r["faces"]}'
+            for shot in ('first', 'zoomed'):
+                a, b = (os.path.join(args.work, r['board'], name + end, shot + '.png') for end in ('', '-card'))
+                if not (os.path.exists(a) and os.path.exists(b)):
+                    missing.append(f'{r["board"]} {name}: the {shot} screenshot from RAM or the card')
+                    continue
+                w, h, _ = img.load_565(a)
+                field = img.frame_time_field(w, h)  # (the status bar's text: the model's name as its source gives it, and the time)
+                d, msg = img.compare(a, b, ignore=[(0, 0, field[2], field[3])] if field else [])
+                if d:
+                    missing.append(f'{r["board"]} {name}: the {shot} view from the card is not the one from RAM: {msg}')
         for m in missing:
             print(f'scale.py: not measured: {m}', file=sys.stderr)
         return 1 if missing else 0

@@ -6,8 +6,8 @@
 
 From Python: board.load('qemu-versatilepb') -> dict, with 'pack_address' and 'pack_bytes' as
 integers and 'size' as 'WxH'; board.can('qemu-versatilepb', 'mouse') -> what it can do (its
-"capabilities": card, screenshots, mouse, touch, bench, flash_runner); board.qemu_boards() -> the
-boards QEMU runs (those with a "qemu" machine).
+"capabilities": card, card_swap (a card pulled and put back), screenshots, mouse, touch, bench,
+flash_runner); board.qemu_boards() -> the boards QEMU runs (those with a "qemu" machine).
 """
 import json
 import os

@@ -41,6 +41,26 @@ bool write(int handle, const void* data, size_t size) {
     return call(SysWrite, block) == 0; // returns the number of bytes NOT written
 }
 
+int open_for_read(const char* path) {
+    const uint32_t block[3] = {reinterpret_cast<uintptr_t>(path), 1 /* "rb" */, static_cast<uint32_t>(length(path))};
+    return static_cast<int>(call(SysOpen, block));
+}
+
+int32_t length(int handle) {
+    const uint32_t block[1] = {static_cast<uint32_t>(handle)};
+    return static_cast<int32_t>(call(SysFlen, block));
+}
+
+bool seek(int handle, uint32_t at) {
+    const uint32_t block[2] = {static_cast<uint32_t>(handle), at};
+    return call(SysSeek, block) == 0;
+}
+
+bool read(int handle, void* into, size_t size) {
+    const uint32_t block[3] = {static_cast<uint32_t>(handle), reinterpret_cast<uintptr_t>(into), static_cast<uint32_t>(size)};
+    return call(SysRead, block) == 0; // returns the number of bytes NOT read
+}
+
 void close(int handle) {
     const uint32_t block[1] = {static_cast<uint32_t>(handle)};
     call(SysClose, block);

@@ -1,6 +1,8 @@
-// QEMU mps2-an500 peripherals: the driver singletons, the board handle, the exit through
+// QEMU mps2-an500 peripherals: the driver singletons, the board handle (its memory card an image
+// on the host, read through semihosting: QEMU's mps2 has no SD slot), the exit through
 // semihosting and the screenshot capture. Shared by the mps2 and the EVKB stand-in, which
 // differ only in their memory (board.cpp of each).
+#include "card_semihosted.h"
 #include "clock_dualtimer.h"
 #include "console_uart.h"
 #include "display_ram.h"
@@ -18,7 +20,8 @@ CmsdkUart console;
 DualTimerClock clock;
 RamDisplay display;
 boards::UartInput input(console);
-hal::Board the_board{board_config::kName, console, clock, display, input, &qemu::runner()};
+qemu::SemihostedCard card;
+hal::Board the_board{board_config::kName, console, clock, display, input, &qemu::runner(), &card};
 } // namespace
 
 void start_peripherals() {

@@ -174,12 +174,18 @@ def main():
         if not path or not addr:
             raise SystemExit(f'run.py: --load wants FILE@ADDR, got {spec}')
         cmd += ['-device', f'loader,file={os.path.abspath(path)},addr={addr},force-raw=on']
+    card_at = os.path.join(out, 'facet-card.img')  # a semihosted card's image (an earlier run's removed)
+    if os.path.lexists(card_at):
+        os.remove(card_at)
     if args.card:
         if not boards.can(args.board, 'card'):
             raise SystemExit(f'run.py: {args.board} has no memory card slot (board.json capabilities.card)')
         if not os.path.isfile(args.card):
             raise SystemExit(f'run.py: no card image {args.card}')
-        cmd += ['-drive', f'if=sd,format=raw,id=card,file={os.path.abspath(args.card)}']
+        if boards.can(args.board, 'card_swap'):  # an SD slot QEMU emulates
+            cmd += ['-drive', f'if=sd,format=raw,id=card,file={os.path.abspath(args.card)}']
+        else:  # read through semihosting from QEMU's working directory (boards/qemu-common/card_semihosted.h)
+            os.symlink(os.path.abspath(args.card), card_at)
     if args.icount:
         plugin = find_plugin()
         if not plugin:
@@ -313,6 +319,8 @@ def main():
                             qmp = Qmp(qmp_path)
                         if not args.card:
                             raise ValueError('no --card')
+                        if not boards.can(args.board, 'card_swap'):
+                            raise ValueError(f'the card of {args.board} cannot be pulled (board.json capabilities.card_swap)')
                         if rest.strip() == 'out':
                             qmp.command('eject', device='card', force=True)
                         else:
