@@ -189,6 +189,32 @@ Result PackIndex::check_proxy(const pack::ProxyPart& x, uint32_t section, uint32
     return {};
 }
 
+namespace {
+
+// Whether group x's box holds the part placed by the instance (its box's eight corners placed as
+// the packer placed them, within a rounding's slack) and its radius the part's box's half
+// diagonal: the viewer passes a group off the view whole, and takes its members' size from it.
+bool holds(const pack::Group& x, const Instance& inst, const pack::Part& part) {
+    const float* m = inst.m;
+    for (int corner = 0; corner < 8; ++corner) {
+        const float c[3] = {corner & 1 ? part.box_max[0] : part.box_min[0], corner & 2 ? part.box_max[1] : part.box_min[1],
+                            corner & 4 ? part.box_max[2] : part.box_min[2]};
+        for (int k = 0; k < 3; ++k) {
+            const float w = m[4 * k] * c[0] + m[4 * k + 1] * c[1] + m[4 * k + 2] * c[2] + m[4 * k + 3];
+            const float slack = 1e-4f * (std::fabs(w) + (x.box_max[k] - x.box_min[k])) + 1e-3f;
+            if (!(w >= x.box_min[k] - slack && w <= x.box_max[k] + slack)) return false;
+        }
+    }
+    float d2 = 0;
+    for (int k = 0; k < 3; ++k) {
+        const float h = 0.5f * (part.box_max[k] - part.box_min[k]);
+        d2 += h * h;
+    }
+    return std::sqrt(d2) <= x.member_radius_mm * (1 + 1e-4f) + 1e-3f;
+}
+
+} // namespace
+
 // The groups, when there are (all four sections): the members of group after group in
 // GroupMembers, ascending within each, every one an instance whose InstanceGroups entry is that
 // group (so every instance is a member once), a box, 1 to kMostProxyLevels levels of pieces
@@ -227,6 +253,9 @@ Result PackIndex::check_groups() {
             const uint32_t i = group_members_[m];
             if (i >= instances_.size() || instance_groups_[i] != g || (m > x.first_member && !(i > group_members_[m - 1]))) {
                 return fail("a member is not an instance of this group's, or not after the one before", M, m);
+            }
+            if (!holds(x, instances_[i], parts_[instances_[i].shell])) {
+                return fail("a member's part, placed, lies outside its group's box or is larger than its radius", M, m);
             }
         }
     }

@@ -234,8 +234,20 @@ TEST(Groups, EveryInstanceIsInOneGroupAndEachGroupsProxyIsWithinItsCapAndBox) {
     members[groups[1].first_member] = kept;
     ASSERT_TRUE(refix().ok());
     auto* group_records = const_cast<pack::Group*>(index.groups().data());
+    const float right = group_records[0].box_max[0];
     group_records[0].box_max[0] = group_records[0].box_min[0] - 1; // an inverted box
     const Result inverted = refix();
     EXPECT_EQ(inverted.status, Status::Corrupt);
     EXPECT_NE(std::string(inverted.where.kind ? inverted.where.kind : "").find("Groups"), std::string::npos);
+    // A box that leaves out part of a member (the viewer would pass it off the view), or a radius
+    // under a member's: refused.
+    group_records[0].box_max[0] = right - 10; // (the records where they lie in `aligned`)
+    const Result short_box = refix();
+    EXPECT_EQ(short_box.status, Status::Corrupt);
+    EXPECT_NE(std::string(short_box.what).find("outside its group's box"), std::string::npos) << short_box.what;
+    group_records[0].box_max[0] = right;
+    ASSERT_TRUE(refix().ok());
+    group_records[0].member_radius_mm *= 0.5f;
+    const Result small = refix();
+    EXPECT_EQ(small.status, Status::Corrupt);
 }
