@@ -32,6 +32,18 @@ Bytes shapes_pack(uint32_t copies) {
     return combine_packs(packs, 150.0f);
 }
 
+// `pack` blocked with its parts' proxies at `caps` (made into `proxies`) and its groups' at
+// `group_caps` (none: no groups), as `file` and as words a PackIndex opens in place.
+std::vector<uint32_t> blocked_aligned(const Pack& pack, std::span<const uint32_t> caps, std::span<const uint32_t> group_caps,
+                                      std::vector<Proxy>& proxies, Bytes& file) {
+    std::string error;
+    EXPECT_TRUE(make_proxies(pack, caps, proxies, error)) << error;
+    EXPECT_TRUE(make_blocked(pack, {}, {1, BlockStore::Lzma, &proxies, group_caps}, file, error)) << error;
+    std::vector<uint32_t> aligned(file.size() / 4 + 1);
+    std::memcpy(aligned.data(), file.data(), file.size());
+    return aligned;
+}
+
 } // namespace
 
 TEST(Proxies, EachPartHasACoarseMeshWithinItsCapAndBox) {
@@ -94,12 +106,8 @@ TEST(Proxies, TheIndexCarriesThemAndRefusesBadOnes) {
     std::vector<Proxy> proxies;
     std::string error;
     const uint32_t caps[] = {12, 48};
-    ASSERT_TRUE(make_proxies(pack, caps, proxies, error)) << error;
-    BlockOptions options{1, BlockStore::Lzma, &proxies};
     Bytes file;
-    ASSERT_TRUE(make_blocked(pack, {}, options, file, error)) << error;
-    std::vector<uint32_t> aligned(file.size() / 4 + 1);
-    std::memcpy(aligned.data(), file.data(), file.size());
+    std::vector<uint32_t> aligned = blocked_aligned(pack, caps, {}, proxies, file);
     PackIndex index;
     ASSERT_TRUE(index.open(aligned.data(), uint32_t(file.size())).ok());
     ASSERT_EQ(index.proxy_levels(), 2u);
@@ -174,12 +182,8 @@ TEST(Groups, EveryInstanceIsInOneGroupAndEachGroupsProxyIsWithinItsCapAndBox) {
     std::vector<Proxy> proxies;
     std::string error;
     const uint32_t caps[] = {12, 48}, group_caps[] = {24, 96};
-    ASSERT_TRUE(make_proxies(pack, caps, proxies, error)) << error;
-    BlockOptions options{1, BlockStore::Lzma, &proxies, group_caps};
     Bytes file;
-    ASSERT_TRUE(make_blocked(pack, {}, options, file, error)) << error;
-    std::vector<uint32_t> aligned(file.size() / 4 + 1);
-    std::memcpy(aligned.data(), file.data(), file.size());
+    std::vector<uint32_t> aligned = blocked_aligned(pack, caps, group_caps, proxies, file);
     PackIndex index;
     ASSERT_TRUE(index.open(aligned.data(), uint32_t(file.size())).ok());
     const auto groups = index.groups();

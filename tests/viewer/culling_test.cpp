@@ -13,18 +13,29 @@ using namespace facet;
 using namespace facet::geom;
 using namespace facet::test;
 
+namespace {
+
+// The assembly blocked, a part a block, each part its own box (its vertices' and control
+// points', as make_blocked takes them); empty when it cannot be made.
+Bytes own_boxes() {
+    const Bytes whole = assembly();
+    Pack p;
+    Bytes file;
+    std::string error;
+    if (!p.open(whole.data(), uint32_t(whole.size())).ok() || !make_blocked(p, {}, {1, BlockStore::Plain}, file, error)) return {};
+    return file;
+}
+
+} // namespace
+
 // A frame skips a part whose sphere (its box in the index) lies off the view and tests no face
 // of one wholly inside it (Presenter, Transform::sight: its geometry in camera_test.cpp). That
 // changes no pixel when the part's sphere holds everything drawn of it: checked here with each
 // part its own box (its vertices' and control points', as make_blocked takes them), every mesh
 // vertex and edge sample, at the model's one tolerance and refined.
 TEST(Culling, APartsSphereHoldsEverythingDrawnOfIt) {
-    const Bytes whole = assembly();
-    Pack p;
-    ASSERT_TRUE(p.open(whole.data(), uint32_t(whole.size())).ok());
-    Bytes file;
-    std::string error;
-    ASSERT_TRUE(make_blocked(p, {}, {1, BlockStore::Plain}, file, error)) << error; // (each shell's own box)
+    const Bytes file = own_boxes();
+    ASSERT_FALSE(file.empty());
     for (const float screen_error : {0.0f, 0.5f}) {
         App app;
         app.w = 320, app.h = 240, app.screen_error_px = screen_error;
@@ -91,12 +102,8 @@ TEST(Culling, APartAFewPixelsAcrossIsDrawnAsItsBox) {
 // afar, close up (the eye among and inside the parts, parts behind it), turned and panned, in
 // perspective and parallel.
 TEST(Culling, APartJudgedWholeGivesItsFacesTheVerdictsEachWouldHaveAlone) {
-    const Bytes whole = assembly();
-    Pack p;
-    ASSERT_TRUE(p.open(whole.data(), uint32_t(whole.size())).ok());
-    Bytes file;
-    std::string error;
-    ASSERT_TRUE(make_blocked(p, {}, {1, BlockStore::Plain}, file, error)) << error; // (each shell's own box)
+    const Bytes file = own_boxes();
+    ASSERT_FALSE(file.empty());
     App app;
     app.w = 320, app.h = 240;
     ASSERT_TRUE(app.create().ok());
