@@ -115,6 +115,15 @@ struct Transform {
     // test of its own), or across a side. Conservative both ways: Across when unsure.
     enum class Sight : uint8_t { Out, Across, In };
     Sight sight(const int32_t centre[3], int32_t radius, Rows rows) const;
+    // Whether the section's plane may cross a sphere (mesh units): what it holds is then drawn
+    // cut, each of its own (a proxy has no cap). False without a section.
+    bool cut_may_cross(const int32_t centre[3], int32_t radius) const {
+        if (!cut.on) return false;
+        int32_t x, y, d;
+        to_view(centre, x, y, d);
+        const int64_t rv = (int64_t(radius) * k16) >> 16, side = cut.side(x, y, d), r = (rv + rv / 8 + 2) * 16384;
+        return side >= -r && side <= r;
+    }
     // n . (eye - p) for a normal n (Q14) at the mesh point p, in shell coordinates: > 0 where
     // the surface looks at the eye, < 0 where it turns away (parallel: n . the way to the eye).
     int64_t facing(const int32_t p[3], const int16_t n[3]) const {

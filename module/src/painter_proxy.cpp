@@ -17,12 +17,7 @@ uint32_t Painter::proxy_level(uint32_t part, const int32_t sphere_centre[3], int
             hl_[1].instance == instance_) {
             return kNone;
         }
-        if (t.cut.on) {
-            int32_t x, y, d;
-            t.to_view(sphere_centre, x, y, d);
-            const int64_t rv = (int64_t(radius) * t.k16) >> 16, side = t.cut.side(x, y, d), r = (rv + rv / 8 + 2) * 16384;
-            if (side >= -r && side <= r) return kNone;
-        }
+        if (t.cut_may_cross(sphere_centre, radius)) return kNone;
     }
     // The coarsest level within the view's proxy error; for a part that must stand as one and
     // has none so near, the coarsest within the left-out error, else the finest.

@@ -210,6 +210,9 @@ private:
     // stay the same (each stage of a frame takes every instance's, and a pass's frames share
     // one view); the rest is the view's basis, made once a view or section.
     const Transform& transform_of(uint32_t instance);
+    // The view's basis for this view, section, screen and model (made again when one changed;
+    // the placements kept then made anew where the placing changed).
+    const ViewBasis& view_basis();
     // job_.transform's eye placed (Transform::place_eye; kept for kKeptEyes instances): before
     // the instance's own faces are drawn.
     void place_eye();

@@ -27,8 +27,7 @@ Presenter::GroupVerdict Presenter::judge_group(uint32_t g, uint32_t& level) {
     const auto members = index.group_members().subspan(group.first_member, group.member_count);
     for (const uint32_t i : members) closed = closed && index.parts()[scene_.instances()[i].shell].closed;
     static constexpr float kIdentity[12] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};
-    (void)transform_of(members[0]); // (the view's basis made for this view)
-    group_transform_ = Camera::transform(basis_, kIdentity, closed);
+    group_transform_ = Camera::transform(view_basis(), kIdentity, closed);
     const Transform& t = group_transform_;
     const Transform::Sight sight = t.sight(centre, radius, painter_.rows(t));
     if (sight == Transform::Sight::Out) return GroupVerdict::Out;
@@ -51,12 +50,7 @@ Presenter::GroupVerdict Presenter::judge_group(uint32_t g, uint32_t& level) {
     constexpr uint32_t kInstanceTriangles = 12;
     level = painter_.group_level(g, centre, radius, t, need, fewest + kInstanceTriangles * group.member_count);
     if (level == kNone) return GroupVerdict::Members;
-    if (t.cut.on) { // (the section draws its members cut, each)
-        int32_t x, y, d;
-        t.to_view(centre, x, y, d);
-        const int64_t rv = (int64_t(radius) * t.k16) >> 16, side = t.cut.side(x, y, d), r = (rv + rv / 8 + 2) * 16384;
-        if (side >= -r && side <= r) return GroupVerdict::Members;
-    }
+    if (t.cut_may_cross(centre, radius)) return GroupVerdict::Members; // (the section draws its members cut, each)
     for (const uint32_t i : members) {
         if (!scene_.shown(i) || painter_.lit_instance(i)) return GroupVerdict::Members;
     }
