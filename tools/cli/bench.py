@@ -75,7 +75,7 @@ def add(sub):
                    help='mixed: distinct copies to 30 k faces, instances of them beyond (above 30 k faces only)')
     p.add_argument('--boards', default='qemu-versatilepb,qemu-mps2-evkb', metavar='A,B')
     p.add_argument('--sources', default='ram', metavar='ram,card', help='where the pack comes from: loaded into RAM, '
-                   'and/or a memory card image in the SD slot of a board with one (docs/storage.md)')
+                   'and/or a memory card image (the SD slot, or on the mps2 boards a semihosted image: docs/storage.md)')
     p.set_defaults(run=cmd_scale)
 
     p = kinds.add_parser('itcm', help="profile the EVKB's configuration, rewrite its ITCM code list",
