@@ -16,17 +16,6 @@ Vec3 placed(const pack::Instance& inst, Vec3 p) {
             m[8] * p.x + m[9] * p.y + m[10] * p.z + m[11]};
 }
 
-// A shell's box placed by an instance: the box of its eight corners.
-PartBox placed_box(const pack::Instance& inst, const PartBox& b) {
-    PartBox out{{3e38f, 3e38f, 3e38f}, {-3e38f, -3e38f, -3e38f}};
-    for (int corner = 0; corner < 8; ++corner) {
-        const Vec3 w = placed(inst, {corner & 1 ? b.max[0] : b.min[0], corner & 2 ? b.max[1] : b.min[1], corner & 4 ? b.max[2] : b.min[2]});
-        const float c[3] = {w.x, w.y, w.z};
-        for (int k = 0; k < 3; ++k) out.min[k] = std::min(out.min[k], c[k]), out.max[k] = std::max(out.max[k], c[k]);
-    }
-    return out;
-}
-
 // Splits instances [first, last) of `order` at the median of their centres along the longest
 // side of the centres' box until each part has at most kMostMembers.
 void split(std::vector<uint32_t>& order, size_t first, size_t last, const std::vector<PartBox>& at,
@@ -68,8 +57,8 @@ bool make_groups(const Pack& pack, const std::vector<PartBox>& boxes, const std:
         error = "groups: 1 to " + std::to_string(pack::kMostProxyLevels) + " levels, the coarsest first";
         return false;
     }
-    std::vector<PartBox> at(instances.size());
-    for (size_t i = 0; i < instances.size(); ++i) at[i] = placed_box(instances[i], boxes[instances[i].shell]);
+    std::vector<PartBox> at(instances.size(), PartBox{{3e38f, 3e38f, 3e38f}, {-3e38f, -3e38f, -3e38f}});
+    for (size_t i = 0; i < instances.size(); ++i) grow_by_placed(instances[i], boxes[instances[i].shell], at[i].min, at[i].max);
     std::vector<uint32_t> order(instances.size());
     for (uint32_t i = 0; i < order.size(); ++i) order[i] = i;
     std::vector<std::pair<size_t, size_t>> ranges;
@@ -104,7 +93,6 @@ bool make_groups(const Pack& pack, const std::vector<PartBox>& boxes, const std:
                 soup.triangles.push_back(base + x.triangles[t + (mirrored ? 1 : 2)]);
             }
         }
-        if (g.box.min[0] > g.box.max[0]) g.box = {{0, 0, 0}, {0, 0, 0}};
         size_t all = 0;
         for (const auto& [colour, soup] : soups) all += soup.triangle_count(), g.colours.push_back(colour);
         g.pieces.assign(caps.size() * g.colours.size(), Proxy{});

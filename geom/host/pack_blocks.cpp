@@ -146,16 +146,6 @@ void append(std::vector<uint8_t>& out, std::vector<SectionEntry>& table, IndexSe
     table.push_back({uint32_t(id), offset, uint32_t(records.size()), uint32_t(sizeof(T))});
 }
 
-void place(const Instance& inst, const PartBox& b, float lo[3], float hi[3]) {
-    for (int corner = 0; corner < 8; ++corner) {
-        const float c[3] = {corner & 1 ? b.max[0] : b.min[0], corner & 2 ? b.max[1] : b.min[1], corner & 4 ? b.max[2] : b.min[2]};
-        for (int k = 0; k < 3; ++k) {
-            const float w = inst.m[4 * k] * c[0] + inst.m[4 * k + 1] * c[1] + inst.m[4 * k + 2] * c[2] + inst.m[4 * k + 3];
-            lo[k] = std::min(lo[k], w), hi[k] = std::max(hi[k], w);
-        }
-    }
-}
-
 // Two proxies of one mesh (a part simple enough that a coarser level is the finer one).
 bool same_mesh(const Proxy& a, const Proxy& b) {
     return a.triangles == b.triangles && a.points.size() == b.points.size() &&
@@ -203,6 +193,16 @@ pack::ProxyPart proxy_record(const Pack& whole, const Proxy& x, const PartBox& b
 }
 
 } // namespace
+
+void grow_by_placed(const Instance& inst, const PartBox& b, float lo[3], float hi[3]) {
+    for (int corner = 0; corner < 8; ++corner) {
+        const float c[3] = {corner & 1 ? b.max[0] : b.min[0], corner & 2 ? b.max[1] : b.min[1], corner & 4 ? b.max[2] : b.min[2]};
+        for (int k = 0; k < 3; ++k) {
+            const float w = inst.m[4 * k] * c[0] + inst.m[4 * k + 1] * c[1] + inst.m[4 * k + 2] * c[2] + inst.m[4 * k + 3];
+            lo[k] = std::min(lo[k], w), hi[k] = std::max(hi[k], w);
+        }
+    }
+}
 
 bool make_blocked(const Pack& whole, const std::vector<PartBox>& given, const BlockOptions& options, std::vector<uint8_t>& out,
                   std::string& error) {
@@ -261,7 +261,7 @@ bool make_blocked(const Pack& whole, const std::vector<PartBox>& given, const Bl
             std::memcpy(p.box_max, boxes[s].max, sizeof p.box_max);
             parts.push_back(p);
             for (const Instance& inst : whole.instances())
-                if (inst.shell == s) place(inst, boxes[s], b.box_min, b.box_max);
+                if (inst.shell == s) grow_by_placed(inst, boxes[s], b.box_min, b.box_max);
         }
         blocks.push_back(b);
         payloads.push_back(std::move(bytes));

@@ -17,6 +17,10 @@ struct PartBox {
     float min[3], max[3];
 };
 
+// [lo, hi] grown by box b placed by the instance (its eight corners placed: mm, the model's
+// coordinates), as a blocked pack's block and group boxes are made.
+void grow_by_placed(const pack::Instance& inst, const PartBox& b, float lo[3], float hi[3]);
+
 enum class BlockStore : uint8_t { Lzma, Deflated, Plain };
 
 struct Proxy; // (proxies.h)

@@ -1,6 +1,5 @@
 #include "presenter.h"
 
-#include <cmath>
 #include <cstring> // (std::memcpy)
 
 #include "render/text.h"
@@ -264,11 +263,7 @@ bool Presenter::update_pieces(uint32_t units) {
                 painter_.set_instance(job_.instance);
                 painter_.set_inside(false); // (a face or two at a time: each tested)
                 judge_part(instances[job_.instance].shell, job_.transform, false);
-                if (job_.level == kNone && scene_.blocked() && !scene_.index().groups().empty()) { // its group drawn whole?
-                    uint32_t level;
-                    if (judge_group(scene_.index().group_of(job_.instance), level) != GroupVerdict::Members) job_.level = 0;
-                }
-                if (job_.level != kNone) { // drawn as its proxy, or in its group's: none of its faces
+                if (job_.level != kNone || in_group_whole(job_.instance)) { // drawn as its proxy, or in its group's: none of its faces
                     job_.face = job_.applied_to;
                     break;
                 }

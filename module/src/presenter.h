@@ -148,6 +148,8 @@ private:
         uint32_t instance = 0, face = 0, tri = 0;
         uint32_t id = 0;              // the instance drawn (Scene::instances)
         uint32_t groups_drawn = 0;    // groups drawn as their proxies (faces stages)
+        uint32_t judged_group = kNone; // an update's last group judged (in_group_whole()), and
+        bool group_whole = false;      // whether it is drawn whole (off the view, or its proxy)
         bool begun = false;
         bool all_faces = false;       // the frame draws every face (LayerAll or BufferAll), not the layer's copy
         // Drawn without its Edges stage: a new view's faces first, its frames of every face
@@ -199,6 +201,8 @@ private:
     // At job_.instance, the first member of a group: the members the group passes (0: drawn
     // each), its proxy drawn in a faces stage; `spent` the work.
     uint32_t pass_group(bool faces, uint32_t& spent);
+    // An update's: whether the instance's group is drawn whole, none of its members' faces.
+    bool in_group_whole(uint32_t instance);
     Transform group_transform_{}; // judge_group()'s: the model's own coordinates
     uint32_t groups_drawn_ = 0;   // groups_drawn()
     bool update_pieces(uint32_t units); // the faces since the buffer (or the layer) was last drawn

@@ -57,6 +57,16 @@ Presenter::GroupVerdict Presenter::judge_group(uint32_t g, uint32_t& level) {
     return GroupVerdict::Proxy;
 }
 
+bool Presenter::in_group_whole(uint32_t instance) {
+    if (!scene_.blocked() || scene_.index().groups().empty()) return false;
+    const uint32_t g = scene_.index().group_of(instance);
+    if (job_.judged_group != g) { // (one verdict a group and frame: its members' faces come one after another)
+        uint32_t level;
+        job_.judged_group = g, job_.group_whole = judge_group(g, level) != GroupVerdict::Members;
+    }
+    return job_.group_whole;
+}
+
 uint32_t Presenter::pass_group(bool faces, uint32_t& spent) {
     if (!scene_.blocked() || scene_.index().groups().empty()) return 0;
     const geom::PackIndex& index = scene_.index();
