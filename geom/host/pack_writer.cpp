@@ -78,8 +78,7 @@ void PackWriter::name_instance(uint32_t instance, const std::string& name) {
 
 namespace {
 template <typename T>
-void append_section(std::vector<uint8_t>& out, std::vector<SectionEntry>& table, SectionId id,
-                    const std::vector<T>& records) {
+void append_section(std::vector<uint8_t>& out, std::vector<SectionEntry>& table, auto id, const std::vector<T>& records) {
     const uint32_t offset = uint32_t(out.size());
     const size_t bytes = records.size() * sizeof(T);
     out.resize(out.size() + bytes);
@@ -136,6 +135,15 @@ std::vector<uint8_t> PackWriter::finish() const {
         append_section(out, table, SectionId::Names, pool);
     }
     if (!smooth_words.empty()) append_section(out, table, SectionId::SmoothEdges, smooth_words);
+    if (const AnnotationTables& a = annotations_; !a.records.empty()) {
+        std::vector<char> text = a.text;
+        text.resize((text.size() + 3) & ~size_t(3), 0);
+        append_section(out, table, pack::PmiSectionId::Annotations, a.records);
+        append_section(out, table, pack::PmiSectionId::PmiText, text);
+        append_section(out, table, pack::PmiSectionId::PmiFaces, a.faces);
+        append_section(out, table, pack::PmiSectionId::PmiPolylines, a.polylines);
+        append_section(out, table, pack::PmiSectionId::PmiPoints, a.points);
+    }
     const uint32_t sections = uint32_t(table.size()), head = uint32_t(sizeof(Header) + sections * sizeof(SectionEntry));
     for (SectionEntry& e : table) e.offset += head;
     out.insert(out.begin(), head, 0);

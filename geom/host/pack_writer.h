@@ -2,13 +2,24 @@
 // Builds a pack in memory on the host (tools/facet-pack, tests). Not for the device: it
 // allocates. The matching reader is geom/pack.h.
 #include "geom/pack_format.h"
+#include "geom/pmi_format.h"
 
 #include <cstdint>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace facet::geom {
+
+// A pack's annotations (geom/pmi_format.h), as facet-pack builds them: each table one section.
+struct AnnotationTables {
+    std::vector<pack::Annotation> records;
+    std::vector<char> text; // 0-ended texts (finish() pads the pool to 4 bytes)
+    std::vector<uint32_t> faces;
+    std::vector<pack::Polyline> polylines;
+    std::vector<pack::PmiPoint> points;
+};
 
 // The frame at (x, y, z) along the world's axes (right-handed): an elementary surface's record's head.
 inline pack::Frame axes_at(float x, float y, float z) { return {{x, y, z}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}}; }
@@ -65,6 +76,9 @@ public:
     void set_source_unit_mm(float unit) { unit_mm_ = unit; }
     // What the model takes on a device (pack::Needs), written first after the table.
     void set_needs(const pack::Needs& needs) { needs_ = needs, has_needs_ = true; }
+    // The model's annotations (written when there is one).
+    void set_annotations(AnnotationTables tables) { annotations_ = std::move(tables); }
+    const AnnotationTables& annotations() const { return annotations_; }
     // The finished pack: header with bounding box and CRC, section table, sections.
     std::vector<uint8_t> finish() const;
     // Bytes per section, for the packer's summary.
@@ -95,6 +109,7 @@ private:
     std::vector<bool> smooth_; // per edge, as far as set
     pack::Needs needs_{};
     bool has_needs_ = false;
+    AnnotationTables annotations_;
     std::vector<pack::Coedge> coedges_;
     std::vector<pack::Loop> loops_;
     std::vector<pack::Face> faces_;

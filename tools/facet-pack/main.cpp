@@ -23,6 +23,7 @@
 // Exit codes: 0 packed (or valid), 1 error (the reason on stderr; no file left behind), 2 usage.
 #include "geom/library.h"
 #include "geom/pack.h"
+#include "geom/pmi.h"
 #include "core/format.h"
 #include "file_io.h"
 #include "occt_to_pack.h"
@@ -175,6 +176,12 @@ int check(const char* path) {
         describe(r, text, sizeof text);
         return die(std::string(path) + ": " + text);
     }
+    geom::Annotations pmi;
+    if (const Result r = pmi.open(pack); !r.ok()) {
+        char text[160];
+        describe(r, text, sizeof text);
+        return die(std::string(path) + ": " + text);
+    }
     std::printf("%s: valid pack, %zu faces, %zu edges, %zu shells, %zu instances, %u bytes", path, pack.faces().size(),
                 pack.edges().size(), pack.shells().size(), pack.instances().size(), file.bytes);
     if (geom::compressed(file.kind)) {
@@ -187,6 +194,19 @@ int check(const char* path) {
         const uint32_t s = pack.instances()[i].shell;
         std::printf("  instance %u: shell %u \"%s\"", i, s, packer::printable(pack.shell_name(s)).c_str());
         if (*pack.instance_name(i)) std::printf(" as \"%s\"", packer::printable(pack.instance_name(i)).c_str());
+        std::printf("\n");
+    }
+    // The annotations (PMI): each one's kind, text and faces.
+    for (uint32_t i = 0; i < pmi.count(); ++i) {
+        const pack::Annotation& a = pmi[i];
+        std::printf("  annotation %u: %s%s \"%s\"", i, geom::annotation_kind_name(pack::AnnotationKind(a.kind)),
+                    a.flags & pack::kSemantic ? "" : " (presentation)", packer::printable(pmi.text(i)).c_str());
+        if (a.face_count) {
+            std::printf(" on face%s", a.face_count == 1 ? "" : "s");
+            for (uint32_t f : pmi.faces(i)) std::printf(" %u", f);
+        }
+        if (a.drawn_by != pack::kNoIndex) std::printf(", drawn as %u", a.drawn_by);
+        else if (a.polyline_count) std::printf(", %u polylines", a.polyline_count);
         std::printf("\n");
     }
     return 0;
@@ -303,6 +323,19 @@ int run(int argc, char** argv) {
         std::fprintf(stderr, "facet-pack: warning: %s: %s\n", in, why.c_str());
     }
     std::vector<uint8_t> pack = writer.finish();
+    uint32_t faces_missed = 0;
+    if (!model.pmi.notes.empty()) {
+        // The annotations' faces found among those packed (the pack as written so far).
+        geom::Pack opened;
+        if (const Result r = opened.open(pack.data(), uint32_t(pack.size())); !r.ok()) return die("the pack written does not read back");
+        writer.set_annotations(packer::pmi_tables(model.pmi, opened, packer.packed_faces, faces_missed));
+        if (faces_missed) {
+            const std::string why = std::to_string(faces_missed) + " faces the PMI applies to are not among the packed faces";
+            if (!partial) return die(std::string(in) + ": " + why + "\n  --partial packs the annotations without them");
+            std::fprintf(stderr, "facet-pack: warning: %s: %s\n", in, why.c_str());
+        }
+        pack = writer.finish();
+    }
     {
         // What it takes on a device, measured with the module's own code (facet::model_needs()
         // reads it from the pack's head).
@@ -347,6 +380,10 @@ int run(int argc, char** argv) {
         }
         blocks = uint32_t(index.blocks().size());
         if (blocks == 1) whole = true; // one block: the whole pack as it is, without an index
+        if (blocks > 1 && !model.pmi.notes.empty()) { // (a blocked pack does not carry annotations)
+            whole = true;
+            model.notes += "its PMI is carried by a whole pack: written whole, not in " + std::to_string(blocks) + " blocks\n";
+        }
     }
     if (whole) {
         bytes = plain ? pack : (deflated ? geom::deflate_pack(pack) : geom::lzma_pack(pack));
@@ -384,6 +421,12 @@ int run(int argc, char** argv) {
     if (!whole) std::printf(" in %u block%s", blocks, blocks == 1 ? "" : "s");
     std::printf("\n");
     for (auto& [k, v] : stats.converted) std::printf("  converted: %u %s\n", v, k.c_str());
+    if (const packer::Pmi& p = model.pmi; !p.notes.empty()) {
+        const geom::AnnotationTables& a = writer.annotations();
+        const size_t drawn = size_t(std::count_if(a.records.begin(), a.records.end(), [](const pack::Annotation& r) { return r.drawn_by == pack::kNoIndex && r.polyline_count; }));
+        std::printf("  PMI: %u dimensions, %u geometric tolerances, %u datums: %zu annotations (%zu presentations, %zu polylines), on %zu faces\n",
+                    p.dimensions, p.tolerances, p.datums, a.records.size(), drawn, a.polylines.size(), a.faces.size());
+    }
     for (size_t a = 0, b; a < model.notes.size(); a = b + 1) {
         b = model.notes.find('\n', a);
         if (b == std::string::npos) b = model.notes.size();

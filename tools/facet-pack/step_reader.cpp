@@ -339,6 +339,8 @@ bool read_step(const std::string& in, StepModel& model, std::string& error, bool
         opened->SetColorMode(colours);
         opened->SetNameMode(true);
         opened->SetLayerMode(false);
+        opened->SetGDTMode(true);  // the PMI's semantic records
+        opened->SetViewMode(true); // and their presentation
         app->NewDocument("MDTV-XCAF", doc);
         return opened->ReadFile(in.c_str()) == IFSelect_RetDone;
     };
@@ -414,6 +416,7 @@ bool read_step(const std::string& in, StepModel& model, std::string& error, bool
     if (model.faces_outside) {
         model.notes += std::to_string(model.faces_outside) + " faces of shells no shape uses (construction geometry) left out\n";
     }
+    double pmi_scale = 1.0;
     if (model.unit_mm == 0) {
         // No unit context: Open CASCADE takes the numbers as they are (as millimetres).
         Bnd_Box box;
@@ -426,6 +429,7 @@ bool read_step(const std::string& in, StepModel& model, std::string& error, bool
                       no_unit == UnitGuess::BySize ? " (--unit mm|cm|m|in|ft says otherwise)" : " (--unit)");
         model.notes += note;
         if (model.unit_mm != 1.0f) {
+            pmi_scale = model.unit_mm;
             gp_Trsf scale;
             scale.SetScale(gp_Pnt(0, 0, 0), model.unit_mm);
             for (TopoDS_Shape& s : top) {
@@ -438,6 +442,7 @@ bool read_step(const std::string& in, StepModel& model, std::string& error, bool
             }
         }
     }
+    if (transferred && !model.colours.IsNull()) read_pmi(doc, pmi_scale, model.pmi);
     say("healing");
     for (const TopoDS_Shape& root : top) {
         std::vector<Part> raw;

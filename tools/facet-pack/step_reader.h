@@ -3,6 +3,8 @@
 #include <TopoDS_Shape.hxx>
 #include <XCAFDoc_ColorTool.hxx>
 
+#include "pmi.h"
+
 #include <string>
 #include <vector>
 
@@ -30,6 +32,7 @@ struct StepModel {
     std::vector<std::string> failed;
     std::string name;                    // the model's: its top product's (or the file's stem)
     std::string notes;                   // how the file was read when it was out of the ordinary (no product, no unit)
+    Pmi pmi;                             // its PMI (AP242), as Open CASCADE reads it
 };
 
 // The length unit to assume when the file gives none (a file with no unit context).

@@ -1,0 +1,414 @@
+#include "pmi.h"
+
+#include "geom/pack.h"
+
+#include <BRepAdaptor_Curve.hxx>
+#include <BRepBndLib.hxx>
+#include <BRepGProp.hxx>
+#include <Bnd_Box.hxx>
+#include <GCPnts_QuasiUniformDeflection.hxx>
+#include <GProp_GProps.hxx>
+#include <Standard_Failure.hxx>
+#include <TCollection_HAsciiString.hxx>
+#include <TDF_LabelSequence.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <XCAFDimTolObjects_DatumObject.hxx>
+#include <XCAFDimTolObjects_DimensionObject.hxx>
+#include <XCAFDimTolObjects_GeomToleranceObject.hxx>
+#include <XCAFDoc_Datum.hxx>
+#include <XCAFDoc_DimTolTool.hxx>
+#include <XCAFDoc_Dimension.hxx>
+#include <XCAFDoc_DocumentTool.hxx>
+#include <XCAFDoc_GeomTolerance.hxx>
+#include <XCAFDoc_ShapeTool.hxx>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <tuple>
+
+namespace facet::packer {
+namespace {
+
+using pack::AnnotationKind;
+
+// The symbols drawings use (UTF-8; facet's font draws each: tools/font/make_font.py).
+constexpr const char* kDiameter = "\u2300";
+constexpr const char* kPlusMinus = "\u00B1";
+constexpr const char* kDegree = "\u00B0";
+constexpr const char* kToleranceSymbols[pack::kToleranceTypes] = {
+    "",       "\u2220", "\u2197", "\u25CB", "\u25CE", "\u25CE", "\u232D", "\u23E5",
+    "\u2225", "\u27C2", "\u2316", "\u2312", "\u2313", "\u23E4", "\u232F", "\u2330",
+};
+constexpr const char* kMaximumMaterial = "\u24C2", *kLeastMaterial = "\u24C1", *kProjected = "\u24C5";
+
+// A value as a drawing writes it: `decimals` places when the file says (else up to four, no
+// trailing zeros).
+std::string number(double v, int decimals = -1) {
+    char s[48];
+    if (decimals >= 0 && decimals <= 6) {
+        std::snprintf(s, sizeof s, "%.*f", decimals, v);
+        return s;
+    }
+    std::snprintf(s, sizeof s, "%.4f", v);
+    std::string t = s;
+    while (t.back() == '0') t.pop_back();
+    if (t.back() == '.') t.pop_back();
+    return t == "-0" ? "0" : t;
+}
+
+pack::DimensionType dimension_type(XCAFDimTolObjects_DimensionType t) {
+    using D = pack::DimensionType;
+    switch (t) {
+    case XCAFDimTolObjects_DimensionType_Location_LinearDistance:
+    case XCAFDimTolObjects_DimensionType_Location_LinearDistance_FromCenterToOuter:
+    case XCAFDimTolObjects_DimensionType_Location_LinearDistance_FromCenterToInner:
+    case XCAFDimTolObjects_DimensionType_Location_LinearDistance_FromOuterToCenter:
+    case XCAFDimTolObjects_DimensionType_Location_LinearDistance_FromOuterToOuter:
+    case XCAFDimTolObjects_DimensionType_Location_LinearDistance_FromOuterToInner:
+    case XCAFDimTolObjects_DimensionType_Location_LinearDistance_FromInnerToCenter:
+    case XCAFDimTolObjects_DimensionType_Location_LinearDistance_FromInnerToOuter:
+    case XCAFDimTolObjects_DimensionType_Location_LinearDistance_FromInnerToInner: return D::Linear;
+    case XCAFDimTolObjects_DimensionType_Size_Diameter:
+    case XCAFDimTolObjects_DimensionType_Size_ToroidalMinorDiameter:
+    case XCAFDimTolObjects_DimensionType_Size_ToroidalMajorDiameter:
+    case XCAFDimTolObjects_DimensionType_Size_ToroidalHighMajorDiameter:
+    case XCAFDimTolObjects_DimensionType_Size_ToroidalLowMajorDiameter: return D::Diameter;
+    case XCAFDimTolObjects_DimensionType_Size_Radius:
+    case XCAFDimTolObjects_DimensionType_Size_ToroidalMinorRadius:
+    case XCAFDimTolObjects_DimensionType_Size_ToroidalMajorRadius:
+    case XCAFDimTolObjects_DimensionType_Size_ToroidalHighMajorRadius:
+    case XCAFDimTolObjects_DimensionType_Size_ToroidalLowMajorRadius: return D::Radius;
+    case XCAFDimTolObjects_DimensionType_Location_Angular:
+    case XCAFDimTolObjects_DimensionType_Size_Angular: return D::Angle;
+    case XCAFDimTolObjects_DimensionType_Size_SphericalDiameter: return D::SphericalDiameter;
+    case XCAFDimTolObjects_DimensionType_Size_SphericalRadius: return D::SphericalRadius;
+    case XCAFDimTolObjects_DimensionType_Size_CurveLength:
+    case XCAFDimTolObjects_DimensionType_Size_Thickness:
+    case XCAFDimTolObjects_DimensionType_Size_WithPath: return D::Length;
+    default: return D::Location;
+    }
+}
+
+// A fit class: "H7" (a hole: capitals), "g6" (a shaft).
+std::string fit_class(bool hole, XCAFDimTolObjects_DimensionFormVariance v, XCAFDimTolObjects_DimensionGrade g) {
+    static const char* const letters[] = {"", "a", "b", "c", "cd", "d", "e", "ef", "f", "fg", "g", "h", "js", "j", "k",
+                                          "m", "n", "p", "r", "s", "t", "u", "v", "x", "y", "z", "za", "zb", "zc"};
+    std::string s = size_t(v) < std::size(letters) ? letters[v] : "";
+    if (hole)
+        for (char& c : s) c = char(std::toupper(static_cast<unsigned char>(c)));
+    const int grade = int(g) - 1; // IT01, IT0, IT1, ...
+    return s + (grade < 0 ? "01" : std::to_string(grade));
+}
+
+std::string dimension_text(const XCAFDimTolObjects_DimensionObject& o, pack::Annotation& r) {
+    const pack::DimensionType type = dimension_type(o.GetType());
+    r.type = uint8_t(type);
+    int left = 0, right = -1;
+    o.GetNbOfDecimalPlaces(left, right);
+    const int places = right > 0 ? right : -1;
+    std::string s;
+    switch (type) {
+    case pack::DimensionType::Diameter: s = kDiameter; break;
+    case pack::DimensionType::SphericalDiameter: s = std::string("S") + kDiameter; break;
+    case pack::DimensionType::Radius: s = "R"; break;
+    case pack::DimensionType::SphericalRadius: s = "SR"; break;
+    default: break;
+    }
+    const double nominal = o.GetValue();
+    r.value = float(nominal);
+    const char* unit = type == pack::DimensionType::Angle ? kDegree : "";
+    if (o.IsDimWithRange()) { // limits: the lower, then the upper
+        r.lower = float(o.GetLowerBound() - nominal), r.upper = float(o.GetUpperBound() - nominal);
+        return s + number(o.GetLowerBound(), places) + unit + "-" + number(o.GetUpperBound(), places) + unit;
+    }
+    s += number(nominal, places) + unit;
+    if (o.IsDimWithPlusMinusTolerance()) {
+        // Open CASCADE gives the deviation below the nominal as its size.
+        const double below = std::fabs(o.GetLowerTolValue()), above = o.GetUpperTolValue();
+        r.lower = float(-below), r.upper = float(above);
+        if (below == above) s += " " + std::string(kPlusMinus) + number(above);
+        else s += " +" + number(above) + "/-" + number(below);
+    }
+    if (o.IsDimWithClassOfTolerance()) {
+        Standard_Boolean hole = false;
+        XCAFDimTolObjects_DimensionFormVariance variance = XCAFDimTolObjects_DimensionFormVariance_None;
+        XCAFDimTolObjects_DimensionGrade grade = XCAFDimTolObjects_DimensionGrade_IT01;
+        if (o.GetClassOfTolerance(hole, variance, grade)) s += " " + fit_class(hole, variance, grade);
+    }
+    return s;
+}
+
+// The datums a tolerance refers to, primary first ("A B C").
+std::string datum_system(const Handle(XCAFDoc_DimTolTool)& tool, const TDF_Label& tolerance) {
+    TDF_LabelSequence labels;
+    if (!tool->GetDatumWithObjectOfTolerLabels(tolerance, labels)) return "";
+    std::vector<std::pair<int, std::string>> refs;
+    for (int i = 1; i <= labels.Length(); ++i) {
+        Handle(XCAFDoc_Datum) d;
+        if (!labels.Value(i).FindAttribute(XCAFDoc_Datum::GetID(), d)) continue;
+        const Handle(XCAFDimTolObjects_DatumObject) o = d->GetObject();
+        if (o.IsNull() || o->GetName().IsNull()) continue;
+        refs.push_back({o->GetPosition(), o->GetName()->ToCString()});
+    }
+    std::stable_sort(refs.begin(), refs.end());
+    std::string s;
+    for (const auto& [position, name] : refs) s += " " + name;
+    return s;
+}
+
+std::string tolerance_text(const XCAFDimTolObjects_GeomToleranceObject& o, pack::Annotation& r) {
+    const int type = int(o.GetType());
+    r.type = uint8_t(type >= 0 && type < pack::kToleranceTypes ? type : 0);
+    r.value = float(o.GetValue());
+    std::string s = kToleranceSymbols[r.type];
+    s += " ";
+    if (o.GetTypeOfValue() == XCAFDimTolObjects_GeomToleranceTypeValue_Diameter) s += kDiameter;
+    if (o.GetTypeOfValue() == XCAFDimTolObjects_GeomToleranceTypeValue_SphericalDiameter) s += std::string("S") + kDiameter;
+    s += number(o.GetValue());
+    switch (o.GetMaterialRequirementModifier()) {
+    case XCAFDimTolObjects_GeomToleranceMatReqModif_M: s += std::string(" ") + kMaximumMaterial, r.material = uint8_t(pack::Material::Maximum); break;
+    case XCAFDimTolObjects_GeomToleranceMatReqModif_L: s += std::string(" ") + kLeastMaterial, r.material = uint8_t(pack::Material::Least); break;
+    default: break;
+    }
+    if (o.GetZoneModifier() == XCAFDimTolObjects_GeomToleranceZoneModif_Projected) s += std::string(" ") + kProjected + number(o.GetValueOfZoneModifier());
+    return s;
+}
+
+// The faces of the shapes at `labels` (a dimension's two sides: both).
+void add_faces(const TDF_LabelSequence& labels, double scale, std::vector<FaceKey>& out) {
+    for (int i = 1; i <= labels.Length(); ++i) {
+        const TopoDS_Shape s = XCAFDoc_ShapeTool::GetShape(labels.Value(i));
+        if (s.IsNull()) continue;
+        for (TopExp_Explorer x(s, TopAbs_FACE); x.More(); x.Next()) {
+            GProp_GProps props;
+            BRepGProp::SurfaceProperties(x.Current(), props);
+            const gp_Pnt c = props.CentreOfMass();
+            out.push_back({gp_Pnt(c.X() * scale, c.Y() * scale, c.Z() * scale), props.Mass() * scale * scale});
+        }
+    }
+}
+
+// A presentation's edges as polylines (an edge that starts where the last ended continues it).
+void add_polylines(const TopoDS_Shape& shape, double scale, std::vector<std::vector<gp_Pnt>>& out) {
+    if (shape.IsNull()) return;
+    Bnd_Box box;
+    BRepBndLib::Add(shape, box);
+    const double deflection = box.IsVoid() ? 0.01 : std::max(1e-3, 2e-3 * std::sqrt(box.SquareExtent()));
+    for (TopExp_Explorer x(shape, TopAbs_EDGE); x.More(); x.Next()) {
+        std::vector<gp_Pnt> points;
+        try {
+            const BRepAdaptor_Curve c(TopoDS::Edge(x.Current()));
+            if (c.GetType() == GeomAbs_Line) {
+                points = {c.Value(c.FirstParameter()), c.Value(c.LastParameter())};
+            } else {
+                GCPnts_QuasiUniformDeflection d(c, deflection);
+                if (!d.IsDone()) continue;
+                for (int k = 1; k <= d.NbPoints(); ++k) points.push_back(d.Value(k));
+            }
+        } catch (const Standard_Failure&) {
+            continue;
+        }
+        if (points.size() < 2) continue;
+        for (gp_Pnt& p : points) p.SetXYZ(p.XYZ() * scale);
+        if (!out.empty() && out.back().back().Distance(points.front()) <= 1e-9 * (1 + scale)) {
+            out.back().insert(out.back().end(), points.begin() + 1, points.end());
+        } else {
+            out.push_back(std::move(points));
+        }
+    }
+}
+
+template <typename Object>
+void presentation(const Object& o, double scale, PmiNote& n) {
+    add_polylines(o.GetPresentation(), scale, n.polylines);
+    if (!o.GetPresentationName().IsNull()) n.presentation = o.GetPresentationName()->ToCString();
+    if (!n.polylines.empty()) n.record.flags |= pack::kPresented;
+    if (o.HasPlane()) {
+        const gp_Dir d = o.GetPlane().Direction();
+        n.record.normal[0] = float(d.X()), n.record.normal[1] = float(d.Y()), n.record.normal[2] = float(d.Z());
+        n.record.flags |= pack::kHasPlane;
+    }
+}
+
+void set_anchor(PmiNote& n, bool has_point, const gp_Pnt& point, double scale) {
+    gp_Pnt a;
+    if (has_point) {
+        a = gp_Pnt(point.XYZ() * scale);
+    } else if (!n.polylines.empty()) { // the middle of its presentation's box
+        Bnd_Box box;
+        for (const auto& l : n.polylines)
+            for (const gp_Pnt& p : l) box.Add(p);
+        double x0, y0, z0, x1, y1, z1;
+        box.Get(x0, y0, z0, x1, y1, z1);
+        a = gp_Pnt((x0 + x1) / 2, (y0 + y1) / 2, (z0 + z1) / 2);
+    } else if (!n.faces.empty()) { // no presentation: at its first face
+        a = n.faces.front().centre;
+    }
+    n.record.anchor[0] = float(a.X()), n.record.anchor[1] = float(a.Y()), n.record.anchor[2] = float(a.Z());
+}
+
+// "Datum Target B1 (76)" -> "Datum Target B1"; what a presentation alone says it is.
+AnnotationKind kind_of_presentation(const std::string& name) {
+    if (name.rfind("Datum", 0) == 0) return AnnotationKind::Datum;
+    if (name.find("Feature Control Frame") != std::string::npos) return AnnotationKind::Tolerance;
+    if (name.find("Dimension") != std::string::npos) return AnnotationKind::Dimension;
+    return AnnotationKind::Note;
+}
+
+} // namespace
+
+void read_pmi(const Handle(TDocStd_Document)& doc, double scale, Pmi& out) {
+    out = {};
+    const Handle(XCAFDoc_DimTolTool) tool = XCAFDoc_DocumentTool::DimTolTool(doc->Main());
+    if (tool.IsNull()) return;
+    TDF_LabelSequence dimensions, tolerances, datums;
+    tool->GetDimensionLabels(dimensions);
+    tool->GetGeomToleranceLabels(tolerances);
+    tool->GetDatumLabels(datums);
+    out.dimensions = uint32_t(dimensions.Length()), out.tolerances = uint32_t(tolerances.Length()), out.datums = uint32_t(datums.Length());
+    std::vector<PmiNote> graphic; // presentations alone: after the semantic ones
+    auto refs = [&](const TDF_Label& label, PmiNote& n) {
+        TDF_LabelSequence first, second;
+        tool->GetRefShapeLabel(label, first, second);
+        add_faces(first, scale, n.faces);
+        add_faces(second, scale, n.faces);
+    };
+    for (int i = 1; i <= dimensions.Length(); ++i) {
+        Handle(XCAFDoc_Dimension) attr;
+        if (!dimensions.Value(i).FindAttribute(XCAFDoc_Dimension::GetID(), attr)) continue;
+        const Handle(XCAFDimTolObjects_DimensionObject) o = attr->GetObject();
+        if (o.IsNull()) continue;
+        PmiNote n;
+        refs(dimensions.Value(i), n);
+        presentation(*o, scale, n);
+        set_anchor(n, o->HasTextPoint(), o->GetPointTextAttach(), scale);
+        const XCAFDimTolObjects_DimensionType type = o->GetType();
+        if (type == XCAFDimTolObjects_DimensionType_CommonLabel || type == XCAFDimTolObjects_DimensionType_DimensionPresentation) {
+            n.record.kind = uint8_t(type == XCAFDimTolObjects_DimensionType_CommonLabel ? AnnotationKind::Note : kind_of_presentation(n.presentation));
+            const size_t cut = n.presentation.rfind(" (");
+            n.text = n.presentation.substr(0, cut);
+            if (n.text.empty()) n.text = n.record.kind == uint8_t(AnnotationKind::Note) ? "Note" : "";
+            graphic.push_back(std::move(n));
+            continue;
+        }
+        n.record.kind = uint8_t(AnnotationKind::Dimension);
+        n.record.flags |= pack::kSemantic;
+        n.text = dimension_text(*o, n.record);
+        out.notes.push_back(std::move(n));
+    }
+    for (int i = 1; i <= tolerances.Length(); ++i) {
+        Handle(XCAFDoc_GeomTolerance) attr;
+        if (!tolerances.Value(i).FindAttribute(XCAFDoc_GeomTolerance::GetID(), attr)) continue;
+        const Handle(XCAFDimTolObjects_GeomToleranceObject) o = attr->GetObject();
+        if (o.IsNull()) continue;
+        PmiNote n;
+        n.record.kind = uint8_t(AnnotationKind::Tolerance);
+        n.record.flags |= pack::kSemantic;
+        refs(tolerances.Value(i), n);
+        presentation(*o, scale, n);
+        set_anchor(n, o->HasPointText(), o->GetPointTextAttach(), scale);
+        n.text = tolerance_text(*o, n.record) + datum_system(tool, tolerances.Value(i));
+        out.notes.push_back(std::move(n));
+    }
+    for (int i = 1; i <= datums.Length(); ++i) {
+        Handle(XCAFDoc_Datum) attr;
+        if (!datums.Value(i).FindAttribute(XCAFDoc_Datum::GetID(), attr)) continue;
+        const Handle(XCAFDimTolObjects_DatumObject) o = attr->GetObject();
+        if (o.IsNull()) continue;
+        PmiNote n;
+        n.record.kind = uint8_t(AnnotationKind::Datum);
+        n.record.flags |= pack::kSemantic;
+        n.record.type = uint8_t(o->IsDatumTarget() ? pack::DatumType::Target : pack::DatumType::Feature);
+        refs(datums.Value(i), n);
+        presentation(*o, scale, n);
+        set_anchor(n, o->HasPointText(), o->GetPointTextAttach(), scale);
+        n.text = o->GetName().IsNull() ? "" : o->GetName()->ToCString();
+        if (o->IsDatumTarget()) n.text += std::to_string(o->GetDatumTargetNumber());
+        out.notes.push_back(std::move(n));
+    }
+    for (PmiNote& n : graphic) out.notes.push_back(std::move(n));
+    for (PmiNote& n : out.notes)
+        if (n.text.size() > pack::kMaxAnnotationText) n.text.resize(pack::kMaxAnnotationText); // (on a character: below)
+    for (PmiNote& n : out.notes)
+        while (!n.text.empty() && (static_cast<unsigned char>(n.text.back()) & 0xC0) == 0x80 && n.text.size() == pack::kMaxAnnotationText)
+            n.text.pop_back();
+}
+
+geom::AnnotationTables pmi_tables(const Pmi& pmi, const geom::Pack& pack, const std::vector<TopoDS_Shape>& packed_faces,
+                                  uint32_t& missed) {
+    geom::AnnotationTables t;
+    missed = 0;
+    // Each packed face's centre and area in its shell's coordinates, when some note has faces.
+    std::vector<FaceKey> packed;
+    const bool any_faces = std::any_of(pmi.notes.begin(), pmi.notes.end(), [](const PmiNote& n) { return !n.faces.empty(); });
+    if (any_faces) {
+        for (const TopoDS_Shape& f : packed_faces) {
+            GProp_GProps props;
+            BRepGProp::SurfaceProperties(f, props);
+            packed.push_back({props.CentreOfMass(), props.Mass()});
+        }
+    }
+    const pack::Header& h = pack.header();
+    double diag2 = 0;
+    for (int k = 0; k < 3; ++k) diag2 += double(h.bbox_max[k] - h.bbox_min[k]) * (h.bbox_max[k] - h.bbox_min[k]);
+    const double near = 1e-4 * std::sqrt(diag2) + 1e-3; // mm: a face's centre moved by healing no more than this
+    auto find = [&](const FaceKey& key) {
+        uint32_t best = pack::kNoIndex;
+        double best_d = near;
+        for (const pack::Instance& in : pack.instances()) {
+            const pack::Shell& s = pack.shells()[in.shell];
+            for (uint32_t f = s.first_face; f < s.first_face + s.face_count && f < packed.size(); ++f) {
+                if (std::fabs(packed[f].area - key.area) > 0.02 * key.area + 1e-9) continue;
+                const gp_Pnt& c = packed[f].centre;
+                const float* m = in.m;
+                const gp_Pnt placed(m[0] * c.X() + m[1] * c.Y() + m[2] * c.Z() + m[3], m[4] * c.X() + m[5] * c.Y() + m[6] * c.Z() + m[7],
+                                    m[8] * c.X() + m[9] * c.Y() + m[10] * c.Z() + m[11]);
+                if (const double d = placed.Distance(key.centre); d <= best_d) best_d = d, best = f;
+            }
+        }
+        return best;
+    };
+    // A presentation given again (the same name and the same points): drawn by the first.
+    using Key = std::tuple<std::string, size_t, long long, long long, long long>;
+    std::map<Key, uint32_t> drawn;
+    for (const PmiNote& n : pmi.notes) {
+        pack::Annotation r = n.record;
+        const uint32_t index = uint32_t(t.records.size());
+        r.text = uint32_t(t.text.size());
+        t.text.insert(t.text.end(), n.text.begin(), n.text.end());
+        t.text.push_back(0);
+        r.first_face = uint32_t(t.faces.size());
+        for (const FaceKey& k : n.faces) {
+            const uint32_t f = find(k);
+            if (f == pack::kNoIndex) {
+                ++missed;
+            } else if (std::find(t.faces.begin() + r.first_face, t.faces.end(), f) == t.faces.end()) {
+                t.faces.push_back(f);
+            }
+        }
+        r.face_count = uint32_t(t.faces.size()) - r.first_face;
+        r.drawn_by = pack::kNoIndex;
+        if (!n.polylines.empty()) {
+            size_t points = 0;
+            for (const auto& l : n.polylines) points += l.size();
+            const gp_Pnt& p = n.polylines.front().front();
+            const Key key{n.presentation, points, std::llround(p.X() * 1e3), std::llround(p.Y() * 1e3), std::llround(p.Z() * 1e3)};
+            if (const auto [it, fresh] = drawn.insert({key, index}); !fresh) r.drawn_by = it->second;
+        }
+        r.first_polyline = uint32_t(t.polylines.size());
+        if (r.drawn_by == pack::kNoIndex) { // (one drawn by another keeps none of its own)
+            for (const auto& l : n.polylines) {
+                t.polylines.push_back({uint32_t(t.points.size()), uint32_t(l.size())});
+                for (const gp_Pnt& p : l) t.points.push_back({{float(p.X()), float(p.Y()), float(p.Z())}});
+            }
+        }
+        r.polyline_count = uint32_t(t.polylines.size()) - r.first_polyline;
+        t.records.push_back(r);
+    }
+    return t;
+}
+
+} // namespace facet::packer
