@@ -110,16 +110,22 @@ Result Annotations::check(uint32_t pack_faces) {
         const void* end = std::memchr(text_.data() + a.text, 0, text_.size() - a.text);
         if (static_cast<const char*>(end) - (text_.data() + a.text) > int32_t(pack::kMaxAnnotationText)) return fail("the text is too long", A, i);
         if (!run_inside(a.first_face, a.face_count, faces_.size())) return fail("its faces lie outside PmiFaces", A, i);
-        if (!run_inside(a.first_polyline, a.polyline_count, polylines_.size())) return fail("its polylines lie outside PmiPolylines", A, i);
+        if (!run_inside(a.first_polyline, a.polyline_count, polylines_.size()) || !run_inside(a.first_coarse, a.coarse_count, polylines_.size())) {
+            return fail("its polylines lie outside PmiPolylines", A, i);
+        }
+        if ((a.polyline_count > 0) != (a.coarse_count > 0)) return fail("fine polylines without coarse ones, or coarse without fine", A, i);
+        if (a.polyline_count > 0 && !(a.radius > 0)) return fail("polylines without a sphere that holds them", A, i);
         // Presented: by its own polylines, or by an earlier annotation's (drawn_by), not both.
         const bool presented = (a.flags & pack::kPresented) != 0;
         if (a.drawn_by != kNoIndex && (a.drawn_by >= i || !presented || a.polyline_count > 0)) {
             return fail("drawn by an annotation not before it, or with polylines of its own", A, i);
         }
         if (presented != (a.polyline_count > 0 || a.drawn_by != kNoIndex)) return fail("the presented flag does not match its polylines", A, i);
-        const float floats[] = {a.value, a.lower, a.upper, a.anchor[0], a.anchor[1], a.anchor[2], a.normal[0], a.normal[1], a.normal[2]};
+        const float floats[] = {a.value,     a.lower,     a.upper,     a.anchor[0], a.anchor[1], a.anchor[2], a.normal[0],
+                                a.normal[1], a.normal[2], a.centre[0], a.centre[1], a.centre[2], a.radius,    a.stroke};
         for (float f : floats)
             if (!finite(f)) return fail("a value or point is NaN, infinite or beyond +-1e8", A, i);
+        if (a.radius < 0 || a.stroke < 0) return fail("a sphere or strokes of negative size", A, i);
         if (a.flags & pack::kHasPlane) {
             const float n2 = a.normal[0] * a.normal[0] + a.normal[1] * a.normal[1] + a.normal[2] * a.normal[2];
             if (!(n2 > 0.98f && n2 < 1.02f)) return fail("the plane's normal is not of unit length", A, i);

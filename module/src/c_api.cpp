@@ -1,6 +1,8 @@
 // The C API (facet/facet.h): each call converts its arguments and calls the C++ one.
 #include "facet/facet.h"
 
+#include "c_api_shared.h"
+
 #include "facet/viewer.h"
 #include "public_result.h"
 #include "workspace.h"
@@ -33,12 +35,8 @@ static_assert(int(Surface::Extrusion) == FACET_SURFACE_EXTRUSION && int(Surface:
               "the C surfaces are facet::Surface");
 static_assert(int(Measurement::Kind::Points) == FACET_MEASURE_POINTS, "the C measurement kinds are facet::Measurement's");
 
-// The public statuses (facet_status): what the C++ calls and events give (public_result.h),
-// and the C module's own refusals.
-facet_result to_c(const Result& r) {
-    FACET_DEBUG_ASSERT("module", module::is_public(r.status));
-    return {facet_status(r.status), r.what, r.where.kind, r.where.index, r.at.kind, r.at.index};
-}
+using c_api::to_c;
+using c_api::cpp;
 Result from_c(const facet_result& r) {
     return {Status(r.status), r.what, {r.where_kind, r.where_index}, {r.at_kind, r.at_index}};
 }
@@ -114,9 +112,6 @@ FaceFacts facts_from_c(const facet_face_facts& c) { // (measure() reads the part
     f.hit = c.hit != 0, f.part = c.part, f.face = c.face;
     return f;
 }
-
-Viewer* cpp(facet_viewer* v) { return reinterpret_cast<Viewer*>(v); }
-const Viewer* cpp(const facet_viewer* v) { return reinterpret_cast<const Viewer*>(v); }
 
 } // namespace
 
@@ -223,12 +218,6 @@ facet_viewer* facet_create(const facet_config* c, void* workspace, size_t bytes,
     if (why) *why = to_c(r);
     return reinterpret_cast<facet_viewer*>(v);
 }
-
-// A NULL viewer: a call with a result says so; the others do nothing or return zeros.
-#define FACET_NEED_VIEWER(v)                                                    \
-    do {                                                                        \
-        if (!(v)) return to_c(Result::fail(Status::OutOfRange, "no viewer")); \
-    } while (0)
 
 facet_result facet_load(facet_viewer* v, const void* file, uint32_t file_bytes, void* memory, uint32_t memory_bytes) {
     FACET_NEED_VIEWER(v);

@@ -23,6 +23,7 @@ constexpr KeyBinding kKeys[] = {
     {'0', Action::ViewIso, "isometric view"}, {'5', Action::Projection, "perspective / parallel"},
     {'m', Action::NextDisplayMode, "display mode: shaded + edges, shaded, wireframe, hidden line, see-through"},
     {'t', Action::TangentEdges, "tangent edges (a fillet's sides) shown / hidden"},
+    {'r', Action::Annotations, "annotations (PMI: dimensions, tolerances, datums) shown / hidden"},
     {'c', Action::Section, "section: picked plane, x, y, z, off"},
     {',', Action::SectionIn, "move the section back"}, {'.', Action::SectionOut, "move the section forward"},
     {'p', Action::Parts, "the parts list"},  {'n', Action::NextPart, "choose the next part"},

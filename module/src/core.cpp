@@ -74,6 +74,7 @@ void Core::unload() {
     open_path_[0] = 0, open_crc_ = 0;
     models_.forget();
     sectioning_.reset();
+    presenter_.annotating().set(nullptr);
     picks_.reset();
 }
 
@@ -105,6 +106,7 @@ Result Core::open_pack(const void* file, uint32_t file_bytes, void* memory, uint
     if (decoding) work(Event::Kind::WorkEnd, Work::Unpack, 0);
     if (!decoded.ok()) return decoded;
     if (Result r = module::open_unpacked(unpacked, scene_); !r.ok()) return r;
+    presenter_.annotating().set(&scene_.annotations());
     swapper_.open(unpacked);
     if (Result r = plan(scene_.face_count(), scene_.edge_count(), scene_.edge_count() - scene_.left_out().edges, model_end); !r.ok()) return r;
     pack_file_bytes_ = reader ? reader->bytes() : file_size;
@@ -379,6 +381,7 @@ void Core::act(Action a) {
     case Action::ViewIso: show_view(StandardView::Iso); return;
     case Action::NextDisplayMode: set_mode(DisplayMode((uint8_t(painter_.mode()) + 1) % 5)); return;
     case Action::TangentEdges: set_tangent_edges(!painter_.tangent_edges()); return;
+    case Action::Annotations: show_annotations(presenter_.annotating().shown() ? 0 : pack::kAllKinds); return;
     case Action::Section:
     case Action::SectionIn:
     case Action::SectionOut:

@@ -108,6 +108,12 @@ public:
     Result check_face(uint32_t part, uint32_t face) const;
     Result check_part(uint32_t part) const;
 
+    // Annotations (api_pmi.cpp): the kinds shown, the one chosen.
+    void show_annotations(uint32_t kinds);
+    Result choose_annotation(uint32_t annotation);
+    uint32_t chosen_annotation() const { return picks_.chosen_annotation(); }
+    const module::Annotating& annotating() const { return presenter_.annotating(); }
+
     // Tools (tools.cpp): the section plane and the parts.
     void tool(Action a);
     Result show(uint32_t part, bool shown);

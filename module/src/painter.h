@@ -4,6 +4,7 @@
 // them), its B-rep edges over it, and the palettes that colour them.
 #include "camera.h"
 #include "facet/viewer.h"
+#include "geom/pmi.h"
 #include "overlay.h"
 #include "render/raster.h"
 #include "scene.h"
@@ -98,6 +99,9 @@ public:
     // highlight, and no other). Returns the work.
     uint32_t highlighted_faces(uint32_t first, uint32_t count, const Transform& t, Rows rows);
     void set_focus(uint32_t instance) { focus_ = instance; }
+    // The faces of an annotation chosen (geom::Annotations; null: none), in every instance of
+    // their part, in the highlight colour.
+    void set_annotation(const geom::Annotations* pmi, uint32_t annotation) { pmi_ = pmi, annotation_ = annotation; }
     DisplayMode mode() const { return mode_; }
 
     // The background of the target's rows: light at the top, darker toward the bottom.
@@ -180,8 +184,9 @@ private:
     static uint32_t slot_of(const int32_t p[3]);                                  // the slot p's hash picks
     const Projected& point_in(uint32_t slot, const int32_t p[3], const Transform& t); // point(), its slot known
     int32_t across(const int32_t sphere_centre[3], int32_t radius, const Transform& t, Projected& centre); // on the screen (sub-pixels)
-    bool lit(uint32_t f) const { // picked, or of the part chosen: in the highlight colour
-        return !plain_ && ((hl_[0].face == f && hl_[0].instance == instance_) || (hl_[1].face == f && hl_[1].instance == instance_) || part_ == instance_);
+    bool lit(uint32_t f) const { // picked, of the part chosen, or of the annotation chosen: in the highlight colour
+        return !plain_ && ((hl_[0].face == f && hl_[0].instance == instance_) || (hl_[1].face == f && hl_[1].instance == instance_) ||
+                           part_ == instance_ || (pmi_ && pmi_->applies_to(annotation_, f)));
     }
     uint32_t speck(uint32_t f, const Transform& t, int32_t pixels); // a face under `pixels` across: the work (0: not one)
     // Whether a sphere is under `pixels` across on the screen (its centre projected into `centre`).
@@ -223,6 +228,8 @@ private:
     bool plain_ = false;      // set_plain()
     bool nearer_ = false;     // highlighted_faces(): vertices a depth unit nearer
     uint32_t part_ = kNone, focus_ = kNone;
+    const geom::Annotations* pmi_ = nullptr;
+    uint32_t annotation_ = kNone;
     uint32_t refused_ = 0;
 };
 

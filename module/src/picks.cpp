@@ -8,6 +8,7 @@ namespace facet::module {
 
 void Picks::reset() {
     selection_.clear();
+    presenter_.annotating().choose(kNone);
     chosen_ = kNone;
     presenter_.overlay().set_chosen(kNone);
     shown();
@@ -16,6 +17,7 @@ void Picks::reset() {
 void Picks::picked(bool hit, const Face& f) {
     if (!hit) selection_.clear(); // a tap on nothing clears the selection
     else selection_.pick(f, measuring());
+    presenter_.annotating().choose(kNone);
     shown();
     redraw();
 }
@@ -34,6 +36,13 @@ void Picks::choose(uint32_t part) {
     redraw();
 }
 
+void Picks::choose_annotation(uint32_t annotation) {
+    selection_.clear();
+    presenter_.annotating().choose(annotation);
+    shown();
+    redraw();
+}
+
 void Picks::hidden(uint32_t part) {
     if (selection_.any([&](const Face& p) { return p.instance == part; })) selection_.clear(); // (the whole selection goes)
     shown();
@@ -47,6 +56,8 @@ void Picks::shown() {
 void Picks::highlight() {
     focus();
     painter_.set_highlight(selection_.face(0), selection_.instance(0), selection_.face(1), selection_.instance(1));
+    const Annotating& a = presenter_.annotating();
+    painter_.set_annotation(a.chosen() != kNone ? a.annotations() : nullptr, a.chosen());
 }
 
 void Picks::focus() {
@@ -61,7 +72,23 @@ void Picks::redraw() {
     else presenter_.redraw();
 }
 
+bool Picks::annotation_panel() {
+    const Annotating& a = presenter_.annotating();
+    if (a.chosen() == kNone) return false;
+    const geom::Annotations& pmi = *a.annotations();
+    const pack::Annotation& r = pmi[a.chosen()];
+    char lines[2][Overlay::kLineChars];
+    const char* ptrs[2] = {lines[0], lines[1]};
+    format(lines[0], sizeof lines[0], "{}", pmi.text(a.chosen()));
+    const uint32_t faces = r.face_count;
+    format(lines[1], sizeof lines[1], "{}{}, on {} face{}", geom::annotation_kind_name(pack::AnnotationKind(r.kind)),
+           r.flags & pack::kSemantic ? "" : " (drawn only)", faces, faces == 1 ? "" : "s");
+    presenter_.overlay().set_lines(ptrs, 2);
+    return true;
+}
+
 void Picks::panel() {
+    if (panel_ && annotation_panel()) return;
     if (!panel_ || selection_.count() == 0) {
         presenter_.overlay().set_lines(nullptr, 0);
         return;
@@ -78,6 +105,7 @@ void Picks::panel() {
     uint32_t n = selection_.count();
     if (n == 2) module::describe(geom::relate(g[0], g[1]), unit, lines[n++], sizeof lines[0]);
     else if (measuring()) format(lines[n++], sizeof lines[0], "MEAS: tap a second face");
+    else if (presenter_.annotating().face_line(selection_[0].face, lines[n], sizeof lines[n]), lines[n][0]) ++n; // its PMI
     presenter_.overlay().set_lines(ptrs, n);
 }
 

@@ -32,6 +32,10 @@ public:
     void set_measuring(bool on);
     // The part chosen (kNone: none; the caller's to check it is one).
     void choose(uint32_t part);
+    // An annotation chosen (a tap on its label, or the call; kNone: none): its faces lit, its
+    // text and what it applies to on the panel. A face picked ends it.
+    void choose_annotation(uint32_t annotation);
+    uint32_t chosen_annotation() const { return presenter_.annotating().chosen(); }
     // A part hidden: a selection with a face of it goes whole.
     void hidden(uint32_t part);
     // The faces `gone` says are gone (their block left out) leave the selection.
@@ -43,7 +47,8 @@ private:
     void shown();       // the painter's highlight and focus, the panel's lines
     void highlight();   // the painter's highlight from the selection (and the focus)
     void focus();       // the painter's chosen part and see-through focus
-    void panel();       // the panel's lines: the faces' facts, their measurement
+    void panel();       // the panel's lines: the faces' facts, their measurement (or the annotation chosen)
+    bool annotation_panel(); // the annotation chosen's lines (false: none chosen)
     void redraw();      // a whole frame (the faces kept, but in see-through mode)
     const Scene& scene_;
     Painter& painter_;

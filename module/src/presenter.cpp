@@ -366,7 +366,7 @@ void Presenter::run_piece(uint32_t units, uint32_t pass) {
         set_band();
         copy_layer();
         job_.edges_owed = job_.all_faces && bands_ == 1 && all_faces_us_ > frame_budget_us() / 4 * 3;
-        job_.restart(job_.edges_owed ? Stage::Overlay : Stage::Edges, 0);
+        job_.restart(job_.edges_owed ? after(Stage::Edges) : Stage::Edges, 0);
         return;
     case Stage::LayerAll:
     case Stage::LayerNew:
@@ -377,6 +377,20 @@ void Presenter::run_piece(uint32_t units, uint32_t pass) {
         if (into_layer(job_.stage)) layer_.version = job_.faces_version, layer_.applied = job_.applied_to; // (the view's faces)
         job_.restart(after(job_.stage), job_.stage == Stage::LayerNew && !job_.full ? buf_[job_.buffer].applied : 0);
         return; // (the next stage in a piece of its own: a copy, or the overlay, is measured apart)
+    case Stage::Annotations: {
+        set_target(); // (the band)
+        if (!job_.have_transform) {
+            static constexpr float kIdentity[12] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0}; // (the placed model's own coordinates)
+            job_.transform = Camera::transform(view_basis(), kIdentity, false);
+            job_.have_transform = true;
+        }
+        uint32_t spent = 0;
+        const Transform& t = job_.transform;
+        const Rows screen{t.cy16 - render::subpixel::start(0), render::subpixel::start(display_.height) - t.cy16};
+        job_.face = annotating_.draw(raster_, t, painter_.rows(t), screen, scene_.unit(), 2 * scene_.radius(), job_.face, units, spent);
+        if (job_.face > annotating_.count()) job_.restart(Stage::Overlay, 0);
+        return; // (the overlay in a piece of its own)
+    }
     case Stage::Overlay: {
         StatusInfo s;
         s.name = scene_.model_name();
@@ -443,7 +457,7 @@ Presenter::Stage Presenter::after(Stage done) const {
     case Stage::LayerAll: return Stage::CopyLayer;
     case Stage::LayerNew: return job_.full ? Stage::CopyLayer : Stage::BufferNew;
     case Stage::BufferAll: return Stage::Edges;
-    default: return Stage::Overlay; // (Edges, BufferNew)
+    default: return annotating_.drawing() ? Stage::Annotations : Stage::Overlay; // (Edges, BufferNew)
     }
 }
 

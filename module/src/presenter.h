@@ -15,6 +15,7 @@
 // which is copied into the draw buffer before the second; while the faces stay the same (only
 // edges, the overlay, or what a drag left out change: redraw()), a whole frame is that copy
 // and the second pass alone.
+#include "annotations.h"
 #include "camera.h"
 #include "detail_scale.h"
 #include "facet/viewer.h"
@@ -56,6 +57,9 @@ public:
     // the display's flush is told of.
     Result configure(const Display& display, uint32_t frame_budget_us, Interface interface, Viewer& viewer);
     Overlay& overlay() { return overlay_; }
+    // The model's annotations (PMI), drawn over it before the overlay.
+    Annotating& annotating() { return annotating_; }
+    const Annotating& annotating() const { return annotating_; }
     const Overlay& overlay() const { return overlay_; }
     // What the status bar shows that the presenter does not know (the level of detail).
     void set_tolerance(float mm) { tolerance_mm_ = mm; }
@@ -114,10 +118,11 @@ private:
     Viewer* viewer_ = nullptr; // (configure())
     void run_piece(uint32_t units, uint32_t pass); // run()'s piece, timed by run()
     // A frame's stages, one after another (each a piece or more of work), by the kind of frame:
-    //   whole, into the draw buffer:   Begin, BufferAll, Edges, Overlay, Flush
-    //   whole, the faces layer kept:   Begin, CopyLayer, Edges, Overlay, Flush
-    //   whole, through the layer:      Begin, LayerAll (or LayerNew: the faces it lacks), CopyLayer, Edges, Overlay, Flush
-    //   an update (the faces since):   Begin, [LayerNew: the faces the layer lacks], BufferNew, Overlay, Flush
+    //   whole, into the draw buffer:   Begin, BufferAll, Edges, [Annotations], Overlay, Flush
+    //   whole, the faces layer kept:   Begin, CopyLayer, Edges, [Annotations], Overlay, Flush
+    //   whole, through the layer:      Begin, LayerAll (or LayerNew: the faces it lacks), CopyLayer, Edges, [Annotations], Overlay, Flush
+    //   an update (the faces since):   Begin, [LayerNew: the faces the layer lacks], BufferNew, [Annotations], Overlay, Flush
+    // (Annotations: the model's PMI shown, annotations.h.)
     // Flush ends the frame (Idle) or, with partial rendering, begins its next band (Begin).
     enum class Stage : uint8_t {
         Idle,      // no frame under way
@@ -128,6 +133,7 @@ private:
         CopyLayer, // the faces layer into the draw buffer (a piece of its own)
         Edges,     // every instance's edges, specks and boxes over the faces
         BufferNew, // the faces the buffer lacks, with their edges
+        Annotations, // the PMI shown, over the model (annotations.h)
         Overlay,   // the status bar and the tools (a piece of its own: Work::Overlay)
         Flush,     // handed to the display once the previous flush is done
     };
@@ -204,6 +210,7 @@ private:
     // An update's: whether the instance's group is drawn whole, none of its members' faces.
     bool in_group_whole(uint32_t instance);
     Transform group_transform_{}; // judge_group()'s: the model's own coordinates
+    Annotating annotating_;
     uint32_t groups_drawn_ = 0;   // groups_drawn()
     bool update_pieces(uint32_t units); // the faces since the buffer (or the layer) was last drawn
     void set_target();                  // the stage's: the faces layer, or the band of the draw buffer

@@ -40,11 +40,13 @@ Result Scene::open(const geom::Pack& pack) {
     const pack::Header& h = pack.header();
     source_unit_mm_ = h.source_unit_mm;
     for (int k = 0; k < 3; ++k) box_min_[k] = h.bbox_min[k], box_max_[k] = h.bbox_max[k];
+    if (Result r = annotations_.open(pack); !r.ok()) return r;
     return start();
 }
 
 Result Scene::open(const geom::PackIndex& index, std::span<Block> blocks) {
     loaded_ = false;
+    annotations_ = {};
     const auto parts = index.parts();
     if (blocks.size() != index.blocks().size() || blocks.empty()) {
         return Result::fail(Status::OutOfRange, "the blocks given are not the index's");

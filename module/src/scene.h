@@ -8,6 +8,7 @@
 #include "facet/sizes.h"
 #include "facet/types.h"
 #include "geom/pack.h"
+#include "geom/pmi.h"
 #include "geom/pack_index.h"
 #include "geom/tessellate.h"
 
@@ -178,6 +179,8 @@ public:
     // A point of the face's boundary (its first sampled edge's first sample, quantized as
     // DrawVertex::p), or null before its edges are sampled.
     const int32_t* boundary_point(uint32_t f) const;
+    // A whole pack's annotations (PMI: geom/pmi.h); none for a blocked pack.
+    const geom::Annotations& annotations() const { return annotations_; }
     const char* model_name() const { return blocked_ ? index_.model_name() : blocks_[0].pack.model_name(); }
     const char* part_name(uint32_t s) const;
     const char* instance_name(uint32_t i) const { return blocked_ ? index_.instance_name(i) : blocks_[0].pack.instance_name(i); }
@@ -284,6 +287,7 @@ private:
     Memory mem_{};
     LeftOut left_out_;
     Block whole_;                 // a whole pack's one block
+    geom::Annotations annotations_; // its annotations
     std::span<Block> blocks_;     // whole_, or a blocked pack's
     geom::PackIndex index_;       // a blocked pack's
     bool blocked_ = false;

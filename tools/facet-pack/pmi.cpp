@@ -191,12 +191,33 @@ void add_faces(const TDF_LabelSequence& labels, double scale, std::vector<FaceKe
     }
 }
 
-// A presentation's edges as polylines (an edge that starts where the last ended continues it).
-void add_polylines(const TopoDS_Shape& shape, double scale, std::vector<std::vector<gp_Pnt>>& out) {
+constexpr double kPolylineTolerance = 1e-4; // of the model's diagonal
+struct Tolerances {
+    double fine, coarse; // mm
+};
+
+// Douglas-Peucker: the points of [first, last] a polyline keeps within `tolerance` of it.
+void simplify(const std::vector<gp_Pnt>& p, size_t first, size_t last, double tolerance, std::vector<bool>& keep) {
+    if (last <= first + 1) return;
+    const gp_Vec along(p[first], p[last]);
+    const double length2 = along.SquareMagnitude();
+    size_t far = first;
+    double far_d = -1;
+    for (size_t k = first + 1; k < last; ++k) {
+        const gp_Vec v(p[first], p[k]);
+        const double d = length2 > 0 ? v.Crossed(along).Magnitude() / std::sqrt(length2) : v.Magnitude();
+        if (d > far_d) far_d = d, far = k;
+    }
+    if (far_d <= tolerance) return;
+    keep[far] = true;
+    simplify(p, first, far, tolerance, keep);
+    simplify(p, far, last, tolerance, keep);
+}
+
+// A presentation's edges as polylines (an edge that starts where the last ended continues it),
+// its curves sampled within `deflection` (mm, before `scale`).
+void add_polylines(const TopoDS_Shape& shape, double scale, double deflection, std::vector<std::vector<gp_Pnt>>& out) {
     if (shape.IsNull()) return;
-    Bnd_Box box;
-    BRepBndLib::Add(shape, box);
-    const double deflection = box.IsVoid() ? 0.01 : std::max(1e-3, 2e-3 * std::sqrt(box.SquareExtent()));
     for (TopExp_Explorer x(shape, TopAbs_EDGE); x.More(); x.Next()) {
         std::vector<gp_Pnt> points;
         try {
@@ -221,9 +242,50 @@ void add_polylines(const TopoDS_Shape& shape, double scale, std::vector<std::vec
     }
 }
 
+// The polylines within `tolerance` (mm) of them (Douglas-Peucker): a CAD system writes a
+// glyph's strokes as polylines of many short steps (nist_ctc_02's 1,229 edges: 28 k points),
+// far finer than a screen draws them.
+std::vector<std::vector<gp_Pnt>> simplified(const std::vector<std::vector<gp_Pnt>>& lines, double tolerance) {
+    std::vector<std::vector<gp_Pnt>> out;
+    for (const auto& l : lines) {
+        std::vector<bool> keep(l.size(), false);
+        keep.front() = keep.back() = true;
+        simplify(l, 0, l.size() - 1, tolerance, keep);
+        out.emplace_back();
+        for (size_t k = 0; k < l.size(); ++k)
+            if (keep[k]) out.back().push_back(l[k]);
+    }
+    return out;
+}
+
+// The presentation's polylines (within `tolerance`, and within the coarse one), its sphere,
+// its name and its plane.
 template <typename Object>
-void presentation(const Object& o, double scale, PmiNote& n) {
-    add_polylines(o.GetPresentation(), scale, n.polylines);
+void presentation(const Object& o, double scale, const Tolerances& tolerance, PmiNote& n) {
+    std::vector<std::vector<gp_Pnt>> raw;
+    add_polylines(o.GetPresentation(), scale, tolerance.fine / scale, raw);
+    n.polylines = simplified(raw, tolerance.fine);
+    n.coarse = simplified(raw, tolerance.coarse);
+    Bnd_Box box;
+    for (const auto& l : raw)
+        for (const gp_Pnt& p : l) box.Add(p);
+    if (!box.IsVoid()) {
+        double x0, y0, z0, x1, y1, z1;
+        box.Get(x0, y0, z0, x1, y1, z1);
+        const float c[3] = {float((x0 + x1) / 2), float((y0 + y1) / 2), float((z0 + z1) / 2)};
+        for (int k = 0; k < 3; ++k) n.record.centre[k] = c[k];
+        n.record.radius = float(std::sqrt(box.SquareExtent()) / 2 * (1 + 1e-6) + 1e-6);
+    }
+    std::vector<double> extents; // each polyline's: its text's strokes are most of them
+    for (const auto& l : raw) {
+        Bnd_Box b;
+        for (const gp_Pnt& p : l) b.Add(p);
+        extents.push_back(std::sqrt(b.SquareExtent()));
+    }
+    if (!extents.empty()) {
+        std::nth_element(extents.begin(), extents.begin() + extents.size() / 2, extents.end());
+        n.record.stroke = float(extents[extents.size() / 2]);
+    }
     if (!o.GetPresentationName().IsNull()) n.presentation = o.GetPresentationName()->ToCString();
     if (!n.polylines.empty()) n.record.flags |= pack::kPresented;
     if (o.HasPlane()) {
@@ -250,6 +312,7 @@ void set_anchor(PmiNote& n, bool has_point, const gp_Pnt& point, double scale) {
     n.record.anchor[0] = float(a.X()), n.record.anchor[1] = float(a.Y()), n.record.anchor[2] = float(a.Z());
 }
 
+
 // "Datum Target B1 (76)" -> "Datum Target B1"; what a presentation alone says it is.
 AnnotationKind kind_of_presentation(const std::string& name) {
     if (name.rfind("Datum", 0) == 0) return AnnotationKind::Datum;
@@ -269,6 +332,15 @@ void read_pmi(const Handle(TDocStd_Document)& doc, double scale, Pmi& out) {
     tool->GetGeomToleranceLabels(tolerances);
     tool->GetDatumLabels(datums);
     out.dimensions = uint32_t(dimensions.Length()), out.tolerances = uint32_t(tolerances.Length()), out.datums = uint32_t(datums.Length());
+    if (dimensions.IsEmpty() && tolerances.IsEmpty() && datums.IsEmpty()) return;
+    // The presentations' polylines within a ten-thousandth of the model's size (a 1 m part:
+    // 0.1 mm; zoomed in until a glyph fills the screen, still under its pixels).
+    Bnd_Box model;
+    TDF_LabelSequence roots;
+    XCAFDoc_DocumentTool::ShapeTool(doc->Main())->GetFreeShapes(roots);
+    for (int r = 1; r <= roots.Length(); ++r) BRepBndLib::Add(XCAFDoc_ShapeTool::GetShape(roots.Value(r)), model);
+    const double diagonal = model.IsVoid() ? 1.0 : std::sqrt(model.SquareExtent()) * scale;
+    const Tolerances tolerance{kPolylineTolerance * diagonal, double(pack::kCoarsePolylines) * diagonal};
     std::vector<PmiNote> graphic; // presentations alone: after the semantic ones
     auto refs = [&](const TDF_Label& label, PmiNote& n) {
         TDF_LabelSequence first, second;
@@ -283,7 +355,7 @@ void read_pmi(const Handle(TDocStd_Document)& doc, double scale, Pmi& out) {
         if (o.IsNull()) continue;
         PmiNote n;
         refs(dimensions.Value(i), n);
-        presentation(*o, scale, n);
+        presentation(*o, scale, tolerance, n);
         set_anchor(n, o->HasTextPoint(), o->GetPointTextAttach(), scale);
         const XCAFDimTolObjects_DimensionType type = o->GetType();
         if (type == XCAFDimTolObjects_DimensionType_CommonLabel || type == XCAFDimTolObjects_DimensionType_DimensionPresentation) {
@@ -308,7 +380,7 @@ void read_pmi(const Handle(TDocStd_Document)& doc, double scale, Pmi& out) {
         n.record.kind = uint8_t(AnnotationKind::Tolerance);
         n.record.flags |= pack::kSemantic;
         refs(tolerances.Value(i), n);
-        presentation(*o, scale, n);
+        presentation(*o, scale, tolerance, n);
         set_anchor(n, o->HasPointText(), o->GetPointTextAttach(), scale);
         n.text = tolerance_text(*o, n.record) + datum_system(tool, tolerances.Value(i));
         out.notes.push_back(std::move(n));
@@ -323,7 +395,7 @@ void read_pmi(const Handle(TDocStd_Document)& doc, double scale, Pmi& out) {
         n.record.flags |= pack::kSemantic;
         n.record.type = uint8_t(o->IsDatumTarget() ? pack::DatumType::Target : pack::DatumType::Feature);
         refs(datums.Value(i), n);
-        presentation(*o, scale, n);
+        presentation(*o, scale, tolerance, n);
         set_anchor(n, o->HasPointText(), o->GetPointTextAttach(), scale);
         n.text = o->GetName().IsNull() ? "" : o->GetName()->ToCString();
         if (o->IsDatumTarget()) n.text += std::to_string(o->GetDatumTargetNumber());
@@ -398,14 +470,18 @@ geom::AnnotationTables pmi_tables(const Pmi& pmi, const geom::Pack& pack, const 
             const Key key{n.presentation, points, std::llround(p.X() * 1e3), std::llround(p.Y() * 1e3), std::llround(p.Z() * 1e3)};
             if (const auto [it, fresh] = drawn.insert({key, index}); !fresh) r.drawn_by = it->second;
         }
-        r.first_polyline = uint32_t(t.polylines.size());
-        if (r.drawn_by == pack::kNoIndex) { // (one drawn by another keeps none of its own)
-            for (const auto& l : n.polylines) {
-                t.polylines.push_back({uint32_t(t.points.size()), uint32_t(l.size())});
-                for (const gp_Pnt& p : l) t.points.push_back({{float(p.X()), float(p.Y()), float(p.Z())}});
+        auto add = [&](const std::vector<std::vector<gp_Pnt>>& lines, uint32_t& first, uint32_t& count) {
+            first = uint32_t(t.polylines.size());
+            if (r.drawn_by == pack::kNoIndex) { // (one drawn by another keeps none of its own)
+                for (const auto& l : lines) {
+                    t.polylines.push_back({uint32_t(t.points.size()), uint32_t(l.size())});
+                    for (const gp_Pnt& p : l) t.points.push_back({{float(p.X()), float(p.Y()), float(p.Z())}});
+                }
             }
-        }
-        r.polyline_count = uint32_t(t.polylines.size()) - r.first_polyline;
+            count = uint32_t(t.polylines.size()) - first;
+        };
+        add(n.polylines, r.first_polyline, r.polyline_count);
+        add(n.coarse, r.first_coarse, r.coarse_count);
         t.records.push_back(r);
     }
     return t;

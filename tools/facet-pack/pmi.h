@@ -29,6 +29,7 @@ struct PmiNote {
     std::string text;          // UTF-8
     std::vector<FaceKey> faces;
     std::vector<std::vector<gp_Pnt>> polylines; // its presentation (mm)
+    std::vector<std::vector<gp_Pnt>> coarse;    // the same within pack::kCoarsePolylines
     std::string presentation;                   // the presentation's name in the file ("Feature Control Frame (18)")
 };
 

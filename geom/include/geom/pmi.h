@@ -29,6 +29,9 @@ public:
     std::span<const pack::Polyline> polylines(uint32_t i) const {
         return polylines_.subspan(records_[i].first_polyline, records_[i].polyline_count);
     }
+    std::span<const pack::Polyline> coarse_polylines(uint32_t i) const {
+        return polylines_.subspan(records_[i].first_coarse, records_[i].coarse_count);
+    }
     std::span<const pack::PmiPoint> points(const pack::Polyline& l) const { return points_.subspan(l.first_point, l.point_count); }
     // Whether annotation i applies to face f (a pack face index).
     bool applies_to(uint32_t i, uint32_t f) const;

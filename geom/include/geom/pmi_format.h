@@ -65,6 +65,7 @@ struct Annotation {
     uint32_t text;    // byte of PmiText where its text starts ("⌀52 ±0.15", "⌖ ⌀1 Ⓜ A B C", "A")
     uint32_t first_face, face_count;         // its faces: a run of PmiFaces
     uint32_t first_polyline, polyline_count; // its presentation: a run of PmiPolylines
+    uint32_t first_coarse, coarse_count;     // the same within kCoarsePolylines: what a view far off draws
     // kNoIndex, or an annotation earlier in the table whose presentation is the same drawing
     // (the file gives a tolerance's frame again as a graphic, or a datum once per reference):
     // drawn once, by that one (this one has no polylines of its own).
@@ -75,8 +76,18 @@ struct Annotation {
     float value, lower, upper;
     float anchor[3]; // where its text sits (mm)
     float normal[3]; // its presentation's plane (kHasPlane): the side it reads from
+    float centre[3], radius; // a sphere holding its presentation (mm; radius 0: none)
+    // The size of its strokes (mm: the median extent of its polylines; 0: none): about its
+    // text's height, what says whether a view can read it.
+    float stroke;
 };
-static_assert(sizeof(Annotation) == 64, "pack::Annotation is 64 bytes");
+static_assert(sizeof(Annotation) == 92, "pack::Annotation is 92 bytes");
+
+// The coarse polylines stray from the presentation by up to this part of the pack's box
+// diagonal (a pixel of a view that fits the model on a screen some 500 pixels across): a view
+// whose pixel at the annotation spans more than that draws them, not the fine ones (which keep
+// within a ten-thousandth of it).
+constexpr float kCoarsePolylines = 2e-3f;
 
 struct Polyline {
     uint32_t first_point, point_count; // a run of PmiPoints, at least 2

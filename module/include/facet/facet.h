@@ -220,7 +220,8 @@ typedef enum {
     FACET_ACTION_VIEW_BOTTOM, FACET_ACTION_VIEW_ISO, FACET_ACTION_PROJECTION, FACET_ACTION_NEXT_DISPLAY_MODE,
     FACET_ACTION_NEXT_VIEW, FACET_ACTION_MEASURE, FACET_ACTION_HELP, FACET_ACTION_SECTION, FACET_ACTION_SECTION_IN,
     FACET_ACTION_SECTION_OUT, FACET_ACTION_PARTS, FACET_ACTION_NEXT_PART, FACET_ACTION_HIDE_PART, FACET_ACTION_ISOLATE_PART,
-    FACET_ACTION_SHOW_ALL_PARTS, FACET_ACTION_MODELS, FACET_ACTION_TANGENT_EDGES, FACET_ACTION_WIDE_ = 0x7FFFFFFF
+    FACET_ACTION_SHOW_ALL_PARTS, FACET_ACTION_MODELS, FACET_ACTION_TANGENT_EDGES, FACET_ACTION_ANNOTATIONS,
+    FACET_ACTION_WIDE_ = 0x7FFFFFFF
 } facet_action;
 void facet_act(facet_viewer *viewer, facet_action action); /* as if its key were pressed */
 /* The keys' table, for a help screen: how many, and each (NULL help past the last). */
@@ -318,6 +319,29 @@ facet_result facet_isolate_part(facet_viewer *viewer, uint32_t index);
 void facet_show_all_parts(facet_viewer *viewer);
 facet_result facet_choose_part(facet_viewer *viewer, uint32_t index); /* FACET_NONE: none */
 uint32_t facet_get_chosen_part(const facet_viewer *viewer);
+
+/* Annotations (PMI of an AP242 file): dimensions, geometric tolerances, datums, notes. */
+typedef enum {
+    FACET_ANNOTATION_DIMENSION, FACET_ANNOTATION_TOLERANCE, FACET_ANNOTATION_DATUM, FACET_ANNOTATION_NOTE,
+    FACET_ANNOTATION_WIDE_ = 0x7FFFFFFF
+} facet_annotation_kind;
+#define FACET_ALL_ANNOTATION_KINDS 15u /* bit (1 << kind) of each kind shown */
+typedef struct {
+    facet_annotation_kind kind;
+    uint8_t type;          /* the kind's own: geom/pmi_format.h's DimensionType, ToleranceType */
+    bool semantic, presented;
+    const char *text;      /* UTF-8, with the GD&T symbols: "\xE2\x8C\x80" is the diameter sign */
+    float value, lower, upper;
+    const uint32_t *faces; /* the faces it applies to (as facet_select numbers them) */
+    uint32_t face_count;
+} facet_annotation;
+uint32_t facet_get_annotation_count(const facet_viewer *viewer);
+facet_result facet_get_annotation(const facet_viewer *viewer, uint32_t index, facet_annotation *out);
+uint32_t facet_get_annotations_shown(const facet_viewer *viewer);
+void facet_show_annotations(facet_viewer *viewer, uint32_t kinds);
+uint32_t facet_get_face_annotations(const facet_viewer *viewer, uint32_t part, uint32_t face, uint32_t *out, uint32_t max);
+facet_result facet_choose_annotation(facet_viewer *viewer, uint32_t index); /* FACET_NONE: none */
+uint32_t facet_get_chosen_annotation(const facet_viewer *viewer);
 
 /* The section plane: normal . p = offset_mm; the side the normal points to is cut away. */
 typedef struct { bool on; float normal[3], offset_mm; } facet_section;

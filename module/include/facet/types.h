@@ -154,7 +154,13 @@ enum class Action : uint8_t {
     ShowAllParts,
     Models,          // the models on the device (a library: Viewer::set_library) on/off: tap one to open it
     TangentEdges,    // tangent edges (between faces that meet smoothly: a fillet's sides) shown / hidden
+    Annotations,     // the model's annotations (PMI: dimensions, tolerances, datums, notes) shown / hidden
 };
+
+// What an annotation (PMI, Viewer::annotation) is; as bits (annotation_kind_bit), the kinds shown.
+enum class AnnotationKind : uint8_t { Dimension, Tolerance, Datum, Note };
+constexpr uint32_t annotation_kind_bit(AnnotationKind k) { return 1u << uint32_t(k); }
+constexpr uint32_t kAllAnnotationKinds = 15;
 
 // How the model is drawn.
 enum class DisplayMode : uint8_t {

@@ -180,6 +180,30 @@ public:
     Result choose_part(uint32_t index); // highlighted (see-through mode: drawn solid); kNone: none (OutOfRange: no such part)
     uint32_t chosen_part() const;
 
+    // Annotations: the product and manufacturing information of an AP242 file (facet-pack puts
+    // it in the pack): dimensions, geometric tolerances, datums and notes, drawn over the model
+    // (their presentation's lines, and their text on labels where it is too small to read).
+    struct Annotation {
+        AnnotationKind kind;
+        uint8_t type;       // the kind's own (pack::DimensionType, ToleranceType: geom/pmi_format.h)
+        bool semantic;      // its values are the file's semantic PMI (else: a presentation alone)
+        bool presented;     // the file draws it (else it is placed at its faces)
+        const char* text;   // UTF-8, with the GD&T symbols: "⌀52 ±0.15", "⌖ ⌀1 Ⓜ A B C", "A"
+        float value, lower, upper; // a dimension's nominal and deviations (mm or degrees); a tolerance's zone
+        const uint32_t* faces; // the faces it applies to (as facts() and select() number them)
+        uint32_t face_count;
+    };
+    uint32_t annotation_count() const; // 0: none (or a blocked pack, which does not carry them)
+    Result annotation(uint32_t index, Annotation& out) const; // OutOfRange past the last
+    // The kinds shown (annotation_kind_bit of each; all by default, 0: none).
+    uint32_t annotations_shown() const;
+    void show_annotations(uint32_t kinds);
+    // The annotations of a face, each once: how many in all, the first `max` into out.
+    uint32_t face_annotations(uint32_t part, uint32_t face, uint32_t* out, uint32_t max) const;
+    // An annotation chosen: its faces highlighted, its text on the panel (kNone: none).
+    Result choose_annotation(uint32_t index);
+    uint32_t chosen_annotation() const;
+
     // The section plane: normal . p = offset_mm (the placed model's coordinates, mm); the side
     // the normal points to is cut away, and a solid's inside shows in a colour of its own.
     struct SectionPlane { bool on; float normal[3], offset_mm; }; // normal: unit length
