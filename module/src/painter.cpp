@@ -279,10 +279,8 @@ uint32_t Painter::highlighted_faces(uint32_t first, uint32_t count, const Transf
         for (const Highlight& h : hl_) {
             if (h.instance == instance_ && h.face >= first && h.face < first + count) again(h.face);
         }
-        if (pmi_) {
-            for (uint32_t f : pmi_->faces(annotation_))
-                if (f >= first && f < first + count && !(hl_[0].face == f && hl_[0].instance == instance_) && !(hl_[1].face == f && hl_[1].instance == instance_)) again(f);
-        }
+        if (pmi_) // (an annotation's faces: no face is both picked and an annotation's, the selection ends a choice)
+            for (uint32_t f : pmi_->faces(annotation_)) if (f >= first && f < first + count) again(f);
     }
     nearer_ = false;
     return work;

@@ -3,6 +3,7 @@
 //   facet-pack model.step -o model.fpk [--plain|--deflate|--lzma] [--whole] [--unit U] [--partial] [--quiet]
 //                                                  pack, print a summary
 //   facet-pack --check model.fpk                   validate a pack file (or a library) with the device's code
+//   facet-pack --annotations model.fpk             its annotations (PMI) as JSON lines
 //   facet-pack --library OUT.flb A.fpk B.fpk ...   several packs in one file, for a device's flash
 //
 // The pack is blocked (pack_format.h): an index the device reads first (parts with their boxes,
@@ -35,6 +36,7 @@
 #include "facet/viewer.h"
 #include "needs.h"
 #include "pack_writer.h"
+#include "pmi_report.h"
 #include "printable.h"
 #include "step_reader.h"
 
@@ -80,6 +82,7 @@ constexpr uint32_t kGroupLevels[] = {48, 192};          // a group's proxy's, fo
 int usage() {
     std::fprintf(stderr, "usage: facet-pack MODEL.step -o MODEL.fpk [--plain|--deflate|--lzma] [--whole] [--unit mm|cm|m|in|ft] [--partial] [--reference FACES.json] [--quiet]\n"
                          "       facet-pack --check MODEL.fpk|LIBRARY.flb\n"
+                         "       facet-pack --annotations MODEL.fpk\n"
                          "       facet-pack --library OUT.flb A.fpk B.fpk ... [--quiet]\n");
     return 2;
 }
@@ -219,6 +222,11 @@ int run(int argc, char** argv) {
     if (argc > 1 && !std::strcmp(argv[1], "--library")) return library(argc, argv);
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--check") && i + 1 < argc) return argc == 3 ? check(argv[i + 1]) : usage();
+        if (!std::strcmp(argv[i], "--annotations") && i + 1 < argc) {
+            if (argc != 3) return usage();
+            std::string error;
+            return packer::print_annotations(argv[i + 1], error) ? die(error) : 0;
+        }
         if (!std::strcmp(argv[i], "-o") && i + 1 < argc && !out) out = argv[++i];
         else if (!std::strcmp(argv[i], "--quiet")) quiet = true;
         else if (!std::strcmp(argv[i], "--plain")) plain = true;
