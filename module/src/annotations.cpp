@@ -206,17 +206,8 @@ uint32_t Annotating::label_at(int16_t x, int16_t y) const {
 }
 
 bool Annotating::listed(uint32_t i) const {
-    const pack::Annotation& a = (*pmi_)[i];
-    if (!(a.flags & pack::kSemantic)) return false; // (a presentation alone says no values)
-    if (a.drawn_by != kNone && (*pmi_)[a.drawn_by].flags & pack::kSemantic) return false; // (the same drawing, the same text)
-    for (uint32_t k = 0; k < i; ++k) { // the same text on the same faces: given again
-        const pack::Annotation& b = (*pmi_)[k];
-        if (b.kind != a.kind || b.face_count != a.face_count || !(b.flags & pack::kSemantic)) continue;
-        if (std::strcmp(pmi_->text(k), pmi_->text(i)) != 0) continue;
-        const auto fa = pmi_->faces(i), fb = pmi_->faces(k);
-        if (std::equal(fa.begin(), fa.end(), fb.begin())) return false;
-    }
-    return true;
+    const uint8_t flags = (*pmi_)[i].flags;
+    return (flags & pack::kSemantic) && !(flags & pack::kRepeat); // (a presentation alone says no values)
 }
 
 uint32_t Annotating::of_face(uint32_t f, uint32_t* out, uint32_t max) const {

@@ -25,7 +25,8 @@ public:
     static constexpr int32_t kReadablePixels = 9;
 
     void set(const geom::Annotations* pmi) {
-        pmi_ = pmi, chosen_ = kNone, placed_ = 0, candidates_ = 0, left_out_ = 0;
+        pmi_ = pmi, chosen_ = kNone, placed_ = 0, candidates_ = 0, left_out_ = 0, listed_ = 0;
+        for (uint32_t i = 0; i < count(); ++i) listed_ += listed(i);
     }
     const geom::Annotations* annotations() const { return pmi_ && pmi_->count() ? pmi_ : nullptr; }
     uint32_t count() const { return pmi_ ? pmi_->count() : 0; }
@@ -55,6 +56,16 @@ public:
     // Whether annotation i's text stands for it in a list (not the same as an earlier one's:
     // the file gives a datum once per tolerance that refers to it).
     bool listed(uint32_t i) const;
+    uint32_t listed_count() const { return listed_; }
+    uint32_t next_listed(uint32_t from) const { // the first listed at or after `from` (count(): none)
+        while (from < count() && !listed(from)) ++from;
+        return from < count() ? from : count();
+    }
+    uint32_t previous_listed(uint32_t before) const { // the last listed before `before` (kNone: none)
+        while (before-- > 0)
+            if (listed(before)) return before;
+        return kNone;
+    }
 
 private:
     struct Label {
@@ -95,6 +106,7 @@ private:
     uint32_t chosen_ = kNone;
     Label candidates_list_[kMaxLabels] = {}, placed_labels_[kMaxLabels] = {};
     uint32_t candidates_ = 0, placed_ = 0, left_out_ = 0, wanted_ = 0;
+    uint32_t listed_ = 0;
 };
 
 } // namespace facet::module

@@ -22,6 +22,30 @@ Result Core::choose_annotation(uint32_t annotation) {
     return {};
 }
 
+bool Core::tap_pmi(int16_t x, int16_t y) {
+    using Kind = module::Overlay::PartsHit::Kind;
+    module::Overlay& o = presenter_.overlay();
+    const module::Overlay::PartsHit h = o.pmi_at(x, y);
+    const uint32_t shown = presenter_.annotating().shown();
+    switch (h.kind) {
+    case Kind::None: return false;
+    case Kind::Panel: return true;
+    case Kind::Row: (void)choose_annotation(h.part == chosen_annotation() ? kNone : h.part); return true; // a second tap lets go
+    case Kind::KindToggle: show_annotations(shown ^ (1u << h.part)); break;
+    case Kind::ShowAll: show_annotations(pack::kAllKinds); break;
+    case Kind::HideAll: show_annotations(0); break;
+    case Kind::Up: o.scroll_pmi(-int32_t(o.pmi_rows()) + 1); break;
+    case Kind::Down: o.scroll_pmi(int32_t(o.pmi_rows()) - 1); break;
+    case Kind::Tab: o.set_parts(true); break; // the parts list
+    case Kind::Box:
+    case Kind::Hide:
+    case Kind::Isolate:
+    case Kind::All: return true; // (the parts list's)
+    }
+    presenter_.redraw(); // (the list changed)
+    return true;
+}
+
 uint32_t Viewer::annotation_count() const { return core(this).annotating().count(); }
 
 Result Viewer::annotation(uint32_t index, Annotation& out) const {

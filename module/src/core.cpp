@@ -75,6 +75,7 @@ void Core::unload() {
     models_.forget();
     sectioning_.reset();
     presenter_.annotating().set(nullptr);
+    presenter_.overlay().set_pmi(false);
     picks_.reset();
 }
 
@@ -107,6 +108,7 @@ Result Core::open_pack(const void* file, uint32_t file_bytes, void* memory, uint
     if (!decoded.ok()) return decoded;
     if (Result r = module::open_unpacked(unpacked, scene_); !r.ok()) return r;
     presenter_.annotating().set(&scene_.annotations());
+    presenter_.overlay().set_annotating(&presenter_.annotating());
     swapper_.open(unpacked);
     if (Result r = plan(scene_.face_count(), scene_.edge_count(), scene_.edge_count() - scene_.left_out().edges, model_end); !r.ok()) return r;
     pack_file_bytes_ = reader ? reader->bytes() : file_size;

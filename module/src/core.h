@@ -231,6 +231,7 @@ private:
     module::Picks picks_; // the faces picked and the part chosen, shown (picks.h)
     uint8_t next_view_ = 0; // the toolbar's VIEW button: the next standard view
     bool tap_parts(int16_t x, int16_t y); // a tap on the parts list (true: it was the list's)
+    bool tap_pmi(int16_t x, int16_t y);   // a tap on the annotations list (api_pmi.cpp)
     bool tap_models(int16_t x, int16_t y); // a tap on the models chooser (library.cpp)
     void toggle_models();
     // Double tap: the last tap's place and time (without a clock: a second tap on the same spot).

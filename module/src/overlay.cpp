@@ -1,15 +1,15 @@
 #include "overlay.h"
 
+#include "overlay_style.h"
+
 #include "core/format.h"
 #include "render/text.h"
 
 namespace facet::module {
 namespace {
 
-constexpr Rgb565 kBar = rgb565(36, 40, 48), kText = rgb565(236, 238, 242), kDim = rgb565(150, 156, 168);
-constexpr Rgb565 kButton = rgb565(58, 64, 76), kButtonOn = rgb565(40, 110, 220), kEdge = rgb565(20, 22, 28);
+using namespace overlay_style;
 constexpr int32_t kKnob = 10;    // half the section slider's knob
-constexpr int32_t kScrollW = 28; // the parts list's scroll buttons
 
 const char* mode_name(DisplayMode m) {
     switch (m) {
@@ -60,7 +60,7 @@ FreeArea Overlay::taken() const {
     FreeArea a;
     a.top = status_rows_;
     a.right = int16_t(width_ - toolbar_x_ + (slider_on_ && button_count_ ? kSliderWidth : 0));
-    a.left = parts_open() ? parts_panel().width : 0;
+    a.left = parts_open() || pmi_open() ? parts_panel().width : 0;
     a.bottom = int16_t(line_count_ ? line_count_ * render::kLineHeight + 4 : 0);
     return a;
 }
@@ -147,7 +147,10 @@ bool Overlay::list_hit(int16_t x, int16_t y, PartsHit& h) const {
 
 Overlay::PartsHit Overlay::parts_at(int16_t x, int16_t y) const {
     PartsHit h;
-    if (!parts_open() || list_hit(x, y, h)) return h;
+    if (!parts_open() || list_hit(x, y, h)) {
+        if (h.kind == PartsHit::Kind::Panel && has_pmi() && tab_hit(x, y)) h.kind = PartsHit::Kind::Tab;
+        return h;
+    }
     const Area p = parts_panel();
     const int32_t dy = y - p.y;
     if (y >= p.y + p.height - kPartsFooter) { // HIDE, ISOL, ALL
@@ -170,6 +173,7 @@ void Overlay::draw(const render::Target& t, const StatusInfo& info) const {
         if (line_count_) panel(t);
         if (slider_on_) slider_bar(t);
         if (parts_open()) parts_list(t);
+        if (pmi_open()) pmi_list(t);
         if (models_open()) models_list(t);
         if (help_) help_panel(t, info.tangent_edges);
     }
@@ -232,11 +236,11 @@ constexpr const char* kHelp[] = {
     "VIEW: front, right, top, iso...   PROJ: perspective/parallel",
     "MODE: shaded+edges, shaded, wireframe, hidden line, see-through",
     "SECT: a section (picked plane, x, y, z); drag its slider",
-    "PART: the parts: tap a name, its box hides it; ISOL, ALL",
+    "PART: the parts: tap a name, its box hides it; ISOL, ALL; PMI",
     "LOD: finer, finest, coarser triangles, and back",
     "keys: 1 2 3 4 7 8 0 views, 5 projection, m mode, f fit",
     "c section , . move it  p parts n next x hide o isolate u all",
-    "g level of detail   t tangent edges   h or ? this help",
+    "g detail  t tangent edges  r PMI shown/hidden  h or ? help",
 };
 constexpr int32_t kHelpLines = int32_t(sizeof kHelp / sizeof kHelp[0]);
 constexpr int32_t kHelpButtonRows = 28;
@@ -282,6 +286,7 @@ void Overlay::parts_list(const render::Target& t) const {
     char text[128];
     format(text, sizeof text, "PARTS {}", count);
     list_head(t, p, text);
+    if (has_pmi()) list_tab(t, p, "PMI");
     const uint32_t rows = part_rows();
     for (uint32_t r = 0; r < rows && first_row_ + r < count; ++r) {
         const uint32_t part = first_row_ + r;

@@ -14,6 +14,8 @@
 
 namespace facet::module {
 
+class Annotating;
+
 // Pixels the overlay takes at each side of the screen (the model is framed in the rest).
 struct FreeArea {
     int16_t left = 0, top = 0, right = 0, bottom = 0;
@@ -63,17 +65,31 @@ public:
     // The parts list: a panel down the left side, a row per part (instance) with its box
     // (shown or hidden) and name, scroll buttons, and HIDE, ISOL and ALL for the chosen part.
     void set_scene(const Scene* scene) { scene_ = scene; }
-    void set_parts(bool open) { parts_open_ = open, first_row_ = 0, models_open_ = models_open_ && !open; }
+    void set_parts(bool open) { parts_open_ = open, first_row_ = 0, models_open_ = models_open_ && !open, pmi_open_ = pmi_open_ && !open; }
     bool parts_open() const { return parts_open_ && button_count_ > 0; }
     void set_chosen(uint32_t part); // highlighted row (scrolled into the list); kNone: none
     struct PartsHit {
-        enum class Kind : uint8_t { None, Panel, Row, Box, Up, Down, Hide, Isolate, All } kind = Kind::None;
+        // (Tab: the header's other list; KindToggle: a kind of annotation shown or not, `part`
+        // its kind; ShowAll, HideAll: every kind.)
+        enum class Kind : uint8_t { None, Panel, Row, Box, Up, Down, Hide, Isolate, All, Tab, KindToggle, ShowAll, HideAll } kind = Kind::None;
         uint32_t part = 0;
     };
     PartsHit parts_at(int16_t x, int16_t y) const;
     void scroll(int32_t rows);
     Area parts_panel() const;
     uint32_t part_rows() const; // rows the list shows at once
+
+    // The annotations list (the model's PMI: annotations.h), in the parts list's panel, its
+    // header's PMI tab opens it (its PARTS tab goes back): a row of the kinds (DIM, TOL, DAT,
+    // NOTE), each lit when shown; a row per annotation listed, its text in its kind's colour,
+    // the chosen one lit (a tap chooses it, a second lets go); SHOW and HIDE every kind.
+    void set_annotating(const Annotating* a) { annotating_ = a, pmi_top_ = 0; }
+    bool has_pmi() const; // the model has annotations to list
+    void set_pmi(bool open);
+    bool pmi_open() const { return pmi_open_ && button_count_ > 0 && has_pmi(); }
+    PartsHit pmi_at(int16_t x, int16_t y) const; // (Row: `part` the annotation)
+    void scroll_pmi(int32_t rows);
+    uint32_t pmi_rows() const; // annotations the list shows at once
 
     // The models chooser (a library's): the parts list's panel, a row per model, the one open
     // highlighted; a tap on a row opens it. (Opening it closes the parts list.)
@@ -87,6 +103,7 @@ public:
     bool broken(uint32_t model) const { return model < pack::kMaxLibraryEntries && (broken_[model / 32] >> (model % 32)) & 1u; }
     void set_models(bool open, uint32_t current) {
         models_open_ = open && has_models(), current_model_ = current, first_model_ = 0;
+        pmi_open_ = pmi_open_ && !models_open_;
         if (current != kNone && current >= model_rows()) first_model_ = current - model_rows() + 1; // (the open one in view)
         parts_open_ = parts_open_ && !models_open_;
     }
@@ -137,7 +154,10 @@ private:
     void parts_list(const render::Target& t) const;
     void models_list(const render::Target& t) const;
     void list_head(const render::Target& t, const Area& p, const char* title) const;
+    void list_tab(const render::Target& t, const Area& p, const char* label) const; // the header's other list
+    bool tab_hit(int16_t x, int16_t y) const;
     bool list_hit(int16_t x, int16_t y, PartsHit& h) const;
+    void pmi_list(const render::Target& t) const;
 
     uint16_t width_ = 0, height_ = 0;
     int16_t status_rows_ = 0, toolbar_x_ = 0;
@@ -156,6 +176,9 @@ private:
     bool models_open_ = false;
     uint32_t current_model_ = kNone, first_model_ = 0;
     uint32_t broken_[pack::kMaxLibraryEntries / 32] = {};
+    const Annotating* annotating_ = nullptr;
+    bool pmi_open_ = false;
+    uint32_t pmi_top_ = 0; // the annotation the list's first row shows (or the next listed one)
 };
 
 } // namespace facet::module

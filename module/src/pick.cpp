@@ -16,7 +16,7 @@ void Core::tap(int16_t x, int16_t y) {
     }
     if (presenter_.overlay().help_button().contains(x, y)) return act(Action::TangentEdges); // the help panel's button
     if (presenter_.overlay().name_at(x, y)) return toggle_models(); // the model's name, with a library: the chooser
-    if (tap_parts(x, y) || tap_models(x, y)) return;                 // the parts list's, the models chooser's
+    if (tap_parts(x, y) || tap_pmi(x, y) || tap_models(x, y)) return; // the parts list's, the annotations', the models chooser's
     if (const uint32_t a = presenter_.annotating().label_at(x, y); a != kNone) { // an annotation's label: it is chosen
         (void)choose_annotation(a);
         return;

@@ -65,7 +65,8 @@ void Core::tool(Action a) {
     case Action::SectionIn: sectioning_.at(-module::Sectioning::kStep, true); return;
     case Action::SectionOut: sectioning_.at(module::Sectioning::kStep, true); return;
     case Action::Parts:
-        presenter_.overlay().set_parts(!presenter_.overlay().parts_open());
+        if (presenter_.overlay().pmi_open()) presenter_.overlay().set_pmi(false); // (the annotations list in its panel: closed)
+        else presenter_.overlay().set_parts(!presenter_.overlay().parts_open());
         presenter_.overlay().set_chosen(picks_.chosen());
         presenter_.redraw(); // (the list opened or closed)
         return;
@@ -95,6 +96,10 @@ bool Core::tap_parts(int16_t x, int16_t y) {
     case Kind::Hide: tool(Action::HidePart); return true;
     case Kind::Isolate: tool(Action::IsolatePart); return true;
     case Kind::All: tool(Action::ShowAllParts); return true;
+    case Kind::Tab: o.set_pmi(true); break; // the annotations list
+    case Kind::KindToggle:
+    case Kind::ShowAll:
+    case Kind::HideAll: return true; // (the annotations list's)
     }
     presenter_.redraw(); // (the list scrolled)
     return true;

@@ -65,6 +65,11 @@ def main():
             failures.append(f'{model}: {len(datums)} datums, Open CASCADE reads {ref["datums"]}')
         if not all(any(d.startswith(name) for d in datums) for name in ref['datum_names']):
             failures.append(f'{model}: datum names {sorted(set(ref["datum_names"]))} not all among {sorted(set(datums))}')
+        # A repeat (listed once) is one whose kind, text and faces an earlier one has; no other.
+        for k, n in enumerate(notes):
+            earlier = any(m['kind'] == n['kind'] and m['text'] == n['text'] and m['faces'] == n['faces'] for m in notes[:k])
+            if n['repeat'] != earlier:
+                failures.append(f'{model}: annotation {k} {n["text"]!r}: repeat {n["repeat"]}, an earlier one like it: {earlier}')
         for t in texts:
             if not any(n['text'] == t for n in notes):
                 failures.append(f'{model}: no annotation reads {t!r}')
@@ -84,7 +89,8 @@ def main():
                         failures.append(f'{model}: {n["text"]!r} on face {f}, a {g["type"]} of radius {g["radius"]}')
         if checked < 3:
             failures.append(f'{model}: only {checked} faces checked against their annotations')
-        print(f'{model}: {len(notes)} annotations ({len(semantic)} semantic) as Open CASCADE reads them; '
+        listed = sum(1 for n in semantic if not n['repeat'])
+        print(f'{model}: {len(notes)} annotations ({len(semantic)} semantic, {listed} listed) as Open CASCADE reads them; '
               f'{checked} faces of diameters and flatness checked')
     for f in failures:
         print('FAIL:', f)

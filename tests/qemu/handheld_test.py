@@ -2,13 +2,14 @@
 """The handheld's features in a scripted QEMU session on versatilepb (640x480), against the
 desktop simulator running the same script (the module's own host build): the isometric view,
 hidden-line mode, a section moved by its slider, the parts list and a picked face on the sample
-part, see-through mode with a part chosen on an assembly; each screenshot pixel-identical but
+part, see-through mode with a part chosen on an assembly, an AP242 part's PMI (drawn, listed,
+one chosen, a kind hidden); each screenshot pixel-identical but
 for the status bar's frame time (the simulator runs without a clock); the picked face's exact
 values as facet-measure gives them; every frame of the session within the frame budget (the viewer's
 budget rule); the board's frame times (the status bar's) those of a 600 MHz core.
 
   handheld_test.py --elf facet-viewer.elf --sim facet-sim --packer P --measure M --sample S
-                   --assembly as1_oc_214.stp --work DIR
+                   --assembly as1_oc_214.stp --pmi-model nist_ctc_02_ap242.stp --work DIR
 """
 import argparse
 import json
@@ -26,9 +27,10 @@ from budget_rules import analyse, frame_budget  # noqa: E402
 # The sessions (tests/sessions): the handheld's features on the sample part, and see-through on
 # an assembly, on the board and in the simulator.
 def sessions(board):
-    """(the features session, the see-through one), for this board's screen (refused otherwise)."""
+    """(the features session, the see-through one, the PMI one), for this board's screen (refused otherwise)."""
     return (protocol.read_session(protocol.session_path('handheld'), board),
-            protocol.read_session(protocol.session_path('handheld-assembly'), board))
+            protocol.read_session(protocol.session_path('handheld-assembly'), board),
+            protocol.read_session(protocol.session_path('handheld-pmi'), board))
 
 
 SHOTS = ['views', 'hidden-line', 'section', 'parts', 'measure']
@@ -70,7 +72,7 @@ def session(args, env, fpk, board_dir, sim_dir, script, shots):
 
 def main():
     ap = argparse.ArgumentParser()
-    for a in ('--board', '--elf', '--sim', '--packer', '--measure', '--sample', '--assembly', '--work'):
+    for a in ('--board', '--elf', '--sim', '--packer', '--measure', '--sample', '--assembly', '--pmi-model', '--work'):
         ap.add_argument(a, required=True)
     args = ap.parse_args()
     if not boards.can(args.board, 'mouse'):
@@ -80,13 +82,17 @@ def main():
     step, fpk = os.path.join(args.work, 'sample.step'), os.path.join(args.work, 'sample.fpk')
     subprocess.run([args.sample, step], check=True, capture_output=True, env=env)
     subprocess.run([args.packer, step, '-o', fpk, '--quiet'], check=True, capture_output=True, env=env)
-    features, see_through = sessions(args.board)
+    features, see_through, pmi = sessions(args.board)
     problems = session(args, env, fpk, 'board', 'sim', features, SHOTS)
     dev = os.path.join(args.work, 'board')
     # See-through on an assembly: a part chosen in the list drawn solid, the others a screen door.
     afpk = os.path.join(args.work, 'assembly.fpk')
     subprocess.run([args.packer, args.assembly, '-o', afpk, '--quiet'], check=True, capture_output=True, env=env)
     problems += session(args, env, afpk, 'assembly-board', 'assembly-sim', see_through, ['see-through'])
+    # An AP242 part's PMI: drawn over it, the annotations list, one chosen, a kind hidden.
+    pfpk = os.path.join(args.work, 'pmi.fpk')
+    subprocess.run([args.packer, args.pmi_model, '-o', pfpk, '--quiet'], check=True, capture_output=True, env=env)
+    problems += session(args, env, pfpk, 'pmi-board', 'pmi-sim', pmi, ['pmi-view', 'pmi-list', 'pmi-kinds'])
     # The picked face's values, as the host's facet-measure states them.
     rep = json.load(open(os.path.join(dev, 'report.json'))) if os.path.exists(os.path.join(dev, 'report.json')) else {}
     picks = rep.get('picks', [])

@@ -163,7 +163,7 @@ TEST(Annotations, TheReaderTakesThemAndRefusesEachWayARecordLies) {
         {"a point beyond 1e8", [](geom::AnnotationTables& t) { t.points[1].p[0] = 2e8f; }},
         {"an unknown kind", [](geom::AnnotationTables& t) { t.records[0].kind = 4; }},
         {"an unknown tolerance type", [](geom::AnnotationTables& t) { t.records[1].type = 16; }},
-        {"unknown flags", [](geom::AnnotationTables& t) { t.records[1].flags |= 8; }},
+        {"unknown flags", [](geom::AnnotationTables& t) { t.records[1].flags |= 16; }},
         {"presented without polylines", [](geom::AnnotationTables& t) { t.records[1].flags |= pack::kPresented; }},
         {"polylines, not presented", [](geom::AnnotationTables& t) { t.records[0].flags &= uint8_t(~pack::kPresented); }},
         {"fine polylines without coarse", [](geom::AnnotationTables& t) { t.records[0].coarse_count = 0; }},
@@ -312,4 +312,53 @@ TEST(Annotations, AFaceListsItsAnnotationsAndAChosenOneLightsItsFaces) {
     // A face picked ends the choice.
     ASSERT_TRUE(app.v->select(0, kHole).ok());
     EXPECT_EQ(app.v->chosen_annotation(), kNone);
+}
+
+TEST(Annotations, TheListShowsEachKindAndTapsChooseAndHide) {
+    App app;
+    app.w = 480, app.h = 272, app.lines = 272;
+    app.interface = Interface::Full;
+    ASSERT_TRUE(app.create().ok());
+    ASSERT_TRUE(app.load(annotated_plate()).ok());
+    app.run();
+    const module::Overlay& o = static_cast<Core*>(app.v)->overlay();
+    EXPECT_TRUE(o.has_pmi());
+    app.v->act(Action::Parts);
+    app.run();
+    ASSERT_TRUE(o.parts_open());
+    const Area p = o.parts_panel();
+    constexpr int kRow = module::Overlay::kRow;
+    const int tab_x = p.width - 2 * 28 - 40 + 20; // (overlay_style.h: the scroll buttons and the tab)
+    app.tap(tab_x, p.y + kRow / 2);
+    ASSERT_TRUE(o.pmi_open()) << "the parts list's PMI tab opens the annotations list";
+    EXPECT_FALSE(o.parts_open());
+    EXPECT_EQ(o.pmi_rows() > 2, true);
+    // The rows: the three annotations, in the file's order.
+    app.tap(40, p.y + 2 * kRow + kRow + kRow / 2); // the second row
+    EXPECT_EQ(app.v->chosen_annotation(), 1u);
+    app.tap(40, p.y + 2 * kRow + kRow + kRow / 2);
+    EXPECT_EQ(app.v->chosen_annotation(), kNone) << "a second tap lets go";
+    // The kinds: DIM, TOL, DAT, NOTE across the row under the header.
+    app.tap(p.width / 8, p.y + kRow + kRow / 2);
+    EXPECT_EQ(app.v->annotations_shown(), kAllAnnotationKinds & ~annotation_kind_bit(AnnotationKind::Dimension));
+    app.tap(p.width / 8 + p.width / 4, p.y + kRow + kRow / 2);
+    EXPECT_EQ(app.v->annotations_shown(), annotation_kind_bit(AnnotationKind::Datum) | annotation_kind_bit(AnnotationKind::Note));
+    app.tap(p.width - 10, p.y + p.height - 5); // HIDE ALL
+    EXPECT_EQ(app.v->annotations_shown(), 0u);
+    app.tap(10, p.y + p.height - 5); // SHOW ALL
+    EXPECT_EQ(app.v->annotations_shown(), kAllAnnotationKinds);
+    // The PARTS tab goes back; the PART button closes the list.
+    app.tap(tab_x, p.y + kRow / 2);
+    EXPECT_TRUE(o.parts_open() && !o.pmi_open());
+    app.tap(tab_x, p.y + kRow / 2);
+    ASSERT_TRUE(o.pmi_open());
+    app.v->act(Action::Parts);
+    EXPECT_FALSE(o.pmi_open() || o.parts_open());
+    // A model without annotations has no PMI tab: the tap is the header's.
+    ASSERT_TRUE(app.load(plate_with_holes()).ok());
+    app.run();
+    EXPECT_FALSE(o.has_pmi());
+    app.v->act(Action::Parts);
+    app.tap(tab_x, p.y + kRow / 2);
+    EXPECT_TRUE(o.parts_open() && !o.pmi_open());
 }

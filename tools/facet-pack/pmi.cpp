@@ -26,6 +26,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <map>
 #include <tuple>
 
@@ -462,6 +463,13 @@ geom::AnnotationTables pmi_tables(const Pmi& pmi, const geom::Pack& pack, const 
             }
         }
         r.face_count = uint32_t(t.faces.size()) - r.first_face;
+        for (const pack::Annotation& o : t.records) { // the same kind, text and faces as an earlier one: a repeat
+            if (o.kind == r.kind && o.face_count == r.face_count && std::strcmp(t.text.data() + o.text, t.text.data() + r.text) == 0 &&
+                std::equal(t.faces.begin() + o.first_face, t.faces.begin() + o.first_face + o.face_count, t.faces.begin() + r.first_face)) {
+                r.flags |= pack::kRepeat;
+                break;
+            }
+        }
         r.drawn_by = pack::kNoIndex;
         if (!n.polylines.empty()) {
             size_t points = 0;

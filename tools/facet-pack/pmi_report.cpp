@@ -46,11 +46,11 @@ int print_annotations(const char* path, std::string& error) {
         const pack::Annotation& a = pmi[i];
         std::string faces;
         for (uint32_t f : pmi.faces(i)) faces += (faces.empty() ? "" : ", ") + std::to_string(f);
-        std::printf("{\"index\": %u, \"kind\": \"%s\", \"type\": %u, \"semantic\": %s, \"presented\": %s, \"text\": \"%s\", "
+        std::printf("{\"index\": %u, \"kind\": \"%s\", \"type\": %u, \"semantic\": %s, \"presented\": %s, \"repeat\": %s, \"text\": \"%s\", "
                     "\"value\": %.9g, \"lower\": %.9g, \"upper\": %.9g, \"material\": %u, \"faces\": [%s], \"drawn_by\": %d, "
                     "\"polylines\": %u, \"coarse_polylines\": %u, \"anchor\": [%.9g, %.9g, %.9g]}\n",
                     i, geom::annotation_kind_name(pack::AnnotationKind(a.kind)), a.type, a.flags & pack::kSemantic ? "true" : "false",
-                    a.flags & pack::kPresented ? "true" : "false", json_text(pmi.text(i)).c_str(), a.value, a.lower, a.upper, a.material,
+                    a.flags & pack::kPresented ? "true" : "false", a.flags & pack::kRepeat ? "true" : "false", json_text(pmi.text(i)).c_str(), a.value, a.lower, a.upper, a.material,
                     faces.c_str(), a.drawn_by == pack::kNoIndex ? -1 : int(a.drawn_by), a.polyline_count, a.coarse_count, a.anchor[0],
                     a.anchor[1], a.anchor[2]);
     }

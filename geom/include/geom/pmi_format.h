@@ -52,7 +52,9 @@ enum class DatumType : uint8_t { Feature = 0, Target = 1 };
 constexpr uint8_t kSemantic = 1;    // its values come from the file's semantic PMI (else: presentation only)
 constexpr uint8_t kPresented = 2;   // the file gives its presentation (polylines); else it is placed at its faces
 constexpr uint8_t kHasPlane = 4;    // `normal` holds the plane its presentation lies in
-constexpr uint8_t kAnnotationFlags = 7;
+constexpr uint8_t kRepeat = 8;      // an earlier one has its kind, text and faces (the file gives a datum once per
+                                    // tolerance that refers to it): a list shows that one alone
+constexpr uint8_t kAnnotationFlags = 15;
 
 // Annotation::material: a tolerance's material condition.
 enum class Material : uint8_t { None = 0, Maximum = 1, Least = 2 }; // Ⓜ, Ⓛ
@@ -60,7 +62,7 @@ enum class Material : uint8_t { None = 0, Maximum = 1, Least = 2 }; // Ⓜ, Ⓛ
 struct Annotation {
     uint8_t kind;     // AnnotationKind
     uint8_t type;     // DimensionType, ToleranceType or DatumType (0 for a note)
-    uint8_t flags;    // kSemantic | kPresented | kHasPlane
+    uint8_t flags;    // kSemantic | kPresented | kHasPlane | kRepeat
     uint8_t material; // Material (tolerances)
     uint32_t text;    // byte of PmiText where its text starts ("⌀52 ±0.15", "⌖ ⌀1 Ⓜ A B C", "A")
     uint32_t first_face, face_count;         // its faces: a run of PmiFaces
