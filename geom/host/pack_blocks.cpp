@@ -1,5 +1,7 @@
 #include "pack_blocks.h"
 
+#include "geom/tree.h"
+
 #include "pack_io.h"
 #include "pack_writer.h"
 #include "groups.h"
@@ -137,7 +139,7 @@ std::vector<uint8_t> stored(const std::vector<uint8_t>& pack, BlockStore store) 
 }
 
 template <typename T>
-void append(std::vector<uint8_t>& out, std::vector<SectionEntry>& table, IndexSectionId id, const std::vector<T>& records) {
+void append(std::vector<uint8_t>& out, std::vector<SectionEntry>& table, auto id, const std::vector<T>& records) {
     out.resize((out.size() + 3) & ~size_t(3), 0);
     const uint32_t offset = uint32_t(out.size());
     const size_t bytes = records.size() * sizeof(T);
@@ -272,7 +274,12 @@ bool make_blocked(const Pack& whole, const std::vector<PartBox>& given, const Bl
     const bool proxied = levels >= 1 && levels <= pack::kMostProxyLevels && options.proxies->size() == levels * shells;
     std::vector<ProxyGroup> near; // groups of instances near each other (groups.h)
     if (proxied && !options.group_caps.empty() && !make_groups(whole, boxes, *options.proxies, levels, options.group_caps, near, error)) return false;
-    const uint32_t kSections = 6 + (whole.needs() ? 1 : 0) + (proxied ? 3 : 0) + (near.empty() ? 0 : 4);
+    ProductTree tree; // (the whole pack's assembly tree, into the index as it is)
+    if (const Result r = tree.open(whole); !r.ok()) {
+        error = std::string("the pack's assembly tree: ") + r.what;
+        return false;
+    }
+    const uint32_t kSections = 6 + (whole.needs() ? 1 : 0) + (proxied ? 3 : 0) + (near.empty() ? 0 : 4) + (tree.count() ? 2 : 0);
     out.assign(sizeof(IndexHeader) + kSections * sizeof(SectionEntry), 0);
     std::vector<SectionEntry> table;
     append(out, table, IndexSectionId::Blocks, blocks); // offsets filled in below
@@ -292,10 +299,26 @@ bool make_blocked(const Pack& whole, const std::vector<PartBox>& given, const Bl
     (void)add(model); // the model's first, even when empty
     for (uint32_t s = 0; s < shells; ++s) part_names[s] = add(whole.shell_name(s));
     for (uint32_t i = 0; i < instances.size(); ++i) instance_names[i] = add(whole.instance_name(i));
+    std::vector<pack::Node> nodes;
+    std::vector<pack::InstanceNode> instance_nodes;
+    for (uint32_t n = 0; n < tree.count(); ++n) {
+        pack::Node x = tree[n];
+        x.name = add(tree.name(n)), x.occurrence = add(tree.occurrence(n));
+        nodes.push_back(x);
+    }
+    for (uint32_t i = 0; i < instances.size() && tree.count(); ++i) {
+        pack::InstanceNode in{tree.node_of(i), {}};
+        std::memcpy(in.explode, tree.explode(i), sizeof in.explode);
+        instance_nodes.push_back(in);
+    }
     pool.resize((pool.size() + 3) & ~size_t(3), 0);
     append(out, table, IndexSectionId::PartNames, part_names);
     append(out, table, IndexSectionId::InstanceNames, instance_names);
     append(out, table, IndexSectionId::Names, pool);
+    if (tree.count()) {
+        append(out, table, pack::TreeSectionId::Nodes, nodes);
+        append(out, table, pack::TreeSectionId::InstanceNodes, instance_nodes);
+    }
     if (whole.needs()) append(out, table, IndexSectionId::Needs, std::vector<pack::Needs>{*whole.needs()});
     if (proxied) { // each part's proxies, their corners quantized over its box
         std::vector<pack::ProxyPart> records(levels * shells);
@@ -418,6 +441,24 @@ bool join_blocked(std::span<const uint8_t> file, std::vector<uint8_t>& whole, st
     for (uint32_t i = 0; i < index.instances().size(); ++i) {
         (void)w.add_instance(index.instances()[i]);
         w.name_instance(i, index.instance_name(i));
+    }
+    ProductTree tree; // (the index's assembly tree, into the whole pack)
+    if (const Result r = tree.open(index); !r.ok()) {
+        describe(r, text, sizeof text);
+        error = text;
+        return false;
+    }
+    if (tree.count()) {
+        std::vector<pack::Node> nodes;
+        std::vector<PackWriter::TreeNodeNames> names;
+        std::vector<pack::InstanceNode> instances;
+        for (uint32_t n = 0; n < tree.count(); ++n) nodes.push_back(tree[n]), names.push_back({tree.name(n), tree.occurrence(n)});
+        for (uint32_t i = 0; i < index.instances().size(); ++i) {
+            pack::InstanceNode in{tree.node_of(i), {}};
+            std::memcpy(in.explode, tree.explode(i), sizeof in.explode);
+            instances.push_back(in);
+        }
+        w.set_tree(std::move(nodes), std::move(names), std::move(instances));
     }
     whole = w.finish();
     return true;

@@ -66,6 +66,14 @@ uint32_t PackWriter::add_name(const std::string& name) {
 
 void PackWriter::set_model_name(const std::string& name) { model_name_ = cut_name(name); }
 
+void PackWriter::set_tree(std::vector<pack::Node> nodes, std::vector<TreeNodeNames> names, std::vector<pack::InstanceNode> instances) {
+    for (size_t n = 0; n < nodes.size() && n < names.size(); ++n) {
+        nodes[n].name = add_name(names[n].name);
+        nodes[n].occurrence = add_name(names[n].occurrence);
+    }
+    tree_ = std::move(nodes), tree_instances_ = std::move(instances);
+}
+
 void PackWriter::name_shell(uint32_t shell, const std::string& name) {
     if (shell_names_.size() <= shell) shell_names_.resize(shell + 1, kNoIndex);
     shell_names_[shell] = add_name(name);
@@ -88,7 +96,7 @@ void append_section(std::vector<uint8_t>& out, std::vector<SectionEntry>& table,
 } // namespace
 
 std::vector<uint8_t> PackWriter::finish() const {
-    const bool named = !names_.empty() || !model_name_.empty();
+    const bool named = !names_.empty() || !model_name_.empty() || !tree_.empty();
     std::vector<uint32_t> smooth_words; // (written when some edge is smooth)
     for (uint32_t e = 0; e < smooth_.size() && e < edges_.size(); ++e) {
         if (!smooth_[e]) continue;
@@ -128,6 +136,15 @@ std::vector<uint8_t> PackWriter::finish() const {
                 if (v != kNoIndex) v += shift;
         if (shell_names) append_section(out, table, SectionId::ShellNames, shells);
         if (instance_names) append_section(out, table, SectionId::InstanceNames, instances);
+        if (!tree_.empty()) { // the nodes' names move as the others do
+            std::vector<pack::Node> nodes = tree_;
+            for (pack::Node& n : nodes) {
+                if (n.name != kNoIndex) n.name += shift;
+                if (n.occurrence != kNoIndex) n.occurrence += shift;
+            }
+            append_section(out, table, pack::TreeSectionId::Nodes, nodes);
+            append_section(out, table, pack::TreeSectionId::InstanceNodes, tree_instances_);
+        }
         std::vector<char> pool;
         if (!model_name_first) pool.assign(model_name_.c_str(), model_name_.c_str() + model_name_.size() + 1);
         pool.insert(pool.end(), names_.begin(), names_.end());

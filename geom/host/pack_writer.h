@@ -3,6 +3,7 @@
 // allocates. The matching reader is geom/pack.h.
 #include "geom/pack_format.h"
 #include "geom/pmi_format.h"
+#include "geom/tree_format.h"
 
 #include <cstdint>
 #include <map>
@@ -76,6 +77,12 @@ public:
     void set_source_unit_mm(float unit) { unit_mm_ = unit; }
     // What the model takes on a device (pack::Needs), written first after the table.
     void set_needs(const pack::Needs& needs) { needs_ = needs, has_needs_ = true; }
+    // The model's assembly tree (geom/tree_format.h; written when it has a node): each node's
+    // names as strings (the writer puts them in the Names pool), an InstanceNode per instance.
+    struct TreeNodeNames {
+        std::string name, occurrence;
+    };
+    void set_tree(std::vector<pack::Node> nodes, std::vector<TreeNodeNames> names, std::vector<pack::InstanceNode> instances);
     // The model's annotations (written when there is one).
     void set_annotations(AnnotationTables tables) { annotations_ = std::move(tables); }
     const AnnotationTables& annotations() const { return annotations_; }
@@ -110,6 +117,8 @@ private:
     pack::Needs needs_{};
     bool has_needs_ = false;
     AnnotationTables annotations_;
+    std::vector<pack::Node> tree_; // (names: offsets into names_, before finish() puts the model's first)
+    std::vector<pack::InstanceNode> tree_instances_;
     std::vector<pack::Coedge> coedges_;
     std::vector<pack::Loop> loops_;
     std::vector<pack::Face> faces_;

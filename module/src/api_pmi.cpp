@@ -40,7 +40,11 @@ bool Core::tap_pmi(int16_t x, int16_t y) {
     case Kind::Box:
     case Kind::Hide:
     case Kind::Isolate:
-    case Kind::All: return true; // (the parts list's)
+    case Kind::All:
+    case Kind::NodeRow:
+    case Kind::NodeBox:
+    case Kind::Fit:
+    case Kind::Explode: return true; // (the parts list's)
     }
     presenter_.redraw(); // (the list changed)
     return true;

@@ -297,7 +297,7 @@ facet_stats facet_get_stats(const facet_viewer* v) {
 }
 
 void facet_act(facet_viewer* v, facet_action a) {
-    if (v && unsigned(a) <= unsigned(FACET_ACTION_ANNOTATIONS)) cpp(v)->act(Action(a));
+    if (v && unsigned(a) <= unsigned(FACET_ACTION_EXPLODE)) cpp(v)->act(Action(a));
 }
 uint32_t facet_get_key_binding_count(void) { return key_bindings().count; }
 facet_key_binding facet_get_key_binding(uint32_t i) {

@@ -1,5 +1,5 @@
 #pragma once
-// What the C API's files share (c_api.cpp, c_api_pmi.cpp): a C viewer as the C++ one, a
+// What the C API's files share (c_api.cpp, c_api_product.cpp): a C viewer as the C++ one, a
 // result as the C one, and the refusal of a NULL viewer.
 #include "facet/facet.h"
 #include "facet/viewer.h"

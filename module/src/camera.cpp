@@ -139,7 +139,8 @@ ViewBasis Camera::basis(const Scene& scene, uint16_t width, uint16_t height) con
 }
 
 Transform Camera::transform(const ViewBasis& basis, const Scene& scene, uint32_t index) {
-    const pack::Instance& inst = scene.instances()[index];
+    pack::Instance scratch;
+    const pack::Instance& inst = scene.placed(index, scratch); // (exploded, where the view is)
     return transform(basis, inst.m, scene.part(inst.shell).closed);
 }
 

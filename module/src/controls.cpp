@@ -24,6 +24,7 @@ constexpr KeyBinding kKeys[] = {
     {'m', Action::NextDisplayMode, "display mode: shaded + edges, shaded, wireframe, hidden line, see-through"},
     {'t', Action::TangentEdges, "tangent edges (a fillet's sides) shown / hidden"},
     {'r', Action::Annotations, "annotations (PMI: dimensions, tolerances, datums) shown / hidden"},
+    {'e', Action::Explode, "exploded view (an assembly's parts apart; its slider) / back"},
     {'c', Action::Section, "section: picked plane, x, y, z, off"},
     {',', Action::SectionIn, "move the section back"}, {'.', Action::SectionOut, "move the section forward"},
     {'p', Action::Parts, "the parts list"},  {'n', Action::NextPart, "choose the next part"},

@@ -76,6 +76,7 @@ void Core::unload() {
     sectioning_.reset();
     presenter_.annotating().set(nullptr);
     presenter_.overlay().set_pmi(false);
+    presenter_.overlay().set_explode_slider(false, 0);
     picks_.reset();
 }
 
@@ -340,7 +341,10 @@ void Core::command(const module::Command& c) {
     case Kind::Pan: camera_.pan_pixels(c.dx, c.dy, scene_.radius(), d.width, d.height); break;
     case Kind::Dolly: camera_.dolly(c.factor); break;
     case Kind::Pick: tap(c.x, c.y); return;
-    case Kind::Slide: sectioning_.at(presenter_.overlay().slider_at(c.y), false); return;
+    case Kind::Slide:
+        if (presenter_.overlay().slider_explodes()) (void)set_explode(presenter_.overlay().slider_at(c.y) * module::Scene::kMostExplode);
+        else sectioning_.at(presenter_.overlay().slider_at(c.y), false);
+        return;
     }
     view_changed();
 }
@@ -384,6 +388,7 @@ void Core::act(Action a) {
     case Action::NextDisplayMode: set_mode(DisplayMode((uint8_t(painter_.mode()) + 1) % 5)); return;
     case Action::TangentEdges: set_tangent_edges(!painter_.tangent_edges()); return;
     case Action::Annotations: show_annotations(presenter_.annotating().shown() ? 0 : pack::kAllKinds); return;
+    case Action::Explode: toggle_explode(); return;
     case Action::Section:
     case Action::SectionIn:
     case Action::SectionOut:

@@ -108,6 +108,15 @@ public:
     Result check_face(uint32_t part, uint32_t face) const;
     Result check_part(uint32_t part) const;
 
+    // The assembly tree and the exploded view (api_tree.cpp).
+    Result check_node(uint32_t node) const;
+    Result show_node(uint32_t node, bool shown);
+    Result isolate_node(uint32_t node);
+    Result fit_node(uint32_t node);
+    Result choose_node(uint32_t node);
+    uint32_t chosen_node() const { return picks_.chosen_node(); }
+    Result set_explode(float factor);
+    void toggle_explode(); // Action::Explode: out (factor 1, the slider shown) or back
     // Annotations (api_pmi.cpp): the kinds shown, the one chosen.
     void show_annotations(uint32_t kinds);
     Result choose_annotation(uint32_t annotation);
@@ -226,7 +235,7 @@ private:
     module::Glide glide_; // a glide to a new view (glide.h)
     static constexpr uint32_t kDoubleTapUs = 400000;
     static constexpr int kDoubleTapSlop = 12; // pixels
-    void glide_to(const module::View& v, uint32_t instance = kNone, uint32_t face = kNone);
+    void glide_to(const module::View& v, uint32_t instance = kNone, uint32_t face = kNone, uint32_t instances = 1);
     bool glide_step(); // Moving: the camera advanced (a frame is wanted); false when it has arrived
     module::Picks picks_; // the faces picked and the part chosen, shown (picks.h)
     uint8_t next_view_ = 0; // the toolbar's VIEW button: the next standard view

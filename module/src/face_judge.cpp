@@ -69,7 +69,8 @@ void FaceJudge::take_part(uint32_t f) {
         if (instances[i].shell != part) continue;
         if (known) {
             float w[3];
-            place(instances[i].m, c, w);
+            pack::Instance scratch;
+            place(scene.placed(i, scratch).m, c, w);
             if (view_.pixels(w, r) < kMinPixels) continue;
         }
         if (count_ < kInstances) instances_[count_] = i;
@@ -114,13 +115,14 @@ bool FaceJudge::shows(uint32_t f) {
         }
         return !(facing == Facing::Round && view_.faces_away(round, inst.m, sag));
     };
+    pack::Instance scratch; // (exploded, where the view is)
     if (count_ <= kInstances) {
         for (uint32_t k = 0; k < count_; ++k)
-            if (shown(instances[instances_[k]])) return true;
+            if (shown(scene.placed(instances_[k], scratch))) return true;
         return false;
     }
-    for (const pack::Instance& inst : instances)
-        if (inst.shell == part && shown(inst)) return true;
+    for (uint32_t i = 0; i < instances.size(); ++i)
+        if (instances[i].shell == part && shown(scene.placed(i, scratch))) return true;
     return false;
 }
 

@@ -14,11 +14,11 @@ void Outline::add(const Projected& p) {
     ++points;
 }
 
-void Framer::start(uint16_t width, uint16_t height, FreeArea taken, uint32_t instance, uint32_t face, float fill) {
+void Framer::start(uint16_t width, uint16_t height, FreeArea taken, uint32_t instance, uint32_t face, float fill, uint32_t instances) {
     busy_ = true;
     fill_ = fill;
     width_ = width, height_ = height, taken_ = taken;
-    only_instance_ = instance, only_face_ = face;
+    only_instance_ = instance, only_end_ = instance == kNone ? kNone : instance + instances, only_face_ = face;
     round_ = 0;
     instance_ = face_ = loop_ = coedge_ = k_ = 0, phase_ = 0;
     have_transform_ = false;
@@ -43,7 +43,7 @@ bool Framer::run(const Scene& scene, Camera& camera, uint32_t units) {
             budget = budget > 64 ? budget - 64 : 0; // the adjustment's own cost
             continue;
         }
-        if (only_instance_ != kNone && instance_ != only_instance_) {
+        if (only_instance_ != kNone && (instance_ < only_instance_ || instance_ >= only_end_)) {
             ++instance_;
             continue;
         }

@@ -30,7 +30,9 @@ public:
     static constexpr float kFill = 0.85f; // of the free area
 
     // Frame the whole model (face = kNone) or one face of one instance, on a width x height screen.
-    void start(uint16_t width, uint16_t height, FreeArea taken, uint32_t instance = kNone, uint32_t face = kNone, float fill = kFill);
+    // `instances`: the count from `instance` on (a node of the assembly tree's parts), face kNone.
+    void start(uint16_t width, uint16_t height, FreeArea taken, uint32_t instance = kNone, uint32_t face = kNone, float fill = kFill,
+               uint32_t instances = 1);
     void stop() { busy_ = false; }
     bool busy() const { return busy_; }
     // Up to `units` of work on `camera`; true when the framing is done (or there was nothing to frame).
@@ -45,7 +47,7 @@ private:
     bool busy_ = false;
     uint16_t width_ = 0, height_ = 0;
     FreeArea taken_;
-    uint32_t only_instance_ = kNone, only_face_ = kNone;
+    uint32_t only_instance_ = kNone, only_end_ = kNone, only_face_ = kNone; // instances [only_instance_, only_end_)
     float fill_ = kFill;
     int round_ = 0;
     // Where the round's scan stands: instance, face, then the face's vertices (phase 0) and its

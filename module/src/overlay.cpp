@@ -59,7 +59,7 @@ Overlay::TimeField Overlay::time_field() const {
 FreeArea Overlay::taken() const {
     FreeArea a;
     a.top = status_rows_;
-    a.right = int16_t(width_ - toolbar_x_ + (slider_on_ && button_count_ ? kSliderWidth : 0));
+    a.right = int16_t(width_ - toolbar_x_ + (slider_on() && button_count_ ? kSliderWidth : 0));
     a.left = parts_open() || pmi_open() ? parts_panel().width : 0;
     a.bottom = int16_t(line_count_ ? line_count_ * render::kLineHeight + 4 : 0);
     return a;
@@ -88,7 +88,7 @@ static Area area(int32_t x, int32_t y, int32_t width, int32_t height) {
 }
 
 Area Overlay::slider() const {
-    if (!slider_on_ || !button_count_) return {0, 0, 0, 0};
+    if (!slider_on() || !button_count_) return {0, 0, 0, 0};
     const int32_t bottom = height_ - (line_count_ ? line_count_ * render::kLineHeight + 4 : 0) - kBarRows;
     return area(toolbar_x_ - kSliderWidth, status_rows_, kSliderWidth, bottom - status_rows_);
 }
@@ -113,26 +113,6 @@ uint32_t Overlay::part_rows() const {
     return rows > 0 ? uint32_t(rows) : 0;
 }
 
-void Overlay::set_chosen(uint32_t part) {
-    chosen_ = part;
-    const uint32_t rows = part_rows();
-    if (part == kNone || rows == 0) return;
-    if (part < first_row_) first_row_ = part;
-    if (part >= first_row_ + rows) first_row_ = part - rows + 1;
-}
-
-namespace {
-// A list's first row moved by `rows`, within what keeps its `shown` rows full of its `count`.
-uint32_t scrolled(uint32_t first, int32_t rows, uint32_t count, uint32_t shown) {
-    const int64_t last = count > shown ? int64_t(count - shown) : 0, at = int64_t(first) + rows;
-    return uint32_t(at < 0 ? 0 : at > last ? last : at);
-}
-} // namespace
-
-void Overlay::scroll(int32_t rows) {
-    first_row_ = scrolled(first_row_, rows, scene_ && scene_->loaded() ? uint32_t(scene_->instances().size()) : 0, part_rows());
-}
-
 // A tap on a list panel (the parts list's or the chooser's) as far as the panel alone says:
 // outside it (None), on its header (Up, Down: its scroll buttons; Panel: the rest). True when
 // that decides it; else the tap is in the rows below the header, Panel so far.
@@ -145,33 +125,12 @@ bool Overlay::list_hit(int16_t x, int16_t y, PartsHit& h) const {
     return true;
 }
 
-Overlay::PartsHit Overlay::parts_at(int16_t x, int16_t y) const {
-    PartsHit h;
-    if (!parts_open() || list_hit(x, y, h)) {
-        if (h.kind == PartsHit::Kind::Panel && has_pmi() && tab_hit(x, y)) h.kind = PartsHit::Kind::Tab;
-        return h;
-    }
-    const Area p = parts_panel();
-    const int32_t dy = y - p.y;
-    if (y >= p.y + p.height - kPartsFooter) { // HIDE, ISOL, ALL
-        const int32_t third = p.width / 3;
-        h.kind = x < third ? PartsHit::Kind::Hide : x < 2 * third ? PartsHit::Kind::Isolate : PartsHit::Kind::All;
-        return h;
-    }
-    const uint32_t row = uint32_t(dy - kRow) / uint32_t(kRow);
-    const uint32_t count = scene_ && scene_->loaded() ? uint32_t(scene_->instances().size()) : 0;
-    if (row >= part_rows() || first_row_ + row >= count) return h;
-    h.part = first_row_ + row;
-    h.kind = x < 22 ? PartsHit::Kind::Box : PartsHit::Kind::Row;
-    return h;
-}
-
 void Overlay::draw(const render::Target& t, const StatusInfo& info) const {
     if (status_rows_) status(t, info);
     if (button_count_) {
         toolbar(t);
         if (line_count_) panel(t);
-        if (slider_on_) slider_bar(t);
+        if (slider_on()) slider_bar(t);
         if (parts_open()) parts_list(t);
         if (pmi_open()) pmi_list(t);
         if (models_open()) models_list(t);
@@ -274,41 +233,10 @@ void Overlay::slider_bar(const render::Target& t) const {
     if (r.width <= 0 || r.height <= 2 * kKnob) return;
     render::fill_rect(t, r.x, r.y, r.width, r.height, kBar);
     render::fill_rect(t, r.x + r.width / 2 - 1, r.y + kKnob, 3, r.height - 2 * kKnob, kDim); // the track
-    const int32_t y = r.y + r.height - kKnob - int32_t(slider_value_ * float(r.height - 2 * kKnob) + 0.5f);
+    const float value = explode_on_ ? explode_value_ : slider_value_;
+    const int32_t y = r.y + r.height - kKnob - int32_t(value * float(r.height - 2 * kKnob) + 0.5f);
     render::fill_rect(t, r.x + 2, y - kKnob + 2, r.width - 4, 2 * kKnob - 4, kEdge);
     render::fill_rect(t, r.x + 3, y - kKnob + 3, r.width - 6, 2 * kKnob - 6, kButtonOn);
-}
-
-void Overlay::parts_list(const render::Target& t) const {
-    const Area p = parts_panel();
-    if (!scene_ || !scene_->loaded() || p.height < kRow + kPartsFooter) return;
-    const uint32_t count = uint32_t(scene_->instances().size());
-    char text[128];
-    format(text, sizeof text, "PARTS {}", count);
-    list_head(t, p, text);
-    if (has_pmi()) list_tab(t, p, "PMI");
-    const uint32_t rows = part_rows();
-    for (uint32_t r = 0; r < rows && first_row_ + r < count; ++r) {
-        const uint32_t part = first_row_ + r;
-        const int32_t y = p.y + kRow + int32_t(r) * kRow;
-        const bool shown = scene_->shown(part);
-        if (part == chosen_) render::fill_rect(t, p.x, y, p.width - 1, kRow, kButtonOn);
-        // The box: filled when the part is shown.
-        render::fill_rect(t, p.x + 5, y + 4, 12, 12, shown ? kText : kDim);
-        if (!shown) render::fill_rect(t, p.x + 7, y + 6, 8, 8, part == chosen_ ? kButtonOn : kBar);
-        const char* name = scene_->part_name(scene_->instances()[part].shell);
-        format(text, sizeof text, "{} {}", part + 1, *name ? name : "(unnamed)");
-        render::cut_text(text, (p.width - 26) / render::kCellWidth);
-        render::draw_text(t, p.x + 22, y + (kRow - render::kGlyphHeight) / 2, text, shown ? kText : kDim);
-    }
-    static constexpr const char* kLabels[3] = {"HIDE", "ISOL", "ALL"};
-    const int32_t third = p.width / 3, y = p.y + p.height - kPartsFooter;
-    for (int i = 0; i < 3; ++i) {
-        const int32_t x = p.x + i * third, w = i == 2 ? p.width - 2 * third : third;
-        render::fill_rect(t, x + 1, y + 1, w - 2, kPartsFooter - 2, chosen_ == kNone && i < 2 ? kBar : kButton);
-        render::draw_text(t, x + (w - render::text_width(kLabels[i])) / 2, y + (kPartsFooter - render::kGlyphHeight) / 2, kLabels[i],
-                          chosen_ == kNone && i < 2 ? kDim : kText);
-    }
 }
 
 // A list panel's background and its header: the title, the scroll buttons at its right end.

@@ -6,6 +6,7 @@
 // while the faces fill in. Text in facet's own bitmap font (render/text.h). Everything is
 // opaque (an incremental frame draws over the last one) and clipped to the target's band.
 #include "facet/viewer.h"
+#include "geom/tree_format.h"
 #include "models.h"
 #include "render/raster.h"
 #include "scene.h"
@@ -58,26 +59,49 @@ public:
 
     // The section slider: shown or not, and where its knob is (0: the bottom, 1: the top).
     void set_slider(bool on, float value) { slider_on_ = on, slider_value_ = value; }
-    bool slider_on() const { return slider_on_; }
+    // The same slider for the exploded view while it is on (it then moves the parts, not the plane).
+    void set_explode_slider(bool on, float value) { explode_on_ = on, explode_value_ = value; }
+    bool slider_explodes() const { return explode_on_; }
+    bool slider_on() const { return slider_on_ || explode_on_; }
     Area slider() const; // the track (width 0: none)
     float slider_at(int16_t y) const; // the value at a row of the track, 0..1
 
-    // The parts list: a panel down the left side, a row per part (instance) with its box
-    // (shown or hidden) and name, scroll buttons, and HIDE, ISOL and ALL for the chosen part.
+    // The parts list: a panel down the left side: the assembly tree (overlay_tree.cpp), a row
+    // per sub-assembly (its box opens or closes it, its name chooses it: all its parts) with
+    // its sub-assemblies and parts under it when open (one open child a level: the rows a path
+    // down the tree), and a row per part (instance) with its box (shown or hidden) and name; a
+    // flat list of the parts for a model without a tree. Scroll buttons; HIDE, ISOL, ALL, FIT
+    // and EXPL (the exploded view) for the chosen part or sub-assembly.
     void set_scene(const Scene* scene) { scene_ = scene; }
-    void set_parts(bool open) { parts_open_ = open, first_row_ = 0, models_open_ = models_open_ && !open, pmi_open_ = pmi_open_ && !open; }
+    void set_parts(bool open) {
+        parts_open_ = open, first_row_ = 0, models_open_ = models_open_ && !open, pmi_open_ = pmi_open_ && !open;
+        if (open) open_depth_ = 0; // (the tree's top level)
+    }
     bool parts_open() const { return parts_open_ && button_count_ > 0; }
-    void set_chosen(uint32_t part); // highlighted row (scrolled into the list); kNone: none
+    void set_chosen(uint32_t part); // highlighted row (its sub-assemblies opened, scrolled into the list); kNone: none
+    void set_chosen_node(uint32_t node); // a sub-assembly's row (likewise)
+    void toggle_open(uint32_t node);     // a sub-assembly opened (its siblings' closed) or closed
     struct PartsHit {
         // (Tab: the header's other list; KindToggle: a kind of annotation shown or not, `part`
         // its kind; ShowAll, HideAll: every kind.)
-        enum class Kind : uint8_t { None, Panel, Row, Box, Up, Down, Hide, Isolate, All, Tab, KindToggle, ShowAll, HideAll } kind = Kind::None;
+        enum class Kind : uint8_t {
+            None, Panel, Row, Box, Up, Down, Hide, Isolate, All, Tab, KindToggle, ShowAll, HideAll,
+            NodeRow, NodeBox, Fit, Explode, // (a sub-assembly's row, its box; the footer's last two)
+        } kind = Kind::None;
         uint32_t part = 0;
     };
     PartsHit parts_at(int16_t x, int16_t y) const;
     void scroll(int32_t rows);
     Area parts_panel() const;
     uint32_t part_rows() const; // rows the list shows at once
+    // A row of the parts list: a sub-assembly (node) or a part (instance), at its depth.
+    struct TreeRow {
+        bool node;
+        uint32_t index, depth;
+        bool open;
+    };
+    uint32_t tree_row_count() const;
+    bool tree_row(uint32_t row, TreeRow& out) const; // (false: past the last)
 
     // The annotations list (the model's PMI: annotations.h), in the parts list's panel, its
     // header's PMI tab opens it (its PARTS tab goes back): a row of the kinds (DIM, TOL, DAT,
@@ -166,11 +190,16 @@ private:
     bool help_ = false, measuring_ = false;
     char lines_[kLines][kLineChars] = {};
     uint32_t line_count_ = 0;
-    bool slider_on_ = false;
-    float slider_value_ = 0.5f;
+    bool slider_on_ = false, explode_on_ = false;
+    float slider_value_ = 0.5f, explode_value_ = 0;
     const Scene* scene_ = nullptr;
     bool parts_open_ = false;
-    uint32_t first_row_ = 0, chosen_ = kNone;
+    uint32_t first_row_ = 0, chosen_ = kNone, chosen_node_ = kNone;
+    uint32_t open_[pack::kMaxTreeDepth + 1] = {}; // the path of open sub-assemblies: open_[d] at depth d (open_[0]: the root)
+    uint32_t open_depth_ = 0;                     // how many below the root
+    template <typename Each>
+    void walk_rows(Each each) const; // each row in order (each returns false: stop)
+    void scroll_to(uint32_t row);
     const Models* library_ = nullptr;
     bool storage_gone_ = false;
     bool models_open_ = false;

@@ -246,7 +246,7 @@ uint32_t Painter::face(uint32_t f, const Transform& t, Rows rows, uint32_t from,
     const render::Palette& pal = palette(lit(f) ? (hl_[1].face == f && hl_[1].instance == instance_ ? kPicked2 : kPicked) : white ? kPaper : F.rgb);
     const render::Cull cull = t.closed && !inside ? render::Cull::Back : render::Cull::None;
     const render::Palette* cap = inside ? &palette(kCap) : nullptr;
-    raster_.set_stipple(mode_ == DisplayMode::SeeThrough && instance_ != focus_);
+    raster_.set_stipple(mode_ == DisplayMode::SeeThrough && instance_ != focus_ && !chosen(instance_));
     const uint16_t* id = scene_.indices() + F.first_index + 3 * from;
     const uint32_t pixels = raster_.stats.pixels;
     uint32_t k = from;
@@ -273,7 +273,7 @@ uint32_t Painter::highlighted_faces(uint32_t first, uint32_t count, const Transf
         work += used + 1;
     };
     nearer_ = true;
-    if (part_ == instance_) {
+    if (chosen(instance_)) {
         for (uint32_t f = first; f < first + count; ++f) again(f);
     } else {
         for (const Highlight& h : hl_) {

@@ -89,7 +89,9 @@ public:
     void set_inside(bool on) { inside_ = on; }
     // The part chosen in the parts list (every face in the highlight colour; kNone: none), and
     // the part see-through mode draws solid (kNone: every part see-through).
-    void set_part(uint32_t instance) { part_ = instance; }
+    void set_part(uint32_t instance) { part_ = instance, part_end_ = instance == kNone ? kNone : instance + 1; }
+    // A node of the assembly tree chosen: every part of its run of instances, as set_part's one.
+    void set_parts(uint32_t first, uint32_t count) { part_ = count ? first : kNone, part_end_ = count ? first + count : kNone; }
     // Faces drawn into a faces layer take their own colours (no highlight: the layer holds the
     // view's faces whatever is picked); the highlighted ones are drawn again over its copy.
     void set_plain(bool on) { plain_ = on; }
@@ -141,7 +143,8 @@ public:
                          uint32_t most_triangles); // (a level with more is not drawn)
     uint32_t group_proxy(uint32_t group, const Transform& t, uint32_t level);
     // Whether an instance is lit (picked, or a highlighted face's): drawn as itself, never in a group's proxy.
-    bool lit_instance(uint32_t i) const { return part_ == i || hl_[0].instance == i || hl_[1].instance == i; }
+    bool lit_instance(uint32_t i) const { return chosen(i) || hl_[0].instance == i || hl_[1].instance == i; }
+    bool chosen(uint32_t i) const { return i >= part_ && i < part_end_; } // (the part, or a node's parts, chosen)
     // Hidden line: the proxy's outline and creases, over the faces (painter_proxy.cpp); the work.
     uint32_t proxy_outline(uint32_t part, const Transform& t, uint32_t level);
     // The screen error a proxy may have (pixels): the view's (its screen error times its
@@ -186,7 +189,7 @@ private:
     int32_t across(const int32_t sphere_centre[3], int32_t radius, const Transform& t, Projected& centre); // on the screen (sub-pixels)
     bool lit(uint32_t f) const { // picked, of the part chosen, or of the annotation chosen: in the highlight colour
         return !plain_ && ((hl_[0].face == f && hl_[0].instance == instance_) || (hl_[1].face == f && hl_[1].instance == instance_) ||
-                           part_ == instance_ || (pmi_ && pmi_->applies_to(annotation_, f)));
+                           chosen(instance_) || (pmi_ && pmi_->applies_to(annotation_, f)));
     }
     uint32_t speck(uint32_t f, const Transform& t, int32_t pixels); // a face under `pixels` across: the work (0: not one)
     // Whether a sphere is under `pixels` across on the screen (its centre projected into `centre`).
@@ -227,7 +230,7 @@ private:
     bool inside_ = false;
     bool plain_ = false;      // set_plain()
     bool nearer_ = false;     // highlighted_faces(): vertices a depth unit nearer
-    uint32_t part_ = kNone, focus_ = kNone;
+    uint32_t part_ = kNone, part_end_ = kNone, focus_ = kNone;
     const geom::Annotations* pmi_ = nullptr;
     uint32_t annotation_ = kNone;
     uint32_t refused_ = 0;

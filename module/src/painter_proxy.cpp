@@ -13,7 +13,7 @@ uint32_t Painter::proxy_level(uint32_t part, const int32_t sphere_centre[3], int
     if (levels == 0 || mode_ == DisplayMode::Wireframe) return kNone;
     const bool must = need != ProxyNeed::Optional;
     if (!must) { // a part in memory: only in a crowded view, and drawn as itself where it is lit or cut
-        if (!crowded_ || proxy_subpixels_ <= 0 || radius <= 0 || part_ == instance_ || hl_[0].instance == instance_ ||
+        if (!crowded_ || proxy_subpixels_ <= 0 || radius <= 0 || chosen(instance_) || hl_[0].instance == instance_ ||
             hl_[1].instance == instance_) {
             return kNone;
         }

@@ -4,12 +4,14 @@
 #include "describe.h"
 #include "geom/measure.h"
 
+#include <cstring>
+
 namespace facet::module {
 
 void Picks::reset() {
     selection_.clear();
     presenter_.annotating().choose(kNone);
-    chosen_ = kNone;
+    chosen_ = chosen_node_ = kNone;
     presenter_.overlay().set_chosen(kNone);
     shown();
 }
@@ -30,8 +32,15 @@ void Picks::set_measuring(bool on) {
 }
 
 void Picks::choose(uint32_t part) {
-    chosen_ = part;
+    chosen_ = part, chosen_node_ = kNone;
     presenter_.overlay().set_chosen(chosen_);
+    focus();
+    redraw();
+}
+
+void Picks::choose_node(uint32_t node) {
+    chosen_ = kNone, chosen_node_ = node;
+    presenter_.overlay().set_chosen_node(node);
     focus();
     redraw();
 }
@@ -61,7 +70,12 @@ void Picks::highlight() {
 }
 
 void Picks::focus() {
-    painter_.set_part(chosen_);
+    if (chosen_node_ != kNone && chosen_node_ < scene_.tree().count()) {
+        const pack::Node& n = scene_.tree()[chosen_node_];
+        painter_.set_parts(n.first_instance, n.instance_count);
+    } else {
+        painter_.set_part(chosen_);
+    }
     painter_.set_focus(chosen_ != kNone ? chosen_ : selection_.instance(0));
 }
 
@@ -103,7 +117,15 @@ void Picks::panel() {
         module::describe(g[i], p.face, unit, lines[i], sizeof lines[i]);
     }
     uint32_t n = selection_.count();
-    if (n == 2) module::describe(geom::relate(g[0], g[1]), unit, lines[n++], sizeof lines[0]);
+    if (n == 2) {
+        module::describe(geom::relate(g[0], g[1]), unit, lines[n], sizeof lines[0]);
+        // Exploded, the parts are drawn apart: the measurement is the assembled model's.
+        if (scene_.explode() != 0) {
+            const size_t at = std::strlen(lines[n]);
+            format(lines[n] + at, sizeof lines[0] - at, "  (assembled)");
+        }
+        ++n;
+    }
     else if (measuring()) format(lines[n++], sizeof lines[0], "MEAS: tap a second face");
     else if (presenter_.annotating().face_line(selection_[0].face, lines[n], sizeof lines[n]), lines[n][0]) ++n; // its PMI
     presenter_.overlay().set_lines(ptrs, n);

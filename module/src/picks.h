@@ -32,6 +32,9 @@ public:
     void set_measuring(bool on);
     // The part chosen (kNone: none; the caller's to check it is one).
     void choose(uint32_t part);
+    // A node of the assembly tree chosen (its parts lit; kNone: none), instead of a part.
+    void choose_node(uint32_t node);
+    uint32_t chosen_node() const { return chosen_node_; }
     // An annotation chosen (a tap on its label, or the call; kNone: none): its faces lit, its
     // text and what it applies to on the panel. A face picked ends it.
     void choose_annotation(uint32_t annotation);
@@ -55,7 +58,7 @@ private:
     Presenter& presenter_;
     bool panel_;
     Selection selection_;
-    uint32_t chosen_ = kNone;
+    uint32_t chosen_ = kNone, chosen_node_ = kNone;
 };
 
 } // namespace facet::module

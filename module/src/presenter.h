@@ -275,6 +275,7 @@ private:
         Section section;
         uint16_t width = 0, height = 0;
         float radius = 0, centre[3] = {0, 0, 0}, unit = 0;
+        float explode = 0; // the scene's exploded view (its placements)
     } kept_for_;
     ViewBasis basis_{};       // what kept_for_'s view gives every transform
     bool keep_ = true;        // set_keep_transforms()

@@ -12,6 +12,7 @@ uint32_t Presenter::instance_at(uint32_t k) const {
 }
 
 Presenter::GroupVerdict Presenter::judge_group(uint32_t g, uint32_t& level) {
+    if (scene_.explode() != 0) return GroupVerdict::Members; // (its box and proxy are the assembled model's)
     const geom::PackIndex& index = scene_.index();
     const pack::Group& group = index.groups()[g];
     const float inv = 1.0f / scene_.unit();

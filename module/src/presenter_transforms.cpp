@@ -30,9 +30,9 @@ const ViewBasis& Presenter::view_basis() {
                               k.section.n[2] == s.n[2] && k.section.offset == s.offset;
     const bool same_placing = same_view(k.view, v) && k.width == display_.width && k.height == display_.height &&
                               k.radius == scene_.radius() && k.unit == scene_.unit() && k.centre[0] == c[0] &&
-                              k.centre[1] == c[1] && k.centre[2] == c[2];
+                              k.centre[1] == c[1] && k.centre[2] == c[2] && k.explode == scene_.explode();
     if (!same_section || !same_placing) {
-        k = {v, s, display_.width, display_.height, scene_.radius(), {c[0], c[1], c[2]}, scene_.unit()};
+        k = {v, s, display_.width, display_.height, scene_.radius(), {c[0], c[1], c[2]}, scene_.unit(), scene_.explode()};
         basis_ = camera_.basis(scene_, display_.width, display_.height);
         if (!same_placing) ++kept_stamp_; // (a section alone changes the cut, which the basis holds)
     }

@@ -41,12 +41,16 @@ Result Scene::open(const geom::Pack& pack) {
     source_unit_mm_ = h.source_unit_mm;
     for (int k = 0; k < 3; ++k) box_min_[k] = h.bbox_min[k], box_max_[k] = h.bbox_max[k];
     if (Result r = annotations_.open(pack); !r.ok()) return r;
+    if (Result r = tree_.open(pack); !r.ok()) return r;
+    explode_ = 0;
     return start();
 }
 
 Result Scene::open(const geom::PackIndex& index, std::span<Block> blocks) {
     loaded_ = false;
     annotations_ = {};
+    if (Result r = tree_.open(index); !r.ok()) return r;
+    explode_ = 0;
     const auto parts = index.parts();
     if (blocks.size() != index.blocks().size() || blocks.empty()) {
         return Result::fail(Status::OutOfRange, "the blocks given are not the index's");
@@ -286,7 +290,8 @@ bool Scene::bound(uint32_t points) {
         const Box& box = b.box;
         if (!box.empty()) {
             for (uint32_t i = 0; i < instances_.size(); ++i) {
-                const pack::Instance& inst = instances_[i];
+                pack::Instance scratch;
+                const pack::Instance& inst = placed(i, scratch);
                 if (inst.shell != b.part || !shown(i)) continue; // a hidden part is not framed
                 for (int corner = 0; corner < 8; ++corner) {
                     const float c[3] = {float(corner & 1 ? box.hi[0] : box.lo[0]) * unit_, float(corner & 2 ? box.hi[1] : box.lo[1]) * unit_,

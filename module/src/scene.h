@@ -9,6 +9,7 @@
 #include "facet/types.h"
 #include "geom/pack.h"
 #include "geom/pmi.h"
+#include "geom/tree.h"
 #include "geom/pack_index.h"
 #include "geom/tessellate.h"
 
@@ -179,6 +180,21 @@ public:
     // A point of the face's boundary (its first sampled edge's first sample, quantized as
     // DrawVertex::p), or null before its edges are sampled.
     const int32_t* boundary_point(uint32_t f) const;
+    // The assembly tree (geom/tree.h; none: a flat list of parts), a whole pack's or an index's.
+    const geom::ProductTree& tree() const { return tree_; }
+    // The exploded view: each instance moved out by `factor` times its offset (the tree's; 0:
+    // assembled, up to kMostExplode). Where an instance is drawn, framed and judged: placed()
+    // (the file's placement, plus the offset); its exact geometry stays the assembled one.
+    static constexpr float kMostExplode = 2.0f;
+    void set_explode(float factor) { explode_ = tree_.count() ? factor : 0; }
+    float explode() const { return explode_; }
+    const pack::Instance& placed(uint32_t instance, pack::Instance& scratch) const {
+        if (explode_ == 0) return instances_[instance];
+        scratch = instances_[instance];
+        const float* d = tree_.explode(instance);
+        for (int k = 0; k < 3; ++k) scratch.m[4 * k + 3] += explode_ * d[k];
+        return scratch;
+    }
     // A whole pack's annotations (PMI: geom/pmi.h); none for a blocked pack.
     const geom::Annotations& annotations() const { return annotations_; }
     const char* model_name() const { return blocked_ ? index_.model_name() : blocks_[0].pack.model_name(); }
@@ -288,6 +304,8 @@ private:
     LeftOut left_out_;
     Block whole_;                 // a whole pack's one block
     geom::Annotations annotations_; // its annotations
+    geom::ProductTree tree_;        // the assembly tree (a whole pack's or the index's)
+    float explode_ = 0;
     std::span<Block> blocks_;     // whole_, or a blocked pack's
     geom::PackIndex index_;       // a blocked pack's
     bool blocked_ = false;

@@ -67,15 +67,18 @@ void Core::tool(Action a) {
     case Action::Parts:
         if (presenter_.overlay().pmi_open()) presenter_.overlay().set_pmi(false); // (the annotations list in its panel: closed)
         else presenter_.overlay().set_parts(!presenter_.overlay().parts_open());
-        presenter_.overlay().set_chosen(picks_.chosen());
+        if (picks_.chosen_node() != kNone) presenter_.overlay().set_chosen_node(picks_.chosen_node());
+        else presenter_.overlay().set_chosen(picks_.chosen());
         presenter_.redraw(); // (the list opened or closed)
         return;
     case Action::NextPart: choose(picks_.chosen() == kNone || picks_.chosen() + 1 >= parts ? 0 : picks_.chosen() + 1); return;
-    case Action::HidePart:
-        if (picks_.chosen() != kNone) (void)show(picks_.chosen(), false); // past kMaxHideable: stays shown (show() says why)
+    case Action::HidePart: // (the part chosen, or the sub-assembly)
+        if (picks_.chosen_node() != kNone) (void)show_node(picks_.chosen_node(), false);
+        else if (picks_.chosen() != kNone) (void)show(picks_.chosen(), false); // past kMaxHideable: stays shown (show() says why)
         return;
     case Action::IsolatePart:
-        if (picks_.chosen() != kNone) (void)isolate(picks_.chosen()); // (likewise)
+        if (picks_.chosen_node() != kNone) (void)isolate_node(picks_.chosen_node());
+        else if (picks_.chosen() != kNone) (void)isolate(picks_.chosen()); // (likewise)
         return;
     case Action::ShowAllParts: show_all(); return;
     default: return;
@@ -90,6 +93,17 @@ bool Core::tap_parts(int16_t x, int16_t y) {
     case Kind::None: return false;
     case Kind::Panel: return true;
     case Kind::Row: choose(h.part == picks_.chosen() ? kNone : h.part); return true; // a second tap lets go
+    case Kind::NodeRow: // a sub-assembly chosen (a second tap lets go)
+        (void)choose_node(h.part == picks_.chosen_node() ? kNone : h.part);
+        o.set_chosen_node(picks_.chosen_node());
+        return true;
+    case Kind::NodeBox: o.toggle_open(h.part); break; // opened or closed
+    case Kind::Fit: // the chosen sub-assembly or part framed (none: the model)
+        if (picks_.chosen_node() != kNone) (void)fit_node(picks_.chosen_node());
+        else if (picks_.chosen() != kNone) (void)fit_part(picks_.chosen());
+        else fit();
+        return true;
+    case Kind::Explode: toggle_explode(); return true;
     case Kind::Box: (void)show(h.part, !scene_.shown(h.part)); return true;     // refused past kMaxHideable
     case Kind::Up: o.scroll(-int32_t(o.part_rows()) + 1); break;
     case Kind::Down: o.scroll(int32_t(o.part_rows()) - 1); break;

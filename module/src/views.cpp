@@ -14,7 +14,7 @@ void Core::bound(bool sampled) {
     else scene_.fit_bounds(false);
 }
 
-void Core::glide_to(const module::View& v, uint32_t instance, uint32_t face) {
+void Core::glide_to(const module::View& v, uint32_t instance, uint32_t face, uint32_t instances) {
     if (!scene_.loaded()) return;
     framer_.stop(); // a glide frames its own end view
     glide_.begin(v);
@@ -23,7 +23,7 @@ void Core::glide_to(const module::View& v, uint32_t instance, uint32_t face) {
     if (sampled) {
         // A face is framed to fill less: it is seen among its neighbours.
         framer_.start(config_.display.width, config_.display.height, presenter_.overlay().taken(), instance, face,
-                      face == kNone ? module::Framer::kFill : 0.6f);
+                      face == kNone ? module::Framer::kFill : 0.6f, instances);
     }
 }
 

@@ -25,7 +25,7 @@ constexpr Spec kSpec[] = {
     {'i', Action::PanUp}, {'k', Action::PanDown}, {'f', Action::Fit}, {'[', Action::Coarser}, {']', Action::Finer},
     {'g', Action::NextDetail}, {'1', Action::ViewFront}, {'2', Action::ViewBack}, {'3', Action::ViewRight},
     {'4', Action::ViewLeft}, {'7', Action::ViewTop}, {'8', Action::ViewBottom}, {'0', Action::ViewIso},
-    {'5', Action::Projection}, {'m', Action::NextDisplayMode}, {'t', Action::TangentEdges}, {'r', Action::Annotations}, {'c', Action::Section}, {',', Action::SectionIn},
+    {'5', Action::Projection}, {'m', Action::NextDisplayMode}, {'t', Action::TangentEdges}, {'r', Action::Annotations}, {'e', Action::Explode}, {'c', Action::Section}, {',', Action::SectionIn},
     {'.', Action::SectionOut}, {'p', Action::Parts}, {'n', Action::NextPart}, {'x', Action::HidePart},
     {'o', Action::IsolatePart}, {'u', Action::ShowAllParts}, {'b', Action::Models}, {'h', Action::Help}, {'?', Action::Help},
     {KeyLeft, Action::TurnLeft}, {KeyRight, Action::TurnRight}, {KeyUp, Action::TiltUp}, {KeyDown, Action::TiltDown},
@@ -55,7 +55,7 @@ TEST(Controls, EachKeyDoesWhatTheDocsSayAndEveryActionIsReachable) {
         reachable.insert(int(b.action));
     }
     for (Action a : kToolbarOnly) reachable.insert(int(a));
-    for (int a = int(Action::None) + 1; a <= int(Action::Annotations); ++a) {
+    for (int a = int(Action::None) + 1; a <= int(Action::Explode); ++a) {
         EXPECT_TRUE(reachable.count(a)) << "action " << a << " has neither a key nor a toolbar button";
     }
     EXPECT_EQ(c.key('%').kind, Kind::None);

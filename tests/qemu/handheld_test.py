@@ -88,7 +88,7 @@ def main():
     # See-through on an assembly: a part chosen in the list drawn solid, the others a screen door.
     afpk = os.path.join(args.work, 'assembly.fpk')
     subprocess.run([args.packer, args.assembly, '-o', afpk, '--quiet'], check=True, capture_output=True, env=env)
-    problems += session(args, env, afpk, 'assembly-board', 'assembly-sim', see_through, ['see-through'])
+    problems += session(args, env, afpk, 'assembly-board', 'assembly-sim', see_through, ['tree', 'see-through', 'exploded', 'exploded-more'])
     # An AP242 part's PMI: drawn over it, the annotations list, one chosen, a kind hidden.
     pfpk = os.path.join(args.work, 'pmi.fpk')
     subprocess.run([args.packer, args.pmi_model, '-o', pfpk, '--quiet'], check=True, capture_output=True, env=env)

@@ -25,10 +25,12 @@
 #include "geom/library.h"
 #include "geom/pack.h"
 #include "geom/pmi.h"
+#include "geom/tree.h"
 #include "core/format.h"
 #include "file_io.h"
 #include "occt_to_pack.h"
 #include "reference.h"
+#include "assembly_tree.h"
 #include "pack_blocks.h"
 #include "proxies.h"
 #include "pack_io.h"
@@ -199,6 +201,18 @@ int check(const char* path) {
         if (*pack.instance_name(i)) std::printf(" as \"%s\"", packer::printable(pack.instance_name(i)).c_str());
         std::printf("\n");
     }
+    // The assembly tree: each sub-assembly, indented by its depth, with its instances.
+    geom::ProductTree tree;
+    if (const Result r = tree.open(pack); !r.ok()) {
+        char text[160];
+        describe(r, text, sizeof text);
+        return die(std::string(path) + ": " + text);
+    }
+    for (uint32_t n = 0; n < tree.count(); ++n) {
+        std::printf("  %*snode %u \"%s\"", int(2 * tree.depth(n)), "", n, packer::printable(tree.name(n)).c_str());
+        if (*tree.occurrence(n)) std::printf(" as \"%s\"", packer::printable(tree.occurrence(n)).c_str());
+        std::printf(": instances %u-%u\n", tree[n].first_instance, tree[n].first_instance + tree[n].instance_count - 1);
+    }
     // The annotations (PMI): each one's kind, text and faces.
     for (uint32_t i = 0; i < pmi.count(); ++i) {
         const pack::Annotation& a = pmi[i];
@@ -308,9 +322,12 @@ int run(int argc, char** argv) {
     packer::Stats stats;
     packer::Packer packer(writer, model.colours, stats);
     uint32_t count = 0;
+    std::vector<uint32_t> instance_nodes; // each instance's node of the assembly tree
     for (const packer::Part& part : model.parts) {
         try {
+            const uint32_t before = stats.instances;
             packer.add_occurrence(part.shape, part.closed, part.name, part.instance);
+            if (stats.instances > before) instance_nodes.push_back(part.node);
         } catch (const Standard_Failure& f) {
             return die(std::string(in) + ": Open CASCADE failed on a part: " + f.GetMessageString());
         }
@@ -332,6 +349,12 @@ int run(int argc, char** argv) {
     }
     std::vector<uint8_t> pack = writer.finish();
     uint32_t faces_missed = 0;
+    if (!model.nodes.empty() && !instance_nodes.empty()) { // the assembly tree, over the instances as packed
+        geom::Pack opened;
+        if (const Result r = opened.open(pack.data(), uint32_t(pack.size())); !r.ok()) return die("the pack written does not read back");
+        if (!packer::set_tree(model.nodes, instance_nodes, opened, packer::part_boxes(packer.prototypes), writer, error)) return die(error);
+        pack = writer.finish();
+    }
     if (!model.pmi.notes.empty()) {
         // The annotations' faces found among those packed (the pack as written so far).
         geom::Pack opened;

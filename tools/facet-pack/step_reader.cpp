@@ -2,6 +2,8 @@
 
 #include "step_checks.h"
 
+#include "geom/tree_format.h"
+
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeSolid.hxx>
 #include <BRepBuilderAPI_Sewing.hxx>
@@ -195,7 +197,7 @@ size_t close_sheets(std::vector<Part>& parts) {
         if (shells == 0 || !make.IsDone()) return 0;
         TopoDS_Solid solid = make.Solid();
         BRepLib::OrientClosedSolid(solid);
-        Part whole{solid.Located(first.shape.Location()), true, first.name, first.instance};
+        Part whole{solid.Located(first.shape.Location()), true, first.name, first.instance, first.node};
         std::vector<Part> kept;
         for (Part& p : parts)
             if (p.shape.ShapeType() == TopAbs_SOLID) kept.push_back(std::move(p));
@@ -254,20 +256,24 @@ std::string label_name(const TDF_Label& label) {
 struct Named {
     gp_Trsf placement;
     std::string name, instance;
+    uint32_t node; // the sub-assembly it is in (StepModel::nodes), or UINT32_MAX
 };
 using NameMap = std::multimap<const void*, Named>; // by TShape
 
+// An assembly becomes a node of the tree (under `node`), its components walked in its order.
 void walk(const Handle(XCAFDoc_ShapeTool)& shapes, const TDF_Label& label, const TopLoc_Location& at,
-          const std::string& instance, NameMap& names, int depth) {
-    if (depth > 32) return; // a malformed file's cycle
+          const std::string& instance, NameMap& names, int depth, std::vector<TreeNode>& nodes, uint32_t node) {
+    if (depth > int(pack::kMaxTreeDepth)) return; // a malformed file's cycle (and deeper than a pack's tree)
     if (XCAFDoc_ShapeTool::IsAssembly(label)) {
+        const uint32_t self = uint32_t(nodes.size());
+        nodes.push_back({node, label_name(label), instance});
         TDF_LabelSequence components;
         XCAFDoc_ShapeTool::GetComponents(label, components);
         for (int i = 1; i <= components.Length(); ++i) {
             TDF_Label part;
             if (!XCAFDoc_ShapeTool::GetReferredShape(components.Value(i), part)) continue;
             walk(shapes, part, at * XCAFDoc_ShapeTool::GetLocation(components.Value(i)), label_name(components.Value(i)), names,
-                 depth + 1);
+                 depth + 1, nodes, self);
         }
         return;
     }
@@ -277,7 +283,7 @@ void walk(const Handle(XCAFDoc_ShapeTool)& shapes, const TDF_Label& label, const
     const std::string name = label_name(label);
     for (TopAbs_ShapeEnum kind : {TopAbs_SOLID, TopAbs_SHELL, TopAbs_FACE}) {
         for (TopExp_Explorer x(placed, kind); x.More(); x.Next()) {
-            names.insert({x.Current().TShape().get(), {x.Current().Location().Transformation(), name, instance}});
+            names.insert({x.Current().TShape().get(), {x.Current().Location().Transformation(), name, instance, node}});
         }
     }
 }
@@ -298,6 +304,20 @@ void name_part(const NameMap& names, Part& p) {
     }
     p.name = best->second.name;
     p.instance = best->second.instance;
+    p.node = best->second.node;
+}
+
+// One root for the tree: the top assembly when it is the only root and holds every part; else
+// a node for the model (its name) over the top assemblies and the parts in none.
+void root_the_tree(StepModel& model) {
+    if (model.nodes.empty()) return;
+    uint32_t tops = 0;
+    for (const TreeNode& n : model.nodes) tops += n.parent == UINT32_MAX;
+    const bool orphans = std::any_of(model.parts.begin(), model.parts.end(), [](const Part& p) { return p.node == UINT32_MAX; });
+    if (tops == 1 && !orphans) return;
+    for (TreeNode& n : model.nodes) n.parent = n.parent == UINT32_MAX ? 0 : n.parent + 1;
+    model.nodes.insert(model.nodes.begin(), TreeNode{UINT32_MAX, model.name, ""});
+    for (Part& p : model.parts) p.node = p.node == UINT32_MAX ? 0 : p.node + 1;
 }
 
 
@@ -378,7 +398,7 @@ bool read_step(const std::string& in, StepModel& model, std::string& error, bool
         shapes->GetFreeShapes(roots);
         for (int r = 1; r <= roots.Length(); ++r) {
             top.push_back(shapes->GetShape(roots.Value(r)));
-            walk(shapes, roots.Value(r), XCAFDoc_ShapeTool::GetLocation(roots.Value(r)), "", names, 0);
+            walk(shapes, roots.Value(r), XCAFDoc_ShapeTool::GetLocation(roots.Value(r)), "", names, 0, model.nodes, UINT32_MAX);
         }
         if (roots.Length() == 1) model.name = label_name(roots.Value(1));
         account_faces(reader.ChangeReader(), top, model);
@@ -470,6 +490,10 @@ bool read_step(const std::string& in, StepModel& model, std::string& error, bool
                            " bound a volume: sewn into one closed solid\n";
         for (Part& p : raw) model.parts.push_back(std::move(p));
     }
+    root_the_tree(model);
+    // The parts in the tree's depth-first order (each node's parts, then its sub-assemblies'):
+    // every node's parts one run (in the file's order within a node).
+    std::stable_sort(model.parts.begin(), model.parts.end(), [](const Part& a, const Part& b) { return a.node < b.node; });
     return true;
 }
 

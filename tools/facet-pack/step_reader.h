@@ -15,6 +15,15 @@ struct Part {
     bool closed;        // a solid whose faces share every edge (after healing and sewing)
     std::string name;     // the part (product) that holds it, from the file ("" if unnamed)
     std::string instance; // its occurrence in the assembly, when the file names it
+    uint32_t node = UINT32_MAX; // the deepest sub-assembly (StepModel::nodes) it is in; none: not in an assembly
+};
+
+// A sub-assembly of the product structure (the file's NEXT_ASSEMBLY_USAGE_OCCURRENCEs, as the
+// XCAF tree holds them), in depth-first order: node 0 the top product.
+struct TreeNode {
+    uint32_t parent;        // an earlier node; UINT32_MAX for node 0
+    std::string name;       // its product's
+    std::string occurrence; // its occurrence's in its parent, when the file names it
 };
 
 struct StepModel {
@@ -33,6 +42,7 @@ struct StepModel {
     std::string name;                    // the model's: its top product's (or the file's stem)
     std::string notes;                   // how the file was read when it was out of the ordinary (no product, no unit)
     Pmi pmi;                             // its PMI (AP242), as Open CASCADE reads it
+    std::vector<TreeNode> nodes;         // its assembly tree (none: a part, or no product structure)
 };
 
 // The length unit to assume when the file gives none (a file with no unit context).

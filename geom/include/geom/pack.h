@@ -40,6 +40,7 @@ public:
     std::span<const pack::Colour> colours() const { return colours_; }
     // Names from the STEP file (pack_format.h): "" when the pack has none.
     const char* model_name() const { return names_.empty() ? "" : names_.data(); }
+    std::span<const char> names() const { return names_; } // the pool (checked: its last name ends in a 0 byte)
     const char* shell_name(uint32_t s) const { return name_at(shell_names_, s); }
     const char* instance_name(uint32_t i) const { return name_at(instance_names_, i); }
     // Whether edge e's two faces meet tangentially (SmoothEdges; false when the pack says nothing).

@@ -61,6 +61,7 @@ public:
     void parts_box(float lo[3], float hi[3]) const;
     // Names from the STEP file: "" when the file has none.
     const char* model_name() const { return names_.empty() ? "" : names_.data(); }
+    std::span<const char> names() const { return names_; } // the pool
     const char* part_name(uint32_t p) const { return name_at(part_names_, p); }
     const char* instance_name(uint32_t i) const { return name_at(instance_names_, i); }
 

@@ -221,6 +221,7 @@ typedef enum {
     FACET_ACTION_NEXT_VIEW, FACET_ACTION_MEASURE, FACET_ACTION_HELP, FACET_ACTION_SECTION, FACET_ACTION_SECTION_IN,
     FACET_ACTION_SECTION_OUT, FACET_ACTION_PARTS, FACET_ACTION_NEXT_PART, FACET_ACTION_HIDE_PART, FACET_ACTION_ISOLATE_PART,
     FACET_ACTION_SHOW_ALL_PARTS, FACET_ACTION_MODELS, FACET_ACTION_TANGENT_EDGES, FACET_ACTION_ANNOTATIONS,
+    FACET_ACTION_EXPLODE,
     FACET_ACTION_WIDE_ = 0x7FFFFFFF
 } facet_action;
 void facet_act(facet_viewer *viewer, facet_action action); /* as if its key were pressed */
@@ -319,6 +320,24 @@ facet_result facet_isolate_part(facet_viewer *viewer, uint32_t index);
 void facet_show_all_parts(facet_viewer *viewer);
 facet_result facet_choose_part(facet_viewer *viewer, uint32_t index); /* FACET_NONE: none */
 uint32_t facet_get_chosen_part(const facet_viewer *viewer);
+
+/* The assembly tree (none: facet_get_node_count 0); node 0 the model, a node's parts a run of
+   the parts list. The exploded view: 0 assembled, up to 2. */
+typedef struct {
+    const char *name, *occurrence;
+    uint32_t parent, first_child, next_sibling; /* FACET_NONE: none */
+    uint32_t first_part, part_count, depth;
+} facet_node;
+uint32_t facet_get_node_count(const facet_viewer *viewer);
+facet_result facet_get_node(const facet_viewer *viewer, uint32_t index, facet_node *out);
+uint32_t facet_get_part_node(const facet_viewer *viewer, uint32_t part);
+facet_result facet_show_node(facet_viewer *viewer, uint32_t index, bool shown);
+facet_result facet_isolate_node(facet_viewer *viewer, uint32_t index);
+facet_result facet_fit_node(facet_viewer *viewer, uint32_t index);
+facet_result facet_choose_node(facet_viewer *viewer, uint32_t index); /* FACET_NONE: none */
+uint32_t facet_get_chosen_node(const facet_viewer *viewer);
+float facet_get_explode(const facet_viewer *viewer);
+facet_result facet_set_explode(facet_viewer *viewer, float factor);
 
 /* Annotations (PMI of an AP242 file): dimensions, geometric tolerances, datums, notes. */
 typedef enum {

@@ -55,7 +55,7 @@
 #define FACET_BYTES_PER_SLIVER 60ul
 #define FACET_BYTES_PER_MESH_VERTEX 20ul
 #define FACET_BYTES_PER_MESH_TRIANGLE 6ul
-#define FACET_WORKSPACE_FIXED_BYTES 345056ul
+#define FACET_WORKSPACE_FIXED_BYTES 345280ul
 
 #define FACET_WORKSPACE_BYTES(faces, edges, samples, face_points, loops, slivers, mesh_vertices, mesh_triangles)      \
     (FACET_WORKSPACE_FIXED_BYTES + (unsigned long)(faces)*FACET_BYTES_PER_FACE +                                        \

@@ -155,6 +155,7 @@ enum class Action : uint8_t {
     Models,          // the models on the device (a library: Viewer::set_library) on/off: tap one to open it
     TangentEdges,    // tangent edges (between faces that meet smoothly: a fillet's sides) shown / hidden
     Annotations,     // the model's annotations (PMI: dimensions, tolerances, datums, notes) shown / hidden
+    Explode,         // the exploded view (an assembly's parts out from their assemblies' centres, its slider) / back
 };
 
 // What an annotation (PMI, Viewer::annotation) is; as bits (annotation_kind_bit), the kinds shown.

@@ -180,6 +180,31 @@ public:
     Result choose_part(uint32_t index); // highlighted (see-through mode: drawn solid); kNone: none (OutOfRange: no such part)
     uint32_t chosen_part() const;
 
+    // The assembly tree: the STEP file's product structure (none for a part, or a file without
+    // one: node_count() 0). Node 0 is the model; a node's parts (its own and its sub-assemblies')
+    // are a run of the parts list, [first_part, first_part + part_count).
+    struct Node {
+        const char *name, *occurrence;             // its product's, its occurrence's ("" when none)
+        uint32_t parent, first_child, next_sibling; // kNone: none (walk a node's children from first_child)
+        uint32_t first_part, part_count;
+        uint32_t depth; // the model's 0
+    };
+    uint32_t node_count() const;
+    Result node(uint32_t index, Node& out) const;  // OutOfRange past the last
+    uint32_t part_node(uint32_t part) const;        // the deepest node a part is in (kNone: no tree)
+    Result show_node(uint32_t index, bool shown);   // every part under it (those past kMaxHideableParts stay shown)
+    Result isolate_node(uint32_t index);            // its parts alone
+    Result fit_node(uint32_t index);                // its parts framed, with a glide
+    Result choose_node(uint32_t index);             // its parts highlighted (kNone: none); a part chosen ends it
+    uint32_t chosen_node() const;
+    // The exploded view: every part moved out from its assembly's centre, and each sub-assembly
+    // from its own assembly's, level by level down the tree (0: assembled; 1: each as far again
+    // as it lies from that centre; at most 2). Drawn, picked and framed where it is drawn;
+    // measured on the assembled model (the panel says so). NotFound: no tree; OutOfRange: a
+    // factor not finite or outside 0-2.
+    float explode() const;
+    Result set_explode(float factor);
+
     // Annotations: the product and manufacturing information of an AP242 file (facet-pack puts
     // it in the pack): dimensions, geometric tolerances, datums and notes, drawn over the model
     // (their presentation's lines, and their text on labels where it is too small to read).
