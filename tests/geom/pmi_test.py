@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """The PMI of the shared AP242 models in their packs (issue 53): facet-pack's annotations are
-the records Open CASCADE reads (tests/geom/pmi_reference.cpp, written apart from facet-pack's
+the records Open CASCADE reads (tests/geom/product_reference.cpp, written apart from facet-pack's
 reader): as many, the same semantic values, the same datum names; several known texts; and
 each annotation's faces are what it says: a diameter's faces are cylinders of its diameter,
 a flatness's faces are planes (facet-measure, the device's own exact geometry).

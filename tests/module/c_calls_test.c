@@ -92,6 +92,7 @@ static void misuse(facet_viewer *loaded) {
     const char *lines[3];
     facet_measurement m;
     facet_annotation an;
+    facet_node node;
     uint32_t ids[4];
 
     memset(&f, 0, sizeof f);
@@ -139,11 +140,14 @@ static void misuse(facet_viewer *loaded) {
     facet_show_all_parts(none);
     CHECK(facet_choose_part(none, 0).status == FACET_OUT_OF_RANGE);
     CHECK(facet_get_chosen_part(none) == FACET_NONE);
-    CHECK(facet_get_annotation_count(none) == 0 && facet_get_annotations_shown(none) == 0);
-    CHECK(facet_get_annotation(none, 0, &an).status == FACET_OUT_OF_RANGE);
+    CHECK(facet_get_node_count(none) == 0 && facet_get_node(none, 0, &node).status == FACET_OUT_OF_RANGE && facet_get_part_node(none, 0) == FACET_NONE &&
+          facet_get_chosen_node(none) == FACET_NONE && facet_get_explode(none) == 0 && facet_show_node(none, 0, 0).status == FACET_OUT_OF_RANGE &&
+          facet_isolate_node(none, 0).status == FACET_OUT_OF_RANGE && facet_fit_node(none, 0).status == FACET_OUT_OF_RANGE &&
+          facet_choose_node(none, 0).status == FACET_OUT_OF_RANGE && facet_set_explode(none, 1).status == FACET_OUT_OF_RANGE);
     facet_show_annotations(none, 0);
-    CHECK(facet_get_face_annotations(none, 0, 0, ids, 4) == 0);
-    CHECK(facet_choose_annotation(none, 0).status == FACET_OUT_OF_RANGE && facet_get_chosen_annotation(none) == FACET_NONE);
+    CHECK(facet_get_annotation_count(none) == 0 && facet_get_annotations_shown(none) == 0 && facet_get_annotation(none, 0, &an).status == FACET_OUT_OF_RANGE &&
+          facet_get_face_annotations(none, 0, 0, ids, 4) == 0 && facet_choose_annotation(none, 0).status == FACET_OUT_OF_RANGE &&
+          facet_get_chosen_annotation(none) == FACET_NONE);
     CHECK(facet_get_section(none).on == 0);
     CHECK(facet_set_section(none, &sec).status == FACET_OUT_OF_RANGE);
     CHECK(facet_section_through(none, 0, 0).status == FACET_OUT_OF_RANGE);
@@ -181,12 +185,15 @@ static void misuse(facet_viewer *loaded) {
     CHECK(facet_get_part(loaded, 5).name != NULL && facet_get_part(loaded, 5).faces == 0);
     CHECK(facet_choose_part(loaded, 5).status == FACET_OUT_OF_RANGE);
     CHECK(facet_get_chosen_part(loaded) == FACET_NONE);
+    /* A part (no assembly tree): no node, nothing to explode. */
+    CHECK(facet_get_node_count(loaded) == 0 && facet_get_node(loaded, 0, NULL).status == FACET_OUT_OF_RANGE && facet_get_part_node(loaded, 0) == FACET_NONE &&
+          facet_get_node(loaded, 0, &node).status == FACET_OUT_OF_RANGE && facet_fit_node(loaded, 0).status == FACET_OUT_OF_RANGE &&
+          facet_set_explode(loaded, 1).status == FACET_NOT_FOUND);
     /* A model without annotations: none to read, list or choose; all kinds shown. */
-    CHECK(facet_get_annotation_count(loaded) == 0 && facet_get_annotations_shown(loaded) == FACET_ALL_ANNOTATION_KINDS);
-    CHECK(facet_get_annotation(loaded, 0, NULL).status == FACET_OUT_OF_RANGE);
-    CHECK(facet_get_annotation(loaded, 0, &an).status == FACET_OUT_OF_RANGE);
-    CHECK(facet_get_face_annotations(loaded, 0, 0, NULL, 4) == 0 && facet_get_face_annotations(loaded, 9, 0, ids, 4) == 0);
-    CHECK(facet_choose_annotation(loaded, 0).status == FACET_OUT_OF_RANGE);
+    CHECK(facet_get_annotation_count(loaded) == 0 && facet_get_annotations_shown(loaded) == FACET_ALL_ANNOTATION_KINDS &&
+          facet_get_annotation(loaded, 0, NULL).status == FACET_OUT_OF_RANGE && facet_get_annotation(loaded, 0, &an).status == FACET_OUT_OF_RANGE &&
+          facet_get_face_annotations(loaded, 0, 0, NULL, 4) == 0 && facet_get_face_annotations(loaded, 9, 0, ids, 4) == 0 &&
+          facet_choose_annotation(loaded, 0).status == FACET_OUT_OF_RANGE);
     CHECK(facet_choose_annotation(loaded, FACET_NONE).status == FACET_OK && facet_get_chosen_annotation(loaded) == FACET_NONE);
     facet_act(loaded, FACET_ACTION_ANNOTATIONS);
     CHECK(facet_get_annotations_shown(loaded) == 0);

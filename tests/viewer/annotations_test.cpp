@@ -4,6 +4,7 @@
 // label chooses it.
 #include "../geom/shapes.h"
 #include "app.h"
+#include "sections.h"
 #include "geom/pack.h"
 #include "geom/pmi.h"
 
@@ -19,38 +20,13 @@ namespace {
 // The plate's faces (tests/geom/shapes.h): its top, and the larger hole's wall (radius 10).
 constexpr uint32_t kTop = 0, kBottom = 1, kHole = 6;
 
-// A pack with the tables as its annotation sections (the sections after the others, the
-// table, the offsets and the CRC made again).
+// A pack with the tables as its annotation sections.
 Bytes with_annotations(const Bytes& pack_bytes, const geom::AnnotationTables& t) {
-    pack::Header h;
-    std::memcpy(&h, pack_bytes.data(), sizeof h);
-    std::vector<pack::SectionEntry> table(h.section_count);
-    std::memcpy(table.data(), pack_bytes.data() + sizeof h, table.size() * sizeof(pack::SectionEntry));
-    const uint32_t old_head = uint32_t(sizeof h + table.size() * sizeof(pack::SectionEntry)), added = 5;
-    const uint32_t shift = added * sizeof(pack::SectionEntry);
-    for (pack::SectionEntry& e : table) e.offset += shift;
-    Bytes body(pack_bytes.begin() + old_head, pack_bytes.end());
-    auto append = [&](pack::PmiSectionId id, const void* data, uint32_t count, uint32_t record_bytes) {
-        table.push_back({uint32_t(id), uint32_t(old_head + shift + body.size()), count, record_bytes});
-        const auto* p = static_cast<const uint8_t*>(data);
-        body.insert(body.end(), p, p + size_t(count) * record_bytes);
-        body.resize((body.size() + 3) & ~size_t(3), 0);
-    };
     std::vector<char> text = t.text;
     text.resize((text.size() + 3) & ~size_t(3), 0);
-    append(pack::PmiSectionId::Annotations, t.records.data(), uint32_t(t.records.size()), sizeof(pack::Annotation));
-    append(pack::PmiSectionId::PmiText, text.data(), uint32_t(text.size()), 1);
-    append(pack::PmiSectionId::PmiFaces, t.faces.data(), uint32_t(t.faces.size()), 4);
-    append(pack::PmiSectionId::PmiPolylines, t.polylines.data(), uint32_t(t.polylines.size()), sizeof(pack::Polyline));
-    append(pack::PmiSectionId::PmiPoints, t.points.data(), uint32_t(t.points.size()), sizeof(pack::PmiPoint));
-    Bytes out(sizeof h);
-    const auto* tb = reinterpret_cast<const uint8_t*>(table.data());
-    out.insert(out.end(), tb, tb + table.size() * sizeof(pack::SectionEntry));
-    out.insert(out.end(), body.begin(), body.end());
-    h.section_count = uint32_t(table.size()), h.total_bytes = uint32_t(out.size());
-    h.crc32 = pack::crc32(out.data() + sizeof h, uint32_t(out.size() - sizeof h));
-    std::memcpy(out.data(), &h, sizeof h);
-    return out;
+    return with_sections(pack_bytes, {section(pack::PmiSectionId::Annotations, t.records), section(pack::PmiSectionId::PmiText, text),
+                                      section(pack::PmiSectionId::PmiFaces, t.faces), section(pack::PmiSectionId::PmiPolylines, t.polylines),
+                                      section(pack::PmiSectionId::PmiPoints, t.points)});
 }
 
 uint32_t add_text(geom::AnnotationTables& t, const char* s) {

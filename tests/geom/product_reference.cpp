@@ -1,9 +1,11 @@
-// The PMI of a STEP file as Open CASCADE reads it, written apart from facet-pack's reader
-// (tools/facet-pack/pmi.cpp), for pmi_test.py to check the pack's annotations against: the
-// counts of dimension, tolerance and datum records, each semantic dimension's type and value,
-// each tolerance's type and value, each datum's name. One JSON object on stdout.
+// A STEP file's product structure and PMI as Open CASCADE reads them, written apart from
+// facet-pack's readers (tools/facet-pack/step_reader.cpp, pmi.cpp), for product_test.py to
+// check a pack against: the assembly tree (each assembly depth-first: its depth, name, and
+// the solids, shells and faces under it, as parts), the counts of dimension, tolerance and
+// datum records, each semantic dimension's type and value, each tolerance's, each datum's name.
+// One JSON object on stdout.
 //
-//   facet-pmi-reference MODEL.step
+//   facet-product-reference MODEL.step
 #include <IFSelect_ReturnStatus.hxx>
 #include <STEPCAFControl_Reader.hxx>
 #include <TCollection_HAsciiString.hxx>
@@ -18,13 +20,51 @@
 #include <XCAFDoc_Dimension.hxx>
 #include <XCAFDoc_DocumentTool.hxx>
 #include <XCAFDoc_GeomTolerance.hxx>
+#include <XCAFDoc_ShapeTool.hxx>
+#include <TDataStd_Name.hxx>
+#include <TopExp_Explorer.hxx>
 
 #include <cstdio>
 #include <string>
 
+namespace {
+
+// Solids, shells outside solids, faces outside shells: what a packer makes parts of.
+int parts_of(const TopoDS_Shape& s) {
+    int n = 0;
+    for (TopExp_Explorer x(s, TopAbs_SOLID); x.More(); x.Next()) ++n;
+    for (TopExp_Explorer x(s, TopAbs_SHELL, TopAbs_SOLID); x.More(); x.Next()) ++n;
+    for (TopExp_Explorer x(s, TopAbs_FACE, TopAbs_SHELL); x.More(); x.Next()) ++n;
+    return n;
+}
+
+std::string quoted(const TDF_Label& l) {
+    Handle(TDataStd_Name) name;
+    std::string s;
+    if (l.FindAttribute(TDataStd_Name::GetID(), name)) s = TCollection_AsciiString(name->Get()).ToCString();
+    std::string out = "\"";
+    for (char c : s) out += c == '"' || c == '\\' ? std::string("\\") + c : std::string(1, c);
+    return out + "\"";
+}
+
+// Each assembly under `label`, depth-first: [depth, name, parts].
+void assemblies(const TDF_Label& label, int depth, std::string& out) {
+    if (!XCAFDoc_ShapeTool::IsAssembly(label) || depth > 32) return;
+    out += std::string(out.empty() ? "" : ", ") + "[" + std::to_string(depth) + ", " + quoted(label) + ", " +
+           std::to_string(parts_of(XCAFDoc_ShapeTool::GetShape(label))) + "]";
+    TDF_LabelSequence components;
+    XCAFDoc_ShapeTool::GetComponents(label, components);
+    for (int i = 1; i <= components.Length(); ++i) {
+        TDF_Label part;
+        if (XCAFDoc_ShapeTool::GetReferredShape(components.Value(i), part)) assemblies(part, depth + 1, out);
+    }
+}
+
+} // namespace
+
 int main(int argc, char** argv) {
     if (argc != 2) {
-        std::fprintf(stderr, "usage: facet-pmi-reference MODEL.step\n");
+        std::fprintf(stderr, "usage: facet-product-reference MODEL.step\n");
         return 2;
     }
     Handle(XCAFApp_Application) app = XCAFApp_Application::GetApplication();
@@ -34,7 +74,7 @@ int main(int argc, char** argv) {
     reader.SetGDTMode(true);
     reader.SetViewMode(true);
     if (reader.ReadFile(argv[1]) != IFSelect_RetDone || !reader.Transfer(doc)) {
-        std::fprintf(stderr, "facet-pmi-reference: %s: not read\n", argv[1]);
+        std::fprintf(stderr, "facet-product-reference: %s: not read\n", argv[1]);
         return 1;
     }
     const Handle(XCAFDoc_DimTolTool) tool = XCAFDoc_DocumentTool::DimTolTool(doc->Main());
@@ -67,7 +107,12 @@ int main(int argc, char** argv) {
         const Handle(XCAFDimTolObjects_DatumObject) o = a->GetObject();
         names += std::string(names.empty() ? "" : ", ") + "\"" + (o->GetName().IsNull() ? "" : o->GetName()->ToCString()) + "\"";
     }
-    std::printf("{\"dimension_labels\": %d, \"tolerances\": %d, \"datums\": %d, \"semantic_dimensions\": [%s], "
+    std::string tree;
+    TDF_LabelSequence roots;
+    XCAFDoc_DocumentTool::ShapeTool(doc->Main())->GetFreeShapes(roots);
+    for (int r = 1; r <= roots.Length(); ++r) assemblies(roots.Value(r), 0, tree);
+    std::printf("{\"roots\": %d, \"assemblies\": [%s], ", roots.Length(), tree.c_str());
+    std::printf("\"dimension_labels\": %d, \"tolerances\": %d, \"datums\": %d, \"semantic_dimensions\": [%s], "
                 "\"tolerance_values\": [%s], \"datum_names\": [%s]}\n",
                 dims.Length(), tols.Length(), datums.Length(), dimensions.c_str(), tolerances.c_str(), names.c_str());
     return 0;
