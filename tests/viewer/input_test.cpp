@@ -248,10 +248,11 @@ TEST(Viewer, ThePartsListHidesShowsAndIsolatesByTouch) {
     // ISOL with the first part chosen: the second stays hidden, ALL brings it back.
     tap(60, row1 - module::Overlay::kRow);
     EXPECT_EQ(app.v->chosen_part(), 0u);
-    tap(panel.width / 2, panel.y + panel.height - 5);
+    // (The footer: HIDE, ISOL, ALL, FIT, EXPL, a fifth of the panel each.)
+    tap(panel.width * 3 / 10, panel.y + panel.height - 5);
     EXPECT_TRUE(app.v->part(0).shown);
     EXPECT_FALSE(app.v->part(1).shown);
-    tap(panel.width - 5, panel.y + panel.height - 5);
+    tap(panel.width / 2, panel.y + panel.height - 5);
     EXPECT_TRUE(app.v->part(1).shown);
     tap(60, row1 - module::Overlay::kRow); // a second tap on the chosen name lets it go
     EXPECT_EQ(app.v->chosen_part(), ~0u);
