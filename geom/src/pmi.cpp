@@ -113,7 +113,8 @@ Result Annotations::check(uint32_t pack_faces) {
         if (!run_inside(a.first_polyline, a.polyline_count, polylines_.size()) || !run_inside(a.first_coarse, a.coarse_count, polylines_.size())) {
             return fail("its polylines lie outside PmiPolylines", A, i);
         }
-        if ((a.polyline_count > 0) != (a.coarse_count > 0)) return fail("fine polylines without coarse ones, or coarse without fine", A, i);
+        if (a.polyline_count != a.coarse_count) return fail("not as many coarse polylines as fine ones", A, i);
+        if (a.outline_count > a.polyline_count) return fail("an outline of more polylines than it has", A, i);
         if (a.polyline_count > 0 && !(a.radius > 0)) return fail("polylines without a sphere that holds them", A, i);
         // Presented: by its own polylines, or by an earlier annotation's (drawn_by), not both.
         const bool presented = (a.flags & pack::kPresented) != 0;

@@ -94,13 +94,17 @@ uint32_t Annotating::polylines(render::Rasterizer& raster, const Frame& f, uint3
     // polylines (the coarse ones where a pixel spans more than they stray) and its label.
     int32_t centre[3], radius;
     if (!quantize(a.centre, f.unit, centre) || !to_units(a.radius, f.unit, radius)) return 1;
-    if (t.visible(centre, radius + 1, f.screen)) size_label(f, i, a.stroke); // (its label may reach into the band)
-    if (!t.visible(centre, radius + 1, f.rows)) return 1;
+    if (!t.visible(centre, radius + 1, f.screen)) return 1;
+    // Its strokes too small to read: its outline alone, and its text on a label.
+    const bool unreadable = too_small(f, i);
+    if (unreadable && ((a.flags & pack::kSemantic) || a.kind == uint8_t(pack::AnnotationKind::Note))) candidate(t, f.unit, i);
+    if (!t.visible(centre, radius + 1, f.rows)) return 1; // (its label may reach into the band)
     const int32_t across = across_screen(f, a.centre, a.radius);
     const bool coarse = across >= 0 && float(across) < f.coarse_below * a.radius;
     const Rgb565 colour = i == chosen_ ? kChosenColour : faces_away(i, t, f.unit) ? faded(kKindColour[a.kind]) : kKindColour[a.kind];
     uint32_t work = 1;
-    for (const pack::Polyline& l : coarse ? pmi_->coarse_polylines(i) : pmi_->polylines(i)) {
+    const auto lines = (coarse ? pmi_->coarse_polylines(i) : pmi_->polylines(i)).first(unreadable ? a.outline_count : a.polyline_count);
+    for (const pack::Polyline& l : lines) {
         Projected prev{}, cur{};
         bool have = false;
         for (const pack::PmiPoint& p : pmi_->points(l)) {
@@ -131,12 +135,9 @@ int32_t Annotating::across_screen(const Frame& f, const float centre_mm[3], floa
     return size >= int64_t(kMost) * over ? kMost : render::divide(size, r);
 }
 
-void Annotating::size_label(const Frame& f, uint32_t i, float stroke_mm) {
-    // Its label, where its stroked text is too small to read (its strokes under
-    // kReadablePixels on the screen, at its anchor).
-    if (!((*pmi_)[i].flags & pack::kSemantic)) return;
-    const int32_t across = across_screen(f, (*pmi_)[i].anchor, stroke_mm / 2);
-    if (across >= 0 && across < kReadablePixels * render::subpixel::kPerPixel) candidate(f.t, f.unit, i);
+bool Annotating::too_small(const Frame& f, uint32_t i) const {
+    const int32_t across = across_screen(f, (*pmi_)[i].anchor, (*pmi_)[i].stroke / 2); // (its strokes at its anchor)
+    return across >= 0 && across < kReadablePixels * render::subpixel::kPerPixel;
 }
 
 uint32_t Annotating::draw(render::Rasterizer& raster, const Transform& t, Rows rows, Rows screen, float mesh_unit, float diagonal_mm,

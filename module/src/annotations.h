@@ -21,7 +21,7 @@ public:
     // are left out as covered ones are, and counted (labels_left_out()).
     static constexpr uint32_t kMaxLabels = 96;
     // A presentation whose strokes (pack::Annotation::stroke, about its text's height) draw
-    // under this many pixels has its text on a label too.
+    // under this many pixels has its outline drawn alone and its text on a label.
     static constexpr int32_t kReadablePixels = 9;
 
     void set(const geom::Annotations* pmi) {
@@ -93,8 +93,9 @@ private:
     uint32_t polylines(render::Rasterizer& raster, const Frame& f, uint32_t i);
     // A sphere's size across on the screen (sub-pixels; -1: behind the eye or too far off).
     static int32_t across_screen(const Frame& f, const float centre_mm[3], float radius_mm);
-    // Its label wanted where its strokes are under kReadablePixels on the screen.
-    void size_label(const Frame& f, uint32_t i, float stroke_mm);
+    // Whether its strokes draw under kReadablePixels: too small to read (its label stands for
+    // its text, its outline alone is drawn).
+    bool too_small(const Frame& f, uint32_t i) const;
     void candidate(const Transform& t, const UnitScale& unit, uint32_t i); // its label wanted at its anchor
     void labels(render::Rasterizer& raster);                              // the candidates placed and drawn
     static bool quantize(const float p_mm[3], const UnitScale& s, int32_t q[3]);

@@ -56,7 +56,7 @@ geom::AnnotationTables plate_pmi() {
     d.value = 20, d.lower = -0.1f, d.upper = 0.1f;
     const float anchor[3] = {85, 80, 40}, normal[3] = {0, 0, 1}, centre[3] = {73.5f, 58.5f, 25};
     std::memcpy(d.anchor, anchor, 12), std::memcpy(d.normal, normal, 12), std::memcpy(d.centre, centre, 12);
-    d.radius = 52, d.stroke = 80;
+    d.radius = 52, d.stroke = 80, d.outline_count = 1;
     t.records.push_back(d);
     pack::Annotation f{};
     f.kind = uint8_t(pack::AnnotationKind::Tolerance), f.type = uint8_t(pack::ToleranceType::Flatness);
@@ -143,6 +143,7 @@ TEST(Annotations, TheReaderTakesThemAndRefusesEachWayARecordLies) {
         {"presented without polylines", [](geom::AnnotationTables& t) { t.records[1].flags |= pack::kPresented; }},
         {"polylines, not presented", [](geom::AnnotationTables& t) { t.records[0].flags &= uint8_t(~pack::kPresented); }},
         {"fine polylines without coarse", [](geom::AnnotationTables& t) { t.records[0].coarse_count = 0; }},
+        {"an outline past its polylines", [](geom::AnnotationTables& t) { t.records[0].outline_count = 2; }},
         {"a plane's normal not of unit length", [](geom::AnnotationTables& t) { t.records[0].normal[2] = 3; }},
         {"a value not finite", [](geom::AnnotationTables& t) { t.records[0].value = INFINITY; }},
         {"a text without its 0", [](geom::AnnotationTables& t) {

@@ -144,8 +144,22 @@ void presentation(const Object& o, double scale, const Tolerances& tolerance, Pm
         extents.push_back(std::sqrt(b.SquareExtent()));
     }
     if (!extents.empty()) {
-        std::nth_element(extents.begin(), extents.begin() + extents.size() / 2, extents.end());
-        n.record.stroke = float(extents[extents.size() / 2]);
+        std::vector<double> sorted = extents;
+        std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+        n.record.stroke = float(sorted[sorted.size() / 2]);
+        // Its outline first: the polylines longer than kOutlineStrokes strokes (leaders, frames,
+        // a datum's triangle), then its text's strokes, which a view too far to read them leaves out.
+        std::vector<size_t> order(raw.size());
+        for (size_t k = 0; k < order.size(); ++k) order[k] = k;
+        const double longer = pack::kOutlineStrokes * double(n.record.stroke);
+        std::stable_partition(order.begin(), order.end(), [&](size_t k) { return extents[k] > longer; });
+        n.record.outline_count = uint32_t(std::count_if(extents.begin(), extents.end(), [&](double e) { return e > longer; }));
+        auto reorder = [&](std::vector<std::vector<gp_Pnt>>& lines) {
+            std::vector<std::vector<gp_Pnt>> out;
+            for (size_t k : order) out.push_back(std::move(lines[k]));
+            lines = std::move(out);
+        };
+        reorder(n.polylines), reorder(n.coarse);
     }
     if (!o.GetPresentationName().IsNull()) n.presentation = o.GetPresentationName()->ToCString();
     if (!n.polylines.empty()) n.record.flags |= pack::kPresented;
@@ -350,6 +364,7 @@ geom::AnnotationTables pmi_tables(const Pmi& pmi, const geom::Pack& pack, const 
         };
         add(n.polylines, r.first_polyline, r.polyline_count);
         add(n.coarse, r.first_coarse, r.coarse_count);
+        if (r.drawn_by != pack::kNoIndex) r.outline_count = 0; // (it has no polylines of its own)
         t.records.push_back(r);
     }
     return t;

@@ -82,8 +82,12 @@ struct Annotation {
     // The size of its strokes (mm: the median extent of its polylines; 0: none): about its
     // text's height, what says whether a view can read it.
     float stroke;
+    // Its first polylines (fine and coarse alike) are its outline: leaders, frames, symbols'
+    // shapes, each longer than kOutlineStrokes strokes; the rest its text's strokes.
+    uint32_t outline_count;
 };
-static_assert(sizeof(Annotation) == 92, "pack::Annotation is 92 bytes");
+static_assert(sizeof(Annotation) == 96, "pack::Annotation is 96 bytes");
+constexpr float kOutlineStrokes = 3;
 
 // The coarse polylines stray from the presentation by up to this part of the pack's box
 // diagonal (a pixel of a view that fits the model on a screen some 500 pixels across): a view
