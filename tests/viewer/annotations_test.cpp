@@ -108,6 +108,15 @@ uint32_t lit_pixels(const std::vector<Rgb565>& screen) {
     return n;
 }
 
+// The annotated plate on the handheld's 480 x 272 screen, with facet's own interface, at rest.
+bool open_on_the_handheld(App& app) {
+    app.w = 480, app.h = 272, app.lines = 272;
+    app.interface = Interface::Full;
+    if (!app.create().ok() || !app.load(annotated_plate()).ok()) return false;
+    app.run();
+    return true;
+}
+
 } // namespace
 
 TEST(Annotations, TheReaderTakesThemAndRefusesEachWayARecordLies) {
@@ -232,11 +241,7 @@ TEST(Annotations, DrawnOverTheModelAndTheModelAloneWhenHidden) {
 
 TEST(Annotations, AFaceListsItsAnnotationsAndAChosenOneLightsItsFaces) {
     App app;
-    app.w = 480, app.h = 272, app.lines = 272;
-    app.interface = Interface::Full;
-    ASSERT_TRUE(app.create().ok());
-    ASSERT_TRUE(app.load(annotated_plate()).ok());
-    app.run();
+    ASSERT_TRUE(open_on_the_handheld(app));
     uint32_t ids[4] = {};
     EXPECT_EQ(app.v->face_annotations(0, kHole, ids, 4), 1u);
     EXPECT_EQ(ids[0], 0u);
@@ -293,11 +298,7 @@ TEST(Annotations, AFaceListsItsAnnotationsAndAChosenOneLightsItsFaces) {
 
 TEST(Annotations, TheListShowsEachKindAndTapsChooseAndHide) {
     App app;
-    app.w = 480, app.h = 272, app.lines = 272;
-    app.interface = Interface::Full;
-    ASSERT_TRUE(app.create().ok());
-    ASSERT_TRUE(app.load(annotated_plate()).ok());
-    app.run();
+    ASSERT_TRUE(open_on_the_handheld(app));
     const module::Overlay& o = static_cast<Core*>(app.v)->overlay();
     EXPECT_TRUE(o.has_pmi());
     app.v->act(Action::Parts);
