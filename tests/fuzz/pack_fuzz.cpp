@@ -1,10 +1,12 @@
 // libFuzzer target for the pack file reader: any bytes in, plain, LZMA, deflated or blocked.
 // unpack_in_place(), PackIndex::open(), PackDecoder and open() must return a status and, when
 // they say Ok, every record the pack (or each block's pack) exposes must be readable within the
-// buffer.
+// buffer; so must the annotations' and the assembly tree's (geom/pmi.h, geom/tree.h).
 #include "geom/pack.h"
 #include "geom/pack_file.h"
 #include "geom/pack_index.h"
+#include "geom/pmi.h"
+#include "geom/tree.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -14,6 +16,17 @@
 using namespace facet;
 
 namespace {
+
+// The assembly tree's every record and name (a pack's or an index's).
+template <typename Source>
+uint64_t tree_sum(const Source& source) {
+    geom::ProductTree tree;
+    uint64_t sum = 0;
+    if (!tree.open(source).ok()) return 0;
+    for (uint32_t n = 0; n < tree.count(); ++n) sum += std::strlen(tree.name(n)) + std::strlen(tree.occurrence(n)) + tree.depth(n);
+    for (uint32_t i = 0; i < source.instances().size(); ++i) sum += tree.node_of(i) + (tree.explode(i)[0] != 0);
+    return sum;
+}
 
 uint64_t touch(const geom::Pack& pack) {
     uint64_t sum = 0;
@@ -30,6 +43,17 @@ uint64_t touch(const geom::Pack& pack) {
             }
         }
     }
+    geom::Annotations pmi;
+    if (pmi.open(pack).ok()) {
+        for (uint32_t i = 0; i < pmi.count(); ++i) {
+            sum += std::strlen(pmi.text(i));
+            for (uint32_t f : pmi.faces(i)) sum += pack.faces()[f].surface;
+            for (const auto& l : pmi.polylines(i))
+                for (const auto& p : pmi.points(l)) sum += p.p[0] != 0;
+            sum += pmi.coarse_polylines(i).size();
+        }
+    }
+    sum += tree_sum(pack);
     return sum;
 }
 
@@ -39,7 +63,7 @@ int blocked(const uint8_t* data, size_t size) {
     std::memcpy(file.data(), data, size);
     geom::PackIndex index;
     if (!index.open(file.data(), uint32_t(size)).ok()) return 0;
-    uint64_t sum = index.parts().size() + index.instances().size();
+    uint64_t sum = index.parts().size() + index.instances().size() + tree_sum(index);
     static geom::LzmaProbs probs;
     for (uint32_t b = 0; b < index.blocks().size(); ++b) {
         const uint32_t bytes = std::min<uint32_t>(index.blocks()[b].pack_bytes, 1u << 20);
