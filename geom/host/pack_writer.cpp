@@ -87,6 +87,7 @@ void PackWriter::name_instance(uint32_t instance, const std::string& name) {
 namespace {
 template <typename T>
 void append_section(std::vector<uint8_t>& out, std::vector<SectionEntry>& table, auto id, const std::vector<T>& records) {
+    out.resize((out.size() + 3) & ~size_t(3), 0); // (every section 4-byte aligned: a 6-byte record's may end between)
     const uint32_t offset = uint32_t(out.size());
     const size_t bytes = records.size() * sizeof(T);
     out.resize(out.size() + bytes);
@@ -161,6 +162,7 @@ std::vector<uint8_t> PackWriter::finish() const {
         append_section(out, table, pack::PmiSectionId::PmiPolylines, a.polylines);
         append_section(out, table, pack::PmiSectionId::PmiPoints, a.points);
     }
+    out.resize((out.size() + 3) & ~size_t(3), 0); // (the pack a whole number of words)
     const uint32_t sections = uint32_t(table.size()), head = uint32_t(sizeof(Header) + sections * sizeof(SectionEntry));
     for (SectionEntry& e : table) e.offset += head;
     out.insert(out.begin(), head, 0);

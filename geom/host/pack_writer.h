@@ -19,7 +19,7 @@ struct AnnotationTables {
     std::vector<char> text; // 0-ended texts (finish() pads the pool to 4 bytes)
     std::vector<uint32_t> faces;
     std::vector<pack::Polyline> polylines;
-    std::vector<pack::PmiPoint> points;
+    std::vector<pack::PmiStep> points;
 };
 
 // The frame at (x, y, z) along the world's axes (right-handed): an elementary surface's record's head.

@@ -18,7 +18,7 @@ constexpr SectionShape kSections[] = {
     {PmiSectionId::PmiText, "section PmiText byte", 1},
     {PmiSectionId::PmiFaces, "section PmiFaces record", 4},
     {PmiSectionId::PmiPolylines, "section PmiPolylines record", sizeof(pack::Polyline)},
-    {PmiSectionId::PmiPoints, "section PmiPoints record", sizeof(pack::PmiPoint)},
+    {PmiSectionId::PmiPoints, "section PmiPoints record", sizeof(pack::PmiStep)},
 };
 constexpr uint32_t kFirst = uint32_t(PmiSectionId::Annotations);
 
@@ -77,7 +77,7 @@ Result Annotations::open(const Pack& pack) {
         case PmiSectionId::PmiText: text_ = {reinterpret_cast<const char*>(at), s.count}; break;
         case PmiSectionId::PmiFaces: faces_ = {reinterpret_cast<const uint32_t*>(at), s.count}; break;
         case PmiSectionId::PmiPolylines: polylines_ = {reinterpret_cast<const pack::Polyline*>(at), s.count}; break;
-        case PmiSectionId::PmiPoints: points_ = {reinterpret_cast<const pack::PmiPoint*>(at), s.count}; break;
+        case PmiSectionId::PmiPoints: points_ = {reinterpret_cast<const pack::PmiStep*>(at), s.count}; break;
         }
     }
     return check(uint32_t(pack.faces().size()));
@@ -91,18 +91,30 @@ Result Annotations::check(uint32_t pack_faces) {
     }
     for (uint32_t i = 0; i < faces_.size(); ++i)
         if (faces_[i] >= pack_faces) return fail("a face index is out of range", PmiSectionId::PmiFaces, i);
-    for (uint32_t i = 0; i < points_.size(); ++i)
-        for (float f : points_[i].p)
-            if (!finite(f)) return fail("a point is NaN, infinite or beyond +-1e8", PmiSectionId::PmiPoints, i);
+    // Each polyline's points follow the one before's, and add up to points in its sphere.
+    uint32_t next_point = 0;
     for (uint32_t i = 0; i < polylines_.size(); ++i) {
         const pack::Polyline& l = polylines_[i];
-        if (l.point_count < 2 || !run_inside(l.first_point, l.point_count, points_.size())) {
-            return fail("a polyline's points are fewer than 2 or lie outside PmiPoints", PmiSectionId::PmiPolylines, i);
+        if (l.point_count < 2 || l.first_point != next_point || !run_inside(l.first_point, l.point_count, points_.size())) {
+            return fail("a polyline's points are fewer than 2, not after the one before's, or outside PmiPoints", PmiSectionId::PmiPolylines, i);
+        }
+        next_point += l.point_count;
+        int32_t at[3] = {0, 0, 0};
+        for (uint32_t k = l.first_point; k < l.first_point + l.point_count; ++k) {
+            for (int a = 0; a < 3; ++a) {
+                at[a] += points_[k].d[a];
+                if (at[a] < -pack::kStepUnits || at[a] > pack::kStepUnits) return fail("a point lies outside its annotation's sphere", PmiSectionId::PmiPoints, k);
+            }
         }
     }
     constexpr PmiSectionId A = PmiSectionId::Annotations;
+    uint32_t next_polyline = 0; // (each annotation's polylines after the one before's: each polyline one annotation's)
     for (uint32_t i = 0; i < records_.size(); ++i) {
         const pack::Annotation& a = records_[i];
+        if (a.first_polyline != next_polyline || a.first_coarse != a.first_polyline + a.polyline_count) {
+            return fail("its polylines do not follow the annotation before's, its coarse ones its fine ones", A, i);
+        }
+        next_polyline = a.first_coarse + a.coarse_count;
         if (a.kind >= pack::kAnnotationKinds || a.type >= types_of(pack::AnnotationKind(a.kind))) return fail("unknown kind or type", A, i);
         if ((a.flags & ~pack::kAnnotationFlags) || a.material > uint8_t(pack::Material::Least)) return fail("unknown flags or material", A, i);
         // The text starts a string (at the pool's start or after a 0 byte) that ends in time.

@@ -104,11 +104,17 @@ uint32_t Annotating::polylines(render::Rasterizer& raster, const Frame& f, uint3
     const Rgb565 colour = i == chosen_ ? kChosenColour : faces_away(i, t, f.unit) ? faded(kKindColour[a.kind]) : kKindColour[a.kind];
     uint32_t work = 1;
     const auto lines = (coarse ? pmi_->coarse_polylines(i) : pmi_->polylines(i)).first(unreadable ? a.outline_count : a.polyline_count);
+    // Its points: its sphere's centre plus the steps so far, times the step (mesh units, Q16).
+    const int64_t step16 = (int64_t(radius) << 16) / pack::kStepUnits;
     for (const pack::Polyline& l : lines) {
         Projected prev{}, cur{};
         bool have = false;
-        for (const pack::PmiPoint& p : pmi_->points(l)) {
-            const bool in = project(p.p, t, f.unit, cur);
+        int32_t at[3] = {0, 0, 0};
+        for (const pack::PmiStep& s : pmi_->points(l)) {
+            int32_t q[3];
+            for (int k = 0; k < 3; ++k) at[k] += s.d[k], q[k] = centre[k] + int32_t((at[k] * step16) >> 16);
+            t.project(q, cur);
+            const bool in = !cur.out;
             if (in) {
                 cur.s.z = 0; // over the model, whatever lies nearer
                 if (have) (void)raster.line(prev.s, cur.s, colour, 0);

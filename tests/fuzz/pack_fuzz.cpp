@@ -49,7 +49,7 @@ uint64_t touch(const geom::Pack& pack) {
             sum += std::strlen(pmi.text(i));
             for (uint32_t f : pmi.faces(i)) sum += pack.faces()[f].surface;
             for (const auto& l : pmi.polylines(i))
-                for (const auto& p : pmi.points(l)) sum += p.p[0] != 0;
+                for (const auto& p : pmi.points(l)) sum += p.d[0] != 0;
             sum += pmi.coarse_polylines(i).size();
         }
     }

@@ -48,15 +48,24 @@ geom::AnnotationTables plate_pmi() {
     t.faces.push_back(kHole);
     const float leader[3][3] = {{37, 37, 10}, {60, 80, 40}, {110, 80, 40}};
     d.first_polyline = 0, d.polyline_count = 1, d.first_coarse = 1, d.coarse_count = 1;
+    const float centre[3] = {73.5f, 58.5f, 25}, radius = 52;
     for (int copy = 0; copy < 2; ++copy) { // (fine and coarse alike: three points are all there is)
         t.polylines.push_back({uint32_t(t.points.size()), 3});
-        for (const auto& p : leader) t.points.push_back({{p[0], p[1], p[2]}});
+        int32_t before[3] = {0, 0, 0}; // each point's step from the one before, in radius / kStepUnits
+        for (const auto& p : leader) {
+            pack::PmiStep step;
+            for (int k = 0; k < 3; ++k) {
+                const int32_t q = int32_t(std::lround((p[k] - centre[k]) / radius * float(pack::kStepUnits)));
+                step.d[k] = int16_t(q - before[k]), before[k] = q;
+            }
+            t.points.push_back(step);
+        }
     }
     d.drawn_by = pack::kNoIndex;
     d.value = 20, d.lower = -0.1f, d.upper = 0.1f;
-    const float anchor[3] = {85, 80, 40}, normal[3] = {0, 0, 1}, centre[3] = {73.5f, 58.5f, 25};
+    const float anchor[3] = {85, 80, 40}, normal[3] = {0, 0, 1};
     std::memcpy(d.anchor, anchor, 12), std::memcpy(d.normal, normal, 12), std::memcpy(d.centre, centre, 12);
-    d.radius = 52, d.stroke = 80, d.outline_count = 1;
+    d.radius = radius, d.stroke = 80, d.outline_count = 1;
     t.records.push_back(d);
     pack::Annotation f{};
     f.kind = uint8_t(pack::AnnotationKind::Tolerance), f.type = uint8_t(pack::ToleranceType::Flatness);
@@ -144,8 +153,9 @@ TEST(Annotations, TheReaderTakesThemAndRefusesEachWayARecordLies) {
         {"drawn by one after it", [](geom::AnnotationTables& t) { t.records[0].drawn_by = 2; }},
         {"a polyline of one point", [](geom::AnnotationTables& t) { t.polylines[0].point_count = 1; }},
         {"points past PmiPoints", [](geom::AnnotationTables& t) { t.polylines[1].first_point = 5; }},
-        {"a point not finite", [](geom::AnnotationTables& t) { t.points[1].p[2] = NAN; }},
-        {"a point beyond 1e8", [](geom::AnnotationTables& t) { t.points[1].p[0] = 2e8f; }},
+        {"a point outside its sphere", [](geom::AnnotationTables& t) { t.points[1].d[2] = 32000; }}, // (its first point 4,726 below the centre)
+        {"a polyline's points before the one before's", [](geom::AnnotationTables& t) { t.polylines[1].first_point = 0; }},
+        {"polylines not after the annotation before's", [](geom::AnnotationTables& t) { t.records[1].first_polyline = t.records[1].first_coarse = 0; }},
         {"an unknown kind", [](geom::AnnotationTables& t) { t.records[0].kind = 4; }},
         {"an unknown tolerance type", [](geom::AnnotationTables& t) { t.records[1].type = 16; }},
         {"unknown flags", [](geom::AnnotationTables& t) { t.records[1].flags |= 16; }},

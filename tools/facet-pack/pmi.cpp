@@ -52,6 +52,22 @@ void add_faces(const TDF_LabelSequence& labels, double scale, std::vector<FaceKe
 }
 
 
+// A polyline's points as steps in its annotation's sphere (pack::PmiStep): the first its offset
+// from the centre, each next one its step from the one before, in radius / kStepUnits.
+void steps(const std::vector<gp_Pnt>& line, const pack::Annotation& r, std::vector<pack::PmiStep>& out) {
+    const double scale = double(pack::kStepUnits) / double(r.radius);
+    int32_t before[3] = {0, 0, 0};
+    for (const gp_Pnt& p : line) {
+        const double xyz[3] = {p.X(), p.Y(), p.Z()};
+        pack::PmiStep s;
+        for (int a = 0; a < 3; ++a) {
+            const int32_t q = int32_t(std::clamp<double>(std::lround((xyz[a] - double(r.centre[a])) * scale), -pack::kStepUnits, pack::kStepUnits));
+            s.d[a] = int16_t(q - before[a]), before[a] = q;
+        }
+        out.push_back(s);
+    }
+}
+
 constexpr double kPolylineTolerance = 1e-4; // of the model's diagonal
 struct Tolerances {
     double fine, coarse; // mm
@@ -357,7 +373,7 @@ geom::AnnotationTables pmi_tables(const Pmi& pmi, const geom::Pack& pack, const 
             if (r.drawn_by == pack::kNoIndex) { // (one drawn by another keeps none of its own)
                 for (const auto& l : lines) {
                     t.polylines.push_back({uint32_t(t.points.size()), uint32_t(l.size())});
-                    for (const gp_Pnt& p : l) t.points.push_back({{float(p.X()), float(p.Y()), float(p.Z())}});
+                    steps(l, r, t.points);
                 }
             }
             count = uint32_t(t.polylines.size()) - first;

@@ -32,7 +32,8 @@ public:
     std::span<const pack::Polyline> coarse_polylines(uint32_t i) const {
         return polylines_.subspan(records_[i].first_coarse, records_[i].coarse_count);
     }
-    std::span<const pack::PmiPoint> points(const pack::Polyline& l) const { return points_.subspan(l.first_point, l.point_count); }
+    // A polyline's steps (pack::PmiStep: its points in its annotation's sphere).
+    std::span<const pack::PmiStep> points(const pack::Polyline& l) const { return points_.subspan(l.first_point, l.point_count); }
     // Whether annotation i applies to face f (a pack face index).
     bool applies_to(uint32_t i, uint32_t f) const;
 
@@ -44,7 +45,7 @@ private:
     std::span<const char> text_;
     std::span<const uint32_t> faces_;
     std::span<const pack::Polyline> polylines_;
-    std::span<const pack::PmiPoint> points_;
+    std::span<const pack::PmiStep> points_;
 };
 
 const char* annotation_kind_name(pack::AnnotationKind kind); // "dimension", "tolerance", "datum", "note"

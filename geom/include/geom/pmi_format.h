@@ -16,7 +16,7 @@ enum class PmiSectionId : uint32_t {
     PmiText = 27,      // UTF-8 texts, each ended by a 0 byte, padded with 0s to 4 bytes
     PmiFaces = 28,     // uint32 face indices (the pack's Faces), each annotation's run
     PmiPolylines = 29, // Polyline records, each annotation's run
-    PmiPoints = 30,    // PmiPoint records (mm, the model's coordinates), each polyline's run
+    PmiPoints = 30,    // PmiStep records, each polyline's run (its annotation's sphere in 2 x kStepUnits steps)
 };
 
 // What an annotation is; its `type` says which within the kind.
@@ -95,15 +95,23 @@ constexpr float kOutlineStrokes = 3;
 // within a ten-thousandth of it).
 constexpr float kCoarsePolylines = 2e-3f;
 
+// An annotation's polylines follow one another in PmiPolylines (its fine ones, then its coarse
+// ones), and their points in PmiPoints.
 struct Polyline {
     uint32_t first_point, point_count; // a run of PmiPoints, at least 2
 };
 static_assert(sizeof(Polyline) == 8, "pack::Polyline is 8 bytes");
 
-struct PmiPoint {
-    float p[3];
+// A point of a polyline in its annotation's sphere: the first, its offset from the centre, each
+// next one its step from the one before, in units of radius / kStepUnits (a 300 mm leader:
+// 0.02 mm); a point is where the steps up to it add up to, at most kStepUnits from the centre on
+// each axis. Six bytes where three floats take twelve, and steps compress: nist_ctc_02_ap242's
+// annotations take half the pack bytes floats would.
+struct PmiStep {
+    int16_t d[3];
 };
-static_assert(sizeof(PmiPoint) == 12, "pack::PmiPoint is 12 bytes");
+static_assert(sizeof(PmiStep) == 6, "pack::PmiStep is 6 bytes");
+constexpr int32_t kStepUnits = 16383;
 
 // Bounds a reader holds a pack's annotations to.
 constexpr uint32_t kMaxAnnotations = 1u << 16;
