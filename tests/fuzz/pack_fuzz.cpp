@@ -22,7 +22,7 @@ template <typename Source>
 uint64_t tree_sum(const Source& source) {
     geom::ProductTree tree;
     uint64_t sum = 0;
-    if (!tree.open(source).ok()) return 0;
+    if (!tree.open(source).ok() || !tree.count()) return 0; // (none: no node, no instance's node)
     for (uint32_t n = 0; n < tree.count(); ++n) sum += std::strlen(tree.name(n)) + std::strlen(tree.occurrence(n)) + tree.depth(n);
     for (uint32_t i = 0; i < source.instances().size(); ++i) sum += tree.node_of(i) + (tree.explode(i)[0] != 0);
     return sum;
