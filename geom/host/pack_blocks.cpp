@@ -1,5 +1,6 @@
 #include "pack_blocks.h"
 
+#include "geom/pmi.h"
 #include "geom/tree.h"
 
 #include "pack_io.h"
@@ -138,6 +139,28 @@ std::vector<uint8_t> stored(const std::vector<uint8_t>& pack, BlockStore store) 
     return {};
 }
 
+// A pack's (or an index's) annotation sections as tables (geom/pmi_format.h), read as they lie:
+// the reader has checked them (Annotations::open) before they are copied.
+AnnotationTables annotation_tables(const uint8_t* base, const SectionEntry* table, uint32_t sections) {
+    AnnotationTables t;
+    auto take = [&](auto& out, const SectionEntry& s) {
+        using T = typename std::remove_reference_t<decltype(out)>::value_type;
+        out.resize(s.count);
+        if (s.count) std::memcpy(out.data(), base + s.offset, size_t(s.count) * sizeof(T));
+    };
+    for (uint32_t i = 0; i < sections; ++i) {
+        switch (pack::PmiSectionId(table[i].id)) {
+        case pack::PmiSectionId::Annotations: take(t.records, table[i]); break;
+        case pack::PmiSectionId::PmiText: take(t.text, table[i]); break;
+        case pack::PmiSectionId::PmiFaces: take(t.faces, table[i]); break;
+        case pack::PmiSectionId::PmiPolylines: take(t.polylines, table[i]); break;
+        case pack::PmiSectionId::PmiPoints: take(t.points, table[i]); break;
+        default: break;
+        }
+    }
+    return t;
+}
+
 template <typename T>
 void append(std::vector<uint8_t>& out, std::vector<SectionEntry>& table, auto id, const std::vector<T>& records) {
     out.resize((out.size() + 3) & ~size_t(3), 0);
@@ -274,12 +297,23 @@ bool make_blocked(const Pack& whole, const std::vector<PartBox>& given, const Bl
     const bool proxied = levels >= 1 && levels <= pack::kMostProxyLevels && options.proxies->size() == levels * shells;
     std::vector<ProxyGroup> near; // groups of instances near each other (groups.h)
     if (proxied && !options.group_caps.empty() && !make_groups(whole, boxes, *options.proxies, levels, options.group_caps, near, error)) return false;
-    ProductTree tree; // (the whole pack's assembly tree, into the index as it is)
+    ProductTree tree; // (the whole pack's assembly tree and annotations, into the index as they are)
+    Annotations pmi;
     if (const Result r = tree.open(whole); !r.ok()) {
         error = std::string("the pack's assembly tree: ") + r.what;
         return false;
     }
-    const uint32_t kSections = 6 + (whole.needs() ? 1 : 0) + (proxied ? 3 : 0) + (near.empty() ? 0 : 4) + (tree.count() ? 2 : 0);
+    if (const Result r = pmi.open(whole); !r.ok()) {
+        error = std::string("the pack's annotations: ") + r.what;
+        return false;
+    }
+    const pack::Header& wh = whole.header();
+    const AnnotationTables notes = pmi.count() ? annotation_tables(reinterpret_cast<const uint8_t*>(&wh),
+                                                                   reinterpret_cast<const SectionEntry*>(reinterpret_cast<const uint8_t*>(&wh) + sizeof wh),
+                                                                   wh.section_count)
+                                               : AnnotationTables{};
+    const uint32_t kSections = 6 + (whole.needs() ? 1 : 0) + (proxied ? 3 : 0) + (near.empty() ? 0 : 4) + (tree.count() ? 2 : 0) +
+                               (notes.records.empty() ? 0 : 5);
     out.assign(sizeof(IndexHeader) + kSections * sizeof(SectionEntry), 0);
     std::vector<SectionEntry> table;
     append(out, table, IndexSectionId::Blocks, blocks); // offsets filled in below
@@ -318,6 +352,13 @@ bool make_blocked(const Pack& whole, const std::vector<PartBox>& given, const Bl
     if (tree.count()) {
         append(out, table, pack::TreeSectionId::Nodes, nodes);
         append(out, table, pack::TreeSectionId::InstanceNodes, instance_nodes);
+    }
+    if (!notes.records.empty()) { // (their faces numbered as the whole pack's: the blocks' parts are its shells in order)
+        append(out, table, pack::PmiSectionId::Annotations, notes.records);
+        append(out, table, pack::PmiSectionId::PmiText, notes.text);
+        append(out, table, pack::PmiSectionId::PmiFaces, notes.faces);
+        append(out, table, pack::PmiSectionId::PmiPolylines, notes.polylines);
+        append(out, table, pack::PmiSectionId::PmiPoints, notes.points);
     }
     if (whole.needs()) append(out, table, IndexSectionId::Needs, std::vector<pack::Needs>{*whole.needs()});
     if (proxied) { // each part's proxies, their corners quantized over its box
@@ -447,6 +488,17 @@ bool join_blocked(std::span<const uint8_t> file, std::vector<uint8_t>& whole, st
         describe(r, text, sizeof text);
         error = text;
         return false;
+    }
+    Annotations pmi; // (the index's annotations, into the whole pack)
+    if (const Result r = pmi.open(index); !r.ok()) {
+        describe(r, text, sizeof text);
+        error = text;
+        return false;
+    }
+    if (pmi.count()) {
+        const pack::IndexHeader& ih = index.header();
+        const auto* base = reinterpret_cast<const uint8_t*>(&ih);
+        w.set_annotations(annotation_tables(base, reinterpret_cast<const SectionEntry*>(base + sizeof ih), ih.section_count));
     }
     if (tree.count()) {
         std::vector<pack::Node> nodes;

@@ -1,5 +1,7 @@
 #include "geom/pmi.h"
 
+#include "geom/pack_index.h"
+
 #include <cmath>
 #include <cstring>
 
@@ -57,18 +59,33 @@ Result Annotations::open(const Pack& pack) {
     *this = Annotations{};
     if (pack.faces().empty()) return {}; // (no pack open)
     const pack::Header& h = pack.header();
-    const uint8_t* base = reinterpret_cast<const uint8_t*>(&h);
-    const auto* table = reinterpret_cast<const pack::SectionEntry*>(base + sizeof(pack::Header));
-    const uint64_t table_end = sizeof(pack::Header) + uint64_t(h.section_count) * sizeof(pack::SectionEntry);
+    const auto* base = reinterpret_cast<const uint8_t*>(&h);
+    return read(base, h.total_bytes, reinterpret_cast<const pack::SectionEntry*>(base + sizeof h), h.section_count,
+                uint32_t(pack.faces().size()));
+}
+
+Result Annotations::open(const PackIndex& index) {
+    *this = Annotations{};
+    if (index.parts().empty()) return {}; // (no index open)
+    uint64_t faces = 0;
+    for (const pack::Part& p : index.parts()) faces += p.face_count;
+    const pack::IndexHeader& h = index.header();
+    const auto* base = reinterpret_cast<const uint8_t*>(&h);
+    return read(base, h.index_bytes, reinterpret_cast<const pack::SectionEntry*>(base + sizeof h), h.section_count,
+                faces > UINT32_MAX ? UINT32_MAX : uint32_t(faces));
+}
+
+Result Annotations::read(const uint8_t* base, uint32_t bytes, const pack::SectionEntry* table, uint32_t sections, uint32_t faces) {
+    const uint64_t table_end = uint64_t(reinterpret_cast<const uint8_t*>(table + sections) - base);
     uint32_t seen = 0;
-    for (uint32_t i = 0; i < h.section_count; ++i) { // (the table's bounds: Pack::open checked them)
+    for (uint32_t i = 0; i < sections; ++i) { // (the table's bounds: the pack's or index's open() checked them)
         const pack::SectionEntry& s = table[i];
         if (s.id < kFirst || s.id >= kFirst + std::size(kSections)) continue;
         const SectionShape& shape = kSections[s.id - kFirst];
         if (seen & (1u << (s.id - kFirst))) return fail("section appears twice", shape.id, 0);
         seen |= 1u << (s.id - kFirst);
         if (s.record_bytes != shape.record_bytes) return fail("record size does not match this reader", shape.id, 0);
-        if ((s.offset & 3) || s.offset < table_end || uint64_t(s.offset) + uint64_t(s.count) * s.record_bytes > h.total_bytes) {
+        if ((s.offset & 3) || s.offset < table_end || uint64_t(s.offset) + uint64_t(s.count) * s.record_bytes > bytes) {
             return fail("section lies outside the pack or is not 4-byte aligned", shape.id, 0);
         }
         const uint8_t* at = base + s.offset;
@@ -80,7 +97,7 @@ Result Annotations::open(const Pack& pack) {
         case PmiSectionId::PmiPoints: points_ = {reinterpret_cast<const pack::PmiStep*>(at), s.count}; break;
         }
     }
-    return check(uint32_t(pack.faces().size()));
+    return check(faces);
 }
 
 Result Annotations::check(uint32_t pack_faces) {

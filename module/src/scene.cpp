@@ -48,7 +48,7 @@ Result Scene::open(const geom::Pack& pack) {
 
 Result Scene::open(const geom::PackIndex& index, std::span<Block> blocks) {
     loaded_ = false;
-    annotations_ = {};
+    if (Result r = annotations_.open(index); !r.ok()) return r;
     if (Result r = tree_.open(index); !r.ok()) return r;
     explode_ = 0;
     const auto parts = index.parts();

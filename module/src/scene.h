@@ -195,7 +195,7 @@ public:
         for (int k = 0; k < 3; ++k) scratch.m[4 * k + 3] += explode_ * d[k];
         return scratch;
     }
-    // A whole pack's annotations (PMI: geom/pmi.h); none for a blocked pack.
+    // The model's annotations (PMI: geom/pmi.h), a whole pack's or an index's.
     const geom::Annotations& annotations() const { return annotations_; }
     const char* model_name() const { return blocked_ ? index_.model_name() : blocks_[0].pack.model_name(); }
     const char* part_name(uint32_t s) const;
@@ -303,7 +303,7 @@ private:
     Memory mem_{};
     LeftOut left_out_;
     Block whole_;                 // a whole pack's one block
-    geom::Annotations annotations_; // its annotations
+    geom::Annotations annotations_; // the model's annotations (a whole pack's or the index's)
     geom::ProductTree tree_;        // the assembly tree (a whole pack's or the index's)
     float explode_ = 0;
     std::span<Block> blocks_;     // whole_, or a blocked pack's

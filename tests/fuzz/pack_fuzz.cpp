@@ -64,6 +64,9 @@ int blocked(const uint8_t* data, size_t size) {
     geom::PackIndex index;
     if (!index.open(file.data(), uint32_t(size)).ok()) return 0;
     uint64_t sum = index.parts().size() + index.instances().size() + tree_sum(index);
+    geom::Annotations pmi; // (an index carries a blocked model's)
+    if (pmi.open(index).ok())
+        for (uint32_t i = 0; i < pmi.count(); ++i) sum += std::strlen(pmi.text(i)) + pmi.faces(i).size() + pmi.polylines(i).size();
     static geom::LzmaProbs probs;
     for (uint32_t b = 0; b < index.blocks().size(); ++b) {
         const uint32_t bytes = std::min<uint32_t>(index.blocks()[b].pack_bytes, 1u << 20);

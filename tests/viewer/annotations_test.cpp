@@ -7,6 +7,7 @@
 #include "sections.h"
 #include "geom/pack.h"
 #include "geom/pmi.h"
+#include "pack_blocks.h"
 
 #include <cmath>
 #include <random>
@@ -349,4 +350,44 @@ TEST(Annotations, TheListShowsEachKindAndTapsChooseAndHide) {
     app.v->act(Action::Parts);
     app.tap(tab_x, p.y + kRow / 2);
     EXPECT_TRUE(o.parts_open() && !o.pmi_open());
+}
+
+TEST(Annotations, ABlockedPackCarriesThemInItsIndex) {
+    // Three plates, a block each, the annotations on the first one's faces.
+    const Bytes plate = plate_with_holes();
+    std::vector<geom::Pack> plates(3);
+    for (auto& p : plates) ASSERT_TRUE(p.open(plate.data(), uint32_t(plate.size())).ok());
+    const Bytes whole_bytes = with_annotations(geom::combine_packs(plates, 150.0f), plate_pmi());
+    std::vector<uint32_t> words(whole_bytes.size() / 4 + 1);
+    std::memcpy(words.data(), whole_bytes.data(), whole_bytes.size());
+    geom::Pack whole;
+    ASSERT_TRUE(whole.open(words.data(), uint32_t(whole_bytes.size())).ok());
+    Bytes file;
+    std::string error;
+    ASSERT_TRUE(geom::make_blocked(whole, {}, {1, geom::BlockStore::Lzma}, file, error)) << error;
+    App app;
+    ASSERT_TRUE(app.create().ok());
+    ASSERT_TRUE(app.load(file).ok());
+    app.run();
+    EXPECT_EQ(static_cast<Core*>(app.v)->scene().index().blocks().size(), 3u) << "a block a plate";
+    ASSERT_EQ(app.v->annotation_count(), 3u);
+    Viewer::Annotation a{};
+    ASSERT_TRUE(app.v->annotation(0, a).ok());
+    EXPECT_STREQ(a.text, "\u230020 \u00B10.1");
+    ASSERT_EQ(a.face_count, 1u);
+    EXPECT_EQ(a.faces[0], kHole) << "faces numbered as the whole pack's";
+    uint32_t ids[2];
+    EXPECT_EQ(app.v->face_annotations(0, kTop, ids, 2), 1u);
+    // Joined again (facet-pack --check, the host's tools), the same annotations.
+    Bytes joined;
+    ASSERT_TRUE(geom::join_blocked(file, joined, error)) << error;
+    geom::Annotations back, before;
+    ASSERT_TRUE(open_annotations(joined, back).ok());
+    ASSERT_TRUE(before.open(whole).ok());
+    ASSERT_EQ(back.count(), before.count());
+    for (uint32_t i = 0; i < back.count(); ++i) {
+        EXPECT_STREQ(back.text(i), before.text(i));
+        EXPECT_TRUE(std::equal(back.faces(i).begin(), back.faces(i).end(), before.faces(i).begin(), before.faces(i).end()));
+        EXPECT_EQ(back.polylines(i).size(), before.polylines(i).size());
+    }
 }

@@ -411,10 +411,7 @@ int run(int argc, char** argv) {
         }
         blocks = uint32_t(index.blocks().size());
         if (blocks == 1) whole = true; // one block: the whole pack as it is, without an index
-        if (blocks > 1 && !model.pmi.notes.empty()) { // (a blocked pack does not carry annotations)
-            whole = true;
-            model.notes += "its PMI is carried by a whole pack: written whole, not in " + std::to_string(blocks) + " blocks\n";
-        }
+
     }
     if (whole) {
         bytes = plain ? pack : (deflated ? geom::deflate_pack(pack) : geom::lzma_pack(pack));

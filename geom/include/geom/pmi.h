@@ -18,9 +18,14 @@
 
 namespace facet::geom {
 
+class PackIndex;
+
 class Annotations {
 public:
     Result open(const Pack& pack);
+    // A blocked pack's: its index carries them (faces numbered across its blocks, as a whole
+    // pack's are: the blocks' parts are the model's in order).
+    Result open(const PackIndex& index);
 
     uint32_t count() const { return uint32_t(records_.size()); }
     const pack::Annotation& operator[](uint32_t i) const { return records_[i]; }
@@ -39,6 +44,7 @@ public:
 
 private:
     Result fail(const char* what, pack::PmiSectionId section, uint32_t index);
+    Result read(const uint8_t* base, uint32_t bytes, const pack::SectionEntry* table, uint32_t sections, uint32_t faces);
     Result check(uint32_t faces);
 
     std::span<const pack::Annotation> records_;
