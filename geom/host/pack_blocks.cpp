@@ -139,26 +139,31 @@ std::vector<uint8_t> stored(const std::vector<uint8_t>& pack, BlockStore store) 
     return {};
 }
 
-// A pack's (or an index's) annotation sections as tables (geom/pmi_format.h), read as they lie:
-// the reader has checked them (Annotations::open) before they are copied.
-AnnotationTables annotation_tables(const uint8_t* base, const SectionEntry* table, uint32_t sections) {
+// A pack's (or an index's) annotation sections as tables (geom/pmi_format.h), copied as they
+// lie: their reader checked them (Annotations::open) first.
+AnnotationTables annotation_tables(const SectionTable& table) {
     AnnotationTables t;
     auto take = [&](auto& out, const SectionEntry& s) {
         using T = typename std::remove_reference_t<decltype(out)>::value_type;
-        out.resize(s.count);
-        if (s.count) std::memcpy(out.data(), base + s.offset, size_t(s.count) * sizeof(T));
+        const std::span<const T> records = table.records<T>(s);
+        out.assign(records.begin(), records.end());
     };
-    for (uint32_t i = 0; i < sections; ++i) {
-        switch (pack::PmiSectionId(table[i].id)) {
-        case pack::PmiSectionId::Annotations: take(t.records, table[i]); break;
-        case pack::PmiSectionId::PmiText: take(t.text, table[i]); break;
-        case pack::PmiSectionId::PmiFaces: take(t.faces, table[i]); break;
-        case pack::PmiSectionId::PmiPolylines: take(t.polylines, table[i]); break;
-        case pack::PmiSectionId::PmiPoints: take(t.points, table[i]); break;
+    for (const SectionEntry& s : table.entries) {
+        switch (pack::PmiSectionId(s.id)) {
+        case pack::PmiSectionId::Annotations: take(t.records, s); break;
+        case pack::PmiSectionId::PmiText: take(t.text, s); break;
+        case pack::PmiSectionId::PmiFaces: take(t.faces, s); break;
+        case pack::PmiSectionId::PmiPolylines: take(t.polylines, s); break;
+        case pack::PmiSectionId::PmiPoints: take(t.points, s); break;
         default: break;
         }
     }
     return t;
+}
+
+// The tree's instances' records as they are (none: no tree).
+std::vector<pack::InstanceNode> instance_nodes(const ProductTree& tree) {
+    return {tree.instance_nodes().begin(), tree.instance_nodes().end()};
 }
 
 template <typename T>
@@ -307,11 +312,7 @@ bool make_blocked(const Pack& whole, const std::vector<PartBox>& given, const Bl
         error = std::string("the pack's annotations: ") + r.what;
         return false;
     }
-    const pack::Header& wh = whole.header();
-    const AnnotationTables notes = pmi.count() ? annotation_tables(reinterpret_cast<const uint8_t*>(&wh),
-                                                                   reinterpret_cast<const SectionEntry*>(reinterpret_cast<const uint8_t*>(&wh) + sizeof wh),
-                                                                   wh.section_count)
-                                               : AnnotationTables{};
+    const AnnotationTables notes = pmi.count() ? annotation_tables(SectionTable::of(whole)) : AnnotationTables{};
     const uint32_t kSections = 6 + (whole.needs() ? 1 : 0) + (proxied ? 3 : 0) + (near.empty() ? 0 : 4) + (tree.count() ? 2 : 0) +
                                (notes.records.empty() ? 0 : 5);
     out.assign(sizeof(IndexHeader) + kSections * sizeof(SectionEntry), 0);
@@ -333,17 +334,11 @@ bool make_blocked(const Pack& whole, const std::vector<PartBox>& given, const Bl
     (void)add(model); // the model's first, even when empty
     for (uint32_t s = 0; s < shells; ++s) part_names[s] = add(whole.shell_name(s));
     for (uint32_t i = 0; i < instances.size(); ++i) instance_names[i] = add(whole.instance_name(i));
-    std::vector<pack::Node> nodes;
-    std::vector<pack::InstanceNode> instance_nodes;
+    std::vector<pack::Node> nodes; // (their names in this pool)
     for (uint32_t n = 0; n < tree.count(); ++n) {
         pack::Node x = tree[n];
         x.name = add(tree.name(n)), x.occurrence = add(tree.occurrence(n));
         nodes.push_back(x);
-    }
-    for (uint32_t i = 0; i < instances.size() && tree.count(); ++i) {
-        pack::InstanceNode in{tree.node_of(i), {}};
-        std::memcpy(in.explode, tree.explode(i), sizeof in.explode);
-        instance_nodes.push_back(in);
     }
     pool.resize((pool.size() + 3) & ~size_t(3), 0);
     append(out, table, IndexSectionId::PartNames, part_names);
@@ -351,7 +346,7 @@ bool make_blocked(const Pack& whole, const std::vector<PartBox>& given, const Bl
     append(out, table, IndexSectionId::Names, pool);
     if (tree.count()) {
         append(out, table, pack::TreeSectionId::Nodes, nodes);
-        append(out, table, pack::TreeSectionId::InstanceNodes, instance_nodes);
+        append(out, table, pack::TreeSectionId::InstanceNodes, instance_nodes(tree));
     }
     if (!notes.records.empty()) { // (their faces numbered as the whole pack's: the blocks' parts are its shells in order)
         append(out, table, pack::PmiSectionId::Annotations, notes.records);
@@ -495,22 +490,12 @@ bool join_blocked(std::span<const uint8_t> file, std::vector<uint8_t>& whole, st
         error = text;
         return false;
     }
-    if (pmi.count()) {
-        const pack::IndexHeader& ih = index.header();
-        const auto* base = reinterpret_cast<const uint8_t*>(&ih);
-        w.set_annotations(annotation_tables(base, reinterpret_cast<const SectionEntry*>(base + sizeof ih), ih.section_count));
-    }
+    if (pmi.count()) w.set_annotations(annotation_tables(SectionTable::of(index)));
     if (tree.count()) {
         std::vector<pack::Node> nodes;
         std::vector<PackWriter::TreeNodeNames> names;
-        std::vector<pack::InstanceNode> instances;
         for (uint32_t n = 0; n < tree.count(); ++n) nodes.push_back(tree[n]), names.push_back({tree.name(n), tree.occurrence(n)});
-        for (uint32_t i = 0; i < index.instances().size(); ++i) {
-            pack::InstanceNode in{tree.node_of(i), {}};
-            std::memcpy(in.explode, tree.explode(i), sizeof in.explode);
-            instances.push_back(in);
-        }
-        w.set_tree(std::move(nodes), std::move(names), std::move(instances));
+        w.set_tree(std::move(nodes), std::move(names), instance_nodes(tree));
     }
     whole = w.finish();
     return true;

@@ -45,13 +45,15 @@ uint32_t PackWriter::add_instance(const Instance& i) { instances_.push_back(i); 
 uint32_t PackWriter::add_colour(Colour c) { colours_.push_back(c); return uint32_t(colours_.size() - 1); }
 
 namespace {
-std::string cut_name(const std::string& name) {
-    if (name.size() <= kMaxNameBytes) return name;
-    size_t n = kMaxNameBytes;
-    while (n > 0 && (uint8_t(name[n]) & 0xC0) == 0x80) --n; // not inside a UTF-8 character
-    return name.substr(0, n);
-}
+std::string cut_name(const std::string& name) { return cut_utf8(name, kMaxNameBytes); }
 } // namespace
+
+std::string cut_utf8(const std::string& text, size_t bytes) {
+    if (text.size() <= bytes) return text;
+    size_t n = bytes;
+    while (n > 0 && (uint8_t(text[n]) & 0xC0) == 0x80) --n; // not inside a UTF-8 character
+    return text.substr(0, n);
+}
 
 uint32_t PackWriter::add_name(const std::string& name) {
     const std::string s = cut_name(name);

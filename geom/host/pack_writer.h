@@ -22,6 +22,9 @@ struct AnnotationTables {
     std::vector<pack::PmiStep> points;
 };
 
+// UTF-8 text cut to at most `bytes`, on a character's boundary (names, annotations' texts).
+std::string cut_utf8(const std::string& text, size_t bytes);
+
 // The frame at (x, y, z) along the world's axes (right-handed): an elementary surface's record's head.
 inline pack::Frame axes_at(float x, float y, float z) { return {{x, y, z}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}}; }
 

@@ -57,44 +57,31 @@ Result Annotations::fail(const char* what, PmiSectionId section, uint32_t index)
 
 Result Annotations::open(const Pack& pack) {
     *this = Annotations{};
-    if (pack.faces().empty()) return {}; // (no pack open)
-    const pack::Header& h = pack.header();
-    const auto* base = reinterpret_cast<const uint8_t*>(&h);
-    return read(base, h.total_bytes, reinterpret_cast<const pack::SectionEntry*>(base + sizeof h), h.section_count,
-                uint32_t(pack.faces().size()));
+    return read(SectionTable::of(pack), uint32_t(pack.faces().size()));
 }
 
 Result Annotations::open(const PackIndex& index) {
     *this = Annotations{};
-    if (index.parts().empty()) return {}; // (no index open)
     uint64_t faces = 0;
     for (const pack::Part& p : index.parts()) faces += p.face_count;
-    const pack::IndexHeader& h = index.header();
-    const auto* base = reinterpret_cast<const uint8_t*>(&h);
-    return read(base, h.index_bytes, reinterpret_cast<const pack::SectionEntry*>(base + sizeof h), h.section_count,
-                faces > UINT32_MAX ? UINT32_MAX : uint32_t(faces));
+    return read(SectionTable::of(index), faces > UINT32_MAX ? UINT32_MAX : uint32_t(faces));
 }
 
-Result Annotations::read(const uint8_t* base, uint32_t bytes, const pack::SectionEntry* table, uint32_t sections, uint32_t faces) {
-    const uint64_t table_end = uint64_t(reinterpret_cast<const uint8_t*>(table + sections) - base);
+Result Annotations::read(const SectionTable& table, uint32_t faces) {
     uint32_t seen = 0;
-    for (uint32_t i = 0; i < sections; ++i) { // (the table's bounds: the pack's or index's open() checked them)
-        const pack::SectionEntry& s = table[i];
+    for (uint32_t i = 0; i < table.entries.size(); ++i) {
+        const pack::SectionEntry& s = table.entries[i];
         if (s.id < kFirst || s.id >= kFirst + std::size(kSections)) continue;
         const SectionShape& shape = kSections[s.id - kFirst];
         if (seen & (1u << (s.id - kFirst))) return fail("section appears twice", shape.id, 0);
         seen |= 1u << (s.id - kFirst);
-        if (s.record_bytes != shape.record_bytes) return fail("record size does not match this reader", shape.id, 0);
-        if ((s.offset & 3) || s.offset < table_end || uint64_t(s.offset) + uint64_t(s.count) * s.record_bytes > bytes) {
-            return fail("section lies outside the pack or is not 4-byte aligned", shape.id, 0);
-        }
-        const uint8_t* at = base + s.offset;
+        if (const char* why = table.problem(s, shape.record_bytes)) return fail(why, shape.id, 0);
         switch (shape.id) {
-        case PmiSectionId::Annotations: records_ = {reinterpret_cast<const pack::Annotation*>(at), s.count}; break;
-        case PmiSectionId::PmiText: text_ = {reinterpret_cast<const char*>(at), s.count}; break;
-        case PmiSectionId::PmiFaces: faces_ = {reinterpret_cast<const uint32_t*>(at), s.count}; break;
-        case PmiSectionId::PmiPolylines: polylines_ = {reinterpret_cast<const pack::Polyline*>(at), s.count}; break;
-        case PmiSectionId::PmiPoints: points_ = {reinterpret_cast<const pack::PmiStep*>(at), s.count}; break;
+        case PmiSectionId::Annotations: records_ = table.records<pack::Annotation>(s); break;
+        case PmiSectionId::PmiText: text_ = table.records<char>(s); break;
+        case PmiSectionId::PmiFaces: faces_ = table.records<uint32_t>(s); break;
+        case PmiSectionId::PmiPolylines: polylines_ = table.records<pack::Polyline>(s); break;
+        case PmiSectionId::PmiPoints: points_ = table.records<pack::PmiStep>(s); break;
         }
     }
     return check(faces);

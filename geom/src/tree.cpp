@@ -27,40 +27,25 @@ bool starts_name(std::span<const char> names, uint32_t at) {
 
 Result ProductTree::open(const Pack& pack) {
     *this = ProductTree{};
-    if (pack.faces().empty()) return {};
-    const pack::Header& h = pack.header();
-    const auto* base = reinterpret_cast<const uint8_t*>(&h);
-    return read(base, h.total_bytes, reinterpret_cast<const pack::SectionEntry*>(base + sizeof h), h.section_count,
-                uint32_t(pack.instances().size()), pack.names(), false);
+    return read(SectionTable::of(pack), uint32_t(pack.instances().size()), pack.names(), false);
 }
 
 Result ProductTree::open(const PackIndex& index) {
     *this = ProductTree{};
-    if (index.instances().empty()) return {};
-    const pack::IndexHeader& h = index.header();
-    const auto* base = reinterpret_cast<const uint8_t*>(&h);
-    return read(base, h.index_bytes, reinterpret_cast<const pack::SectionEntry*>(base + sizeof h), h.section_count,
-                uint32_t(index.instances().size()), index.names(), true);
+    return read(SectionTable::of(index), uint32_t(index.instances().size()), index.names(), true);
 }
 
-Result ProductTree::read(const uint8_t* base, uint32_t bytes, const pack::SectionEntry* table, uint32_t sections, uint32_t instances,
-                         std::span<const char> names, bool index) {
-    const uint64_t table_end = uint64_t(reinterpret_cast<const uint8_t*>(table + sections) - base);
+Result ProductTree::read(const SectionTable& table, uint32_t instances, std::span<const char> names, bool index) {
     bool seen[2] = {};
-    for (uint32_t i = 0; i < sections; ++i) { // (the table's bounds: the pack's or index's open() checked them)
-        const pack::SectionEntry& s = table[i];
+    for (const pack::SectionEntry& s : table.entries) {
         const bool nodes = s.id == uint32_t(TreeSectionId::Nodes);
         if (!nodes && s.id != uint32_t(TreeSectionId::InstanceNodes)) continue;
         const TreeSectionId id = nodes ? TreeSectionId::Nodes : TreeSectionId::InstanceNodes;
         if (seen[!nodes]) return fail("section appears twice", id, 0, index);
         seen[!nodes] = true;
-        const uint32_t record = nodes ? sizeof(pack::Node) : sizeof(pack::InstanceNode);
-        if (s.record_bytes != record) return fail("record size does not match this reader", id, 0, index);
-        if ((s.offset & 3) || s.offset < table_end || uint64_t(s.offset) + uint64_t(s.count) * record > bytes) {
-            return fail("section lies outside the pack or is not 4-byte aligned", id, 0, index);
-        }
-        if (nodes) nodes_ = {reinterpret_cast<const pack::Node*>(base + s.offset), s.count};
-        else instances_ = {reinterpret_cast<const pack::InstanceNode*>(base + s.offset), s.count};
+        if (const char* why = table.problem(s, nodes ? sizeof(pack::Node) : sizeof(pack::InstanceNode))) return fail(why, id, 0, index);
+        if (nodes) nodes_ = table.records<pack::Node>(s);
+        else instances_ = table.records<pack::InstanceNode>(s);
     }
     names_ = names;
     if (Result r = check(instances, names, index); !r.ok()) {

@@ -5,7 +5,6 @@
 #include "render/text.h"
 
 #include <algorithm>
-#include <climits>
 #include <cmath>
 #include <cstring>
 
@@ -17,6 +16,7 @@ namespace {
 constexpr Rgb565 kKindColour[pack::kAnnotationKinds] = {rgb565(20, 70, 190), rgb565(190, 30, 40), rgb565(20, 130, 60),
                                                         rgb565(110, 70, 30)};
 constexpr Rgb565 kChosenColour = rgb565(230, 30, 190);
+constexpr int32_t kMostAcross = 1 << 24; // sub-pixels: a sphere's size on the screen is measured up to it
 constexpr Rgb565 kLabelPaper = rgb565(250, 250, 245), kLabelEdge = rgb565(150, 150, 160);
 
 // Halfway to the background's light grey: a presentation seen from behind.
@@ -99,7 +99,8 @@ uint32_t Annotating::polylines(render::Rasterizer& raster, const Frame& f, uint3
     const bool unreadable = too_small(f, i);
     if (unreadable && ((a.flags & pack::kSemantic) || a.kind == uint8_t(pack::AnnotationKind::Note))) candidate(t, f.unit, i);
     if (!t.visible(centre, radius + 1, f.rows)) return 1; // (its label may reach into the band)
-    const int32_t across = across_screen(f, a.centre, a.radius);
+    Projected at_centre;
+    const int32_t across = t.across(centre, radius, kMostAcross, at_centre);
     const bool coarse = across >= 0 && float(across) < f.coarse_below * a.radius;
     const Rgb565 colour = i == chosen_ ? kChosenColour : faces_away(i, t, f.unit) ? faded(kKindColour[a.kind]) : kKindColour[a.kind];
     uint32_t work = 1;
@@ -130,15 +131,8 @@ uint32_t Annotating::polylines(render::Rasterizer& raster, const Frame& f, uint3
 int32_t Annotating::across_screen(const Frame& f, const float centre_mm[3], float radius_mm) {
     int32_t centre[3], radius;
     Projected c;
-    render::Reciprocal r;
     if (!quantize(centre_mm, f.unit, centre) || !to_units(radius_mm, f.unit, radius)) return -1;
-    f.t.project(centre, c, r);
-    if (c.out) return -1;
-    // Twice the radius in view units over the depth (as Painter::across).
-    const int64_t size = 2 * ((int64_t(radius) * f.t.k16) >> 16) * f.t.f16;
-    const int32_t over = f.t.ortho ? f.t.dist : c.d;
-    constexpr int32_t kMost = 1 << 24;
-    return size >= int64_t(kMost) * over ? kMost : render::divide(size, r);
+    return f.t.across(centre, radius, kMostAcross, c);
 }
 
 bool Annotating::too_small(const Frame& f, uint32_t i) const {

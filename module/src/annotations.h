@@ -61,18 +61,12 @@ public:
         while (from < count() && !listed(from)) ++from;
         return from < count() ? from : count();
     }
-    uint32_t previous_listed(uint32_t before) const { // the last listed before `before` (kNone: none)
-        while (before-- > 0)
-            if (listed(before)) return before;
-        return kNone;
+    uint32_t nth_listed(uint32_t n) const { // the list's row n (count(): past the last)
+        uint32_t i = next_listed(0);
+        for (; n > 0 && i < count(); --n) i = next_listed(i + 1);
+        return i;
     }
 
-private:
-    struct Label {
-        int16_t x, y, w, h; // placed: its box; a candidate: its anchor on the screen (pixels)
-        uint32_t annotation;
-    };
-public:
     // Millimetres to mesh units (Scene::unit) from a float's bits, no soft float: 1/unit as
     // m 2^e. False for a coordinate of 2^30 units or more (left out: it would overflow).
     struct UnitScale {
@@ -83,6 +77,10 @@ public:
     static bool to_units(float mm, const UnitScale& s, int32_t& q);
 
 private:
+    struct Label {
+        int16_t x, y, w, h; // placed: its box; a candidate: its anchor on the screen (pixels)
+        uint32_t annotation;
+    };
     bool kind_shown(uint32_t i) const { return (shown_ >> (*pmi_)[i].kind) & 1u; }
     struct Frame {
         const Transform& t;

@@ -77,8 +77,7 @@ void Core::toggle_explode() {
     module::Overlay& o = presenter_.overlay();
     const bool out = scene_.explode() == 0 && scene_.tree().count() > 0;
     o.set_explode_slider(out && config_.interface == Interface::Full, 0);
-    (void)set_explode(out ? 1.0f : 0.0f);
-    o.set_explode_slider(out && config_.interface == Interface::Full, scene_.explode() / module::Scene::kMostExplode);
+    (void)set_explode(out ? 1.0f : 0.0f); // (the slider, when on, follows it)
     fit(); // (the model apart, or together again, framed from where the eye is)
 }
 

@@ -138,6 +138,15 @@ ViewBasis Camera::basis(const Scene& scene, uint16_t width, uint16_t height) con
     return basis;
 }
 
+int32_t Transform::across(const int32_t sphere_centre[3], int32_t radius, int32_t most, Projected& centre) const {
+    render::Reciprocal r;
+    project(sphere_centre, centre, r);
+    if (centre.out) return -1;
+    const int64_t size = 2 * ((int64_t(radius) * k16) >> 16) * f16; // sub-pixels times the depth
+    if (size >= int64_t(most) * (ortho ? dist : centre.d)) return most;
+    return render::divide(size, r); // (over's reciprocal: the projection's)
+}
+
 Transform Camera::transform(const ViewBasis& basis, const Scene& scene, uint32_t index) {
     pack::Instance scratch;
     const pack::Instance& inst = scene.placed(index, scratch); // (exploded, where the view is)

@@ -107,6 +107,9 @@ struct Transform {
         const int64_t zz = (int64_t(o.d - near) * zk) >> 16;
         o.s.z = uint16_t(zz > 65535 ? 65535 : zz);
     }
+    // A sphere (mesh units) across on the screen: sub-pixels, at most `most`; its centre
+    // projected into `centre`; -1 when the centre is off (near the eye, or past the guard band).
+    int32_t across(const int32_t sphere_centre[3], int32_t radius, int32_t most, Projected& centre) const;
     // Whether a sphere (mesh units) may touch the rows: false only when it lies wholly behind
     // the near plane or beyond one side of the view volume (conservative).
     bool visible(const int32_t centre[3], int32_t radius, Rows rows) const;

@@ -107,7 +107,7 @@ public:
     // header's PMI tab opens it (its PARTS tab goes back): a row of the kinds (DIM, TOL, DAT,
     // NOTE), each lit when shown; a row per annotation listed, its text in its kind's colour,
     // the chosen one lit (a tap chooses it, a second lets go); SHOW and HIDE every kind.
-    void set_annotating(const Annotating* a) { annotating_ = a, pmi_top_ = 0; }
+    void set_annotating(const Annotating* a) { annotating_ = a, pmi_first_row_ = 0; }
     bool has_pmi() const; // the model has annotations to list
     void set_pmi(bool open);
     bool pmi_open() const { return pmi_open_ && button_count_ > 0 && has_pmi(); }
@@ -207,7 +207,7 @@ private:
     uint32_t broken_[pack::kMaxLibraryEntries / 32] = {};
     const Annotating* annotating_ = nullptr;
     bool pmi_open_ = false;
-    uint32_t pmi_top_ = 0; // the annotation the list's first row shows (or the next listed one)
+    uint32_t pmi_first_row_ = 0; // the annotations list's first row shown
 };
 
 } // namespace facet::module

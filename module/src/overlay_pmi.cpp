@@ -22,7 +22,7 @@ bool Overlay::has_pmi() const { return annotating_ && annotating_->listed_count(
 void Overlay::set_pmi(bool open) {
     pmi_open_ = open && has_pmi();
     if (pmi_open_) parts_open_ = models_open_ = false;
-    pmi_top_ = 0;
+    pmi_first_row_ = 0;
 }
 
 uint32_t Overlay::pmi_rows() const {
@@ -31,22 +31,7 @@ uint32_t Overlay::pmi_rows() const {
 }
 
 void Overlay::scroll_pmi(int32_t rows) {
-    if (!has_pmi()) return;
-    // Walk the listed annotations; the last rows stay full.
-    const uint32_t n = annotating_->count();
-    uint32_t at = annotating_->next_listed(pmi_top_);
-    for (; rows > 0; --rows) {
-        uint32_t next = annotating_->next_listed(at + 1), beyond = next;
-        for (uint32_t k = 1; k < pmi_rows() && beyond < n; ++k) beyond = annotating_->next_listed(beyond + 1);
-        if (next >= n || beyond >= n) break;
-        at = next;
-    }
-    for (; rows < 0 && at > 0; ++rows) {
-        const uint32_t before = annotating_->previous_listed(at);
-        if (before == kNone) break;
-        at = before;
-    }
-    pmi_top_ = at;
+    if (has_pmi()) pmi_first_row_ = scrolled(pmi_first_row_, rows, annotating_->listed_count(), pmi_rows());
 }
 
 void Overlay::list_tab(const render::Target& t, const Area& p, const char* label) const {
@@ -79,7 +64,7 @@ void Overlay::pmi_list(const render::Target& t) const {
                           on ? kText : kDim);
     }
     const geom::Annotations& pmi = *a.annotations();
-    uint32_t i = a.next_listed(pmi_top_);
+    uint32_t i = a.nth_listed(pmi_first_row_);
     for (uint32_t r = 0; r < pmi_rows() && i < a.count(); ++r, i = a.next_listed(i + 1)) {
         const int32_t y = ky + kRow + int32_t(r) * kRow;
         if (i == a.chosen()) render::fill_rect(t, p.x, y, p.width - 1, kRow, kButtonOn);
@@ -116,8 +101,7 @@ Overlay::PartsHit Overlay::pmi_at(int16_t x, int16_t y) const {
     }
     const uint32_t row = uint32_t(dy - kRow) / uint32_t(kRow);
     if (row >= pmi_rows()) return h;
-    uint32_t i = annotating_->next_listed(pmi_top_);
-    for (uint32_t r = 0; r < row && i < annotating_->count(); ++r) i = annotating_->next_listed(i + 1);
+    const uint32_t i = annotating_->nth_listed(pmi_first_row_ + row);
     if (i < annotating_->count()) h.kind = PartsHit::Kind::Row, h.part = i;
     return h;
 }

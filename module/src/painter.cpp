@@ -392,15 +392,7 @@ bool Painter::waiting_plane_hidden(uint32_t f, const Transform& t) const {
 // projected into `centre`; -1 when no sphere is known or its centre is off (near the eye, or
 // past the guard band).
 int32_t Painter::across(const int32_t sphere_centre[3], int32_t radius, const Transform& t, Projected& centre) {
-    constexpr int32_t kMost = 64 * render::subpixel::kPerPixel;
-    if (radius <= 0) return -1;
-    render::Reciprocal r;
-    t.project(sphere_centre, centre, r);
-    if (centre.out) return -1;
-    const int64_t size = 2 * ((int64_t(radius) * t.k16) >> 16) * t.f16; // sub-pixels times the depth
-    const int32_t over = t.ortho ? t.dist : centre.d;
-    if (size >= int64_t(kMost) * over) return kMost;
-    return render::divide(size, r); // (over's reciprocal: the projection's)
+    return radius > 0 ? t.across(sphere_centre, radius, 64 * render::subpixel::kPerPixel, centre) : -1;
 }
 
 // A face a few pixels across, left out by the view (or tessellated for a nearer copy of its

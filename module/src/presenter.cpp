@@ -380,8 +380,7 @@ void Presenter::run_piece(uint32_t units, uint32_t pass) {
     case Stage::Annotations: {
         set_target(); // (the band)
         if (!job_.have_transform) {
-            static constexpr float kIdentity[12] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0}; // (the placed model's own coordinates)
-            job_.transform = Camera::transform(view_basis(), kIdentity, false);
+            job_.transform = model_transform(false);
             job_.have_transform = true;
         }
         uint32_t spent = 0;

@@ -224,6 +224,9 @@ private:
     // The view's basis for this view, section, screen and model (made again when one changed;
     // the placements kept then made anew where the placing changed).
     const ViewBasis& view_basis();
+    // The view's transform of the placed model's own coordinates (mm / unit): what a group's
+    // box and proxy and the annotations are drawn with.
+    Transform model_transform(bool closed);
     // job_.transform's eye placed (Transform::place_eye; kept for kKeptEyes instances): before
     // the instance's own faces are drawn.
     void place_eye();

@@ -27,8 +27,7 @@ Presenter::GroupVerdict Presenter::judge_group(uint32_t g, uint32_t& level) {
     bool closed = true;
     const auto members = index.group_members().subspan(group.first_member, group.member_count);
     for (const uint32_t i : members) closed = closed && index.parts()[scene_.instances()[i].shell].closed;
-    static constexpr float kIdentity[12] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};
-    group_transform_ = Camera::transform(view_basis(), kIdentity, closed);
+    group_transform_ = model_transform(closed);
     const Transform& t = group_transform_;
     const Transform::Sight sight = t.sight(centre, radius, painter_.rows(t));
     if (sight == Transform::Sight::Out) return GroupVerdict::Out;

@@ -39,6 +39,11 @@ const ViewBasis& Presenter::view_basis() {
     return basis_;
 }
 
+Transform Presenter::model_transform(bool closed) {
+    static constexpr float kIdentity[12] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};
+    return Camera::transform(view_basis(), kIdentity, closed);
+}
+
 void Presenter::place_eye() {
     Transform& t = job_.transform;
     if (t.eye_placed) return;

@@ -293,11 +293,7 @@ void read_pmi(const Handle(TDocStd_Document)& doc, double scale, Pmi& out) {
         out.notes.push_back(std::move(n));
     }
     for (PmiNote& n : graphic) out.notes.push_back(std::move(n));
-    for (PmiNote& n : out.notes)
-        if (n.text.size() > pack::kMaxAnnotationText) n.text.resize(pack::kMaxAnnotationText); // (on a character: below)
-    for (PmiNote& n : out.notes)
-        while (!n.text.empty() && (static_cast<unsigned char>(n.text.back()) & 0xC0) == 0x80 && n.text.size() == pack::kMaxAnnotationText)
-            n.text.pop_back();
+    for (PmiNote& n : out.notes) n.text = geom::cut_utf8(n.text, pack::kMaxAnnotationText);
 }
 
 geom::AnnotationTables pmi_tables(const Pmi& pmi, const geom::Pack& pack, const std::vector<TopoDS_Shape>& packed_faces,

@@ -12,6 +12,7 @@
 #include "core/status.h"
 #include "geom/pack.h"
 #include "geom/pmi_format.h"
+#include "geom/sections.h"
 
 #include <cstdint>
 #include <span>
@@ -44,7 +45,7 @@ public:
 
 private:
     Result fail(const char* what, pack::PmiSectionId section, uint32_t index);
-    Result read(const uint8_t* base, uint32_t bytes, const pack::SectionEntry* table, uint32_t sections, uint32_t faces);
+    Result read(const SectionTable& table, uint32_t faces);
     Result check(uint32_t faces);
 
     std::span<const pack::Annotation> records_;

@@ -7,6 +7,7 @@
 // offset finite. A pack without the sections has no tree (count() 0): its parts are a flat list.
 #include "core/status.h"
 #include "geom/pack_format.h"
+#include "geom/sections.h"
 #include "geom/tree_format.h"
 
 #include <cstdint>
@@ -30,12 +31,12 @@ public:
     // The deepest node an instance is under (kNoIndex: no tree), and its exploded view's offset.
     uint32_t node_of(uint32_t instance) const { return instance < instances_.size() ? instances_[instance].node : pack::kNoIndex; }
     const float* explode(uint32_t instance) const { return instance < instances_.size() ? instances_[instance].explode : nullptr; }
+    std::span<const pack::InstanceNode> instance_nodes() const { return instances_; } // (each instance's, or none)
     // Whether an instance is n's own (under it and under none of its children).
     bool own(uint32_t n, uint32_t instance) const { return node_of(instance) == n; }
 
 private:
-    Result read(const uint8_t* base, uint32_t bytes, const pack::SectionEntry* table, uint32_t sections, uint32_t instances,
-                std::span<const char> names, bool index);
+    Result read(const SectionTable& table, uint32_t instances, std::span<const char> names, bool index);
     Result check(uint32_t instances, std::span<const char> names, bool index);
     const char* text(uint32_t at) const { return at == pack::kNoIndex ? "" : names_.data() + at; }
 
